@@ -1,0 +1,32 @@
+// A float RGBA image in working colour space, as the renderer produces it.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "core/colour.h"
+
+namespace povwall {
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<float> rgba;  // row-major, top row first, 4 floats per pixel, alpha 1 = opaque
+
+    Image() = default;
+    Image(int w, int h) : width(w), height(h), rgba(size_t(w) * size_t(h) * 4, 0.0f) {}
+    float* pixel(int x, int y) { return &rgba[(size_t(y) * width + x) * 4]; }
+    const float* pixel(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
+};
+
+// How working-space values become file values (POV-Ray 3.7's gamma rules).
+struct OutputEncoding {
+    // false: legacy scene (#version < 3.7 and no assumed_gamma): values written raw.
+    bool gamma_handling = true;
+    float working_gamma = 1.0f;  // assumed_gamma
+    bool file_srgb = true;       // File_Gamma sRGB (POV-Ray's Unix default); else file_gamma
+    float file_gamma = 2.2f;
+    int bits = 8;                // 8 or 16 per channel
+    bool alpha = false;          // +UA: write RGBA (non-premultiplied)
+};
+
+}  // namespace povwall

@@ -1,0 +1,247 @@
+// The scene model: what the parser produces and every back end consumes.
+//
+// Plain data only. Shapes are structs in a variant; intersection lives in trace/.
+// Every transform is stored object-to-world. The parser resolves POV-Ray's inheritance rules
+// (textures pushed into CSG children, camera look_at/angle, #default), so consumers never
+// need to know the scene language.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/colour.h"
+#include "core/math.h"
+#include "core/source_loc.h"
+
+namespace povwall {
+
+// ---------------------------------------------------------------- patterns and textures
+
+enum class PatternKind : uint8_t {
+    Solid,  // plain colour, no pattern
+    Agate, Bozo, Brick, Bumps, Checker, Crackle, Dents, Gradient, Granite, Hexagon,
+    Leopard, Mandel, Marble, Onion, Quilted, Radial, Ripples, Spiral1, Spiral2, Spotted,
+    Waves, Wood, Wrinkles, Boxed, Cylindrical, Spherical, Planar, Average, ImageMap, Cells,
+};
+
+enum class WaveType : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
+
+struct Warp {
+    enum class Kind : uint8_t { Turbulence, Repeat, BlackHole, Cylindrical, Spherical, Toroidal,
+                                Planar } kind = Kind::Turbulence;
+    Vector3 turbulence{0, 0, 0};
+    int octaves = 6;
+    Real omega = 0.5, lambda = 2.0;
+    Vector3 repeat{0, 0, 0}, offset{0, 0, 0}, flip{0, 0, 0};  // repeat warp
+    Transform transform;  // transforms applied after this warp (pattern space)
+};
+
+// Everything that turns a point into a pattern value in [0,1].
+struct PatternSpec {
+    PatternKind kind = PatternKind::Solid;
+    Vector3 vector{0, 0, 0};  // gradient direction; brick size; mortar in scalar below
+    Real scalar = 0;          // agate_turb, mortar, spiral arms, mandel iterations, ...
+    Vector3 vector2{0, 0, 0}; // secondary parameter (brick: mortar as vector unused)
+    Real frequency = 1, phase = 0;
+    WaveType wave = WaveType::Ramp;
+    Real wave_exponent = 1;
+    int noise_generator = 0;  // 0: inherit global setting
+    // Classic turbulence keyword applied before the pattern (ordered after warps as POV-Ray does).
+    std::vector<Warp> warps;
+    Transform transform;  // pattern space -> world (inverse applied to hit points)
+};
+
+struct ColourMapEntry {
+    float value;
+    Colour colour;
+};
+using ColourMap = std::vector<ColourMapEntry>;
+
+struct Pigment {
+    PatternSpec pattern;
+    Colour colour;                 // Solid pigments; also the colour a scene gets by default
+    ColourMap colour_map;          // pattern pigments
+    std::vector<float> map_values; // pigment_map values, parallel to `list`
+    std::vector<Pigment> list;     // checker/hexagon/brick entries, or pigment_map entries
+    std::optional<Colour> quick_colour;
+};
+
+struct Normal {
+    PatternSpec pattern;
+    Real amount = 0.5;  // bump_size
+    std::vector<float> map_values;
+    std::vector<Normal> list;  // normal_map entries
+    Real accuracy = 0.02;
+};
+
+struct Finish {
+    Rgb ambient{0.1f};
+    Rgb emission{0.0f};
+    float diffuse = 0.6f, brilliance = 1.0f, crand = 0.0f;
+    float phong = 0.0f, phong_size = 40.0f;
+    float specular = 0.0f, roughness = 0.05f;
+    float metallic = 0.0f;
+    Rgb reflection_min{0.0f}, reflection_max{0.0f};
+    float reflection_falloff = 1.0f, reflection_exponent = 1.0f, reflection_metallic = 0.0f;
+    bool reflection_fresnel = false;
+    bool conserve_energy = false;
+    float irid = 0.0f, irid_thickness = 0.0f, irid_turbulence = 0.0f;
+};
+
+struct Texture {
+    Pigment pigment;
+    std::optional<Normal> normal;
+    Finish finish;
+    // Patterned texture (texture_map, material_map, checker of textures): when `map` is
+    // non-empty the fields above are unused and the pattern selects among `map` entries.
+    std::optional<PatternSpec> map_pattern;
+    std::vector<float> map_values;
+    std::vector<std::vector<Texture>> map;  // each entry may itself be layered
+};
+using LayeredTexture = std::vector<Texture>;  // layers, bottom first
+
+struct Interior {
+    float ior = 1.0f;
+    float caustics = 0.0f;
+    float dispersion = 1.0f;
+    int dispersion_samples = 7;
+    float fade_distance = 0.0f, fade_power = 0.0f;
+    Rgb fade_colour{0.0f};
+};
+
+// ---------------------------------------------------------------- shapes (object space)
+
+struct Sphere { Point3 centre; Real radius = 1; };
+struct Box { Point3 corner1, corner2; };
+struct Plane { Vector3 normal{0, 1, 0}; Real distance = 0; };  // dot(n, p) = distance
+struct Cylinder { Point3 base, cap; Real radius = 1; bool open = false; };
+struct Cone { Point3 base, cap; Real base_radius = 1, cap_radius = 0; bool open = false; };
+struct Torus { Real major = 1, minor = 0.25; bool sturm = false; };
+struct Disc { Point3 centre; Vector3 normal{0, 1, 0}; Real radius = 1, hole_radius = 0; };
+struct Triangle { Point3 p[3]; };
+struct SmoothTriangle { Point3 p[3]; Vector3 n[3]; };
+struct Polygon { std::vector<Point3> points; };  // parser stores the plane-projected loop
+
+struct Mesh {
+    std::vector<Point3> vertices;
+    std::vector<Vector3> normals;  // empty when flat
+    struct Face { uint32_t v[3]; int32_t n[3] = {-1, -1, -1}; int32_t texture = -1; };
+    std::vector<Face> faces;
+    std::vector<LayeredTexture> textures;  // per-face textures (mesh2 texture_list)
+    Point3 inside_vector{0, 0, 0};
+    bool has_inside_vector = false;
+};
+
+struct Object;
+enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
+struct Csg {
+    CsgKind kind = CsgKind::Union;
+    std::vector<Object> children;
+};
+
+using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
+                               SmoothTriangle, Polygon, Mesh, Csg>;
+
+struct Object {
+    ShapeData shape;
+    Transform transform;  // object space -> world
+    // Empty means "no texture given": the renderer uses the default texture.
+    LayeredTexture texture;
+    LayeredTexture interior_texture;
+    std::optional<Interior> interior;
+    bool inverse = false;
+    bool hollow = false;
+    bool no_shadow = false, no_image = false, no_reflection = false;
+    bool double_illuminate = false;
+    std::vector<Object> clipped_by;
+    std::vector<Object> bounded_by;
+    SourceLoc loc;
+};
+
+// ---------------------------------------------------------------- lights, camera, settings
+
+struct AreaLight {
+    Vector3 axis1, axis2;
+    int size1 = 1, size2 = 1;
+    int adaptive = 0;
+    bool jitter = false, circular = false, orient = false;
+};
+
+struct Light {
+    enum class Kind : uint8_t { Point, Spot, Cylinder, Parallel } kind = Kind::Point;
+    Point3 location;
+    Rgb colour{1.0f};
+    Point3 point_at{0, 0, 1};
+    Real radius = 30, falloff = 45, tightness = 0;  // spot/cylinder (degrees)
+    Real fade_distance = 0, fade_power = 0;
+    bool shadowless = false;
+    bool media_interaction = true, media_attenuation = false;
+    std::optional<AreaLight> area;
+    std::vector<Object> looks_like;  // rendered as an object with no shadow
+    SourceLoc loc;
+};
+
+struct Camera {
+    enum class Kind : uint8_t { Perspective, Orthographic, Fisheye, UltraWideAngle,
+                                Omnimax, Panoramic, Spherical, Cylinder } kind = Kind::Perspective;
+    // Final vectors after look_at, angle, sky and transforms have been applied.
+    Point3 location{0, 0, 0};
+    Vector3 direction{0, 0, 1};
+    Vector3 right{1.33, 0, 0};
+    Vector3 up{0, 1, 0};
+    Real angle = 0;  // degrees; used by non-perspective kinds
+    Real aperture = 0, focal_distance = 0;
+    int blur_samples = 0;
+    SourceLoc loc;
+};
+
+struct Fog {
+    int type = 1;  // 1 constant, 2 ground fog
+    Real distance = 0;
+    Colour colour;
+    Vector3 turbulence{0, 0, 0};
+    Real turb_depth = 0.5, offset = 0, alt = 0;
+    Vector3 up{0, 1, 0};
+    std::vector<Warp> warps;
+    Transform transform;
+};
+
+struct SkySphere {
+    std::vector<Pigment> pigments;  // layered, first on top
+    Transform transform;
+};
+
+struct GlobalSettings {
+    int max_trace_level = 5;
+    float adc_bailout = 1.0f / 255.0f;
+    Rgb ambient_light{1.0f};
+    std::optional<float> assumed_gamma;  // absent: legacy rules depend on #version
+    int noise_generator = 2;
+    int max_intersections = 64;
+    Rgb irid_wavelength{0.25f, 0.18f, 0.14f};
+    int number_of_waves = 10;
+};
+
+// Everything a render needs besides the output settings.
+struct Scene {
+    std::vector<std::string> files;  // SourceLoc::file indexes this
+    Camera camera;
+    std::vector<Object> objects;
+    std::vector<Light> lights;
+    Colour background{Rgb{0.0f}, 0.0f, 1.0f};  // default: black, fully transparent in +UA
+    std::optional<SkySphere> sky_sphere;
+    std::vector<Fog> fogs;
+    GlobalSettings settings;
+    // Effective #version at the end of parsing, times 100 (e.g. 362, 370).
+    int language_version = 362;
+    bool version_set = false;
+    // Whether output colours are gamma-encoded (3.7 rules) or written raw (legacy).
+    bool gamma_handling() const { return assumed_gamma_given() || language_version >= 370; }
+    bool assumed_gamma_given() const { return settings.assumed_gamma.has_value(); }
+};
+
+}  // namespace povwall

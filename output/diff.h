@@ -1,0 +1,35 @@
+// Image comparison in the manner of OpenImageIO's idiff.
+#pragma once
+
+#include <string>
+
+#include "core/image.h"
+
+namespace povwall::output {
+
+struct DiffThresholds {
+    double fail = 0.1;          // a channel differing by more than this makes a pixel "bad"
+    double warn = 0.1;
+    double fail_percent = 0.0;  // idiff semantics: allowed % of pixels over `fail`
+    double warn_percent = 0.0;
+    double max_rmse = 0.01;             // povwall's golden thresholds
+    double max_bad_fraction = 0.002;
+};
+
+struct DiffResult {
+    int width = 0, height = 0;
+    double rmse = 0, psnr = 0, max_abs = 0;
+    int max_x = 0, max_y = 0, max_channel = 0;
+    double max_value_a = 0, max_value_b = 0;
+    long long bad_pixels = 0, warn_pixels = 0;
+    double bad_pixel_fraction = 0;
+    enum class Status { Pass = 0, Warn = 1, Fail = 2, SizeMismatch = 3, Unreadable = 4 } status =
+        Status::Pass;
+    std::string error;  // for Unreadable / SizeMismatch
+};
+
+// Compares RGB channels of two images as stored (0..1 scale).
+DiffResult diff_images(const Image& a, const Image& b, const DiffThresholds& t = {});
+DiffResult diff_files(const std::string& a, const std::string& b, const DiffThresholds& t = {});
+
+}  // namespace povwall::output

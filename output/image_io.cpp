@@ -1,0 +1,1 @@
+#include "output/image_io.h"

@@ -1,0 +1,25 @@
+// Writing rendered images (gamma-encoded as POV-Ray 3.7 does) and reading images back.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "core/image.h"
+
+namespace povwall::output {
+
+struct ImageIoError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Working-space value -> file value in [0,1], before quantisation.
+float encode_channel(float v, const OutputEncoding& enc);
+
+// Writes `image` to `path` (format from the extension: png, tga, ppm, exr, ...) through a
+// temporary file in the same folder and a rename, so no partial file is ever left behind.
+void write_image(const Image& image, const std::string& path, const OutputEncoding& enc);
+
+// Reads an image as stored (encoded values scaled to 0..1), RGBA; throws ImageIoError.
+Image read_image(const std::string& path);
+
+}  // namespace povwall::output
