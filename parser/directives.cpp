@@ -24,7 +24,7 @@ Token Interpreter::next_raw() {
             const Cond& c = conds_.back();
             if (f.kind == Frame::Kind::Macro) break;
             std::string what = c.at.kind == TokenKind::Directive ? std::string(c.at.text) : "?";
-            error(c.at, "#" + what + " has no matching #end in this file");
+            error(c.at, "#" + what + " has no matching #end");
         }
         if (frames_.size() == 1) return end_tok;
         scopes_.resize(f.scope_depth);
@@ -51,23 +51,39 @@ Token Interpreter::next() {
         Token t = next_raw();
         if (t.kind == TokenKind::Directive) {
             run_directive(t);
-            continue;
+        } else if (t.kind == TokenKind::Word && lookup(t.text) &&
+                   std::holds_alternative<std::shared_ptr<Macro>>(*lookup(t.text))) {
+            auto m = std::get<std::shared_ptr<Macro>>(*lookup(t.text));
+            invoke_macro(t, *m);
+        } else {
+            return t;
         }
-        if (t.kind == TokenKind::Word) {
-            const Value* v = lookup(t.text);
-            if (v && std::holds_alternative<std::shared_ptr<Macro>>(*v)) {
-                auto m = std::get<std::shared_ptr<Macro>>(*v);
-                invoke_macro(t, *m);
-                continue;
-            }
+        // A directive or macro call may have looked one token ahead.
+        if (!pushback_.empty()) {
+            Token p = pushback_.back();
+            pushback_.pop_back();
+            return p;
         }
-        return t;
     }
 }
 
 bool Interpreter::accept_punct(char c) {
     if (is_punct(peek(), c)) {
         next();
+        return true;
+    }
+    return false;
+}
+
+bool Interpreter::accept_semicolon() {
+    // Looks at the raw stream so that a directive after the statement is not run before
+    // the statement has taken effect.
+    if (!pushback_.empty()) return accept_punct(';');
+    if (frames_.empty()) return false;
+    Frame& f = frames_.back();
+    const auto& toks = sources_.file(f.file).tokens;
+    if (f.pos < f.end && is_punct(toks[f.pos], ';')) {
+        ++f.pos;
         return true;
     }
     return false;
@@ -158,20 +174,25 @@ void Interpreter::declare(const std::string& name, Value v, bool local, const To
     // caller's variable; otherwise the identifier is global.
     int index = -1;
     Binding* b = find_binding(name, &index);
+    std::string target = name;
     while (b && b->ref_scope >= 0) {
         int target_scope = b->ref_scope;
-        std::string target = b->ref_name;
+        target = b->ref_name;
         b->value = v;
         auto it = scopes_[target_scope].find(target);
-        if (it == scopes_[target_scope].end()) break;
+        if (it == scopes_[target_scope].end()) {
+            b = nullptr;
+            break;
+        }
         b = &it->second;
         index = target_scope;
     }
-    if (b && index > 0) {
+    if (b) {
+        // An existing identifier (global, or a #local of an enclosing scope) is updated.
         b->value = std::move(v);
         return;
     }
-    scopes_[0][name].value = std::move(v);
+    scopes_[0][target].value = std::move(v);
 }
 
 // ------------------------------------------------------------------ directives
@@ -243,7 +264,7 @@ void Interpreter::run_directive(const Token& t) {
     if (d == "include") return directive_include(t);
     if (d == "version") {
         double v = parse_float();
-        accept_punct(';');
+        accept_semicolon();
         version_ = int(std::lround(v * 100));
         version_set_ = true;
         return;
@@ -471,7 +492,7 @@ void Interpreter::directive_declare(const Token& t, bool local) {
     } else {
         declare(key, std::move(v), local, name);
     }
-    accept_punct(';');
+    accept_semicolon();
 }
 
 size_t Interpreter::find_matching_end(const Token& at) {

@@ -83,6 +83,7 @@ public:
     Value parse() { return ternary(); }
 
 private:
+    static bool numeric(const Value& v) { return std::holds_alternative<Numeric>(v); }
     Numeric num(const Value& v, const Token& at) {
         if (auto n = std::get_if<Numeric>(&v)) return *n;
         in_.error(at, std::string("expected a numeric expression but found ") + type_name(v));
@@ -91,6 +92,7 @@ private:
     Value ternary() {
         Token at = in_.peek();
         Value c = logical_or();
+        if (!numeric(c)) return c;
         if (in_.is_punct(in_.peek(), '?')) {
             in_.next();
             Value a = ternary();
@@ -104,7 +106,7 @@ private:
     Value logical_or() {
         Token at = in_.peek();
         Value a = logical_and();
-        while (in_.is_punct(in_.peek(), '|')) {
+        while (numeric(a) && in_.is_punct(in_.peek(), '|')) {
             in_.next();
             Value b = logical_and();
             a = Numeric::scalar((num(a, at).c[0] != 0 || num(b, at).c[0] != 0) ? 1 : 0);
@@ -115,7 +117,7 @@ private:
     Value logical_and() {
         Token at = in_.peek();
         Value a = comparison();
-        while (in_.is_punct(in_.peek(), '&')) {
+        while (numeric(a) && in_.is_punct(in_.peek(), '&')) {
             in_.next();
             Value b = comparison();
             a = Numeric::scalar((num(a, at).c[0] != 0 && num(b, at).c[0] != 0) ? 1 : 0);
@@ -127,6 +129,7 @@ private:
         Token at = in_.peek();
         Value a = additive();
         for (;;) {
+            if (!numeric(a)) return a;
             const Token& t = in_.peek();
             std::string_view op;
             if (in_.is_punct(t, '=')) op = "=";
@@ -155,6 +158,7 @@ private:
         Token at = in_.peek();
         Value a = multiplicative();
         for (;;) {
+            if (!numeric(a)) return a;
             const Token& t = in_.peek();
             char op;
             if (in_.is_punct(t, '+')) op = '+';
@@ -170,6 +174,7 @@ private:
         Token at = in_.peek();
         Value a = unary();
         for (;;) {
+            if (!numeric(a)) return a;
             const Token& t = in_.peek();
             char op;
             if (in_.is_punct(t, '*')) op = '*';
@@ -203,7 +208,9 @@ private:
     Value postfix() {
         Token at = in_.peek();
         Value v = primary();
-        while (in_.is_punct(in_.peek(), '.')) {
+        // Only numbers take operators: after an object, texture, array... nothing is read
+        // ahead, so a directive following it runs in order.
+        while (numeric(v) && in_.is_punct(in_.peek(), '.')) {
             in_.next();
             Token m = in_.next();
             Numeric n = num(v, at);

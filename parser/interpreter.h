@@ -32,6 +32,7 @@ public:
     void unget(const Token& t);
     bool accept_punct(char c);
     bool accept_word(std::string_view w);
+    bool accept_semicolon();
     void expect_punct(char c, std::string_view what = {});
     bool is_punct(const Token& t, char c) const {
         return t.kind == TokenKind::Punct && t.length == 1 && t.text[0] == c;
