@@ -159,7 +159,8 @@ int run_compare(int argc, char** argv) {
         cmd.push_back("-A");
     }
     if (o.render.alpha) cmd.push_back("+UA");
-    cmd.push_back("+L" + fs::path(o.scene).parent_path().string());
+    std::string scene_dir = fs::path(o.scene).parent_path().string();
+    cmd.push_back("+L" + (scene_dir.empty() ? std::string(".") : scene_dir));
     for (const auto& l : o.library_paths) cmd.push_back("+L" + l);
     cmd.push_back("+L/usr/share/povray-3.7/include");
     for (const auto& [k, v] : o.declares) {

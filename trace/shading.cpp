@@ -104,6 +104,17 @@ const LayeredTexture& texture_of(const Material& m) {
 
 }  // namespace
 
+Rgb interior_attenuation(const Interior& in, Real distance) {
+    if (in.fade_distance <= 0 || in.fade_power <= 0) return Rgb(1.0f);
+    Rgb fc = in.fade_colour;
+    if (in.fade_power >= 1000) {
+        auto e = [&](float c) { return float(std::exp(-(1 - c) * distance / in.fade_distance)); };
+        return {e(fc.r), e(fc.g), e(fc.b)};
+    }
+    float k = float(1 / (1 + std::pow(distance / in.fade_distance, Real(in.fade_power))));
+    return fc + (Rgb(1.0f) - fc) * k;
+}
+
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     ShadingRecord& out) {
     out.clear();
@@ -300,6 +311,14 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
             n2 = ior_of(&m);
             child.trace.interiors.push(&m);
         }
+        // Interior fade: light reaching this surface from inside the object is attenuated
+        // by the distance the incoming ray travelled in it (only the transmitted part).
+        Rgb att(1.0f);
+        if (ray.interiors.contains(m.object) && m.interior) {
+            att = interior_attenuation(*m.interior, hit.t);
+            child.coeff *= att;
+            child.transmit_factor *= att.grey();
+        }
         Real eta = n1 / n2;
         if (std::fabs(eta - 1) < kPovEpsilon) {
             child.trace.ray = {P, D};
@@ -313,7 +332,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                 Vector3 R = D + top_normal * (2 * n);
                 child.trace.ray = {P, normalize(R)};
                 child.trace.interiors = ray.interiors;
-                child.coeff = Rgb(1.0f);
+                child.coeff = att;
             } else {
                 Vector3 T = D * eta + top_normal * (eta * n - std::sqrt(t));
                 child.trace.ray = {P, normalize(T)};

@@ -89,6 +89,9 @@ TraceResult combine_children(const ShadingRecord& record, const TraceResult* res
 // (1e-3, distance - 1e-3), filters multiply, opaque blocks.
 Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx);
 
+// POV-Ray 3.7's interior fade after `distance` inside a medium.
+Rgb interior_attenuation(const Interior& in, Real distance);
+
 // Colour of a ray that hits nothing (background or sky_sphere).
 TraceResult miss_colour(const PreparedScene& scene, const Ray& ray);
 

@@ -3,22 +3,6 @@
 #include <cmath>
 
 namespace povwall::trace {
-namespace {
-
-// Interior fade of the medium the ray travelled through (POV-Ray 3.7 formulas).
-Rgb interior_attenuation(const Interior& in, Real distance) {
-    if (in.fade_distance <= 0 || in.fade_power <= 0) return Rgb(1.0f);
-    Rgb fc = in.fade_colour;
-    if (in.fade_power >= 1000) {
-        auto e = [&](float c) { return float(std::exp(-(1 - c) * distance / in.fade_distance)); };
-        return {e(fc.r), e(fc.g), e(fc.b)};
-    }
-    float k = float(1 / (1 + std::pow(distance / in.fade_distance, Real(in.fade_power))));
-    return fc + (Rgb(1.0f) - fc) * k;
-}
-
-}  // namespace
-
 Tracer::Tracer(const PreparedScene& scene) : scene_(scene) { scene.init_context(ctx_); }
 
 TraceResult Tracer::trace(const TraceRay& ray) { return trace_at(ray, 0); }
@@ -56,11 +40,7 @@ TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
         }
         results_[level][i] = r;
     }
-    TraceResult result = combine_children(records_[level], results_[level].data());
-    if (const Material* inside = ray.interiors.innermost()) {
-        if (inside->interior) result.colour *= interior_attenuation(*inside->interior, hit.t);
-    }
-    return result;
+    return combine_children(records_[level], results_[level].data());
 }
 
 }  // namespace povwall::trace
