@@ -7,6 +7,8 @@
 // sit in several leaves: callers that care use a mailbox (see Mailbox below).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -73,10 +75,11 @@ private:
         uint32_t count = 0;  // leaf: number of ids; inner: 0
         bool leaf = true;
     };
+    template <class Visit>
+    void visit_subtree(uint32_t index, const Vector3& t0, const Vector3& t1, unsigned mirror,
+                       Real t_min, Real& t_max, Visit& visit, bool& stop) const;
     void build_node(uint32_t node, std::vector<uint32_t>& ids, int depth, const BuildInput& in,
                     const BuildOptions& opt);
-    static bool slab(const Bounds3& b, const Point3& o, const Vector3& inv_d, Real t0, Real t1,
-                     Real& enter, Real& exit);
 
     std::vector<Node> nodes_;
     std::vector<uint32_t> ids_;
@@ -85,64 +88,74 @@ private:
     BuildStats stats_;
 };
 
-inline bool Octree::slab(const Bounds3& b, const Point3& o, const Vector3& inv_d, Real t0,
-                         Real t1, Real& enter, Real& exit) {
-    for (int a = 0; a < 3; ++a) {
-        Real lo = (b.lo[a] - o[a]) * inv_d[a];
-        Real hi = (b.hi[a] - o[a]) * inv_d[a];
-        if (lo > hi) std::swap(lo, hi);
-        // NaN (0 * inf when the origin lies on a slab plane) must not shrink the interval.
-        if (lo > t0) t0 = lo;
-        if (hi < t1) t1 = hi;
-        if (t0 > t1) return false;
-    }
-    enter = t0;
-    exit = t1;
-    return true;
-}
-
+// Parametric front-to-back traversal after Revelles, Urena and Lastra ("An efficient
+// parametric algorithm for octree traversal", 2000): the ray is mirrored so every direction
+// component is positive, child order follows from which mid-plane the ray crosses first, and
+// no child box is ever intersected explicitly.
 template <class Visit>
 void Octree::traverse(const Ray& ray, Real t_min, Real& t_max, Visit&& visit) const {
     if (nodes_.empty()) return;
-    Vector3 inv_d{1 / ray.direction.x, 1 / ray.direction.y, 1 / ray.direction.z};
-    Real enter, exit;
-    if (!slab(nodes_[0].box, ray.origin, inv_d, t_min, t_max, enter, exit)) return;
-    struct Item {
-        uint32_t node;
-        Real enter;
-    };
-    Item stack[8 * 32 + 8];
-    int top = 0;
-    stack[top++] = {0, enter};
-    while (top > 0) {
-        Item it = stack[--top];
-        if (it.enter > t_max) continue;
-        const Node& n = nodes_[it.node];
-        if (n.leaf) {
-            if (n.count && visit(&ids_[n.first], size_t(n.count), t_max)) return;
-            continue;
+    if (ray.direction.x == 0 && ray.direction.y == 0 && ray.direction.z == 0) return;
+    const Bounds3& b = nodes_[0].box;
+    Point3 o = ray.origin;
+    Vector3 d = ray.direction;
+    unsigned mirror = 0;
+    for (int a = 0; a < 3; ++a) {
+        if (std::isnan(o[a]) || std::isnan(d[a])) return;
+        if (d[a] < 0) {
+            o[a] = b.lo[a] + b.hi[a] - o[a];
+            d[a] = -d[a];
+            mirror |= 1u << a;
         }
-        Item kids[8];
-        int k = 0;
-        for (uint32_t c = 0; c < 8; ++c) {
-            const Node& child = nodes_[n.first + c];
-            if (child.leaf && child.count == 0) continue;
-            Real e0, e1;
-            if (slab(child.box, ray.origin, inv_d, t_min, t_max, e0, e1)) {
-                kids[k++] = {n.first + c, e0};
-            }
+        // A zero component would give 0/0 on a cell plane through the origin.
+        if (d[a] < 1e-300) d[a] = 1e-300;
+    }
+    Vector3 t0, t1;
+    for (int a = 0; a < 3; ++a) {
+        t0[a] = (b.lo[a] - o[a]) / d[a];
+        t1[a] = (b.hi[a] - o[a]) / d[a];
+    }
+    if (std::max({t0.x, t0.y, t0.z}) >= std::min({t1.x, t1.y, t1.z})) return;
+    bool stop = false;
+    visit_subtree(0, t0, t1, mirror, t_min, t_max, visit, stop);
+}
+
+template <class Visit>
+void Octree::visit_subtree(uint32_t index, const Vector3& t0, const Vector3& t1,
+                           unsigned mirror, Real t_min, Real& t_max, Visit& visit,
+                           bool& stop) const {
+    const Real enter = std::max({t0.x, t0.y, t0.z});
+    const Real exit = std::min({t1.x, t1.y, t1.z});
+    if (exit < t_min || enter > t_max || enter >= exit) return;
+    const Node& n = nodes_[index];
+    if (n.leaf) {
+        if (n.count && visit(&ids_[n.first], size_t(n.count), t_max)) stop = true;
+        return;
+    }
+    const Vector3 tm = (t0 + t1) * 0.5;
+    // First child: the entry plane tells which halves the ray starts in.
+    unsigned child = 0;
+    if (t0.x > t0.y && t0.x > t0.z) {  // enters through the x = lo plane
+        if (tm.y < t0.x) child |= 2;
+        if (tm.z < t0.x) child |= 4;
+    } else if (t0.y > t0.z) {  // through y = lo
+        if (tm.x < t0.y) child |= 1;
+        if (tm.z < t0.y) child |= 4;
+    } else {  // through z = lo
+        if (tm.x < t0.z) child |= 1;
+        if (tm.y < t0.z) child |= 2;
+    }
+    while (child < 8 && !stop) {
+        Vector3 c0, c1;
+        for (int a = 0; a < 3; ++a) {
+            bool high = child & (1u << a);
+            c0[a] = high ? tm[a] : t0[a];
+            c1[a] = high ? t1[a] : tm[a];
         }
-        // Push farthest first so the nearest child is popped next.
-        for (int i = 1; i < k; ++i) {
-            Item v = kids[i];
-            int j = i - 1;
-            while (j >= 0 && kids[j].enter < v.enter) {
-                kids[j + 1] = kids[j];
-                --j;
-            }
-            kids[j + 1] = v;
-        }
-        for (int i = 0; i < k; ++i) stack[top++] = kids[i];
+        visit_subtree(n.first + (child ^ mirror), c0, c1, mirror, t_min, t_max, visit, stop);
+        // Next child: step along the axis whose exit plane comes first; 8 means "left".
+        int axis = (c1.x <= c1.y && c1.x <= c1.z) ? 0 : (c1.y <= c1.z ? 1 : 2);
+        child = (child & (1u << axis)) ? 8 : (child | (1u << axis));
     }
 }
 
