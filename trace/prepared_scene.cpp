@@ -540,4 +540,31 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
     return found;
 }
 
+bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max, bool& transparent,
+                                   RayContext& ctx) const {
+    transparent = false;
+    bool blocked = false;
+    auto consider = [&](uint32_t id) {
+        Hit h;
+        ++ctx.tests;
+        if (!test_primitive(id, ray, t_min, t_max, h)) return false;
+        if (h.material->no_shadow) return false;
+        if (h.material->opaque) return blocked = true;
+        transparent = true;
+        return false;
+    };
+    for (uint32_t id : unbounded_) {
+        if (consider(id)) return true;
+    }
+    ctx.mailbox.next_ray();
+    Real limit = t_max;
+    tree_.traverse(ray, t_min, limit, [&](const uint32_t* ids, size_t n, Real&) {
+        for (size_t i = 0; i < n; ++i) {
+            if (ctx.mailbox.first_visit(ids[i]) && consider(ids[i])) return true;
+        }
+        return false;
+    });
+    return blocked;
+}
+
 }  // namespace povwall::trace

@@ -60,6 +60,12 @@ public:
     bool closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use, Hit& hit,
                      RayContext& ctx) const;
 
+    // Shadow-ray fast path: true if an opaque, shadow-casting surface lies in (t_min, t_max).
+    // Sets `transparent` when a see-through surface was met there (the caller then needs
+    // the full product of filters).
+    bool opaque_blocker(const Ray& ray, Real t_min, Real t_max, bool& transparent,
+                        RayContext& ctx) const;
+
 private:
     void add_object(const Object& obj, const Material* parent_material);
     uint32_t add_material(const Object& obj);

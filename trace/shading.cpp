@@ -367,6 +367,14 @@ Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, Ray
     Ray ray = shadow.trace.ray;
     Real remaining = shadow.t_max;
     Rgb filter(1.0f);
+    if (remaining <= 2 * kShadowTolerance) return filter;
+    // Most shadow rays meet only opaque blockers or nothing: find out in any order.
+    bool transparent = false;
+    if (scene.opaque_blocker(ray, kShadowTolerance, remaining - kShadowTolerance, transparent,
+                             ctx)) {
+        return Rgb{};
+    }
+    if (!transparent) return filter;
     for (int guard = 0; guard < 256; ++guard) {
         if (remaining <= 2 * kShadowTolerance) break;
         Hit hit;
