@@ -7,6 +7,7 @@
 
 #include "cli/options.h"
 #include "output/diff.h"
+#include "output/image_io.h"
 
 namespace povwall::cli {
 
@@ -48,14 +49,20 @@ int run_diff(int argc, char** argv) {
                  "povwall diff"};
     std::string a, b, diff_out;
     bool json = false;
+    double fail_percent = -1;
     output::DiffThresholds t;
     app.add_option("A", a, "first image")->required();
     app.add_option("B", b, "second image")->required();
     app.add_flag("--json", json, "print one JSON object");
-    app.add_option("-o", diff_out, "write the absolute difference image");
+    app.add_option("-o,--output", diff_out,
+                   "write the per-channel absolute difference image (same size images only)");
     app.add_option("--fail", t.fail, "per-channel difference making a pixel bad")
         ->capture_default_str();
     app.add_option("--warn", t.warn, "per-channel difference giving a warning")
+        ->capture_default_str();
+    app.add_option("--failpercent", fail_percent,
+                   "% of pixels allowed over --fail (same as --max-bad-fraction x 100)");
+    app.add_option("--warnpercent", t.warn_percent, "% of pixels allowed over --warn")
         ->capture_default_str();
     app.add_option("--max-rmse", t.max_rmse, "largest RMSE that passes")->capture_default_str();
     app.add_option("--max-bad-fraction", t.max_bad_fraction,
@@ -66,7 +73,24 @@ int run_diff(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : 2;
     }
-    output::DiffResult r = output::diff_files(a, b, t);
+    if (fail_percent >= 0) t.max_bad_fraction = fail_percent / 100.0;
+    output::DiffResult r;
+    Image ia, ib;
+    try {
+        ia = output::read_image(a);
+        ib = output::read_image(b);
+        r = output::diff_images(ia, ib, t);
+    } catch (const output::ImageIoError& e) {
+        r.status = output::DiffResult::Status::Unreadable;
+        r.error = e.what();
+    }
+    if (!diff_out.empty() && (r.status == output::DiffResult::Status::Pass ||
+                              r.status == output::DiffResult::Status::Warn ||
+                              r.status == output::DiffResult::Status::Fail)) {
+        OutputEncoding raw;  // differences are written as values, not as colours
+        raw.gamma_handling = false;
+        output::write_image(output::difference_image(ia, ib), diff_out, raw);
+    }
     if (json) {
         std::printf("%s\n", diff_json(r).dump().c_str());
     } else {

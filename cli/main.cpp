@@ -15,8 +15,11 @@ const char* kUsage =
     "usage: povwall render SCENE.pov [-o OUT.png] [-W N] [-H N] [-L DIR]... [--threads N]\n"
     "                      [+POV-Ray switches]\n"
     "       povwall +ISCENE.pov +OOUT.png +W320 +H240 [+Ldir] [+A0.3] [+UA] ...\n"
-    "       povwall diff A.png B.png [--json] [--fail T] [--max-rmse R] [--max-bad-fraction F]\n"
-    "       povwall compare SCENE.pov [-W N] [-H N] [--json] [--keep DIR]\n";
+    "       povwall OPTIONS.ini [+switches]\n"
+    "       povwall diff A.png B.png [--json] [-o DIFF.png] [--fail T] [--failpercent P]\n"
+    "                      [--warn T] [--warnpercent P] [--max-rmse R]\n"
+    "       povwall compare SCENE.pov [-W N] [-H N] [--json] [--keep DIR] [--threads N]\n"
+    "                      [-L DIR]... [+POV-Ray switches]\n";
 
 int render_main(const std::vector<std::string>& args) {
     RenderOptions o;
@@ -33,7 +36,7 @@ int render_main(const std::vector<std::string>& args) {
     app.add_flag("-q,--quiet", o.quiet, "no timing summary, no #debug output");
     std::vector<std::string> pov, rest{"povwall render"};
     for (const auto& a : args) {
-        if (looks_like_pov_switch(a)) pov.push_back(a);
+        if (looks_like_pov_switch(a) || looks_like_ini_file(a)) pov.push_back(a);
         else rest.push_back(a);
     }
     std::vector<char*> argv;
@@ -43,8 +46,10 @@ int render_main(const std::vector<std::string>& args) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : 2;
     }
+    // Switches and .ini files apply in command-line order, later ones winning (as POV-Ray).
     for (const auto& s : pov) {
-        if (!apply_pov_switch(s, o)) throw UsageError("unknown switch '" + s + "'");
+        if (looks_like_ini_file(s)) apply_ini_file(s, o);
+        else if (!apply_pov_switch(s, o)) throw UsageError("unknown switch '" + s + "'");
     }
     if (!scene.empty()) o.scene = scene;
     return run_render(o);
@@ -69,7 +74,7 @@ int main(int argc, char** argv) {
             std::fputs(kUsage, stdout);
             return 0;
         }
-        if (looks_like_pov_switch(cmd)) return render_main(args);
+        if (looks_like_pov_switch(cmd) || looks_like_ini_file(cmd)) return render_main(args);
         throw UsageError("unknown command '" + cmd + "'");
     } catch (const UsageError& e) {
         std::string line = "povwall";

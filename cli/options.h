@@ -17,6 +17,7 @@ struct RenderOptions {
     trace::RenderSettings render;  // threads, antialias, alpha, partial rows
     int bits = 8;
     char format = 'N';  // POV-Ray +F letter: N png, T tga, P ppm, E exr
+    bool format_given = false;  // +F seen: that format whatever -o's extension says
     std::map<std::string, double> declares;
     bool quiet = false;
     std::string stats_file;
@@ -29,7 +30,13 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o);
 // True when `arg` looks like a POV-Ray switch rather than one of povwall's own options.
 bool looks_like_pov_switch(const std::string& arg);
 
+// POV-Ray .ini option files (Input_File_Name=..., Width=..., Antialias=on, ...).
+bool looks_like_ini_file(const std::string& arg);
+void apply_ini_file(const std::string& path, RenderOptions& o);
+
 std::string default_output_name(const RenderOptions& o);
+// The file extension of the +F format (".png", ".tga", ".ppm", ".exr").
+std::string format_extension(char format);
 
 int run_render(RenderOptions o);
 int run_diff(int argc, char** argv);

@@ -88,6 +88,11 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
             case 'F':
                 if (!v2.empty()) {
                     o.format = char(std::toupper((unsigned char)v2[0]));
+                    if (std::string("NTCPE").find(o.format) == std::string::npos) {
+                        throw UsageError("unsupported output format in '" + arg +
+                                         "' (povwall writes +FN, +FT, +FC, +FP, +FE)");
+                    }
+                    o.format_given = true;
                     if (v2.size() > 1) o.bits = int(number(arg, v2.substr(1)));
                 }
                 break;
@@ -100,13 +105,16 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
     return true;
 }
 
+std::string format_extension(char format) {
+    return format == 'T' || format == 'C' ? ".tga"
+           : format == 'P'                ? ".ppm"
+           : format == 'E'                ? ".exr"
+                                          : ".png";
+}
+
 std::string default_output_name(const RenderOptions& o) {
     std::filesystem::path p(o.scene);
-    const char* ext = o.format == 'T' || o.format == 'C' ? ".tga"
-                      : o.format == 'P'                  ? ".ppm"
-                      : o.format == 'E'                  ? ".exr"
-                                                         : ".png";
-    return p.filename().replace_extension(ext).string();
+    return p.filename().replace_extension(format_extension(o.format)).string();
 }
 
 }  // namespace povwall::cli

@@ -27,6 +27,10 @@ int run_render(RenderOptions o) {
     if (o.scene.empty()) throw UsageError("no scene file given (+ISCENE.pov or render SCENE.pov)");
     if (o.width <= 0 || o.height <= 0) throw UsageError("image size must be positive");
     if (o.output.empty()) o.output = default_output_name(o);
+    // As POV-Ray does: an output name without an extension gets the format's.
+    if (std::filesystem::path(o.output).extension().empty()) {
+        o.output += format_extension(o.format);
+    }
     parser::ParseOptions popts;
     popts.library_paths = o.library_paths;
     popts.image_width = o.width;
@@ -48,7 +52,9 @@ int run_render(RenderOptions o) {
     Image image = trace::render_scene(scene, o.render, &stats);
     auto t2 = Clock::now();
     try {
-        output::write_image(image, o.output, encoding_for(scene, o));
+        std::string format;
+        if (o.format_given) format = format_extension(o.format).substr(1);
+        output::write_image(image, o.output, encoding_for(scene, o), format);
     } catch (const output::ImageIoError& e) {
         std::cerr << "povwall: error: " << e.what() << "\n";
         return 2;

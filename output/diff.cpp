@@ -47,7 +47,7 @@ DiffResult diff_images(const Image& a, const Image& b, const DiffThresholds& t) 
     // per-channel threshold but few enough to be allowed.
     if (r.rmse > t.max_rmse || r.bad_pixel_fraction > t.max_bad_fraction) {
         r.status = DiffResult::Status::Fail;
-    } else if (r.warn_pixels > 0) {
+    } else if (n && double(r.warn_pixels) / double(n) > t.warn_percent / 100.0) {
         r.status = DiffResult::Status::Warn;
     }
     return r;
@@ -65,6 +65,16 @@ DiffResult diff_files(const std::string& a, const std::string& b, const DiffThre
         return r;
     }
     return diff_images(ia, ib, t);
+}
+
+Image difference_image(const Image& a, const Image& b) {
+    Image d(a.width, a.height);
+    if (a.width != b.width || a.height != b.height) return d;
+    for (size_t i = 0; i < d.rgba.size(); i += 4) {
+        for (int c = 0; c < 3; ++c) d.rgba[i + c] = std::fabs(a.rgba[i + c] - b.rgba[i + c]);
+        d.rgba[i + 3] = 1.0f;
+    }
+    return d;
 }
 
 }  // namespace povwall::output

@@ -37,10 +37,17 @@ float encode_channel(float v, const OutputEncoding& enc) {
 }
 
 void write_image(const Image& image, const std::string& path, const OutputEncoding& enc) {
+    write_image(image, path, enc, "");
+}
+
+void write_image(const Image& image, const std::string& path, const OutputEncoding& enc,
+                 const std::string& format) {
     fs::path target(path);
     if (target.parent_path().empty()) target = fs::path(".") / target;
-    std::string ext = target.extension().string();
+    std::string ext = format.empty() ? target.extension().string() : "." + format;
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    if (ext == ".tga") ext = ".targa";  // OIIO's plugin names
+    if (ext == ".ppm") ext = ".pnm";
     const bool linear_format = ext == ".exr" || ext == ".hdr";
     const int channels = enc.alpha ? 4 : 3;
     const int W = image.width, H = image.height;
@@ -60,6 +67,10 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
         for (int c = 0; c < channels; ++c) {
             float v = image.rgba[i * 4 + c];
             if (linear_format) {
+                // EXR/HDR hold linear light, as POV-Ray writes them (working -> linear).
+                if (c < 3 && enc.gamma_handling && enc.working_gamma != 1.0f) {
+                    v = std::pow(std::max(v, 0.0f), enc.working_gamma);
+                }
                 floats.push_back(v);
                 continue;
             }
@@ -71,11 +82,13 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
         }
     }
     fs::path tmp = temporary_name(target);
-    auto out = OIIO::ImageOutput::create(target.string());
+    auto out = OIIO::ImageOutput::create(format.empty() ? target.string() : ext.substr(1));
     if (!out) throw ImageIoError("cannot write '" + path + "': unsupported image format");
     // OIIO picks the format from the file name: give the temporary the same extension.
+    std::error_code ec;
     if (!out->open(tmp.string(), spec)) {
         std::string err = out->geterror();
+        fs::remove(tmp, ec);
         throw ImageIoError("cannot write '" + path + "': " + err);
     }
     const void* data = linear_format ? static_cast<const void*>(floats.data())
@@ -83,7 +96,6 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
                                      : static_cast<const void*>(bytes.data());
     bool ok = out->write_image(spec.format, data);
     ok = out->close() && ok;
-    std::error_code ec;
     if (!ok) {
         fs::remove(tmp, ec);
         throw ImageIoError("cannot write '" + path + "': " + out->geterror());
