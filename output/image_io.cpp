@@ -55,6 +55,9 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
     OIIO::ImageSpec spec(W, H, channels,
                          linear_format ? OIIO::TypeDesc::FLOAT
                                        : (sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8));
+    // POV-Ray writes straight (non-premultiplied) alpha; without this OIIO would divide the
+    // colours by alpha on the way out.
+    if (!linear_format) spec.attribute("oiio:UnassociatedAlpha", 1);
     if (!linear_format && enc.gamma_handling && enc.file_srgb) {
         spec.attribute("oiio:ColorSpace", "sRGB");
     }
@@ -74,6 +77,10 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
                 floats.push_back(v);
                 continue;
             }
+            // The renderer's colours are premultiplied (a transparent background adds black);
+            // POV-Ray's integer formats store straight alpha.
+            const float a = image.rgba[i * 4 + 3];
+            if (enc.alpha && c < 3) v = a > 0.0f ? v / a : 0.0f;
             float e = c == 3 ? std::clamp(v, 0.0f, 1.0f) : encode_channel(v, enc);
             // POV-Ray quantises with floor(x * max + 0.5).
             float q = std::floor(e * maxv + 0.5f);
@@ -108,7 +115,10 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
 }
 
 Image read_image(const std::string& path) {
-    auto in = OIIO::ImageInput::open(path);
+    // Values as stored: no premultiplication by alpha on the way in.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &config);
     if (!in) throw ImageIoError("cannot read '" + path + "': " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     std::vector<float> pixels(size_t(spec.width) * spec.height * spec.nchannels);
