@@ -113,6 +113,13 @@ int run_compare(int argc, char** argv) {
                    "reuse POV-Ray renders from this folder, keyed by a hash of the scene, its "
                    "includes and the render settings");
     app.add_flag("--warn-ok", warn_ok, "exit 0 on a warning (tests)");
+    output::DiffThresholds t;
+    app.add_option("--max-rmse", t.max_rmse, "largest RMSE that passes")->capture_default_str();
+    app.add_option("--max-bad-fraction", t.max_bad_fraction,
+                   "largest fraction of bad pixels that passes")
+        ->capture_default_str();
+    app.add_option("--fail", t.fail, "per-channel difference making a pixel bad")
+        ->capture_default_str();
     std::vector<std::string> pov_switches, rest;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
@@ -211,7 +218,7 @@ int run_compare(int argc, char** argv) {
     if (our_rc != 0) return our_rc;
     double pov_s = std::chrono::duration<double>(t1 - t0).count();
     double our_s = std::chrono::duration<double>(t3 - t2).count();
-    output::DiffResult r = output::diff_files(our_png, pov_png);
+    output::DiffResult r = output::diff_files(our_png, pov_png, t);
     if (json) {
         nlohmann::json j = diff_json(r);
         j["povwall_seconds"] = our_s;
