@@ -185,7 +185,8 @@ int run_compare(int argc, char** argv) {
     }
     auto t0 = Clock::now();
     int rc = 0;
-    if (!cached.empty() && fs::exists(cached)) {
+    const bool from_cache = !cached.empty() && fs::exists(cached);
+    if (from_cache) {
         fs::copy_file(cached, pov_png, fs::copy_options::overwrite_existing);
     } else {
         rc = run_process(cmd, log);
@@ -211,6 +212,8 @@ int run_compare(int argc, char** argv) {
         return 2;
     }
     o.output = our_png;
+    o.format_given = false;  // both renders are 8-bit PNG, compared as stored
+    o.bits = 8;
     o.quiet = true;
     auto t2 = Clock::now();
     int our_rc = run_render(o);
@@ -222,13 +225,19 @@ int run_compare(int argc, char** argv) {
     if (json) {
         nlohmann::json j = diff_json(r);
         j["povwall_seconds"] = our_s;
-        j["povray_seconds"] = pov_s;
+        // A cached reference has no render time of its own.
+        j["povray_seconds"] = from_cache ? nlohmann::json(nullptr) : nlohmann::json(pov_s);
+        j["povray_cached"] = from_cache;
         j["scene"] = o.scene;
         std::printf("%s\n", j.dump().c_str());
     } else {
         std::printf("scene: %s (%dx%d)\n", o.scene.c_str(), o.width, o.height);
-        std::printf("povray: %.3f s\npovwall: %.3f s (%.2fx)\n", pov_s, our_s,
-                    our_s > 0 ? pov_s / our_s : 0.0);
+        if (from_cache) {
+            std::printf("povray: cached reference %s\npovwall: %.3f s\n", cached.c_str(), our_s);
+        } else {
+            std::printf("povray: %.3f s\npovwall: %.3f s (%.2fx faster)\n", pov_s, our_s,
+                        our_s > 0 ? pov_s / our_s : 0.0);
+        }
         print_diff(r);
     }
     if (keep.empty()) fs::remove_all(dir);
