@@ -140,3 +140,131 @@ TEST(Cli, DiffReportsMetricsAndIdiffExitCodes) {
 }
 
 }  // namespace
+
+namespace {
+
+std::string head_bytes(const fs::path& p, size_t n) {
+    std::ifstream in(p, std::ios::binary);
+    std::string s(n, '\0');
+    in.read(s.data(), std::streamsize(n));
+    s.resize(size_t(in.gcount()));
+    return s;
+}
+
+bool povray_available() { return std::system("command -v povray >/dev/null 2>&1") == 0; }
+
+const char* kGreyScene =
+    "#version 3.7;\nglobal_settings { assumed_gamma 1 }\nbackground { color rgb <0.5, 0, 1> }\n";
+
+TEST(Cli, IniFileSetsSceneSizeAndFormat) {
+    fs::path scene = write_scene("ini_scene.pov", kGreyScene);
+    fs::path out = scratch() / "from_ini";
+    fs::remove(scratch() / "from_ini.tga");
+    fs::path ini = write_scene("opts.ini", "; POV-Ray options\n[default]\nInput_File_Name=" +
+                                               scene.string() + "\nOutput_File_Name=" +
+                                               out.string() + "\nWidth=9\nHeight=4\n"
+                                               "Antialias=Off\nOutput_File_Type=T\n");
+    RunResult r = run(ini.string() + " -GA");
+    ASSERT_EQ(r.code, 0) << r.err;
+    // No extension given: POV-Ray appends the format's, and +FT means Targa.
+    povwall::Image img = povwall::output::read_image((scratch() / "from_ini.tga").string());
+    EXPECT_EQ(img.width, 9);
+    EXPECT_EQ(img.height, 4);
+    EXPECT_FLOAT_EQ(img.pixel(8, 3)[0] * 255.0f, 188.0f);  // sRGB(0.5)
+    fs::path bad = write_scene("bad.ini", "Width=9\nFrobnicate=1\n");
+    r = run(bad.string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err.rfind("povwall: error: " + bad.string() +
+                              ":2: option 'Frobnicate' is not supported by povwall\n",
+                          0),
+              0u)
+        << r.err;
+}
+
+TEST(Cli, FormatSwitchWinsOverExtensionAndSixteenBits) {
+    fs::path scene = write_scene("fmt.pov", kGreyScene);
+    fs::path ppm = scratch() / "really_ppm.png", p16 = scratch() / "deep.png";
+    ASSERT_EQ(run("render " + scene.string() + " -o " + ppm.string() + " -W 3 -H 2 +FP -q").code,
+              0);
+    EXPECT_EQ(head_bytes(ppm, 2), "P6");
+    ASSERT_EQ(run("+I" + scene.string() + " +O" + p16.string() + " +W3 +H2 +FN16 -GA").code, 0);
+    EXPECT_NEAR(povwall::output::read_image(p16.string()).pixel(0, 0)[0] * 65535.0f, 48192.0f,
+                0.01);
+    RunResult r = run("+I" + scene.string() + " +FX");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err.rfind("povwall: error: unsupported output format in '+FX'", 0), 0u) << r.err;
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+    RunResult r = run("frobnicate");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err.rfind("povwall: error: unknown command 'frobnicate'\n", 0), 0u) << r.err;
+    r = run("render -W 10");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err.rfind("povwall: error: no scene file given", 0), 0u) << r.err;
+    r = run("+Ifoo.pov +Wabc");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err.rfind("povwall: error: bad value in switch '+Wabc'", 0), 0u) << r.err;
+}
+
+TEST(Cli, DiffWritesDifferenceImageAndTakesIdiffPercentages) {
+    fs::path a = scratch() / "da.png", b = scratch() / "db.png", d = scratch() / "dd.png";
+    povwall::Image ia = flat(20, 10, 0.5f);
+    povwall::Image ib = ia;
+    ib.pixel(19, 9)[1] = (128.0f + 51.0f) / 255.0f;  // one bad pixel of 200: 0.5 %
+    save(ia, a);
+    save(ib, b);
+    fs::remove(d);
+    RunResult r = run("diff " + a.string() + " " + b.string() + " -o " + d.string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find("bad_pixel_fraction: 0.005000 (1 of 200 pixels)\nFAILURE\n"),
+              std::string::npos)
+        << r.out;
+    povwall::Image diff = povwall::output::read_image(d.string());
+    EXPECT_FLOAT_EQ(diff.pixel(19, 9)[1] * 255.0f, 51.0f);
+    EXPECT_FLOAT_EQ(diff.pixel(0, 0)[1], 0.0f);
+    // 1 % allowed over --fail, but the pixel is still over --warn: a warning.
+    r = run("diff " + a.string() + " " + b.string() + " --failpercent 1 --max-rmse 0.1");
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_NE(r.out.find("WARNING"), std::string::npos);
+    r = run("diff " + a.string() + " " + b.string() +
+            " --failpercent 1 --warnpercent 1 --max-rmse 0.1 --json");
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["status"], "pass");
+    fs::path text = write_scene("notimage.png", "hello");
+    r = run("diff " + a.string() + " " + text.string() + " --json");
+    EXPECT_EQ(r.code, 4);
+    EXPECT_EQ(nlohmann::json::parse(r.out)["status"], "unreadable");
+}
+
+TEST(Cli, CompareReportsBothRendersAsJson) {
+    if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
+    fs::path scene = write_scene("cmp.pov",
+                                 "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+                                 "camera { location <0, 0, -3> look_at 0 }\n"
+                                 "light_source { <2, 3, -4> color rgb 1 }\n"
+                                 "sphere { 0, 1 pigment { color rgb <1, 0.5, 0.2> } }\n");
+    RunResult r = run("compare " + scene.string() + " -W 32 -H 24 --threads 1 --json");
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    nlohmann::json j = nlohmann::json::parse(r.out);
+    for (const char* key : {"rmse", "psnr", "max_abs", "bad_pixel_fraction", "width", "height",
+                            "povwall_seconds", "povray_seconds", "scene"}) {
+        EXPECT_TRUE(j.contains(key)) << key;
+    }
+    EXPECT_EQ(j["width"], 32);
+    EXPECT_EQ(j["height"], 24);
+    EXPECT_EQ(j["scene"], scene.string());
+    EXPECT_GT(j["povray_seconds"].get<double>(), 0.0);
+    EXPECT_LE(j["rmse"].get<double>(), 0.01);
+}
+
+TEST(Cli, CompareReportsPovRayFailure) {
+    if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
+    fs::path scene = write_scene("cmpbad.pov", "sphere { 0, 1 pigment { colr rgb 1 } }\n");
+    RunResult r = run("compare " + scene.string() + " -W 8 -H 8 --threads 1");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err.rfind("povwall: error: povray failed (exit ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("Parse Error"), std::string::npos) << r.err;  // povray's own text
+}
+
+}  // namespace
