@@ -362,38 +362,48 @@ TraceResult combine_children(const ShadingRecord& record, const TraceResult* res
     return r;
 }
 
-Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx) {
+bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
+                    Real light_distance, ShadowState& state, RayContext& ctx) {
     const float adc = scene.scene().settings.adc_bailout;
-    Ray ray = shadow.trace.ray;
-    Real remaining = shadow.t_max;
-    Rgb filter(1.0f);
-    if (remaining <= 2 * kShadowTolerance) return filter;
+    const Real hi = std::min(segment_end, light_distance - kShadowTolerance);
+    if (state.blocked) return true;
+    if (!(state.t_min < hi)) return false;
     // Most shadow rays meet only opaque blockers or nothing: find out in any order.
     bool transparent = false;
-    if (scene.opaque_blocker(ray, kShadowTolerance, remaining - kShadowTolerance, transparent,
-                             ctx)) {
-        return Rgb{};
+    if (scene.opaque_blocker(ray, state.t_min, hi, transparent, ctx)) {
+        state.blocked = true;
+        state.filter = Rgb{};
+        return true;
     }
-    if (!transparent) return filter;
-    for (int guard = 0; guard < 256; ++guard) {
-        if (remaining <= 2 * kShadowTolerance) break;
+    if (!transparent) return false;
+    // See-through blockers: each crossing multiplies the light by its filter, nearest first,
+    // the next search starting 1e-3 past the previous hit as POV-Ray's restarted ray does.
+    for (int guard = 0; guard < 256 && state.t_min < hi; ++guard) {
         Hit hit;
-        if (!scene.closest_hit(ray, kShadowTolerance, remaining - kShadowTolerance,
-                               RayUse::Shadow, hit, ctx)) {
-            break;
-        }
+        if (!scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx)) break;
         const Material& m = *hit.material;
-        if (m.opaque) return Rgb{};
+        bool black = m.opaque;
         for (const Texture& t : texture_of(m)) {
+            if (black) break;
             Colour c = eval_pigment(scene, t.pigment, hit.point);
-            if (std::fabs(c.filter) + std::fabs(c.transmit) < adc) return Rgb{};
-            filter *= rgb_transm(c);
+            if (std::fabs(c.filter) + std::fabs(c.transmit) < adc) black = true;
+            state.filter *= rgb_transm(c);
         }
-        if (filter.max_component() <= 0) return Rgb{};
-        ray.origin = hit.point;
-        remaining -= hit.t;
+        if (black || state.filter.max_component() <= 0) {
+            state.blocked = true;
+            state.filter = Rgb{};
+            return true;
+        }
+        state.t_min = hit.t + kShadowTolerance;
     }
-    return filter;
+    state.t_min = std::max(state.t_min, hi);
+    return false;
+}
+
+Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx) {
+    ShadowState state;
+    shadow_segment(scene, shadow.trace.ray, kInfinity, shadow.t_max, state, ctx);
+    return state.filter;
 }
 
 TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {

@@ -85,6 +85,18 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
 // reflection/transmission, the light's transmittance (rgb) for shadow rays.
 TraceResult combine_children(const ShadingRecord& record, const TraceResult* results);
 
+// Shadow ray state carried from box to box: the product of filters met so far and where
+// the search resumes (absolute distance along the ray: the origin is never moved).
+struct ShadowState {
+    Rgb filter{1.0f};
+    Real t_min = 1e-3;  // POV-Ray's SHADOW_TOLERANCE
+    bool blocked = false;
+};
+// Advances `state` over hits with t in [state.t_min, min(segment_end, light_distance - 1e-3)).
+// Returns true once the light is fully blocked.
+bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
+                    Real light_distance, ShadowState& state, RayContext& ctx);
+
 // Transmittance of the segment toward a light (shadow ray), POV-Ray's rules: hits in
 // (1e-3, distance - 1e-3), filters multiply, opaque blocks.
 Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx);
