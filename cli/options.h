@@ -18,6 +18,12 @@ struct RenderOptions {
     int bits = 8;
     char format = 'N';  // POV-Ray +F letter: N png, T tga, P ppm, E exr
     bool format_given = false;  // +F seen: that format whatever -o's extension says
+    // +SR/+ER/+SC/+EC as given: a row/column number (1-based) or, written with a decimal point
+    // and at most 1, a fraction of the image (POV-Ray's rule); resolved once the size is known.
+    struct Partial {
+        double value = -1;
+        bool fraction = false;
+    } start_row, end_row, start_col, end_col;
     std::map<std::string, double> declares;
     bool quiet = false;
     std::string stats_file;
@@ -37,6 +43,9 @@ void apply_ini_file(const std::string& path, RenderOptions& o);
 std::string default_output_name(const RenderOptions& o);
 // The file extension of the +F format (".png", ".tga", ".ppm", ".exr").
 std::string format_extension(char format);
+
+// Fills o.render's 0-based partial-render bounds from the +SR/+ER/+SC/+EC values.
+void resolve_partial_render(RenderOptions& o);
 
 int run_render(RenderOptions o);
 int run_diff(int argc, char** argv);

@@ -1,5 +1,6 @@
 // POV-Ray's command-line switches: `+` turns an option on (or sets a value), `-` off.
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
 #include "cli/options.h"
@@ -25,7 +26,33 @@ double number(const std::string& arg, const std::string& value) {
     }
 }
 
+RenderOptions::Partial partial(const std::string& arg) {
+    std::string v = arg.substr(3);
+    RenderOptions::Partial p;
+    p.value = number(arg, v);
+    p.fraction = v.find('.') != std::string::npos && p.value <= 1.0;
+    if (p.value < 0 || (!p.fraction && p.value < 1)) {
+        throw UsageError("bad value in switch '" + arg + "'");
+    }
+    return p;
+}
+
 }  // namespace
+
+void resolve_partial_render(RenderOptions& o) {
+    auto first = [](const RenderOptions::Partial& p, int size) {
+        if (p.value < 0) return 0;
+        return p.fraction ? int(p.value * size) : int(p.value) - 1;
+    };
+    auto last = [](const RenderOptions::Partial& p, int size) {
+        if (p.value < 0) return -1;
+        return p.fraction ? int(std::ceil(p.value * size)) - 1 : int(p.value) - 1;
+    };
+    o.render.first_row = first(o.start_row, o.height);
+    o.render.last_row = last(o.end_row, o.height);
+    o.render.first_col = first(o.start_col, o.width);
+    o.render.last_col = last(o.end_col, o.width);
+}
 
 bool looks_like_pov_switch(const std::string& arg) {
     if (arg.size() >= 2 && arg[0] == '+') return true;
@@ -58,13 +85,13 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
     } else if (starts_with_ci(arg, 1, "AM")) {
         o.render.aa_method = int(number(arg, arg.substr(3)));
     } else if (starts_with_ci(arg, 1, "SR")) {
-        o.render.first_row = int(number(arg, arg.substr(3))) - 1;
+        o.start_row = partial(arg);
     } else if (starts_with_ci(arg, 1, "ER")) {
-        o.render.last_row = int(number(arg, arg.substr(3))) - 1;
+        o.end_row = partial(arg);
     } else if (starts_with_ci(arg, 1, "SC")) {
-        o.render.first_col = int(number(arg, arg.substr(3))) - 1;
+        o.start_col = partial(arg);
     } else if (starts_with_ci(arg, 1, "EC")) {
-        o.render.last_col = int(number(arg, arg.substr(3))) - 1;
+        o.end_col = partial(arg);
     } else if (starts_with_ci(arg, 1, "GA") || starts_with_ci(arg, 1, "GD") ||
                starts_with_ci(arg, 1, "GF") || starts_with_ci(arg, 1, "GR") ||
                starts_with_ci(arg, 1, "GS") || starts_with_ci(arg, 1, "GW")) {

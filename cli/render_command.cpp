@@ -46,6 +46,7 @@ int run_render(RenderOptions o) {
         return 2;
     }
     auto t1 = Clock::now();
+    resolve_partial_render(o);
     o.render.width = o.width;
     o.render.height = o.height;
     trace::RenderStats stats;

@@ -195,6 +195,27 @@ TEST(Cli, FormatSwitchWinsOverExtensionAndSixteenBits) {
     EXPECT_EQ(r.err.rfind("povwall: error: unsupported output format in '+FX'", 0), 0u) << r.err;
 }
 
+TEST(Cli, PartialRenderByRowNumbersAndFractions) {
+    fs::path scene = write_scene("part.pov", kGreyScene);
+    fs::path out = scratch() / "part.png";
+    // Rows from half the height (fraction), columns 3..4 (1-based numbers): 5 x 2 pixels.
+    ASSERT_EQ(run("+I" + scene.string() + " +O" + out.string() +
+                  " +W10 +H10 +SR0.5 +SC3 +EC4 -GA")
+                  .code,
+              0);
+    povwall::Image img = povwall::output::read_image(out.string());
+    int rendered = 0;
+    for (int y = 0; y < 10; ++y) {
+        for (int x = 0; x < 10; ++x) {
+            bool inside = y >= 5 && x >= 2 && x <= 3;
+            EXPECT_FLOAT_EQ(img.pixel(x, y)[0] * 255.0f, inside ? 188.0f : 0.0f) << x << "," << y;
+            rendered += inside;
+        }
+    }
+    EXPECT_EQ(rendered, 10);
+    EXPECT_EQ(run("+I" + scene.string() + " +SR0").code, 2);
+}
+
 TEST(Cli, UsageErrorsExitTwo) {
     RunResult r = run("frobnicate");
     EXPECT_EQ(r.code, 2);
