@@ -279,6 +279,19 @@ TEST(Cli, CompareReportsBothRendersAsJson) {
     EXPECT_LE(j["rmse"].get<double>(), 0.01);
 }
 
+TEST(Cli, CompareWithoutPovRaySaysWhyAndExitsWithCTestSkipCode) {
+    fs::path scene = write_scene("nopov.pov", kGreyScene);
+    fs::path d = scratch();
+    std::string cmd = "PATH=/nonexistent " + std::string(POVWALL_BINARY) + " compare " +
+                      scene.string() + " -W 8 -H 8 2>" + (d / "nopov.err").string();
+    int status = std::system(cmd.c_str());
+    EXPECT_EQ(WEXITSTATUS(status), 77);  // golden tests declare SKIP_RETURN_CODE 77
+    std::ifstream in(d / "nopov.err");
+    std::string err(std::istreambuf_iterator<char>(in), {});
+    EXPECT_EQ(err,
+              "povwall: povray is not installed or not on PATH: nothing to compare with\n");
+}
+
 TEST(Cli, CompareReportsPovRayFailure) {
     if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
     fs::path scene = write_scene("cmpbad.pov", "sphere { 0, 1 pigment { colr rgb 1 } }\n");
