@@ -4,16 +4,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
-
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "cli/options.h"
 #include "output/diff.h"
@@ -31,14 +30,16 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-// Runs a command (no shell), stderr to `log`; returns its exit status, -1 if it cannot run.
+// Runs a command (no shell), stderr to `log`; returns its exit status, -1 if it cannot
+// run.
 int run_process(const std::vector<std::string>& args, const std::string& log) {
     std::vector<char*> argv;
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     posix_spawn_file_actions_t fa;
     posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&fa, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
     posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
     pid_t pid;
     int rc = posix_spawnp(&pid, argv[0], &fa, nullptr, argv.data(), environ);
@@ -94,8 +95,9 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
 }  // namespace
 
 int run_compare(int argc, char** argv) {
-    CLI::App app{"Render a scene with POV-Ray and with povwall, time both, diff the images",
-                 "povwall compare"};
+    CLI::App app{
+        "Render a scene with POV-Ray and with povwall, time both, diff the images",
+        "povwall compare"};
     RenderOptions o;
     bool json = false;
     std::string keep;
@@ -109,12 +111,14 @@ int run_compare(int argc, char** argv) {
     app.add_option("--keep", keep, "folder to keep both images in");
     std::string cache;
     bool warn_ok = false;
-    app.add_option("--cache", cache,
-                   "reuse POV-Ray renders from this folder, keyed by a hash of the scene, its "
-                   "includes and the render settings");
+    app.add_option(
+        "--cache", cache,
+        "reuse POV-Ray renders from this folder, keyed by a hash of the scene, its "
+        "includes and the render settings");
     app.add_flag("--warn-ok", warn_ok, "exit 0 on a warning (tests)");
     output::DiffThresholds t;
-    app.add_option("--max-rmse", t.max_rmse, "largest RMSE that passes")->capture_default_str();
+    app.add_option("--max-rmse", t.max_rmse, "largest RMSE that passes")
+        ->capture_default_str();
     app.add_option("--max-bad-fraction", t.max_bad_fraction,
                    "largest fraction of bad pixels that passes")
         ->capture_default_str();
@@ -123,8 +127,10 @@ int run_compare(int argc, char** argv) {
     std::vector<std::string> pov_switches, rest;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
-        if (looks_like_pov_switch(a)) pov_switches.push_back(a);
-        else rest.push_back(a);
+        if (looks_like_pov_switch(a))
+            pov_switches.push_back(a);
+        else
+            rest.push_back(a);
     }
     std::vector<char*> args{argv[0]};
     for (auto& r : rest) args.push_back(r.data());
@@ -179,7 +185,8 @@ int run_compare(int argc, char** argv) {
     std::string cached;
     if (!cache.empty()) {
         std::string key = cache_key(o, cmd);
-        if (key.empty()) return 2;  // the scene does not parse: run_render reports it below
+        if (key.empty())
+            return 2;  // the scene does not parse: run_render reports it below
         fs::create_directories(cache);
         cached = (fs::path(cache) / (stem + "-" + key + ".png")).string();
     }
@@ -198,8 +205,9 @@ int run_compare(int argc, char** argv) {
     }
     auto t1 = Clock::now();
     if (rc == -1) {
-        std::cerr << "povwall: povray is not installed or not on PATH: nothing to compare "
-                     "with\n";
+        std::cerr
+            << "povwall: povray is not installed or not on PATH: nothing to compare "
+               "with\n";
         return 77;  // CTest's skip code
     }
     if (rc != 0 || !fs::exists(pov_png)) {
@@ -226,14 +234,16 @@ int run_compare(int argc, char** argv) {
         nlohmann::json j = diff_json(r);
         j["povwall_seconds"] = our_s;
         // A cached reference has no render time of its own.
-        j["povray_seconds"] = from_cache ? nlohmann::json(nullptr) : nlohmann::json(pov_s);
+        j["povray_seconds"] =
+            from_cache ? nlohmann::json(nullptr) : nlohmann::json(pov_s);
         j["povray_cached"] = from_cache;
         j["scene"] = o.scene;
         std::printf("%s\n", j.dump().c_str());
     } else {
         std::printf("scene: %s (%dx%d)\n", o.scene.c_str(), o.width, o.height);
         if (from_cache) {
-            std::printf("povray: cached reference %s\npovwall: %.3f s\n", cached.c_str(), our_s);
+            std::printf("povray: cached reference %s\npovwall: %.3f s\n", cached.c_str(),
+                        our_s);
         } else {
             std::printf("povray: %.3f s\npovwall: %.3f s (%.2fx faster)\n", pov_s, our_s,
                         our_s > 0 ? pov_s / our_s : 0.0);

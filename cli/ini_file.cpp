@@ -17,7 +17,8 @@ std::string trim(const std::string& s) {
 }
 
 std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     return s;
 }
 
@@ -41,14 +42,14 @@ void apply_ini_file(const std::string& path, RenderOptions& o) {
     if (!in) throw UsageError("cannot open option file '" + path + "'");
     // Keys taking a value and the switch letter(s) they stand for.
     static const std::map<std::string, std::string> kValue = {
-        {"input_file_name", "I"},   {"output_file_name", "O"}, {"width", "W"},
-        {"height", "H"},            {"library_path", "L"},     {"antialias_threshold", "A"},
-        {"antialias_depth", "R"},   {"sampling_method", "AM"}, {"jitter_amount", "J"},
-        {"work_threads", "WT"},     {"start_row", "SR"},       {"end_row", "ER"},
-        {"start_column", "SC"},     {"end_column", "EC"},
+        {"input_file_name", "I"}, {"output_file_name", "O"}, {"width", "W"},
+        {"height", "H"},          {"library_path", "L"},     {"antialias_threshold", "A"},
+        {"antialias_depth", "R"}, {"sampling_method", "AM"}, {"jitter_amount", "J"},
+        {"work_threads", "WT"},   {"start_row", "SR"},       {"end_row", "ER"},
+        {"start_column", "SC"},   {"end_column", "EC"},
     };
     static const std::map<std::string, std::string> kFlag = {
-        {"antialias", "A"}, {"jitter", "J"}, {"output_alpha", "UA"},
+        {"antialias", "A"}, {"jitter", "J"},  {"output_alpha", "UA"},
         {"display", "D"},   {"verbose", "V"}, {"pause_when_done", "P"},
     };
     std::string line;
@@ -62,7 +63,8 @@ void apply_ini_file(const std::string& path, RenderOptions& o) {
         line = trim(line);
         if (line.empty() || line[0] == '[') continue;  // sections select nothing here
         if (line[0] == '+' || line[0] == '-') {
-            if (!apply_pov_switch(line, o)) throw UsageError(where + ": unknown switch '" + line + "'");
+            if (!apply_pov_switch(line, o))
+                throw UsageError(where + ": unknown switch '" + line + "'");
             continue;
         }
         size_t eq = line.find('=');

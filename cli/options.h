@@ -16,10 +16,11 @@ struct RenderOptions {
     std::vector<std::string> library_paths;
     trace::RenderSettings render;  // threads, antialias, alpha, partial rows
     int bits = 8;
-    char format = 'N';  // POV-Ray +F letter: N png, T tga, P ppm, E exr
+    char format = 'N';          // POV-Ray +F letter: N png, T tga, P ppm, E exr
     bool format_given = false;  // +F seen: that format whatever -o's extension says
-    // +SR/+ER/+SC/+EC as given: a row/column number (1-based) or, written with a decimal point
-    // and at most 1, a fraction of the image (POV-Ray's rule); resolved once the size is known.
+    // +SR/+ER/+SC/+EC as given: a row/column number (1-based) or, written with a decimal
+    // point and at most 1, a fraction of the image (POV-Ray's rule); resolved once the
+    // size is known.
     struct Partial {
         double value = -1;
         bool fraction = false;

@@ -10,7 +10,8 @@ namespace {
 
 bool starts_with_ci(const std::string& s, size_t at, const char* prefix) {
     for (size_t i = 0; prefix[i]; ++i) {
-        if (at + i >= s.size() || std::toupper((unsigned char)s[at + i]) != prefix[i]) return false;
+        if (at + i >= s.size() || std::toupper((unsigned char)s[at + i]) != prefix[i])
+            return false;
     }
     return true;
 }
@@ -58,7 +59,8 @@ bool looks_like_pov_switch(const std::string& arg) {
     if (arg.size() >= 2 && arg[0] == '+') return true;
     if (arg.rfind("Declare=", 0) == 0 || arg.rfind("declare=", 0) == 0) return true;
     if (arg.size() >= 2 && arg[0] == '-' && arg[1] != '-') {
-        // povwall's own short options: -o -W -H -L -h (with a separate or attached value).
+        // povwall's own short options: -o -W -H -L -h (with a separate or attached
+        // value).
         char c = arg[1];
         if (c == 'o' || c == 'h' || c == 'q') return false;
         if ((c == 'W' || c == 'H' || c == 'L') && arg.size() == 2) return false;
@@ -71,7 +73,8 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
     if (arg.rfind("Declare=", 0) == 0 || arg.rfind("declare=", 0) == 0) {
         std::string rest = arg.substr(8);
         size_t eq = rest.find('=');
-        if (eq == std::string::npos) throw UsageError("expected Declare=NAME=VALUE: '" + arg + "'");
+        if (eq == std::string::npos)
+            throw UsageError("expected Declare=NAME=VALUE: '" + arg + "'");
         o.declares[rest.substr(0, eq)] = number(arg, rest.substr(eq + 1));
         return true;
     }
@@ -98,16 +101,28 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
         o.quiet = !on;
     } else {
         switch (std::toupper((unsigned char)arg[1])) {
-            case 'I': o.scene = v2; break;
-            case 'O': o.output = v2; break;
-            case 'W': o.width = int(number(arg, v2)); break;
-            case 'H': o.height = int(number(arg, v2)); break;
-            case 'L': o.library_paths.push_back(v2); break;
+            case 'I':
+                o.scene = v2;
+                break;
+            case 'O':
+                o.output = v2;
+                break;
+            case 'W':
+                o.width = int(number(arg, v2));
+                break;
+            case 'H':
+                o.height = int(number(arg, v2));
+                break;
+            case 'L':
+                o.library_paths.push_back(v2);
+                break;
             case 'A':
                 o.render.antialias = on;
                 if (on && !v2.empty()) o.render.aa_threshold = number(arg, v2);
                 break;
-            case 'R': o.render.aa_depth = int(number(arg, v2)); break;
+            case 'R':
+                o.render.aa_depth = int(number(arg, v2));
+                break;
             case 'J':
                 o.render.aa_jitter = on;
                 if (on && !v2.empty()) o.render.aa_jitter_amount = number(arg, v2);
@@ -123,10 +138,19 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
                     if (v2.size() > 1) o.bits = int(number(arg, v2.substr(1)));
                 }
                 break;
-            case 'D': case 'V': case 'P': case 'X': case 'Q': case 'B': case 'C': case 'K':
+            case 'D':
+            case 'V':
+            case 'P':
+            case 'X':
+            case 'Q':
+            case 'B':
+            case 'C':
+            case 'K':
             case 'M':
-                break;  // display, verbosity, pause, quality, buffers: no effect on the image
-            default: return false;
+                break;  // display, verbosity, pause, quality, buffers: no effect on the
+                        // image
+            default:
+                return false;
         }
     }
     return true;

@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-
 #include <nlohmann/json.hpp>
 
 #include "cli/options.h"
@@ -24,7 +23,8 @@ OutputEncoding encoding_for(const Scene& scene, const RenderOptions& o) {
 }
 
 int run_render(RenderOptions o) {
-    if (o.scene.empty()) throw UsageError("no scene file given (+ISCENE.pov or render SCENE.pov)");
+    if (o.scene.empty())
+        throw UsageError("no scene file given (+ISCENE.pov or render SCENE.pov)");
     if (o.width <= 0 || o.height <= 0) throw UsageError("image size must be positive");
     if (o.output.empty()) o.output = default_output_name(o);
     // As POV-Ray does: an output name without an extension gets the format's.
@@ -63,11 +63,12 @@ int run_render(RenderOptions o) {
     double parse_s = std::chrono::duration<double>(t1 - t0).count();
     double total_s = std::chrono::duration<double>(t2 - t0).count();
     if (!o.quiet) {
-        std::fprintf(stderr,
-                     "povwall: %s %dx%d: parse %.3f s, prepare %.3f s, trace %.3f s, total %.3f s"
-                     "\n",
-                     o.output.c_str(), o.width, o.height, parse_s, stats.prepare_seconds,
-                     stats.trace_seconds, total_s);
+        std::fprintf(
+            stderr,
+            "povwall: %s %dx%d: parse %.3f s, prepare %.3f s, trace %.3f s, total %.3f s"
+            "\n",
+            o.output.c_str(), o.width, o.height, parse_s, stats.prepare_seconds,
+            stats.trace_seconds, total_s);
     }
     if (!o.stats_file.empty()) {
         nlohmann::json j;

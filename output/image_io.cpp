@@ -21,7 +21,8 @@ float srgb_encode(float x) {
 fs::path temporary_name(const fs::path& target) {
     std::random_device rd;
     fs::path dir = target.parent_path();
-    std::string name = "." + target.filename().string() + ".tmp" + std::to_string(rd() % 1000000);
+    std::string name =
+        "." + target.filename().string() + ".tmp" + std::to_string(rd() % 1000000);
     name += target.extension().string();
     return dir / name;
 }
@@ -31,7 +32,8 @@ fs::path temporary_name(const fs::path& target) {
 float encode_channel(float v, const OutputEncoding& enc) {
     if (!enc.gamma_handling) return std::clamp(v, 0.0f, 1.0f);
     // Working space (assumed_gamma) to linear, then to the file's encoding.
-    float lin = enc.working_gamma == 1.0f ? v : std::pow(std::max(v, 0.0f), enc.working_gamma);
+    float lin =
+        enc.working_gamma == 1.0f ? v : std::pow(std::max(v, 0.0f), enc.working_gamma);
     lin = std::clamp(lin, 0.0f, 1.0f);
     return enc.file_srgb ? srgb_encode(lin) : std::pow(lin, 1.0f / enc.file_gamma);
 }
@@ -52,11 +54,12 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
     const int channels = enc.alpha ? 4 : 3;
     const int W = image.width, H = image.height;
     const bool sixteen = enc.bits > 8 && !linear_format;
-    OIIO::ImageSpec spec(W, H, channels,
-                         linear_format ? OIIO::TypeDesc::FLOAT
-                                       : (sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8));
-    // POV-Ray writes straight (non-premultiplied) alpha; without this OIIO would divide the
-    // colours by alpha on the way out.
+    OIIO::ImageSpec spec(
+        W, H, channels,
+        linear_format ? OIIO::TypeDesc::FLOAT
+                      : (sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8));
+    // POV-Ray writes straight (non-premultiplied) alpha; without this OIIO would divide
+    // the colours by alpha on the way out.
     if (!linear_format) spec.attribute("oiio:UnassociatedAlpha", 1);
     if (!linear_format && enc.gamma_handling && enc.file_srgb) {
         spec.attribute("oiio:ColorSpace", "sRGB");
@@ -77,19 +80,22 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
                 floats.push_back(v);
                 continue;
             }
-            // The renderer's colours are premultiplied (a transparent background adds black);
-            // POV-Ray's integer formats store straight alpha.
+            // The renderer's colours are premultiplied (a transparent background adds
+            // black); POV-Ray's integer formats store straight alpha.
             const float a = image.rgba[i * 4 + 3];
             if (enc.alpha && c < 3) v = a > 0.0f ? v / a : 0.0f;
             float e = c == 3 ? std::clamp(v, 0.0f, 1.0f) : encode_channel(v, enc);
             // POV-Ray quantises with floor(x * max + 0.5).
             float q = std::floor(e * maxv + 0.5f);
-            if (sixteen) words.push_back(uint16_t(q));
-            else bytes.push_back(uint8_t(q));
+            if (sixteen)
+                words.push_back(uint16_t(q));
+            else
+                bytes.push_back(uint8_t(q));
         }
     }
     fs::path tmp = temporary_name(target);
-    auto out = OIIO::ImageOutput::create(format.empty() ? target.string() : ext.substr(1));
+    auto out =
+        OIIO::ImageOutput::create(format.empty() ? target.string() : ext.substr(1));
     if (!out) throw ImageIoError("cannot write '" + path + "': unsupported image format");
     // OIIO picks the format from the file name: give the temporary the same extension.
     std::error_code ec;
@@ -128,7 +134,8 @@ Image read_image(const std::string& path) {
     Image img(spec.width, spec.height);
     const int nc = spec.nchannels;
     for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i) {
-        for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] = pixels[i * nc + std::min(c, nc - 1)];
+        for (int c = 0; c < 3; ++c)
+            img.rgba[i * 4 + c] = pixels[i * nc + std::min(c, nc - 1)];
         img.rgba[i * 4 + 3] = nc >= 4 ? pixels[i * nc + 3] : 1.0f;
     }
     in->close();

@@ -1,13 +1,13 @@
-// End-to-end tests of the povwall binary: exit codes, exact diagnostics, no partial output.
+// End-to-end tests of the povwall binary: exit codes, exact diagnostics, no partial
+// output.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cmath>
 #include <cstdio>
-
-#include <nlohmann/json.hpp>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "core/image.h"
@@ -23,15 +23,16 @@ struct RunResult {
 };
 
 fs::path scratch() {
-    fs::path d = fs::temp_directory_path() / ("povwall-cli-test-" + std::to_string(getpid()));
+    fs::path d =
+        fs::temp_directory_path() / ("povwall-cli-test-" + std::to_string(getpid()));
     fs::create_directories(d);
     return d;
 }
 
 RunResult run(const std::string& args) {
     fs::path d = scratch();
-    std::string cmd = std::string(POVWALL_BINARY) + " " + args + " >" + (d / "out").string() +
-                      " 2>" + (d / "err").string();
+    std::string cmd = std::string(POVWALL_BINARY) + " " + args + " >" +
+                      (d / "out").string() + " 2>" + (d / "err").string();
     int status = std::system(cmd.c_str());
     auto slurp = [](const fs::path& p) {
         std::ifstream in(p);
@@ -47,40 +48,48 @@ fs::path write_scene(const std::string& name, const std::string& text) {
 }
 
 TEST(Cli, SyntaxErrorIsLocatedExitsTwoAndWritesNothing) {
-    fs::path scene = write_scene("bad.pov", "camera { location <0, 0, -3> }\nsphere { 0, 1\n"
-                                            "  pigment { colour rgb <1, 0, 0> }\n  finsh { }\n}\n");
+    fs::path scene = write_scene("bad.pov",
+                                 "camera { location <0, 0, -3> }\nsphere { 0, 1\n"
+                                 "  pigment { colour rgb <1, 0, 0> }\n  finsh { }\n}\n");
     fs::path out = scratch() / "bad.png";
     fs::remove(out);
-    RunResult r = run("render " + scene.string() + " -o " + out.string() + " -W 16 -H 16");
+    RunResult r =
+        run("render " + scene.string() + " -o " + out.string() + " -W 16 -H 16");
     EXPECT_EQ(r.code, 2);
-    EXPECT_EQ(r.err, scene.string() +
-                         ":4:3: error: expected an object modifier or '}' but found 'finsh'\n"
-                         "  finsh { }\n"
-                         "  ^~~~~\n");
+    EXPECT_EQ(r.err,
+              scene.string() +
+                  ":4:3: error: expected an object modifier or '}' but found 'finsh'\n"
+                  "  finsh { }\n"
+                  "  ^~~~~\n");
     EXPECT_FALSE(fs::exists(out));
     for (const auto& e : fs::directory_iterator(scratch())) {
-        EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+        EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos)
+            << e.path();
     }
 }
 
 TEST(Cli, UnknownIdentifierAndMissingIncludeAreLocated) {
     fs::path scene = write_scene("undef.pov", "sphere { 0, Radius }\n");
-    RunResult r = run("+I" + scene.string() + " +O" + (scratch() / "u.png").string() + " +W8 +H8");
+    RunResult r =
+        run("+I" + scene.string() + " +O" + (scratch() / "u.png").string() + " +W8 +H8");
     EXPECT_EQ(r.code, 2);
-    EXPECT_EQ(r.err, scene.string() + ":1:13: error: undeclared identifier 'Radius'\n"
-                                      "sphere { 0, Radius }\n"
-                                      "            ^~~~~~\n");
+    EXPECT_EQ(r.err, scene.string() +
+                         ":1:13: error: undeclared identifier 'Radius'\n"
+                         "sphere { 0, Radius }\n"
+                         "            ^~~~~~\n");
     fs::path inc = write_scene("inc.pov", "#include \"missing.inc\"\n");
     r = run("render " + inc.string() + " -o " + (scratch() / "i.png").string());
     EXPECT_EQ(r.code, 2);
-    EXPECT_EQ(r.err, inc.string() + ":1:10: error: cannot find include file \"missing.inc\"\n"
-                                    "#include \"missing.inc\"\n"
-                                    "         ^~~~~~~~~~~~~\n");
+    EXPECT_EQ(r.err, inc.string() +
+                         ":1:10: error: cannot find include file \"missing.inc\"\n"
+                         "#include \"missing.inc\"\n"
+                         "         ^~~~~~~~~~~~~\n");
     EXPECT_FALSE(fs::exists(scratch() / "i.png"));
 }
 
 TEST(Cli, MissingSceneFile) {
-    RunResult r = run("render /nonexistent/scene.pov -o " + (scratch() / "m.png").string());
+    RunResult r =
+        run("render /nonexistent/scene.pov -o " + (scratch() / "m.png").string());
     EXPECT_EQ(r.code, 2);
     EXPECT_EQ(r.err, "povwall: error: cannot open scene file '/nonexistent/scene.pov'\n");
 }
@@ -125,7 +134,8 @@ TEST(Cli, DiffReportsMetricsAndIdiffExitCodes) {
     EXPECT_NEAR(j["rmse"].get<double>(), std::sqrt(0.04 / 300), 1e-6);
     EXPECT_EQ(j["width"], 10);
     EXPECT_EQ(j["height"], 10);
-    r = run("diff " + a.string() + " " + b.string() + " --max-bad-fraction 0.05 --max-rmse 0.02");
+    r = run("diff " + a.string() + " " + b.string() +
+            " --max-bad-fraction 0.05 --max-rmse 0.02");
     EXPECT_EQ(r.code, 1);  // within the allowed fraction, but a pixel is over: warning
     EXPECT_NE(r.out.find("max_abs: 0.200000 @ (3, 4, R) 0.501961 vs 0.701961"),
               std::string::npos)
@@ -154,20 +164,23 @@ std::string head_bytes(const fs::path& p, size_t n) {
 bool povray_available() { return std::system("command -v povray >/dev/null 2>&1") == 0; }
 
 const char* kGreyScene =
-    "#version 3.7;\nglobal_settings { assumed_gamma 1 }\nbackground { color rgb <0.5, 0, 1> }\n";
+    "#version 3.7;\nglobal_settings { assumed_gamma 1 }\nbackground { color rgb <0.5, 0, "
+    "1> }\n";
 
 TEST(Cli, IniFileSetsSceneSizeAndFormat) {
     fs::path scene = write_scene("ini_scene.pov", kGreyScene);
     fs::path out = scratch() / "from_ini";
     fs::remove(scratch() / "from_ini.tga");
-    fs::path ini = write_scene("opts.ini", "; POV-Ray options\n[default]\nInput_File_Name=" +
-                                               scene.string() + "\nOutput_File_Name=" +
-                                               out.string() + "\nWidth=9\nHeight=4\n"
-                                               "Antialias=Off\nOutput_File_Type=T\n");
+    fs::path ini = write_scene(
+        "opts.ini", "; POV-Ray options\n[default]\nInput_File_Name=" + scene.string() +
+                        "\nOutput_File_Name=" + out.string() +
+                        "\nWidth=9\nHeight=4\n"
+                        "Antialias=Off\nOutput_File_Type=T\n");
     RunResult r = run(ini.string() + " -GA");
     ASSERT_EQ(r.code, 0) << r.err;
     // No extension given: POV-Ray appends the format's, and +FT means Targa.
-    povwall::Image img = povwall::output::read_image((scratch() / "from_ini.tga").string());
+    povwall::Image img =
+        povwall::output::read_image((scratch() / "from_ini.tga").string());
     EXPECT_EQ(img.width, 9);
     EXPECT_EQ(img.height, 4);
     EXPECT_FLOAT_EQ(img.pixel(8, 3)[0] * 255.0f, 188.0f);  // sRGB(0.5)
@@ -184,15 +197,19 @@ TEST(Cli, IniFileSetsSceneSizeAndFormat) {
 TEST(Cli, FormatSwitchWinsOverExtensionAndSixteenBits) {
     fs::path scene = write_scene("fmt.pov", kGreyScene);
     fs::path ppm = scratch() / "really_ppm.png", p16 = scratch() / "deep.png";
-    ASSERT_EQ(run("render " + scene.string() + " -o " + ppm.string() + " -W 3 -H 2 +FP -q").code,
-              0);
+    ASSERT_EQ(
+        run("render " + scene.string() + " -o " + ppm.string() + " -W 3 -H 2 +FP -q")
+            .code,
+        0);
     EXPECT_EQ(head_bytes(ppm, 2), "P6");
-    ASSERT_EQ(run("+I" + scene.string() + " +O" + p16.string() + " +W3 +H2 +FN16 -GA").code, 0);
-    EXPECT_NEAR(povwall::output::read_image(p16.string()).pixel(0, 0)[0] * 65535.0f, 48192.0f,
-                0.01);
+    ASSERT_EQ(
+        run("+I" + scene.string() + " +O" + p16.string() + " +W3 +H2 +FN16 -GA").code, 0);
+    EXPECT_NEAR(povwall::output::read_image(p16.string()).pixel(0, 0)[0] * 65535.0f,
+                48192.0f, 0.01);
     RunResult r = run("+I" + scene.string() + " +FX");
     EXPECT_EQ(r.code, 2);
-    EXPECT_EQ(r.err.rfind("povwall: error: unsupported output format in '+FX'", 0), 0u) << r.err;
+    EXPECT_EQ(r.err.rfind("povwall: error: unsupported output format in '+FX'", 0), 0u)
+        << r.err;
 }
 
 TEST(Cli, PartialRenderByRowNumbersAndFractions) {
@@ -208,7 +225,8 @@ TEST(Cli, PartialRenderByRowNumbersAndFractions) {
     for (int y = 0; y < 10; ++y) {
         for (int x = 0; x < 10; ++x) {
             bool inside = y >= 5 && x >= 2 && x <= 3;
-            EXPECT_FLOAT_EQ(img.pixel(x, y)[0] * 255.0f, inside ? 188.0f : 0.0f) << x << "," << y;
+            EXPECT_FLOAT_EQ(img.pixel(x, y)[0] * 255.0f, inside ? 188.0f : 0.0f)
+                << x << "," << y;
             rendered += inside;
         }
     }
@@ -219,7 +237,8 @@ TEST(Cli, PartialRenderByRowNumbersAndFractions) {
 TEST(Cli, UsageErrorsExitTwo) {
     RunResult r = run("frobnicate");
     EXPECT_EQ(r.code, 2);
-    EXPECT_EQ(r.err.rfind("povwall: error: unknown command 'frobnicate'\n", 0), 0u) << r.err;
+    EXPECT_EQ(r.err.rfind("povwall: error: unknown command 'frobnicate'\n", 0), 0u)
+        << r.err;
     r = run("render -W 10");
     EXPECT_EQ(r.code, 2);
     EXPECT_EQ(r.err.rfind("povwall: error: no scene file given", 0), 0u) << r.err;
@@ -268,8 +287,8 @@ TEST(Cli, CompareReportsBothRendersAsJson) {
     RunResult r = run("compare " + scene.string() + " -W 32 -H 24 --threads 1 --json");
     ASSERT_EQ(r.code, 0) << r.err << r.out;
     nlohmann::json j = nlohmann::json::parse(r.out);
-    for (const char* key : {"rmse", "psnr", "max_abs", "bad_pixel_fraction", "width", "height",
-                            "povwall_seconds", "povray_seconds", "scene"}) {
+    for (const char* key : {"rmse", "psnr", "max_abs", "bad_pixel_fraction", "width",
+                            "height", "povwall_seconds", "povray_seconds", "scene"}) {
         EXPECT_TRUE(j.contains(key)) << key;
     }
     EXPECT_EQ(j["width"], 32);
@@ -288,17 +307,20 @@ TEST(Cli, CompareWithoutPovRaySaysWhyAndExitsWithCTestSkipCode) {
     EXPECT_EQ(WEXITSTATUS(status), 77);  // golden tests declare SKIP_RETURN_CODE 77
     std::ifstream in(d / "nopov.err");
     std::string err(std::istreambuf_iterator<char>(in), {});
-    EXPECT_EQ(err,
-              "povwall: povray is not installed or not on PATH: nothing to compare with\n");
+    EXPECT_EQ(
+        err,
+        "povwall: povray is not installed or not on PATH: nothing to compare with\n");
 }
 
 TEST(Cli, CompareReportsPovRayFailure) {
     if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
-    fs::path scene = write_scene("cmpbad.pov", "sphere { 0, 1 pigment { colr rgb 1 } }\n");
+    fs::path scene =
+        write_scene("cmpbad.pov", "sphere { 0, 1 pigment { colr rgb 1 } }\n");
     RunResult r = run("compare " + scene.string() + " -W 8 -H 8 --threads 1");
     EXPECT_EQ(r.code, 2);
     EXPECT_EQ(r.err.rfind("povwall: error: povray failed (exit ", 0), 0u) << r.err;
-    EXPECT_NE(r.err.find("Parse Error"), std::string::npos) << r.err;  // povray's own text
+    EXPECT_NE(r.err.find("Parse Error"), std::string::npos)
+        << r.err;  // povray's own text
 }
 
 }  // namespace

@@ -17,7 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch() {
-    fs::path d = fs::temp_directory_path() / ("povwall-output-test-" + std::to_string(getpid()));
+    fs::path d =
+        fs::temp_directory_path() / ("povwall-output-test-" + std::to_string(getpid()));
     fs::create_directories(d);
     return d;
 }
@@ -44,7 +45,8 @@ std::string head_bytes(const fs::path& p, size_t n) {
 // Only the named files are left in `dir` (no temporaries).
 std::vector<std::string> listing(const fs::path& dir) {
     std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename());
+    for (const auto& e : fs::directory_iterator(dir))
+        names.push_back(e.path().filename());
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -73,10 +75,11 @@ TEST(EncodeChannel, LinearWorkingSpaceIsSrgbEncoded) {
 
 TEST(EncodeChannel, WorkingGammaIsUndoneBeforeFileEncoding) {
     OutputEncoding e;
-    e.working_gamma = 2.2f;  // #version 3.6; assumed_gamma 2.2: POV-Ray writes 128 for 0.5
+    e.working_gamma =
+        2.2f;  // #version 3.6; assumed_gamma 2.2: POV-Ray writes 128 for 0.5
     EXPECT_EQ(quantise8(encode_channel(0.5f, e)), 128);
-    EXPECT_NEAR(encode_channel(0.5f, e), 1.055 * std::pow(std::pow(0.5, 2.2), 1 / 2.4) - 0.055,
-                1e-6);
+    EXPECT_NEAR(encode_channel(0.5f, e),
+                1.055 * std::pow(std::pow(0.5, 2.2), 1 / 2.4) - 0.055, 1e-6);
     OutputEncoding g;
     g.file_srgb = false;
     g.file_gamma = 2.2f;
@@ -109,7 +112,7 @@ TEST(WriteImage, AlphaIsWrittenStraightAsPovRayDoes) {
     write_image(flat(2, 2, 0.125f, 0.125f, 0.125f, 0.25f), p.string(), e);
     Image back = read_image(p.string());
     EXPECT_FLOAT_EQ(back.pixel(1, 1)[0] * 255.0f, 188.0f);
-    EXPECT_FLOAT_EQ(back.pixel(1, 1)[3] * 255.0f, 64.0f);   // floor(0.25*255 + 0.5)
+    EXPECT_FLOAT_EQ(back.pixel(1, 1)[3] * 255.0f, 64.0f);  // floor(0.25*255 + 0.5)
     fs::path opaque = scratch() / "opaque.png";
     write_image(flat(2, 2, 0.5f, 0.5f, 0.5f, 0.25f), opaque.string(), OutputEncoding{});
     EXPECT_FLOAT_EQ(read_image(opaque.string()).pixel(0, 0)[3], 1.0f);  // RGB file
@@ -118,7 +121,8 @@ TEST(WriteImage, AlphaIsWrittenStraightAsPovRayDoes) {
 TEST(WriteImage, FormatFromExtensionOrExplicit) {
     Image img = flat(4, 3, 0.5f, 0.25f, 0.125f);
     OutputEncoding e;
-    fs::path tga = scratch() / "f.tga", ppm = scratch() / "f.ppm", exr = scratch() / "f.exr";
+    fs::path tga = scratch() / "f.tga", ppm = scratch() / "f.ppm",
+             exr = scratch() / "f.exr";
     write_image(img, tga.string(), e);
     write_image(img, ppm.string(), e);
     write_image(img, exr.string(), e);
@@ -210,7 +214,8 @@ TEST(Diff, SizeMismatchUnreadableAndDifferenceImage) {
     EXPECT_EQ(r.error, "image sizes differ: 4x4 vs 4x5");
     r = diff_files((scratch() / "nope.png").string(), (scratch() / "nope2.png").string());
     EXPECT_EQ(r.status, DiffResult::Status::Unreadable);
-    Image d = difference_image(flat(2, 1, 0.5f, 0.2f, 1.0f), flat(2, 1, 0.25f, 0.7f, 1.0f));
+    Image d =
+        difference_image(flat(2, 1, 0.5f, 0.2f, 1.0f), flat(2, 1, 0.25f, 0.7f, 1.0f));
     EXPECT_FLOAT_EQ(d.pixel(1, 0)[0], 0.25f);
     EXPECT_FLOAT_EQ(d.pixel(1, 0)[1], 0.5f);
     EXPECT_FLOAT_EQ(d.pixel(1, 0)[2], 0.0f);
