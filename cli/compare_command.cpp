@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -84,9 +85,19 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
         if (i == 1 || i == 2) continue;  // input and output paths
         h = fnv1a(h, cmd[i]);
     }
-    std::error_code ec;
-    auto stamp = fs::last_write_time("/usr/bin/povray", ec);
-    if (!ec) h = fnv1a(h, std::to_string(stamp.time_since_epoch().count()));
+    // The povray binary found on PATH (a new POV-Ray build invalidates the cache).
+    const char* path_env = std::getenv("PATH");
+    std::stringstream dirs(path_env ? path_env : "");
+    for (std::string d; std::getline(dirs, d, ':');) {
+        std::error_code ec;
+        fs::path exe = fs::path(d.empty() ? "." : d) / "povray";
+        auto stamp = fs::last_write_time(exe, ec);
+        if (ec) continue;
+        h = fnv1a(h, fs::canonical(exe, ec).string());
+        h = fnv1a(h, std::to_string(stamp.time_since_epoch().count()));
+        h = fnv1a(h, std::to_string(fs::file_size(exe, ec)));
+        break;
+    }
     char buf[17];
     std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)h);
     return buf;
