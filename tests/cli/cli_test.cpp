@@ -92,6 +92,7 @@ TEST(Cli, MissingSceneFile) {
         run("render /nonexistent/scene.pov -o " + (scratch() / "m.png").string());
     EXPECT_EQ(r.code, 2);
     EXPECT_EQ(r.err, "povwall: error: cannot open scene file '/nonexistent/scene.pov'\n");
+    EXPECT_FALSE(fs::exists(scratch() / "m.png"));
 }
 
 TEST(Cli, RenderWritesImageOfRequestedSizeWithPovSwitches) {
