@@ -37,6 +37,9 @@ struct Warp {
     int octaves = 6;
     Real omega = 0.5, lambda = 2.0;
     Vector3 repeat{0, 0, 0}, offset{0, 0, 0}, flip{0, 0, 0};  // repeat warp
+    // Turbulence only: true for the pattern's classic `turbulence` keyword (POV-Ray applies
+    // it last and marble/wood/spiral/agate read it), false for `warp { turbulence }`.
+    bool classic = true;
     Transform transform;  // transforms applied after this warp (pattern space)
 };
 

@@ -1,19 +1,370 @@
+// Pattern values as POV-Ray 3.7 computes them (source/backend/pattern/pattern.cpp and
+// warps.cpp of 3.7-stable, read for semantics; this is an independent implementation).
 #include "trace/pattern.h"
 
-namespace povwall::trace {
+#include <algorithm>
+#include <cmath>
 
-// Placeholder until the pattern library lands (issue 5): solid pigments only.
-Real evaluate_pattern(const PatternSpec& spec, const Point3& world, const PatternEnv& env) {
+#include "trace/pattern_internal.h"
+
+namespace povwall::trace {
+namespace detail {
+namespace {
+
+constexpr Real kEpsilon = 1e-10;
+constexpr Real kCoordinateLimit = 1.0e17;
+
+TurbulenceParams turb_params(const Warp* w) {
+    TurbulenceParams t;
+    if (w) {
+        // POV-Ray clamps octaves to 1..10 when parsing.
+        t.octaves = std::clamp(w->octaves, 1, 10);
+        t.omega = w->omega;
+        t.lambda = w->lambda;
+    }
+    return t;
+}
+
+Point3 apply_turbulence(const Warp& w, const Point3& p) {
+    Vector3 d = dturbulence(p, turb_params(&w));
+    return p + d * w.turbulence;
+}
+
+Point3 apply_repeat(const Warp& w, const Point3& p) {
+    // POV-Ray's repeat warp works along the single axis whose component is non-zero.
+    int axis = w.repeat.x != 0 ? 0 : (w.repeat.y != 0 ? 1 : 2);
+    Real width = w.repeat[axis];
+    if (width == 0) return p;
+    Vector3 flip = w.flip;
+    for (int i = 0; i < 3; ++i) flip[i] = flip[i] != 0 ? -1.0 : 1.0;
+    Point3 r = p;
+    float block = float(std::floor(p[axis] / width));  // POV-Ray keeps it single precision
+    r[axis] = p[axis] - block * width;
+    if (int(block) & 1) {
+        r = r * flip;
+        if (flip[axis] < 0) r[axis] = width + r[axis];
+    }
+    return r + w.offset * Real(block);
+}
+
+// Pattern values of the individual patterns at a pattern-space point.
+
+Real brick(const PatternSpec& s, const Point3& p) {
+    Vector3 size = s.vector2 == Vector3(0, 0, 0) ? Vector3(8.0, 3.0, 4.5) : s.vector2;
+    Real mortar = s.scalar != 0 ? s.scalar : 0.5 - kEpsilon * 2.0;
+    Real fudge = kEpsilon + mortar;
+    Real x = p.x + fudge, y = p.y + fudge, z = p.z + fudge;
+    auto frac = [](Real v) {
+        v -= Real(int(v));  // truncation, then wrapped into [0,1)
+        return v < 0 ? v + 1.0 : v;
+    };
+    if (frac(y / size.y) <= mortar / size.y) return 0;
+    Real row = frac((y / size.y) * 0.5);
+    bool odd = row <= 0.5;
+    Real mw = mortar / size.x, md = mortar / size.z;
+    if (frac(x / size.x) <= mw && odd) return 0;
+    if (frac(x / size.x + 0.5) <= mw && !odd) return 0;
+    if (frac(z / size.z) <= md && !odd) return 0;
+    if (frac(z / size.z + 0.5) <= md && odd) return 0;
+    return 1;
+}
+
+Real checker(const Point3& p) {
+    int v = int(std::floor(p.x + kEpsilon) + std::floor(p.y + kEpsilon) +
+                std::floor(p.z + kEpsilon));
+    return (v & 1) ? 1.0 : 0.0;
+}
+
+Real hexagon(const Point3& p) {
+    constexpr Real kXFactor = 0.5, kZFactor = 0.866025404;
+    Real x = std::fabs(p.x);
+    // Keep z positive without mirroring: 5.196152424 is six grid rows.
+    Real z = p.z < 0.0 ? 5.196152424 - std::fabs(p.z) : p.z;
+    Real xs = x / kXFactor, zs = z / kZFactor;
+    xs -= std::floor(xs / 6.0) * 6.0;
+    zs -= std::floor(zs / 6.0) * 6.0;
+    int xm = int(std::floor(xs)) % 6, zm = int(std::floor(zs)) % 6;
+    switch (xm) {
+        case 0:
+        case 5:
+            return (zm == 0 || zm == 5) ? 0 : (zm <= 2 ? 1 : 2);
+        case 2:
+        case 3:
+            return zm <= 1 ? 2 : (zm <= 3 ? 0 : 1);
+        default: {
+            Real xl = xs - xm, zl = zs - zm;
+            if (((xm + zm) % 2) == 1) xl = 1.0 - xl;
+            if (xl == 0.0) xl = 0.0001;
+            bool below = (zl / xl) < 1.0;
+            int r = zm % 3;  // rows 0/3, 1/4, 2/5 behave alike
+            if (below) return r == 0 ? 0 : (r == 2 ? 1 : 2);
+            return r == 0 ? 2 : (r == 2 ? 0 : 1);
+        }
+    }
+}
+
+Real granite(const Point3& p, int gen) {
+    Real sum = 0, freq = 1.0;
+    Vector3 base = p * 4.0;
+    for (int i = 0; i < 6; ++i, freq *= 2.0) {
+        Real n = noise(base * freq, gen);
+        Real t = gen == 1 ? std::fabs(0.5 - n) : std::min(std::fabs(1.0 - 2.0 * n), 0.5);
+        sum += t / freq;
+    }
+    return sum;
+}
+
+Real wrinkles(const Point3& p, int gen) {
+    auto octave = [&](const Point3& q) {
+        Real n = noise(q, gen);
+        return gen == 1 ? n : std::clamp(n * 2.0 - 0.5, 0.0, 1.0);
+    };
+    Real value = octave(p), lambda = 2.0, omega = 0.5;
+    for (int i = 1; i < 10; ++i) {
+        value += omega * octave(p * lambda);
+        lambda *= 2.0;
+        omega *= 0.5;
+    }
+    return value / 2.0;
+}
+
+Real mandel(const Point3& p, int iterations) {
+    Real a = p.x, b = p.y, x = a, y = b, a2 = a * a, b2 = b * b;
+    for (int col = 0; col < iterations; ++col) {
+        b = 2.0 * a * b + y;
+        a = a2 - b2 + x;
+        a2 = a * a;
+        b2 = b * b;
+        if (a2 + b2 > 4.0) return Real(col) / Real(iterations);  // exterior: iteration ratio
+    }
+    return 1.0;  // interior factor
+}
+
+Real spiral_angle_term(const Point3& p, Real arms, Real& rad) {
+    rad = std::sqrt(p.x * p.x + p.y * p.y);
+    Real phi = 0;
+    if (rad != 0.0) {
+        phi = p.x < 0.0 ? 3.0 * kPi / 2 - std::asin(p.y / rad) : kPi / 2 + std::asin(p.y / rad);
+    }
+    return arms * phi / (2 * kPi);
+}
+
+Real quilt_cubic(Real t, Real p1, Real p2) {
+    constexpr Real kInvSqrt34 = 1.154700538;
+    Real it = 1 - t;
+    return (t * t * t + 3.0 * t * it * it * p1 + 3.0 * t * t * it * p2) * kInvSqrt34;
+}
+
+// POV-Ray's density clip for boxed/spherical/cylindrical/planar: 1 at 0 falling to 0 at 1.
+Real clip_density(Real r) { return r < 0.0 ? 1.0 : (r > 1.0 ? 0.0 : 1.0 - r); }
+
+Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
+    int gen = resolve_generator(s, env);
+    const Warp* turb = classic_turbulence(s);
+    switch (s.kind) {
+        case PatternKind::Solid:
+        case PatternKind::Average:
+        case PatternKind::ImageMap:
+            return 0;
+        case PatternKind::Agate: {
+            Real scale = s.scalar != 0 ? s.scalar : 1.0;  // agate_turb, default 1
+            Real t = scale * turbulence(p, turb_params(turb), gen);
+            Real n = 0.5 * (cycloidal(1.3 * t + 1.1 * p.z) + 1.0);
+            return n < 0.0 ? 0.0 : std::pow(std::min(1.0, n), 0.77);
+        }
+        case PatternKind::Bozo:
+        case PatternKind::Spotted:
+        case PatternKind::Bumps:
+            return noise(p, gen);
+        case PatternKind::Brick:
+            return brick(s, p);
+        case PatternKind::Checker:
+            return checker(p);
+        case PatternKind::Crackle:
+        case PatternKind::Cells:
+            return 0;  // not implemented (needs POV-Ray's Mersenne-Twister cell table)
+        case PatternKind::Dents: {
+            Real n = noise(p, gen);
+            return n * n * n;
+        }
+        case PatternKind::Gradient: {
+            Real r = dot(p, s.vector);
+            return r > 1.0 ? std::fmod(r, 1.0) : r;
+        }
+        case PatternKind::Granite:
+            return granite(p, gen);
+        case PatternKind::Hexagon:
+            return hexagon(p);
+        case PatternKind::Leopard: {
+            Real v = (std::sin(p.x) + std::sin(p.y) + std::sin(p.z)) / 3.0;
+            return v * v;
+        }
+        case PatternKind::Mandel:
+            return mandel(p, int(s.scalar));
+        case PatternKind::Marble: {
+            Real t = turb ? turb->turbulence.x * turbulence(p, turb_params(turb), gen) : 0.0;
+            return p.x + t;
+        }
+        case PatternKind::Onion:
+            return std::fmod(length(p), 1.0);
+        case PatternKind::Quilted: {
+            Vector3 v{p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5,
+                      p.z - std::floor(p.z) - 0.5};
+            v *= quilt_cubic(length(v), s.vector.x, s.vector.y);
+            return (std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z)) / 3.0;
+        }
+        case PatternKind::Radial:
+            if (std::fabs(p.x) < 0.001 && std::fabs(p.z) < 0.001) return 0.25;
+            return 0.25 + (std::atan2(p.x, p.z) + kPi) / (2 * kPi);
+        case PatternKind::Ripples:
+        case PatternKind::Waves: {
+            const WaveTable& w = wave_table();
+            int n = std::clamp(env.number_of_waves, 1, kMaxWaves);
+            Real sum = 0;
+            for (int i = 0; i < n; ++i) {
+                Real len = length(p - w.source[i]);
+                if (len == 0.0) len = 1.0;
+                if (s.kind == PatternKind::Ripples) {
+                    sum += cycloidal(len * s.frequency + s.phase);
+                } else {
+                    Real f = w.frequency[i];
+                    sum += cycloidal(len * s.frequency * f + s.phase) / f;
+                }
+            }
+            return s.kind == PatternKind::Ripples ? 0.5 * (1.0 + sum / n)
+                                                  : 0.2 * (2.5 + sum / n);
+        }
+        case PatternKind::Spiral1:
+        case PatternKind::Spiral2: {
+            Real t = turb ? turb->turbulence.x * turbulence(p, turb_params(turb), gen) : 0.0;
+            Real rad;
+            Real angle = spiral_angle_term(p, Real(int(s.scalar)), rad);
+            if (s.kind == PatternKind::Spiral1) return p.z + rad + angle + t;
+            return triangle_wave(rad) + triangle_wave(p.z + rad + angle + t);
+        }
+        case PatternKind::Wood: {
+            Real x = p.x, y = p.y;
+            if (turb) {
+                Vector3 d = dturbulence(p, turb_params(turb));
+                x += cycloidal((p.x + d.x) * turb->turbulence.x);
+                y += cycloidal((p.y + d.y) * turb->turbulence.y);
+            }
+            return std::sqrt(x * x + y * y);
+        }
+        case PatternKind::Wrinkles:
+            return wrinkles(p, gen);
+        case PatternKind::Boxed:
+            return clip_density(std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
+        case PatternKind::Cylindrical:
+            return clip_density(std::sqrt(p.x * p.x + p.z * p.z));
+        case PatternKind::Spherical:
+            return clip_density(length(p));
+        case PatternKind::Planar:
+            return clip_density(std::fabs(p.y));
+    }
     return 0;
 }
 
-Colour evaluate_pigment(const Pigment& pigment, const Point3& world, const PatternEnv& env) {
-    return pigment.colour;
+// POV-Ray sets frequency 0 (no wrapping) for these patterns; the data model cannot tell an
+// explicit `frequency 1` apart, so they always skip it.
+bool has_no_frequency(PatternKind k) { return is_discrete(k) || k == PatternKind::Quilted; }
+
+}  // namespace
+
+const Warp* classic_turbulence(const PatternSpec& spec) {
+    for (auto it = spec.warps.rbegin(); it != spec.warps.rend(); ++it) {
+        if (it->kind == Warp::Kind::Turbulence && it->classic) return &*it;
+    }
+    return nullptr;
 }
 
-Vector3 perturb_normal(const Normal& normal, const Point3& world, const Vector3& geometric,
-                       const PatternEnv& env) {
-    return geometric;
+Point3 warp_point(const PatternSpec& spec, const Point3& world) {
+    Point3 p = spec.transform.is_identity() ? world : spec.transform.inverse_point(world);
+    const Warp* classic = classic_turbulence(spec);
+    for (auto it = spec.warps.rbegin(); it != spec.warps.rend(); ++it) {
+        const Warp& w = *it;
+        if (&w == classic) continue;
+        switch (w.kind) {
+            case Warp::Kind::Turbulence: p = apply_turbulence(w, p); break;
+            case Warp::Kind::Repeat: p = apply_repeat(w, p); break;
+            default: break;  // black_hole and mapping warps: not implemented
+        }
+        if (!w.transform.is_identity()) p = w.transform.inverse_point(p);
+    }
+    if (classic && spec.kind != PatternKind::Marble && spec.kind != PatternKind::Wood) {
+        p = apply_turbulence(*classic, p);
+    }
+    for (int i = 0; i < 3; ++i) p[i] = std::clamp(p[i], -kCoordinateLimit, kCoordinateLimit);
+    return p;
+}
+
+namespace {
+// n -> A^T n, A the linear part of the pattern->world transform.
+Vector3 transpose_apply(const Transform& t, const Vector3& n) {
+    const Matrix34& m = t.forward();
+    return {m.m[0][0] * n.x + m.m[1][0] * n.y + m.m[2][0] * n.z,
+            m.m[0][1] * n.x + m.m[1][1] * n.y + m.m[2][1] * n.z,
+            m.m[0][2] * n.x + m.m[1][2] * n.y + m.m[2][2] * n.z};
+}
+}  // namespace
+
+Vector3 warp_normal(const PatternSpec& spec, const Vector3& n) {
+    Vector3 r = normalize(n);
+    if (!spec.transform.is_identity()) r = transpose_apply(spec.transform, r);
+    for (auto it = spec.warps.rbegin(); it != spec.warps.rend(); ++it) {
+        if (!it->transform.is_identity()) r = transpose_apply(it->transform, r);
+    }
+    return normalize(r);
+}
+
+Vector3 unwarp_normal(const PatternSpec& spec, const Vector3& n) {
+    Vector3 r = normalize(n);
+    for (const Warp& w : spec.warps) {
+        if (!w.transform.is_identity()) r = w.transform.normal(r);
+    }
+    if (!spec.transform.is_identity()) r = spec.transform.normal(r);
+    return normalize(r);
+}
+
+Real value_at(const PatternSpec& spec, const Point3& p, const PatternEnv& env) {
+    Real value = raw_value(spec, p, env);
+    if (has_no_frequency(spec.kind)) {
+        if (value < 0.0) value -= std::floor(value);
+    } else {
+        if (spec.frequency != 0.0) value = std::fmod(value * spec.frequency + spec.phase, 1.00001);
+        if (value < 0.0) value -= std::floor(value);
+    }
+    switch (spec.wave) {
+        case WaveType::Ramp: break;
+        case WaveType::Sine: value = (1.0 + cycloidal(value)) * 0.5; break;
+        case WaveType::Triangle: value = triangle_wave(value); break;
+        case WaveType::Scallop: value = std::fabs(cycloidal(value * 0.5)); break;
+        case WaveType::Cubic: value = value * value * (-2.0 * value + 3.0); break;
+        case WaveType::Poly: value = std::pow(value, spec.wave_exponent); break;
+    }
+    return value;
+}
+
+}  // namespace detail
+
+Real evaluate_pattern(const PatternSpec& spec, const Point3& world, const PatternEnv& env) {
+    if (spec.kind == PatternKind::Solid) return 0;
+    return detail::value_at(spec, detail::warp_point(spec, world), env);
+}
+
+MapLookup search_map(const float* values, int count, Real value) {
+    MapLookup r;
+    if (count <= 0) return r;
+    if (value >= values[count - 1]) {
+        r.prev = r.cur = count - 1;
+        return r;
+    }
+    int c = 0;
+    while (value > values[c]) ++c;
+    r.cur = c;
+    r.prev = c > 0 ? c - 1 : 0;
+    if (r.prev != r.cur) r.fraction = (value - values[r.prev]) / (values[r.cur] - values[r.prev]);
+    return r;
 }
 
 }  // namespace povwall::trace

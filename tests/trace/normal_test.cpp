@@ -1,0 +1,78 @@
+// Perturbed normals compared with POV-Ray: a white plane lit by three parallel lights (red,
+// green, blue from different directions) with diffuse 1 shows N.L per channel.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "tests/trace/pov_reference.h"
+#include "trace/pattern.h"
+
+namespace povwall::trace {
+namespace {
+
+constexpr int kSize = 16;
+const Vector3 kLights[3] = {normalize(Vector3{1, 2, 0}), Vector3{0, 1, 0},
+                            normalize(Vector3{0, 2, -1})};
+
+double max_normal_error(const std::string& pov_normal, const Normal& normal) {
+    test::TopView view;
+    view.extent = 3.1;
+    std::string scene =
+        "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n" + view.camera() +
+        "light_source { <100,200,0> rgb <1,0,0> parallel point_at <0,0,0> }\n"
+        "light_source { <0,100,0> rgb <0,1,0> parallel point_at <0,0,0> }\n"
+        "light_source { <0,200,-100> rgb <0,0,1> parallel point_at <0,0,0> }\n"
+        "plane { y, 0.37 pigment { rgb 1 } normal { " + pov_normal +
+        " } finish { ambient 0 diffuse 1 } }\n";
+    test::RgbImage img = test::render_with_povray(scene, kSize);
+    double worst = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            Vector3 n = perturb_normal(normal, view.point(x, y, kSize), {0, 1, 0}, {});
+            for (int ch = 0; ch < 3; ++ch) {
+                double expected = std::clamp(dot(n, kLights[ch]), 0.0, 1.0);
+                worst = std::max(worst, std::fabs(img.at(x, y, ch) - expected));
+            }
+        }
+    }
+    return worst;
+}
+
+constexpr double kTol = 1e-3;
+
+Normal with(PatternKind kind, double amount) {
+    Normal n;
+    n.pattern.kind = kind;
+    n.amount = amount;
+    return n;
+}
+
+TEST(NormalVsPovray, DedicatedNormals) {
+    EXPECT_LE(max_normal_error("bumps 0.6", with(PatternKind::Bumps, 0.6)), kTol);
+    EXPECT_LE(max_normal_error("dents 0.9", with(PatternKind::Dents, 0.9)), kTol);
+    EXPECT_LE(max_normal_error("wrinkles 0.4", with(PatternKind::Wrinkles, 0.4)), kTol);
+    EXPECT_LE(max_normal_error("ripples 0.5", with(PatternKind::Ripples, 0.5)), kTol);
+    EXPECT_LE(max_normal_error("waves 0.5", with(PatternKind::Waves, 0.5)), kTol);
+}
+
+TEST(NormalVsPovray, ScaledBumps) {
+    Normal n = with(PatternKind::Bumps, 0.5);
+    n.pattern.transform = Transform::scale({0.3, 0.6, 0.2});
+    EXPECT_LE(max_normal_error("bumps 0.5 scale <0.3,0.6,0.2>", n), kTol);
+}
+
+TEST(NormalVsPovray, PatternNormals) {
+    Normal g = with(PatternKind::Granite, 0.3);
+    EXPECT_LE(max_normal_error("granite 0.3", g), kTol);
+    Normal a = with(PatternKind::Agate, 0.5);
+    a.accuracy = 0.05;
+    EXPECT_LE(max_normal_error("agate 0.5 accuracy 0.05", a), kTol);
+    Normal gr = with(PatternKind::Gradient, 0.5);
+    gr.pattern.vector = {1, 0, 0};
+    gr.pattern.wave = WaveType::Sine;
+    EXPECT_LE(max_normal_error("gradient x 0.5 sine_wave", gr), kTol);
+}
+
+}  // namespace
+}  // namespace povwall::trace
