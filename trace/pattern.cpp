@@ -188,7 +188,8 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
             return n * n * n;
         }
         case PatternKind::Gradient: {
-            Real r = dot(p, s.vector);
+            // POV-Ray normalises the gradient vector when parsing.
+            Real r = dot(p, normalize(s.vector));
             return r > 1.0 ? std::fmod(r, 1.0) : r;
         }
         case PatternKind::Granite:

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "tests/trace/pov_reference.h"
@@ -36,6 +37,7 @@ double max_normal_error(const std::string& pov_normal, const Normal& normal) {
             }
         }
     }
+    std::printf("max error %.2e  normal { %s }\n", worst, pov_normal.c_str());
     return worst;
 }
 
@@ -72,6 +74,20 @@ TEST(NormalVsPovray, PatternNormals) {
     gr.pattern.vector = {1, 0, 0};
     gr.pattern.wave = WaveType::Sine;
     EXPECT_LE(max_normal_error("gradient x 0.5 sine_wave", gr), kTol);
+}
+
+TEST(NormalVsPovray, ScaledPatternNormalAndNormalMap) {
+    Normal g = with(PatternKind::Granite, 0.4);
+    g.pattern.transform = Transform::scale({2, 2, 2});
+    EXPECT_LE(max_normal_error("granite 0.4 scale 2", g), kTol);
+    Normal m;
+    m.pattern.kind = PatternKind::Gradient;
+    m.pattern.vector = {1, 0, 0};
+    m.map_values = {0.3f, 0.7f};
+    m.list = {with(PatternKind::Bumps, 0.8), with(PatternKind::Wrinkles, 0.5)};
+    EXPECT_LE(max_normal_error("gradient x normal_map { [0.3 bumps 0.8] [0.7 wrinkles 0.5] }",
+                               m),
+              kTol);
 }
 
 }  // namespace

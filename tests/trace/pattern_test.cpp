@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "tests/trace/pov_reference.h"
@@ -55,6 +56,7 @@ double max_pigment_error(const std::string& pov_pigment, const Pigment& pigment,
             }
         }
     }
+    std::printf("max error %.2e  pigment { %s }\n", worst, pov_pigment.c_str());
     return worst;
 }
 
@@ -201,6 +203,57 @@ TEST(PatternVsPovray, DiscretePatternsAndDefaultMaps) {
               : k == PatternKind::Agate ? 2 : k == PatternKind::Radial ? 3 : 4;
         EXPECT_LE(max_pigment_error(names[i], d, view), kTol) << names[i];
     }
+}
+
+TEST(PatternVsPovray, FrequencyPhaseOnWaveSources) {
+    Pigment r = patterned(PatternKind::Ripples);
+    r.pattern.frequency = 2.3;
+    r.pattern.phase = 0.4;
+    EXPECT_LE(max_pigment_error("ripples" + kGrey + " frequency 2.3 phase 0.4", r), kTol);
+    Pigment w = patterned(PatternKind::Waves);
+    w.pattern.frequency = 1.6;
+    PatternEnv env;
+    env.number_of_waves = 5;
+    EXPECT_LE(max_pigment_error("waves" + kGrey + " frequency 1.6", w, {}, "number_of_waves 5",
+                                env),
+              kTol);
+}
+
+TEST(PatternVsPovray, OtherNoiseGenerators) {
+    Pigment g = patterned(PatternKind::Granite);
+    g.pattern.noise_generator = 1;
+    EXPECT_LE(max_pigment_error("granite" + kGrey + " noise_generator 1", g), kTol);
+    Pigment w = patterned(PatternKind::Wrinkles);
+    w.pattern.noise_generator = 3;
+    EXPECT_LE(max_pigment_error("wrinkles" + kGrey + " noise_generator 3", w), kTol);
+    Pigment m = patterned(PatternKind::Marble);
+    m.pattern.wave = WaveType::Triangle;
+    m.pattern.warps.push_back(classic_turb({1.2, 1.2, 1.2}, 4));
+    PatternEnv env;
+    env.noise_generator = 3;
+    EXPECT_LE(max_pigment_error("marble turbulence 1.2 octaves 4" + kGrey, m, {},
+                                "noise_generator 3", env),
+              kTol);
+    Pigment a = patterned(PatternKind::Agate);
+    a.pattern.noise_generator = 1;
+    a.pattern.warps.push_back(classic_turb({0.2, 0.2, 0.2}, 3, 0.7, 2.2));
+    EXPECT_LE(max_pigment_error("agate turbulence 0.2 octaves 3 omega 0.7 lambda 2.2"
+                                " noise_generator 1" + kGrey,
+                                a),
+              kTol);
+}
+
+TEST(PatternVsPovray, RepeatWarp) {
+    Pigment p = patterned(PatternKind::Bozo);
+    Warp w;
+    w.kind = Warp::Kind::Repeat;
+    w.repeat = {0.7, 0, 0};
+    w.offset = {0.1, 0.3, 0.2};
+    w.flip = {1, 0, 0};
+    p.pattern.warps.push_back(w);
+    EXPECT_LE(max_pigment_error("bozo" + kGrey + " warp { repeat x*0.7 offset <0.1,0.3,0.2> "
+                                "flip x }", p),
+              kTol);
 }
 
 TEST(PatternVsPovray, MandelAndQuilted) {
