@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <random>
 
 namespace povwall::trace {
 namespace {
@@ -33,6 +34,7 @@ struct Tables {
     int perm[2 * (kPerlinEntries + 1)];
     Vector3 grad[2 * (kPerlinEntries + 1)];
     WaveTable waves;
+    Real pattern_rands[32768];
 };
 
 Vector3 lattice_dnoise(const Tables& t, const Vector3& p);
@@ -87,6 +89,8 @@ Tables build_tables() {
         int r = int(int32_t(state) >> 16) & 0x7FFF;
         t.waves.frequency[i] = Real(r) * 0.000030518509476 + 0.01;
     }
+    std::mt19937 mt;  // default seed 5489, as boost::mt19937
+    for (Real& r : t.pattern_rands) r = Real(mt()) / 4294967296.0;
     return t;
 }
 
@@ -271,5 +275,12 @@ Real triangle_wave(Real v) {
 }
 
 const WaveTable& wave_table() { return kTables.waves; }
+
+int hash3d(int x, int y, int z) {
+    const uint16_t* h = kTables.hash;
+    return h[int(h[int(h[x & 0xfff]) ^ (y & 0xfff)]) ^ (z & 0xfff)];
+}
+
+Real pattern_random(size_t index) { return kTables.pattern_rands[index % 32768]; }
 
 }  // namespace povwall::trace

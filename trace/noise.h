@@ -38,4 +38,10 @@ struct WaveTable {
 };
 const WaveTable& wave_table();
 
+// POV-Ray's Hash3d over its noise permutation table (used by cells and crackle).
+int hash3d(int x, int y, int z);
+// POV-Ray's pattern random table: entry i % 32768 of the uniform [0,1) sequence of a
+// default-seeded MT19937 (Boost's uniform_real over mt19937, which POV-Ray uses).
+Real pattern_random(size_t index);
+
 }  // namespace povwall::trace

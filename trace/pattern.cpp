@@ -155,6 +155,93 @@ Real quilt_cubic(Real t, Real p1, Real p2) {
     return (t * t * t + 3.0 * t * it * it * p1 + 3.0 * t * t * it * p2) * kInvSqrt34;
 }
 
+// The 81 cubes around a crackle cell (offsets -2..2 with at most one |2|), in POV-Ray's order.
+struct CrackleCubes {
+    int offset[81][3];
+    CrackleCubes() {
+        int n = 0;
+        for (int x = -2; x <= 2; ++x)
+            for (int y = -2; y <= 2; ++y)
+                for (int z = -2; z <= 2; ++z)
+                    if ((std::abs(x) == 2) + (std::abs(y) == 2) + (std::abs(z) == 2) <= 1) {
+                        offset[n][0] = x;
+                        offset[n][1] = y;
+                        offset[n][2] = z;
+                        ++n;
+                    }
+    }
+};
+const CrackleCubes kCrackleCubes;
+
+// Crackle parameters live in the generic fields: vector = form (default <-1,1,0>),
+// scalar = metric (default 2), vector2.x = offset, vector2.y != 0 means `solid`.
+Real crackle(const PatternSpec& s, const Point3& p, int gen) {
+    Vector3 form = s.vector == Vector3(0, 0, 0) ? Vector3(-1, 1, 0) : s.vector;
+    Real metric = s.scalar != 0 ? s.scalar : 2.0;
+    Real offset = s.vector2.x;
+    bool square = metric == 2, unity = metric == 1;
+    int fx = int(std::floor(p.x - kEpsilon)), fy = int(std::floor(p.y - kEpsilon)),
+        fz = int(std::floor(p.z - kEpsilon));
+    auto distance = [&](const Vector3& d) {
+        if (square) return dot(d, d);
+        if (unity) return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);
+        return std::pow(std::fabs(d.x), metric) + std::pow(std::fabs(d.y), metric) +
+               std::pow(std::fabs(d.z), metric);
+    };
+    // Nearest three cell nuclei; one random point per unit cube.
+    Real best[3];
+    int best_index = 0;
+    Point3 nucleus[81];
+    for (int i = 0; i < 81; ++i) {
+        int cx = fx + kCrackleCubes.offset[i][0], cy = fy + kCrackleCubes.offset[i][1],
+            cz = fz + kCrackleCubes.offset[i][2];
+        size_t seed = size_t(hash3d(cx & 0xFFF, cy & 0xFFF, cz & 0xFFF));
+        nucleus[i] = {cx + pattern_random(seed), cy + pattern_random(seed + 1),
+                      cz + pattern_random(seed + 2)};
+    }
+    for (int i = 0; i < 3; ++i) best[i] = distance(nucleus[i] - p);
+    if (best[1] < best[0]) {
+        std::swap(best[0], best[1]);
+        best_index = 1;
+    }
+    if (best[2] < best[0]) {
+        std::swap(best[0], best[2]);
+        best_index = 2;
+    }
+    if (best[2] < best[1]) std::swap(best[1], best[2]);
+    for (int i = 3; i < 81; ++i) {
+        Real d = distance(nucleus[i] - p);
+        if (d < best[0]) {
+            best[2] = best[1];
+            best[1] = best[0];
+            best[0] = d;
+            best_index = i;
+        } else if (d < best[1]) {
+            best[2] = best[1];
+            best[1] = d;
+        } else if (d < best[2]) {
+            best[2] = d;
+        }
+    }
+    if (offset != 0) {
+        Real add = square ? offset * offset : (unity ? offset : std::pow(offset, metric));
+        for (Real& b : best) b += add;
+    }
+    Real tf;
+    if (s.vector2.y != 0) {
+        tf = noise(nucleus[best_index], gen);
+    } else if (square) {
+        tf = form.x * std::sqrt(best[0]) + form.y * std::sqrt(best[1]) +
+             form.z * std::sqrt(best[2]);
+    } else if (unity) {
+        tf = form.x * best[0] + form.y * best[1] + form.z * best[2];
+    } else {
+        tf = form.x * std::pow(best[0], 1.0 / metric) + form.y * std::pow(best[1], 1.0 / metric) +
+             form.z * std::pow(best[2], 1.0 / metric);
+    }
+    return std::max(std::min(tf, 1.0), 0.0);
+}
+
 // POV-Ray's density clip for boxed/spherical/cylindrical/planar: 1 at 0 falling to 0 at 1.
 Real clip_density(Real r) { return r < 0.0 ? 1.0 : (r > 1.0 ? 0.0 : 1.0 - r); }
 
@@ -181,8 +268,12 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
         case PatternKind::Checker:
             return checker(p);
         case PatternKind::Crackle:
+            return crackle(s, p, gen);
         case PatternKind::Cells:
-            return 0;  // not implemented (needs POV-Ray's Mersenne-Twister cell table)
+            return std::min(pattern_random(size_t(hash3d(int(std::floor(p.x + kEpsilon)),
+                                                          int(std::floor(p.y + kEpsilon)),
+                                                          int(std::floor(p.z + kEpsilon))))),
+                            1.0);
         case PatternKind::Dents: {
             Real n = noise(p, gen);
             return n * n * n;

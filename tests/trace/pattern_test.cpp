@@ -256,6 +256,24 @@ TEST(PatternVsPovray, RepeatWarp) {
               kTol);
 }
 
+TEST(PatternVsPovray, CellsAndCrackle) {
+    test::TopView view;
+    view.extent = 6.1;
+    view.centre = {-1.3, 0, 0.6};
+    EXPECT_LE(max_pigment_error("cells" + kGrey, patterned(PatternKind::Cells), view), kTol);
+    EXPECT_LE(max_pigment_error("crackle" + kGrey, patterned(PatternKind::Crackle), view), kTol);
+    Pigment c = patterned(PatternKind::Crackle);
+    c.pattern.vector = {0.5, -0.3, 0.4};
+    c.pattern.scalar = 1.5;
+    c.pattern.vector2 = {0.2, 0, 0};
+    EXPECT_LE(max_pigment_error("crackle form <0.5,-0.3,0.4> metric 1.5 offset 0.2" + kGrey, c,
+                                view),
+              kTol);
+    Pigment solid = patterned(PatternKind::Crackle);
+    solid.pattern.vector2 = {0, 1, 0};
+    EXPECT_LE(max_pigment_error("crackle solid" + kGrey, solid, view), kTol);
+}
+
 TEST(PatternVsPovray, MandelAndQuilted) {
     test::TopView view;
     view.extent = 3;
