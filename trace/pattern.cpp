@@ -149,12 +149,6 @@ Real spiral_angle_term(const Point3& p, Real arms, Real& rad) {
     return arms * phi / (2 * kPi);
 }
 
-Real quilt_cubic(Real t, Real p1, Real p2) {
-    constexpr Real kInvSqrt34 = 1.154700538;
-    Real it = 1 - t;
-    return (t * t * t + 3.0 * t * it * it * p1 + 3.0 * t * t * it * p2) * kInvSqrt34;
-}
-
 // The 81 cubes around a crackle cell (offsets -2..2 with at most one |2|), in POV-Ray's order.
 struct CrackleCubes {
     int offset[81][3];
@@ -188,17 +182,30 @@ Real crackle(const PatternSpec& s, const Point3& p, int gen) {
         return std::pow(std::fabs(d.x), metric) + std::pow(std::fabs(d.y), metric) +
                std::pow(std::fabs(d.z), metric);
     };
-    // Nearest three cell nuclei; one random point per unit cube.
+    // Nearest three cell nuclei; one random point per unit cube. Neighbouring samples
+    // usually share a cell, so each thread keeps the last cell's 81 nuclei.
+    struct Cache {
+        bool valid = false;
+        int x = 0, y = 0, z = 0;
+        Point3 nucleus[81];
+    };
+    thread_local Cache cache;
+    if (!cache.valid || cache.x != fx || cache.y != fy || cache.z != fz) {
+        for (int i = 0; i < 81; ++i) {
+            int cx = fx + kCrackleCubes.offset[i][0], cy = fy + kCrackleCubes.offset[i][1],
+                cz = fz + kCrackleCubes.offset[i][2];
+            size_t seed = size_t(hash3d(cx & 0xFFF, cy & 0xFFF, cz & 0xFFF));
+            cache.nucleus[i] = {cx + pattern_random(seed), cy + pattern_random(seed + 1),
+                                cz + pattern_random(seed + 2)};
+        }
+        cache.valid = true;
+        cache.x = fx;
+        cache.y = fy;
+        cache.z = fz;
+    }
+    const Point3* nucleus = cache.nucleus;
     Real best[3];
     int best_index = 0;
-    Point3 nucleus[81];
-    for (int i = 0; i < 81; ++i) {
-        int cx = fx + kCrackleCubes.offset[i][0], cy = fy + kCrackleCubes.offset[i][1],
-            cz = fz + kCrackleCubes.offset[i][2];
-        size_t seed = size_t(hash3d(cx & 0xFFF, cy & 0xFFF, cz & 0xFFF));
-        nucleus[i] = {cx + pattern_random(seed), cy + pattern_random(seed + 1),
-                      cz + pattern_random(seed + 2)};
-    }
     for (int i = 0; i < 3; ++i) best[i] = distance(nucleus[i] - p);
     if (best[1] < best[0]) {
         std::swap(best[0], best[1]);
@@ -362,6 +369,12 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
 bool has_no_frequency(PatternKind k) { return is_discrete(k) || k == PatternKind::Quilted; }
 
 }  // namespace
+
+Real quilt_cubic(Real t, Real p1, Real p2) {
+    constexpr Real kInvSqrt34 = 1.154700538;
+    Real it = 1 - t;
+    return (t * t * t + 3.0 * t * it * it * p1 + 3.0 * t * t * it * p2) * kInvSqrt34;
+}
 
 const Warp* classic_turbulence(const PatternSpec& spec) {
     for (auto it = spec.warps.rbegin(); it != spec.warps.rend(); ++it) {

@@ -22,6 +22,9 @@ Vector3 unwarp_normal(const PatternSpec& spec, const Vector3& n);
 // The pattern value at an already warped point (POV-Ray's Evaluate_TPat).
 Real value_at(const PatternSpec& spec, const Point3& p, const PatternEnv& env);
 
+// POV-Ray's quilted profile (Bezier with controls p1, p2).
+Real quilt_cubic(Real t, Real p1, Real p2);
+
 inline int resolve_generator(const PatternSpec& spec, const PatternEnv& env) {
     return spec.noise_generator != 0 ? spec.noise_generator : env.noise_generator;
 }

@@ -18,7 +18,7 @@ constexpr Vector3 kPyramid[4] = {{0.942809041, -0.333333333, 0.0},
 
 bool has_dedicated_normal(PatternKind k) {
     return k == PatternKind::Bumps || k == PatternKind::Dents || k == PatternKind::Ripples ||
-           k == PatternKind::Waves || k == PatternKind::Wrinkles;
+           k == PatternKind::Waves || k == PatternKind::Wrinkles || k == PatternKind::Quilted;
 }
 
 // Adds the dedicated normal pattern's displacement at pattern-space point p to n.
@@ -61,6 +61,13 @@ void displace(const Normal& nm, const Point3& p, Vector3& n, const PatternEnv& e
                 }
                 n += d * (scalar / (len * Real(count)));
             }
+            break;
+        }
+        case PatternKind::Quilted: {
+            Vector3 v{p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5,
+                      p.z - std::floor(p.z) - 0.5};
+            v *= detail::quilt_cubic(length(v), s.vector.x, s.vector.y);
+            n += v * nm.amount;
             break;
         }
         default:

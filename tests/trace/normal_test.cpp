@@ -76,6 +76,20 @@ TEST(NormalVsPovray, PatternNormals) {
     EXPECT_LE(max_normal_error("gradient x 0.5 sine_wave", gr), kTol);
 }
 
+TEST(NormalVsPovray, QuiltedAndDiscreteNormals) {
+    Normal q = with(PatternKind::Quilted, 0.7);
+    q.pattern.vector = {1, 1, 0};
+    q.pattern.transform = Transform::scale({0.6, 0.6, 0.6});
+    EXPECT_LE(max_normal_error("quilted 0.7 scale 0.6", q), kTol);
+    q.pattern.vector = {0.2, 0.9, 0};
+    EXPECT_LE(max_normal_error("quilted 0.7 control0 0.2 control1 0.9 scale 0.6", q), kTol);
+    Normal c = with(PatternKind::Crackle, 0.5);
+    EXPECT_LE(max_normal_error("crackle 0.5", c), kTol);
+    Normal h = with(PatternKind::Hexagon, 0.5);
+    h.pattern.transform = Transform::scale({0.4, 0.4, 0.4});
+    EXPECT_LE(max_normal_error("hexagon 0.5 scale 0.4", h), kTol);
+}
+
 TEST(NormalVsPovray, ScaledPatternNormalAndNormalMap) {
     Normal g = with(PatternKind::Granite, 0.4);
     g.pattern.transform = Transform::scale({2, 2, 2});
