@@ -83,7 +83,8 @@ Vector3 perturb_normal(const Normal& normal, const Point3& world, const Vector3&
     if (spec.kind == PatternKind::Solid) return normalize(geometric);
 
     // normal_map: perturb by the two neighbouring normals and blend the results.
-    if (!normal.map_values.empty() && !normal.list.empty()) {
+    if (spec.kind != PatternKind::Average && !normal.map_values.empty() &&
+        !normal.list.empty()) {
         Point3 p = detail::warp_point(spec, world);
         Real value = detail::value_at(spec, p, env);
         int n = int(std::min(normal.map_values.size(), normal.list.size()));
@@ -100,7 +101,18 @@ Vector3 perturb_normal(const Normal& normal, const Point3& world, const Vector3&
 
     Vector3 n = detail::warp_normal(spec, geometric);
     Point3 p = detail::warp_point(spec, world);
-    if (has_dedicated_normal(spec.kind)) {
+    if (spec.kind == PatternKind::Average) {
+        // Weighted mean of the entries' perturbed normals (weights: the entry values).
+        Vector3 sum{0, 0, 0};
+        float total = 0;
+        size_t count = std::min(normal.map_values.size(), normal.list.size());
+        for (size_t i = 0; i < count; ++i) {
+            float w = normal.map_values[i];
+            sum += perturb_normal(normal.list[i], p, n, env) * Real(w);
+            total += w;
+        }
+        if (total != 0) n = sum / Real(total);
+    } else if (has_dedicated_normal(spec.kind)) {
         displace(normal, p, n, env);
     } else {
         Real accuracy = normal.accuracy > 0 ? normal.accuracy : 0.02;

@@ -71,6 +71,19 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world, const Patte
     const PatternSpec& spec = pigment.pattern;
     if (spec.kind == PatternKind::Solid) return pigment.colour;
     Point3 p = detail::warp_point(spec, world);
+    if (spec.kind == PatternKind::Average) {
+        // Weighted mean of the pigment_map entries, weights being the entry values.
+        Colour sum{Rgb{0.0f}};
+        float total = 0;
+        size_t n = std::min(pigment.map_values.size(), pigment.list.size());
+        for (size_t i = 0; i < n; ++i) {
+            float w = pigment.map_values[i];
+            Colour c = evaluate_pigment(pigment.list[i], p, env);
+            sum = sum + c * w;
+            total += w;
+        }
+        return total != 0 ? sum * (1.0f / total) : sum;
+    }
     Real value = detail::value_at(spec, p, env);
 
     // checker/hexagon/brick with their own entries: the value is the entry index.

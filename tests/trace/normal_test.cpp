@@ -90,6 +90,15 @@ TEST(NormalVsPovray, QuiltedAndDiscreteNormals) {
     EXPECT_LE(max_normal_error("hexagon 0.5 scale 0.4", h), kTol);
 }
 
+TEST(NormalVsPovray, AverageNormals) {
+    Normal avg;
+    avg.pattern.kind = PatternKind::Average;
+    avg.map_values = {1.0f, 2.0f};
+    avg.list = {with(PatternKind::Bumps, 0.9), with(PatternKind::Granite, 0.4)};
+    EXPECT_LE(max_normal_error("average normal_map { [1 bumps 0.9] [2 granite 0.4] }", avg),
+              kTol);
+}
+
 TEST(NormalVsPovray, ScaledPatternNormalAndNormalMap) {
     Normal g = with(PatternKind::Granite, 0.4);
     g.pattern.transform = Transform::scale({2, 2, 2});

@@ -302,6 +302,21 @@ TEST(PatternVsPovray, ColourMapBlendPoints) {
     EXPECT_LE(max_pigment_error(pov, p), kTol);
 }
 
+TEST(PatternVsPovray, AveragePigments) {
+    Pigment a = patterned(PatternKind::Bozo);
+    Pigment b;
+    b.pattern.kind = PatternKind::Checker;
+    Pigment avg;
+    avg.pattern.kind = PatternKind::Average;
+    avg.pattern.transform = Transform::scale({0.7, 0.7, 0.7});
+    avg.map_values = {1.0f, 3.0f};
+    avg.list = {a, b};
+    EXPECT_LE(max_pigment_error("average pigment_map { [1 bozo" + kGrey + "] [3 checker] }"
+                                " scale 0.7",
+                                avg),
+              kTol);
+}
+
 TEST(PatternVsPovray, PigmentMap) {
     Pigment inner1 = patterned(PatternKind::Bozo);
     inner1.pattern.transform = Transform::scale({0.3, 0.3, 0.3});
