@@ -1,1 +1,70 @@
 #include "output/diff.h"
+
+#include <cmath>
+#include <limits>
+
+#include "output/image_io.h"
+
+namespace povwall::output {
+
+DiffResult diff_images(const Image& a, const Image& b, const DiffThresholds& t) {
+    DiffResult r;
+    r.width = a.width;
+    r.height = a.height;
+    if (a.width != b.width || a.height != b.height) {
+        r.status = DiffResult::Status::SizeMismatch;
+        r.error = "image sizes differ: " + std::to_string(a.width) + "x" +
+                  std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" +
+                  std::to_string(b.height);
+        return r;
+    }
+    double sum = 0;
+    const long long n = (long long)a.width * a.height;
+    for (long long i = 0; i < n; ++i) {
+        bool bad = false, warn = false;
+        for (int c = 0; c < 3; ++c) {
+            double va = a.rgba[i * 4 + c], vb = b.rgba[i * 4 + c];
+            double d = std::fabs(va - vb);
+            sum += d * d;
+            if (d > r.max_abs) {
+                r.max_abs = d;
+                r.max_x = int(i % a.width);
+                r.max_y = int(i / a.width);
+                r.max_channel = c;
+                r.max_value_a = va;
+                r.max_value_b = vb;
+            }
+            if (d > t.fail) bad = true;
+            if (d > t.warn) warn = true;
+        }
+        r.bad_pixels += bad;
+        r.warn_pixels += warn;
+    }
+    r.rmse = n ? std::sqrt(sum / double(n * 3)) : 0;
+    r.psnr = r.rmse > 0 ? 20 * std::log10(1 / r.rmse) : std::numeric_limits<double>::infinity();
+    r.bad_pixel_fraction = n ? double(r.bad_pixels) / double(n) : 0;
+    // Fail when either golden threshold is exceeded; warn when some pixels are over the
+    // per-channel threshold but few enough to be allowed.
+    if (r.rmse > t.max_rmse || r.bad_pixel_fraction > t.max_bad_fraction) {
+        r.status = DiffResult::Status::Fail;
+    } else if (r.warn_pixels > 0) {
+        r.status = DiffResult::Status::Warn;
+    }
+    return r;
+}
+
+DiffResult diff_files(const std::string& a, const std::string& b, const DiffThresholds& t) {
+    Image ia, ib;
+    try {
+        ia = read_image(a);
+        ib = read_image(b);
+    } catch (const ImageIoError& e) {
+        DiffResult r;
+        r.status = DiffResult::Status::Unreadable;
+        r.error = e.what();
+        return r;
+    }
+    return diff_images(ia, ib, t);
+}
+
+}  // namespace povwall::output

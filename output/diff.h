@@ -8,11 +8,11 @@
 namespace povwall::output {
 
 struct DiffThresholds {
-    double fail = 0.1;          // a channel differing by more than this makes a pixel "bad"
-    double warn = 0.1;
-    double fail_percent = 0.0;  // idiff semantics: allowed % of pixels over `fail`
-    double warn_percent = 0.0;
-    double max_rmse = 0.01;             // povwall's golden thresholds
+    double fail = 0.1;  // a channel differing by more than this makes a pixel "bad"
+    double warn = 0.1;  // pixels over this (but within the allowed fraction) give a warning
+    // Failure: rmse above max_rmse or a bad-pixel fraction above max_bad_fraction
+    // (povwall's golden thresholds by default).
+    double max_rmse = 0.01;
     double max_bad_fraction = 0.002;
 };
 

@@ -1,15 +1,46 @@
 #include "parser/parser.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "parser/interpreter.h"
+
 namespace povwall::parser {
+
+Interpreter::Interpreter(const ParseOptions& options, SourceManager& sources)
+    : options_(options), sources_(sources) {}
+
+Scene Interpreter::run(int root_file) {
+    scene_dir_ = std::filesystem::path(sources_.file(root_file).path).parent_path().string();
+    scopes_.emplace_back();  // global #declare table
+    for (const auto& [name, value] : options_.declares) {
+        scopes_[0][name].value = Numeric::scalar(value);
+    }
+    scopes_.emplace_back();  // the scene file's own #local table
+    frames_.push_back({root_file, 0, sources_.file(root_file).tokens.size(), Frame::Kind::File,
+                       1, {}});
+    for (;;) {
+        Token t = next();
+        if (t.kind == TokenKind::End) break;
+        parse_top_level_item(t);
+    }
+    if (!conds_.empty()) {
+        const Cond& c = conds_.back();
+        error(c.at, "#" + std::string(c.at.text) + " has no matching #end");
+    }
+    for (int i = 0; i < sources_.count(); ++i) scene_.files.push_back(sources_.file(i).path);
+    scene_.language_version = version_;
+    scene_.version_set = version_set_;
+    return std::move(scene_);
+}
 
 Scene parse_scene_file(const std::string& path, const ParseOptions& options) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    std::error_code ec;
+    if (!in || std::filesystem::is_directory(path, ec)) {
         std::string msg = "cannot open scene file '" + path + "'";
-        throw ParseError(ParseError::Kind::Io, path + ": error: " + msg, msg, {});
+        throw ParseError(ParseError::Kind::Io, "povwall: error: " + msg, msg, {});
     }
     std::stringstream ss;
     ss << in.rdbuf();
@@ -18,9 +49,10 @@ Scene parse_scene_file(const std::string& path, const ParseOptions& options) {
 
 Scene parse_scene_text(const std::string& text, const std::string& display_name,
                        const ParseOptions& options) {
-    std::string msg = "the scene language is not implemented yet";
-    throw ParseError(ParseError::Kind::Unsupported, display_name + ":1:1: error: " + msg, msg,
-                     {0, 1, 1});
+    SourceManager sources;
+    int root = sources.add(display_name, text);
+    Interpreter interpreter(options, sources);
+    return interpreter.run(root);
 }
 
 }  // namespace povwall::parser

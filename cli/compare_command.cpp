@@ -1,0 +1,232 @@
+// `povwall compare`: the same scene through POV-Ray and povwall, both timed, then diffed.
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cli/options.h"
+#include "output/diff.h"
+#include "parser/parser.h"
+
+extern char** environ;
+
+namespace povwall::cli {
+
+nlohmann::json diff_json(const output::DiffResult& r);
+void print_diff(const output::DiffResult& r);
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// Runs a command (no shell), stderr to `log`; returns its exit status, -1 if it cannot run.
+int run_process(const std::vector<std::string>& args, const std::string& log) {
+    std::vector<char*> argv;
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+    pid_t pid;
+    int rc = posix_spawnp(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&fa);
+    if (rc != 0) return -1;
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+uint64_t fnv1a(uint64_t h, std::string_view bytes) {
+    for (unsigned char c : bytes) {
+        h ^= c;
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+// Hash of every file the scene reads and of the POV-Ray command line: a cached reference
+// render is reused only when none of them changed.
+std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cmd) {
+    parser::ParseOptions popts;
+    popts.library_paths = o.library_paths;
+    popts.image_width = o.width;
+    popts.image_height = o.height;
+    popts.declares = o.declares;
+    Scene scene;
+    try {
+        scene = parser::parse_scene_file(o.scene, popts);
+    } catch (const parser::ParseError& e) {
+        std::cerr << e.what() << "\n";
+        return {};
+    }
+    uint64_t h = 1469598103934665603ull;
+    for (const std::string& f : scene.files) {
+        std::ifstream in(f, std::ios::binary);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        h = fnv1a(h, ss.str());
+    }
+    for (size_t i = 0; i < cmd.size(); ++i) {
+        if (i == 1 || i == 2) continue;  // input and output paths
+        h = fnv1a(h, cmd[i]);
+    }
+    std::error_code ec;
+    auto stamp = fs::last_write_time("/usr/bin/povray", ec);
+    if (!ec) h = fnv1a(h, std::to_string(stamp.time_since_epoch().count()));
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)h);
+    return buf;
+}
+
+}  // namespace
+
+int run_compare(int argc, char** argv) {
+    CLI::App app{"Render a scene with POV-Ray and with povwall, time both, diff the images",
+                 "povwall compare"};
+    RenderOptions o;
+    bool json = false;
+    std::string keep;
+    int threads = 0;
+    app.add_option("SCENE", o.scene, "scene file")->required();
+    app.add_option("-W", o.width, "image width")->capture_default_str();
+    app.add_option("-H", o.height, "image height")->capture_default_str();
+    app.add_option("-L", o.library_paths, "include folder (repeatable)");
+    app.add_option("--threads", threads, "threads for both renderers (0: all cores)");
+    app.add_flag("--json", json, "print one JSON object");
+    app.add_option("--keep", keep, "folder to keep both images in");
+    std::string cache;
+    bool warn_ok = false;
+    app.add_option("--cache", cache,
+                   "reuse POV-Ray renders from this folder, keyed by a hash of the scene, its "
+                   "includes and the render settings");
+    app.add_flag("--warn-ok", warn_ok, "exit 0 on a warning (tests)");
+    std::vector<std::string> pov_switches, rest;
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        if (looks_like_pov_switch(a)) pov_switches.push_back(a);
+        else rest.push_back(a);
+    }
+    std::vector<char*> args{argv[0]};
+    for (auto& r : rest) args.push_back(r.data());
+    try {
+        app.parse(int(args.size()), args.data());
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    for (const auto& s : pov_switches) {
+        if (!apply_pov_switch(s, o)) throw UsageError("unknown switch '" + s + "'");
+    }
+    o.render.threads = threads;
+    fs::path dir = keep.empty() ? fs::temp_directory_path() /
+                                      ("povwall-compare-" + std::to_string(getpid()))
+                                : fs::path(keep);
+    fs::create_directories(dir);
+    std::string stem = fs::path(o.scene).stem().string();
+    std::string pov_png = (dir / (stem + "-povray.png")).string();
+    std::string our_png = (dir / (stem + "-povwall.png")).string();
+    std::string log = (dir / (stem + "-povray.log")).string();
+
+    std::vector<std::string> cmd{"povray",
+                                 "+I" + o.scene,
+                                 "+O" + pov_png,
+                                 "+W" + std::to_string(o.width),
+                                 "+H" + std::to_string(o.height),
+                                 "-D",
+                                 "+FN"};
+    unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    cmd.push_back("+WT" + std::to_string(threads > 0 ? unsigned(threads) : cores));
+    if (o.render.antialias) {
+        std::ostringstream a;
+        a << "+A" << o.render.aa_threshold;
+        cmd.push_back(a.str());
+        cmd.push_back("+AM" + std::to_string(o.render.aa_method));
+        cmd.push_back("+R" + std::to_string(o.render.aa_depth));
+        cmd.push_back(o.render.aa_jitter ? "+J" : "-J");
+    } else {
+        cmd.push_back("-A");
+    }
+    if (o.render.alpha) cmd.push_back("+UA");
+    std::string scene_dir = fs::path(o.scene).parent_path().string();
+    cmd.push_back("+L" + (scene_dir.empty() ? std::string(".") : scene_dir));
+    for (const auto& l : o.library_paths) cmd.push_back("+L" + l);
+    cmd.push_back("+L/usr/share/povray-3.7/include");
+    for (const auto& [k, v] : o.declares) {
+        std::ostringstream d;
+        d << "Declare=" << k << "=" << v;
+        cmd.push_back(d.str());
+    }
+
+    std::string cached;
+    if (!cache.empty()) {
+        std::string key = cache_key(o, cmd);
+        if (key.empty()) return 2;  // the scene does not parse: run_render reports it below
+        fs::create_directories(cache);
+        cached = (fs::path(cache) / (stem + "-" + key + ".png")).string();
+    }
+    auto t0 = Clock::now();
+    int rc = 0;
+    if (!cached.empty() && fs::exists(cached)) {
+        fs::copy_file(cached, pov_png, fs::copy_options::overwrite_existing);
+    } else {
+        rc = run_process(cmd, log);
+        if (rc == 0 && !cached.empty() && fs::exists(pov_png)) {
+            std::string tmp = cached + ".tmp";
+            fs::copy_file(pov_png, tmp, fs::copy_options::overwrite_existing);
+            fs::rename(tmp, cached);
+        }
+    }
+    auto t1 = Clock::now();
+    if (rc == -1) {
+        std::cerr << "povwall: povray is not installed or not on PATH: nothing to compare "
+                     "with\n";
+        return 77;  // CTest's skip code
+    }
+    if (rc != 0 || !fs::exists(pov_png)) {
+        std::ifstream in(log);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        std::cerr << "povwall: error: povray failed (exit " << rc << ")"
+                  << (rc == -1 ? ": is povray installed and on PATH?" : "") << "\n"
+                  << ss.str();
+        return 2;
+    }
+    o.output = our_png;
+    o.quiet = true;
+    auto t2 = Clock::now();
+    int our_rc = run_render(o);
+    auto t3 = Clock::now();
+    if (our_rc != 0) return our_rc;
+    double pov_s = std::chrono::duration<double>(t1 - t0).count();
+    double our_s = std::chrono::duration<double>(t3 - t2).count();
+    output::DiffResult r = output::diff_files(our_png, pov_png);
+    if (json) {
+        nlohmann::json j = diff_json(r);
+        j["povwall_seconds"] = our_s;
+        j["povray_seconds"] = pov_s;
+        j["scene"] = o.scene;
+        std::printf("%s\n", j.dump().c_str());
+    } else {
+        std::printf("scene: %s (%dx%d)\n", o.scene.c_str(), o.width, o.height);
+        std::printf("povray: %.3f s\npovwall: %.3f s (%.2fx)\n", pov_s, our_s,
+                    our_s > 0 ? pov_s / our_s : 0.0);
+        print_diff(r);
+    }
+    if (keep.empty()) fs::remove_all(dir);
+    if (warn_ok && r.status == output::DiffResult::Status::Warn) return 0;
+    return int(r.status);
+}
+
+}  // namespace povwall::cli

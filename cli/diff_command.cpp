@@ -1,0 +1,78 @@
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cli/options.h"
+#include "output/diff.h"
+
+namespace povwall::cli {
+
+nlohmann::json diff_json(const output::DiffResult& r) {
+    nlohmann::json j;
+    j["rmse"] = r.rmse;
+    j["psnr"] = std::isinf(r.psnr) ? nlohmann::json("inf") : nlohmann::json(r.psnr);
+    j["max_abs"] = r.max_abs;
+    j["bad_pixel_fraction"] = r.bad_pixel_fraction;
+    j["width"] = r.width;
+    j["height"] = r.height;
+    j["bad_pixels"] = r.bad_pixels;
+    j["max_at"] = {r.max_x, r.max_y, r.max_channel};
+    static const char* kStatus[] = {"pass", "warn", "fail", "size_mismatch", "unreadable"};
+    j["status"] = kStatus[int(r.status)];
+    return j;
+}
+
+void print_diff(const output::DiffResult& r) {
+    if (r.status == output::DiffResult::Status::Unreadable ||
+        r.status == output::DiffResult::Status::SizeMismatch) {
+        std::printf("%s\nFAILURE\n", r.error.c_str());
+        return;
+    }
+    std::printf("rmse: %.6f\n", r.rmse);
+    if (std::isinf(r.psnr)) std::printf("psnr: inf\n");
+    else std::printf("psnr: %.2f dB\n", r.psnr);
+    static const char kChan[] = "RGB";
+    std::printf("max_abs: %.6f @ (%d, %d, %c) %.6f vs %.6f\n", r.max_abs, r.max_x, r.max_y,
+                kChan[r.max_channel], r.max_value_a, r.max_value_b);
+    std::printf("bad_pixel_fraction: %.6f (%lld of %lld pixels)\n", r.bad_pixel_fraction,
+                r.bad_pixels, (long long)r.width * r.height);
+    static const char* kWord[] = {"PASS", "WARNING", "FAILURE", "FAILURE", "FAILURE"};
+    std::printf("%s\n", kWord[int(r.status)]);
+}
+
+int run_diff(int argc, char** argv) {
+    CLI::App app{"Compare two images as stored (0..1 scale): RMSE, PSNR, max error, bad pixels",
+                 "povwall diff"};
+    std::string a, b, diff_out;
+    bool json = false;
+    output::DiffThresholds t;
+    app.add_option("A", a, "first image")->required();
+    app.add_option("B", b, "second image")->required();
+    app.add_flag("--json", json, "print one JSON object");
+    app.add_option("-o", diff_out, "write the absolute difference image");
+    app.add_option("--fail", t.fail, "per-channel difference making a pixel bad")
+        ->capture_default_str();
+    app.add_option("--warn", t.warn, "per-channel difference giving a warning")
+        ->capture_default_str();
+    app.add_option("--max-rmse", t.max_rmse, "largest RMSE that passes")->capture_default_str();
+    app.add_option("--max-bad-fraction", t.max_bad_fraction,
+                   "largest fraction of bad pixels that passes")
+        ->capture_default_str();
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    output::DiffResult r = output::diff_files(a, b, t);
+    if (json) {
+        std::printf("%s\n", diff_json(r).dump().c_str());
+    } else {
+        print_diff(r);
+    }
+    return int(r.status);
+}
+
+}  // namespace povwall::cli

@@ -1,0 +1,42 @@
+// Command-line settings shared by the subcommands, and POV-Ray's +X switches.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "trace/render.h"
+
+namespace povwall::cli {
+
+struct RenderOptions {
+    std::string scene;
+    std::string output;  // empty: scene name with the format's extension
+    int width = 320, height = 240;
+    std::vector<std::string> library_paths;
+    trace::RenderSettings render;  // threads, antialias, alpha, partial rows
+    int bits = 8;
+    char format = 'N';  // POV-Ray +F letter: N png, T tga, P ppm, E exr
+    std::map<std::string, double> declares;
+    bool quiet = false;
+    std::string stats_file;
+};
+
+// Applies one POV-Ray switch (+W320, -A, +Ldir, Declare=X=1, ...) to `o`.
+// Returns false when `arg` is not a POV-Ray switch povwall knows; throws on a bad value.
+bool apply_pov_switch(const std::string& arg, RenderOptions& o);
+
+// True when `arg` looks like a POV-Ray switch rather than one of povwall's own options.
+bool looks_like_pov_switch(const std::string& arg);
+
+std::string default_output_name(const RenderOptions& o);
+
+int run_render(RenderOptions o);
+int run_diff(int argc, char** argv);
+int run_compare(int argc, char** argv);
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace povwall::cli

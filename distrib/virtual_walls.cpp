@@ -1,0 +1,87 @@
+#include "distrib/virtual_walls.h"
+
+#include <algorithm>
+
+namespace povwall::distrib {
+
+VirtualWalls::VirtualWalls(std::array<std::vector<Real>, 3> walls) : walls_(std::move(walls)) {
+    for (int a = 0; a < 3; ++a) {
+        std::sort(walls_[a].begin(), walls_[a].end());
+        walls_[a].erase(std::unique(walls_[a].begin(), walls_[a].end()), walls_[a].end());
+        slabs_[a] = int(walls_[a].size()) + 1;
+    }
+}
+
+VirtualWalls VirtualWalls::uniform(const Bounds3& scene, int nx, int ny, int nz) {
+    std::array<std::vector<Real>, 3> walls;
+    const int n[3] = {nx, ny, nz};
+    for (int a = 0; a < 3; ++a) {
+        if (scene.empty() || std::isinf(scene.lo[a]) || std::isinf(scene.hi[a])) continue;
+        for (int i = 1; i < n[a]; ++i) {
+            walls[a].push_back(scene.lo[a] + (scene.hi[a] - scene.lo[a]) * i / n[a]);
+        }
+    }
+    return VirtualWalls(std::move(walls));
+}
+
+VirtualWalls VirtualWalls::balanced(std::span<const Bounds3> primitives, int nx, int ny,
+                                    int nz) {
+    std::array<std::vector<Real>, 3> walls;
+    const int n[3] = {nx, ny, nz};
+    std::vector<Real> centres;
+    for (int a = 0; a < 3; ++a) {
+        centres.clear();
+        for (const Bounds3& b : primitives) {
+            if (!b.empty() && !b.infinite()) centres.push_back((b.lo[a] + b.hi[a]) * 0.5);
+        }
+        if (centres.empty()) continue;
+        std::sort(centres.begin(), centres.end());
+        for (int i = 1; i < n[a]; ++i) {
+            walls[a].push_back(centres[centres.size() * i / n[a]]);
+        }
+    }
+    return VirtualWalls(std::move(walls));
+}
+
+std::array<int, 3> VirtualWalls::cell_of(int box) const {
+    return {box % slabs_[0], (box / slabs_[0]) % slabs_[1], box / (slabs_[0] * slabs_[1])};
+}
+
+Bounds3 VirtualWalls::box_bounds(int box) const {
+    auto cell = cell_of(box);
+    Bounds3 b = Bounds3::everything();
+    for (int a = 0; a < 3; ++a) {
+        if (cell[a] > 0) b.lo[a] = walls_[a][cell[a] - 1];
+        if (cell[a] < slabs_[a] - 1) b.hi[a] = walls_[a][cell[a]];
+    }
+    return b;
+}
+
+int VirtualWalls::slab_of(int axis, Real v) const {
+    // upper_bound: a value equal to a wall lands on the wall's high side.
+    const auto& w = walls_[axis];
+    return int(std::upper_bound(w.begin(), w.end(), v) - w.begin());
+}
+
+int VirtualWalls::locate(const Point3& p) const {
+    return box_index({slab_of(0, p.x), slab_of(1, p.y), slab_of(2, p.z)});
+}
+
+std::vector<int> VirtualWalls::boxes_overlapping(const Bounds3& b) const {
+    std::vector<int> out;
+    if (b.empty()) return out;
+    std::array<int, 3> lo, hi;
+    for (int a = 0; a < 3; ++a) {
+        const auto& w = walls_[a];
+        // Touching a wall from below counts for the box above it as well.
+        lo[a] = int(std::lower_bound(w.begin(), w.end(), b.lo[a]) - w.begin());
+        hi[a] = int(std::upper_bound(w.begin(), w.end(), b.hi[a]) - w.begin());
+        lo[a] = std::min(lo[a], hi[a]);
+    }
+    for (int k = lo[2]; k <= hi[2]; ++k)
+        for (int j = lo[1]; j <= hi[1]; ++j)
+            for (int i = lo[0]; i <= hi[0]; ++i) out.push_back(box_index({i, j, k}));
+    return out;
+}
+
+}  // namespace povwall::distrib

@@ -1,0 +1,95 @@
+// Virtual walls: axis-parallel planes cutting space into a grid of black boxes.
+//
+// Only interior walls are stored; the outermost boxes extend to infinity, so every point of
+// space belongs to exactly one box and infinite objects (planes) simply touch many boxes.
+// A point lying exactly on a wall belongs to the box on the wall's high side; a ray walk uses
+// the same comparisons, so routing is deterministic for rays on walls or along axes.
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "core/math.h"
+
+namespace povwall::distrib {
+
+class VirtualWalls {
+public:
+    VirtualWalls() = default;
+    // `walls[axis]` must be sorted ascending; each list of k walls makes k+1 slabs.
+    explicit VirtualWalls(std::array<std::vector<Real>, 3> walls);
+
+    // nx*ny*nz equal slabs of `scene` (the outer slabs extend to infinity).
+    static VirtualWalls uniform(const Bounds3& scene, int nx, int ny, int nz);
+    // Walls at quantiles of primitive centres along each axis, so that each slab holds about
+    // the same number of primitives (the cost estimate used for adaptive walls).
+    static VirtualWalls balanced(std::span<const Bounds3> primitives, int nx, int ny, int nz);
+
+    int box_count() const { return slabs_[0] * slabs_[1] * slabs_[2]; }
+    std::array<int, 3> slabs() const { return slabs_; }
+    const std::vector<Real>& walls(int axis) const { return walls_[axis]; }
+    int box_index(std::array<int, 3> cell) const {
+        return (cell[2] * slabs_[1] + cell[1]) * slabs_[0] + cell[0];
+    }
+    std::array<int, 3> cell_of(int box) const;
+    // The box's region; outer faces are infinite.
+    Bounds3 box_bounds(int box) const;
+    int locate(const Point3& p) const;
+    // Boxes whose region overlaps `b` (closed intervals: touching counts).
+    std::vector<int> boxes_overlapping(const Bounds3& b) const;
+
+    struct Segment {
+        int box;
+        Real t_enter, t_exit;  // the ray is inside `box` for t in [t_enter, t_exit]
+    };
+    // Calls visit(segment) for each box the ray crosses for t in [t_min, t_max], in order;
+    // stops early when visit returns true. NaN directions visit nothing.
+    template <class Visit>
+    void walk(const Ray& ray, Real t_min, Real t_max, Visit&& visit) const;
+
+private:
+    int slab_of(int axis, Real v) const;
+    std::array<std::vector<Real>, 3> walls_;
+    std::array<int, 3> slabs_{1, 1, 1};
+};
+
+template <class Visit>
+void VirtualWalls::walk(const Ray& ray, Real t_min, Real t_max, Visit&& visit) const {
+    if (!(t_min <= t_max)) return;
+    const Point3 start = ray.at(t_min);
+    for (int a = 0; a < 3; ++a) {
+        if (std::isnan(start[a]) || std::isnan(ray.direction[a])) return;
+    }
+    std::array<int, 3> cell{slab_of(0, start.x), slab_of(1, start.y), slab_of(2, start.z)};
+    Real t = t_min;
+    for (;;) {
+        // Distance to the next wall along each axis in the direction of travel.
+        Real t_next = kInfinity;
+        for (int a = 0; a < 3; ++a) {
+            Real d = ray.direction[a];
+            if (d > 0 && cell[a] < slabs_[a] - 1) {
+                t_next = std::min(t_next, (walls_[a][cell[a]] - ray.origin[a]) / d);
+            } else if (d < 0 && cell[a] > 0) {
+                t_next = std::min(t_next, (walls_[a][cell[a] - 1] - ray.origin[a]) / d);
+            }
+        }
+        Real t_exit = std::min(std::max(t_next, t), t_max);
+        if (visit(Segment{box_index(cell), t, t_exit})) return;
+        if (t_next >= t_max) return;
+        // Step every axis whose wall lies at t_next (corners and edges cross at once).
+        for (int a = 0; a < 3; ++a) {
+            Real d = ray.direction[a];
+            if (d > 0 && cell[a] < slabs_[a] - 1 &&
+                (walls_[a][cell[a]] - ray.origin[a]) / d == t_next) {
+                ++cell[a];
+            } else if (d < 0 && cell[a] > 0 &&
+                       (walls_[a][cell[a] - 1] - ray.origin[a]) / d == t_next) {
+                --cell[a];
+            }
+        }
+        t = std::max(t_next, t);
+    }
+}
+
+}  // namespace povwall::distrib

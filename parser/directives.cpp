@@ -1,0 +1,667 @@
+// The token stream and the directives it runs: #declare, #if, #while, #macro, #include, ...
+// Directives are executed when the stream reaches them, so they may appear anywhere.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "parser/interpreter.h"
+
+namespace povwall::parser {
+
+namespace fs = std::filesystem;
+
+Token Interpreter::next_raw() {
+    while (!frames_.empty()) {
+        Frame& f = frames_.back();
+        const SourceFile& file = sources_.file(f.file);
+        if (f.pos < f.end && file.tokens[f.pos].kind != TokenKind::End) {
+            return file.tokens[f.pos++];
+        }
+        // The frame is exhausted: a file or a macro body ends here.
+        const Token& end_tok = file.tokens[std::min(f.pos, file.tokens.size() - 1)];
+        while (!conds_.empty() && conds_.back().frame == frames_.size()) {
+            const Cond& c = conds_.back();
+            if (f.kind == Frame::Kind::Macro) break;
+            std::string what = c.at.kind == TokenKind::Directive ? std::string(c.at.text) : "?";
+            error(c.at, "#" + what + " has no matching #end");
+        }
+        if (frames_.size() == 1) return end_tok;
+        scopes_.resize(f.scope_depth);
+        if (f.kind == Frame::Kind::Macro) --macro_depth_;
+        frames_.pop_back();
+    }
+    return Token{};
+}
+
+const Token& Interpreter::peek() {
+    if (pushback_.empty()) pushback_.push_back(next());
+    return pushback_.back();
+}
+
+void Interpreter::unget(const Token& t) { pushback_.push_back(t); }
+
+Token Interpreter::next() {
+    if (!pushback_.empty()) {
+        Token t = pushback_.back();
+        pushback_.pop_back();
+        return t;
+    }
+    for (;;) {
+        Token t = next_raw();
+        if (t.kind == TokenKind::Directive) {
+            run_directive(t);
+        } else if (t.kind == TokenKind::Word && lookup(t.text) &&
+                   std::holds_alternative<std::shared_ptr<Macro>>(*lookup(t.text))) {
+            auto m = std::get<std::shared_ptr<Macro>>(*lookup(t.text));
+            invoke_macro(t, *m);
+        } else {
+            return t;
+        }
+        // A directive or macro call may have looked one token ahead.
+        if (!pushback_.empty()) {
+            Token p = pushback_.back();
+            pushback_.pop_back();
+            return p;
+        }
+    }
+}
+
+bool Interpreter::accept_punct(char c) {
+    if (is_punct(peek(), c)) {
+        next();
+        return true;
+    }
+    return false;
+}
+
+bool Interpreter::accept_semicolon() {
+    // Looks at the raw stream so that a directive after the statement is not run before
+    // the statement has taken effect.
+    if (!pushback_.empty()) return accept_punct(';');
+    if (frames_.empty()) return false;
+    Frame& f = frames_.back();
+    const auto& toks = sources_.file(f.file).tokens;
+    if (f.pos < f.end && is_punct(toks[f.pos], ';')) {
+        ++f.pos;
+        return true;
+    }
+    return false;
+}
+
+bool Interpreter::accept_word(std::string_view w) {
+    if (is_word(peek(), w)) {
+        next();
+        return true;
+    }
+    return false;
+}
+
+void Interpreter::expect_punct(char c, std::string_view what) {
+    Token t = next();
+    if (!is_punct(t, c)) {
+        std::string want = std::string("'") + c + "'";
+        if (!what.empty()) want += std::string(" ") + std::string(what);
+        expected(want, t);
+    }
+}
+
+std::string Interpreter::describe(const Token& t) const {
+    switch (t.kind) {
+        case TokenKind::End: return "end of file";
+        case TokenKind::String: return "string \"" + std::string(t.text) + "\"";
+        case TokenKind::Directive: return "'#" + std::string(t.text) + "'";
+        default: return "'" + std::string(t.text) + "'";
+    }
+}
+
+void Interpreter::error(const Token& at, const std::string& message) {
+    std::string text = format_diagnostic(sources_, at, "error", message);
+    // Inside macros, also point at the call sites, innermost first.
+    for (auto it = frames_.rbegin(); it != frames_.rend(); ++it) {
+        if (it->kind == Frame::Kind::Macro && it->call.file >= 0) {
+            std::string note = "in macro '";
+            note += it->call.text;
+            note += "' called from here";
+            text += '\n';
+            text += format_diagnostic(sources_, it->call, "note", note);
+        }
+    }
+    throw ParseError(ParseError::Kind::Syntax, text, message, sources_.location(at));
+}
+
+void Interpreter::unsupported(const Token& at, std::string_view feature) {
+    std::string message = "unsupported: " + std::string(feature);
+    throw ParseError(ParseError::Kind::Unsupported,
+                     format_diagnostic(sources_, at, "error", message), message,
+                     sources_.location(at));
+}
+
+void Interpreter::expected(std::string_view what, const Token& found) {
+    error(found, "expected " + std::string(what) + " but found " + describe(found));
+}
+
+// ------------------------------------------------------------------ symbols
+
+Interpreter::Binding* Interpreter::find_binding(const std::string& name, int* scope_index) {
+    for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
+        auto it = scopes_[i].find(name);
+        if (it != scopes_[i].end()) {
+            if (scope_index) *scope_index = i;
+            return &it->second;
+        }
+    }
+    return nullptr;
+}
+
+const Value* Interpreter::lookup(std::string_view name) const {
+    std::string key(name);
+    for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
+        auto it = scopes_[i].find(key);
+        if (it != scopes_[i].end()) return &it->second.value;
+    }
+    return nullptr;
+}
+
+void Interpreter::declare(const std::string& name, Value v, bool local, const Token& at) {
+    if (local) {
+        Binding& b = scopes_.back()[name];
+        b.value = std::move(v);
+        b.ref_scope = -1;
+        return;
+    }
+    // #declare: an existing macro parameter passed by reference writes through to the
+    // caller's variable; otherwise the identifier is global.
+    int index = -1;
+    Binding* b = find_binding(name, &index);
+    std::string target = name;
+    while (b && b->ref_scope >= 0) {
+        int target_scope = b->ref_scope;
+        target = b->ref_name;
+        b->value = v;
+        auto it = scopes_[target_scope].find(target);
+        if (it == scopes_[target_scope].end()) {
+            b = nullptr;
+            break;
+        }
+        b = &it->second;
+        index = target_scope;
+    }
+    if (b) {
+        // An existing identifier (global, or a #local of an enclosing scope) is updated.
+        b->value = std::move(v);
+        return;
+    }
+    scopes_[0][target].value = std::move(v);
+}
+
+// ------------------------------------------------------------------ directives
+
+void Interpreter::run_directive(const Token& t) {
+    const std::string_view d = t.text;
+    if (d == "declare" || d == "local") return directive_declare(t, d == "local");
+    if (d == "if") return directive_if(t, parse_condition() != 0);
+    if (d == "ifdef" || d == "ifndef") {
+        expect_punct('(');
+        Token name = next_raw();
+        if (name.kind != TokenKind::Word) expected("an identifier", name);
+        bool defined = lookup(name.text) != nullptr;
+        if (defined && is_punct(peek(), '[')) {
+            // #ifdef(A[i]): defined when that element has been assigned.
+            const Value* v = lookup(name.text);
+            auto arr = std::get_if<std::shared_ptr<ArrayValue>>(v);
+            size_t flat = 0;
+            while (accept_punct('[')) {
+                int index = int(parse_float());
+                expect_punct(']');
+                flat = flat * 1 + size_t(index);  // single-dimension common case
+            }
+            defined = arr && flat < (*arr)->items.size() &&
+                      !std::holds_alternative<std::monostate>((*arr)->items[flat]);
+        }
+        expect_punct(')');
+        return directive_if(t, d == "ifdef" ? defined : !defined);
+    }
+    if (d == "else" || d == "elseif") {
+        if (conds_.empty() ||
+            (conds_.back().kind != Cond::Kind::If && conds_.back().kind != Cond::Kind::Switch)) {
+            error(t, "#" + std::string(d) + " without a matching #if");
+        }
+        if (conds_.back().kind == Cond::Kind::Switch) {
+            // A taken #case body reaching #else: the switch is finished.
+            skip_switch_clauses(t);
+            return;
+        }
+        conds_.pop_back();
+        skip_conditional(t, false);
+        return;
+    }
+    if (d == "end") return directive_end(t);
+    if (d == "while") return directive_while(t);
+    if (d == "for") return directive_for(t);
+    if (d == "switch") return directive_switch(t);
+    if (d == "case" || d == "range") {
+        if (conds_.empty() || conds_.back().kind != Cond::Kind::Switch) {
+            error(t, "#" + std::string(d) + " outside #switch");
+        }
+        // Fall through from the previous clause: skip this clause's value.
+        expect_punct('(');
+        parse_numeric();
+        if (d == "range") {
+            expect_punct(',');
+            parse_float();
+        }
+        expect_punct(')');
+        return;
+    }
+    if (d == "break") {
+        if (!conds_.empty() && conds_.back().kind == Cond::Kind::Switch) {
+            skip_switch_clauses(t);
+        }
+        return;
+    }
+    if (d == "macro") return directive_macro(t);
+    if (d == "include") return directive_include(t);
+    if (d == "version") {
+        double v = parse_float();
+        accept_semicolon();
+        version_ = int(std::lround(v * 100));
+        version_set_ = true;
+        return;
+    }
+    if (d == "undef") {
+        Token name = next_raw();
+        if (name.kind != TokenKind::Word) expected("an identifier", name);
+        std::string key(name.text);
+        for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
+            if (scopes_[i].erase(key)) break;
+        }
+        return;
+    }
+    if (d == "default") return directive_default();
+    if (d == "debug" || d == "warning" || d == "render" || d == "statistics") {
+        std::string s = parse_string();
+        if (options_.messages) {
+            if (d == "warning") {
+                *options_.messages << format_diagnostic(sources_, t, "warning", s) << "\n";
+            } else {
+                *options_.messages << s;
+            }
+        }
+        return;
+    }
+    if (d == "error") {
+        std::string s = parse_string();
+        error(t, "#error: " + s);
+    }
+    if (d == "fopen" || d == "fclose" || d == "read" || d == "write") {
+        unsupported(t, "#" + std::string(d));
+    }
+    error(t, "unknown directive '#" + std::string(d) + "'");
+}
+
+void Interpreter::directive_if(const Token& t, bool taken) {
+    for (;;) {
+        if (taken) {
+            conds_.push_back({Cond::Kind::If, frames_.size(), 0, {}, 0, 1, t});
+            return;
+        }
+        // Skip to the matching #else, #elseif or #end.
+        const Frame& f = frames_.back();
+        const auto& toks = sources_.file(f.file).tokens;
+        int depth = 0;
+        for (;;) {
+            if (f.pos >= f.end || toks[f.pos].kind == TokenKind::End) {
+                error(t, "#" + std::string(t.text) + " has no matching #end");
+            }
+            const Token& s = toks[frames_.back().pos++];
+            if (s.kind != TokenKind::Directive) continue;
+            std::string_view n = s.text;
+            if (n == "if" || n == "ifdef" || n == "ifndef" || n == "while" || n == "for" ||
+                n == "switch" || n == "macro") {
+                ++depth;
+            } else if (n == "end") {
+                if (depth == 0) return;
+                --depth;
+            } else if (depth == 0 && n == "else") {
+                conds_.push_back({Cond::Kind::If, frames_.size(), 0, {}, 0, 1, t});
+                return;
+            } else if (depth == 0 && n == "elseif") {
+                taken = parse_condition() != 0;
+                break;
+            }
+        }
+    }
+}
+
+void Interpreter::skip_conditional(const Token& at, bool) {
+    Frame& f = frames_.back();
+    const auto& toks = sources_.file(f.file).tokens;
+    int depth = 0;
+    for (;;) {
+        if (f.pos >= f.end || toks[f.pos].kind == TokenKind::End) {
+            error(at, "#" + std::string(at.text) + " has no matching #end");
+        }
+        const Token& s = toks[f.pos++];
+        if (s.kind != TokenKind::Directive) continue;
+        std::string_view n = s.text;
+        if (n == "if" || n == "ifdef" || n == "ifndef" || n == "while" || n == "for" ||
+            n == "switch" || n == "macro") {
+            ++depth;
+        } else if (n == "end") {
+            if (depth == 0) return;
+            --depth;
+        }
+    }
+}
+
+void Interpreter::directive_switch(const Token& t) {
+    double value = parse_condition();
+    // Find the first clause that matches.
+    Frame& f = frames_.back();
+    const auto& toks = sources_.file(f.file).tokens;
+    int depth = 0;
+    for (;;) {
+        if (f.pos >= f.end || toks[f.pos].kind == TokenKind::End) {
+            error(t, "#switch has no matching #end");
+        }
+        const Token& s = toks[f.pos++];
+        if (s.kind != TokenKind::Directive) continue;
+        std::string_view n = s.text;
+        if (n == "if" || n == "ifdef" || n == "ifndef" || n == "while" || n == "for" ||
+            n == "switch" || n == "macro") {
+            ++depth;
+        } else if (n == "end") {
+            if (depth == 0) return;
+            --depth;
+        } else if (depth == 0 && (n == "case" || n == "range")) {
+            expect_punct('(');
+            double a = parse_numeric().c[0];
+            bool match;
+            if (n == "range") {
+                expect_punct(',');
+                double b = parse_numeric().c[0];
+                match = value >= a && value <= b;
+            } else {
+                match = std::fabs(value - a) < 1e-10;
+            }
+            expect_punct(')');
+            if (match) {
+                conds_.push_back({Cond::Kind::Switch, frames_.size(), 0, {}, 0, 1, t});
+                return;
+            }
+        } else if (depth == 0 && n == "else") {
+            conds_.push_back({Cond::Kind::Switch, frames_.size(), 0, {}, 0, 1, t});
+            return;
+        }
+    }
+}
+
+void Interpreter::skip_switch_clauses(const Token& at) {
+    conds_.pop_back();
+    skip_conditional(at, false);
+}
+
+void Interpreter::directive_while(const Token& t) {
+    size_t directive_pos = frames_.back().pos - 1;
+    if (parse_condition() != 0) {
+        conds_.push_back({Cond::Kind::While, frames_.size(), directive_pos, {}, 0, 1, t});
+    } else {
+        skip_conditional(t, false);
+    }
+}
+
+void Interpreter::directive_for(const Token& t) {
+    expect_punct('(');
+    Token var = next_raw();
+    if (var.kind != TokenKind::Word) expected("a loop variable", var);
+    expect_punct(',');
+    double start = parse_float();
+    expect_punct(',');
+    double end = parse_float();
+    double step = 1;
+    if (accept_punct(',')) step = parse_float();
+    expect_punct(')');
+    if (step == 0) error(t, "#for step must not be zero");
+    declare(std::string(var.text), Numeric::scalar(start), false, var);
+    bool run = step > 0 ? start <= end : start >= end;
+    if (!run) {
+        skip_conditional(t, false);
+        return;
+    }
+    Cond c{Cond::Kind::For, frames_.size(), frames_.back().pos, std::string(var.text), end, step,
+           t};
+    conds_.push_back(c);
+}
+
+void Interpreter::directive_end(const Token& t) {
+    if (conds_.empty() || conds_.back().frame != frames_.size()) {
+        error(t, "#end without a matching #if, #while, #for, #switch or #macro");
+    }
+    Cond c = conds_.back();
+    conds_.pop_back();
+    switch (c.kind) {
+        case Cond::Kind::While:
+            frames_.back().pos = c.pos;  // back to the #while: it re-tests the condition
+            break;
+        case Cond::Kind::For: {
+            const Value* v = lookup(c.var);
+            const Numeric* n = v ? std::get_if<Numeric>(v) : nullptr;
+            if (!n) error(t, "#for loop variable '" + c.var + "' was undefined in the loop");
+            double value = n->c[0] + c.step;
+            declare(c.var, Numeric::scalar(value), false, t);
+            if (c.step > 0 ? value <= c.end : value >= c.end) {
+                conds_.push_back(c);
+                frames_.back().pos = c.pos;
+            }
+            break;
+        }
+        default:
+            break;
+    }
+}
+
+void Interpreter::directive_declare(const Token& t, bool local) {
+    Token name = next_raw();
+    if (name.kind != TokenKind::Word) expected("an identifier after #" + std::string(t.text), name);
+    std::string key(name.text);
+    // Element assignment: #declare A[i][j] = value
+    std::vector<int> indices;
+    while (is_punct(peek(), '[')) {
+        next();
+        indices.push_back(int(parse_float()));
+        expect_punct(']');
+    }
+    expect_punct('=', "after the identifier");
+    Token first = next();
+    Value v = parse_declared_value(first);
+    if (!indices.empty()) {
+        const Value* existing = lookup(key);
+        auto arr = existing ? std::get_if<std::shared_ptr<ArrayValue>>(existing) : nullptr;
+        if (!arr) error(name, "'" + key + "' is not an array");
+        const auto& dims = (*arr)->dims;
+        if (indices.size() != dims.size()) error(name, "wrong number of array subscripts");
+        size_t flat = 0;
+        for (size_t i = 0; i < dims.size(); ++i) {
+            if (indices[i] < 0 || indices[i] >= dims[i]) {
+                error(name, "array subscript " + std::to_string(indices[i]) + " out of range");
+            }
+            flat = flat * dims[i] + size_t(indices[i]);
+        }
+        (*arr)->items[flat] = std::move(v);
+    } else {
+        declare(key, std::move(v), local, name);
+    }
+    accept_semicolon();
+}
+
+size_t Interpreter::find_matching_end(const Token& at) {
+    Frame& f = frames_.back();
+    const auto& toks = sources_.file(f.file).tokens;
+    int depth = 0;
+    for (size_t i = f.pos; i < f.end && toks[i].kind != TokenKind::End; ++i) {
+        if (toks[i].kind != TokenKind::Directive) continue;
+        std::string_view n = toks[i].text;
+        if (n == "if" || n == "ifdef" || n == "ifndef" || n == "while" || n == "for" ||
+            n == "switch" || n == "macro") {
+            ++depth;
+        } else if (n == "end") {
+            if (depth == 0) return i;
+            --depth;
+        }
+    }
+    error(at, "#" + std::string(at.text) + " has no matching #end");
+}
+
+void Interpreter::directive_macro(const Token& t) {
+    Token name = next_raw();
+    if (name.kind != TokenKind::Word) expected("a macro name", name);
+    auto m = std::make_shared<Macro>();
+    m->name = std::string(name.text);
+    Token open = next_raw();
+    if (!is_punct(open, '(')) expected("'(' after the macro name", open);
+    Token p = next_raw();
+    while (!is_punct(p, ')')) {
+        bool optional = false;
+        if (is_word(p, "optional")) {
+            optional = true;
+            p = next_raw();
+        }
+        if (p.kind != TokenKind::Word) expected("a parameter name", p);
+        m->params.emplace_back(p.text);
+        m->optional_params.push_back(optional);
+        p = next_raw();
+        if (is_punct(p, ',')) {
+            p = next_raw();
+        } else if (!is_punct(p, ')')) {
+            expected("',' or ')' in the parameter list", p);
+        }
+    }
+    m->file = frames_.back().file;
+    m->body_begin = frames_.back().pos;
+    m->body_end = find_matching_end(t);
+    frames_.back().pos = m->body_end + 1;
+    declare(m->name, m, false, name);
+}
+
+void Interpreter::invoke_macro(const Token& name, const Macro& m) {
+    if (macro_depth_ >= kMaxMacroDepth) {
+        error(name, "macro '" + m.name + "' nested too deeply (limit " +
+                        std::to_string(kMaxMacroDepth) + "): runaway recursion?");
+    }
+    expect_punct('(', "after macro name '" + m.name + "'");
+    Scope params;
+    size_t caller_scope_count = scopes_.size();
+    for (size_t i = 0; i < m.params.size(); ++i) {
+        if (is_punct(peek(), ')')) {
+            if (m.optional_params[i]) continue;
+            error(peek(), "macro '" + m.name + "' expects " + std::to_string(m.params.size()) +
+                              " parameters");
+        }
+        if (is_punct(peek(), ',') && m.optional_params[i]) {
+            next();
+            continue;
+        }
+        Binding b;
+        // A bare identifier argument is passed by reference.
+        const Token& a = peek();
+        if (a.kind == TokenKind::Word) {
+            int scope = -1;
+            std::string key(a.text);
+            Binding* existing = find_binding(key, &scope);
+            if (existing && !std::holds_alternative<std::shared_ptr<Macro>>(existing->value)) {
+                Token id = next();
+                const Token& after = peek();
+                if (is_punct(after, ',') || is_punct(after, ')')) {
+                    b.value = existing->value;
+                    b.ref_scope = scope;
+                    b.ref_name = key;
+                    params[m.params[i]] = std::move(b);
+                    if (i + 1 < m.params.size()) accept_punct(',');
+                    continue;
+                }
+                unget(id);
+            }
+        }
+        b.value = parse_declared_value(next());
+        params[m.params[i]] = std::move(b);
+        if (i + 1 < m.params.size() && !is_punct(peek(), ')')) {
+            expect_punct(',', "between macro arguments");
+        }
+    }
+    expect_punct(')', "after the arguments of '" + m.name + "'");
+    (void)caller_scope_count;
+    Frame f{m.file, m.body_begin, m.body_end, Frame::Kind::Macro, scopes_.size(), name};
+    scopes_.push_back(std::move(params));
+    frames_.push_back(f);
+    ++macro_depth_;
+}
+
+std::string Interpreter::resolve_include(const std::string& name, int from_file) const {
+    auto exists = [](const fs::path& p) {
+        std::error_code ec;
+        return fs::is_regular_file(p, ec);
+    };
+    fs::path p(name);
+    if (p.is_absolute()) return exists(p) ? name : std::string();
+    std::vector<fs::path> dirs;
+    dirs.push_back(fs::path(sources_.file(from_file).path).parent_path());
+    dirs.push_back(scene_dir_);
+    for (const auto& l : options_.library_paths) dirs.emplace_back(l);
+    dirs.emplace_back(options_.standard_include_dir);
+    for (const auto& d : dirs) {
+        fs::path c = d.empty() ? p : d / p;
+        if (exists(c)) return c.string();
+        // POV-Ray also tries the name with ".inc" appended.
+        fs::path inc = c;
+        inc += ".inc";
+        if (exists(inc)) return inc.string();
+    }
+    return {};
+}
+
+void Interpreter::directive_include(const Token& t) {
+    Token nt = peek();
+    std::string name = parse_string();
+    if (frames_.size() >= size_t(kMaxIncludeDepth)) {
+        error(nt, "#include nested too deeply (limit " + std::to_string(kMaxIncludeDepth) + ")");
+    }
+    std::string path = resolve_include(name, frames_.back().file);
+    if (path.empty()) error(nt, "cannot find include file \"" + name + "\"");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) error(nt, "cannot open include file \"" + path + "\"");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    int index = sources_.add(path, ss.str());
+    scopes_.emplace_back();
+    frames_.push_back(
+        {index, 0, sources_.file(index).tokens.size(), Frame::Kind::File, scopes_.size() - 1, {}});
+}
+
+}  // namespace povwall::parser
+
+namespace povwall::parser {
+
+// #default { texture {...} | pigment {...} | finish {...} | normal {...} }: what later
+// textures start from.
+void Interpreter::directive_default() {
+    expect_punct('{', "after #default");
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return;
+        if (is_word(t, "texture")) {
+            LayeredTexture layers = parse_texture_block();
+            default_texture_ = layers.back();
+        } else if (is_word(t, "pigment")) {
+            default_texture_.pigment = parse_pigment_block();
+        } else if (is_word(t, "finish")) {
+            default_texture_.finish = parse_finish_block();
+        } else if (is_word(t, "normal")) {
+            default_texture_.normal = parse_normal_block();
+        } else {
+            expected("texture, pigment, finish or normal in #default", t);
+        }
+    }
+}
+
+}  // namespace povwall::parser

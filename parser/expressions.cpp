@@ -1,0 +1,671 @@
+// Expressions: precedence climbing over floats, vectors, colours and strings, with
+// POV-Ray's built-in functions and constants.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "parser/interpreter.h"
+
+namespace povwall::parser {
+namespace {
+
+constexpr double kPovEpsilon = 1e-10;
+
+Numeric promote(const Numeric& a, int size) {
+    if (a.size >= size) return a;
+    Numeric r = a;
+    if (a.size == 1) {
+        for (int i = 1; i < size; ++i) r.c[i] = a.c[0];
+    }
+    r.size = size;
+    return r;
+}
+
+Numeric combine(Numeric a, Numeric b, char op) {
+    int size = std::max(a.size, b.size);
+    a = promote(a, size);
+    b = promote(b, size);
+    Numeric r;
+    r.size = size;
+    r.colour = a.colour || b.colour;
+    for (int i = 0; i < size; ++i) {
+        switch (op) {
+            case '+': r.c[i] = a.c[i] + b.c[i]; break;
+            case '-': r.c[i] = a.c[i] - b.c[i]; break;
+            case '*': r.c[i] = a.c[i] * b.c[i]; break;
+            case '/': r.c[i] = a.c[i] / b.c[i]; break;
+        }
+    }
+    return r;
+}
+
+// Rotation of a vector by <x,y,z> degrees, as the `rotate` transform does.
+Vector3 rotate_vector(const Vector3& v, const Vector3& degrees) {
+    return Transform::rotate(degrees).vector(v);
+}
+
+Vector3 axis_rotate(const Vector3& v, const Vector3& axis, double degrees) {
+    Vector3 k = normalize(axis);
+    double a = degrees * kPi / 180, c = std::cos(a), s = std::sin(a);
+    // Left-handed rotation to match POV-Ray's vaxis_rotate (same sense as rotate).
+    return v * c + cross(v, k) * s + k * (dot(k, v) * (1 - c));
+}
+
+}  // namespace
+
+const char* type_name(const Value& v) {
+    switch (v.index()) {
+        case 0: return "nothing";
+        case 1: return std::get<Numeric>(v).size == 1 ? "float" : "vector";
+        case 2: return "string";
+        case 3: return "object";
+        case 4: return "texture";
+        case 5: return "pigment";
+        case 6: return "finish";
+        case 7: return "normal";
+        case 8: return "interior";
+        case 9: return "camera";
+        case 10: return "light_source";
+        case 11: return "array";
+        case 12: return "transform";
+        case 13: return "macro";
+        case 14: return "material";
+        case 15: return "color_map";
+    }
+    return "value";
+}
+
+// A small recursive-descent evaluator bound to the interpreter's token stream.
+class ExpressionParser {
+public:
+    ExpressionParser(Interpreter& in, bool no_gt) : in_(in), no_gt_(no_gt) {}
+
+    Value parse() { return ternary(); }
+
+private:
+    static bool numeric(const Value& v) { return std::holds_alternative<Numeric>(v); }
+    Numeric num(const Value& v, const Token& at) {
+        if (auto n = std::get_if<Numeric>(&v)) return *n;
+        in_.error(at, std::string("expected a numeric expression but found ") + type_name(v));
+    }
+
+    Value ternary() {
+        Token at = in_.peek();
+        Value c = logical_or();
+        if (!numeric(c)) return c;
+        if (in_.is_punct(in_.peek(), '?')) {
+            in_.next();
+            Value a = ternary();
+            in_.expect_punct(':', "in a conditional expression");
+            Value b = ternary();
+            return num(c, at).c[0] != 0 ? a : b;
+        }
+        return c;
+    }
+
+    Value logical_or() {
+        Token at = in_.peek();
+        Value a = logical_and();
+        while (numeric(a) && in_.is_punct(in_.peek(), '|')) {
+            in_.next();
+            Value b = logical_and();
+            a = Numeric::scalar((num(a, at).c[0] != 0 || num(b, at).c[0] != 0) ? 1 : 0);
+        }
+        return a;
+    }
+
+    Value logical_and() {
+        Token at = in_.peek();
+        Value a = comparison();
+        while (numeric(a) && in_.is_punct(in_.peek(), '&')) {
+            in_.next();
+            Value b = comparison();
+            a = Numeric::scalar((num(a, at).c[0] != 0 && num(b, at).c[0] != 0) ? 1 : 0);
+        }
+        return a;
+    }
+
+    Value comparison() {
+        Token at = in_.peek();
+        Value a = additive();
+        for (;;) {
+            if (!numeric(a)) return a;
+            const Token& t = in_.peek();
+            std::string_view op;
+            if (in_.is_punct(t, '=')) op = "=";
+            else if (in_.is_punct2(t, "!=")) op = "!=";
+            else if (in_.is_punct(t, '<')) op = "<";
+            else if (in_.is_punct2(t, "<=")) op = "<=";
+            else if (in_.is_punct(t, '>') && !no_gt_) op = ">";
+            else if (in_.is_punct2(t, ">=")) op = ">=";
+            else return a;
+            in_.next();
+            Value b = additive();
+            double x = num(a, at).c[0], y = num(b, at).c[0];
+            bool r = false;
+            // POV-Ray compares with a tolerance for equality.
+            if (op == "=") r = std::fabs(x - y) < kPovEpsilon;
+            else if (op == "!=") r = std::fabs(x - y) >= kPovEpsilon;
+            else if (op == "<") r = x < y;
+            else if (op == "<=") r = x <= y;
+            else if (op == ">") r = x > y;
+            else r = x >= y;
+            a = Numeric::scalar(r ? 1 : 0);
+        }
+    }
+
+    Value additive() {
+        Token at = in_.peek();
+        Value a = multiplicative();
+        for (;;) {
+            if (!numeric(a)) return a;
+            const Token& t = in_.peek();
+            char op;
+            if (in_.is_punct(t, '+')) op = '+';
+            else if (in_.is_punct(t, '-')) op = '-';
+            else return a;
+            in_.next();
+            Value b = multiplicative();
+            a = combine(num(a, at), num(b, at), op);
+        }
+    }
+
+    Value multiplicative() {
+        Token at = in_.peek();
+        Value a = unary();
+        for (;;) {
+            if (!numeric(a)) return a;
+            const Token& t = in_.peek();
+            char op;
+            if (in_.is_punct(t, '*')) op = '*';
+            else if (in_.is_punct(t, '/')) op = '/';
+            else return a;
+            in_.next();
+            Value b = unary();
+            a = combine(num(a, at), num(b, at), op);
+        }
+    }
+
+    Value unary() {
+        const Token& t = in_.peek();
+        if (in_.is_punct(t, '-')) {
+            Token at = in_.next();
+            Numeric n = num(unary(), at);
+            for (int i = 0; i < n.size; ++i) n.c[i] = -n.c[i];
+            return n;
+        }
+        if (in_.is_punct(t, '+')) {
+            in_.next();
+            return unary();
+        }
+        if (in_.is_punct(t, '!')) {
+            Token at = in_.next();
+            return Numeric::scalar(num(unary(), at).c[0] == 0 ? 1 : 0);
+        }
+        return postfix();
+    }
+
+    Value postfix() {
+        Token at = in_.peek();
+        Value v = primary();
+        // Only numbers take operators: after an object, texture, array... nothing is read
+        // ahead, so a directive following it runs in order.
+        while (numeric(v) && in_.is_punct(in_.peek(), '.')) {
+            in_.next();
+            Token m = in_.next();
+            Numeric n = num(v, at);
+            int index = -1;
+            std::string_view w = m.text;
+            if (m.kind != TokenKind::Word) in_.expected("a component name after '.'", m);
+            if (w == "x" || w == "u" || w == "red") index = 0;
+            else if (w == "y" || w == "v" || w == "green") index = 1;
+            else if (w == "z" || w == "blue") index = 2;
+            else if (w == "t" || w == "filter") index = 3;
+            else if (w == "transmit") index = 4;
+            else if (w == "gray" || w == "grey") {
+                Numeric c = promote(n, 3);
+                v = Numeric::scalar(c.c[0] * 0.297 + c.c[1] * 0.589 + c.c[2] * 0.114);
+                continue;
+            } else {
+                in_.error(m, "unknown component '." + std::string(w) + "'");
+            }
+            if (n.size == 1) {
+                v = n;  // POV-Ray promotes: <f,f,f,...>.x is f
+                continue;
+            }
+            if (index >= n.size && !(n.colour && index < 5)) {
+                in_.error(m, "the vector has no component '." + std::string(w) + "'");
+            }
+            v = Numeric::scalar(n.c[index]);
+        }
+        return v;
+    }
+
+    Numeric vector_literal(const Token& open) {
+        Numeric r;
+        r.size = 0;
+        for (;;) {
+            if (r.size == 5) in_.error(in_.peek(), "a vector has at most 5 components");
+            Token at = in_.peek();
+            Numeric c = num(ExpressionParser(in_, true).parse(), at);
+            r.c[r.size++] = c.c[0];
+            Token t = in_.next();
+            if (in_.is_punct(t, '>')) break;
+            if (!in_.is_punct(t, ',')) in_.expected("',' or '>' in a vector", t);
+        }
+        if (r.size < 2) in_.error(open, "a vector needs at least 2 components");
+        return r;
+    }
+
+    double arg_float() {
+        Token at = in_.peek();
+        return num(ExpressionParser(in_, false).parse(), at).c[0];
+    }
+    Vector3 arg_vector() {
+        Token at = in_.peek();
+        return num(ExpressionParser(in_, false).parse(), at).vec3();
+    }
+    std::string arg_string() { return in_.parse_string(); }
+
+    Value call_float(const Token& t, int arity, double (*f)(const double*)) {
+        in_.expect_punct('(', "after '" + std::string(t.text) + "'");
+        double a[3] = {0, 0, 0};
+        for (int i = 0; i < arity; ++i) {
+            if (i > 0) in_.expect_punct(',');
+            a[i] = arg_float();
+        }
+        in_.expect_punct(')');
+        return Numeric::scalar(f(a));
+    }
+
+    Value primary() {
+        Token t = in_.next();
+        switch (t.kind) {
+            case TokenKind::Number: return Numeric::scalar(t.number);
+            case TokenKind::String: return std::string(t.text);
+            case TokenKind::Punct:
+                if (in_.is_punct(t, '(')) {
+                    Value v = ExpressionParser(in_, false).parse();
+                    in_.expect_punct(')', "to close '('");
+                    return v;
+                }
+                if (in_.is_punct(t, '<')) return vector_literal(t);
+                in_.expected("an expression", t);
+            case TokenKind::Word: return word(t);
+            default: in_.expected("an expression", t);
+        }
+    }
+
+    Value word(const Token& t);
+
+    Interpreter& in_;
+    bool no_gt_;
+};
+
+Value ExpressionParser::word(const Token& t) {
+    const std::string_view w = t.text;
+    // User identifiers shadow nothing built in: POV-Ray reserves keywords.
+    if (const Value* v = in_.lookup(w)) {
+        Value value = *v;
+        while (auto arr = std::get_if<std::shared_ptr<ArrayValue>>(&value)) {
+            if (!in_.is_punct(in_.peek(), '[')) break;
+            std::shared_ptr<ArrayValue> a = *arr;
+            size_t flat = 0;
+            for (size_t d = 0; d < a->dims.size(); ++d) {
+                Token open = in_.next();
+                if (!in_.is_punct(open, '[')) in_.expected("'[' for the next subscript", open);
+                Token at = in_.peek();
+                double index = arg_float();
+                in_.expect_punct(']');
+                int i = int(index);
+                if (i < 0 || i >= a->dims[d]) {
+                    in_.error(at, "array subscript " + std::to_string(i) + " out of range 0.." +
+                                      std::to_string(a->dims[d] - 1));
+                }
+                flat = flat * a->dims[d] + size_t(i);
+            }
+            value = a->items[flat];
+            if (std::holds_alternative<std::monostate>(value)) {
+                in_.error(t, "array element of '" + std::string(w) + "' used before it was set");
+            }
+        }
+        return value;
+    }
+    auto f1 = [&](double (*f)(const double*)) { return call_float(t, 1, f); };
+    if (w == "pi") return Numeric::scalar(kPi);
+    if (w == "tau") return Numeric::scalar(2 * kPi);
+    if (w == "true" || w == "yes" || w == "on") return Numeric::scalar(1);
+    if (w == "false" || w == "no" || w == "off") return Numeric::scalar(0);
+    if (w == "x") return Numeric::vector({1, 0, 0});
+    if (w == "y") return Numeric::vector({0, 1, 0});
+    if (w == "z") return Numeric::vector({0, 0, 1});
+    if (w == "t") {
+        Numeric n;
+        n.size = 4;
+        n.c[3] = 1;
+        return n;
+    }
+    if (w == "u") {
+        Numeric n;
+        n.size = 2;
+        n.c[0] = 1;
+        return n;
+    }
+    if (w == "v") {
+        Numeric n;
+        n.size = 2;
+        n.c[1] = 1;
+        return n;
+    }
+    const ParseOptions& o = in_.options();
+    if (w == "clock") return Numeric::scalar(o.clock);
+    if (w == "clock_delta") return Numeric::scalar(0);
+    if (w == "clock_on") return Numeric::scalar(o.final_frame > o.initial_frame ? 1 : 0);
+    if (w == "image_width") return Numeric::scalar(o.image_width);
+    if (w == "image_height") return Numeric::scalar(o.image_height);
+    if (w == "frame_number") return Numeric::scalar(o.frame_number);
+    if (w == "initial_frame") return Numeric::scalar(o.initial_frame);
+    if (w == "final_frame") return Numeric::scalar(o.final_frame);
+    if (w == "initial_clock") return Numeric::scalar(o.initial_clock);
+    if (w == "final_clock") return Numeric::scalar(o.final_clock);
+    if (w == "version") return Numeric::scalar(in_.language_version() / 100.0);
+    if (w == "abs") return f1([](const double* a) { return std::fabs(a[0]); });
+    if (w == "acos") return f1([](const double* a) { return std::acos(a[0]); });
+    if (w == "acosh") return f1([](const double* a) { return std::acosh(a[0]); });
+    if (w == "asin") return f1([](const double* a) { return std::asin(a[0]); });
+    if (w == "asinh") return f1([](const double* a) { return std::asinh(a[0]); });
+    if (w == "atan") return f1([](const double* a) { return std::atan(a[0]); });
+    if (w == "atanh") return f1([](const double* a) { return std::atanh(a[0]); });
+    if (w == "ceil") return f1([](const double* a) { return std::ceil(a[0]); });
+    if (w == "cos") return f1([](const double* a) { return std::cos(a[0]); });
+    if (w == "cosh") return f1([](const double* a) { return std::cosh(a[0]); });
+    if (w == "degrees") return f1([](const double* a) { return a[0] * 180 / kPi; });
+    if (w == "radians") return f1([](const double* a) { return a[0] * kPi / 180; });
+    if (w == "exp") return f1([](const double* a) { return std::exp(a[0]); });
+    if (w == "floor") return f1([](const double* a) { return std::floor(a[0]); });
+    if (w == "int") return f1([](const double* a) { return std::trunc(a[0]); });
+    if (w == "ln") return f1([](const double* a) { return std::log(a[0]); });
+    if (w == "log") return f1([](const double* a) { return std::log10(a[0]); });
+    if (w == "sin") return f1([](const double* a) { return std::sin(a[0]); });
+    if (w == "sinh") return f1([](const double* a) { return std::sinh(a[0]); });
+    if (w == "sqrt") return f1([](const double* a) { return std::sqrt(a[0]); });
+    if (w == "tan") return f1([](const double* a) { return std::tan(a[0]); });
+    if (w == "tanh") return f1([](const double* a) { return std::tanh(a[0]); });
+    if (w == "atan2")
+        return call_float(t, 2, [](const double* a) { return std::atan2(a[0], a[1]); });
+    if (w == "pow")
+        return call_float(t, 2, [](const double* a) { return std::pow(a[0], a[1]); });
+    if (w == "mod")
+        return call_float(t, 2, [](const double* a) { return std::fmod(a[0], a[1]); });
+    if (w == "div")
+        return call_float(t, 2, [](const double* a) { return std::trunc(a[0] / a[1]); });
+    if (w == "bitwise_and" || w == "bitwise_or" || w == "bitwise_xor") {
+        in_.expect_punct('(');
+        long long r = (long long)arg_float();
+        while (in_.accept_punct(',')) {
+            long long b = (long long)arg_float();
+            r = w == "bitwise_and" ? (r & b) : w == "bitwise_or" ? (r | b) : (r ^ b);
+        }
+        in_.expect_punct(')');
+        return Numeric::scalar(double(r));
+    }
+    if (w == "min" || w == "max") {
+        in_.expect_punct('(', "after '" + std::string(w) + "'");
+        double r = arg_float();
+        while (in_.accept_punct(',')) {
+            double b = arg_float();
+            r = w == "min" ? std::min(r, b) : std::max(r, b);
+        }
+        in_.expect_punct(')');
+        return Numeric::scalar(r);
+    }
+    if (w == "select") {
+        in_.expect_punct('(');
+        double c = arg_float();
+        in_.expect_punct(',');
+        Value a = ExpressionParser(in_, false).parse();
+        in_.expect_punct(',');
+        Value b = ExpressionParser(in_, false).parse();
+        Value r;
+        if (in_.accept_punct(',')) {
+            Value d = ExpressionParser(in_, false).parse();
+            r = c < 0 ? a : (c == 0 ? b : d);
+        } else {
+            r = c < 0 ? a : b;
+        }
+        in_.expect_punct(')');
+        return r;
+    }
+    if (w == "seed") {
+        in_.expect_punct('(');
+        double s = arg_float();
+        in_.expect_punct(')');
+        return Numeric::scalar(in_.new_random_stream(int(s)));
+    }
+    if (w == "rand") {
+        in_.expect_punct('(');
+        Token at = in_.peek();
+        double s = arg_float();
+        in_.expect_punct(')');
+        return Numeric::scalar(in_.draw_random(int(s), at));
+    }
+    if (w == "vlength") {
+        in_.expect_punct('(');
+        Vector3 v = arg_vector();
+        in_.expect_punct(')');
+        return Numeric::scalar(length(v));
+    }
+    if (w == "vnormalize") {
+        in_.expect_punct('(');
+        Vector3 v = arg_vector();
+        in_.expect_punct(')');
+        return Numeric::vector(normalize(v));
+    }
+    if (w == "vdot" || w == "vcross" || w == "vrotate") {
+        in_.expect_punct('(');
+        Vector3 a = arg_vector();
+        in_.expect_punct(',');
+        Vector3 b = arg_vector();
+        in_.expect_punct(')');
+        if (w == "vdot") return Numeric::scalar(dot(a, b));
+        if (w == "vcross") return Numeric::vector(cross(a, b));
+        return Numeric::vector(rotate_vector(a, b));
+    }
+    if (w == "vaxis_rotate") {
+        in_.expect_punct('(');
+        Vector3 a = arg_vector();
+        in_.expect_punct(',');
+        Vector3 b = arg_vector();
+        in_.expect_punct(',');
+        double deg = arg_float();
+        in_.expect_punct(')');
+        return Numeric::vector(axis_rotate(a, b, deg));
+    }
+    if (w == "strlen") {
+        in_.expect_punct('(');
+        std::string s = arg_string();
+        in_.expect_punct(')');
+        return Numeric::scalar(double(s.size()));
+    }
+    if (w == "val") {
+        in_.expect_punct('(');
+        std::string s = arg_string();
+        in_.expect_punct(')');
+        return Numeric::scalar(std::atof(s.c_str()));
+    }
+    if (w == "asc") {
+        in_.expect_punct('(');
+        std::string s = arg_string();
+        in_.expect_punct(')');
+        return Numeric::scalar(s.empty() ? 0 : (unsigned char)s[0]);
+    }
+    if (w == "file_exists") {
+        in_.expect_punct('(');
+        std::string s = arg_string();
+        in_.expect_punct(')');
+        std::error_code ec;
+        return Numeric::scalar(std::filesystem::exists(s, ec) ? 1 : 0);
+    }
+    if (w == "defined") {
+        in_.expect_punct('(');
+        Token id = in_.next();
+        in_.expect_punct(')');
+        return Numeric::scalar(in_.lookup(id.text) ? 1 : 0);
+    }
+    if (w == "dimensions" || w == "dimension_size") {
+        in_.expect_punct('(');
+        Token id = in_.next();
+        const Value* v = in_.lookup(id.text);
+        auto arr = v ? std::get_if<std::shared_ptr<ArrayValue>>(v) : nullptr;
+        if (!arr) in_.error(id, "'" + std::string(id.text) + "' is not an array");
+        double r;
+        if (w == "dimensions") {
+            r = double((*arr)->dims.size());
+        } else {
+            in_.expect_punct(',');
+            int d = int(arg_float());
+            r = (d >= 1 && d <= int((*arr)->dims.size())) ? (*arr)->dims[d - 1] : 0;
+        }
+        in_.expect_punct(')');
+        return Numeric::scalar(r);
+    }
+    if (w == "str" || w == "chr" || w == "concat" || w == "substr" || w == "strupr" ||
+        w == "strlwr" || w == "vstr") {
+        in_.unget(t);
+        return in_.parse_string();
+    }
+    if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" ||
+        w == "rgbft" || w == "srgb" || w == "srgbf" || w == "srgbt" || w == "srgbft" ||
+        w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") {
+        in_.unget(t);
+        return in_.parse_colour();
+    }
+    return in_.parse_item_value(t);
+}
+
+Value Interpreter::parse_expression_value() { return ExpressionParser(*this, false).parse(); }
+
+Numeric Interpreter::parse_numeric(bool no_gt) {
+    Token at = peek();
+    Value v = ExpressionParser(*this, no_gt).parse();
+    if (auto n = std::get_if<Numeric>(&v)) return *n;
+    error(at, std::string("expected a numeric expression but found ") + type_name(v));
+}
+
+double Interpreter::parse_float() {
+    Numeric n = parse_numeric();
+    return n.c[0];
+}
+
+double Interpreter::parse_condition() {
+    Token open = next();
+    if (!is_punct(open, '(')) {
+        unget(open);
+        return parse_float();
+    }
+    Numeric n = parse_numeric();
+    expect_punct(')', "to close the condition");
+    return n.c[0];
+}
+
+Vector3 Interpreter::parse_vector() { return parse_numeric().vec3(); }
+
+std::string Interpreter::parse_string() {
+    Token t = next();
+    if (t.kind == TokenKind::String) return std::string(t.text);
+    if (t.kind == TokenKind::Word) {
+        std::string_view w = t.text;
+        if (lookup(w)) {
+            unget(t);
+            Value val = ExpressionParser(*this, false).parse();
+            if (auto s = std::get_if<std::string>(&val)) return *s;
+            error(t, std::string("expected a string but found ") + type_name(val));
+        }
+        if (w == "str") {
+            expect_punct('(');
+            double v = parse_float();
+            expect_punct(',');
+            int width = int(parse_float());
+            expect_punct(',');
+            int prec = int(parse_float());
+            expect_punct(')');
+            char buf[512];
+            if (prec < 0) {
+                std::snprintf(buf, sizeof buf, width < 0 ? "%0*g" : "%*g", std::abs(width), v);
+            } else {
+                std::snprintf(buf, sizeof buf, width < 0 ? "%0*.*f" : "%*.*f", std::abs(width),
+                              prec, v);
+            }
+            return buf;
+        }
+        if (w == "vstr") {
+            expect_punct('(');
+            double dims = parse_float();
+            expect_punct(',');
+            Numeric v = parse_numeric();
+            expect_punct(',');
+            std::string sep = parse_string();
+            expect_punct(',');
+            int width = int(parse_float());
+            expect_punct(',');
+            int prec = int(parse_float());
+            expect_punct(')');
+            std::string out;
+            v = promote(v, int(dims));
+            for (int i = 0; i < int(dims) && i < 5; ++i) {
+                char buf[128];
+                std::snprintf(buf, sizeof buf, "%*.*f", width, prec, v.c[i]);
+                if (i) out += sep;
+                out += buf;
+            }
+            return out;
+        }
+        if (w == "chr") {
+            expect_punct('(');
+            int c = int(parse_float());
+            expect_punct(')');
+            return std::string(1, char(c));
+        }
+        if (w == "concat") {
+            expect_punct('(');
+            std::string s = parse_string();
+            while (accept_punct(',')) s += parse_string();
+            expect_punct(')');
+            return s;
+        }
+        if (w == "substr") {
+            expect_punct('(');
+            std::string s = parse_string();
+            expect_punct(',');
+            int start = int(parse_float());
+            expect_punct(',');
+            int len = int(parse_float());
+            expect_punct(')');
+            if (start < 1 || start - 1 + len > int(s.size()) || len < 0) {
+                error(t, "substr arguments out of range");
+            }
+            return s.substr(size_t(start - 1), size_t(len));
+        }
+        if (w == "strupr" || w == "strlwr") {
+            expect_punct('(');
+            std::string s = parse_string();
+            expect_punct(')');
+            for (char& c : s) c = char(w == "strupr" ? std::toupper(c) : std::tolower(c));
+            return s;
+        }
+    }
+    expected("a string", t);
+}
+
+bool Interpreter::parse_bool_opt() {
+    // `hollow`, `hollow on`, `hollow false`: a following number or boolean word is the value.
+    const Token& t = peek();
+    if (t.kind == TokenKind::Number || is_word(t, "on") || is_word(t, "off") ||
+        is_word(t, "true") || is_word(t, "false") || is_word(t, "yes") || is_word(t, "no") ||
+        is_punct(t, '(') || is_punct(t, '!')) {
+        return parse_float() != 0;
+    }
+    return true;
+}
+
+}  // namespace povwall::parser

@@ -1,0 +1,162 @@
+// The interpreter: a single pass over the token stream that runs directives as it meets them
+// (so they may appear anywhere, as in POV-Ray) and builds the scene as it goes.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "parser/parser.h"
+#include "parser/source.h"
+#include "parser/value.h"
+
+namespace povwall::parser {
+
+// Limits that turn runaway scenes into located errors instead of exhausted memory or a hang.
+constexpr int kMaxIncludeDepth = 64;     // POV-Ray allows 32 open files; machine scenes stay lower
+constexpr int kMaxMacroDepth = 1000;     // recursion guard (POV-Ray's symbol table limit is 100)
+constexpr size_t kMaxArrayItems = 1u << 28;
+
+// Composes `t` into every pattern transform of the layers (textures move with objects).
+void transform_textures(LayeredTexture& layers, const Transform& t);
+
+class Interpreter {
+public:
+    Interpreter(const ParseOptions& options, SourceManager& sources);
+    Scene run(int root_file);
+
+    // ---- token stream (tokens.cpp)
+    const Token& peek();
+    Token next();
+    void unget(const Token& t);
+    bool accept_punct(char c);
+    bool accept_word(std::string_view w);
+    bool accept_semicolon();
+    void expect_punct(char c, std::string_view what = {});
+    bool is_punct(const Token& t, char c) const {
+        return t.kind == TokenKind::Punct && t.length == 1 && t.text[0] == c;
+    }
+    bool is_punct2(const Token& t, std::string_view op) const {
+        return t.kind == TokenKind::Punct && t.text == op;
+    }
+    bool is_word(const Token& t, std::string_view w) const {
+        return t.kind == TokenKind::Word && t.text == w;
+    }
+    [[noreturn]] void error(const Token& at, const std::string& message);
+    [[noreturn]] void unsupported(const Token& at, std::string_view feature);
+    [[noreturn]] void expected(std::string_view what, const Token& found);
+    std::string describe(const Token& t) const;
+
+    // ---- symbols
+    const Value* lookup(std::string_view name) const;
+    void declare(const std::string& name, Value v, bool local, const Token& at);
+
+    // ---- expressions (expressions.cpp)
+    Value parse_expression_value();       // float, vector, colour or string
+    Numeric parse_numeric(bool no_gt = false);
+    double parse_float();
+    // A directive's parenthesised condition; reads nothing past the ')' so that the tokens
+    // after it are not consumed before the directive decides whether to skip them.
+    double parse_condition();
+    Vector3 parse_vector();               // float promoted to <f,f,f>
+    std::string parse_string();
+    Numeric parse_colour();               // colour keyword forms, rgb, identifiers
+    Colour parse_colour_value();
+    bool parse_bool_opt();                // optional boolean after a flag keyword
+
+    // ---- scene items (objects.cpp, textures.cpp, scene_items.cpp)
+    bool try_parse_object(const Token& t, Object& out);
+    void parse_object_modifiers(Object& obj);
+    bool try_object_modifier(Object& obj, const Token& t);
+    bool try_transform(const Token& t, Transform& out);
+    Transform parse_transform_block();
+    void apply_transform(Object& obj, const Transform& t);
+    LayeredTexture parse_texture_block();   // after 'texture'
+    Pigment parse_pigment_block();          // after 'pigment'
+    Finish parse_finish_block();            // after 'finish'
+    Normal parse_normal_block();            // after 'normal'
+    Interior parse_interior_block();        // after 'interior'
+    ColourMap parse_colour_map_block();     // after 'color_map'
+    bool try_pattern_keyword(const Token& t, PatternSpec& spec);
+    bool try_pattern_modifier(const Token& t, PatternSpec& spec);
+    Light parse_light_block();
+    CameraSpec parse_camera_block();
+    void parse_global_settings();
+    Value parse_declared_value(const Token& first);
+    Value parse_item_value(const Token& t);
+    Camera finish_camera(const CameraSpec& spec);
+    void parse_sky_sphere();
+    void parse_fog();
+    void parse_mesh(Object& out);
+    void parse_mesh2(Object& out);
+    int new_random_stream(int seed);
+    double draw_random(int stream, const Token& at);
+
+    const ParseOptions& options() const { return options_; }
+    int language_version() const { return version_; }
+    Texture default_texture() const { return default_texture_; }
+
+private:
+    friend class DirectiveRunner;
+    struct Frame {
+        int file;
+        size_t pos, end;
+        enum class Kind { File, Macro } kind;
+        size_t scope_depth;  // scopes to restore when the frame ends
+        Token call;          // macro call site (for notes)
+    };
+    struct Cond {
+        enum class Kind { If, Else, While, For, Switch, SwitchDone, Macro } kind;
+        size_t frame;       // frame depth where it was opened
+        size_t pos;         // loop restart position
+        std::string var;    // #for variable
+        double end = 0, step = 1;
+        Token at;
+    };
+    struct Binding {
+        Value value;
+        // Macro parameters passed an identifier alias the caller's variable.
+        int ref_scope = -1;
+        std::string ref_name;
+    };
+    using Scope = std::unordered_map<std::string, Binding>;
+
+    Token next_raw();
+    void run_directive(const Token& t);
+    void directive_if(const Token& t, bool taken_value);
+    void skip_conditional(const Token& at, bool stop_at_else);
+    void directive_switch(const Token& t);
+    void skip_switch_clauses(const Token& at);
+    void directive_while(const Token& t);
+    void directive_for(const Token& t);
+    void directive_end(const Token& t);
+    void directive_declare(const Token& t, bool local);
+    void directive_macro(const Token& t);
+    void directive_include(const Token& t);
+    void directive_default();
+    void invoke_macro(const Token& name, const Macro& m);
+    size_t find_matching_end(const Token& at);
+    Binding* find_binding(const std::string& name, int* scope_index = nullptr);
+    void parse_top_level_item(const Token& t);
+    std::string resolve_include(const std::string& name, int from_file) const;
+    void finish_object(Object& obj);
+
+    const ParseOptions& options_;
+    SourceManager& sources_;
+    Scene scene_;
+    std::vector<Frame> frames_;
+    std::vector<Cond> conds_;
+    std::vector<Scope> scopes_;
+    std::vector<Token> pushback_;
+    std::vector<std::unique_ptr<RandomStream>> streams_;
+    int version_ = 362;
+    bool version_set_ = false;
+    int macro_depth_ = 0;
+    bool camera_seen_ = false;
+    Texture default_texture_;
+    std::string scene_dir_;
+    friend class ExpressionParser;
+};
+
+}  // namespace povwall::parser

@@ -1,0 +1,240 @@
+// Lexer: one pass over a file's bytes into a token vector.
+#include <algorithm>
+#include <cstdlib>
+
+#include "parser/parser.h"
+#include "parser/source.h"
+
+namespace povwall::parser {
+namespace {
+
+bool is_ident_start(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool is_ident(char c) { return is_ident_start(c) || (c >= '0' && c <= '9'); }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+[[noreturn]] void lex_error(const SourceManager& sm, int file, uint32_t offset, uint32_t length,
+                            const std::string& message) {
+    throw ParseError(ParseError::Kind::Syntax,
+                     format_diagnostic_at(sm, file, offset, length, "error", message), message,
+                     sm.location(file, offset));
+}
+
+void lex(const SourceManager& sm, int file_index, SourceFile& f) {
+    const std::string& s = f.text;
+    const size_t n = s.size();
+    size_t i = 0;
+    auto push = [&](TokenKind kind, size_t start, size_t len) {
+        Token t;
+        t.kind = kind;
+        t.file = file_index;
+        t.offset = uint32_t(start);
+        t.length = uint32_t(len);
+        t.text = std::string_view(s).substr(start, len);
+        f.tokens.push_back(t);
+        return &f.tokens.back();
+    };
+    while (i < n) {
+        char c = s[i];
+        if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v' ||
+            c == '\x1a') {
+            ++i;
+            continue;
+        }
+        if (c == '/' && i + 1 < n && s[i + 1] == '/') {
+            while (i < n && s[i] != '\n') ++i;
+            continue;
+        }
+        if (c == '/' && i + 1 < n && s[i + 1] == '*') {
+            // POV-Ray block comments nest.
+            size_t start = i;
+            int depth = 0;
+            while (i < n) {
+                if (s[i] == '/' && i + 1 < n && s[i + 1] == '*') {
+                    ++depth;
+                    i += 2;
+                } else if (s[i] == '*' && i + 1 < n && s[i + 1] == '/') {
+                    i += 2;
+                    if (--depth == 0) break;
+                } else {
+                    ++i;
+                }
+            }
+            if (depth != 0) lex_error(sm, file_index, uint32_t(start), 2, "unterminated comment");
+            continue;
+        }
+        size_t start = i;
+        if (is_digit(c) || (c == '.' && i + 1 < n && is_digit(s[i + 1]))) {
+            while (i < n && is_digit(s[i])) ++i;
+            if (i < n && s[i] == '.') {
+                ++i;
+                while (i < n && is_digit(s[i])) ++i;
+            }
+            if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+                size_t j = i + 1;
+                if (j < n && (s[j] == '+' || s[j] == '-')) ++j;
+                if (j < n && is_digit(s[j])) {
+                    i = j;
+                    while (i < n && is_digit(s[i])) ++i;
+                }
+            }
+            Token* t = push(TokenKind::Number, start, i - start);
+            t->number = std::strtod(std::string(s.substr(start, i - start)).c_str(), nullptr);
+            continue;
+        }
+        if (is_ident_start(c)) {
+            while (i < n && is_ident(s[i])) ++i;
+            push(TokenKind::Word, start, i - start);
+            continue;
+        }
+        if (c == '#') {
+            size_t j = i + 1;
+            while (j < n && (s[j] == ' ' || s[j] == '\t')) ++j;
+            if (j < n && is_ident_start(s[j])) {
+                size_t w = j;
+                while (j < n && is_ident(s[j])) ++j;
+                Token* t = push(TokenKind::Directive, start, j - start);
+                t->text = std::string_view(s).substr(w, j - w);
+                i = j;
+                continue;
+            }
+            lex_error(sm, file_index, uint32_t(start), 1, "expected a directive name after '#'");
+        }
+        if (c == '"') {
+            ++i;
+            auto value = std::make_unique<std::string>();
+            while (i < n && s[i] != '"') {
+                if (s[i] == '\n') break;
+                if (s[i] == '\\' && i + 1 < n) {
+                    char e = s[i + 1];
+                    switch (e) {
+                        case 'n': value->push_back('\n'); break;
+                        case 't': value->push_back('\t'); break;
+                        case 'r': value->push_back('\r'); break;
+                        case '"': value->push_back('"'); break;
+                        case '\\': value->push_back('\\'); break;
+                        case 'a': value->push_back('\a'); break;
+                        case 'b': value->push_back('\b'); break;
+                        case 'f': value->push_back('\f'); break;
+                        case 'v': value->push_back('\v'); break;
+                        case '\'': value->push_back('\''); break;
+                        default:
+                            // POV-Ray keeps unknown escapes (Windows paths) as written.
+                            value->push_back('\\');
+                            value->push_back(e);
+                    }
+                    i += 2;
+                    continue;
+                }
+                value->push_back(s[i++]);
+            }
+            if (i >= n || s[i] != '"') {
+                lex_error(sm, file_index, uint32_t(start), 1, "unterminated string");
+            }
+            ++i;
+            Token* t = push(TokenKind::String, start, i - start);
+            t->text = *value;
+            f.strings.push_back(std::move(value));
+            continue;
+        }
+        if ((c == '<' || c == '>' || c == '!') && i + 1 < n && s[i + 1] == '=') {
+            push(TokenKind::Punct, start, 2);
+            i += 2;
+            continue;
+        }
+        static const std::string_view kPunct = "{}()[]<>,;+-*/?:=!&|.";
+        if (kPunct.find(c) != std::string_view::npos) {
+            push(TokenKind::Punct, start, 1);
+            ++i;
+            continue;
+        }
+        lex_error(sm, file_index, uint32_t(start), 1,
+                  std::string("unexpected character '") + c + "'");
+    }
+    Token end;
+    end.kind = TokenKind::End;
+    end.file = file_index;
+    end.offset = uint32_t(n);
+    f.tokens.push_back(end);
+}
+
+}  // namespace
+
+int SourceManager::add(std::string path, std::string text) {
+    auto f = std::make_unique<SourceFile>();
+    f->path = std::move(path);
+    f->text = std::move(text);
+    f->line_starts.push_back(0);
+    for (uint32_t i = 0; i < f->text.size(); ++i) {
+        if (f->text[i] == '\n') f->line_starts.push_back(i + 1);
+    }
+    int index = int(files_.size());
+    files_.push_back(std::move(f));
+    lex(*this, index, *files_.back());
+    return index;
+}
+
+SourceLoc SourceManager::location(int file, uint32_t offset) const {
+    if (file < 0 || file >= count()) return {};
+    const auto& ls = files_[file]->line_starts;
+    auto it = std::upper_bound(ls.begin(), ls.end(), offset);
+    int line = int(it - ls.begin());
+    return {file, line, int(offset - ls[line - 1]) + 1};
+}
+
+std::string_view SourceManager::line_text(int file, int line) const {
+    const SourceFile& f = *files_[file];
+    if (line < 1 || line > int(f.line_starts.size())) return {};
+    size_t start = f.line_starts[line - 1];
+    size_t end = line < int(f.line_starts.size()) ? f.line_starts[line] : f.text.size();
+    std::string_view v(f.text);
+    v = v.substr(start, end - start);
+    while (!v.empty() && (v.back() == '\n' || v.back() == '\r')) v.remove_suffix(1);
+    return v;
+}
+
+std::string format_diagnostic_at(const SourceManager& sm, int file, uint32_t offset,
+                                 uint32_t length, std::string_view severity,
+                                 std::string_view message) {
+    SourceLoc loc = sm.location(file, offset);
+    std::string out;
+    if (!loc.valid()) {
+        out += "povwall: ";
+        out += severity;
+        out += ": ";
+        out += message;
+        return out;
+    }
+    out += sm.file(file).path + ":" + std::to_string(loc.line) + ":" +
+           std::to_string(loc.column) + ": " + std::string(severity) + ": " +
+           std::string(message) + "\n";
+    // Source line with tabs expanded to 8 columns, then the caret at the same visual column.
+    std::string_view line = sm.line_text(file, loc.line);
+    std::string shown, pad;
+    for (size_t i = 0; i < line.size(); ++i) {
+        char c = line[i];
+        bool before = int(i) < loc.column - 1;
+        if (c == '\t') {
+            size_t w = 8 - shown.size() % 8;
+            shown.append(w, ' ');
+            if (before) pad.append(w, ' ');
+        } else {
+            shown.push_back(c);
+            if (before) pad.push_back(' ');
+        }
+    }
+    out += shown + "\n" + pad + "^";
+    uint32_t line_left = uint32_t(line.size()) - uint32_t(loc.column - 1);
+    uint32_t tilde = std::min(length, line_left);
+    if (tilde > 1) out.append(tilde - 1, '~');
+    return out;
+}
+
+std::string format_diagnostic(const SourceManager& sm, const Token& at, std::string_view severity,
+                              std::string_view message) {
+    return format_diagnostic_at(sm, at.file, at.offset, std::max<uint32_t>(at.length, 1), severity,
+                                message);
+}
+
+}  // namespace povwall::parser

@@ -1,0 +1,491 @@
+// Objects: shapes, CSG, object modifiers and transforms, and the top-level scene items.
+#include <cmath>
+
+#include "parser/interpreter.h"
+
+namespace povwall::parser {
+namespace {
+
+// Shapes the scene model does not have yet: used, they are a located "unsupported" error.
+bool is_unsupported_shape(std::string_view w) {
+    static const char* kNames[] = {
+        "text", "lathe", "sor", "prism", "blob", "superellipsoid", "quadric", "quartic", "poly",
+        "cubic", "height_field", "bicubic_patch", "isosurface", "parametric", "julia_fractal",
+        "sphere_sweep", "ovus", "lemon", "light_group", "polynomial"};
+    for (const char* n : kNames) {
+        if (w == n) return true;
+    }
+    return false;
+}
+
+void transform_pattern(PatternSpec& p, const Transform& t) { p.transform = p.transform.then(t); }
+
+void transform_pigment(Pigment& p, const Transform& t) {
+    transform_pattern(p.pattern, t);
+    for (Pigment& sub : p.list) transform_pigment(sub, t);
+}
+
+void transform_normal(Normal& n, const Transform& t) {
+    transform_pattern(n.pattern, t);
+    for (Normal& sub : n.list) transform_normal(sub, t);
+}
+
+}  // namespace
+
+void transform_textures(LayeredTexture& layers, const Transform& t) {
+    for (Texture& tex : layers) {
+        transform_pigment(tex.pigment, t);
+        if (tex.normal) transform_normal(*tex.normal, t);
+        if (tex.map_pattern) transform_pattern(*tex.map_pattern, t);
+        for (auto& entry : tex.map) transform_textures(entry, t);
+    }
+}
+
+void Interpreter::apply_transform(Object& obj, const Transform& t) {
+    obj.transform = obj.transform.then(t);
+    transform_textures(obj.texture, t);
+    transform_textures(obj.interior_texture, t);
+    if (auto csg = std::get_if<Csg>(&obj.shape)) {
+        for (Object& child : csg->children) apply_transform(child, t);
+    }
+    for (Object& o : obj.clipped_by) apply_transform(o, t);
+    for (Object& o : obj.bounded_by) apply_transform(o, t);
+}
+
+bool Interpreter::try_transform(const Token& t, Transform& out) {
+    if (t.kind != TokenKind::Word) return false;
+    std::string_view w = t.text;
+    if (w == "translate") {
+        out = Transform::translate(parse_vector());
+    } else if (w == "rotate") {
+        out = Transform::rotate(parse_vector());
+    } else if (w == "scale") {
+        Token at = peek();
+        Vector3 s = parse_vector();
+        for (int i = 0; i < 3; ++i) {
+            // POV-Ray warns about a zero scale and substitutes a tiny one.
+            if (s[i] == 0) s[i] = 1e-10;
+        }
+        (void)at;
+        out = Transform::scale(s);
+    } else if (w == "matrix") {
+        expect_punct('<', "to start the 12 matrix values");
+        Real m[12];
+        for (int i = 0; i < 12; ++i) {
+            if (i) expect_punct(',', "between matrix values");
+            m[i] = parse_numeric(true).c[0];
+        }
+        expect_punct('>', "after the 12 matrix values");
+        out = Transform::from_pov_matrix(m);
+    } else if (w == "transform") {
+        Token n = peek();
+        if (is_punct(n, '{')) {
+            next();
+            out = parse_transform_block();
+        } else {
+            next();
+            const Value* v = lookup(n.text);
+            auto tp = v ? std::get_if<std::shared_ptr<Transform>>(v) : nullptr;
+            if (!tp) expected("a transform identifier or '{'", n);
+            out = **tp;
+        }
+    } else {
+        return false;
+    }
+    return true;
+}
+
+// After `transform {`: transforms (and transform identifiers, and `inverse`) up to '}'.
+Transform Interpreter::parse_transform_block() {
+    Transform result;
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return result;
+        Transform step;
+        if (try_transform(t, step)) {
+            result = result.then(step);
+        } else if (is_word(t, "inverse")) {
+            result = result.inverse();
+        } else if (t.kind == TokenKind::Word) {
+            const Value* v = lookup(t.text);
+            auto tp = v ? std::get_if<std::shared_ptr<Transform>>(v) : nullptr;
+            if (!tp) expected("a transformation or '}'", t);
+            result = result.then(**tp);
+        } else {
+            expected("a transformation or '}'", t);
+        }
+    }
+}
+
+bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
+    Transform tr;
+    if (try_transform(t, tr)) {
+        apply_transform(obj, tr);
+        return true;
+    }
+    if (t.kind != TokenKind::Word) return false;
+    std::string_view w = t.text;
+    if (w == "texture") {
+        LayeredTexture layers = parse_texture_block();
+        for (auto& l : layers) obj.texture.push_back(std::move(l));
+    } else if (w == "pigment" || w == "finish" || w == "normal") {
+        if (obj.texture.empty()) obj.texture.push_back(default_texture_);
+        Texture& top = obj.texture.back();
+        if (w == "pigment") {
+            top.pigment = parse_pigment_block();
+        } else if (w == "finish") {
+            top.finish = parse_finish_block();
+        } else {
+            top.normal = parse_normal_block();
+        }
+    } else if (w == "interior_texture") {
+        obj.interior_texture = parse_texture_block();
+    } else if (w == "interior") {
+        obj.interior = parse_interior_block();
+    } else if (w == "material") {
+        expect_punct('{', "after 'material'");
+        for (;;) {
+            Token m = next();
+            if (is_punct(m, '}')) break;
+            if (is_word(m, "texture")) {
+                LayeredTexture layers = parse_texture_block();
+                for (auto& l : layers) obj.texture.push_back(std::move(l));
+            } else if (is_word(m, "interior")) {
+                obj.interior = parse_interior_block();
+            } else if (try_transform(m, tr)) {
+                apply_transform(obj, tr);
+            } else if (m.kind == TokenKind::Word && lookup(m.text) &&
+                       std::holds_alternative<std::shared_ptr<Material>>(*lookup(m.text))) {
+                auto mat = std::get<std::shared_ptr<Material>>(*lookup(m.text));
+                for (auto l : mat->texture) obj.texture.push_back(l);
+                if (mat->interior) obj.interior = mat->interior;
+            } else {
+                expected("texture, interior or '}' in material", m);
+            }
+        }
+    } else if (w == "no_shadow") {
+        obj.no_shadow = true;
+    } else if (w == "no_image") {
+        obj.no_image = true;
+    } else if (w == "no_reflection") {
+        obj.no_reflection = true;
+    } else if (w == "hollow") {
+        obj.hollow = parse_bool_opt();
+    } else if (w == "inverse") {
+        obj.inverse = !obj.inverse;
+    } else if (w == "double_illuminate") {
+        obj.double_illuminate = true;
+    } else if (w == "sturm") {
+        if (auto torus = std::get_if<Torus>(&obj.shape)) torus->sturm = parse_bool_opt();
+        else parse_bool_opt();
+    } else if (w == "open") {
+        if (auto c = std::get_if<Cylinder>(&obj.shape)) c->open = true;
+        if (auto c = std::get_if<Cone>(&obj.shape)) c->open = true;
+    } else if (w == "clipped_by" || w == "bounded_by") {
+        expect_punct('{', "after '" + std::string(w) + "'");
+        std::vector<Object>& list = w == "clipped_by" ? obj.clipped_by : obj.bounded_by;
+        for (;;) {
+            Token o = next();
+            if (is_punct(o, '}')) break;
+            if (w == "bounded_by" && is_word(o, "clipped_by")) continue;  // bounded_by{clipped_by}
+            Object child;
+            if (!try_parse_object(o, child)) expected("an object or '}'", o);
+            list.push_back(std::move(child));
+        }
+    } else if (w == "photons" || w == "radiosity") {
+        // Photon and radiosity hints on an object do not change a render without them.
+        expect_punct('{');
+        int depth = 1;
+        while (depth > 0) {
+            Token s = next();
+            if (s.kind == TokenKind::End) expected("'}'", s);
+            if (is_punct(s, '{')) ++depth;
+            if (is_punct(s, '}')) --depth;
+        }
+    } else if (w == "split_union" || w == "cutaway_textures") {
+        parse_bool_opt();
+    } else if (w == "uv_mapping") {
+        unsupported(t, "uv_mapping");
+    } else {
+        return false;
+    }
+    return true;
+}
+
+void Interpreter::parse_object_modifiers(Object& obj) {
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return;
+        if (!try_object_modifier(obj, t)) expected("an object modifier or '}'", t);
+    }
+}
+
+bool Interpreter::try_parse_object(const Token& t, Object& out) {
+    if (t.kind != TokenKind::Word) return false;
+    std::string_view w = t.text;
+    if (is_unsupported_shape(w)) unsupported(t, w);
+    out = Object{};
+    out.loc = sources_.location(t);
+    auto open = [&] { expect_punct('{', "after '" + std::string(w) + "'"); };
+    // `sphere { ID ... }`: an object identifier first in the body copies it.
+    auto copy_identifier = [&]() -> bool {
+        const Token& p = peek();
+        if (p.kind != TokenKind::Word) return false;
+        const Value* v = lookup(p.text);
+        auto o = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr;
+        if (!o) return false;
+        next();
+        SourceLoc loc = out.loc;
+        out = **o;
+        out.loc = loc;
+        return true;
+    };
+    if (w == "sphere") {
+        open();
+        if (!copy_identifier()) {
+            Sphere s;
+            s.centre = parse_vector();
+            expect_punct(',', "between the sphere's centre and radius");
+            s.radius = parse_float();
+            out.shape = s;
+        }
+    } else if (w == "box") {
+        open();
+        if (!copy_identifier()) {
+            Box b;
+            b.corner1 = parse_vector();
+            expect_punct(',', "between the box corners");
+            b.corner2 = parse_vector();
+            out.shape = b;
+        }
+    } else if (w == "plane") {
+        open();
+        if (!copy_identifier()) {
+            Plane p;
+            Token at = peek();
+            Vector3 n = parse_vector();
+            if (length(n) < 1e-10) error(at, "degenerate plane normal");
+            p.normal = normalize(n);
+            expect_punct(',', "between the plane's normal and distance");
+            p.distance = parse_float();
+            out.shape = p;
+        }
+    } else if (w == "cylinder") {
+        open();
+        if (!copy_identifier()) {
+            Cylinder c;
+            c.base = parse_vector();
+            expect_punct(',');
+            c.cap = parse_vector();
+            expect_punct(',');
+            c.radius = parse_float();
+            out.shape = c;
+        }
+    } else if (w == "cone") {
+        open();
+        if (!copy_identifier()) {
+            Cone c;
+            c.base = parse_vector();
+            expect_punct(',');
+            c.base_radius = parse_float();
+            expect_punct(',');
+            c.cap = parse_vector();
+            expect_punct(',');
+            c.cap_radius = parse_float();
+            out.shape = c;
+        }
+    } else if (w == "torus") {
+        open();
+        if (!copy_identifier()) {
+            Torus tor;
+            tor.major = parse_float();
+            expect_punct(',');
+            tor.minor = parse_float();
+            out.shape = tor;
+        }
+    } else if (w == "disc") {
+        open();
+        if (!copy_identifier()) {
+            Disc d;
+            d.centre = parse_vector();
+            expect_punct(',');
+            d.normal = parse_vector();
+            expect_punct(',');
+            d.radius = parse_float();
+            if (accept_punct(',')) d.hole_radius = parse_float();
+            out.shape = d;
+        }
+    } else if (w == "triangle") {
+        open();
+        if (!copy_identifier()) {
+            Triangle tri;
+            for (int i = 0; i < 3; ++i) {
+                if (i) expect_punct(',');
+                tri.p[i] = parse_vector();
+            }
+            out.shape = tri;
+        }
+    } else if (w == "smooth_triangle") {
+        open();
+        if (!copy_identifier()) {
+            SmoothTriangle tri;
+            for (int i = 0; i < 3; ++i) {
+                if (i) expect_punct(',');
+                tri.p[i] = parse_vector();
+                expect_punct(',');
+                tri.n[i] = parse_vector();
+            }
+            out.shape = tri;
+        }
+    } else if (w == "polygon") {
+        open();
+        if (!copy_identifier()) {
+            Polygon poly;
+            int n = int(parse_float());
+            for (int i = 0; i < n; ++i) {
+                expect_punct(',');
+                poly.points.push_back(parse_vector());
+            }
+            out.shape = poly;
+        }
+    } else if (w == "mesh" || w == "mesh2") {
+        open();
+        if (!copy_identifier()) {
+            if (w == "mesh") parse_mesh(out);
+            else parse_mesh2(out);
+        }
+    } else if (w == "union" || w == "merge" || w == "intersection" || w == "difference") {
+        open();
+        Csg csg;
+        csg.kind = w == "union"          ? CsgKind::Union
+                   : w == "merge"        ? CsgKind::Merge
+                   : w == "intersection" ? CsgKind::Intersection
+                                         : CsgKind::Difference;
+        out.shape = Csg{};
+        for (;;) {
+            Token c = peek();
+            Object child;
+            if (c.kind == TokenKind::Word && is_word(c, "light_source")) {
+                next();
+                scene_.lights.push_back(parse_light_block());
+                continue;
+            }
+            if (c.kind == TokenKind::Word && !is_word(c, "texture") && !is_word(c, "pigment") &&
+                !is_word(c, "finish") && !is_word(c, "normal") && !is_word(c, "interior") &&
+                !is_word(c, "material")) {
+                next();
+                if (try_parse_object(c, child)) {
+                    csg.children.push_back(std::move(child));
+                    continue;
+                }
+                unget(c);
+            }
+            break;
+        }
+        out.shape = std::move(csg);
+    } else if (w == "object") {
+        open();
+        Token id = next();
+        const Value* v = id.kind == TokenKind::Word ? lookup(id.text) : nullptr;
+        if (v && std::holds_alternative<std::shared_ptr<Light>>(*v)) {
+            // object { LightId }: a light source; modifiers transform it.
+            Light l = *std::get<std::shared_ptr<Light>>(*v);
+            scene_.lights.push_back(l);
+            for (;;) {
+                Token m = next();
+                if (is_punct(m, '}')) break;
+                Transform tr;
+                if (!try_transform(m, tr)) expected("a transformation or '}'", m);
+                Light& ll = scene_.lights.back();
+                ll.location = tr.point(ll.location);
+                ll.point_at = tr.point(ll.point_at);
+            }
+            out = Object{};
+            out.shape = Csg{};  // empty: contributes nothing
+            return true;
+        }
+        auto o = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr;
+        if (!o) {
+            if (!try_parse_object(id, out)) {
+                expected("an object identifier", id);
+            }
+        } else {
+            SourceLoc loc = out.loc;
+            out = **o;
+            out.loc = loc;
+        }
+    } else {
+        return false;
+    }
+    parse_object_modifiers(out);
+    return true;
+}
+
+void Interpreter::finish_object(Object& obj) {
+    // Textures and interiors given to a CSG go to the children that have none.
+    if (auto csg = std::get_if<Csg>(&obj.shape)) {
+        for (Object& child : csg->children) {
+            if (child.texture.empty()) child.texture = obj.texture;
+            if (!child.interior && obj.interior) child.interior = obj.interior;
+            child.no_shadow |= obj.no_shadow;
+            child.no_image |= obj.no_image;
+            child.no_reflection |= obj.no_reflection;
+            child.double_illuminate |= obj.double_illuminate;
+            finish_object(child);
+        }
+    }
+    if (obj.texture.empty()) obj.texture.push_back(default_texture_);
+}
+
+void Interpreter::parse_top_level_item(const Token& t) {
+    if (is_punct(t, ';')) return;
+    if (t.kind == TokenKind::Word) {
+        std::string_view w = t.text;
+        if (w == "camera") {
+            CameraSpec spec = parse_camera_block();
+            scene_.camera = finish_camera(spec);
+            return;
+        }
+        if (w == "light_source") {
+            scene_.lights.push_back(parse_light_block());
+            return;
+        }
+        if (w == "background") {
+            expect_punct('{', "after 'background'");
+            Numeric c = parse_colour();
+            expect_punct('}', "after the background colour");
+            scene_.background = Colour(Rgb(float(c.c[0]), float(c.c[1]), float(c.c[2])),
+                                       float(c.c[3]), float(c.c[4]));
+            return;
+        }
+        if (w == "global_settings") {
+            parse_global_settings();
+            return;
+        }
+        if (w == "sky_sphere") {
+            parse_sky_sphere();
+            return;
+        }
+        if (w == "fog") {
+            parse_fog();
+            return;
+        }
+        if (w == "media" || w == "atmosphere" || w == "rainbow" || w == "photons" ||
+            w == "radiosity") {
+            unsupported(t, w);
+        }
+        Object obj;
+        if (try_parse_object(t, obj)) {
+            finish_object(obj);
+            scene_.objects.push_back(std::move(obj));
+            return;
+        }
+        const Value* v = lookup(w);
+        if (!v) error(t, "undeclared identifier '" + std::string(w) + "'");
+        error(t, "a " + std::string(type_name(*v)) + " identifier '" + std::string(w) +
+                     "' cannot stand alone here (use object { " + std::string(w) + " })");
+    }
+    expected("an object, camera, light_source or directive", t);
+}
+
+}  // namespace povwall::parser

@@ -1,0 +1,516 @@
+// Camera, lights, global settings, sky and fog, meshes, and declared non-numeric values.
+#include <cmath>
+
+#include "parser/interpreter.h"
+
+namespace povwall::parser {
+
+CameraSpec Interpreter::parse_camera_block() {
+    Token open = next();
+    if (!is_punct(open, '{')) expected("'{' after 'camera'", open);
+    CameraSpec c;
+    c.loc = sources_.location(open);
+    const Token& first = peek();
+    if (first.kind == TokenKind::Word) {
+        const Value* v = lookup(first.text);
+        if (v && std::holds_alternative<std::shared_ptr<CameraSpec>>(*v)) {
+            next();
+            c = *std::get<std::shared_ptr<CameraSpec>>(*v);
+        }
+    }
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return c;
+        Transform tr;
+        if (try_transform(t, tr)) {
+            c.transform = c.transform.then(tr);
+            continue;
+        }
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (w == "perspective") c.kind = Camera::Kind::Perspective;
+        else if (w == "orthographic") c.kind = Camera::Kind::Orthographic;
+        else if (w == "location") c.location = parse_vector();
+        else if (w == "direction") c.direction = parse_vector();
+        else if (w == "right") { c.right = parse_vector(); c.has_right = true; }
+        else if (w == "up") { c.up = parse_vector(); c.has_up = true; }
+        else if (w == "sky") c.sky = parse_vector();
+        else if (w == "look_at") { c.look_at = parse_vector(); c.has_look_at = true; }
+        else if (w == "angle") {
+            c.angle = parse_float();
+            c.has_angle = true;
+            // `angle h, v` (vertical angle) is accepted; the vertical value is ignored.
+            if (accept_punct(',')) parse_float();
+        } else if (w == "aperture" || w == "blur_samples" || w == "focal_point" ||
+                   w == "confidence" || w == "variance") {
+            unsupported(t, "focal blur");
+        } else if (w == "fisheye" || w == "ultra_wide_angle" || w == "omnimax" ||
+                   w == "panoramic" || w == "spherical" || w == "cylinder" ||
+                   w == "mesh_camera") {
+            unsupported(t, "camera " + std::string(w));
+        } else if (w == "normal") {
+            unsupported(t, "camera normal");
+        } else {
+            expected("a camera item or '}'", t);
+        }
+    }
+}
+
+// POV-Ray 3.5+ applies the camera items in a fixed order whatever the order in the file:
+// right, direction, angle, up, sky, location, look_at, then transforms.
+Camera Interpreter::finish_camera(const CameraSpec& s) {
+    Camera cam;
+    cam.kind = s.kind;
+    cam.loc = s.loc;
+    Vector3 right = s.right, direction = s.direction, up = s.up;
+    if (s.has_angle) {
+        if (s.angle >= 180 && s.kind == Camera::Kind::Perspective) {
+            throw ParseError(ParseError::Kind::Syntax, "camera angle must be below 180 degrees",
+                             "camera angle must be below 180 degrees", s.loc);
+        }
+        double len = length(right) / (2 * std::tan(s.angle * kPi / 360));
+        direction = normalize(direction) * len;
+    }
+    Point3 location = s.location;
+    if (s.has_look_at) {
+        double dl = length(direction), rl = length(right), ul = length(up);
+        // Handedness of the original frame decides the sign of `right`.
+        double handed = dot(cross(up, direction), right);
+        direction = normalize(s.look_at - location) * dl;
+        right = normalize(cross(s.sky, direction)) * rl;
+        if (handed < 0) right = -right;
+        up = normalize(cross(direction, right)) * ul;
+        if (handed < 0) up = -up;
+    }
+    if (s.kind == Camera::Kind::Orthographic && s.has_look_at &&
+        (s.has_angle || (!s.has_up && !s.has_right))) {
+        double k = length(s.look_at - location) / length(direction);
+        right = right * k;
+        up = up * k;
+    }
+    cam.location = s.transform.point(location);
+    cam.direction = s.transform.vector(direction);
+    cam.right = s.transform.vector(right);
+    cam.up = s.transform.vector(up);
+    cam.angle = s.angle;
+    return cam;
+}
+
+Light Interpreter::parse_light_block() {
+    Token open = next();
+    if (!is_punct(open, '{')) expected("'{' after 'light_source'", open);
+    Light l;
+    l.loc = sources_.location(open);
+    const Token& first = peek();
+    bool copied = false;
+    if (first.kind == TokenKind::Word) {
+        const Value* v = lookup(first.text);
+        if (v && std::holds_alternative<std::shared_ptr<Light>>(*v)) {
+            next();
+            l = *std::get<std::shared_ptr<Light>>(*v);
+            copied = true;
+        }
+    }
+    if (!copied) {
+        l.location = parse_vector();
+        accept_punct(',');
+        Colour c = parse_colour_value();
+        l.colour = c.rgb;
+    }
+    bool radius_set = false, falloff_set = false;
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) break;
+        Transform tr;
+        if (try_transform(t, tr)) {
+            l.location = tr.point(l.location);
+            l.point_at = tr.point(l.point_at);
+            if (l.area) {
+                l.area->axis1 = tr.vector(l.area->axis1);
+                l.area->axis2 = tr.vector(l.area->axis2);
+            }
+            for (Object& o : l.looks_like) apply_transform(o, tr);
+            continue;
+        }
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (w == "spotlight") l.kind = Light::Kind::Spot;
+        else if (w == "cylinder") {
+            l.kind = Light::Kind::Cylinder;
+            if (!radius_set) l.radius = 0.75;
+            if (!falloff_set) l.falloff = 1;
+        } else if (w == "parallel") l.kind = Light::Kind::Parallel;
+        else if (w == "point_at") l.point_at = parse_vector();
+        else if (w == "radius") { l.radius = parse_float(); radius_set = true; }
+        else if (w == "falloff") { l.falloff = parse_float(); falloff_set = true; }
+        else if (w == "tightness") l.tightness = parse_float();
+        else if (w == "fade_distance") l.fade_distance = parse_float();
+        else if (w == "fade_power") l.fade_power = parse_float();
+        else if (w == "shadowless") l.shadowless = true;
+        else if (w == "media_interaction") l.media_interaction = parse_bool_opt();
+        else if (w == "media_attenuation") l.media_attenuation = parse_bool_opt();
+        else if (w == "color" || w == "colour" || w == "rgb") {
+            unget(t);
+            l.colour = parse_colour_value().rgb;
+        } else if (w == "area_light") {
+            AreaLight a;
+            a.axis1 = parse_vector();
+            expect_punct(',');
+            a.axis2 = parse_vector();
+            expect_punct(',');
+            a.size1 = int(parse_float());
+            expect_punct(',');
+            a.size2 = int(parse_float());
+            l.area = a;
+        } else if (w == "adaptive" && l.area) l.area->adaptive = int(parse_float());
+        else if (w == "jitter" && l.area) l.area->jitter = true;
+        else if (w == "circular" && l.area) l.area->circular = true;
+        else if (w == "orient" && l.area) l.area->orient = true;
+        else if (w == "area_illumination") parse_bool_opt();
+        else if (w == "looks_like" || w == "projected_through") {
+            if (w == "projected_through") unsupported(t, w);
+            expect_punct('{');
+            Token o = next();
+            Object obj;
+            if (!try_parse_object(o, obj)) expected("an object", o);
+            expect_punct('}');
+            finish_object(obj);
+            obj.no_shadow = true;
+            obj.transform = obj.transform;
+            apply_transform(obj, Transform::translate(l.location));
+            l.looks_like.push_back(std::move(obj));
+        } else if (w == "photons") {
+            unsupported(t, "photons");
+        } else {
+            expected("a light_source item or '}'", t);
+        }
+    }
+    return l;
+}
+
+void Interpreter::parse_global_settings() {
+    expect_punct('{', "after 'global_settings'");
+    GlobalSettings& g = scene_.settings;
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return;
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (w == "assumed_gamma") {
+            Token at = peek();
+            if (is_word(at, "srgb")) unsupported(at, "assumed_gamma srgb");
+            g.assumed_gamma = float(parse_float());
+        } else if (w == "max_trace_level") {
+            int n = int(parse_float());
+            g.max_trace_level = std::min(256, std::max(1, n));
+        } else if (w == "adc_bailout") {
+            g.adc_bailout = float(parse_float());
+        } else if (w == "ambient_light") {
+            g.ambient_light = parse_colour_value().rgb;
+        } else if (w == "noise_generator") {
+            g.noise_generator = int(parse_float());
+        } else if (w == "max_intersections") {
+            g.max_intersections = int(parse_float());
+        } else if (w == "number_of_waves") {
+            g.number_of_waves = int(parse_float());
+        } else if (w == "irid_wavelength") {
+            g.irid_wavelength = parse_colour_value().rgb;
+        } else if (w == "charset") {
+            next();
+        } else if (w == "hf_gray_16") {
+            parse_bool_opt();
+        } else if (w == "radiosity" || w == "photons" || w == "subsurface" || w == "mm_per_unit") {
+            unsupported(t, w);
+        } else {
+            expected("a global setting or '}'", t);
+        }
+    }
+}
+
+void Interpreter::parse_sky_sphere() {
+    expect_punct('{', "after 'sky_sphere'");
+    SkySphere sky;
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) break;
+        Transform tr;
+        if (try_transform(t, tr)) {
+            sky.transform = sky.transform.then(tr);
+            continue;
+        }
+        if (is_word(t, "pigment")) {
+            sky.pigments.push_back(parse_pigment_block());
+        } else if (is_word(t, "emission")) {
+            parse_colour();
+        } else {
+            expected("a pigment or '}' in sky_sphere", t);
+        }
+    }
+    scene_.sky_sphere = std::move(sky);
+}
+
+void Interpreter::parse_fog() {
+    expect_punct('{', "after 'fog'");
+    Fog f;
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) break;
+        Transform tr;
+        if (try_transform(t, tr)) {
+            f.transform = f.transform.then(tr);
+            continue;
+        }
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (w == "fog_type") f.type = int(parse_float());
+        else if (w == "distance") f.distance = parse_float();
+        else if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" ||
+                 w == "rgbft") {
+            unget(t);
+            f.colour = parse_colour_value();
+        } else if (w == "fog_offset") f.offset = parse_float();
+        else if (w == "fog_alt") f.alt = parse_float();
+        else if (w == "up") f.up = parse_vector();
+        else if (w == "turbulence") f.turbulence = parse_vector();
+        else if (w == "turb_depth") f.turb_depth = parse_float();
+        else if (w == "octaves" || w == "omega" || w == "lambda") parse_float();
+        else expected("a fog item or '}'", t);
+    }
+    scene_.fogs.push_back(std::move(f));
+}
+
+void Interpreter::parse_mesh(Object& out) {
+    Mesh mesh;
+    std::vector<LayeredTexture> textures;
+    for (;;) {
+        const Token& p = peek();
+        bool smooth = is_word(p, "smooth_triangle");
+        if (!is_word(p, "triangle") && !smooth) break;
+        next();
+        expect_punct('{');
+        uint32_t base = uint32_t(mesh.vertices.size());
+        Mesh::Face face;
+        for (int i = 0; i < 3; ++i) {
+            if (i) expect_punct(',');
+            mesh.vertices.push_back(parse_vector());
+            face.v[i] = base + i;
+            if (smooth) {
+                expect_punct(',');
+                face.n[i] = int32_t(mesh.normals.size());
+                mesh.normals.push_back(parse_vector());
+            }
+        }
+        for (;;) {
+            Token m = next();
+            if (is_punct(m, '}')) break;
+            if (is_word(m, "texture")) {
+                mesh.textures.push_back(parse_texture_block());
+                face.texture = int32_t(mesh.textures.size()) - 1;
+            } else {
+                expected("texture or '}' in a mesh triangle", m);
+            }
+        }
+        mesh.faces.push_back(face);
+    }
+    if (accept_word("inside_vector")) {
+        mesh.inside_vector = parse_vector();
+        mesh.has_inside_vector = true;
+    }
+    out.shape = std::move(mesh);
+}
+
+void Interpreter::parse_mesh2(Object& out) {
+    Mesh mesh;
+    auto read_vectors = [&](std::vector<Vector3>& into) {
+        expect_punct('{');
+        int n = int(parse_float());
+        for (int i = 0; i < n; ++i) {
+            accept_punct(',');
+            into.push_back(parse_vector());
+        }
+        expect_punct('}');
+    };
+    std::vector<std::array<int, 3>> normal_idx;
+    std::vector<Vector3> ignored;
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) {
+            unget(t);
+            break;
+        }
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (w == "vertex_vectors") {
+            read_vectors(mesh.vertices);
+        } else if (w == "normal_vectors") {
+            read_vectors(mesh.normals);
+        } else if (w == "uv_vectors") {
+            std::vector<Vector3> uv;
+            expect_punct('{');
+            int n = int(parse_float());
+            for (int i = 0; i < n; ++i) {
+                accept_punct(',');
+                parse_numeric();
+            }
+            expect_punct('}');
+        } else if (w == "texture_list") {
+            expect_punct('{');
+            int n = int(parse_float());
+            for (int i = 0; i < n; ++i) {
+                accept_punct(',');
+                Token k = next();
+                if (!is_word(k, "texture")) expected("texture in texture_list", k);
+                mesh.textures.push_back(parse_texture_block());
+            }
+            expect_punct('}');
+        } else if (w == "face_indices") {
+            expect_punct('{');
+            int n = int(parse_float());
+            for (int i = 0; i < n; ++i) {
+                accept_punct(',');
+                Token at = peek();
+                Vector3 v = parse_vector();
+                Mesh::Face f;
+                for (int k = 0; k < 3; ++k) {
+                    if (v[k] < 0 || v[k] >= double(mesh.vertices.size())) {
+                        error(at, "mesh2 face index out of range");
+                    }
+                    f.v[k] = uint32_t(v[k]);
+                }
+                // Up to three texture indices may follow.
+                const Token& c = peek();
+                if (is_punct(c, ',')) {
+                    next();
+                    const Token& d = peek();
+                    if (d.kind == TokenKind::Number) {
+                        f.texture = int32_t(parse_float());
+                        while (is_punct(peek(), ',')) {
+                            next();
+                            if (peek().kind != TokenKind::Number) {
+                                unget(Token{TokenKind::Punct, c.file, c.offset, 1, 0, ","});
+                                break;
+                            }
+                            parse_float();
+                        }
+                    } else {
+                        unget(Token{TokenKind::Punct, c.file, c.offset, 1, 0, ","});
+                    }
+                }
+                mesh.faces.push_back(f);
+            }
+            expect_punct('}');
+        } else if (w == "normal_indices") {
+            expect_punct('{');
+            int n = int(parse_float());
+            for (int i = 0; i < n; ++i) {
+                accept_punct(',');
+                Vector3 v = parse_vector();
+                normal_idx.push_back({int(v.x), int(v.y), int(v.z)});
+            }
+            expect_punct('}');
+        } else if (w == "uv_indices") {
+            expect_punct('{');
+            int n = int(parse_float());
+            for (int i = 0; i < n; ++i) {
+                accept_punct(',');
+                parse_vector();
+            }
+            expect_punct('}');
+        } else if (w == "inside_vector") {
+            mesh.inside_vector = parse_vector();
+            mesh.has_inside_vector = true;
+        } else {
+            unget(t);
+            break;
+        }
+    }
+    // Without normal_indices, normals are indexed like the vertices.
+    for (size_t i = 0; i < mesh.faces.size(); ++i) {
+        auto& f = mesh.faces[i];
+        for (int k = 0; k < 3; ++k) {
+            if (i < normal_idx.size()) f.n[k] = normal_idx[i][k];
+            else if (!mesh.normals.empty()) f.n[k] = int32_t(f.v[k]);
+        }
+    }
+    out.shape = std::move(mesh);
+}
+
+int Interpreter::new_random_stream(int seed) {
+    streams_.push_back(std::make_unique<RandomStream>(seed));
+    return int(streams_.size()) - 1;
+}
+
+double Interpreter::draw_random(int stream, const Token& at) {
+    if (stream < 0 || stream >= int(streams_.size())) error(at, "illegal random number generator");
+    return streams_[stream]->next();
+}
+
+// Keyword-introduced values in expressions: objects, textures, pigments, arrays, ...
+Value Interpreter::parse_item_value(const Token& t) {
+    if (t.kind == TokenKind::Word) {
+        std::string_view w = t.text;
+        Object obj;
+        if (try_parse_object(t, obj)) return std::make_shared<Object>(std::move(obj));
+        if (w == "texture") return std::make_shared<LayeredTexture>(parse_texture_block());
+        if (w == "pigment") return std::make_shared<Pigment>(parse_pigment_block());
+        if (w == "finish") return std::make_shared<Finish>(parse_finish_block());
+        if (w == "normal") return std::make_shared<Normal>(parse_normal_block());
+        if (w == "interior") return std::make_shared<Interior>(parse_interior_block());
+        if (w == "camera") return std::make_shared<CameraSpec>(parse_camera_block());
+        if (w == "light_source") return std::make_shared<Light>(parse_light_block());
+        if (w == "color_map" || w == "colour_map") {
+            return std::make_shared<ColourMap>(parse_colour_map_block());
+        }
+        if (w == "transform") {
+            Transform tr;
+            try_transform(t, tr);
+            return std::make_shared<Transform>(tr);
+        }
+        if (w == "material") {
+            auto m = std::make_shared<Material>();
+            Object holder;
+            unget(t);
+            Token k = next();
+            try_object_modifier(holder, k);
+            m->texture = holder.texture;
+            m->interior = holder.interior;
+            return m;
+        }
+        if (w == "array") {
+            auto a = std::make_shared<ArrayValue>();
+            size_t total = 1;
+            while (is_punct(peek(), '[')) {
+                next();
+                Token at = peek();
+                int n = int(parse_float());
+                if (n <= 0) error(at, "array size must be positive");
+                expect_punct(']');
+                a->dims.push_back(n);
+                total *= size_t(n);
+                if (total > kMaxArrayItems) error(at, "array too large");
+            }
+            if (a->dims.empty()) expected("'[' and the array size", peek());
+            a->items.resize(total);
+            if (accept_punct('{')) {
+                // Nested braces per dimension; items are filled in row-major order.
+                size_t index = 0;
+                int depth = 1;
+                while (depth > 0) {
+                    Token e = next();
+                    if (is_punct(e, '{')) { ++depth; continue; }
+                    if (is_punct(e, '}')) { --depth; continue; }
+                    if (is_punct(e, ',')) continue;
+                    if (index >= total) error(e, "too many elements in array initializer");
+                    unget(e);
+                    a->items[index++] = parse_expression_value();
+                }
+            }
+            return a;
+        }
+        if (w == "spline" || w == "function") unsupported(t, w);
+        error(t, "undeclared identifier '" + std::string(w) + "'");
+    }
+    expected("an expression", t);
+}
+
+Value Interpreter::parse_declared_value(const Token& first) {
+    unget(first);
+    return parse_expression_value();
+}
+
+}  // namespace povwall::parser

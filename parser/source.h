@@ -1,0 +1,61 @@
+// Source files and tokens. Every token keeps its file and byte offset; line and column are
+// computed only when a diagnostic is printed.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/source_loc.h"
+
+namespace povwall::parser {
+
+enum class TokenKind : uint8_t {
+    End,        // end of the file's token list
+    Number,
+    String,     // text holds the unescaped contents
+    Word,       // identifier or keyword
+    Directive,  // '#' followed by a word: text is the word
+    Punct,      // one of { } ( ) [ ] < > , ; + - * / ? : = ! & | . and <= >= !=
+};
+
+struct Token {
+    TokenKind kind = TokenKind::End;
+    int32_t file = -1;
+    uint32_t offset = 0, length = 0;
+    double number = 0;
+    std::string_view text;  // view into the file text, or into SourceFile::strings
+};
+
+struct SourceFile {
+    std::string path;  // as it will be printed in diagnostics
+    std::string text;
+    std::vector<uint32_t> line_starts;
+    std::vector<Token> tokens;                       // always ends with an End token
+    std::vector<std::unique_ptr<std::string>> strings;  // unescaped string literals
+};
+
+class SourceManager {
+public:
+    // Takes the text, splits lines and lexes; throws ParseError on a lexical error.
+    int add(std::string path, std::string text);
+    const SourceFile& file(int index) const { return *files_[index]; }
+    int count() const { return int(files_.size()); }
+    SourceLoc location(int file, uint32_t offset) const;
+    SourceLoc location(const Token& t) const { return location(t.file, t.offset); }
+    std::string_view line_text(int file, int line) const;
+
+private:
+    std::vector<std::unique_ptr<SourceFile>> files_;
+};
+
+// "path:line:col: error: message", the source line and a caret under the token.
+std::string format_diagnostic(const SourceManager& sm, const Token& at, std::string_view severity,
+                              std::string_view message);
+std::string format_diagnostic_at(const SourceManager& sm, int file, uint32_t offset,
+                                 uint32_t length, std::string_view severity,
+                                 std::string_view message);
+
+}  // namespace povwall::parser

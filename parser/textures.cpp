@@ -1,0 +1,551 @@
+// Textures: pigments (colours and patterns), normals, finishes, interiors, colour maps.
+#include <cmath>
+
+#include "parser/interpreter.h"
+
+namespace povwall::parser {
+namespace {
+
+float srgb_to_linear(double v) {
+    double a = std::fabs(v);
+    double r = a <= 0.04045 ? a / 12.92 : std::pow((a + 0.055) / 1.055, 2.4);
+    return float(v < 0 ? -r : r);
+}
+
+struct PatternName {
+    const char* name;
+    PatternKind kind;
+};
+constexpr PatternName kPatterns[] = {
+    {"agate", PatternKind::Agate},     {"bozo", PatternKind::Bozo},
+    {"brick", PatternKind::Brick},     {"bumps", PatternKind::Bumps},
+    {"checker", PatternKind::Checker}, {"crackle", PatternKind::Crackle},
+    {"dents", PatternKind::Dents},     {"gradient", PatternKind::Gradient},
+    {"granite", PatternKind::Granite}, {"hexagon", PatternKind::Hexagon},
+    {"leopard", PatternKind::Leopard}, {"mandel", PatternKind::Mandel},
+    {"marble", PatternKind::Marble},   {"onion", PatternKind::Onion},
+    {"quilted", PatternKind::Quilted}, {"radial", PatternKind::Radial},
+    {"ripples", PatternKind::Ripples}, {"spiral1", PatternKind::Spiral1},
+    {"spiral2", PatternKind::Spiral2}, {"spotted", PatternKind::Spotted},
+    {"waves", PatternKind::Waves},     {"wood", PatternKind::Wood},
+    {"wrinkles", PatternKind::Wrinkles}, {"boxed", PatternKind::Boxed},
+    {"cylindrical", PatternKind::Cylindrical}, {"spherical", PatternKind::Spherical},
+    {"planar", PatternKind::Planar},   {"cells", PatternKind::Cells},
+};
+
+bool is_unsupported_pattern(std::string_view w) {
+    static const char* kNames[] = {"image_map", "bump_map", "material_map", "function",
+                                   "object", "slope", "aoi", "density_file", "facets",
+                                   "pavement", "tiling", "julia", "magnet", "image_pattern",
+                                   "average", "tiles", "proportion", "pigment_pattern",
+                                   "gradient_map"};
+    for (const char* n : kNames) {
+        if (w == n) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+Numeric Interpreter::parse_colour() {
+    Numeric c;
+    c.size = 5;
+    c.colour = true;
+    bool any = false;
+    if (is_word(peek(), "color") || is_word(peek(), "colour")) next();
+    auto set = [&](const Numeric& v, int count, bool srgb) {
+        Numeric p = v;
+        if (p.size == 1) {
+            for (int i = 1; i < 5; ++i) p.c[i] = p.c[0];
+        }
+        for (int i = 0; i < count; ++i) {
+            c.c[i] = (srgb && i < 3) ? srgb_to_linear(p.c[i]) : p.c[i];
+        }
+    };
+    for (;;) {
+        const Token& t = peek();
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (w == "rgb" || w == "srgb") {
+            next();
+            set(parse_numeric(), 3, w == "srgb");
+        } else if (w == "rgbf" || w == "srgbf") {
+            next();
+            set(parse_numeric(), 4, w == "srgbf");
+        } else if (w == "rgbt" || w == "srgbt") {
+            next();
+            Numeric v = parse_numeric();
+            Numeric p = v;
+            if (p.size == 1) {
+                for (int i = 1; i < 5; ++i) p.c[i] = p.c[0];
+            }
+            for (int i = 0; i < 3; ++i) c.c[i] = w == "srgbt" ? srgb_to_linear(p.c[i]) : p.c[i];
+            c.c[4] = p.c[3];
+        } else if (w == "rgbft" || w == "srgbft") {
+            next();
+            set(parse_numeric(), 5, w == "srgbft");
+        } else if (w == "red" || w == "green" || w == "blue" || w == "filter" ||
+                   w == "transmit") {
+            next();
+            int i = w == "red" ? 0 : w == "green" ? 1 : w == "blue" ? 2 : w == "filter" ? 3 : 4;
+            c.c[i] = parse_float();
+        } else if (!any && (t.kind == TokenKind::Number || is_punct(t, '<') ||
+                            is_punct(t, '(') || is_punct(t, '-') ||
+                            (t.kind == TokenKind::Word && lookup(t.text)))) {
+            Numeric v = parse_numeric();
+            if (v.size == 1) {
+                for (int i = 0; i < 5; ++i) c.c[i] = v.c[0];
+            } else {
+                for (int i = 0; i < v.size; ++i) c.c[i] = v.c[i];
+            }
+        } else {
+            break;
+        }
+        any = true;
+    }
+    if (!any) expected("a colour", peek());
+    return c;
+}
+
+Colour Interpreter::parse_colour_value() {
+    Numeric c = parse_colour();
+    return Colour(Rgb(float(c.c[0]), float(c.c[1]), float(c.c[2])), float(c.c[3]),
+                  float(c.c[4]));
+}
+
+ColourMap Interpreter::parse_colour_map_block() {
+    expect_punct('{', "after 'color_map'");
+    ColourMap map;
+    const Token& first = peek();
+    if (first.kind == TokenKind::Word) {
+        const Value* v = lookup(first.text);
+        if (v && std::holds_alternative<std::shared_ptr<ColourMap>>(*v)) {
+            next();
+            map = *std::get<std::shared_ptr<ColourMap>>(*v);
+        }
+    }
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) break;
+        if (!is_punct(t, '[')) expected("'[' or '}' in a color_map", t);
+        float v1 = float(parse_float());
+        accept_punct(',');
+        // Old two-value form: [v1, v2 color A color B]
+        if (!is_word(peek(), "color") && !is_word(peek(), "colour") &&
+            !is_word(peek(), "rgb") && !is_word(peek(), "rgbf") && !is_word(peek(), "rgbt") &&
+            !is_word(peek(), "rgbft") && peek().kind == TokenKind::Number) {
+            float v2 = float(parse_float());
+            Colour a = parse_colour_value();
+            Colour b = parse_colour_value();
+            map.push_back({v1, a});
+            map.push_back({v2, b});
+        } else {
+            map.push_back({v1, parse_colour_value()});
+        }
+        expect_punct(']', "to close the color_map entry");
+    }
+    return map;
+}
+
+bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
+    if (t.kind != TokenKind::Word) return false;
+    std::string_view w = t.text;
+    if (is_unsupported_pattern(w)) unsupported(t, w);
+    for (const auto& p : kPatterns) {
+        if (w != p.name) continue;
+        spec.kind = p.kind;
+        switch (p.kind) {
+            case PatternKind::Gradient: spec.vector = parse_vector(); break;
+            case PatternKind::Agate: break;
+            case PatternKind::Spiral1:
+            case PatternKind::Spiral2: spec.scalar = parse_float(); break;
+            case PatternKind::Mandel: spec.scalar = parse_float(); break;
+            case PatternKind::Quilted: spec.vector = {0, 1, 0}; break;  // control0/1 defaults
+            default: break;
+        }
+        return true;
+    }
+    return false;
+}
+
+bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
+    if (t.kind != TokenKind::Word) return false;
+    std::string_view w = t.text;
+    Transform tr;
+    if (try_transform(t, tr)) {
+        spec.transform = spec.transform.then(tr);
+        return true;
+    }
+    auto turbulence_warp = [&]() -> Warp& {
+        // Classic turbulence keywords edit the pattern's turbulence warp (created on demand).
+        for (Warp& wp : spec.warps) {
+            if (wp.kind == Warp::Kind::Turbulence && wp.transform.is_identity()) return wp;
+        }
+        spec.warps.push_back(Warp{});
+        return spec.warps.back();
+    };
+    if (w == "turbulence") {
+        turbulence_warp().turbulence = parse_vector();
+    } else if (w == "octaves") {
+        turbulence_warp().octaves = int(parse_float());
+    } else if (w == "omega") {
+        turbulence_warp().omega = parse_float();
+    } else if (w == "lambda") {
+        turbulence_warp().lambda = parse_float();
+    } else if (w == "frequency") {
+        spec.frequency = parse_float();
+    } else if (w == "phase") {
+        spec.phase = parse_float();
+    } else if (w == "ramp_wave") {
+        spec.wave = WaveType::Ramp;
+    } else if (w == "triangle_wave") {
+        spec.wave = WaveType::Triangle;
+    } else if (w == "sine_wave") {
+        spec.wave = WaveType::Sine;
+    } else if (w == "scallop_wave") {
+        spec.wave = WaveType::Scallop;
+    } else if (w == "cubic_wave") {
+        spec.wave = WaveType::Cubic;
+    } else if (w == "poly_wave") {
+        spec.wave = WaveType::Poly;
+        const Token& n = peek();
+        if (n.kind == TokenKind::Number || is_punct(n, '(')) spec.wave_exponent = parse_float();
+    } else if (w == "noise_generator") {
+        spec.noise_generator = int(parse_float());
+    } else if (w == "agate_turb") {
+        spec.scalar = parse_float();
+    } else if (w == "mortar") {
+        spec.scalar = parse_float();
+    } else if (w == "brick_size") {
+        spec.vector2 = parse_vector();
+    } else if (w == "control0") {
+        spec.vector.x = parse_float();
+    } else if (w == "control1") {
+        spec.vector.y = parse_float();
+    } else if (w == "warp") {
+        expect_punct('{', "after 'warp'");
+        Warp wp;
+        Token k = next();
+        if (is_word(k, "turbulence")) {
+            wp.kind = Warp::Kind::Turbulence;
+            wp.turbulence = parse_vector();
+        } else if (is_word(k, "repeat")) {
+            wp.kind = Warp::Kind::Repeat;
+            wp.repeat = parse_vector();
+        } else {
+            unsupported(k, "warp " + std::string(k.text));
+        }
+        for (;;) {
+            Token m = next();
+            if (is_punct(m, '}')) break;
+            if (is_word(m, "octaves")) wp.octaves = int(parse_float());
+            else if (is_word(m, "omega")) wp.omega = parse_float();
+            else if (is_word(m, "lambda")) wp.lambda = parse_float();
+            else if (is_word(m, "offset")) wp.offset = parse_vector();
+            else if (is_word(m, "flip")) wp.flip = parse_vector();
+            else expected("a warp modifier or '}'", m);
+        }
+        spec.warps.push_back(wp);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+Pigment Interpreter::parse_pigment_block() {
+    expect_punct('{', "after 'pigment'");
+    Pigment p = default_texture_.pigment;
+    const Token& first = peek();
+    if (first.kind == TokenKind::Word) {
+        const Value* v = lookup(first.text);
+        if (v && std::holds_alternative<std::shared_ptr<Pigment>>(*v)) {
+            next();
+            p = *std::get<std::shared_ptr<Pigment>>(*v);
+        }
+    }
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return p;
+        if (try_pattern_keyword(t, p.pattern)) {
+            // checker/hexagon/brick take their colours or pigments right after the keyword
+            if (p.pattern.kind == PatternKind::Checker || p.pattern.kind == PatternKind::Hexagon ||
+                p.pattern.kind == PatternKind::Brick) {
+                int count = p.pattern.kind == PatternKind::Hexagon ? 3 : 2;
+                for (int i = 0; i < count; ++i) {
+                    if (i) accept_punct(',');
+                    const Token& n = peek();
+                    if (is_word(n, "pigment")) {
+                        next();
+                        p.list.push_back(parse_pigment_block());
+                    } else if (is_punct(n, '}') || (n.kind == TokenKind::Word &&
+                                                    !lookup(n.text) && !is_word(n, "color") &&
+                                                    !is_word(n, "colour") && !is_word(n, "rgb") &&
+                                                    !is_word(n, "rgbf") && !is_word(n, "rgbt") &&
+                                                    !is_word(n, "rgbft"))) {
+                        break;
+                    } else {
+                        Pigment sub;
+                        sub.colour = parse_colour_value();
+                        p.list.push_back(sub);
+                    }
+                }
+            }
+            continue;
+        }
+        if (try_pattern_modifier(t, p.pattern)) continue;
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" ||
+            w == "rgbft" || w == "srgb" || w == "srgbf" || w == "srgbt" || w == "srgbft" ||
+            w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") {
+            unget(t);
+            p.pattern.kind = PatternKind::Solid;
+            p.colour = parse_colour_value();
+        } else if (w == "color_map" || w == "colour_map") {
+            p.colour_map = parse_colour_map_block();
+        } else if (w == "pigment_map") {
+            expect_punct('{', "after 'pigment_map'");
+            for (;;) {
+                Token e = next();
+                if (is_punct(e, '}')) break;
+                if (!is_punct(e, '[')) expected("'[' in a pigment_map", e);
+                float v = float(parse_float());
+                accept_punct(',');
+                Token k = next();
+                Pigment sub;
+                if (is_word(k, "pigment")) {
+                    sub = parse_pigment_block();
+                } else {
+                    const Value* pv = k.kind == TokenKind::Word ? lookup(k.text) : nullptr;
+                    if (!pv || !std::holds_alternative<std::shared_ptr<Pigment>>(*pv)) {
+                        expected("a pigment in the pigment_map", k);
+                    }
+                    sub = *std::get<std::shared_ptr<Pigment>>(*pv);
+                }
+                expect_punct(']');
+                p.map_values.push_back(v);
+                p.list.push_back(std::move(sub));
+            }
+        } else if (w == "quick_color" || w == "quick_colour") {
+            p.quick_colour = parse_colour_value();
+        } else if (t.kind == TokenKind::Word && lookup(w) &&
+                   std::holds_alternative<Numeric>(*lookup(w))) {
+            // A colour identifier alone: pigment { Red }
+            unget(t);
+            p.pattern.kind = PatternKind::Solid;
+            p.colour = parse_colour_value();
+        } else {
+            expected("a pigment item or '}'", t);
+        }
+    }
+}
+
+Normal Interpreter::parse_normal_block() {
+    expect_punct('{', "after 'normal'");
+    Normal n;
+    if (default_texture_.normal) n = *default_texture_.normal;
+    const Token& first = peek();
+    if (first.kind == TokenKind::Word) {
+        const Value* v = lookup(first.text);
+        if (v && std::holds_alternative<std::shared_ptr<Normal>>(*v)) {
+            next();
+            n = *std::get<std::shared_ptr<Normal>>(*v);
+        }
+    }
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return n;
+        if (try_pattern_keyword(t, n.pattern)) {
+            const Token& a = peek();
+            if (a.kind == TokenKind::Number || is_punct(a, '(') || is_punct(a, '-')) {
+                n.amount = parse_float();
+            }
+            continue;
+        }
+        if (try_pattern_modifier(t, n.pattern)) continue;
+        if (is_word(t, "bump_size")) {
+            n.amount = parse_float();
+        } else if (is_word(t, "accuracy")) {
+            n.accuracy = parse_float();
+        } else if (is_word(t, "normal_map") || is_word(t, "slope_map")) {
+            unsupported(t, t.text);
+        } else {
+            expected("a normal item or '}'", t);
+        }
+    }
+}
+
+Finish Interpreter::parse_finish_block() {
+    expect_punct('{', "after 'finish'");
+    Finish f = default_texture_.finish;
+    const Token& first = peek();
+    if (first.kind == TokenKind::Word) {
+        const Value* v = lookup(first.text);
+        if (v && std::holds_alternative<std::shared_ptr<Finish>>(*v)) {
+            next();
+            f = *std::get<std::shared_ptr<Finish>>(*v);
+        }
+    }
+    auto rgb_of = [](const Numeric& n) {
+        if (n.size == 1) return Rgb(float(n.c[0]));
+        return Rgb(float(n.c[0]), float(n.c[1]), float(n.c[2]));
+    };
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return f;
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (w == "ambient") {
+            f.ambient = rgb_of(parse_colour());
+        } else if (w == "emission") {
+            f.emission = rgb_of(parse_colour());
+        } else if (w == "diffuse") {
+            bool albedo = accept_word("albedo");
+            f.diffuse = float(parse_float());
+            if (accept_punct(',')) parse_float();  // diffuse back: not modelled
+            if (albedo) f.diffuse *= (f.brilliance + 1) / 2;
+        } else if (w == "brilliance") {
+            f.brilliance = float(parse_float());
+        } else if (w == "crand") {
+            f.crand = float(parse_float());
+        } else if (w == "phong") {
+            bool albedo = accept_word("albedo");
+            f.phong = float(parse_float());
+            if (albedo) f.phong *= (f.phong_size + 1) / 2;
+        } else if (w == "phong_size") {
+            f.phong_size = float(parse_float());
+        } else if (w == "specular") {
+            accept_word("albedo");
+            f.specular = float(parse_float());
+        } else if (w == "roughness") {
+            f.roughness = float(parse_float());
+        } else if (w == "metallic") {
+            const Token& n = peek();
+            f.metallic = (n.kind == TokenKind::Number || is_punct(n, '(')) ? float(parse_float())
+                                                                           : 1.0f;
+        } else if (w == "reflection") {
+            if (accept_punct('{')) {
+                Rgb a = rgb_of(parse_colour());
+                Rgb b = a;
+                bool two = false;
+                if (accept_punct(',')) {
+                    b = rgb_of(parse_colour());
+                    two = true;
+                }
+                f.reflection_min = a;
+                f.reflection_max = b;
+                for (;;) {
+                    Token m = next();
+                    if (is_punct(m, '}')) break;
+                    if (is_word(m, "fresnel")) {
+                        f.reflection_fresnel = parse_bool_opt();
+                    } else if (is_word(m, "falloff")) {
+                        f.reflection_falloff = float(parse_float());
+                    } else if (is_word(m, "exponent")) {
+                        f.reflection_exponent = float(parse_float());
+                    } else if (is_word(m, "metallic")) {
+                        f.reflection_metallic = float(parse_float());
+                    } else {
+                        expected("a reflection item or '}'", m);
+                    }
+                }
+                if (f.reflection_fresnel && !two) f.reflection_min = Rgb(0.0f);
+            } else {
+                Rgb c = rgb_of(parse_colour());
+                f.reflection_min = c;
+                f.reflection_max = c;
+            }
+        } else if (w == "reflection_exponent") {
+            f.reflection_exponent = float(parse_float());
+        } else if (w == "conserve_energy") {
+            f.conserve_energy = parse_bool_opt();
+        } else if (w == "irid") {
+            expect_punct('{');
+            f.irid = float(parse_float());
+            for (;;) {
+                Token m = next();
+                if (is_punct(m, '}')) break;
+                if (is_word(m, "thickness")) f.irid_thickness = float(parse_float());
+                else if (is_word(m, "turbulence")) f.irid_turbulence = float(parse_float());
+                else expected("an irid item or '}'", m);
+            }
+        } else if (w == "refraction" || w == "ior" || w == "caustics" || w == "fade_distance" ||
+                   w == "fade_power") {
+            unsupported(t, "finish " + std::string(w) + " (use interior)");
+        } else if (w == "subsurface") {
+            unsupported(t, "subsurface");
+        } else {
+            expected("a finish item or '}'", t);
+        }
+    }
+}
+
+Interior Interpreter::parse_interior_block() {
+    expect_punct('{', "after 'interior'");
+    Interior in;
+    const Token& first = peek();
+    if (first.kind == TokenKind::Word) {
+        const Value* v = lookup(first.text);
+        if (v && std::holds_alternative<std::shared_ptr<Interior>>(*v)) {
+            next();
+            in = *std::get<std::shared_ptr<Interior>>(*v);
+        }
+    }
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return in;
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (w == "ior") in.ior = float(parse_float());
+        else if (w == "caustics") in.caustics = float(parse_float());
+        else if (w == "dispersion") in.dispersion = float(parse_float());
+        else if (w == "dispersion_samples") in.dispersion_samples = int(parse_float());
+        else if (w == "fade_distance") in.fade_distance = float(parse_float());
+        else if (w == "fade_power") in.fade_power = float(parse_float());
+        else if (w == "fade_color" || w == "fade_colour") {
+            Colour c = parse_colour_value();
+            in.fade_colour = c.rgb;
+        } else if (w == "media") {
+            unsupported(t, "media");
+        } else {
+            expected("an interior item or '}'", t);
+        }
+    }
+}
+
+LayeredTexture Interpreter::parse_texture_block() {
+    expect_punct('{', "after 'texture'");
+    LayeredTexture layers;
+    const Token& first = peek();
+    if (first.kind == TokenKind::Word) {
+        const Value* v = lookup(first.text);
+        if (v && std::holds_alternative<std::shared_ptr<LayeredTexture>>(*v)) {
+            next();
+            layers = *std::get<std::shared_ptr<LayeredTexture>>(*v);
+        }
+    }
+    if (layers.empty()) layers.push_back(default_texture_);
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return layers;
+        Transform tr;
+        if (try_transform(t, tr)) {
+            transform_textures(layers, tr);
+            continue;
+        }
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (w == "pigment") {
+            layers.back().pigment = parse_pigment_block();
+        } else if (w == "finish") {
+            layers.back().finish = parse_finish_block();
+        } else if (w == "normal") {
+            layers.back().normal = parse_normal_block();
+        } else if (w == "texture_map" || w == "material_map" || w == "tiles") {
+            unsupported(t, w);
+        } else {
+            PatternSpec probe;
+            if (t.kind == TokenKind::Word && (try_pattern_keyword(t, probe))) {
+                unsupported(t, "patterned texture (texture_map)");
+            }
+            expected("a texture item or '}'", t);
+        }
+    }
+}
+
+}  // namespace povwall::parser

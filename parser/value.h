@@ -1,0 +1,75 @@
+// Values of the scene language: what identifiers hold and expressions produce.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/scene.h"
+
+namespace povwall::parser {
+
+// Floats, vectors (2-5 components) and colours share one representation, as in POV-Ray,
+// where a colour is a 5-component vector (r, g, b, filter, transmit).
+struct Numeric {
+    int size = 1;  // 1 float, 2..5 vector
+    bool colour = false;
+    double c[5] = {0, 0, 0, 0, 0};
+
+    static Numeric scalar(double v) { Numeric n; n.c[0] = v; return n; }
+    static Numeric vector(const Vector3& v) {
+        Numeric n;
+        n.size = 3;
+        n.c[0] = v.x; n.c[1] = v.y; n.c[2] = v.z;
+        return n;
+    }
+    Vector3 vec3() const {
+        if (size == 1) return Vector3(c[0]);
+        return {c[0], c[1], size > 2 ? c[2] : 0.0};
+    }
+};
+
+struct Macro;
+struct ArrayValue;
+struct CameraSpec;
+struct Material {
+    LayeredTexture texture;
+    std::optional<Interior> interior;
+};
+
+using Value = std::variant<std::monostate, Numeric, std::string, std::shared_ptr<Object>,
+                           std::shared_ptr<LayeredTexture>, std::shared_ptr<Pigment>,
+                           std::shared_ptr<Finish>, std::shared_ptr<Normal>,
+                           std::shared_ptr<Interior>, std::shared_ptr<CameraSpec>,
+                           std::shared_ptr<Light>, std::shared_ptr<ArrayValue>,
+                           std::shared_ptr<Transform>, std::shared_ptr<Macro>,
+                           std::shared_ptr<Material>, std::shared_ptr<ColourMap>>;
+
+struct ArrayValue {
+    std::vector<int> dims;
+    std::vector<Value> items;  // row-major; monostate = not yet assigned
+};
+
+struct Macro {
+    std::string name;
+    int file;
+    size_t body_begin, body_end;  // token indices in that file; body_end is the #end
+    std::vector<std::string> params;
+    std::vector<bool> optional_params;
+};
+
+// Camera as written: kept raw so that `camera { ID modifiers }` can be re-evaluated.
+struct CameraSpec {
+    Camera::Kind kind = Camera::Kind::Perspective;
+    Vector3 location{0, 0, 0}, direction{0, 0, 1}, right{1.33, 0, 0}, up{0, 1, 0};
+    Vector3 sky{0, 1, 0}, look_at{0, 0, 1};
+    bool has_look_at = false, has_angle = false, has_up = false, has_right = false;
+    double angle = 90;
+    Transform transform;
+    SourceLoc loc;
+};
+
+const char* type_name(const Value& v);
+
+}  // namespace povwall::parser

@@ -1,0 +1,47 @@
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "distrib/parent_table.h"
+#include "distrib/work_queue.h"
+
+namespace povwall::distrib {
+namespace {
+
+TEST(ParentTable, ReleasesParentAfterLastChild) {
+    ParentTable<std::string> t;
+    t.park(10, "p", 3);
+    t.park(11, "q", 1);
+    EXPECT_EQ(t.peak(), 2u);
+    EXPECT_FALSE(t.deliver(10, [](std::string& r) { r += "a"; }));
+    EXPECT_FALSE(t.deliver(10, [](std::string& r) { r += "b"; }));
+    auto done = t.deliver(10, [](std::string& r) { r += "c"; });
+    ASSERT_TRUE(done);
+    EXPECT_EQ(*done, "pabc");
+    EXPECT_EQ(t.size(), 1u);
+    EXPECT_FALSE(t.deliver(10, [](std::string&) {}));  // duplicate: refused, counted
+    EXPECT_EQ(t.stray_results(), 1u);
+}
+
+TEST(WorkQueue, ResultsFirstThenDeeperRaysThenArrivalOrder) {
+    WorkQueue<std::string> q;
+    q.push("ray d1 a", false, 1);
+    q.push("ray d3", false, 3);
+    q.push("ray d1 b", false, 1);
+    q.push("result d1", true, 1);
+    q.push("result d2", true, 2);
+    std::vector<std::string> order;
+    while (!q.empty()) order.push_back(q.pop());
+    EXPECT_EQ(order, (std::vector<std::string>{"result d2", "result d1", "ray d3", "ray d1 a",
+                                               "ray d1 b"}));
+}
+
+TEST(WorkQueue, FifoPolicyKeepsArrivalOrder) {
+    WorkQueue<int> q(QueuePolicy::Fifo);
+    for (int i = 0; i < 5; ++i) q.push(i, i % 2 == 0, i);
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(q.pop(), i);
+    EXPECT_EQ(q.peak(), 5u);
+}
+
+}  // namespace
+}  // namespace povwall::distrib

@@ -1,0 +1,245 @@
+#include "parser/parser.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace povwall::parser {
+namespace {
+
+Scene parse(const std::string& text, std::string* debug = nullptr) {
+    std::ostringstream messages;
+    ParseOptions o;
+    o.messages = &messages;
+    Scene s = parse_scene_text(text, "test.pov", o);
+    if (debug) *debug = messages.str();
+    return s;
+}
+
+std::string error_of(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const ParseError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST(Random, MatchesPovRay37Sequence) {
+    // Reference values printed by POV-Ray 3.7.0.10 for the same #debug lines
+    // (povray +Ir.pov -D -F; see tests/parser/README.md).
+    std::string out;
+    parse(R"(
+#declare S = seed(0);
+#declare T = seed(-7);
+#declare U = seed(123456789);
+#debug concat(str(rand(S),0,10), " ", str(rand(S),0,10), " ", str(rand(S),0,10), "\n")
+#debug concat(str(rand(T),0,10), " ", str(rand(T),0,10), "\n")
+#debug concat(str(rand(U),0,10), " ", str(rand(U),0,10), "\n")
+#declare V = seed(5.9);
+#debug concat(str(rand(V),0,10), "\n")
+)",
+          &out);
+    EXPECT_EQ(out,
+              "0.0000028743 0.4665636845 0.2490702288\n"
+              "0.0460728682 0.3226610886\n"
+              "0.4982198781 0.0969679065\n"
+              "0.1099528787\n");
+}
+
+TEST(Random, IllegalStreamIsLocatedError) {
+    EXPECT_EQ(error_of("#declare A = rand(3);"),
+              "test.pov:1:19: error: illegal random number generator\n"
+              "#declare A = rand(3);\n"
+              "                  ^");
+}
+
+TEST(Directives, WhileLoopBuildsObjects) {
+    Scene s = parse(R"(
+#declare I = 0;
+#while (I < 5)
+  sphere { <I, 0, 0>, 0.5 }
+  #declare I = I + 1;
+#end
+)");
+    ASSERT_EQ(s.objects.size(), 5u);
+    EXPECT_EQ(std::get<Sphere>(s.objects[4].shape).centre, (Vector3{4, 0, 0}));
+}
+
+TEST(Directives, IfElseifElseAndNesting) {
+    Scene s = parse(R"(
+#declare A = 2;
+#if (A = 1) sphere { 0, 1 }
+#elseif (A = 2)
+  #if (A > 5) box { 0, 1 } #else sphere { 0, 2 } #end
+#else sphere { 0, 3 }
+#end
+)");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).radius, 2);
+}
+
+TEST(Directives, ForSwitchAndIfdef) {
+    std::string out;
+    parse(R"(
+#for (I, 1, 7, 2)
+  #switch (I)
+    #case (1) #debug "one " #break
+    #range (2, 5) #debug "mid " #break
+    #else #debug "other "
+  #end
+#end
+#ifdef (I) #debug "defined" #end
+#ifndef (Nope) #debug "!" #end
+)",
+          &out);
+    EXPECT_EQ(out, "one mid mid other defined!");
+}
+
+TEST(Directives, MacroParametersAreByReferenceAndLocalsScoped) {
+    std::string out;
+    parse(R"(
+#macro Bump(V, Amount)
+  #local Tmp = V + Amount;
+  #declare V = Tmp;
+#end
+#macro Twice(X) (2 * X) #end
+#declare Count = 1;
+Bump(Count, 4)
+#declare Y = Twice(Count) + 1;
+#debug concat(str(Count, 0, 0), " ", str(Y, 0, 0))
+#ifndef (Tmp) #debug " no-leak" #end
+)",
+          &out);
+    EXPECT_EQ(out, "5 11 no-leak");
+}
+
+TEST(Directives, DirectivesInsideObjectsAndDeclares) {
+    Scene s = parse(R"(
+#declare Fancy = 1;
+#declare O = #if (Fancy) sphere { 0, 1 #if (Fancy) translate x #end } #else box { 0, 1 } #end
+object { O }
+)");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.objects[0].transform.point({0, 0, 0}), (Vector3{1, 0, 0}));
+}
+
+TEST(Expressions, OperatorsFunctionsAndMembers) {
+    std::string out;
+    parse(R"(
+#declare V = <1, 2, 3> * 2 - <0, 0, 1>;
+#declare C = rgb <0.5, 0.25, 1> filter 0.5;
+#debug concat(str(V.x, 0, 1), ",", str(V.y, 0, 1), ",", str(V.z, 0, 1))
+#debug concat(" ", str(vlength(<3, 4, 0>), 0, 1), " ", str(C.filter, 0, 2))
+#debug concat(" ", str(mod(7, 3), 0, 0), " ", str(pow(2, 10), 0, 0), " ", str(int(-2.7), 0, 0))
+#debug concat(" ", str((1 < 2 ? 10 : 20), 0, 0), " ", str(select(-1, 4, 5), 0, 0))
+#debug concat(" ", strupr("ab"), substr("hello", 2, 3), str(strlen("four"), 0, 0))
+#declare A = array[3] {1, 4, 9}
+#debug concat(" ", str(A[2], 0, 0), " ", str(dimension_size(A, 1), 0, 0))
+)",
+          &out);
+    EXPECT_EQ(out, "2.0,4.0,5.0 5.0 0.50 1 1024 -2 10 4 ABell4 9 3");
+}
+
+TEST(Colours, ColorsIncAndColourForms) {
+    ParseOptions o;
+    Scene s = parse_scene_text(R"(
+#include "colors.inc"
+background { color Red }
+sphere { 0, 1 pigment { color red 0.5 green 0.25 } }
+sphere { 0, 1 pigment { rgbt <0.1, 0.2, 0.3, 0.4> } }
+)",
+                               "test.pov", o);
+    EXPECT_EQ(s.background.rgb, (Rgb{1, 0, 0}));
+    EXPECT_EQ(s.objects[0].texture[0].pigment.colour.rgb, (Rgb{0.5f, 0.25f, 0}));
+    EXPECT_FLOAT_EQ(s.objects[1].texture[0].pigment.colour.transmit, 0.4f);
+}
+
+TEST(Camera, LookAtAngleAndDefaults) {
+    Scene d = parse("sphere { 0, 1 }");
+    EXPECT_EQ(d.camera.right, (Vector3{1.33, 0, 0}));
+    EXPECT_EQ(d.camera.direction, (Vector3{0, 0, 1}));
+    Scene s = parse("camera { location <0, 0, -5> look_at <0, 0, 0> angle 90 }");
+    // |direction| = |right| / (2 tan(45 deg)) = 0.665
+    EXPECT_NEAR(s.camera.direction.z, 0.665, 1e-12);
+    EXPECT_NEAR(s.camera.right.x, 1.33, 1e-12);
+    EXPECT_NEAR(s.camera.up.y, 1.0, 1e-12);
+    Scene t = parse("camera { location <0, 0, -5> look_at <5, 0, -5> }");
+    EXPECT_NEAR(t.camera.direction.x, 1.0, 1e-12);
+    EXPECT_NEAR(t.camera.right.z, -1.33, 1e-12);  // left-handed: right = sky x direction
+}
+
+TEST(Textures, ObjectTransformsMoveTexturesAndCsgPushesTextureDown) {
+    Scene s = parse(R"(
+sphere { 0, 1 pigment { checker } scale 2 }
+union { sphere { 0, 1 } sphere { x, 1 pigment { rgb 1 } } pigment { rgb <1, 0, 0> } }
+)");
+    const PatternSpec& p = s.objects[0].texture[0].pigment.pattern;
+    EXPECT_EQ(p.kind, PatternKind::Checker);
+    EXPECT_EQ(p.transform.point({1, 1, 1}), (Vector3{2, 2, 2}));
+    const Csg& u = std::get<Csg>(s.objects[1].shape);
+    EXPECT_EQ(u.children[0].texture.back().pigment.colour.rgb, (Rgb{1, 0, 0}));
+    EXPECT_EQ(u.children[1].texture.back().pigment.colour.rgb, (Rgb{1, 1, 1}));
+}
+
+TEST(Settings, VersionAndGlobalSettings) {
+    Scene s = parse("#version 3.7;\nglobal_settings { assumed_gamma 1.0 max_trace_level 300 }");
+    EXPECT_EQ(s.language_version, 370);
+    EXPECT_TRUE(s.gamma_handling());
+    EXPECT_EQ(s.settings.max_trace_level, 256);
+    Scene legacy = parse("sphere { 0, 1 }");
+    EXPECT_EQ(legacy.language_version, 362);
+    EXPECT_FALSE(legacy.gamma_handling());
+}
+
+TEST(Errors, ExactLocationsAndCarets) {
+    EXPECT_EQ(error_of("sphere { 0, 1\n  pigment { colr Red }\n}"),
+              "test.pov:2:13: error: expected a pigment item or '}' but found 'colr'\n"
+              "  pigment { colr Red }\n"
+              "            ^~~~");
+    EXPECT_EQ(error_of("sphere { <0, 0, 0> 1 }"),
+              "test.pov:1:20: error: expected ',' between the sphere's centre and radius but "
+              "found '1'\n"
+              "sphere { <0, 0, 0> 1 }\n"
+              "                   ^");
+    EXPECT_EQ(error_of("#declare X = Undefined_Thing + 1;"),
+              "test.pov:1:14: error: undeclared identifier 'Undefined_Thing'\n"
+              "#declare X = Undefined_Thing + 1;\n"
+              "             ^~~~~~~~~~~~~~~");
+    EXPECT_EQ(error_of("#include \"no_such_file.inc\""),
+              "test.pov:1:10: error: cannot find include file \"no_such_file.inc\"\n"
+              "#include \"no_such_file.inc\"\n"
+              "         ^~~~~~~~~~~~~~~~~~");
+    EXPECT_EQ(error_of("#while (1)\nsphere { 0, 1 }"),
+              "test.pov:1:1: error: #while has no matching #end\n"
+              "#while (1)\n"
+              "^~~~~~");
+    EXPECT_EQ(error_of("\tbox { 0, 1 } @"),
+              "test.pov:1:15: error: unexpected character '@'\n"
+              "        box { 0, 1 } @\n"
+              "                     ^");
+}
+
+TEST(Errors, InsideMacroPointsAtCallSite) {
+    EXPECT_EQ(error_of("#macro M()\n  sphere { 0 }\n#end\nM()"),
+              "test.pov:2:14: error: expected ',' between the sphere's centre and radius but "
+              "found '}'\n"
+              "  sphere { 0 }\n"
+              "             ^\n"
+              "test.pov:4:1: note: in macro 'M' called from here\n"
+              "M()\n"
+              "^");
+}
+
+TEST(Errors, UnsupportedFeatureIsNamed) {
+    try {
+        parse("text { ttf \"a.ttf\" \"x\" 1, 0 }");
+        FAIL();
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.kind(), ParseError::Kind::Unsupported);
+        EXPECT_EQ(e.message(), "unsupported: text");
+    }
+}
+
+}  // namespace
+}  // namespace povwall::parser

@@ -1,0 +1,586 @@
+#include "trace/prepared_scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "trace/intersect.h"
+
+namespace povwall::trace {
+namespace {
+
+struct WorldCrossing {
+    Real t;
+    Vector3 normal;
+    const Object* leaf;
+};
+
+bool pigment_opaque(const Pigment& p) {
+    if (p.colour.filter != 0 || p.colour.transmit != 0) {
+        if (p.pattern.kind == PatternKind::Solid) return false;
+    }
+    for (const auto& e : p.colour_map) {
+        if (e.colour.filter != 0 || e.colour.transmit != 0) return false;
+    }
+    for (const auto& sub : p.list) {
+        if (!pigment_opaque(sub)) return false;
+    }
+    return true;
+}
+
+bool texture_opaque(const LayeredTexture& layers) {
+    for (const Texture& t : layers) {
+        if (!pigment_opaque(t.pigment)) return false;
+        for (const auto& e : t.map) {
+            if (!texture_opaque(e)) return false;
+        }
+    }
+    return true;
+}
+
+// Leaf shape crossings along a world ray, in world distances, with outward world normals.
+void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out) {
+    Ray local = o.transform.is_identity() ? ray : o.transform.inverse_ray(ray);
+    Real len = length(local.direction);
+    if (!(len > 0)) return;
+    Vector3 dn = local.direction / len;
+    Crossings cs;
+    std::visit(
+        [&](const auto& s) {
+            using T = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<T, Sphere>) intersect_sphere(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Box>) intersect_box(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Plane>) intersect_plane(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Cylinder>)
+                intersect_cylinder(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Cone>) intersect_cone(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Torus>) intersect_torus(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Disc>) intersect_disc(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Triangle>)
+                intersect_triangle(s.p, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, SmoothTriangle>)
+                intersect_triangle(s.p, local.origin, dn, cs);
+        },
+        o.shape);
+    for (int i = 0; i < cs.n; ++i) {
+        Point3 p = local.origin + dn * cs.c[i].t;
+        Vector3 n;
+        std::visit(
+            [&](const auto& s) {
+                using T = std::decay_t<decltype(s)>;
+                if constexpr (std::is_same_v<T, Sphere>) n = sphere_normal(s, p);
+                else if constexpr (std::is_same_v<T, Box>) n = box_normal(s, cs.c[i].face);
+                else if constexpr (std::is_same_v<T, Plane>) n = s.normal;
+                else if constexpr (std::is_same_v<T, Cylinder>) n = cylinder_normal(s, p, cs.c[i].face);
+                else if constexpr (std::is_same_v<T, Cone>) n = cone_normal(s, p, cs.c[i].face);
+                else if constexpr (std::is_same_v<T, Torus>) n = torus_normal(s, p);
+                else if constexpr (std::is_same_v<T, Disc>) n = s.normal;
+                else if constexpr (std::is_same_v<T, Triangle>)
+                    n = cross(s.p[1] - s.p[0], s.p[2] - s.p[0]);
+                else if constexpr (std::is_same_v<T, SmoothTriangle>) n = smooth_triangle_normal(s, p);
+            },
+            o.shape);
+        n = normalize(o.transform.is_identity() ? n : o.transform.normal(n));
+        if (o.inverse) n = -n;
+        out.push_back({cs.c[i].t / len, n, &o});
+    }
+}
+
+bool inside_clips(const Object& o, const Point3& p) {
+    for (const Object& c : o.clipped_by) {
+        if (!inside_object(c, p)) return false;
+    }
+    return true;
+}
+
+void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out) {
+    size_t start = out.size();
+    if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
+        std::vector<WorldCrossing> tmp;
+        for (size_t i = 0; i < csg->children.size(); ++i) {
+            tmp.clear();
+            object_crossings(csg->children[i], ray, tmp);
+            for (WorldCrossing c : tmp) {
+                Point3 p = ray.at(c.t);
+                bool keep = true;
+                for (size_t j = 0; j < csg->children.size() && keep; ++j) {
+                    if (j == i) continue;
+                    bool in = inside_object(csg->children[j], p);
+                    switch (csg->kind) {
+                        case CsgKind::Union: break;
+                        case CsgKind::Merge: keep = !in; break;
+                        case CsgKind::Intersection: keep = in; break;
+                        case CsgKind::Difference:
+                            keep = (j == 0) ? in : !in;
+                            break;
+                    }
+                }
+                if (!keep) continue;
+                if (csg->kind == CsgKind::Difference && i > 0) c.normal = -c.normal;
+                out.push_back(c);
+            }
+        }
+        if (o.inverse) {
+            for (size_t k = start; k < out.size(); ++k) out[k].normal = -out[k].normal;
+        }
+    } else if (std::holds_alternative<Mesh>(o.shape) || std::holds_alternative<Polygon>(o.shape)) {
+        // Meshes are split into triangles at preparation; inside CSG they act as surfaces.
+        const Mesh* m = std::get_if<Mesh>(&o.shape);
+        if (m) {
+            Ray local = o.transform.is_identity() ? ray : o.transform.inverse_ray(ray);
+            Real len = length(local.direction);
+            Vector3 dn = local.direction / len;
+            for (const auto& f : m->faces) {
+                Point3 p[3] = {m->vertices[f.v[0]], m->vertices[f.v[1]], m->vertices[f.v[2]]};
+                Crossings cs;
+                intersect_triangle(p, local.origin, dn, cs);
+                if (cs.n) {
+                    Vector3 n = normalize(o.transform.normal(cross(p[1] - p[0], p[2] - p[0])));
+                    out.push_back({cs.c[0].t / len, n, &o});
+                }
+            }
+        }
+    } else {
+        leaf_crossings(o, ray, out);
+    }
+    if (!o.clipped_by.empty()) {
+        size_t w = start;
+        for (size_t k = start; k < out.size(); ++k) {
+            if (inside_clips(o, ray.at(out[k].t))) out[w++] = out[k];
+        }
+        out.resize(w);
+    }
+}
+
+Bounds3 object_bounds(const Object& o) {
+    Bounds3 local;
+    bool infinite = false;
+    std::visit(
+        [&](const auto& s) {
+            using T = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<T, Sphere>) {
+                local = {s.centre - Vector3(s.radius), s.centre + Vector3(s.radius)};
+            } else if constexpr (std::is_same_v<T, Box>) {
+                local = {min(s.corner1, s.corner2), max(s.corner1, s.corner2)};
+            } else if constexpr (std::is_same_v<T, Plane>) {
+                infinite = true;
+            } else if constexpr (std::is_same_v<T, Cylinder>) {
+                local.extend(s.base);
+                local.extend(s.cap);
+                local.lo -= Vector3(s.radius);
+                local.hi += Vector3(s.radius);
+            } else if constexpr (std::is_same_v<T, Cone>) {
+                Real r = std::max(std::fabs(s.base_radius), std::fabs(s.cap_radius));
+                local.extend(s.base);
+                local.extend(s.cap);
+                local.lo -= Vector3(r);
+                local.hi += Vector3(r);
+            } else if constexpr (std::is_same_v<T, Torus>) {
+                Real a = s.major + s.minor;
+                local = {{-a, -s.minor, -a}, {a, s.minor, a}};
+            } else if constexpr (std::is_same_v<T, Disc>) {
+                local = {s.centre - Vector3(s.radius), s.centre + Vector3(s.radius)};
+            } else if constexpr (std::is_same_v<T, Triangle> || std::is_same_v<T, SmoothTriangle>) {
+                for (const auto& p : s.p) local.extend(p);
+            } else if constexpr (std::is_same_v<T, Polygon>) {
+                for (const auto& p : s.points) local.extend(p);
+            } else if constexpr (std::is_same_v<T, Mesh>) {
+                for (const auto& p : s.vertices) local.extend(p);
+            } else if constexpr (std::is_same_v<T, Csg>) {
+                // Children carry world transforms already.
+                Bounds3 b;
+                bool first = true;
+                for (const Object& c : s.children) {
+                    Bounds3 cb = object_bounds(c);
+                    if (s.kind == CsgKind::Intersection) {
+                        if (cb.infinite()) continue;
+                        b = first ? cb : intersection(b, cb);
+                        first = false;
+                    } else if (s.kind == CsgKind::Difference) {
+                        b = cb;
+                        break;
+                    } else {
+                        b.extend(cb);
+                    }
+                }
+                if (first && s.kind == CsgKind::Intersection) infinite = true;
+                local = b;
+            }
+        },
+        o.shape);
+    if (infinite || o.inverse) return Bounds3::everything();
+    if (std::holds_alternative<Csg>(o.shape)) return local;
+    Bounds3 world = o.transform.bounds(local);
+    for (const Object& c : o.clipped_by) {
+        Bounds3 cb = object_bounds(c);
+        if (!cb.infinite()) world = intersection(world, cb);
+    }
+    return world;
+}
+
+// Rotation-and-uniform-scale check: such spheres stay spheres in world space.
+bool similarity(const Transform& t, Real& scale) {
+    const auto& m = t.forward().m;
+    Vector3 c0{m[0][0], m[1][0], m[2][0]}, c1{m[0][1], m[1][1], m[2][1]},
+        c2{m[0][2], m[1][2], m[2][2]};
+    Real s0 = dot(c0, c0), s1 = dot(c1, c1), s2 = dot(c2, c2);
+    Real tol = 1e-12 * std::max({s0, s1, s2});
+    if (std::fabs(s0 - s1) > tol || std::fabs(s0 - s2) > tol) return false;
+    if (std::fabs(dot(c0, c1)) > tol || std::fabs(dot(c0, c2)) > tol ||
+        std::fabs(dot(c1, c2)) > tol)
+        return false;
+    scale = std::sqrt(s0);
+    return true;
+}
+
+size_t count_leaves(const Object& o) {
+    size_t n = 1;
+    if (auto c = std::get_if<Csg>(&o.shape)) {
+        for (const auto& ch : c->children) n += count_leaves(ch);
+    }
+    if (auto m = std::get_if<Mesh>(&o.shape)) n += m->textures.size();
+    return n;
+}
+
+}  // namespace
+
+bool inside_object(const Object& o, const Point3& p) {
+    bool in = false;
+    if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
+        switch (csg->kind) {
+            case CsgKind::Union:
+            case CsgKind::Merge:
+                for (const auto& c : csg->children) in = in || inside_object(c, p);
+                break;
+            case CsgKind::Intersection:
+                in = !csg->children.empty();
+                for (const auto& c : csg->children) in = in && inside_object(c, p);
+                break;
+            case CsgKind::Difference:
+                in = !csg->children.empty() && inside_object(csg->children[0], p);
+                for (size_t i = 1; i < csg->children.size() && in; ++i) {
+                    in = !inside_object(csg->children[i], p);
+                }
+                break;
+        }
+    } else {
+        Point3 q = o.transform.is_identity() ? p : o.transform.inverse_point(p);
+        std::visit(
+            [&](const auto& s) {
+                using T = std::decay_t<decltype(s)>;
+                if constexpr (std::is_same_v<T, Sphere>) in = inside_sphere(s, q);
+                else if constexpr (std::is_same_v<T, Box>) in = inside_box(s, q);
+                else if constexpr (std::is_same_v<T, Plane>) in = inside_plane(s, q);
+                else if constexpr (std::is_same_v<T, Cylinder>) in = inside_cylinder(s, q);
+                else if constexpr (std::is_same_v<T, Cone>) in = inside_cone(s, q);
+                else if constexpr (std::is_same_v<T, Torus>) in = inside_torus(s, q);
+                else in = false;
+            },
+            o.shape);
+    }
+    if (in && !o.clipped_by.empty()) in = inside_clips(o, p);
+    return in != o.inverse;
+}
+
+Bounds3 object_world_bounds(const Object& obj) { return object_bounds(obj); }
+
+PreparedScene::PreparedScene(const Scene& scene) : scene_(scene) {
+    std::vector<const Object*> all;
+    for (const Object& o : scene.objects) all.push_back(&o);
+    build(all);
+}
+
+PreparedScene::PreparedScene(const Scene& scene, const std::vector<uint32_t>& object_subset)
+    : scene_(scene) {
+    std::vector<const Object*> some;
+    for (uint32_t i : object_subset) some.push_back(&scene.objects[i]);
+    build(some);
+}
+
+void PreparedScene::build(const std::vector<const Object*>& objects) {
+    const Scene& scene = scene_;
+    env_.noise_generator = scene.settings.noise_generator;
+    size_t leaves = 0;
+    for (const Object* o : objects) leaves += count_leaves(*o);
+    for (const Light& l : scene.lights) {
+        for (const Object& o : l.looks_like) leaves += count_leaves(o);
+    }
+    materials_.reserve(leaves + 1);
+    for (const Object* o : objects) add_object(*o, nullptr);
+    for (const Light& l : scene.lights) {
+        for (const Object& o : l.looks_like) add_object(o, nullptr);
+    }
+    std::sort(leaf_materials_.begin(), leaf_materials_.end());
+    octree::BuildInput input;
+    std::vector<uint32_t> bounded_ids;
+    for (uint32_t id = 0; id < kind_.size(); ++id) {
+        if (bounds_[id].infinite()) {
+            unbounded_.push_back(id);
+        } else {
+            bounded_ids.push_back(id);
+        }
+    }
+    // The octree indexes bounded primitives by their position in bounded_ids.
+    input.bounds.reserve(bounded_ids.size());
+    for (uint32_t id : bounded_ids) input.bounds.push_back(bounds_[id]);
+    input.overlaps = [&](uint32_t i, const Bounds3& cell) {
+        uint32_t id = bounded_ids[i];
+        if (kind_[id] != PrimKind::Sphere) return true;
+        // Exact sphere-box test: distance from the centre to the box.
+        uint32_t s = index_[id];
+        Point3 c{sx_[s], sy_[s], sz_[s]};
+        Real d2 = 0;
+        for (int a = 0; a < 3; ++a) {
+            Real v = std::clamp(c[a], cell.lo[a], cell.hi[a]) - c[a];
+            d2 += v * v;
+        }
+        return d2 <= sr_[s] * sr_[s];
+    };
+    tree_.build(input);
+    // Re-map: store octree ids as primitive ids by permuting primitive arrays is avoided;
+    // instead the bounded primitives are moved to the front so octree id == primitive id.
+    std::vector<PrimKind> kind;
+    std::vector<uint32_t> index, material;
+    std::vector<Bounds3> bounds;
+    for (uint32_t id : bounded_ids) {
+        kind.push_back(kind_[id]);
+        index.push_back(index_[id]);
+        material.push_back(material_[id]);
+        bounds.push_back(bounds_[id]);
+    }
+    std::vector<uint32_t> unbounded;
+    for (uint32_t id : unbounded_) {
+        unbounded.push_back(uint32_t(kind.size()));
+        kind.push_back(kind_[id]);
+        index.push_back(index_[id]);
+        material.push_back(material_[id]);
+        bounds.push_back(bounds_[id]);
+    }
+    kind_ = std::move(kind);
+    index_ = std::move(index);
+    material_ = std::move(material);
+    bounds_ = std::move(bounds);
+    unbounded_ = std::move(unbounded);
+}
+
+uint32_t PreparedScene::add_material(const Object& o) {
+    Material m;
+    m.texture = &o.texture;
+    m.interior = o.interior ? &*o.interior : nullptr;
+    m.object = &o;
+    m.no_shadow = o.no_shadow;
+    m.no_image = o.no_image;
+    m.no_reflection = o.no_reflection;
+    m.double_illuminate = o.double_illuminate;
+    m.opaque = texture_opaque(o.texture);
+    materials_.push_back(m);
+    uint32_t index = uint32_t(materials_.size()) - 1;
+    leaf_materials_.push_back({&o, index});
+    return index;
+}
+
+const Material* PreparedScene::material_for(const Object* leaf) const {
+    auto it = std::lower_bound(leaf_materials_.begin(), leaf_materials_.end(),
+                               std::make_pair(leaf, uint32_t(0)));
+    if (it != leaf_materials_.end() && it->first == leaf) return &materials_[it->second];
+    return nullptr;
+}
+
+void PreparedScene::add_object(const Object& o, const Material*) {
+    const Csg* csg = std::get_if<Csg>(&o.shape);
+    if (csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by.empty()) {
+        // A plain union is its children: each goes into the octree on its own.
+        for (const Object& c : csg->children) add_object(c, nullptr);
+        return;
+    }
+    auto push = [&](PrimKind k, uint32_t index, uint32_t material, const Bounds3& b) {
+        kind_.push_back(k);
+        index_.push_back(index);
+        material_.push_back(material);
+        bounds_.push_back(b);
+    };
+    Real scale = 1;
+    if (auto s = std::get_if<Sphere>(&o.shape);
+        s && !o.inverse && o.clipped_by.empty() && similarity(o.transform, scale)) {
+        Point3 c = o.transform.point(s->centre);
+        Real r = s->radius * scale;
+        uint32_t index = uint32_t(sx_.size());
+        sx_.push_back(c.x);
+        sy_.push_back(c.y);
+        sz_.push_back(c.z);
+        sr_.push_back(r);
+        push(PrimKind::Sphere, index, add_material(o), {c - Vector3(r), c + Vector3(r)});
+        return;
+    }
+    if (auto m = std::get_if<Mesh>(&o.shape); m && !o.inverse && o.clipped_by.empty()) {
+        uint32_t base = add_material(o);
+        std::vector<uint32_t> face_materials;
+        for (const LayeredTexture& t : m->textures) {
+            Object tmp;
+            (void)tmp;
+            Material mm = materials_[base];
+            mm.texture = &t;
+            mm.opaque = texture_opaque(t);
+            materials_.push_back(mm);
+            face_materials.push_back(uint32_t(materials_.size()) - 1);
+        }
+        for (const auto& f : m->faces) {
+            TrianglePrim tri;
+            Bounds3 b;
+            for (int k = 0; k < 3; ++k) {
+                tri.p[k] = o.transform.point(m->vertices[f.v[k]]);
+                b.extend(tri.p[k]);
+                if (f.n[k] >= 0 && size_t(f.n[k]) < m->normals.size()) {
+                    tri.n[k] = normalize(o.transform.normal(m->normals[f.n[k]]));
+                    tri.smooth = true;
+                }
+            }
+            uint32_t mat = (f.texture >= 0 && size_t(f.texture) < face_materials.size())
+                               ? face_materials[f.texture]
+                               : base;
+            triangles_.push_back(tri);
+            push(PrimKind::Triangle, uint32_t(triangles_.size()) - 1, mat, b);
+        }
+        return;
+    }
+    // Everything else goes through the general object path; CSG leaves get materials too.
+    std::function<void(const Object&)> leaves = [&](const Object& x) {
+        if (auto c = std::get_if<Csg>(&x.shape)) {
+            for (const auto& ch : c->children) leaves(ch);
+        } else {
+            add_material(x);
+        }
+    };
+    uint32_t mat;
+    if (csg) {
+        leaves(o);
+        mat = 0;
+    } else {
+        mat = add_material(o);
+    }
+    objects_.push_back(&o);
+    push(PrimKind::Object, uint32_t(objects_.size()) - 1, mat, object_bounds(o));
+}
+
+bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max,
+                                   Hit& hit) const {
+    const Real lo = std::max(t_min, kMinIsectDepth);
+    switch (kind_[id]) {
+        case PrimKind::Sphere: {
+            uint32_t s = index_[id];
+            Real ocx = sx_[s] - ray.origin.x, ocy = sy_[s] - ray.origin.y,
+                 ocz = sz_[s] - ray.origin.z;
+            Real tca = ocx * ray.direction.x + ocy * ray.direction.y + ocz * ray.direction.z;
+            Real t2hc = sr_[s] * sr_[s] - (ocx * ocx + ocy * ocy + ocz * ocz) + tca * tca;
+            if (t2hc < 0) return false;
+            Real th = std::sqrt(t2hc);
+            Real t = tca - th;
+            if (!(t > kSphereTolerance && t >= lo)) {
+                t = tca + th;
+                if (!(t > kSphereTolerance && t >= lo)) return false;
+            }
+            if (t >= t_max) return false;
+            hit.t = t;
+            hit.prim = id;
+            hit.point = ray.at(t);
+            hit.normal = (hit.point - Point3{sx_[s], sy_[s], sz_[s]}) / sr_[s];
+            hit.material = &materials_[material_[id]];
+            return true;
+        }
+        case PrimKind::Triangle: {
+            const TrianglePrim& tri = triangles_[index_[id]];
+            Crossings cs;
+            intersect_triangle(tri.p, ray.origin, ray.direction, cs);
+            if (!cs.n || cs.c[0].t < lo || cs.c[0].t >= t_max) return false;
+            hit.t = cs.c[0].t;
+            hit.prim = id;
+            hit.point = ray.at(hit.t);
+            if (tri.smooth) {
+                SmoothTriangle st{{tri.p[0], tri.p[1], tri.p[2]}, {tri.n[0], tri.n[1], tri.n[2]}};
+                hit.normal = normalize(smooth_triangle_normal(st, hit.point));
+            } else {
+                hit.normal = normalize(cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]));
+            }
+            hit.material = &materials_[material_[id]];
+            return true;
+        }
+        case PrimKind::Object: {
+            thread_local std::vector<WorldCrossing> crossings;
+            crossings.clear();
+            object_crossings(*objects_[index_[id]], ray, crossings);
+            const WorldCrossing* best = nullptr;
+            for (const auto& c : crossings) {
+                if (c.t >= lo && c.t < t_max && (!best || c.t < best->t)) best = &c;
+            }
+            if (!best) return false;
+            hit.t = best->t;
+            hit.prim = id;
+            hit.point = ray.at(best->t);
+            hit.normal = best->normal;
+            hit.material = material_for(best->leaf);
+            if (!hit.material) hit.material = &materials_[material_[id]];
+            return true;
+        }
+    }
+    return false;
+}
+
+bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use, Hit& hit,
+                                RayContext& ctx) const {
+    bool found = false;
+    auto consider = [&](uint32_t id, Real& limit) {
+        Hit h;
+        ++ctx.tests;
+        if (!test_primitive(id, ray, t_min, limit, h)) return;
+        const Material& m = *h.material;
+        if ((use == RayUse::Camera && m.no_image) ||
+            (use == RayUse::Reflection && m.no_reflection) ||
+            (use == RayUse::Shadow && m.no_shadow)) {
+            return;
+        }
+        limit = h.t;
+        hit = h;
+        found = true;
+    };
+    Real limit = t_max;
+    for (uint32_t id : unbounded_) consider(id, limit);
+    ctx.mailbox.next_ray();
+    tree_.traverse(ray, t_min, limit, [&](const uint32_t* ids, size_t n, Real& tmax) {
+        for (size_t i = 0; i < n; ++i) {
+            // Objects hidden from this ray kind can have a hit beyond a visible one: a
+            // primitive seen in an earlier leaf was fully tested there.
+            if (!ctx.mailbox.first_visit(ids[i])) continue;
+            consider(ids[i], tmax);
+        }
+        return false;
+    });
+    return found;
+}
+
+bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max, bool& transparent,
+                                   RayContext& ctx) const {
+    transparent = false;
+    bool blocked = false;
+    auto consider = [&](uint32_t id) {
+        Hit h;
+        ++ctx.tests;
+        if (!test_primitive(id, ray, t_min, t_max, h)) return false;
+        if (h.material->no_shadow) return false;
+        if (h.material->opaque) return blocked = true;
+        transparent = true;
+        return false;
+    };
+    for (uint32_t id : unbounded_) {
+        if (consider(id)) return true;
+    }
+    ctx.mailbox.next_ray();
+    Real limit = t_max;
+    tree_.traverse(ray, t_min, limit, [&](const uint32_t* ids, size_t n, Real&) {
+        for (size_t i = 0; i < n; ++i) {
+            if (ctx.mailbox.first_visit(ids[i]) && consider(ids[i])) return true;
+        }
+        return false;
+    });
+    return blocked;
+}
+
+}  // namespace povwall::trace

@@ -1,0 +1,102 @@
+// The scene as the tracer uses it: world-space primitives in structure-of-arrays form, an
+// octree over the bounded ones, and the ray queries (closest hit, shadow transmittance).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/scene.h"
+#include "octree/octree.h"
+#include "trace/pattern.h"
+
+namespace povwall::trace {
+
+// What a ray may see of an object, and where its surface description lives.
+struct Material {
+    const LayeredTexture* texture = nullptr;
+    const Interior* interior = nullptr;  // null: default interior (ior 1)
+    const Object* object = nullptr;      // identity for the interior stack
+    bool no_shadow = false, no_image = false, no_reflection = false;
+    bool double_illuminate = false;
+    bool opaque = true;  // no filter or transmit anywhere in its textures
+};
+
+enum class PrimKind : uint8_t { Sphere, Triangle, Object };
+
+struct TrianglePrim {
+    Point3 p[3];
+    Vector3 n[3];
+    bool smooth = false;
+};
+
+// Kind of ray, for no_image / no_reflection / no_shadow.
+enum class RayUse : uint8_t { Camera, Reflection, Refraction, Shadow };
+
+struct Hit {
+    Real t = kInfinity;
+    uint32_t prim = 0;
+    Point3 point;
+    Vector3 normal;  // world space, unit, outward (not yet flipped toward the ray)
+    const Material* material = nullptr;
+};
+
+struct RayContext {
+    octree::Mailbox mailbox;
+    uint64_t tests = 0;
+};
+
+class PreparedScene {
+public:
+    explicit PreparedScene(const Scene& scene);
+    // Only the given top-level objects (indices into scene.objects) and light looks_like
+    // objects: the local scene of a black box. Materials still point into `scene`, so object
+    // identity (interior stacks) is the same in every box.
+    PreparedScene(const Scene& scene, const std::vector<uint32_t>& object_subset);
+
+    const Scene& scene() const { return scene_; }
+    const octree::Octree& tree() const { return tree_; }
+    size_t primitive_count() const { return kind_.size(); }
+    const PatternEnv& pattern_env() const { return env_; }
+    void init_context(RayContext& ctx) const { ctx.mailbox.resize(kind_.size()); }
+
+    // Nearest hit with t in (t_min, t_max), never closer than MIN_ISECT_DEPTH (1e-4),
+    // respecting no_image / no_reflection / no_shadow.
+    bool closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use, Hit& hit,
+                     RayContext& ctx) const;
+
+    // Shadow-ray fast path: true if an opaque, shadow-casting surface lies in (t_min, t_max).
+    // Sets `transparent` when a see-through surface was met there (the caller then needs
+    // the full product of filters).
+    bool opaque_blocker(const Ray& ray, Real t_min, Real t_max, bool& transparent,
+                        RayContext& ctx) const;
+
+private:
+    void build(const std::vector<const Object*>& objects);
+    void add_object(const Object& obj, const Material* parent_material);
+    uint32_t add_material(const Object& obj);
+    bool test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max, Hit& hit) const;
+    const Material* material_for(const Object* leaf) const;
+    std::vector<std::pair<const Object*, uint32_t>> leaf_materials_;  // sorted by pointer
+
+    const Scene& scene_;
+    PatternEnv env_;
+    std::vector<Material> materials_;  // reserved up front: pointers stay valid
+    // Per primitive id.
+    std::vector<PrimKind> kind_;
+    std::vector<uint32_t> index_, material_;
+    std::vector<Bounds3> bounds_;
+    // Spheres in world space, structure of arrays for the hot loop.
+    std::vector<Real> sx_, sy_, sz_, sr_;
+    std::vector<TrianglePrim> triangles_;
+    std::vector<const Object*> objects_;
+    std::vector<uint32_t> unbounded_;
+    octree::Octree tree_;
+};
+
+// World-space bounds of an object (everything() when unbounded).
+Bounds3 object_world_bounds(const Object& obj);
+
+// Whether a point is inside an object (CSG semantics, world space).
+bool inside_object(const Object& obj, const Point3& p);
+
+}  // namespace povwall::trace

@@ -1,0 +1,429 @@
+// POV-Ray 3.7's surface model (ComputeLightedTexture and friends), as spawn + combine.
+#include "trace/shading.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "trace/intersect.h"
+
+namespace povwall::trace {
+namespace {
+
+constexpr float kShadowTolerance = 1e-3f;
+
+float max3(const Rgb& c) { return std::max(c.r, std::max(c.g, c.b)); }
+
+// Empirical Fresnel-like factor POV-Ray uses for `metallic`.
+float metallic_fresnel(Real cos_angle) {
+    Real x = std::acos(std::clamp(cos_angle, -1.0, 1.0)) / (kPi / 2);
+    Real f = 0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903;
+    return float(std::clamp(f, 0.0, 1.0));
+}
+
+Rgb metallic_tint(float metallic, Real cos_angle, const Rgb& pigment) {
+    if (metallic == 0) return Rgb(1.0f);
+    float f = metallic_fresnel(cos_angle);
+    return Rgb(1.0f) + (pigment - Rgb(1.0f)) * (metallic * (1 - f));
+}
+
+float cubic_spline(Real low, Real high, Real pos) {
+    if (pos < low) return 0;
+    if (pos >= high) return 1;
+    Real x = (pos - low) / (high - low);
+    return float(x * x * (3 - 2 * x));
+}
+
+float ior_of(const Material* m) {
+    if (!m || !m->interior) return 1.0f;
+    return m->interior->ior > 0 ? m->interior->ior : 1.0f;
+}
+
+struct LightSample {
+    Vector3 dir;   // unit, from the point toward the light
+    Real distance;
+    Rgb colour;    // after spot, cylinder and fade attenuation
+};
+
+bool light_at(const Light& l, const Point3& p, LightSample& s) {
+    if (l.kind == Light::Kind::Parallel) {
+        s.dir = normalize(l.location - l.point_at);
+        Real d = dot(l.location - p, s.dir);
+        s.distance = d > 0 ? d : kInfinity;
+    } else {
+        Vector3 v = l.location - p;
+        s.distance = length(v);
+        if (s.distance == 0) return false;
+        s.dir = v / s.distance;
+    }
+    float att = 1;
+    if (l.kind == Light::Kind::Spot || l.kind == Light::Kind::Cylinder) {
+        Vector3 axis = normalize(l.point_at - l.location);
+        Real radius_cos = std::cos(l.radius * kPi / 180);
+        Real falloff_cos = std::cos(l.falloff * kPi / 180);
+        if (l.kind == Light::Kind::Spot) {
+            Real c = dot(-s.dir, axis);
+            if (c <= 0) return false;
+            att = float(l.tightness != 0 ? std::pow(c, l.tightness) : 1.0);
+            if (c < radius_cos) att *= cubic_spline(falloff_cos, radius_cos, c);
+        } else {
+            // Cylinder light: distance from the axis instead of an angle.
+            Vector3 rel = p - l.location;
+            Real along = dot(rel, axis);
+            if (along <= 0) return false;
+            Real dist = length(rel - axis * along);
+            if (dist > l.falloff) return false;
+            att = float(l.tightness != 0 ? std::pow(1 - dist / l.falloff, l.tightness) : 1.0);
+            if (dist > l.radius) att *= 1 - cubic_spline(l.radius, l.falloff, dist);
+            s.dir = -axis;
+            s.distance = along;
+        }
+        if (att <= 0) return false;
+    }
+    if (l.fade_power > 0 && l.fade_distance != 0 && s.distance < kInfinity) {
+        att *= float(2 / (1 + std::pow(s.distance / l.fade_distance, l.fade_power)));
+    }
+    s.colour = l.colour * att;
+    return !s.colour.is_black();
+}
+
+Colour eval_pigment(const PreparedScene& scene, const Pigment& p, const Point3& at) {
+    if (p.pattern.kind == PatternKind::Solid && p.list.empty() && p.colour_map.empty()) {
+        return p.colour;
+    }
+    return evaluate_pigment(p, at, scene.pattern_env());
+}
+
+Rgb rgb_transm(const Colour& c) {
+    return c.rgb * c.filter + Rgb(c.transmit);
+}
+
+const LayeredTexture& texture_of(const Material& m) {
+    static const LayeredTexture kDefault{Texture{}};
+    return (m.texture && !m.texture->empty()) ? *m.texture : kDefault;
+}
+
+}  // namespace
+
+Rgb interior_attenuation(const Interior& in, Real distance) {
+    if (in.fade_distance <= 0 || in.fade_power <= 0) return Rgb(1.0f);
+    Rgb fc = in.fade_colour;
+    if (in.fade_power >= 1000) {
+        auto e = [&](float c) { return float(std::exp(-(1 - c) * distance / in.fade_distance)); };
+        return {e(fc.r), e(fc.g), e(fc.b)};
+    }
+    float k = float(1 / (1 + std::pow(distance / in.fade_distance, Real(in.fade_power))));
+    return fc + (Rgb(1.0f) - fc) * k;
+}
+
+void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
+                    ShadingRecord& out) {
+    out.clear();
+    const Scene& sc = scene.scene();
+    const Material& m = *hit.material;
+    const Vector3 D = ray.ray.direction;
+    const Point3 P = hit.point;
+    // Normals face the incoming ray, as POV-Ray flips them.
+    const Vector3 N = dot(hit.normal, D) > 0 ? -hit.normal : hit.normal;
+    const bool legacy = sc.language_version < 370;
+    const float adc = sc.settings.adc_bailout;
+    const LayeredTexture& layers = texture_of(m);
+    const size_t nlights = sc.lights.size();
+
+    thread_local std::vector<Rgb> lit;
+    thread_local std::vector<LightSample> samples;
+    thread_local std::vector<uint8_t> sample_ok;
+    lit.assign(nlights, Rgb{});
+    samples.resize(nlights);
+    sample_ok.assign(nlights, 2);  // 2: not computed yet
+
+    Rgb fil(1.0f);
+    float trans = 1;
+    const Texture* top = &layers.back();
+    Vector3 top_normal = N;
+    for (int li = int(layers.size()) - 1; li >= 0 && trans > adc; --li) {
+        const Texture& tex = layers[li];
+        const Colour lay = eval_pigment(scene, tex.pigment, P);
+        Vector3 Nl = N;
+        if (tex.normal) {
+            Nl = perturb_normal(*tex.normal, P, N, scene.pattern_env());
+        }
+        if (li == int(layers.size()) - 1) top_normal = Nl;
+        const float att = legacy ? 1 - (lay.filter * max3(lay.rgb) + lay.transmit)
+                                 : 1 - lay.filter - lay.transmit;
+        const Finish& f = tex.finish;
+        Rgb tmp = lay.rgb * f.ambient * sc.settings.ambient_light * att +
+                  lay.rgb * f.emission * att;
+        out.local += tmp * fil;
+
+        if (f.diffuse != 0 || f.phong != 0 || f.specular != 0) {
+            for (size_t l = 0; l < nlights; ++l) {
+                const Light& light = sc.lights[l];
+                if (sample_ok[l] == 2) sample_ok[l] = light_at(light, P, samples[l]) ? 1 : 0;
+                if (!sample_ok[l]) continue;
+                const LightSample& s = samples[l];
+                Real cos_nl = dot(Nl, s.dir);
+                if (cos_nl < kPovEpsilon) {
+                    if (!m.double_illuminate) continue;
+                    cos_nl = -cos_nl;
+                }
+                Rgb c;
+                if (f.diffuse != 0) {
+                    Real base = std::fabs(cos_nl);
+                    float k = float((f.brilliance != 1 ? std::pow(base, Real(f.brilliance)) : base) *
+                                    f.diffuse * att);
+                    c += lay.rgb * k;
+                }
+                if (!light.shadowless) {
+                    if (f.phong != 0) {
+                        Vector3 R = D - Nl * (2 * dot(D, Nl));
+                        Real cc = dot(R, s.dir);
+                        if (cc > 0 && !(f.phong_size >= 60 && cc <= 0.0008)) {
+                            float k = float(f.phong * std::pow(cc, Real(f.phong_size)));
+                            c += metallic_tint(f.metallic, cos_nl, lay.rgb) * k;
+                        }
+                    }
+                    if (f.specular != 0) {
+                        Vector3 H = (s.dir - D) * 0.5;
+                        Real hl = length(H);
+                        Real cc = hl > 0 ? dot(H, Nl) / hl : 0;
+                        if (cc > 0) {
+                            float k = float(f.specular * std::pow(cc, Real(1 / f.roughness)));
+                            c += metallic_tint(f.metallic, cos_nl, lay.rgb) * k;
+                        }
+                    }
+                }
+                lit[l] += c * s.colour * fil;
+            }
+        }
+
+        // Reflection of this layer; not scaled by the layers above (POV-Ray 3.7).
+        const bool has_reflection =
+            !f.reflection_max.is_black() || !f.reflection_min.is_black();
+        float reflectivity_grey = 0;
+        if (has_reflection) {
+            Real cos_i = std::fabs(dot(D, Nl));
+            Rgb reflec;
+            float w;
+            if (f.reflection_fresnel) {
+                float n1 = ior_of(ray.interiors.innermost());
+                float n2 = ray.interiors.contains(m.object) ? 1.0f : ior_of(&m);
+                Real eta = n2 / n1;
+                Real g2 = eta * eta + cos_i * cos_i - 1;
+                float F = 1;
+                if (g2 > 0) {
+                    Real g = std::sqrt(g2);
+                    Real a = (g - cos_i) / (g + cos_i);
+                    Real b = (cos_i * (g + cos_i) - 1) / (cos_i * (g - cos_i) + 1);
+                    F = float(std::clamp(0.5 * a * a * (1 + b * b), 0.0, 1.0));
+                }
+                reflec = f.reflection_max * F + f.reflection_min * (1 - F);
+                w = ray.weight * max3(reflec);
+            } else {
+                float frac = float(std::pow(1 - cos_i, Real(f.reflection_falloff)));
+                if (f.reflection_falloff == 1 && frac == 0) frac = 0;
+                reflec = f.reflection_max * frac + f.reflection_min * (1 - frac);
+                w = ray.weight * std::max(max3(f.reflection_max), max3(f.reflection_min));
+            }
+            if (f.reflection_metallic != 0) {
+                reflec *= metallic_tint(f.reflection_metallic, cos_i, lay.rgb);
+            }
+            reflectivity_grey = reflec.grey();
+            Vector3 R = D - Nl * (2 * dot(D, Nl));
+            if (dot(R, N) < 0) R = D - N * (2 * dot(D, N));  // perturbed normal pointed away
+            ChildRay child;
+            child.kind = ChildRay::Kind::Reflection;
+            child.trace.ray = {P, normalize(R)};
+            child.trace.depth = ray.depth + 1;
+            child.trace.weight = w;
+            child.trace.use = RayUse::Reflection;
+            child.trace.interiors = ray.interiors;
+            child.coeff = reflec;
+            child.exponent = f.reflection_exponent;
+            out.children.push_back(child);
+        }
+        fil *= rgb_transm(lay);
+        if (f.conserve_energy && has_reflection) fil *= (1 - reflectivity_grey);
+        trans = std::min(1.0f, std::fabs(fil.grey()));
+    }
+
+    // One shadow ray per light (shared by all layers); shadowless lights need none.
+    for (size_t l = 0; l < nlights; ++l) {
+        if (lit[l].is_black()) continue;
+        const Light& light = sc.lights[l];
+        if (light.shadowless) {
+            out.local += lit[l];
+            continue;
+        }
+        const LightSample& s = samples[l];
+        if (light.area && light.area->size1 * light.area->size2 > 1) {
+            const AreaLight& a = *light.area;
+            int n1 = std::max(1, a.size1), n2 = std::max(1, a.size2);
+            float share = 1.0f / float(n1 * n2);
+            for (int i = 0; i < n1; ++i) {
+                for (int j = 0; j < n2; ++j) {
+                    Real u = n1 > 1 ? Real(i) / (n1 - 1) - 0.5 : 0;
+                    Real v = n2 > 1 ? Real(j) / (n2 - 1) - 0.5 : 0;
+                    Point3 q = light.location + a.axis1 * u + a.axis2 * v;
+                    Vector3 to = q - P;
+                    Real d = length(to);
+                    ChildRay child;
+                    child.kind = ChildRay::Kind::Shadow;
+                    child.trace.ray = {P, to / d};
+                    child.trace.depth = ray.depth;
+                    child.trace.use = RayUse::Shadow;
+                    child.t_max = d;
+                    child.light = int(l);
+                    child.coeff = lit[l] * share;
+                    out.children.push_back(child);
+                }
+            }
+            continue;
+        }
+        ChildRay child;
+        child.kind = ChildRay::Kind::Shadow;
+        child.trace.ray = {P, s.dir};
+        child.trace.depth = ray.depth;
+        child.trace.use = RayUse::Shadow;
+        child.t_max = s.distance;
+        child.light = int(l);
+        child.coeff = lit[l];
+        out.children.push_back(child);
+    }
+
+    // What shows through the surface: straight on when the IOR does not change (no trace
+    // level used, POV-Ray 3.7), refracted otherwise.
+    if (trans > adc) {
+        ChildRay child;
+        child.kind = ChildRay::Kind::Transmission;
+        child.coeff = fil;
+        child.transmit_factor = trans;
+        child.trace.interiors = ray.interiors;
+        child.trace.use = RayUse::Refraction;
+        child.trace.weight = ray.weight * max3(Rgb(std::fabs(fil.r), std::fabs(fil.g),
+                                                   std::fabs(fil.b)));
+        float n1, n2;
+        if (ray.interiors.contains(m.object)) {
+            n1 = ior_of(&m);
+            child.trace.interiors.remove(m.object);
+            n2 = ior_of(child.trace.interiors.innermost());
+        } else {
+            n1 = ior_of(ray.interiors.innermost());
+            n2 = ior_of(&m);
+            child.trace.interiors.push(&m);
+        }
+        // Interior fade: light reaching this surface from inside the object is attenuated
+        // by the distance the incoming ray travelled in it (only the transmitted part).
+        Rgb att(1.0f);
+        if (ray.interiors.contains(m.object) && m.interior) {
+            att = interior_attenuation(*m.interior, hit.t);
+            child.coeff *= att;
+            child.transmit_factor *= att.grey();
+        }
+        Real eta = n1 / n2;
+        if (std::fabs(eta - 1) < kPovEpsilon) {
+            child.trace.ray = {P, D};
+            child.trace.depth = ray.depth;
+        } else {
+            Real n = -dot(D, top_normal);
+            Real t = 1 + eta * eta * (n * n - 1);
+            child.trace.depth = ray.depth + 1;
+            if (t < 0) {
+                // Total internal reflection: reflected, not filtered, stays inside.
+                Vector3 R = D + top_normal * (2 * n);
+                child.trace.ray = {P, normalize(R)};
+                child.trace.interiors = ray.interiors;
+                child.coeff = att;
+            } else {
+                Vector3 T = D * eta + top_normal * (eta * n - std::sqrt(t));
+                child.trace.ray = {P, normalize(T)};
+            }
+        }
+        out.children.push_back(child);
+    }
+    (void)top;
+}
+
+TraceResult combine_children(const ShadingRecord& record, const TraceResult* results) {
+    TraceResult r;
+    r.colour = record.local;
+    for (size_t i = 0; i < record.children.size(); ++i) {
+        const ChildRay& c = record.children[i];
+        const TraceResult& x = results[i];
+        if (c.kind == ChildRay::Kind::Reflection && c.exponent != 1) {
+            float e = 1 / c.exponent;
+            Rgb p(std::pow(std::max(0.0f, x.colour.r), e), std::pow(std::max(0.0f, x.colour.g), e),
+                  std::pow(std::max(0.0f, x.colour.b), e));
+            r.colour += c.coeff * p;
+        } else {
+            r.colour += c.coeff * x.colour;
+        }
+        if (c.kind == ChildRay::Kind::Transmission) r.transmit = c.transmit_factor * x.transmit;
+    }
+    return r;
+}
+
+bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
+                    Real light_distance, ShadowState& state, RayContext& ctx) {
+    const float adc = scene.scene().settings.adc_bailout;
+    const Real hi = std::min(segment_end, light_distance - kShadowTolerance);
+    if (state.blocked) return true;
+    if (!(state.t_min < hi)) return false;
+    // Most shadow rays meet only opaque blockers or nothing: find out in any order.
+    bool transparent = false;
+    if (scene.opaque_blocker(ray, state.t_min, hi, transparent, ctx)) {
+        state.blocked = true;
+        state.filter = Rgb{};
+        return true;
+    }
+    if (!transparent) return false;
+    // See-through blockers: each crossing multiplies the light by its filter, nearest first,
+    // the next search starting 1e-3 past the previous hit as POV-Ray's restarted ray does.
+    for (int guard = 0; guard < 256 && state.t_min < hi; ++guard) {
+        Hit hit;
+        if (!scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx)) break;
+        const Material& m = *hit.material;
+        bool black = m.opaque;
+        for (const Texture& t : texture_of(m)) {
+            if (black) break;
+            Colour c = eval_pigment(scene, t.pigment, hit.point);
+            if (std::fabs(c.filter) + std::fabs(c.transmit) < adc) black = true;
+            state.filter *= rgb_transm(c);
+        }
+        if (black || state.filter.max_component() <= 0) {
+            state.blocked = true;
+            state.filter = Rgb{};
+            return true;
+        }
+        state.t_min = hit.t + kShadowTolerance;
+    }
+    state.t_min = std::max(state.t_min, hi);
+    return false;
+}
+
+Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx) {
+    ShadowState state;
+    shadow_segment(scene, shadow.trace.ray, kInfinity, shadow.t_max, state, ctx);
+    return state.filter;
+}
+
+TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
+    const Scene& sc = scene.scene();
+    if (sc.sky_sphere && !sc.sky_sphere->pigments.empty()) {
+        Point3 p = sc.sky_sphere->transform.inverse_vector(ray.direction);
+        p = normalize(p);
+        // Layers composite top first, each letting the next show through its filter/transmit.
+        Rgb colour, fil(1.0f);
+        for (auto it = sc.sky_sphere->pigments.rbegin(); it != sc.sky_sphere->pigments.rend();
+             ++it) {
+            Colour c = evaluate_pigment(*it, p, scene.pattern_env());
+            float att = 1 - c.filter - c.transmit;
+            colour += fil * c.rgb * att;
+            fil *= rgb_transm(c);
+        }
+        colour += fil * sc.background.rgb;
+        return {colour, 0};
+    }
+    return {sc.background.rgb, sc.background.transmit};
+}
+
+}  // namespace povwall::trace

@@ -1,0 +1,110 @@
+// Shading, written once as two steps so that every back end uses the same code:
+//
+//   spawn():   from a hit, the local colour and the child rays to trace (one shadow ray per
+//              light, reflections per texture layer, one refraction/transmission ray), each
+//              with the coefficient it contributes with;
+//   combine(): from the children's results, the colour.
+//
+// The single-process tracer calls them recursively; a black box of the distributed back end
+// calls spawn() when a ray hits and combine() when the children's results have arrived.
+// The result is linear in the children's results (colour = local + sum coeff * child) except
+// for reflection children with `exponent` != 1: only those need a waiting parent; the others
+// can forward `coeff` times the parent's own weight straight to the pixel.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "trace/prepared_scene.h"
+
+namespace povwall::trace {
+
+// The objects a ray is inside of, innermost last (for the relative IOR and interior fade).
+struct InteriorStack {
+    static constexpr int kCapacity = 8;
+    const Material* items[kCapacity] = {};
+    int size = 0;
+    bool contains(const Object* o) const {
+        for (int i = 0; i < size; ++i)
+            if (items[i]->object == o) return true;
+        return false;
+    }
+    void push(const Material* m) {
+        if (size < kCapacity) items[size++] = m;
+    }
+    void remove(const Object* o) {
+        for (int i = 0; i < size; ++i) {
+            if (items[i]->object == o) {
+                for (int j = i; j + 1 < size; ++j) items[j] = items[j + 1];
+                --size;
+                return;
+            }
+        }
+    }
+    const Material* innermost() const { return size ? items[size - 1] : nullptr; }
+};
+
+// A ray to trace, with what exact POV-Ray semantics need to know about it.
+struct TraceRay {
+    Ray ray;            // unit direction
+    int depth = 1;      // 1 for camera rays; refused when above max_trace_level
+    float weight = 1;   // adc_bailout weight
+    RayUse use = RayUse::Camera;
+    InteriorStack interiors;
+};
+
+struct TraceResult {
+    Rgb colour;
+    float transmit = 0;  // how much of the background shows through (alpha output)
+};
+
+struct ChildRay {
+    enum class Kind : uint8_t { Shadow, Reflection, Transmission } kind = Kind::Shadow;
+    TraceRay trace;
+    Real t_max = kInfinity;  // shadow rays: distance to the light
+    int light = -1;
+    Rgb coeff{1.0f};         // contribution factor of the child's result
+    float exponent = 1;      // reflection: result is coeff * pow(child, 1/exponent)
+    float transmit_factor = 0;  // transmission: share of the child's transmit that shows
+};
+
+struct ShadingRecord {
+    Rgb local;  // ambient and emission: needs no child
+    std::vector<ChildRay> children;
+    void clear() {
+        local = Rgb{};
+        children.clear();
+    }
+};
+
+// Step 1. `ray` hit `hit`; fills `out` (cleared first).
+void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
+                    ShadingRecord& out);
+
+// Step 2. `results[i]` is the result of `record.children[i]`: the traced colour for
+// reflection/transmission, the light's transmittance (rgb) for shadow rays.
+TraceResult combine_children(const ShadingRecord& record, const TraceResult* results);
+
+// Shadow ray state carried from box to box: the product of filters met so far and where
+// the search resumes (absolute distance along the ray: the origin is never moved).
+struct ShadowState {
+    Rgb filter{1.0f};
+    Real t_min = 1e-3;  // POV-Ray's SHADOW_TOLERANCE
+    bool blocked = false;
+};
+// Advances `state` over hits with t in [state.t_min, min(segment_end, light_distance - 1e-3)).
+// Returns true once the light is fully blocked.
+bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
+                    Real light_distance, ShadowState& state, RayContext& ctx);
+
+// Transmittance of the segment toward a light (shadow ray), POV-Ray's rules: hits in
+// (1e-3, distance - 1e-3), filters multiply, opaque blocks.
+Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx);
+
+// POV-Ray 3.7's interior fade after `distance` inside a medium.
+Rgb interior_attenuation(const Interior& in, Real distance);
+
+// Colour of a ray that hits nothing (background or sky_sphere).
+TraceResult miss_colour(const PreparedScene& scene, const Ray& ray);
+
+}  // namespace povwall::trace

@@ -1,0 +1,46 @@
+#include "trace/tracer.h"
+
+#include <cmath>
+
+namespace povwall::trace {
+Tracer::Tracer(const PreparedScene& scene) : scene_(scene) { scene.init_context(ctx_); }
+
+TraceResult Tracer::trace(const TraceRay& ray) { return trace_at(ray, 0); }
+
+TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
+    const GlobalSettings& g = scene_.scene().settings;
+    // A refused ray is black and opaque (POV-Ray's max_trace_level and adc_bailout rule).
+    if (ray.depth > g.max_trace_level || ray.weight < g.adc_bailout) return {};
+    switch (ray.use) {
+        case RayUse::Camera: ++counters_.camera; break;
+        case RayUse::Reflection: ++counters_.reflected; break;
+        case RayUse::Refraction: ++counters_.refracted; break;
+        case RayUse::Shadow: break;
+    }
+    Hit hit;
+    if (!scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_)) {
+        return miss_colour(scene_, ray.ray);
+    }
+    if (records_.size() <= level) {
+        records_.resize(level + 1);
+        results_.resize(level + 1);
+    }
+    spawn_children(scene_, ray, hit, records_[level]);
+    // records_ may grow in the recursion below: index, don't hold references across calls.
+    size_t n = records_[level].children.size();
+    results_[level].resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const ChildRay child = records_[level].children[i];
+        TraceResult r;
+        if (child.kind == ChildRay::Kind::Shadow) {
+            ++counters_.shadow;
+            r.colour = shadow_transmittance(scene_, child, ctx_);
+        } else {
+            r = trace_at(child.trace, level + 1);
+        }
+        results_[level][i] = r;
+    }
+    return combine_children(records_[level], results_[level].data());
+}
+
+}  // namespace povwall::trace
