@@ -472,4 +472,18 @@ MapLookup search_map(const float* values, int count, Real value) {
     return r;
 }
 
+MapPick pick_map_entries(const PatternSpec& spec, const float* values, int count,
+                         const Point3& world, const PatternEnv& env) {
+    MapPick pick;
+    pick.point = detail::warp_point(spec, world);
+    Real value = detail::value_at(spec, pick.point, env);
+    if (values == nullptr || count <= 0) {
+        int index = std::clamp(int(value), 0, 2);
+        pick.lookup.prev = pick.lookup.cur = index;
+        return pick;
+    }
+    pick.lookup = search_map(values, count, value);
+    return pick;
+}
+
 }  // namespace povwall::trace

@@ -38,4 +38,14 @@ struct MapLookup {
 };
 MapLookup search_map(const float* values, int count, Real value);
 
+// texture_map / checker-of-textures selection at `world`: the entries to blend and the
+// pattern-space point POV-Ray evaluates the nested entries at. With no `values` (checker,
+// hexagon, brick lists) the pattern value is the entry index.
+struct MapPick {
+    MapLookup lookup;
+    Point3 point;
+};
+MapPick pick_map_entries(const PatternSpec& spec, const float* values, int count,
+                         const Point3& world, const PatternEnv& env);
+
 }  // namespace povwall::trace

@@ -317,6 +317,41 @@ TEST(PatternVsPovray, AveragePigments) {
               kTol);
 }
 
+TEST(PatternMaps, SearchMapFollowsPovRayBlendRules) {
+    const float v[] = {0.2f, 0.5f, 0.5f, 0.9f};
+    MapLookup below = search_map(v, 4, 0.1);
+    EXPECT_EQ(below.prev, 0);
+    EXPECT_EQ(below.cur, 0);
+    MapLookup mid = search_map(v, 4, 0.35);
+    EXPECT_EQ(mid.prev, 0);
+    EXPECT_EQ(mid.cur, 1);
+    EXPECT_NEAR(mid.fraction, 0.5, 1e-7);
+    // At a repeated value the first of the pair wins (fraction 1 onto it; the entry
+    // difference is single precision, as in POV-Ray).
+    MapLookup at = search_map(v, 4, 0.5);
+    EXPECT_EQ(at.cur, 1);
+    EXPECT_NEAR(at.fraction, 1.0, 1e-6);
+    MapLookup after = search_map(v, 4, 0.6);
+    EXPECT_EQ(after.prev, 2);
+    EXPECT_EQ(after.cur, 3);
+    MapLookup above = search_map(v, 4, 0.95);
+    EXPECT_EQ(above.prev, 3);
+    EXPECT_EQ(above.cur, 3);
+}
+
+TEST(PatternMaps, PickEntriesOfCheckerTextures) {
+    PatternSpec spec;
+    spec.kind = PatternKind::Checker;
+    MapPick a = pick_map_entries(spec, nullptr, 0, {0.5, 0.5, 0.5}, {});
+    MapPick b = pick_map_entries(spec, nullptr, 0, {1.5, 0.5, 0.5}, {});
+    EXPECT_EQ(a.lookup.cur, 0);
+    EXPECT_EQ(b.lookup.cur, 1);
+    spec.transform = Transform::scale({2, 2, 2});
+    MapPick c = pick_map_entries(spec, nullptr, 0, {1.5, 0.5, 0.5}, {});
+    EXPECT_EQ(c.lookup.cur, 0);
+    EXPECT_DOUBLE_EQ(c.point.x, 0.75);
+}
+
 TEST(PatternVsPovray, PigmentMap) {
     Pigment inner1 = patterned(PatternKind::Bozo);
     inner1.pattern.transform = Transform::scale({0.3, 0.3, 0.3});
