@@ -47,6 +47,100 @@ Point3 apply_repeat(const Warp& w, const Point3& p) {
     return r + w.offset * Real(block);
 }
 
+Point3 apply_black_hole(const Warp& w, const Point3& p) {
+    Point3 centre = w.centre;
+    if (w.repeat != Vector3(0, 0, 0)) {
+        // POV-Ray's parser keeps repeated holes inside their cells: the centre is at least
+        // one radius from the cell origin and the cell fits centre + radius + uncertainty.
+        Vector3 repeat = w.repeat;
+        for (int i = 0; i < 3; ++i) {
+            if (repeat[i] > 0.0) {
+                centre[i] = std::max(centre[i], w.radius);
+                repeat[i] = std::max(repeat[i], centre[i] + w.radius + w.turbulence[i]);
+                if (repeat[i] < kEpsilon) repeat[i] = 0.0;
+            }
+        }
+        int block[3] = {0, 0, 0};
+        for (int i = 0; i < 3; ++i) {
+            if (repeat[i] >= kEpsilon) block[i] = int(std::floor(p[i] / repeat[i]));
+        }
+        if (w.turbulence != Vector3(0, 0, 0)) {
+            // Per-cell jitter of the centre from the pattern random table.
+            size_t seed = size_t(hash3d(block[0], block[1], block[2]));
+            centre.x += pattern_random(seed) * w.turbulence.x;
+            centre.y += pattern_random(seed + 1) * w.turbulence.y;
+            centre.z += pattern_random(seed + 2) * w.turbulence.z;
+        }
+        for (int i = 0; i < 3; ++i) centre[i] += repeat[i] * block[i];
+    }
+    Vector3 delta = p - centre;
+    Real len = length(delta);
+    if (len >= w.radius) return p;
+    Real strength = std::min(std::pow((w.radius - len) / w.radius, w.falloff) * w.strength, 1.0);
+    return p + delta * (w.inverse ? -strength : strength);
+}
+
+// Re-orients a mapping warp's (x, y, z) result the way POV-Ray does for non-z orientations.
+Point3 orient(const Warp& w, Real x, Real y, Real z) {
+    Vector3 o = normalize(w.orientation);  // POV-Ray normalises it when parsing
+    if (o.x == 0.0 && o.y == 0.0 && o.z == 1.0) return {x, y, z};
+    return {o.x * z + o.y * x + o.z * x, o.x * y + o.y * -z + o.z * y, o.x * -x + o.y * y + o.z * z};
+}
+
+// Angle of (x, z) from +x in [0, 2pi), as POV-Ray's mapping warps compute it.
+Real xz_angle(Real x, Real z, Real len) {
+    if (z == 0.0) return x > 0 ? 0.0 : kPi;
+    Real theta = std::acos(x / len);
+    return z < 0.0 ? 2 * kPi - theta : theta;
+}
+
+Real dist_factor(Real dist, Real exponent) {
+    if (exponent == 1.0) return dist;
+    if (exponent != 0.0) return std::pow(dist, exponent);
+    return 1.0;
+}
+
+Point3 apply_mapping_warp(const Warp& w, const Point3& p) {
+    Real x = p.x, y = p.y, z = p.z;
+    switch (w.kind) {
+        case Warp::Kind::Cylindrical: {
+            Real len = std::sqrt(x * x + z * z);
+            if (len == 0.0) return p;
+            Real theta = xz_angle(x, z, len) / (2 * kPi) * dist_factor(len, w.dist_exp);
+            return orient(w, theta, y, len);
+        }
+        case Warp::Kind::Spherical: {
+            Real dist = std::sqrt(x * x + y * y + z * z);
+            if (dist == 0.0) return p;
+            x /= dist;
+            y /= dist;
+            z /= dist;
+            Real phi = 0.5 + std::asin(y) / kPi;
+            Real len = std::sqrt(x * x + z * z);
+            Real theta = len == 0.0 ? 0.0 : xz_angle(x, z, len) / (2 * kPi);
+            Real f = dist_factor(dist, w.dist_exp);
+            return orient(w, theta * f, phi * f, dist);
+        }
+        case Warp::Kind::Toroidal: {
+            Real len = std::sqrt(x * x + z * z);
+            if (len == 0.0) return p;
+            Real theta = -xz_angle(x, z, len);
+            Real px = len - w.major_radius;
+            len = std::sqrt(px * px + y * y);
+            Real phi = std::acos(-px / len);
+            if (y > 0.0) phi = 2 * kPi - phi;
+            theta /= -2 * kPi;
+            phi /= 2 * kPi;
+            Real f = dist_factor(len, w.dist_exp);
+            return orient(w, theta * f, phi * f, len);
+        }
+        case Warp::Kind::Planar:
+            return orient(w, x, y, w.plane_offset);
+        default:
+            return p;
+    }
+}
+
 // Pattern values of the individual patterns at a pattern-space point.
 
 Real brick(const PatternSpec& s, const Point3& p) {
@@ -392,7 +486,8 @@ Point3 warp_point(const PatternSpec& spec, const Point3& world) {
         switch (w.kind) {
             case Warp::Kind::Turbulence: p = apply_turbulence(w, p); break;
             case Warp::Kind::Repeat: p = apply_repeat(w, p); break;
-            default: break;  // black_hole and mapping warps: not implemented
+            case Warp::Kind::BlackHole: p = apply_black_hole(w, p); break;
+            default: p = apply_mapping_warp(w, p); break;
         }
         if (!w.transform.is_identity()) p = w.transform.inverse_point(p);
     }

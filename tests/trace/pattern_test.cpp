@@ -274,6 +274,58 @@ TEST(PatternVsPovray, CellsAndCrackle) {
     EXPECT_LE(max_pigment_error("crackle solid" + kGrey, solid, view), kTol);
 }
 
+TEST(PatternVsPovray, BlackHoleAndMappingWarps) {
+    test::TopView view;
+    view.extent = 5;
+    Pigment base = patterned(PatternKind::Gradient);
+    base.pattern.vector = {1, 0, 0.3};
+    base.pattern.frequency = 3;
+    Pigment bh = base;
+    Warp w;
+    w.kind = Warp::Kind::BlackHole;
+    w.centre = {0.4, 0.37, -0.2};
+    w.radius = 1.7;
+    w.strength = 1.3;
+    w.falloff = 1.5;
+    bh.pattern.warps.push_back(w);
+    const std::string g = "gradient <1,0,0.3>" + kGrey + " frequency 3";
+    EXPECT_LE(max_pigment_error(g + " warp { black_hole <0.4,0.37,-0.2>, 1.7 strength 1.3 "
+                                    "falloff 1.5 }",
+                                bh, view),
+              kTol);
+    Pigment rep = base;
+    w.inverse = true;
+    w.repeat = {1.5, 0, 1.5};
+    w.turbulence = {0.3, 0, 0.3};
+    w.radius = 0.6;
+    rep.pattern.warps.push_back(w);
+    EXPECT_LE(max_pigment_error(g + " warp { black_hole <0.4,0.37,-0.2>, 0.6 strength 1.3 "
+                                    "falloff 1.5 inverse repeat <1.5,0,1.5> "
+                                    "turbulence <0.3,0,0.3> }",
+                                rep, view),
+              kTol);
+    struct Mapping {
+        Warp::Kind kind;
+        const char* pov;
+    };
+    for (Mapping m : {Mapping{Warp::Kind::Cylindrical, "cylindrical orientation y dist_exp 0.5"},
+                      Mapping{Warp::Kind::Spherical, "spherical orientation y dist_exp 1"},
+                      Mapping{Warp::Kind::Toroidal, "toroidal orientation y dist_exp 0.7 "
+                                                    "major_radius 1.2"},
+                      Mapping{Warp::Kind::Planar, "planar y, 0.3"}}) {
+        Pigment q = base;
+        Warp mw;
+        mw.kind = m.kind;
+        mw.orientation = {0, 1, 0};
+        mw.dist_exp = m.kind == Warp::Kind::Cylindrical ? 0.5
+                      : m.kind == Warp::Kind::Spherical ? 1.0 : 0.7;
+        mw.major_radius = 1.2;
+        mw.plane_offset = 0.3;
+        q.pattern.warps.push_back(mw);
+        EXPECT_LE(max_pigment_error(g + " warp { " + m.pov + " }", q, view), kTol) << m.pov;
+    }
+}
+
 TEST(PatternVsPovray, MandelAndQuilted) {
     test::TopView view;
     view.extent = 3;
