@@ -1,3 +1,8 @@
+// Tables: the hash permutation, the generator-3 gradients and permutation, the wave
+// sources/frequencies and the pattern random table are all generated here the way POV-Ray
+// 3.7 generates them (its 31-bit LCG, and MT19937 with the default seed for the pattern
+// random table). Only the lattice-noise value table (noise_rtable.inc) is literal data: 3.7
+// ships it as numbers that do not come from any of its generators.
 #include "trace/noise.h"
 
 #include <algorithm>

@@ -159,6 +159,24 @@ TEST(PatternVsPovray, TurbulentPatterns) {
     EXPECT_LE(max_pigment_error("spiral2 3" + kGrey, spiral2), kTol);
 }
 
+TEST(PatternVsPovray, MarbleIgnoresWarpTurbulenceButIsWarped) {
+    Pigment m = patterned(PatternKind::Marble);
+    m.pattern.wave = WaveType::Triangle;
+    Warp w = classic_turb({0.7, 0.7, 0.7});
+    w.classic = false;
+    m.pattern.warps.push_back(w);
+    EXPECT_LE(max_pigment_error("marble" + kGrey + " warp { turbulence 0.7 }", m), kTol);
+    // Classic and warp turbulence together: the classic one is applied last.
+    Pigment b = patterned(PatternKind::Bozo);
+    b.pattern.warps.push_back(classic_turb({0.3, 0.3, 0.3}));
+    Warp extra = classic_turb({0.9, 0.1, 0.4});
+    extra.classic = false;
+    b.pattern.warps.push_back(extra);
+    EXPECT_LE(max_pigment_error("bozo" + kGrey + " turbulence 0.3 warp { turbulence <0.9,0.1,0.4> }",
+                                b),
+              kTol);
+}
+
 TEST(PatternVsPovray, WarpTurbulenceAndTransform) {
     Pigment p = patterned(PatternKind::Bozo);
     Warp w = classic_turb({0.6, 0.3, 0.9}, 4, 0.7, 1.9);

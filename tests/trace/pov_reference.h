@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -72,16 +73,19 @@ inline RgbImage render_with_povray(const std::string& scene, int size) {
     fs::path dir = fs::path(POVWALL_TEST_CACHE_DIR) / "pov_refs";
     fs::create_directories(dir);
     std::string key = std::to_string(std::hash<std::string>{}(scene + std::to_string(size)));
-    fs::path pov = dir / (key + ".pov"), ppm = dir / (key + ".ppm");
+    // Per-process scratch names: test processes may run in parallel.
+    std::string scratch = key + "." + std::to_string(getpid());
+    fs::path pov = dir / (scratch + ".pov"), ppm = dir / (key + ".ppm");
     if (!fs::exists(ppm)) {
         std::ofstream(pov) << scene;
         std::ostringstream cmd;
         cmd << "povray +W" << size << " +H" << size << " -D -A +FP16 File_Gamma=1.0 -GA +I"
-            << pov.string() << " +O" << dir.string() << "/" << key << ".tmp.ppm >/dev/null 2>&1";
+            << pov.string() << " +O" << dir.string() << "/" << scratch << ".tmp.ppm >/dev/null 2>&1";
         if (std::system(cmd.str().c_str()) != 0) {
             throw std::runtime_error("povray failed on " + pov.string());
         }
-        fs::rename(dir / (key + ".tmp.ppm"), ppm);
+        fs::rename(dir / (scratch + ".tmp.ppm"), ppm);
+        fs::remove(pov);
     }
     return read_ppm16(ppm.string());
 }
