@@ -119,6 +119,8 @@ int run_compare(int argc, char** argv) {
     app.add_option("-L", o.library_paths, "include folder (repeatable)");
     app.add_option("--threads", threads, "threads for both renderers (0: all cores)");
     app.add_flag("--json", json, "print one JSON object");
+    app.add_option("--boxes", o.boxes, "povwall's black boxes (see render --boxes)")
+        ->capture_default_str();
     app.add_option("--keep", keep, "folder to keep both images in");
     std::string cache;
     bool warn_ok = false;
