@@ -17,6 +17,7 @@
 
 #include "cli/options.h"
 #include "output/diff.h"
+#include "output/image_io.h"
 #include "parser/parser.h"
 
 extern char** environ;
@@ -121,7 +122,10 @@ int run_compare(int argc, char** argv) {
     app.add_flag("--json", json, "print one JSON object");
     app.add_option("--boxes", o.boxes, "povwall's black boxes (see render --boxes)")
         ->capture_default_str();
-    app.add_option("--keep", keep, "folder to keep both images in");
+    app.add_option(
+        "--keep", keep,
+        "folder to keep both images (SCENE-povray.png, SCENE-povwall.png) and their "
+        "difference (SCENE-diff.png) in");
     std::string cache;
     bool warn_ok = false;
     app.add_option(
@@ -242,7 +246,20 @@ int run_compare(int argc, char** argv) {
     if (our_rc != 0) return our_rc;
     double pov_s = std::chrono::duration<double>(t1 - t0).count();
     double our_s = std::chrono::duration<double>(t3 - t2).count();
-    output::DiffResult r = output::diff_files(our_png, pov_png, t);
+    output::DiffResult r;
+    try {
+        Image ours = output::read_image(our_png), theirs = output::read_image(pov_png);
+        r = output::diff_images(ours, theirs, t);
+        if (!keep.empty() && r.status != output::DiffResult::Status::SizeMismatch) {
+            OutputEncoding raw;  // |povwall - povray| as values, for looking at
+            raw.gamma_handling = false;
+            output::write_image(output::difference_image(ours, theirs),
+                                (dir / (stem + "-diff.png")).string(), raw);
+        }
+    } catch (const output::ImageIoError& e) {
+        r.status = output::DiffResult::Status::Unreadable;
+        r.error = e.what();
+    }
     if (json) {
         nlohmann::json j = diff_json(r);
         j["povwall_seconds"] = our_s;

@@ -285,7 +285,10 @@ TEST(Cli, CompareReportsBothRendersAsJson) {
                                  "camera { location <0, 0, -3> look_at 0 }\n"
                                  "light_source { <2, 3, -4> color rgb 1 }\n"
                                  "sphere { 0, 1 pigment { color rgb <1, 0.5, 0.2> } }\n");
-    RunResult r = run("compare " + scene.string() + " -W 32 -H 24 --threads 1 --json");
+    fs::path keep = scratch() / "keep";
+    fs::remove_all(keep);
+    RunResult r = run("compare " + scene.string() +
+                      " -W 32 -H 24 --threads 1 --json --keep " + keep.string());
     ASSERT_EQ(r.code, 0) << r.err << r.out;
     nlohmann::json j = nlohmann::json::parse(r.out);
     for (const char* key : {"rmse", "psnr", "max_abs", "bad_pixel_fraction", "width",
@@ -297,6 +300,9 @@ TEST(Cli, CompareReportsBothRendersAsJson) {
     EXPECT_EQ(j["scene"], scene.string());
     EXPECT_GT(j["povray_seconds"].get<double>(), 0.0);
     EXPECT_LE(j["rmse"].get<double>(), 0.01);
+    for (const char* f : {"cmp-povray.png", "cmp-povwall.png", "cmp-diff.png"}) {
+        EXPECT_EQ(povwall::output::read_image((keep / f).string()).width, 32) << f;
+    }
 }
 
 TEST(Cli, CompareWithoutPovRaySaysWhyAndExitsWithCTestSkipCode) {
