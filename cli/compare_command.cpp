@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -189,6 +190,14 @@ int run_compare(int argc, char** argv) {
         cmd.push_back("-A");
     }
     if (o.render.alpha) cmd.push_back("+UA");
+    // Partial renders: POV-Ray writes the full-size image with the rest black, as
+    // povwall.
+    for (const auto& sw : pov_switches) {
+        std::string head = sw.substr(1, 2);
+        for (char& c : head) c = char(std::toupper((unsigned char)c));
+        if (head == "SR" || head == "ER" || head == "SC" || head == "EC")
+            cmd.push_back(sw);
+    }
     std::string scene_dir = fs::path(o.scene).parent_path().string();
     cmd.push_back("+L" + (scene_dir.empty() ? std::string(".") : scene_dir));
     for (const auto& l : o.library_paths) cmd.push_back("+L" + l);
