@@ -104,8 +104,10 @@ const LayeredTexture& texture_of(const Material& m) {
 
 }  // namespace
 
-Rgb interior_attenuation(const Interior& in, Real distance) {
-    if (in.fade_distance <= 0 || in.fade_power <= 0) return Rgb(1.0f);
+Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray) {
+    // POV-Ray tests fade_power > 0 only on shadow rays (ComputeShadowTexture).
+    if (std::fabs(in.fade_distance) <= kPovEpsilon) return Rgb(1.0f);
+    if (shadow_ray && in.fade_power <= 0) return Rgb(1.0f);
     Rgb fc = in.fade_colour;
     if (in.fade_power >= 1000) {
         auto e = [&](float c) { return float(std::exp(-(1 - c) * distance / in.fade_distance)); };
@@ -269,6 +271,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                     ChildRay child;
                     child.kind = ChildRay::Kind::Shadow;
                     child.trace.ray = {P, to / d};
+                    child.trace.interiors = ray.interiors;
                     child.trace.depth = ray.depth;
                     child.trace.use = RayUse::Shadow;
                     child.t_max = d;
@@ -282,6 +285,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         ChildRay child;
         child.kind = ChildRay::Kind::Shadow;
         child.trace.ray = {P, s.dir};
+        child.trace.interiors = ray.interiors;
         child.trace.depth = ray.depth;
         child.trace.use = RayUse::Shadow;
         child.t_max = s.distance;
@@ -315,7 +319,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         // by the distance the incoming ray travelled in it (only the transmitted part).
         Rgb att(1.0f);
         if (ray.interiors.contains(m.object) && m.interior) {
-            att = interior_attenuation(*m.interior, hit.t);
+            att = interior_attenuation(*m.interior, hit.t, false);
             child.coeff *= att;
             child.transmit_factor *= att.grey();
         }
@@ -375,6 +379,9 @@ Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, Ray
         return Rgb{};
     }
     if (!transparent) return filter;
+    // The shadow ray starts inside whatever the lit ray was inside, and enters or leaves each
+    // transparent object it crosses: the stretch inside an object fades with its interior.
+    InteriorStack inside = shadow.trace.interiors;
     for (int guard = 0; guard < 256; ++guard) {
         if (remaining <= 2 * kShadowTolerance) break;
         Hit hit;
@@ -385,14 +392,19 @@ Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, Ray
         const Material& m = *hit.material;
         if (m.opaque) return Rgb{};
         for (const Texture& t : texture_of(m)) {
-            Colour c = eval_pigment(scene, t.pigment, hit.point);
-            if (std::fabs(c.filter) + std::fabs(c.transmit) < adc) return Rgb{};
-            filter *= rgb_transm(c);
+            filter *= rgb_transm(eval_pigment(scene, t.pigment, hit.point));
+        }
+        if (inside.contains(m.object)) {
+            if (m.interior) filter *= interior_attenuation(*m.interior, hit.t, true);
+            inside.remove(m.object);
+        } else {
+            inside.push(&m);
         }
         if (filter.max_component() <= 0) return Rgb{};
         ray.origin = hit.point;
         remaining -= hit.t;
     }
+    (void)adc;
     return filter;
 }
 

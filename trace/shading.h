@@ -89,8 +89,9 @@ TraceResult combine_children(const ShadingRecord& record, const TraceResult* res
 // (1e-3, distance - 1e-3), filters multiply, opaque blocks.
 Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx);
 
-// POV-Ray 3.7's interior fade after `distance` inside a medium.
-Rgb interior_attenuation(const Interior& in, Real distance);
+// POV-Ray 3.7's interior fade after `distance` inside a medium (camera/secondary rays and
+// shadow rays differ in one test, hence the flag).
+Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray);
 
 // Colour of a ray that hits nothing (background or sky_sphere).
 TraceResult miss_colour(const PreparedScene& scene, const Ray& ray);
