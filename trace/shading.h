@@ -25,8 +25,8 @@ struct InteriorStack {
     const Material* items[kCapacity] = {};
     int size = 0;
     bool contains(const Object* o) const {
-        for (int i = 0; i < size; ++i)
-            if (items[i]->object == o) return true;
+        for (int i = 0; i < size && i < kCapacity; ++i)
+            if (items[i] && items[i]->object == o) return true;
         return false;
     }
     void push(const Material* m) {
@@ -35,7 +35,7 @@ struct InteriorStack {
     void remove(const Object* o) {
         for (int i = 0; i < size; ++i) {
             if (items[i]->object == o) {
-                for (int j = i; j + 1 < size; ++j) items[j] = items[j + 1];
+                for (int j = i; j + 1 < size && j + 1 < kCapacity; ++j) items[j] = items[j + 1];
                 --size;
                 return;
             }
