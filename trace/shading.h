@@ -66,6 +66,11 @@ struct ChildRay {
     Rgb coeff{1.0f};         // contribution factor of the child's result
     float exponent = 1;      // reflection: result is coeff * pow(child, 1/exponent)
     float transmit_factor = 0;  // transmission: share of the child's transmit that shows
+    // Area-light shadow: the child stands for POV-Ray's whole adaptive sample grid of light
+    // `light`; its result is the grid's averaged transmittance. The grid refinement depends
+    // on sample results (a documented non-linear case), so it is evaluated as one unit.
+    bool area = false;
+    Rgb light_colour{1.0f};  // attenuated light colour (area-light refinement threshold)
 };
 
 struct ShadingRecord {
@@ -85,8 +90,10 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
 // reflection/transmission, the light's transmittance (rgb) for shadow rays.
 TraceResult combine_children(const ShadingRecord& record, const TraceResult* results);
 
-// Transmittance of the segment toward a light (shadow ray), POV-Ray's rules: hits in
-// (1e-3, distance - 1e-3), filters multiply, opaque blocks.
+// Transmittance toward a light (shadow ray), POV-Ray's rules: hits in (1e-3, distance -
+// 1e-3), filters multiply, opaque blocks, interior fade between entering and leaving. For an
+// area light (`shadow.area`), the adaptive grid average (TraceAreaLightShadowRay's rules:
+// corners first, quadrants refined while level < adaptive or corners differ by > 0.1).
 Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx);
 
 // POV-Ray 3.7's interior fade after `distance` inside a medium (camera/secondary rays and

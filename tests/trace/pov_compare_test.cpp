@@ -279,7 +279,6 @@ TEST(PovCompare, AreaLightGridNoJitter) {
     al.axis2 = {0, 0, 2};
     al.size1 = 5;
     al.size2 = 4;
-    al.adaptive = 100;  // POV-Ray's default when `adaptive` is absent
     a.area = al;
     s.lights.push_back(a);
     Light b = point_light({3, 4, -4}, {0.5f, 0.5f, 0.5f});
@@ -291,14 +290,57 @@ TEST(PovCompare, AreaLightGridNoJitter) {
     bl.adaptive = 1;
     b.area = bl;
     s.lights.push_back(b);
+    // adaptive 0 refines only where corner samples differ; circular + orient reshape the grid.
+    Light c = point_light({0, 3, -2}, {0.4f, 0.3f, 0.2f});
+    AreaLight cl;
+    cl.axis1 = {3, 0, 0};
+    cl.axis2 = {0, 0, 3};
+    cl.size1 = 6;
+    cl.size2 = 6;
+    cl.adaptive = 0;
+    cl.circular = true;
+    cl.orient = true;
+    c.area = cl;
+    s.lights.push_back(c);
     expect_matches("arealight", R"(
 plane { y, -1 pigment { rgb 0.9 } }
 sphere { 0, 0.8 pigment { rgb <0.9,0.3,0.3> } }
 box { <1.2,-1,-0.5>, <1.8,0.8,0.5> pigment { rgb <0.3,0.9,0.3> } }
 light_source { <-2,5,-3> rgb 1 area_light <2,0,0>, <0,0,2>, 5, 4 }
 light_source { <3,4,-4> rgb 0.5 area_light <1.5,0,0>, <0,1.5,0>, 9, 9 adaptive 1 }
+light_source { <0,3,-2> rgb <0.4,0.3,0.2> area_light <3,0,0>, <0,0,3>, 6, 6 adaptive 0
+               circular orient }
 )",
                    s);
+}
+
+// A ball hides only the centre sample of a 3x3 grid from the floor below it: with adaptive 0
+// the equal corners stop the refinement (full light), the default refines (3/4 light).
+TEST(PovCompare, AreaLightAdaptiveRefinement) {
+    for (int adaptive : {0, 100}) {
+        Scene s = base_scene();
+        s.camera.location = {0, 6, -3};
+        s.camera.direction = {0, -1.6, 0.8};
+        s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {tex({0.9f, 0.9f, 0.9f})}));
+        s.objects.push_back(object(Sphere{{0, 2, 0}, 0.3}, {}, {tex({0.9f, 0.3f, 0.3f})}));
+        Light a = point_light({0, 5, 0});
+        AreaLight al;
+        al.axis1 = {4, 0, 0};
+        al.axis2 = {0, 0, 4};
+        al.size1 = 3;
+        al.size2 = 3;
+        al.adaptive = adaptive;
+        a.area = al;
+        s.lights.push_back(a);
+        std::string adaptive_kw = adaptive == 0 ? "adaptive 0" : "";
+        expect_matches("arealight_adaptive" + std::to_string(adaptive), R"(
+#declare Dummy = 0;
+camera { location <0,6,-3> direction <0,-1.6,0.8> right <4/3,0,0> up <0,1,0> }
+plane { y, -1 pigment { rgb 0.9 } }
+sphere { <0,2,0>, 0.3 pigment { rgb <0.9,0.3,0.3> } }
+light_source { <0,5,0> rgb 1 area_light <4,0,0>, <0,0,4>, 3, 3 )" + adaptive_kw + " }\n",
+                       s);
+    }
 }
 
 TEST(PovCompare, AntialiasMethod1NoJitter) {
