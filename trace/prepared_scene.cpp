@@ -281,15 +281,31 @@ bool inside_object(const Object& o, const Point3& p) {
     return in != o.inverse;
 }
 
+Bounds3 object_world_bounds(const Object& obj) { return object_bounds(obj); }
+
 PreparedScene::PreparedScene(const Scene& scene) : scene_(scene) {
+    std::vector<const Object*> all;
+    for (const Object& o : scene.objects) all.push_back(&o);
+    build(all);
+}
+
+PreparedScene::PreparedScene(const Scene& scene, const std::vector<uint32_t>& object_subset)
+    : scene_(scene) {
+    std::vector<const Object*> some;
+    for (uint32_t i : object_subset) some.push_back(&scene.objects[i]);
+    build(some);
+}
+
+void PreparedScene::build(const std::vector<const Object*>& objects) {
+    const Scene& scene = scene_;
     env_.noise_generator = scene.settings.noise_generator;
     size_t leaves = 0;
-    for (const Object& o : scene.objects) leaves += count_leaves(o);
+    for (const Object* o : objects) leaves += count_leaves(*o);
     for (const Light& l : scene.lights) {
         for (const Object& o : l.looks_like) leaves += count_leaves(o);
     }
     materials_.reserve(leaves + 1);
-    for (const Object& o : scene.objects) add_object(o, nullptr);
+    for (const Object* o : objects) add_object(*o, nullptr);
     for (const Light& l : scene.lights) {
         for (const Object& o : l.looks_like) add_object(o, nullptr);
     }

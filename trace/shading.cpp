@@ -343,45 +343,67 @@ TraceResult combine_children(const ShadingRecord& record, const TraceResult* res
     return r;
 }
 
-namespace {
-
-Rgb point_shadow(const PreparedScene& scene, const ChildRay& shadow, Ray ray, Real remaining,
-                 RayContext& ctx) {
-    Rgb filter(1.0f);
-    if (remaining <= 2 * kShadowTolerance) return filter;
+bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
+                    Real light_distance, ShadowState& state, RayContext& ctx) {
+    const Real hi = std::min(segment_end, light_distance - kShadowTolerance);
+    if (state.blocked) return true;
+    if (!(state.t_min < hi)) return false;
     // Most shadow rays meet only opaque blockers or nothing: find out in any order.
     bool transparent = false;
-    if (scene.opaque_blocker(ray, kShadowTolerance, remaining - kShadowTolerance, transparent,
-                             ctx)) {
-        return Rgb{};
+    if (scene.opaque_blocker(ray, state.t_min, hi, transparent, ctx)) {
+        state.blocked = true;
+        state.filter = Rgb{};
+        return true;
     }
-    if (!transparent) return filter;
-    // The shadow ray starts inside whatever the lit ray was inside, and enters or leaves each
-    // transparent object it crosses: the stretch inside an object fades with its interior.
-    InteriorStack inside = shadow.trace.interiors;
-    for (int guard = 0; guard < 256; ++guard) {
-        if (remaining <= 2 * kShadowTolerance) break;
+    if (!transparent) {
+        state.t_min = std::max(state.t_min, hi);
+        return false;
+    }
+    // See-through blockers: each crossing multiplies the light by its filter, nearest first,
+    // the next search starting 1e-3 past the previous hit as POV-Ray's restarted ray does.
+    // The ray enters or leaves each object it crosses; the stretch inside fades with the
+    // object's interior. (No adc_bailout test per layer: POV-Ray's combined shadow texture
+    // always has filter 1, so that test never fires.)
+    for (int guard = 0; guard < 256 && state.t_min < hi; ++guard) {
         Hit hit;
-        if (!scene.closest_hit(ray, kShadowTolerance, remaining - kShadowTolerance,
-                               RayUse::Shadow, hit, ctx)) {
-            break;
-        }
+        if (!scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx)) break;
         const Material& m = *hit.material;
-        if (m.opaque) return Rgb{};
+        bool black = m.opaque;
         for (const Texture& t : texture_of(m)) {
-            filter *= rgb_transm(eval_pigment(scene, t.pigment, hit.point));
+            if (black) break;
+            state.filter *= rgb_transm(eval_pigment(scene, t.pigment, hit.point));
         }
-        if (inside.contains(m.object)) {
-            if (m.interior) filter *= interior_attenuation(*m.interior, hit.t, true);
-            inside.remove(m.object);
-        } else {
-            inside.push(&m);
+        if (!black) {
+            if (state.inside.contains(m.object)) {
+                if (m.interior) {
+                    state.filter *=
+                        interior_attenuation(*m.interior, hit.t - state.last_hit, true);
+                }
+                state.inside.remove(m.object);
+            } else {
+                state.inside.push(&m);
+            }
         }
-        if (filter.max_component() <= 0) return Rgb{};
-        ray.origin = hit.point;
-        remaining -= hit.t;
+        if (black || state.filter.max_component() <= 0) {
+            state.blocked = true;
+            state.filter = Rgb{};
+            return true;
+        }
+        state.last_hit = hit.t;
+        state.t_min = hit.t + kShadowTolerance;
     }
-    return filter;
+    state.t_min = std::max(state.t_min, hi);
+    return false;
+}
+
+namespace {
+
+Rgb point_shadow(const ChildRay& shadow, const PreparedScene& scene, const Ray& ray,
+                 Real distance, RayContext& ctx) {
+    ShadowState state;
+    state.inside = shadow.trace.interiors;
+    shadow_segment(scene, ray, kInfinity, distance, state, ctx);
+    return state.filter;
 }
 
 float colour_distance(const Rgb& a, const Rgb& b) {
@@ -418,7 +440,7 @@ struct AreaSampler {
         }
         Vector3 to = light.location + offset - at;
         Real d = length(to);
-        Rgb t = d > 0 ? point_shadow(scene, shadow, {at, to / d}, d, ctx) : Rgb(1.0f);
+        Rgb t = d > 0 ? point_shadow(shadow, scene, {at, to / d}, d, ctx) : Rgb(1.0f);
         grid[k] = t;
         done[k] = 1;
         return t;
@@ -449,7 +471,7 @@ struct AreaSampler {
 }  // namespace
 
 Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx) {
-    if (!shadow.area) return point_shadow(scene, shadow, shadow.trace.ray, shadow.t_max, ctx);
+    if (!shadow.area) return point_shadow(shadow, scene, shadow.trace.ray, shadow.t_max, ctx);
     const Light& light = scene.scene().lights[shadow.light];
     const AreaLight& area = *light.area;
     const Point3 at = shadow.trace.ray.origin;

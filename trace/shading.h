@@ -90,6 +90,21 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
 // reflection/transmission, the light's transmittance (rgb) for shadow rays.
 TraceResult combine_children(const ShadingRecord& record, const TraceResult* results);
 
+// Shadow ray state carried from box to box: the product of filters met so far, where the
+// search resumes (absolute distance along the ray: the origin is never moved), and the
+// transparent objects the ray is inside of (for their interior fade).
+struct ShadowState {
+    Rgb filter{1.0f};
+    Real t_min = 1e-3;  // POV-Ray's SHADOW_TOLERANCE
+    Real last_hit = 0;  // distance of the previous crossing (fade is per stretch)
+    bool blocked = false;
+    InteriorStack inside;  // start with the lit ray's interiors
+};
+// Advances `state` over hits with t in [state.t_min, min(segment_end, light_distance - 1e-3)).
+// Returns true once the light is fully blocked.
+bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
+                    Real light_distance, ShadowState& state, RayContext& ctx);
+
 // Transmittance toward a light (shadow ray), POV-Ray's rules: hits in (1e-3, distance -
 // 1e-3), filters multiply, opaque blocks, interior fade between entering and leaving. For an
 // area light (`shadow.area`), the adaptive grid average (TraceAreaLightShadowRay's rules:
