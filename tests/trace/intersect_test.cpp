@@ -204,6 +204,22 @@ TEST(Intersect, TorusQuartic) {
     EXPECT_NEAR(h.t, 999, 1e-6);
 }
 
+TEST(Intersect, PolygonWithHoleEvenOdd) {
+    Polygon poly;
+    for (auto [x, y] : {std::pair{0.0, 0.0}, {4.0, 0.0}, {4.0, 4.0}, {0.0, 4.0}, {0.0, 0.0},
+                        {1.0, 1.0}, {3.0, 1.0}, {3.0, 3.0}, {1.0, 3.0}, {1.0, 1.0}}) {
+        poly.points.push_back({x, y, 2});
+    }
+    Scene s = one(object(poly));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0.5, 0.5, 0}, {0, 0, 1}}, h));
+    EXPECT_DOUBLE_EQ(h.t, 2.0);
+    EXPECT_NEAR(std::fabs(h.normal.z), 1.0, 1e-12);
+    EXPECT_FALSE(shoot(s, {{2, 2, 0}, {0, 0, 1}}, h));    // in the hole
+    EXPECT_FALSE(shoot(s, {{4.5, 2, 0}, {0, 0, 1}}, h));  // outside
+    ASSERT_TRUE(shoot(s, {{3.5, 2, 0}, {0, 0, 1}}, h));   // ring between hole and edge
+}
+
 TEST(Intersect, QuarticSolverRoots) {
     // (x-1)(x-2)(x-3)(x-4) = x^4 - 10x^3 + 35x^2 - 50x + 24
     Real c[5] = {24, -50, 35, -10, 1};

@@ -232,6 +232,19 @@ TEST(PovCompare, ShapesAndCsg) {
                                Transform::translate({-1.2, 1.3, 0}), {tex({0.9f, 0.9f, 0.2f})}));
     s.objects.push_back(object(Triangle{{{0.6, 1, 0}, {1.6, 1.6, 0.5}, {1.2, 0.7, -0.5}}}, {},
                                {tex({0.9f, 0.2f, 0.6f})}));
+    Polygon poly;
+    for (auto [x, y] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}, {0.0, 0.0},
+                        {0.25, 0.25}, {0.75, 0.25}, {0.75, 0.75}, {0.25, 0.75}, {0.25, 0.25}}) {
+        poly.points.push_back({x, y, 0});
+    }
+    s.objects.push_back(object(poly,
+                               Transform::rotate({0, -20, 0}).then(Transform::translate({-3, 1, 0})),
+                               {tex({0.4f, 0.9f, 0.9f})}));
+    Finish shiny;
+    shiny.phong = 0.8f;
+    s.objects.push_back(object(SmoothTriangle{{{2.0, 1.0, -0.5}, {3.0, 1.2, 0.0}, {2.4, 2.0, 0.2}},
+                                              {{-0.5, 0.2, -1}, {0.6, 0.1, -1}, {0, 0.8, -1}}},
+                               {}, {tex({0.9f, 0.9f, 0.9f}, shiny)}));
     Object diff;
     Csg d;
     d.kind = CsgKind::Difference;
@@ -255,6 +268,10 @@ cone { <-2.6,-1,1>, 0.7, <-2.6,0.8,1>, 0.2 open pigment { rgb <0.9,0.5,0.1> } }
 torus { 0.6, 0.2 rotate <-60,0,0> translate <2.4,0.2,1> pigment { rgb <0.2,0.7,0.9> } }
 disc { <0,0,0>, <0,0,-1>, 0.5, 0.2 translate <-1.2,1.3,0> pigment { rgb <0.9,0.9,0.2> } }
 triangle { <0.6,1,0>, <1.6,1.6,0.5>, <1.2,0.7,-0.5> pigment { rgb <0.9,0.2,0.6> } }
+polygon { 10, <0,0>, <1,0>, <1,1>, <0,1>, <0,0>, <0.25,0.25>, <0.75,0.25>, <0.75,0.75>,
+          <0.25,0.75>, <0.25,0.25> rotate <0,-20,0> translate <-3,1,0> pigment { rgb <0.4,0.9,0.9> } }
+smooth_triangle { <2,1,-0.5>, <-0.5,0.2,-1>, <3,1.2,0>, <0.6,0.1,-1>, <2.4,2,0.2>, <0,0.8,-1>
+                  pigment { rgb 0.9 } finish { phong 0.8 } }
 difference {
   box { <-1.5,-1,-0.5>, <-0.5,0,0.5> pigment { rgb <0.8,0.8,0.3> } }
   sphere { <-1,0,-0.5>, 0.6 pigment { rgb <0.9,0.2,0.2> } }
