@@ -32,6 +32,8 @@ public:
     void unget(const Token& t);
     bool accept_punct(char c);
     bool accept_word(std::string_view w);
+    bool accept_raw_word(std::string_view w);
+    bool accept_raw_punct(char c);  // without running a directive behind it
     bool accept_semicolon();
     void expect_punct(char c, std::string_view what = {});
     bool is_punct(const Token& t, char c) const {
@@ -54,7 +56,8 @@ public:
 
     // ---- expressions (expressions.cpp)
     Value parse_expression_value();       // float, vector, colour or string
-    Numeric parse_numeric(bool no_gt = false);
+    Numeric parse_numeric(bool no_gt = false);  // POV-Ray's Parse_Float/Vector level
+    Numeric parse_express();                    // full expression (Parse_Express)
     double parse_float();
     // A directive's parenthesised condition; reads nothing past the ')' so that the tokens
     // after it are not consumed before the directive decides whether to skip them.
@@ -63,7 +66,8 @@ public:
     std::string parse_string();
     Numeric parse_colour();               // colour keyword forms, rgb, identifiers
     Colour parse_colour_value();
-    bool parse_bool_opt();                // optional boolean after a flag keyword
+    bool parse_bool_opt();
+    bool starts_float(const Token& t);  // can `t` begin a float expression?                // optional boolean after a flag keyword
 
     // ---- scene items (objects.cpp, textures.cpp, scene_items.cpp)
     bool try_parse_object(const Token& t, Object& out);
@@ -74,6 +78,7 @@ public:
     void apply_transform(Object& obj, const Transform& t);
     LayeredTexture parse_texture_block();   // after 'texture'
     Pigment parse_pigment_block();          // after 'pigment'
+    void parse_pigment_body(Pigment& p, char terminator);
     Finish parse_finish_block();            // after 'finish'
     Normal parse_normal_block();            // after 'normal'
     Interior parse_interior_block();        // after 'interior'
@@ -86,8 +91,8 @@ public:
     Value parse_declared_value(const Token& first);
     Value parse_item_value(const Token& t);
     Camera finish_camera(const CameraSpec& spec);
-    void parse_sky_sphere();
-    void parse_fog();
+    SkySphere parse_sky_sphere();
+    Fog parse_fog();
     void parse_mesh(Object& out);
     void parse_mesh2(Object& out);
     int new_random_stream(int seed);
@@ -123,6 +128,9 @@ private:
     using Scope = std::unordered_map<std::string, Binding>;
 
     Token next_raw();
+    // `A[i][j]` read as one token standing for the element (see next()).
+    Token subscript_token(const Token& name, const ArrayValue& array);
+    void skip_declaration_rest();
     void run_directive(const Token& t);
     void directive_if(const Token& t, bool taken_value);
     void skip_conditional(const Token& at, bool stop_at_else);
@@ -156,6 +164,8 @@ private:
     bool camera_seen_ = false;
     Texture default_texture_;
     std::string scene_dir_;
+    std::vector<std::string> element_names_;  // rotating names bound to array elements
+    size_t next_element_name_ = 0;
     friend class ExpressionParser;
 };
 

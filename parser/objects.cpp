@@ -72,7 +72,7 @@ bool Interpreter::try_transform(const Token& t, Transform& out) {
         expect_punct('<', "to start the 12 matrix values");
         Real m[12];
         for (int i = 0; i < 12; ++i) {
-            if (i) expect_punct(',', "between matrix values");
+            if (i) accept_punct(',');
             m[i] = parse_numeric(true).c[0];
         }
         expect_punct('>', "after the 12 matrix values");
@@ -245,7 +245,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             Sphere s;
             s.centre = parse_vector();
-            expect_punct(',', "between the sphere's centre and radius");
+            accept_punct(',');
             s.radius = parse_float();
             out.shape = s;
         }
@@ -254,7 +254,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             Box b;
             b.corner1 = parse_vector();
-            expect_punct(',', "between the box corners");
+            accept_punct(',');
             b.corner2 = parse_vector();
             out.shape = b;
         }
@@ -266,7 +266,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             Vector3 n = parse_vector();
             if (length(n) < 1e-10) error(at, "degenerate plane normal");
             p.normal = normalize(n);
-            expect_punct(',', "between the plane's normal and distance");
+            accept_punct(',');
             p.distance = parse_float();
             out.shape = p;
         }
@@ -275,9 +275,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             Cylinder c;
             c.base = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             c.cap = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             c.radius = parse_float();
             out.shape = c;
         }
@@ -286,11 +286,11 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             Cone c;
             c.base = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             c.base_radius = parse_float();
-            expect_punct(',');
+            accept_punct(',');
             c.cap = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             c.cap_radius = parse_float();
             out.shape = c;
         }
@@ -299,7 +299,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             Torus tor;
             tor.major = parse_float();
-            expect_punct(',');
+            accept_punct(',');
             tor.minor = parse_float();
             out.shape = tor;
         }
@@ -308,9 +308,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             Disc d;
             d.centre = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             d.normal = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             d.radius = parse_float();
             if (accept_punct(',')) d.hole_radius = parse_float();
             out.shape = d;
@@ -320,7 +320,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             Triangle tri;
             for (int i = 0; i < 3; ++i) {
-                if (i) expect_punct(',');
+                if (i) accept_punct(',');
                 tri.p[i] = parse_vector();
             }
             out.shape = tri;
@@ -330,9 +330,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             SmoothTriangle tri;
             for (int i = 0; i < 3; ++i) {
-                if (i) expect_punct(',');
+                if (i) accept_punct(',');
                 tri.p[i] = parse_vector();
-                expect_punct(',');
+                accept_punct(',');
                 tri.n[i] = parse_vector();
             }
             out.shape = tri;
@@ -343,7 +343,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             Polygon poly;
             int n = int(parse_float());
             for (int i = 0; i < n; ++i) {
-                expect_punct(',');
+                accept_punct(',');
                 poly.points.push_back(parse_vector());
             }
             out.shape = poly;
@@ -463,11 +463,15 @@ void Interpreter::parse_top_level_item(const Token& t) {
             return;
         }
         if (w == "sky_sphere") {
-            parse_sky_sphere();
+            scene_.sky_sphere = parse_sky_sphere();
             return;
         }
         if (w == "fog") {
-            parse_fog();
+            scene_.fogs.push_back(parse_fog());
+            return;
+        }
+        if (w == "default") {  // pre-3.0 spelling of #default
+            directive_default();
             return;
         }
         if (w == "media" || w == "atmosphere" || w == "rainbow" || w == "photons" ||
@@ -482,6 +486,18 @@ void Interpreter::parse_top_level_item(const Token& t) {
         }
         const Value* v = lookup(w);
         if (!v) error(t, "undeclared identifier '" + std::string(w) + "'");
+        // Exporters write bare object and light identifiers as statements; POV-Ray takes them.
+        if (auto o = std::get_if<std::shared_ptr<Object>>(v)) {
+            Object copy = **o;
+            copy.loc = sources_.location(t);
+            finish_object(copy);
+            scene_.objects.push_back(std::move(copy));
+            return;
+        }
+        if (auto l = std::get_if<std::shared_ptr<Light>>(v)) {
+            scene_.lights.push_back(**l);
+            return;
+        }
         error(t, "a " + std::string(type_name(*v)) + " identifier '" + std::string(w) +
                      "' cannot stand alone here (use object { " + std::string(w) + " })");
     }

@@ -153,11 +153,11 @@ Light Interpreter::parse_light_block() {
         } else if (w == "area_light") {
             AreaLight a;
             a.axis1 = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             a.axis2 = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             a.size1 = int(parse_float());
-            expect_punct(',');
+            accept_punct(',');
             a.size2 = int(parse_float());
             l.area = a;
         } else if (w == "adaptive" && l.area) l.area->adaptive = int(parse_float());
@@ -224,9 +224,17 @@ void Interpreter::parse_global_settings() {
     }
 }
 
-void Interpreter::parse_sky_sphere() {
+SkySphere Interpreter::parse_sky_sphere() {
     expect_punct('{', "after 'sky_sphere'");
     SkySphere sky;
+    const Token& first = peek();
+    if (first.kind == TokenKind::Word) {
+        const Value* v = lookup(first.text);
+        if (v && std::holds_alternative<std::shared_ptr<SkySphere>>(*v)) {
+            next();
+            sky = *std::get<std::shared_ptr<SkySphere>>(*v);
+        }
+    }
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) break;
@@ -243,12 +251,20 @@ void Interpreter::parse_sky_sphere() {
             expected("a pigment or '}' in sky_sphere", t);
         }
     }
-    scene_.sky_sphere = std::move(sky);
+    return sky;
 }
 
-void Interpreter::parse_fog() {
+Fog Interpreter::parse_fog() {
     expect_punct('{', "after 'fog'");
     Fog f;
+    const Token& first = peek();
+    if (first.kind == TokenKind::Word) {
+        const Value* v = lookup(first.text);
+        if (v && std::holds_alternative<std::shared_ptr<Fog>>(*v)) {
+            next();
+            f = *std::get<std::shared_ptr<Fog>>(*v);
+        }
+    }
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) break;
@@ -272,7 +288,7 @@ void Interpreter::parse_fog() {
         else if (w == "octaves" || w == "omega" || w == "lambda") parse_float();
         else expected("a fog item or '}'", t);
     }
-    scene_.fogs.push_back(std::move(f));
+    return f;
 }
 
 void Interpreter::parse_mesh(Object& out) {
@@ -287,11 +303,11 @@ void Interpreter::parse_mesh(Object& out) {
         uint32_t base = uint32_t(mesh.vertices.size());
         Mesh::Face face;
         for (int i = 0; i < 3; ++i) {
-            if (i) expect_punct(',');
+            if (i) accept_punct(',');
             mesh.vertices.push_back(parse_vector());
             face.v[i] = base + i;
             if (smooth) {
-                expect_punct(',');
+                accept_punct(',');
                 face.n[i] = int32_t(mesh.normals.size());
                 mesh.normals.push_back(parse_vector());
             }
@@ -446,7 +462,17 @@ Value Interpreter::parse_item_value(const Token& t) {
         std::string_view w = t.text;
         Object obj;
         if (try_parse_object(t, obj)) return std::make_shared<Object>(std::move(obj));
-        if (w == "texture") return std::make_shared<LayeredTexture>(parse_texture_block());
+        if (w == "texture") {
+            // `#declare T = texture {...} texture {...}` declares a layered texture.
+            LayeredTexture layers = parse_texture_block();
+            while (accept_raw_word("texture")) {
+                LayeredTexture more = parse_texture_block();
+                layers.insert(layers.end(), more.begin(), more.end());
+            }
+            return std::make_shared<LayeredTexture>(std::move(layers));
+        }
+        if (w == "sky_sphere") return std::make_shared<SkySphere>(parse_sky_sphere());
+        if (w == "fog") return std::make_shared<Fog>(parse_fog());
         if (w == "pigment") return std::make_shared<Pigment>(parse_pigment_block());
         if (w == "finish") return std::make_shared<Finish>(parse_finish_block());
         if (w == "normal") return std::make_shared<Normal>(parse_normal_block());
@@ -486,7 +512,7 @@ Value Interpreter::parse_item_value(const Token& t) {
             }
             if (a->dims.empty()) expected("'[' and the array size", peek());
             a->items.resize(total);
-            if (accept_punct('{')) {
+            if (accept_raw_punct('{')) {
                 // Nested braces per dimension; items are filled in row-major order.
                 size_t index = 0;
                 int depth = 1;

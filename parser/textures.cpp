@@ -67,13 +67,13 @@ Numeric Interpreter::parse_colour() {
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
         if (w == "rgb" || w == "srgb") {
             next();
-            set(parse_numeric(), 3, w == "srgb");
+            set(parse_express(), 3, w == "srgb");
         } else if (w == "rgbf" || w == "srgbf") {
             next();
-            set(parse_numeric(), 4, w == "srgbf");
+            set(parse_express(), 4, w == "srgbf");
         } else if (w == "rgbt" || w == "srgbt") {
             next();
-            Numeric v = parse_numeric();
+            Numeric v = parse_express();
             Numeric p = v;
             if (p.size == 1) {
                 for (int i = 1; i < 5; ++i) p.c[i] = p.c[0];
@@ -82,7 +82,7 @@ Numeric Interpreter::parse_colour() {
             c.c[4] = p.c[3];
         } else if (w == "rgbft" || w == "srgbft") {
             next();
-            set(parse_numeric(), 5, w == "srgbft");
+            set(parse_express(), 5, w == "srgbft");
         } else if (w == "red" || w == "green" || w == "blue" || w == "filter" ||
                    w == "transmit") {
             next();
@@ -91,7 +91,7 @@ Numeric Interpreter::parse_colour() {
         } else if (!any && (t.kind == TokenKind::Number || is_punct(t, '<') ||
                             is_punct(t, '(') || is_punct(t, '-') ||
                             (t.kind == TokenKind::Word && lookup(t.text)))) {
-            Numeric v = parse_numeric();
+            Numeric v = parse_express();
             if (v.size == 1) {
                 for (int i = 0; i < 5; ++i) c.c[i] = v.c[0];
             } else {
@@ -208,7 +208,7 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     } else if (w == "poly_wave") {
         spec.wave = WaveType::Poly;
         const Token& n = peek();
-        if (n.kind == TokenKind::Number || is_punct(n, '(')) spec.wave_exponent = parse_float();
+        if (starts_float(n)) spec.wave_exponent = parse_float();
     } else if (w == "noise_generator") {
         spec.noise_generator = int(parse_float());
     } else if (w == "agate_turb") {
@@ -254,6 +254,12 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
 Pigment Interpreter::parse_pigment_block() {
     expect_punct('{', "after 'pigment'");
     Pigment p = default_texture_.pigment;
+    parse_pigment_body(p, '}');
+    return p;
+}
+
+// The inside of `pigment { ... }`, also the entries of a pigment_map (ending at ']').
+void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
         const Value* v = lookup(first.text);
@@ -264,7 +270,7 @@ Pigment Interpreter::parse_pigment_block() {
     }
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return p;
+        if (is_punct(t, terminator)) return;
         if (try_pattern_keyword(t, p.pattern)) {
             // checker/hexagon/brick take their colours or pigments right after the keyword
             if (p.pattern.kind == PatternKind::Checker || p.pattern.kind == PatternKind::Hexagon ||
@@ -309,18 +315,13 @@ Pigment Interpreter::parse_pigment_block() {
                 if (!is_punct(e, '[')) expected("'[' in a pigment_map", e);
                 float v = float(parse_float());
                 accept_punct(',');
-                Token k = next();
-                Pigment sub;
-                if (is_word(k, "pigment")) {
+                Pigment sub = default_texture_.pigment;
+                if (accept_word("pigment")) {
                     sub = parse_pigment_block();
+                    expect_punct(']');
                 } else {
-                    const Value* pv = k.kind == TokenKind::Word ? lookup(k.text) : nullptr;
-                    if (!pv || !std::holds_alternative<std::shared_ptr<Pigment>>(*pv)) {
-                        expected("a pigment in the pigment_map", k);
-                    }
-                    sub = *std::get<std::shared_ptr<Pigment>>(*pv);
+                    parse_pigment_body(sub, ']');
                 }
-                expect_punct(']');
                 p.map_values.push_back(v);
                 p.list.push_back(std::move(sub));
             }
@@ -355,7 +356,7 @@ Normal Interpreter::parse_normal_block() {
         if (is_punct(t, '}')) return n;
         if (try_pattern_keyword(t, n.pattern)) {
             const Token& a = peek();
-            if (a.kind == TokenKind::Number || is_punct(a, '(') || is_punct(a, '-')) {
+            if (starts_float(a)) {
                 n.amount = parse_float();
             }
             continue;
@@ -417,9 +418,7 @@ Finish Interpreter::parse_finish_block() {
         } else if (w == "roughness") {
             f.roughness = float(parse_float());
         } else if (w == "metallic") {
-            const Token& n = peek();
-            f.metallic = (n.kind == TokenKind::Number || is_punct(n, '(')) ? float(parse_float())
-                                                                           : 1.0f;
+            f.metallic = starts_float(peek()) ? float(parse_float()) : 1.0f;
         } else if (w == "reflection") {
             if (accept_punct('{')) {
                 Rgb a = rgb_of(parse_colour());

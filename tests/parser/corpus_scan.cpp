@@ -1,0 +1,51 @@
+// Parses every scene listed in a corpus file and tallies ok / unsupported / error, printing
+// each failure's first line. Usage: parser_corpus LIST EXAMPLES_DIR [-v]
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "parser/parser.h"
+
+int main(int argc, char** argv) {
+    if (argc < 3) {
+        std::cerr << "usage: parser_corpus LIST EXAMPLES_DIR [-v]\n";
+        return 2;
+    }
+    bool verbose = argc > 3;
+    std::ifstream list(argv[1]);
+    std::string rel;
+    int ok = 0, unsupported = 0, errors = 0;
+    while (std::getline(list, rel)) {
+        if (rel.empty() || rel[0] == '#') continue;
+        std::filesystem::path path = std::filesystem::path(argv[2]) / rel;
+        povwall::parser::ParseOptions options;
+        options.library_paths.push_back(path.parent_path().string());
+        if (verbose) options.messages = &std::cerr;
+        auto start = std::chrono::steady_clock::now();
+        std::string status;
+        try {
+            povwall::Scene scene = povwall::parser::parse_scene_file(path.string(), options);
+            ++ok;
+            std::ostringstream s;
+            s << "ok " << scene.objects.size() << " objects";
+            status = s.str();
+        } catch (const povwall::parser::ParseError& e) {
+            std::string first = e.what();
+            first = first.substr(0, first.find('\n'));
+            if (e.kind() == povwall::parser::ParseError::Kind::Unsupported) {
+                ++unsupported;
+                status = "UNSUPPORTED " + first;
+            } else {
+                ++errors;
+                status = "ERROR " + first;
+            }
+        }
+        double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (verbose || status.rfind("ok", 0) != 0)
+            std::cout << rel << ": " << status << " (" << secs << " s)\n";
+    }
+    std::cout << "ok " << ok << "  unsupported " << unsupported << "  error " << errors << "\n";
+    return 0;
+}
