@@ -539,6 +539,12 @@ void Interpreter::directive_end(const Token& t) {
 
 void Interpreter::directive_declare(const Token& t, bool local) {
     Token name = next_raw();
+    if (is_word(name, "deprecated")) {
+        // #declare deprecated [once] ["message"] NAME = ...: the note is for POV-Ray's console.
+        name = next_raw();
+        if (is_word(name, "once")) name = next_raw();
+        if (name.kind == TokenKind::String) name = next_raw();
+    }
     if (name.kind != TokenKind::Word) expected("an identifier after #" + std::string(t.text), name);
     std::string key(name.text);
     // Element assignment: #declare A[i][j] = value

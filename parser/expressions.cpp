@@ -547,6 +547,11 @@ Value ExpressionParser::word(const Token& t) {
         in_.unget(t);
         return in_.parse_colour();
     }
+    static const char* const kUnsupportedFunctions[] = {"vturbulence", "trace", "inside",
+                                                        "eval_pigment", "now", "datetime"};
+    for (const char* f : kUnsupportedFunctions) {
+        if (w == f) in_.unsupported(t, w);
+    }
     if (w.find('[') != std::string_view::npos) {
         in_.error(t, "array element '" + std::string(w) + "' used before it was set");
     }

@@ -77,6 +77,7 @@ public:
     Transform parse_transform_block();
     void apply_transform(Object& obj, const Transform& t);
     LayeredTexture parse_texture_block();   // after 'texture'
+    void parse_texture_body(LayeredTexture& layers, char terminator);
     Pigment parse_pigment_block();          // after 'pigment'
     void parse_pigment_body(Pigment& p, char terminator);
     Finish parse_finish_block();            // after 'finish'

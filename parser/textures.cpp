@@ -511,6 +511,12 @@ Interior Interpreter::parse_interior_block() {
 LayeredTexture Interpreter::parse_texture_block() {
     expect_punct('{', "after 'texture'");
     LayeredTexture layers;
+    parse_texture_body(layers, '}');
+    return layers;
+}
+
+// The inside of `texture { ... }`; also a texture_map entry (ending at ']').
+void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
         const Value* v = lookup(first.text);
@@ -522,27 +528,64 @@ LayeredTexture Interpreter::parse_texture_block() {
     if (layers.empty()) layers.push_back(default_texture_);
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return layers;
+        if (is_punct(t, terminator)) return;
         Transform tr;
         if (try_transform(t, tr)) {
             transform_textures(layers, tr);
             continue;
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        Texture& top = layers.back();
         if (w == "pigment") {
-            layers.back().pigment = parse_pigment_block();
+            top.pigment = parse_pigment_block();
         } else if (w == "finish") {
-            layers.back().finish = parse_finish_block();
+            top.finish = parse_finish_block();
         } else if (w == "normal") {
-            layers.back().normal = parse_normal_block();
-        } else if (w == "texture_map" || w == "material_map" || w == "tiles") {
-            unsupported(t, w);
-        } else {
-            PatternSpec probe;
-            if (t.kind == TokenKind::Word && (try_pattern_keyword(t, probe))) {
-                unsupported(t, "patterned texture (texture_map)");
+            top.normal = parse_normal_block();
+        } else if (w == "texture_map") {
+            if (!top.map_pattern) expected("a pattern before texture_map", t);
+            expect_punct('{', "after 'texture_map'");
+            top.map.clear();
+            top.map_values.clear();
+            for (;;) {
+                Token e = next();
+                if (is_punct(e, '}')) break;
+                if (!is_punct(e, '[')) expected("'[' or '}' in a texture_map", e);
+                float value = float(parse_float());
+                accept_punct(',');
+                LayeredTexture entry;
+                if (accept_word("texture")) {
+                    entry = parse_texture_block();
+                    expect_punct(']', "to close the texture_map entry");
+                } else {
+                    parse_texture_body(entry, ']');
+                }
+                top.map_values.push_back(value);
+                top.map.push_back(std::move(entry));
             }
-            expected("a texture item or '}'", t);
+        } else if (w == "material_map" || w == "tiles" || w == "uv_mapping" ||
+                   w == "image_pattern") {
+            unsupported(t, w);
+        } else if (top.map_pattern && try_pattern_modifier(t, *top.map_pattern)) {
+            continue;
+        } else {
+            PatternSpec spec;
+            if (t.kind == TokenKind::Word && try_pattern_keyword(t, spec)) {
+                top.map_pattern = spec;
+                if (spec.kind == PatternKind::Checker || spec.kind == PatternKind::Hexagon ||
+                    spec.kind == PatternKind::Brick) {
+                    // checker texture{..} texture{..}: entries follow the keyword.
+                    int count = spec.kind == PatternKind::Hexagon ? 3 : 2;
+                    for (int i = 0; i < count; ++i) {
+                        if (i) accept_punct(',');
+                        if (!accept_word("texture")) break;
+                        top.map.push_back(parse_texture_block());
+                        top.map_values.push_back(float(i));
+                    }
+                }
+                continue;
+            }
+            expected("a texture item or '" + std::string(1, terminator) + "'", t);
         }
     }
 }
