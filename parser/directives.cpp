@@ -111,6 +111,11 @@ Token Interpreter::subscript_token(const Token& name, const ArrayValue& array) {
     if (!slot.empty()) scopes_[0].erase(slot);
     slot = label;
     const Value& item = array.items[flat];
+    if (auto u = std::get_if<std::shared_ptr<UnsupportedValue>>(&item)) {
+        Token whole = name;
+        whole.length = end_offset - name.offset;
+        unsupported(whole, (*u)->feature);
+    }
     if (!std::holds_alternative<std::monostate>(item)) scopes_[0][slot].value = item;
     Token t = name;
     t.text = slot;
@@ -614,8 +619,9 @@ void Interpreter::skip_declaration_rest() {
             ++depth;
         } else if (c == '}' || c == ')' || c == ']') {
             if (--depth <= 0) {
-                if (c == '}') return;
                 depth = 0;
+                // A layered texture continues with another `texture {`.
+                if (c == '}' && !(f.pos < f.end && is_word(toks[f.pos], "texture"))) return;
             }
         } else if (c == ';' && depth == 0) {
             --f.pos;  // left for accept_semicolon

@@ -257,7 +257,8 @@ private:
             r.c[r.size++] = c.c[0];
             // Commas between components are optional, as POV-Ray reads `< -1 0 0 >`.
             if (in_.accept_punct('>')) break;
-            in_.accept_punct(',');
+            // A trailing comma before '>' is accepted too.
+            if (in_.accept_punct(',') && in_.accept_punct('>')) break;
         }
         if (r.size < 2) in_.error(open, "a vector needs at least 2 components");
         return r;
@@ -559,6 +560,7 @@ Value ExpressionParser::word(const Token& t) {
 }
 
 Value Interpreter::parse_expression_value() { return ExpressionParser(*this, false).parse(); }
+Value Interpreter::parse_value_additive() { return ExpressionParser(*this, false, false).parse(); }
 
 Numeric Interpreter::parse_numeric(bool no_gt) {
     Token at = peek();

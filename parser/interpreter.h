@@ -56,6 +56,7 @@ public:
 
     // ---- expressions (expressions.cpp)
     Value parse_expression_value();       // float, vector, colour or string
+    Value parse_value_additive();         // same without comparisons (array items)
     Numeric parse_numeric(bool no_gt = false);  // POV-Ray's Parse_Float/Vector level
     Numeric parse_express();                    // full expression (Parse_Express)
     double parse_float();
@@ -82,6 +83,7 @@ public:
     void parse_pigment_body(Pigment& p, char terminator);
     Finish parse_finish_block();            // after 'finish'
     Normal parse_normal_block();            // after 'normal'
+    void parse_normal_body(Normal& n, char terminator);
     Interior parse_interior_block();        // after 'interior'
     ColourMap parse_colour_map_block();     // after 'color_map'
     bool try_pattern_keyword(const Token& t, PatternSpec& spec);

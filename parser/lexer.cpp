@@ -99,7 +99,9 @@ void lex(const SourceManager& sm, int file_index, SourceFile& f) {
                 i = j;
                 continue;
             }
-            lex_error(sm, file_index, uint32_t(start), 1, "expected a directive name after '#'");
+            // A stray '#' before a line break or brace: POV-Ray reads past it.
+            ++i;
+            continue;
         }
         if (c == '"') {
             ++i;

@@ -117,6 +117,7 @@ Light Interpreter::parse_light_block() {
         l.colour = c.rgb;
     }
     bool radius_set = false, falloff_set = false;
+    bool jitter = false, circular = false, orient = false;
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) break;
@@ -161,9 +162,10 @@ Light Interpreter::parse_light_block() {
             a.size2 = int(parse_float());
             l.area = a;
         } else if (w == "adaptive" && l.area) l.area->adaptive = int(parse_float());
-        else if (w == "jitter" && l.area) l.area->jitter = true;
-        else if (w == "circular" && l.area) l.area->circular = true;
-        else if (w == "orient" && l.area) l.area->orient = true;
+        // These may come before area_light; kept and applied at the end.
+        else if (w == "jitter") jitter = true;
+        else if (w == "circular") circular = true;
+        else if (w == "orient") orient = true;
         else if (w == "area_illumination") parse_bool_opt();
         else if (w == "looks_like" || w == "projected_through") {
             if (w == "projected_through") unsupported(t, w);
@@ -182,6 +184,11 @@ Light Interpreter::parse_light_block() {
         } else {
             expected("a light_source item or '}'", t);
         }
+    }
+    if (l.area) {
+        l.area->jitter = l.area->jitter || jitter;
+        l.area->circular = l.area->circular || circular;
+        l.area->orient = l.area->orient || orient;
     }
     return l;
 }
@@ -286,7 +293,11 @@ Fog Interpreter::parse_fog() {
         else if (w == "turbulence") f.turbulence = parse_vector();
         else if (w == "turb_depth") f.turb_depth = parse_float();
         else if (w == "octaves" || w == "omega" || w == "lambda") parse_float();
-        else expected("a fog item or '}'", t);
+        else if (t.kind == TokenKind::Word && lookup(t.text) &&
+                 std::holds_alternative<Numeric>(*lookup(t.text))) {
+            unget(t);  // fog { Blue+Gray70 ... }: a colour expression without keyword
+            f.colour = parse_colour_value();
+        } else expected("a fog item or '}'", t);
     }
     return f;
 }
@@ -500,8 +511,7 @@ Value Interpreter::parse_item_value(const Token& t) {
         if (w == "array") {
             auto a = std::make_shared<ArrayValue>();
             size_t total = 1;
-            while (is_punct(peek(), '[')) {
-                next();
+            while (accept_raw_punct('[')) {
                 Token at = peek();
                 int n = int(parse_float());
                 if (n <= 0) error(at, "array size must be positive");
@@ -523,12 +533,21 @@ Value Interpreter::parse_item_value(const Token& t) {
                     if (is_punct(e, ',')) continue;
                     if (index >= total) error(e, "too many elements in array initializer");
                     unget(e);
-                    a->items[index++] = parse_expression_value();
+                    a->items[index++] = parse_value_additive();
                 }
             }
             return a;
         }
-        if (w == "spline" || w == "function") unsupported(t, w);
+        static const char* const kUnsupportedItems[] = {
+            "spline", "function", "media", "density", "rainbow", "photons", "radiosity",
+            "max_extent", "min_extent", "pigment_map", "normal_map", "texture_map",
+            "density_map", "slope_map", "material_map", "text", "lathe", "sor", "prism",
+            "blob", "isosurface", "parametric", "julia_fractal", "height_field",
+            "superellipsoid", "bicubic_patch", "quadric", "quartic", "poly", "cubic",
+            "sphere_sweep", "ovus", "lemon"};
+        for (const char* item : kUnsupportedItems) {
+            if (w == item) unsupported(t, w);
+        }
         error(t, "undeclared identifier '" + std::string(w) + "'");
     }
     expected("an expression", t);

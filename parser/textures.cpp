@@ -160,6 +160,10 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
             case PatternKind::Spiral2: spec.scalar = parse_float(); break;
             case PatternKind::Mandel: spec.scalar = parse_float(); break;
             case PatternKind::Quilted: spec.vector = {0, 1, 0}; break;  // control0/1 defaults
+            case PatternKind::Crackle:
+                spec.vector = {-1, 1, 0};  // form
+                spec.scalar = 2;           // metric
+                break;
             default: break;
         }
         return true;
@@ -217,6 +221,19 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
         spec.scalar = parse_float();
     } else if (w == "brick_size") {
         spec.vector2 = parse_vector();
+    } else if (w == "metric") {
+        spec.scalar = parse_float();  // crackle: scalar = metric, vector = form
+    } else if (w == "form") {
+        spec.vector = parse_vector();
+    } else if (w == "offset") {
+        spec.vector2.x = parse_float();  // crackle: vector2 = <offset, solid, 0>
+    } else if (w == "solid") {
+        spec.vector2.y = 1;
+    } else if (w == "interior" || w == "exterior") {
+        // Fractal colouring types (mandel/julia): `interior TYPE, FACTOR`; read, not modelled.
+        parse_float();
+        accept_punct(',');
+        parse_float();
     } else if (w == "control0") {
         spec.vector.x = parse_float();
     } else if (w == "control1") {
@@ -333,6 +350,8 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
             unget(t);
             p.pattern.kind = PatternKind::Solid;
             p.colour = parse_colour_value();
+        } else if (w == "uv_mapping" || w == "image_map" || w == "pigment_pattern") {
+            unsupported(t, w);
         } else {
             expected("a pigment item or '}'", t);
         }
@@ -343,6 +362,12 @@ Normal Interpreter::parse_normal_block() {
     expect_punct('{', "after 'normal'");
     Normal n;
     if (default_texture_.normal) n = *default_texture_.normal;
+    parse_normal_body(n, '}');
+    return n;
+}
+
+// The inside of `normal { ... }`, also a normal_map entry (ending at ']').
+void Interpreter::parse_normal_body(Normal& n, char terminator) {
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
         const Value* v = lookup(first.text);
@@ -353,12 +378,22 @@ Normal Interpreter::parse_normal_block() {
     }
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return n;
+        if (is_punct(t, terminator)) return;
         if (try_pattern_keyword(t, n.pattern)) {
-            const Token& a = peek();
-            if (starts_float(a)) {
-                n.amount = parse_float();
+            if (n.pattern.kind == PatternKind::Checker || n.pattern.kind == PatternKind::Hexagon ||
+                n.pattern.kind == PatternKind::Brick) {
+                // checker normal{..} normal{..}: entries follow the keyword.
+                int count = n.pattern.kind == PatternKind::Hexagon ? 3 : 2;
+                for (int i = 0; i < count; ++i) {
+                    if (i) accept_punct(',');
+                    if (!accept_word("normal")) break;
+                    n.list.push_back(parse_normal_block());
+                    n.map_values.push_back(float(i));
+                }
             }
+            // `bumps 0.5`, `gradient x, 5.6`: an optional bump size follows the pattern.
+            accept_punct(',');
+            if (starts_float(peek())) n.amount = parse_float();
             continue;
         }
         if (try_pattern_modifier(t, n.pattern)) continue;
@@ -366,7 +401,29 @@ Normal Interpreter::parse_normal_block() {
             n.amount = parse_float();
         } else if (is_word(t, "accuracy")) {
             n.accuracy = parse_float();
-        } else if (is_word(t, "normal_map") || is_word(t, "slope_map")) {
+        } else if (is_word(t, "normal_map")) {
+            expect_punct('{', "after 'normal_map'");
+            n.list.clear();
+            n.map_values.clear();
+            for (;;) {
+                Token e = next();
+                if (is_punct(e, '}')) break;
+                if (!is_punct(e, '[')) expected("'[' or '}' in a normal_map", e);
+                float value = float(parse_float());
+                accept_punct(',');
+                Normal sub;
+                if (accept_word("normal")) {
+                    sub = parse_normal_block();
+                    expect_punct(']', "to close the normal_map entry");
+                } else {
+                    parse_normal_body(sub, ']');
+                }
+                n.map_values.push_back(value);
+                n.list.push_back(std::move(sub));
+            }
+        } else if (is_word(t, "slope_map")) {
+            unsupported(t, t.text);
+        } else if (is_word(t, "uv_mapping") || is_word(t, "bump_map")) {
             unsupported(t, t.text);
         } else {
             expected("a normal item or '}'", t);
@@ -440,7 +497,7 @@ Finish Interpreter::parse_finish_block() {
                     } else if (is_word(m, "exponent")) {
                         f.reflection_exponent = float(parse_float());
                     } else if (is_word(m, "metallic")) {
-                        f.reflection_metallic = float(parse_float());
+                        f.reflection_metallic = starts_float(peek()) ? float(parse_float()) : 1.0f;
                     } else {
                         expected("a reflection item or '}'", m);
                     }
