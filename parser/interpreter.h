@@ -98,6 +98,7 @@ public:
     Fog parse_fog();
     void parse_mesh(Object& out);
     void parse_mesh2(Object& out);
+    int parse_count();
     int new_random_stream(int seed);
     double draw_random(int stream, const Token& at);
 

@@ -342,15 +342,26 @@ void Interpreter::parse_mesh(Object& out) {
     out.shape = std::move(mesh);
 }
 
+// A mesh2 list length: bounded so that a corrupt count fails cleanly instead of overflowing.
+int Interpreter::parse_count() {
+    Token at = peek();
+    double n = parse_float();
+    if (!(n >= 0 && n <= 1e9)) {
+        error(at, "list length " + std::to_string(n) + " out of range");
+    }
+    return int(n);
+}
+
 void Interpreter::parse_mesh2(Object& out) {
     Mesh mesh;
     auto read_vectors = [&](std::vector<Vector3>& into) {
         expect_punct('{');
-        int n = int(parse_float());
+        int n = parse_count();
         for (int i = 0; i < n; ++i) {
             accept_punct(',');
             into.push_back(parse_vector());
         }
+        accept_punct(',');  // trailing comma
         expect_punct('}');
     };
     std::vector<std::array<int, 3>> normal_idx;
@@ -369,25 +380,27 @@ void Interpreter::parse_mesh2(Object& out) {
         } else if (w == "uv_vectors") {
             std::vector<Vector3> uv;
             expect_punct('{');
-            int n = int(parse_float());
+            int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 parse_numeric();
             }
+            accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "texture_list") {
             expect_punct('{');
-            int n = int(parse_float());
+            int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 Token k = next();
                 if (!is_word(k, "texture")) expected("texture in texture_list", k);
                 mesh.textures.push_back(parse_texture_block());
             }
+            accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "face_indices") {
             expect_punct('{');
-            int n = int(parse_float());
+            int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 Token at = peek();
@@ -420,23 +433,26 @@ void Interpreter::parse_mesh2(Object& out) {
                 }
                 mesh.faces.push_back(f);
             }
+            accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "normal_indices") {
             expect_punct('{');
-            int n = int(parse_float());
+            int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 Vector3 v = parse_vector();
                 normal_idx.push_back({int(v.x), int(v.y), int(v.z)});
             }
+            accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "uv_indices") {
             expect_punct('{');
-            int n = int(parse_float());
+            int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 parse_vector();
             }
+            accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "inside_vector") {
             mesh.inside_vector = parse_vector();
