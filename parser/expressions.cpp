@@ -47,8 +47,8 @@ Vector3 rotate_vector(const Vector3& v, const Vector3& degrees) {
 Vector3 axis_rotate(const Vector3& v, const Vector3& axis, double degrees) {
     Vector3 k = normalize(axis);
     double a = degrees * kPi / 180, c = std::cos(a), s = std::sin(a);
-    // Left-handed rotation to match POV-Ray's vaxis_rotate (same sense as rotate).
-    return v * c + cross(v, k) * s + k * (dot(k, v) * (1 - c));
+    // Same sense as `rotate`: vaxis_rotate(x, y, 90) is -z in POV-Ray 3.7.
+    return v * c + cross(k, v) * s + k * (dot(k, v) * (1 - c));
 }
 
 }  // namespace
@@ -619,7 +619,8 @@ std::string Interpreter::parse_string() {
             expect_punct(')');
             char buf[512];
             if (prec < 0) {
-                std::snprintf(buf, sizeof buf, width < 0 ? "%0*g" : "%*g", std::abs(width), v);
+                // A negative precision means printf's default (6 digits), as POV-Ray prints.
+                std::snprintf(buf, sizeof buf, width < 0 ? "%0*f" : "%*f", std::abs(width), v);
             } else {
                 std::snprintf(buf, sizeof buf, width < 0 ? "%0*.*f" : "%*.*f", std::abs(width),
                               prec, v);

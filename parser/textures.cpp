@@ -31,13 +31,14 @@ constexpr PatternName kPatterns[] = {
     {"wrinkles", PatternKind::Wrinkles}, {"boxed", PatternKind::Boxed},
     {"cylindrical", PatternKind::Cylindrical}, {"spherical", PatternKind::Spherical},
     {"planar", PatternKind::Planar},   {"cells", PatternKind::Cells},
+    {"average", PatternKind::Average},
 };
 
 bool is_unsupported_pattern(std::string_view w) {
     static const char* kNames[] = {"image_map", "bump_map", "material_map", "function",
                                    "object", "slope", "aoi", "density_file", "facets",
                                    "pavement", "tiling", "julia", "magnet", "image_pattern",
-                                   "average", "tiles", "proportion", "pigment_pattern",
+                                   "tiles", "proportion", "pigment_pattern",
                                    "gradient_map"};
     for (const char* n : kNames) {
         if (w == n) return true;
