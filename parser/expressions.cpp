@@ -686,6 +686,15 @@ std::string Interpreter::parse_string() {
     expected("a string", t);
 }
 
+void Interpreter::require_operand(std::string_view what) {
+    // Commas are optional, so a missing value shows up as the block's closing token.
+    const Token& t = peek();
+    if (t.kind == TokenKind::End || is_punct(t, '}') || is_punct(t, ']') || is_punct(t, ')') ||
+        is_punct(t, ',') || is_punct(t, ';')) {
+        expected(what, t);
+    }
+}
+
 bool Interpreter::starts_float(const Token& t) {
     if (t.kind == TokenKind::Number) return true;
     if (t.kind == TokenKind::Punct) {

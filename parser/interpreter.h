@@ -68,7 +68,8 @@ public:
     Numeric parse_colour();               // colour keyword forms, rgb, identifiers
     Colour parse_colour_value();
     bool parse_bool_opt();
-    bool starts_float(const Token& t);  // can `t` begin a float expression?                // optional boolean after a flag keyword
+    bool starts_float(const Token& t);  // can `t` begin a float expression?
+    void require_operand(std::string_view what);  // error if the block ends here                // optional boolean after a flag keyword
 
     // ---- scene items (objects.cpp, textures.cpp, scene_items.cpp)
     bool try_parse_object(const Token& t, Object& out);

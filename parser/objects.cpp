@@ -244,8 +244,10 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         open();
         if (!copy_identifier()) {
             Sphere s;
+            require_operand("the sphere's centre");
             s.centre = parse_vector();
             accept_punct(',');
+            require_operand("the sphere's radius");
             s.radius = parse_float();
             out.shape = s;
         }
@@ -253,8 +255,10 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         open();
         if (!copy_identifier()) {
             Box b;
+            require_operand("the box's first corner");
             b.corner1 = parse_vector();
             accept_punct(',');
+            require_operand("the box's second corner");
             b.corner2 = parse_vector();
             out.shape = b;
         }
@@ -267,6 +271,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             if (length(n) < 1e-10) error(at, "degenerate plane normal");
             p.normal = normalize(n);
             accept_punct(',');
+            require_operand("the plane's distance");
             p.distance = parse_float();
             out.shape = p;
         }
@@ -278,6 +283,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             accept_punct(',');
             c.cap = parse_vector();
             accept_punct(',');
+            require_operand("the cylinder's radius");
             c.radius = parse_float();
             out.shape = c;
         }

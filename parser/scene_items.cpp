@@ -10,6 +10,7 @@ CameraSpec Interpreter::parse_camera_block() {
     if (!is_punct(open, '{')) expected("'{' after 'camera'", open);
     CameraSpec c;
     c.loc = sources_.location(open);
+    c.offset = open.offset;
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
         const Value* v = lookup(first.text);
@@ -56,36 +57,58 @@ CameraSpec Interpreter::parse_camera_block() {
 }
 
 // POV-Ray 3.5+ applies the camera items in a fixed order whatever the order in the file:
-// right, direction, angle, up, sky, location, look_at, then transforms.
+// right, direction, angle, up, sky, location, look_at, then transforms (Parse_Camera).
 Camera Interpreter::finish_camera(const CameraSpec& s) {
+    constexpr double kEpsilon = 1e-10;
     Camera cam;
     cam.kind = s.kind;
     cam.loc = s.loc;
     Vector3 right = s.right, direction = s.direction, up = s.up;
-    if (s.has_angle) {
-        if (s.angle >= 180 && s.kind == Camera::Kind::Perspective) {
-            throw ParseError(ParseError::Kind::Syntax, "camera angle must be below 180 degrees",
-                             "camera angle must be below 180 degrees", s.loc);
+    bool projective = s.kind == Camera::Kind::Perspective ||
+                      s.kind == Camera::Kind::Orthographic;
+    if (s.has_angle && projective) {
+        if (s.angle >= 180) {
+            std::string msg = "camera angle must be below 180 degrees";
+            throw ParseError(ParseError::Kind::Syntax,
+                             format_diagnostic_at(sources_, s.loc.file, s.offset, 1, "error", msg), msg,
+                             s.loc);
         }
-        double len = length(right) / (2 * std::tan(s.angle * kPi / 360));
-        direction = normalize(direction) * len;
+        if (s.angle > 0) {
+            double len = length(right) / std::tan(s.angle * kPi / 360) / 2;
+            direction = normalize(direction) * len;
+        }
     }
     Point3 location = s.location;
     if (s.has_look_at) {
         double dl = length(direction), rl = length(right), ul = length(up);
-        // Handedness of the original frame decides the sign of `right`.
+        // The handedness of the frame before look_at decides the sign of `right`; `up` is
+        // always direction x right (not flipped), as in POV-Ray.
         double handed = dot(cross(up, direction), right);
-        direction = normalize(s.look_at - location) * dl;
-        right = normalize(cross(s.sky, direction)) * rl;
-        if (handed < 0) right = -right;
-        up = normalize(cross(direction, right)) * ul;
-        if (handed < 0) up = -up;
+        Vector3 d = s.look_at - location;
+        if (dot(d, d) < kEpsilon) {
+            std::string msg = "camera location and look_at point must be different";
+            throw ParseError(ParseError::Kind::Syntax,
+                             format_diagnostic_at(sources_, s.loc.file, s.offset, 1, "error", msg), msg,
+                             s.loc);
+        }
+        d = normalize(d);
+        Vector3 r = cross(s.sky, d);
+        // Sky parallel to the view: POV-Ray keeps the given right vector.
+        if (std::fabs(r.x) < kEpsilon && std::fabs(r.y) < kEpsilon && std::fabs(r.z) < kEpsilon) {
+            r = right;
+        }
+        r = normalize(r);
+        up = cross(d, r) * ul;
+        direction = d * dl;
+        right = r * (handed > 0 ? rl : -rl);
     }
-    if (s.kind == Camera::Kind::Orthographic && s.has_look_at &&
-        (s.has_angle || (!s.has_up && !s.has_right))) {
-        double k = length(s.look_at - location) / length(direction);
-        right = right * k;
-        up = up * k;
+    if (s.kind == Camera::Kind::Orthographic && (s.has_angle || (!s.has_up && !s.has_right))) {
+        Point3 target = s.has_look_at ? s.look_at : Point3(0, 0, 1);
+        double k1 = length(target - location), k2 = length(direction);
+        if (k1 > kEpsilon && k2 > kEpsilon) {
+            right = right * (k1 / k2);
+            up = up * (k1 / k2);
+        }
     }
     cam.location = s.transform.point(location);
     cam.direction = s.transform.vector(direction);

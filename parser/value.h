@@ -74,6 +74,7 @@ struct CameraSpec {
     double angle = 90;
     Transform transform;
     SourceLoc loc;
+    uint32_t offset = 0;  // of the camera's '{', for diagnostics
 };
 
 const char* type_name(const Value& v);
