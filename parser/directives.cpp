@@ -52,7 +52,7 @@ Token Interpreter::next() {
         if (t.kind == TokenKind::Directive) {
             run_directive(t);
         } else if (t.kind == TokenKind::Word) {
-            const Value* v = lookup(t.text);
+            const Value* v = lookup(t);
             if (!v) return t;
             if (auto m = std::get_if<std::shared_ptr<Macro>>(v)) {
                 std::shared_ptr<Macro> keep = *m;
@@ -108,17 +108,19 @@ Token Interpreter::subscript_token(const Token& name, const ArrayValue& array) {
     if (element_names_.size() < kPool) element_names_.resize(kPool);
     std::string& slot = element_names_[next_element_name_];
     next_element_name_ = (next_element_name_ + 1) % kPool;
-    if (!slot.empty()) scopes_[0].erase(slot);
+    if (!slot.empty()) scopes_[0].erase(sources_.intern(slot));
     slot = label;
+    uint32_t sym = sources_.intern(slot);
     const Value& item = array.items[flat];
     if (auto u = std::get_if<std::shared_ptr<UnsupportedValue>>(&item)) {
         Token whole = name;
         whole.length = end_offset - name.offset;
         unsupported(whole, (*u)->feature);
     }
-    if (!std::holds_alternative<std::monostate>(item)) scopes_[0][slot].value = item;
+    if (!std::holds_alternative<std::monostate>(item)) bind(scopes_[0], sym).value = item;
     Token t = name;
     t.text = slot;
+    t.sym = sym;
     t.length = end_offset - name.offset;
     return t;
 }
@@ -224,9 +226,10 @@ void Interpreter::expected(std::string_view what, const Token& found) {
 
 // ------------------------------------------------------------------ symbols
 
-Interpreter::Binding* Interpreter::find_binding(const std::string& name, int* scope_index) {
+Interpreter::Binding* Interpreter::find_binding(uint32_t sym, int* scope_index) {
+    if (sym == 0 || sym >= bound_.size() || !bound_[sym]) return nullptr;
     for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
-        auto it = scopes_[i].find(name);
+        auto it = scopes_[i].find(sym);
         if (it != scopes_[i].end()) {
             if (scope_index) *scope_index = i;
             return &it->second;
@@ -235,18 +238,25 @@ Interpreter::Binding* Interpreter::find_binding(const std::string& name, int* sc
     return nullptr;
 }
 
-const Value* Interpreter::lookup(std::string_view name) const {
-    std::string key(name);
+const Value* Interpreter::lookup_symbol(uint32_t sym) const {
+    // Most words are keywords, never bound: answered without touching the scopes.
+    if (sym == 0 || sym >= bound_.size() || !bound_[sym]) return nullptr;
     for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
-        auto it = scopes_[i].find(key);
+        auto it = scopes_[i].find(sym);
         if (it != scopes_[i].end()) return &it->second.value;
     }
     return nullptr;
 }
 
+const Value* Interpreter::lookup(std::string_view name) const {
+    return lookup_symbol(sources_.find_symbol(name));
+}
+
 void Interpreter::declare(const std::string& name, Value v, bool local, const Token& at) {
+    (void)at;
+    uint32_t sym = sources_.intern(name);
     if (local) {
-        Binding& b = scopes_.back()[name];
+        Binding& b = bind(scopes_.back(), sym);
         b.value = std::move(v);
         b.ref_scope = -1;
         return;
@@ -254,8 +264,8 @@ void Interpreter::declare(const std::string& name, Value v, bool local, const To
     // #declare: an existing macro parameter passed by reference writes through to the
     // caller's variable; otherwise the identifier is global.
     int index = -1;
-    Binding* b = find_binding(name, &index);
-    std::string target = name;
+    Binding* b = find_binding(sym, &index);
+    uint32_t target = sym;
     while (b && b->ref_scope >= 0) {
         int target_scope = b->ref_scope;
         target = b->ref_name;
@@ -273,7 +283,7 @@ void Interpreter::declare(const std::string& name, Value v, bool local, const To
         b->value = std::move(v);
         return;
     }
-    scopes_[0][target].value = std::move(v);
+    bind(scopes_[0], target).value = std::move(v);
 }
 
 // ------------------------------------------------------------------ directives
@@ -286,10 +296,10 @@ void Interpreter::run_directive(const Token& t) {
         expect_punct('(');
         Token name = next_raw();
         if (name.kind != TokenKind::Word) expected("an identifier", name);
-        bool defined = lookup(name.text) != nullptr;
+        bool defined = lookup(name) != nullptr;
         if (defined && is_punct(peek(), '[')) {
             // #ifdef(A[i]): defined when that element has been assigned.
-            const Value* v = lookup(name.text);
+            const Value* v = lookup(name);
             auto arr = std::get_if<std::shared_ptr<ArrayValue>>(v);
             size_t flat = 0;
             while (accept_punct('[')) {
@@ -353,7 +363,7 @@ void Interpreter::run_directive(const Token& t) {
     if (d == "undef") {
         Token name = next_raw();
         if (name.kind != TokenKind::Word) expected("an identifier", name);
-        std::string key(name.text);
+        uint32_t key = sources_.intern(name.text);
         for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
             if (scopes_[i].erase(key)) break;
         }
@@ -702,7 +712,7 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
         const Token& a = peek();
         if (a.kind == TokenKind::Word) {
             int scope = -1;
-            std::string key(a.text);
+            uint32_t key = a.sym;
             Binding* existing = find_binding(key, &scope);
             if (existing && !std::holds_alternative<std::shared_ptr<Macro>>(existing->value)) {
                 Token id = next();
@@ -711,7 +721,7 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
                     b.value = existing->value;
                     b.ref_scope = scope;
                     b.ref_name = key;
-                    params[m.params[i]] = std::move(b);
+                    bind(params, sources_.intern(m.params[i])) = std::move(b);
                     if (i + 1 < m.params.size()) accept_punct(',');
                     continue;
                 }
@@ -719,7 +729,7 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
             }
         }
         b.value = parse_declared_value(next());
-        params[m.params[i]] = std::move(b);
+        bind(params, sources_.intern(m.params[i])) = std::move(b);
         if (i + 1 < m.params.size() && !is_punct(peek(), ')')) {
             accept_punct(',');
         }

@@ -313,7 +313,7 @@ private:
 Value ExpressionParser::word(const Token& t) {
     const std::string_view w = t.text;
     // User identifiers shadow nothing built in: POV-Ray reserves keywords.
-    if (const Value* v = in_.lookup(w)) {
+    if (const Value* v = in_.lookup(t)) {
         Value value = *v;
         while (auto arr = std::get_if<std::shared_ptr<ArrayValue>>(&value)) {
             if (!in_.is_punct(in_.peek(), '[')) break;
@@ -518,12 +518,12 @@ Value ExpressionParser::word(const Token& t) {
         in_.expect_punct('(');
         Token id = in_.next();
         in_.expect_punct(')');
-        return Numeric::scalar(in_.lookup(id.text) ? 1 : 0);
+        return Numeric::scalar(in_.lookup(id) ? 1 : 0);
     }
     if (w == "dimensions" || w == "dimension_size") {
         in_.expect_punct('(');
         Token id = in_.next();
-        const Value* v = in_.lookup(id.text);
+        const Value* v = in_.lookup(id);
         auto arr = v ? std::get_if<std::shared_ptr<ArrayValue>>(v) : nullptr;
         if (!arr) in_.error(id, "'" + std::string(id.text) + "' is not an array");
         double r;
@@ -603,7 +603,7 @@ std::string Interpreter::parse_string() {
     if (t.kind == TokenKind::String) return std::string(t.text);
     if (t.kind == TokenKind::Word) {
         std::string_view w = t.text;
-        if (lookup(w)) {
+        if (lookup(t)) {
             unget(t);
             Value val = ExpressionParser(*this, false).parse();
             if (auto s = std::get_if<std::string>(&val)) return *s;
@@ -701,7 +701,7 @@ bool Interpreter::starts_float(const Token& t) {
         return is_punct(t, '(') || is_punct(t, '-') || is_punct(t, '+') || is_punct(t, '!');
     }
     if (t.kind != TokenKind::Word) return false;
-    if (const Value* v = lookup(t.text)) {
+    if (const Value* v = lookup(t)) {
         auto n = std::get_if<Numeric>(v);
         return n && n->size == 1;
     }

@@ -52,6 +52,10 @@ public:
 
     // ---- symbols
     const Value* lookup(std::string_view name) const;
+    const Value* lookup(const Token& t) const {
+        return t.sym ? lookup_symbol(t.sym) : lookup(t.text);
+    }
+    const Value* lookup_symbol(uint32_t sym) const;
     void declare(const std::string& name, Value v, bool local, const Token& at);
 
     // ---- expressions (expressions.cpp)
@@ -128,9 +132,15 @@ private:
         Value value;
         // Macro parameters passed an identifier alias the caller's variable.
         int ref_scope = -1;
-        std::string ref_name;
+        uint32_t ref_name = 0;
     };
-    using Scope = std::unordered_map<std::string, Binding>;
+    using Scope = std::unordered_map<uint32_t, Binding>;
+    // Inserts (or finds) `sym` in `scope`, remembering that the name has been bound somewhere.
+    Binding& bind(Scope& scope, uint32_t sym) {
+        if (sym >= bound_.size()) bound_.resize(sym + 1024, 0);
+        bound_[sym] = 1;
+        return scope[sym];
+    }
 
     Token next_raw();
     // `A[i][j]` read as one token standing for the element (see next()).
@@ -150,7 +160,7 @@ private:
     void directive_default();
     void invoke_macro(const Token& name, const Macro& m);
     size_t find_matching_end(const Token& at);
-    Binding* find_binding(const std::string& name, int* scope_index = nullptr);
+    Binding* find_binding(uint32_t sym, int* scope_index = nullptr);
     void parse_top_level_item(const Token& t);
     std::string resolve_include(const std::string& name, int from_file) const;
     void finish_object(Object& obj);
@@ -161,6 +171,7 @@ private:
     std::vector<Frame> frames_;
     std::vector<Cond> conds_;
     std::vector<Scope> scopes_;
+    std::vector<uint8_t> bound_;  // by symbol: ever bound (keywords never are)
     std::vector<Token> pushback_;
     std::vector<std::unique_ptr<RandomStream>> streams_;
     int version_ = 362;

@@ -84,7 +84,7 @@ bool Interpreter::try_transform(const Token& t, Transform& out) {
             out = parse_transform_block();
         } else {
             next();
-            const Value* v = lookup(n.text);
+            const Value* v = lookup(n);
             auto tp = v ? std::get_if<std::shared_ptr<Transform>>(v) : nullptr;
             if (!tp) expected("a transform identifier or '{'", n);
             out = **tp;
@@ -107,7 +107,7 @@ Transform Interpreter::parse_transform_block() {
         } else if (is_word(t, "inverse")) {
             result = result.inverse();
         } else if (t.kind == TokenKind::Word) {
-            const Value* v = lookup(t.text);
+            const Value* v = lookup(t);
             auto tp = v ? std::get_if<std::shared_ptr<Transform>>(v) : nullptr;
             if (!tp) expected("a transformation or '}'", t);
             result = result.then(**tp);
@@ -154,9 +154,9 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
                 obj.interior = parse_interior_block();
             } else if (try_transform(m, tr)) {
                 apply_transform(obj, tr);
-            } else if (m.kind == TokenKind::Word && lookup(m.text) &&
-                       std::holds_alternative<std::shared_ptr<Material>>(*lookup(m.text))) {
-                auto mat = std::get<std::shared_ptr<Material>>(*lookup(m.text));
+            } else if (m.kind == TokenKind::Word && lookup(m) &&
+                       std::holds_alternative<std::shared_ptr<Material>>(*lookup(m))) {
+                auto mat = std::get<std::shared_ptr<Material>>(*lookup(m));
                 for (auto l : mat->texture) obj.texture.push_back(l);
                 if (mat->interior) obj.interior = mat->interior;
             } else {
@@ -231,7 +231,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     auto copy_identifier = [&]() -> bool {
         const Token& p = peek();
         if (p.kind != TokenKind::Word) return false;
-        const Value* v = lookup(p.text);
+        const Value* v = lookup(p);
         auto o = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr;
         if (!o) return false;
         next();
@@ -392,7 +392,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "object") {
         open();
         Token id = next();
-        const Value* v = id.kind == TokenKind::Word ? lookup(id.text) : nullptr;
+        const Value* v = id.kind == TokenKind::Word ? lookup(id) : nullptr;
         if (v && std::holds_alternative<std::shared_ptr<Light>>(*v)) {
             // object { LightId }: a light source; modifiers transform it.
             Light l = *std::get<std::shared_ptr<Light>>(*v);
@@ -490,7 +490,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
             scene_.objects.push_back(std::move(obj));
             return;
         }
-        const Value* v = lookup(w);
+        const Value* v = lookup(t);
         if (!v) error(t, "undeclared identifier '" + std::string(w) + "'");
         // Exporters write bare object and light identifiers as statements; POV-Ray takes them.
         if (auto o = std::get_if<std::shared_ptr<Object>>(v)) {

@@ -13,7 +13,7 @@ CameraSpec Interpreter::parse_camera_block() {
     c.offset = open.offset;
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<CameraSpec>>(*v)) {
             next();
             c = *std::get<std::shared_ptr<CameraSpec>>(*v);
@@ -126,7 +126,7 @@ Light Interpreter::parse_light_block() {
     const Token& first = peek();
     bool copied = false;
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Light>>(*v)) {
             next();
             l = *std::get<std::shared_ptr<Light>>(*v);
@@ -259,7 +259,7 @@ SkySphere Interpreter::parse_sky_sphere() {
     SkySphere sky;
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<SkySphere>>(*v)) {
             next();
             sky = *std::get<std::shared_ptr<SkySphere>>(*v);
@@ -289,7 +289,7 @@ Fog Interpreter::parse_fog() {
     Fog f;
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Fog>>(*v)) {
             next();
             f = *std::get<std::shared_ptr<Fog>>(*v);
@@ -316,8 +316,8 @@ Fog Interpreter::parse_fog() {
         else if (w == "turbulence") f.turbulence = parse_vector();
         else if (w == "turb_depth") f.turb_depth = parse_float();
         else if (w == "octaves" || w == "omega" || w == "lambda") parse_float();
-        else if (t.kind == TokenKind::Word && lookup(t.text) &&
-                 std::holds_alternative<Numeric>(*lookup(t.text))) {
+        else if (t.kind == TokenKind::Word && lookup(t) &&
+                 std::holds_alternative<Numeric>(*lookup(t))) {
             unget(t);  // fog { Blue+Gray70 ... }: a colour expression without keyword
             f.colour = parse_colour_value();
         } else expected("a fog item or '}'", t);

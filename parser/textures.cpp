@@ -91,7 +91,7 @@ Numeric Interpreter::parse_colour() {
             c.c[i] = parse_float();
         } else if (!any && (t.kind == TokenKind::Number || is_punct(t, '<') ||
                             is_punct(t, '(') || is_punct(t, '-') ||
-                            (t.kind == TokenKind::Word && lookup(t.text)))) {
+                            (t.kind == TokenKind::Word && lookup(t)))) {
             Numeric v = parse_express();
             if (v.size == 1) {
                 for (int i = 0; i < 5; ++i) c.c[i] = v.c[0];
@@ -118,7 +118,7 @@ ColourMap Interpreter::parse_colour_map_block() {
     ColourMap map;
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<ColourMap>>(*v)) {
             next();
             map = *std::get<std::shared_ptr<ColourMap>>(*v);
@@ -280,7 +280,7 @@ Pigment Interpreter::parse_pigment_block() {
 void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Pigment>>(*v)) {
             next();
             p = *std::get<std::shared_ptr<Pigment>>(*v);
@@ -301,7 +301,7 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                         next();
                         p.list.push_back(parse_pigment_block());
                     } else if (is_punct(n, '}') || (n.kind == TokenKind::Word &&
-                                                    !lookup(n.text) && !is_word(n, "color") &&
+                                                    !lookup(n) && !is_word(n, "color") &&
                                                     !is_word(n, "colour") && !is_word(n, "rgb") &&
                                                     !is_word(n, "rgbf") && !is_word(n, "rgbt") &&
                                                     !is_word(n, "rgbft"))) {
@@ -345,8 +345,8 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
             }
         } else if (w == "quick_color" || w == "quick_colour") {
             p.quick_colour = parse_colour_value();
-        } else if (t.kind == TokenKind::Word && lookup(w) &&
-                   std::holds_alternative<Numeric>(*lookup(w))) {
+        } else if (t.kind == TokenKind::Word && lookup(t) &&
+                   std::holds_alternative<Numeric>(*lookup(t))) {
             // A colour identifier alone: pigment { Red }
             unget(t);
             p.pattern.kind = PatternKind::Solid;
@@ -371,7 +371,7 @@ Normal Interpreter::parse_normal_block() {
 void Interpreter::parse_normal_body(Normal& n, char terminator) {
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Normal>>(*v)) {
             next();
             n = *std::get<std::shared_ptr<Normal>>(*v);
@@ -437,7 +437,7 @@ Finish Interpreter::parse_finish_block() {
     Finish f = default_texture_.finish;
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Finish>>(*v)) {
             next();
             f = *std::get<std::shared_ptr<Finish>>(*v);
@@ -539,7 +539,7 @@ Interior Interpreter::parse_interior_block() {
     Interior in;
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Interior>>(*v)) {
             next();
             in = *std::get<std::shared_ptr<Interior>>(*v);
@@ -577,7 +577,7 @@ LayeredTexture Interpreter::parse_texture_block() {
 void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<LayeredTexture>>(*v)) {
             next();
             layers = *std::get<std::shared_ptr<LayeredTexture>>(*v);
