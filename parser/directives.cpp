@@ -147,6 +147,14 @@ bool Interpreter::accept_semicolon() {
     return false;
 }
 
+bool Interpreter::raw_next_is_punct(char c) {
+    if (!pushback_.empty()) return is_punct(pushback_.back(), c);
+    if (frames_.empty()) return false;
+    const Frame& f = frames_.back();
+    const auto& toks = sources_.file(f.file).tokens;
+    return f.pos < f.end && is_punct(toks[f.pos], c);
+}
+
 bool Interpreter::accept_raw_punct(char c) {
     if (!pushback_.empty()) return accept_punct(c);
     if (frames_.empty()) return false;

@@ -316,7 +316,9 @@ Value ExpressionParser::word(const Token& t) {
     if (const Value* v = in_.lookup(t)) {
         Value value = *v;
         while (auto arr = std::get_if<std::shared_ptr<ArrayValue>>(&value)) {
-            if (!in_.is_punct(in_.peek(), '[')) break;
+            // Checked on the raw stream: `#declare D = Array` followed by a directive must not
+            // run that directive before D exists.
+            if (!in_.raw_next_is_punct('[')) break;
             std::shared_ptr<ArrayValue> a = *arr;
             size_t flat = 0;
             for (size_t d = 0; d < a->dims.size(); ++d) {
@@ -684,6 +686,12 @@ std::string Interpreter::parse_string() {
         }
     }
     expected("a string", t);
+}
+
+float Interpreter::parse_map_value(bool average) {
+    // `average` map entries may leave out their weight (1 by default).
+    if (average && !starts_float(peek())) return 1.0f;
+    return float(parse_float());
 }
 
 void Interpreter::require_operand(std::string_view what) {

@@ -33,7 +33,8 @@ public:
     bool accept_punct(char c);
     bool accept_word(std::string_view w);
     bool accept_raw_word(std::string_view w);
-    bool accept_raw_punct(char c);  // without running a directive behind it
+    bool accept_raw_punct(char c);
+    bool raw_next_is_punct(char c);  // without running a directive behind it
     bool accept_semicolon();
     void expect_punct(char c, std::string_view what = {});
     bool is_punct(const Token& t, char c) const {
@@ -73,7 +74,8 @@ public:
     Colour parse_colour_value();
     bool parse_bool_opt();
     bool starts_float(const Token& t);  // can `t` begin a float expression?
-    void require_operand(std::string_view what);  // error if the block ends here                // optional boolean after a flag keyword
+    void require_operand(std::string_view what);
+    float parse_map_value(bool average);  // the value of a *_map entry  // error if the block ends here                // optional boolean after a flag keyword
 
     // ---- scene items (objects.cpp, textures.cpp, scene_items.cpp)
     bool try_parse_object(const Token& t, Object& out);

@@ -331,7 +331,7 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                 Token e = next();
                 if (is_punct(e, '}')) break;
                 if (!is_punct(e, '[')) expected("'[' in a pigment_map", e);
-                float v = float(parse_float());
+                float v = parse_map_value(p.pattern.kind == PatternKind::Average);
                 accept_punct(',');
                 Pigment sub = default_texture_.pigment;
                 if (accept_word("pigment")) {
@@ -410,7 +410,7 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
                 Token e = next();
                 if (is_punct(e, '}')) break;
                 if (!is_punct(e, '[')) expected("'[' or '}' in a normal_map", e);
-                float value = float(parse_float());
+                float value = parse_map_value(n.pattern.kind == PatternKind::Average);
                 accept_punct(',');
                 Normal sub;
                 if (accept_word("normal")) {
@@ -609,7 +609,7 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
                 Token e = next();
                 if (is_punct(e, '}')) break;
                 if (!is_punct(e, '[')) expected("'[' or '}' in a texture_map", e);
-                float value = float(parse_float());
+                float value = parse_map_value(top.map_pattern->kind == PatternKind::Average);
                 accept_punct(',');
                 LayeredTexture entry;
                 if (accept_word("texture")) {

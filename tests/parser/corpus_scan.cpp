@@ -3,6 +3,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <iostream>
 #include <sstream>
 
@@ -23,6 +24,19 @@ int main(int argc, char** argv) {
         povwall::parser::ParseOptions options;
         options.library_paths.push_back(path.parent_path().string());
         if (verbose) options.messages = &std::cerr;
+        // Scenes with an .ini (the portfolio) render frame 1 of an animation.
+        std::filesystem::path ini = path;
+        ini.replace_extension(".ini");
+        if (std::filesystem::exists(ini)) {
+            std::ifstream in(ini);
+            std::string line;
+            while (std::getline(in, line)) {
+                if (line.rfind("Final_Frame=", 0) == 0) options.final_frame = std::atoi(line.c_str() + 12);
+            }
+            options.frame_number = 1;
+            options.initial_frame = 1;
+            options.final_clock = 1;
+        }
         auto start = std::chrono::steady_clock::now();
         std::string status;
         try {
