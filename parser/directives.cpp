@@ -34,11 +34,6 @@ Token Interpreter::next_raw() {
     return Token{};
 }
 
-const Token& Interpreter::peek() {
-    if (pushback_.empty()) pushback_.push_back(next());
-    return pushback_.back();
-}
-
 void Interpreter::unget(const Token& t) { pushback_.push_back(t); }
 
 Token Interpreter::next() {

@@ -27,7 +27,10 @@ public:
     Scene run(int root_file);
 
     // ---- token stream (tokens.cpp)
-    const Token& peek();
+    const Token& peek() {
+        if (pushback_.empty()) pushback_.push_back(next());
+        return pushback_.back();
+    }
     Token next();
     void unget(const Token& t);
     bool accept_punct(char c);

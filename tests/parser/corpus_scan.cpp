@@ -1,6 +1,7 @@
 // Parses every scene listed in a corpus file and tallies ok / unsupported / error, printing
 // each failure's first line. Usage: parser_corpus LIST EXAMPLES_DIR [-v]
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
             options.final_clock = 1;
         }
         auto start = std::chrono::steady_clock::now();
+        std::clock_t cpu_start = std::clock();
         std::string status;
         try {
             povwall::Scene scene = povwall::parser::parse_scene_file(path.string(), options);
@@ -57,8 +59,9 @@ int main(int argc, char** argv) {
             }
         }
         double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        double cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
         if (verbose || status.rfind("ok", 0) != 0)
-            std::cout << rel << ": " << status << " (" << secs << " s)\n";
+            std::cout << rel << ": " << status << " (" << secs << " s wall, " << cpu << " s cpu)\n";
     }
     std::cout << "ok " << ok << "  unsupported " << unsupported << "  error " << errors << "\n";
     return 0;
