@@ -30,12 +30,13 @@ struct BuildOptions {
     /// Deepest level (root = 0); also bounded by kMaxDepth.
     int max_depth = 16;
     /// A cell holding this many primitives or fewer stays a leaf.
-    int leaf_primitives = 4;
+    int leaf_primitives = 8;
     /// Fewer bounded primitives than this: one flat list, no tree. Measured with
-    /// povwall_bench (docs/performance.md): below ~24 spheres the flat loop wins.
+    /// povwall_bench BM_Small (docs/performance.md): below this the flat loop wins.
     int flat_threshold = 24;
-    /// Relative cost of one node step against one primitive test, for the split decision.
-    Real traversal_cost = 0.3;
+    /// Cost of one node step in units of one primitive test, for the split decision.
+    /// Measured on sphere scenes (BM_Octree): 8 beats 0.3..4 by 10-25% at 1e3..1e5.
+    Real traversal_cost = 8;
     /// Build threads; 0 = hardware concurrency.
     int threads = 0;
 };
@@ -116,6 +117,14 @@ public:
     const std::vector<uint32_t>& ids() const { return ids_; }
 
 private:
+    // kParallel: some direction component is zero, so mid-plane parameters come from the
+    // cell geometry (cells are tracked); otherwise they are the mean of the entry and exit
+    // parameters, which needs no geometry.
+    template <bool kParallel, class Visit>
+    void walk(const Point3& o, const Vector3& inv, const bool* parallel, unsigned mirror,
+              const Vector3& t0, const Vector3& t1, Real t_min, Real& t_max,
+              Visit& visit) const;
+
     std::vector<Node> nodes_;
     std::vector<uint32_t> ids_;
     Bounds3 bounds_;
@@ -127,84 +136,96 @@ private:
 // parametric algorithm for octree traversal", 2000). Per axis, t0/t1 are the parameters
 // where the ray crosses a cell's entry and exit planes, i.e. the ray is mirrored so every
 // direction component is positive (real child = mirrored child ^ mirror). Each plane's
-// parameter is computed once, at the cell where it is the mid-plane, so neighbouring cells
-// agree exactly. Child boxes are never intersected; the next child follows from the exit
-// plane. Zero direction components get t = -inf/+inf instead of 0 * inf.
+// parameter is computed once, at the cell where it is the mid-plane, and handed down, so
+// neighbouring cells agree exactly. Child boxes are never intersected; the next child
+// follows from the exit plane. Zero direction components get t = -inf/+inf, never 0 * inf.
 template <class Visit>
 void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&& visit) const {
     if (nodes_.empty()) return;
     const Point3 o = ray.origin;
-    Vector3 inv;
-    bool parallel[3];
-    unsigned mirror = 0;
-    Real dmax = std::max({std::fabs(ray.direction.x), std::fabs(ray.direction.y),
-                          std::fabs(ray.direction.z)});
-    // Also rejects NaN (comparisons false) and infinite components.
+    const Real dmax = std::max({std::fabs(ray.direction.x), std::fabs(ray.direction.y),
+                                std::fabs(ray.direction.z)});
+    // Also rejects NaN (comparisons are false) and infinite components, in O(1).
     if (!(dmax > 0 && dmax < kInfinity)) return;
     if (!(std::fabs(o.x) < kInfinity && std::fabs(o.y) < kInfinity &&
           std::fabs(o.z) < kInfinity)) {
         return;
     }
     if (!(t_min <= t_max)) return;
-    struct Frame {
-        Vector3 t0, tm, t1;
-        Point3 lo, hi;  // real-space cell
-        uint32_t node;
-        unsigned child;  // next mirrored child to visit; 8 = done
-    };
-    Frame stack[kMaxDepth + 1];
-    Frame& root = stack[0];
-    root.lo = bounds_.lo;
-    root.hi = bounds_.hi;
+    Vector3 inv, t0, t1;
+    bool parallel[3];
+    bool any_parallel = false;
+    unsigned mirror = 0;
     for (int a = 0; a < 3; ++a) {
-        Real d = ray.direction[a];
+        const Real d = ray.direction[a];
         // A component this small moves the ray less than an ulp across the scene.
         parallel[a] = std::fabs(d) <= dmax * 1e-20;
         if (parallel[a]) {
+            any_parallel = true;
             inv[a] = 0;
-            bool inside = o[a] >= root.lo[a] && o[a] <= root.hi[a];
-            root.t0[a] = inside ? -kInfinity : kInfinity;
-            root.t1[a] = inside ? kInfinity : -kInfinity;
+            const bool inside = o[a] >= bounds_.lo[a] && o[a] <= bounds_.hi[a];
+            t0[a] = inside ? -kInfinity : kInfinity;
+            t1[a] = inside ? kInfinity : -kInfinity;
             continue;
         }
         inv[a] = 1 / d;
         if (d < 0) mirror |= 1u << a;
-        Real ta = (root.lo[a] - o[a]) * inv[a], tb = (root.hi[a] - o[a]) * inv[a];
-        root.t0[a] = d < 0 ? tb : ta;
-        root.t1[a] = d < 0 ? ta : tb;
+        const Real ta = (bounds_.lo[a] - o[a]) * inv[a], tb = (bounds_.hi[a] - o[a]) * inv[a];
+        t0[a] = d < 0 ? tb : ta;
+        t1[a] = d < 0 ? ta : tb;
     }
-    auto enter_of = [](const Vector3& t0) { return std::max({t0.x, t0.y, t0.z}); };
-    auto exit_of = [](const Vector3& t1) { return std::min({t1.x, t1.y, t1.z}); };
-    // Mid-plane parameters of a frame's cell, and its first child (entry-plane rule).
-    auto open = [&](Frame& f) {
+    const Real enter = std::max({t0.x, t0.y, t0.z}), exit = std::min({t1.x, t1.y, t1.z});
+    if (!(enter <= exit) || exit < t_min || enter > t_max) return;
+    if (nodes_[0].count != kInner) {
+        const Node& n = nodes_[0];
+        if (n.count) visit(&ids_[n.first], size_t(n.count), t_max, enter);
+        return;
+    }
+    if (any_parallel) {
+        walk<true>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit);
+    } else {
+        walk<false>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit);
+    }
+}
+
+template <bool kParallel, class Visit>
+void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel, unsigned mirror,
+                  const Vector3& root_t0, const Vector3& root_t1, Real t_min, Real& t_max,
+                  Visit& visit) const {
+    struct Cell {
+        Point3 lo, hi;  // real space
+    };
+    struct Frame {
+        Vector3 t0, tm, t1;
+        uint32_t first;  // the node's first child
+        unsigned child;  // next mirrored child to visit; 8 = done
+    };
+    Frame stack[kMaxDepth + 1];
+    // Cells are tracked only when a mid-plane parameter needs the geometry.
+    Cell cells[kParallel ? kMaxDepth + 1 : 1];
+    // Mid-plane parameters of a frame's cell and its first child (the entry-plane rule).
+    auto open = [&](Frame& f, const Cell& cell) {
         for (int a = 0; a < 3; ++a) {
-            Real mid = (f.lo[a] + f.hi[a]) * 0.5;
-            if (parallel[a]) {
-                f.tm[a] = o[a] < mid ? kInfinity : -kInfinity;
+            if constexpr (kParallel) {
+                const Real mid = (cell.lo[a] + cell.hi[a]) * 0.5;
+                if (parallel[a]) {
+                    f.tm[a] = o[a] < mid ? kInfinity : -kInfinity;
+                } else {
+                    f.tm[a] = (mid - o[a]) * inv[a];
+                }
             } else {
-                f.tm[a] = (mid - o[a]) * inv[a];
+                f.tm[a] = (f.t0[a] + f.t1[a]) * 0.5;
             }
         }
-        const Vector3& t0 = f.t0;
-        const Vector3& tm = f.tm;
-        unsigned c = 0;
-        Real enter = enter_of(t0);
-        if (tm.x < enter) c |= 1;
-        if (tm.y < enter) c |= 2;
-        if (tm.z < enter) c |= 4;
-        f.child = c;
+        const Real enter = std::max({f.t0.x, f.t0.y, f.t0.z});
+        f.child = unsigned(f.tm.x < enter) | unsigned(f.tm.y < enter) << 1 |
+                  unsigned(f.tm.z < enter) << 2;
     };
-    {
-        Real enter = enter_of(root.t0), exit = exit_of(root.t1);
-        if (!(enter <= exit) || exit < t_min || enter > t_max) return;
-        root.node = 0;
-        if (nodes_[0].count != kInner) {
-            const Node& n = nodes_[0];
-            if (n.count) visit(&ids_[n.first], size_t(n.count), t_max, enter);
-            return;
-        }
-        open(root);
-    }
+    stack[0].t0 = root_t0;
+    stack[0].t1 = root_t1;
+    stack[0].first = nodes_[0].first;
+    cells[0] = {bounds_.lo, bounds_.hi};
+    open(stack[0], cells[0]);
     int top = 0;
     while (top >= 0) {
         Frame& f = stack[top];
@@ -215,36 +236,42 @@ void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&
         const unsigned c = f.child;
         Vector3 c0, c1;
         for (int a = 0; a < 3; ++a) {
-            bool high = c & (1u << a);
+            const bool high = c & (1u << a);
             c0[a] = high ? f.tm[a] : f.t0[a];
             c1[a] = high ? f.t1[a] : f.tm[a];
         }
         // Next sibling: step across the exit plane that comes first; leaving the parent
         // through its own far plane ends this frame.
-        int axis = (c1.x <= c1.y && c1.x <= c1.z) ? 0 : (c1.y <= c1.z ? 1 : 2);
+        const int axis = (c1.x <= c1.y && c1.x <= c1.z) ? 0 : (c1.y <= c1.z ? 1 : 2);
         f.child = (c & (1u << axis)) ? 8 : (c | (1u << axis));
-        const Real enter = enter_of(c0), exit = exit_of(c1);
+        const Real enter = std::max({c0.x, c0.y, c0.z});
+        const Real exit = std::min({c1.x, c1.y, c1.z});
         // Front to back: every later cell starts at or after this one.
         if (enter > t_max) return;
         if (exit < t_min || !(enter <= exit)) continue;
         const unsigned real = c ^ mirror;
-        const uint32_t index = nodes_[f.node].first + real;
-        const Node& n = nodes_[index];
+        const Node n = nodes_[f.first + real];
         if (n.count != kInner) {
             if (n.count && visit(&ids_[n.first], size_t(n.count), t_max, enter)) return;
             continue;
         }
         Frame& g = stack[top + 1];
-        for (int a = 0; a < 3; ++a) {
-            Real mid = (f.lo[a] + f.hi[a]) * 0.5;
-            bool high = real & (1u << a);
-            g.lo[a] = high ? mid : f.lo[a];
-            g.hi[a] = high ? f.hi[a] : mid;
-        }
         g.t0 = c0;
         g.t1 = c1;
-        g.node = index;
-        open(g);
+        g.first = n.first;
+        if constexpr (kParallel) {
+            const Cell& pc = cells[top];
+            Cell& cc = cells[top + 1];
+            for (int a = 0; a < 3; ++a) {
+                const Real mid = (pc.lo[a] + pc.hi[a]) * 0.5;
+                const bool high = real & (1u << a);
+                cc.lo[a] = high ? mid : pc.lo[a];
+                cc.hi[a] = high ? pc.hi[a] : mid;
+            }
+            open(g, cc);
+        } else {
+            open(g, cells[0]);
+        }
         ++top;
     }
 }
