@@ -179,7 +179,7 @@ struct Object {
 struct AreaLight {
     Vector3 axis1, axis2;
     int size1 = 1, size2 = 1;
-    int adaptive = 0;
+    int adaptive = 100;  // POV-Ray's default when `adaptive` is absent: the full grid
     bool jitter = false, circular = false, orient = false;
 };
 

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "distrib/parent_table.h"
+#include "trace/camera.h"
 #include "trace/shading.h"
 
 namespace povwall::distrib {

@@ -7,6 +7,7 @@
 #include <thread>
 #include <vector>
 
+#include "trace/camera.h"
 #include "trace/tracer.h"
 
 namespace povwall::trace {
@@ -18,15 +19,6 @@ using Clock = std::chrono::steady_clock;
 float aa_encode(float v) { return std::pow(std::max(0.0f, v), 1.0f / 2.5f); }
 
 }  // namespace
-
-Ray camera_ray(const Camera& cam, Real px, Real py, int width, int height) {
-    Real x0 = px / width - 0.5;
-    Real y0 = 0.5 - py / height;
-    if (cam.kind == Camera::Kind::Orthographic) {
-        return {cam.location + cam.right * x0 + cam.up * y0, normalize(cam.direction)};
-    }
-    return {cam.location, normalize(cam.direction + cam.right * x0 + cam.up * y0)};
-}
 
 Image render_scene(const Scene& scene, const RenderSettings& settings, RenderStats* stats) {
     auto t0 = Clock::now();

@@ -29,10 +29,6 @@ struct RenderStats {
     double prepare_seconds = 0, trace_seconds = 0;
 };
 
-// Primary ray through image position (px, py) in pixels (pixel centres at +0.5), with
-// POV-Ray's mapping: x0 = px/W - 0.5, y0 = 0.5 - py/H, dir = direction + x0 right + y0 up.
-Ray camera_ray(const Camera& cam, Real px, Real py, int width, int height);
-
 Image render_scene(const Scene& scene, const RenderSettings& settings,
                    RenderStats* stats = nullptr);
 
