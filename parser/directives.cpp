@@ -498,9 +498,17 @@ void Interpreter::skip_switch_clauses(const Token& at) {
 
 void Interpreter::directive_while(const Token& t) {
     size_t directive_pos = frames_.back().pos - 1;
+    uint64_t key = (uint64_t(uint32_t(frames_.back().file)) << 32) | uint64_t(directive_pos);
     if (parse_condition() != 0) {
+        // A loop that never ends would hang the parse: stop it with a located error.
+        if (++loop_counts_[key] > kMaxLoopIterations) {
+            loop_counts_.erase(key);
+            error(t, "#while loop ran " + std::to_string(kMaxLoopIterations) +
+                         " times: runaway loop?");
+        }
         conds_.push_back({Cond::Kind::While, frames_.size(), directive_pos, {}, 0, 1, t});
     } else {
+        loop_counts_.erase(key);
         skip_conditional(t, false);
     }
 }
@@ -545,6 +553,10 @@ void Interpreter::directive_end(const Token& t) {
             double value = n->c[0] + c.step;
             declare(c.var, Numeric::scalar(value), false, t);
             if (c.step > 0 ? value <= c.end : value >= c.end) {
+                if (++c.iterations > kMaxLoopIterations) {
+                    error(c.at, "#for loop ran " + std::to_string(kMaxLoopIterations) +
+                                    " times: runaway loop?");
+                }
                 conds_.push_back(c);
                 frames_.back().pos = c.pos;
             }

@@ -17,6 +17,7 @@ namespace povwall::parser {
 constexpr int kMaxIncludeDepth = 64;     // POV-Ray allows 32 open files; machine scenes stay lower
 constexpr int kMaxMacroDepth = 1000;     // recursion guard (POV-Ray's symbol table limit is 100)
 constexpr size_t kMaxArrayItems = 1u << 28;
+constexpr uint64_t kMaxLoopIterations = 10'000'000;  // per #while or #for run
 
 // Composes `t` into every pattern transform of the layers (textures move with objects).
 void transform_textures(LayeredTexture& layers, const Transform& t);
@@ -132,6 +133,7 @@ private:
         std::string var;    // #for variable
         double end = 0, step = 1;
         Token at;
+        uint64_t iterations = 0;  // #for runs so far
     };
     struct Binding {
         Value value;
@@ -176,7 +178,8 @@ private:
     std::vector<Frame> frames_;
     std::vector<Cond> conds_;
     std::vector<Scope> scopes_;
-    std::vector<uint8_t> bound_;  // by symbol: ever bound (keywords never are)
+    std::vector<uint8_t> bound_;
+    std::unordered_map<uint64_t, uint64_t> loop_counts_;  // #while runs, by position  // by symbol: ever bound (keywords never are)
     std::vector<Token> pushback_;
     std::vector<std::unique_ptr<RandomStream>> streams_;
     int version_ = 362;

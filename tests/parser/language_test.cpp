@@ -210,5 +210,25 @@ TEST(Lexer, NestedCommentsAndStrayHash) {
     EXPECT_EQ(out, "xy");
 }
 
+std::string first_line(const std::string& text) {
+    std::string e = error_of(text);
+    return e.substr(0, e.find('\n'));
+}
+
+TEST(BadInput, LocatedErrorsInsteadOfCrashesOrHangs) {
+    EXPECT_EQ(first_line("sphere { 0, 1 pigment { rgb <1, 0"),
+              "test.pov:1:34: error: expected an expression but found end of file");
+    EXPECT_EQ(first_line("union { sphere { 0, 1 }\n"),
+              "test.pov:2:1: error: expected an object modifier or '}' but found end of file");
+    EXPECT_EQ(first_line("#macro M() M() #end\nM()\n"),
+              "test.pov:1:12: error: macro 'M' nested too deeply (limit 1000): runaway recursion?");
+    EXPECT_EQ(first_line("mesh2 { vertex_vectors { 1e12, <0, 0, 0> } }"),
+              "test.pov:1:26: error: list length 1000000000000.000000 out of range");
+    EXPECT_EQ(first_line("#declare A = array[100000][100000][1000];"),
+              "test.pov:1:28: error: array too large");
+    EXPECT_EQ(first_line("#for (I, 0, 1, 1e-12) #end"),
+              "test.pov:1:1: error: #for loop ran 10000000 times: runaway loop?");
+}
+
 }  // namespace
 }  // namespace povwall::parser
