@@ -110,6 +110,8 @@ public:
     void parse_mesh(Object& out);
     void parse_mesh2(Object& out);
     int parse_count();
+    const Token* raw_ahead(size_t k) const;  // k-th raw token ahead, if no pushback
+    bool try_plain_vector(Vector3& out, Token* at);
     int new_random_stream(int seed);
     double draw_random(int stream, const Token& at);
 

@@ -365,6 +365,43 @@ void Interpreter::parse_mesh(Object& out) {
     out.shape = std::move(mesh);
 }
 
+const Token* Interpreter::raw_ahead(size_t k) const {
+    if (!pushback_.empty() || frames_.empty()) return nullptr;
+    const Frame& f = frames_.back();
+    if (f.pos + k >= f.end) return nullptr;
+    const Token& t = sources_.file(f.file).tokens[f.pos + k];
+    return t.kind == TokenKind::End ? nullptr : &t;
+}
+
+// Machine-written meshes are millions of `<n, n, n>`: when the raw tokens are exactly that
+// (commas required, optional minus signs, no operator after '>'), read them directly instead
+// of through the expression parser. Anything else is left for parse_vector().
+bool Interpreter::try_plain_vector(Vector3& out, Token* at) {
+    const Token* open = raw_ahead(0);
+    if (!open || !is_punct(*open, '<')) return false;
+    size_t k = 1;
+    double v[3];
+    for (int c = 0; c < 3; ++c) {
+        const Token* t = raw_ahead(k);
+        bool negative = t && is_punct(*t, '-');
+        if (negative) t = raw_ahead(++k);
+        if (!t || t->kind != TokenKind::Number) return false;
+        v[c] = negative ? -t->number : t->number;
+        const Token* sep = raw_ahead(++k);
+        if (!sep || !is_punct(*sep, c < 2 ? ',' : '>')) return false;
+        ++k;
+    }
+    const Token* after = raw_ahead(k);
+    if (after && after->kind == TokenKind::Punct && !is_punct(*after, ',') &&
+        !is_punct(*after, '}') && !is_punct(*after, '<')) {
+        return false;
+    }
+    if (at) *at = *open;
+    frames_.back().pos += k;
+    out = {v[0], v[1], v[2]};
+    return true;
+}
+
 // A mesh2 list length: bounded so that a corrupt count fails cleanly instead of overflowing.
 int Interpreter::parse_count() {
     Token at = peek();
@@ -382,7 +419,9 @@ void Interpreter::parse_mesh2(Object& out) {
         int n = parse_count();
         for (int i = 0; i < n; ++i) {
             accept_punct(',');
-            into.push_back(parse_vector());
+            Vector3 v;
+            if (!try_plain_vector(v, nullptr)) v = parse_vector();
+            into.push_back(v);
         }
         accept_punct(',');  // trailing comma
         expect_punct('}');
@@ -426,8 +465,12 @@ void Interpreter::parse_mesh2(Object& out) {
             int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
-                Token at = peek();
-                Vector3 v = parse_vector();
+                Token at;
+                Vector3 v;
+                if (!try_plain_vector(v, &at)) {
+                    at = peek();
+                    v = parse_vector();
+                }
                 Mesh::Face f;
                 for (int k = 0; k < 3; ++k) {
                     if (v[k] < 0 || v[k] >= double(mesh.vertices.size())) {
@@ -435,24 +478,17 @@ void Interpreter::parse_mesh2(Object& out) {
                     }
                     f.v[k] = uint32_t(v[k]);
                 }
-                // Up to three texture indices may follow.
-                const Token& c = peek();
-                if (is_punct(c, ',')) {
-                    next();
-                    const Token& d = peek();
-                    if (d.kind == TokenKind::Number) {
-                        f.texture = int32_t(parse_float());
-                        while (is_punct(peek(), ',')) {
-                            next();
-                            if (peek().kind != TokenKind::Number) {
-                                unget(Token{TokenKind::Punct, c.file, c.offset, 1, 0, ","});
-                                break;
-                            }
-                            parse_float();
-                        }
-                    } else {
-                        unget(Token{TokenKind::Punct, c.file, c.offset, 1, 0, ","});
-                    }
+                // Up to three texture indices may follow (`<a,b,c>, t0, t1, t2`); read on the
+                // raw stream so that the fast path for the next face stays available.
+                for (int k = 0; k < 3; ++k) {
+                    const Token* first = raw_ahead(0);
+                    if (!first) break;
+                    size_t skip = is_punct(*first, ',') ? 1 : 0;  // the comma is optional
+                    const Token* value = raw_ahead(skip);
+                    if (!value || value->kind != TokenKind::Number) break;
+                    if (skip == 0 && mesh.textures.empty()) break;
+                    frames_.back().pos += skip + 1;
+                    if (k == 0) f.texture = int32_t(value->number);
                 }
                 mesh.faces.push_back(f);
             }

@@ -210,6 +210,29 @@ TEST(Lexer, NestedCommentsAndStrayHash) {
     EXPECT_EQ(out, "xy");
 }
 
+std::string first_line(const std::string& text);
+
+TEST(Mesh2, PlainAndComputedVectorsAgree) {
+    // The first vertices are plain numbers (fast path), the others expressions.
+    Scene s = parse(
+        "#declare H = 0.5;\n"
+        "mesh2 { vertex_vectors { 4, <0, 0, 0>, <1, -2.5, 0>, <0, 1 + 1, 0> <H, H, -H> }\n"
+        "  texture_list { 2, texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } }\n"
+        "  face_indices { 2, <0, 1, 2>, 1, <1, 2, 3> 0, } }\n");
+    const Mesh& m = std::get<Mesh>(s.objects.at(0).shape);
+    ASSERT_EQ(m.vertices.size(), 4u);
+    expect_vec(m.vertices[1], 1, -2.5, 0);
+    expect_vec(m.vertices[2], 0, 2, 0);
+    expect_vec(m.vertices[3], 0.5, 0.5, -0.5);
+    ASSERT_EQ(m.faces.size(), 2u);
+    EXPECT_EQ(m.faces[0].v[2], 2u);
+    EXPECT_EQ(m.faces[0].texture, 1);
+    EXPECT_EQ(m.faces[1].v[0], 1u);
+    EXPECT_EQ(m.faces[1].texture, 0);
+    EXPECT_EQ(first_line("mesh2 { vertex_vectors { 1, <0, 0, 0> } face_indices { 1, <0, 0, 5> } }"),
+              "test.pov:1:59: error: mesh2 face index out of range");
+}
+
 std::string first_line(const std::string& text) {
     std::string e = error_of(text);
     return e.substr(0, e.find('\n'));
