@@ -17,29 +17,44 @@ struct PatternName {
     PatternKind kind;
 };
 constexpr PatternName kPatterns[] = {
-    {"agate", PatternKind::Agate},     {"bozo", PatternKind::Bozo},
-    {"brick", PatternKind::Brick},     {"bumps", PatternKind::Bumps},
-    {"checker", PatternKind::Checker}, {"crackle", PatternKind::Crackle},
-    {"dents", PatternKind::Dents},     {"gradient", PatternKind::Gradient},
-    {"granite", PatternKind::Granite}, {"hexagon", PatternKind::Hexagon},
-    {"leopard", PatternKind::Leopard}, {"mandel", PatternKind::Mandel},
-    {"marble", PatternKind::Marble},   {"onion", PatternKind::Onion},
-    {"quilted", PatternKind::Quilted}, {"radial", PatternKind::Radial},
-    {"ripples", PatternKind::Ripples}, {"spiral1", PatternKind::Spiral1},
-    {"spiral2", PatternKind::Spiral2}, {"spotted", PatternKind::Spotted},
-    {"waves", PatternKind::Waves},     {"wood", PatternKind::Wood},
-    {"wrinkles", PatternKind::Wrinkles}, {"boxed", PatternKind::Boxed},
-    {"cylindrical", PatternKind::Cylindrical}, {"spherical", PatternKind::Spherical},
-    {"planar", PatternKind::Planar},   {"cells", PatternKind::Cells},
+    {"agate", PatternKind::Agate},
+    {"bozo", PatternKind::Bozo},
+    {"brick", PatternKind::Brick},
+    {"bumps", PatternKind::Bumps},
+    {"checker", PatternKind::Checker},
+    {"crackle", PatternKind::Crackle},
+    {"dents", PatternKind::Dents},
+    {"gradient", PatternKind::Gradient},
+    {"granite", PatternKind::Granite},
+    {"hexagon", PatternKind::Hexagon},
+    {"leopard", PatternKind::Leopard},
+    {"mandel", PatternKind::Mandel},
+    {"marble", PatternKind::Marble},
+    {"onion", PatternKind::Onion},
+    {"quilted", PatternKind::Quilted},
+    {"radial", PatternKind::Radial},
+    {"ripples", PatternKind::Ripples},
+    {"spiral1", PatternKind::Spiral1},
+    {"spiral2", PatternKind::Spiral2},
+    {"spotted", PatternKind::Spotted},
+    {"waves", PatternKind::Waves},
+    {"wood", PatternKind::Wood},
+    {"wrinkles", PatternKind::Wrinkles},
+    {"boxed", PatternKind::Boxed},
+    {"cylindrical", PatternKind::Cylindrical},
+    {"spherical", PatternKind::Spherical},
+    {"planar", PatternKind::Planar},
+    {"cells", PatternKind::Cells},
     {"average", PatternKind::Average},
 };
 
 bool is_unsupported_pattern(std::string_view w) {
-    static const char* kNames[] = {"image_map", "bump_map", "material_map", "function",
-                                   "object", "slope", "aoi", "density_file", "facets",
-                                   "pavement", "tiling", "julia", "magnet", "image_pattern",
-                                   "tiles", "proportion", "pigment_pattern",
-                                   "gradient_map"};
+    static const char* kNames[] = {"image_map",  "bump_map",        "material_map",
+                                   "function",   "object",          "slope",
+                                   "aoi",        "density_file",    "facets",
+                                   "pavement",   "tiling",          "julia",
+                                   "magnet",     "image_pattern",   "tiles",
+                                   "proportion", "pigment_pattern", "gradient_map"};
     for (const char* n : kNames) {
         if (w == n) return true;
     }
@@ -79,7 +94,8 @@ Numeric Interpreter::parse_colour() {
             if (p.size == 1) {
                 for (int i = 1; i < 5; ++i) p.c[i] = p.c[0];
             }
-            for (int i = 0; i < 3; ++i) c.c[i] = w == "srgbt" ? srgb_to_linear(p.c[i]) : p.c[i];
+            for (int i = 0; i < 3; ++i)
+                c.c[i] = w == "srgbt" ? srgb_to_linear(p.c[i]) : p.c[i];
             c.c[4] = p.c[3];
         } else if (w == "rgbft" || w == "srgbft") {
             next();
@@ -87,11 +103,15 @@ Numeric Interpreter::parse_colour() {
         } else if (w == "red" || w == "green" || w == "blue" || w == "filter" ||
                    w == "transmit") {
             next();
-            int i = w == "red" ? 0 : w == "green" ? 1 : w == "blue" ? 2 : w == "filter" ? 3 : 4;
+            int i = w == "red"      ? 0
+                    : w == "green"  ? 1
+                    : w == "blue"   ? 2
+                    : w == "filter" ? 3
+                                    : 4;
             c.c[i] = parse_float();
-        } else if (!any && (t.kind == TokenKind::Number || is_punct(t, '<') ||
-                            is_punct(t, '(') || is_punct(t, '-') ||
-                            (t.kind == TokenKind::Word && lookup(t)))) {
+        } else if (!any &&
+                   (t.kind == TokenKind::Number || is_punct(t, '<') || is_punct(t, '(') ||
+                    is_punct(t, '-') || (t.kind == TokenKind::Word && lookup(t)))) {
             Numeric v = parse_express();
             if (v.size == 1) {
                 for (int i = 0; i < 5; ++i) c.c[i] = v.c[0];
@@ -132,8 +152,9 @@ ColourMap Interpreter::parse_colour_map_block() {
         accept_punct(',');
         // Old two-value form: [v1, v2 color A color B]
         if (!is_word(peek(), "color") && !is_word(peek(), "colour") &&
-            !is_word(peek(), "rgb") && !is_word(peek(), "rgbf") && !is_word(peek(), "rgbt") &&
-            !is_word(peek(), "rgbft") && peek().kind == TokenKind::Number) {
+            !is_word(peek(), "rgb") && !is_word(peek(), "rgbf") &&
+            !is_word(peek(), "rgbt") && !is_word(peek(), "rgbft") &&
+            peek().kind == TokenKind::Number) {
             float v2 = float(parse_float());
             Colour a = parse_colour_value();
             Colour b = parse_colour_value();
@@ -155,17 +176,27 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
         if (w != p.name) continue;
         spec.kind = p.kind;
         switch (p.kind) {
-            case PatternKind::Gradient: spec.vector = parse_vector(); break;
-            case PatternKind::Agate: break;
+            case PatternKind::Gradient:
+                spec.vector = parse_vector();
+                break;
+            case PatternKind::Agate:
+                break;
             case PatternKind::Spiral1:
-            case PatternKind::Spiral2: spec.scalar = parse_float(); break;
-            case PatternKind::Mandel: spec.scalar = parse_float(); break;
-            case PatternKind::Quilted: spec.vector = {0, 1, 0}; break;  // control0/1 defaults
+            case PatternKind::Spiral2:
+                spec.scalar = parse_float();
+                break;
+            case PatternKind::Mandel:
+                spec.scalar = parse_float();
+                break;
+            case PatternKind::Quilted:
+                spec.vector = {0, 1, 0};
+                break;  // control0/1 defaults
             case PatternKind::Crackle:
                 spec.vector = {-1, 1, 0};  // form
                 spec.scalar = 2;           // metric
                 break;
-            default: break;
+            default:
+                break;
         }
         return true;
     }
@@ -181,9 +212,11 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
         return true;
     }
     auto turbulence_warp = [&]() -> Warp& {
-        // Classic turbulence keywords edit the pattern's turbulence warp (created on demand).
+        // Classic turbulence keywords edit the pattern's turbulence warp (created on
+        // demand).
         for (Warp& wp : spec.warps) {
-            if (wp.kind == Warp::Kind::Turbulence && wp.transform.is_identity()) return wp;
+            if (wp.kind == Warp::Kind::Turbulence && wp.transform.is_identity())
+                return wp;
         }
         spec.warps.push_back(Warp{});
         return spec.warps.back();
@@ -231,7 +264,8 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     } else if (w == "solid") {
         spec.vector2.y = 1;
     } else if (w == "interior" || w == "exterior") {
-        // Fractal colouring types (mandel/julia): `interior TYPE, FACTOR`; read, not modelled.
+        // Fractal colouring types (mandel/julia): `interior TYPE, FACTOR`; read, not
+        // modelled.
         parse_float();
         accept_punct(',');
         parse_float();
@@ -255,12 +289,18 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
         for (;;) {
             Token m = next();
             if (is_punct(m, '}')) break;
-            if (is_word(m, "octaves")) wp.octaves = int(parse_float());
-            else if (is_word(m, "omega")) wp.omega = parse_float();
-            else if (is_word(m, "lambda")) wp.lambda = parse_float();
-            else if (is_word(m, "offset")) wp.offset = parse_vector();
-            else if (is_word(m, "flip")) wp.flip = parse_vector();
-            else expected("a warp modifier or '}'", m);
+            if (is_word(m, "octaves"))
+                wp.octaves = int(parse_float());
+            else if (is_word(m, "omega"))
+                wp.omega = parse_float();
+            else if (is_word(m, "lambda"))
+                wp.lambda = parse_float();
+            else if (is_word(m, "offset"))
+                wp.offset = parse_vector();
+            else if (is_word(m, "flip"))
+                wp.flip = parse_vector();
+            else
+                expected("a warp modifier or '}'", m);
         }
         spec.warps.push_back(wp);
     } else {
@@ -290,8 +330,10 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
         Token t = next();
         if (is_punct(t, terminator)) return;
         if (try_pattern_keyword(t, p.pattern)) {
-            // checker/hexagon/brick take their colours or pigments right after the keyword
-            if (p.pattern.kind == PatternKind::Checker || p.pattern.kind == PatternKind::Hexagon ||
+            // checker/hexagon/brick take their colours or pigments right after the
+            // keyword
+            if (p.pattern.kind == PatternKind::Checker ||
+                p.pattern.kind == PatternKind::Hexagon ||
                 p.pattern.kind == PatternKind::Brick) {
                 int count = p.pattern.kind == PatternKind::Hexagon ? 3 : 2;
                 for (int i = 0; i < count; ++i) {
@@ -300,11 +342,11 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                     if (is_word(n, "pigment")) {
                         next();
                         p.list.push_back(parse_pigment_block());
-                    } else if (is_punct(n, '}') || (n.kind == TokenKind::Word &&
-                                                    !lookup(n) && !is_word(n, "color") &&
-                                                    !is_word(n, "colour") && !is_word(n, "rgb") &&
-                                                    !is_word(n, "rgbf") && !is_word(n, "rgbt") &&
-                                                    !is_word(n, "rgbft"))) {
+                    } else if (is_punct(n, '}') ||
+                               (n.kind == TokenKind::Word && !lookup(n) &&
+                                !is_word(n, "color") && !is_word(n, "colour") &&
+                                !is_word(n, "rgb") && !is_word(n, "rgbf") &&
+                                !is_word(n, "rgbt") && !is_word(n, "rgbft"))) {
                         break;
                     } else {
                         Pigment sub;
@@ -318,8 +360,9 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
         if (try_pattern_modifier(t, p.pattern)) continue;
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
         if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" ||
-            w == "rgbft" || w == "srgb" || w == "srgbf" || w == "srgbt" || w == "srgbft" ||
-            w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") {
+            w == "rgbft" || w == "srgb" || w == "srgbf" || w == "srgbt" ||
+            w == "srgbft" || w == "red" || w == "green" || w == "blue" || w == "filter" ||
+            w == "transmit") {
             unget(t);
             p.pattern.kind = PatternKind::Solid;
             p.colour = parse_colour_value();
@@ -381,7 +424,8 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
         Token t = next();
         if (is_punct(t, terminator)) return;
         if (try_pattern_keyword(t, n.pattern)) {
-            if (n.pattern.kind == PatternKind::Checker || n.pattern.kind == PatternKind::Hexagon ||
+            if (n.pattern.kind == PatternKind::Checker ||
+                n.pattern.kind == PatternKind::Hexagon ||
                 n.pattern.kind == PatternKind::Brick) {
                 // checker normal{..} normal{..}: entries follow the keyword.
                 int count = n.pattern.kind == PatternKind::Hexagon ? 3 : 2;
@@ -498,7 +542,8 @@ Finish Interpreter::parse_finish_block() {
                     } else if (is_word(m, "exponent")) {
                         f.reflection_exponent = float(parse_float());
                     } else if (is_word(m, "metallic")) {
-                        f.reflection_metallic = starts_float(peek()) ? float(parse_float()) : 1.0f;
+                        f.reflection_metallic =
+                            starts_float(peek()) ? float(parse_float()) : 1.0f;
                     } else {
                         expected("a reflection item or '}'", m);
                     }
@@ -519,12 +564,15 @@ Finish Interpreter::parse_finish_block() {
             for (;;) {
                 Token m = next();
                 if (is_punct(m, '}')) break;
-                if (is_word(m, "thickness")) f.irid_thickness = float(parse_float());
-                else if (is_word(m, "turbulence")) f.irid_turbulence = float(parse_float());
-                else expected("an irid item or '}'", m);
+                if (is_word(m, "thickness"))
+                    f.irid_thickness = float(parse_float());
+                else if (is_word(m, "turbulence"))
+                    f.irid_turbulence = float(parse_float());
+                else
+                    expected("an irid item or '}'", m);
             }
-        } else if (w == "refraction" || w == "ior" || w == "caustics" || w == "fade_distance" ||
-                   w == "fade_power") {
+        } else if (w == "refraction" || w == "ior" || w == "caustics" ||
+                   w == "fade_distance" || w == "fade_power") {
             unsupported(t, "finish " + std::string(w) + " (use interior)");
         } else if (w == "subsurface") {
             unsupported(t, "subsurface");
@@ -549,12 +597,18 @@ Interior Interpreter::parse_interior_block() {
         Token t = next();
         if (is_punct(t, '}')) return in;
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
-        if (w == "ior") in.ior = float(parse_float());
-        else if (w == "caustics") in.caustics = float(parse_float());
-        else if (w == "dispersion") in.dispersion = float(parse_float());
-        else if (w == "dispersion_samples") in.dispersion_samples = int(parse_float());
-        else if (w == "fade_distance") in.fade_distance = float(parse_float());
-        else if (w == "fade_power") in.fade_power = float(parse_float());
+        if (w == "ior")
+            in.ior = float(parse_float());
+        else if (w == "caustics")
+            in.caustics = float(parse_float());
+        else if (w == "dispersion")
+            in.dispersion = float(parse_float());
+        else if (w == "dispersion_samples")
+            in.dispersion_samples = int(parse_float());
+        else if (w == "fade_distance")
+            in.fade_distance = float(parse_float());
+        else if (w == "fade_power")
+            in.fade_power = float(parse_float());
         else if (w == "fade_color" || w == "fade_colour") {
             Colour c = parse_colour_value();
             in.fade_colour = c.rgb;
@@ -609,7 +663,8 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
                 Token e = next();
                 if (is_punct(e, '}')) break;
                 if (!is_punct(e, '[')) expected("'[' or '}' in a texture_map", e);
-                float value = parse_map_value(top.map_pattern->kind == PatternKind::Average);
+                float value =
+                    parse_map_value(top.map_pattern->kind == PatternKind::Average);
                 accept_punct(',');
                 LayeredTexture entry;
                 if (accept_word("texture")) {
@@ -630,7 +685,8 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
             PatternSpec spec;
             if (t.kind == TokenKind::Word && try_pattern_keyword(t, spec)) {
                 top.map_pattern = spec;
-                if (spec.kind == PatternKind::Checker || spec.kind == PatternKind::Hexagon ||
+                if (spec.kind == PatternKind::Checker ||
+                    spec.kind == PatternKind::Hexagon ||
                     spec.kind == PatternKind::Brick) {
                     // checker texture{..} texture{..}: entries follow the keyword.
                     int count = spec.kind == PatternKind::Hexagon ? 3 : 2;
