@@ -401,6 +401,14 @@ Value ExpressionParser::word(const Token& t) {
         }
         return value;
     }
+    // rand() first: generated scenes call it in their innermost loops.
+    if (w == "rand") {
+        in_.expect_punct('(');
+        Token at = in_.peek();
+        double s = arg_float();
+        in_.expect_punct(')');
+        return Numeric::scalar(in_.draw_random(int(s), at));
+    }
     auto f1 = [&](double (*f)(const double*)) { return call_float(t, 1, f); };
     if (w == "pi") return Numeric::scalar(kPi);
     if (w == "tau") return Numeric::scalar(2 * kPi);
@@ -511,13 +519,6 @@ Value ExpressionParser::word(const Token& t) {
         double s = arg_float();
         in_.expect_punct(')');
         return Numeric::scalar(in_.new_random_stream(int(s)));
-    }
-    if (w == "rand") {
-        in_.expect_punct('(');
-        Token at = in_.peek();
-        double s = arg_float();
-        in_.expect_punct(')');
-        return Numeric::scalar(in_.draw_random(int(s), at));
     }
     if (w == "vlength") {
         in_.expect_punct('(');
