@@ -4,19 +4,21 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
 
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
-
 #include "cli/options.h"
 #include "output/diff.h"
+#include "output/image_io.h"
 #include "parser/parser.h"
 
 extern char** environ;
@@ -31,14 +33,16 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-// Runs a command (no shell), stderr to `log`; returns its exit status, -1 if it cannot run.
+// Runs a command (no shell), stderr to `log`; returns its exit status, -1 if it cannot
+// run.
 int run_process(const std::vector<std::string>& args, const std::string& log) {
     std::vector<char*> argv;
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     posix_spawn_file_actions_t fa;
     posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&fa, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
     posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
     pid_t pid;
     int rc = posix_spawnp(&pid, argv[0], &fa, nullptr, argv.data(), environ);
@@ -83,9 +87,19 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
         if (i == 1 || i == 2) continue;  // input and output paths
         h = fnv1a(h, cmd[i]);
     }
-    std::error_code ec;
-    auto stamp = fs::last_write_time("/usr/bin/povray", ec);
-    if (!ec) h = fnv1a(h, std::to_string(stamp.time_since_epoch().count()));
+    // The povray binary found on PATH (a new POV-Ray build invalidates the cache).
+    const char* path_env = std::getenv("PATH");
+    std::stringstream dirs(path_env ? path_env : "");
+    for (std::string d; std::getline(dirs, d, ':');) {
+        std::error_code ec;
+        fs::path exe = fs::path(d.empty() ? "." : d) / "povray";
+        auto stamp = fs::last_write_time(exe, ec);
+        if (ec) continue;
+        h = fnv1a(h, fs::canonical(exe, ec).string());
+        h = fnv1a(h, std::to_string(stamp.time_since_epoch().count()));
+        h = fnv1a(h, std::to_string(fs::file_size(exe, ec)));
+        break;
+    }
     char buf[17];
     std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)h);
     return buf;
@@ -94,8 +108,9 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
 }  // namespace
 
 int run_compare(int argc, char** argv) {
-    CLI::App app{"Render a scene with POV-Ray and with povwall, time both, diff the images",
-                 "povwall compare"};
+    CLI::App app{
+        "Render a scene with POV-Ray and with povwall, time both, diff the images",
+        "povwall compare"};
     RenderOptions o;
     bool json = false;
     std::string keep;
@@ -106,18 +121,34 @@ int run_compare(int argc, char** argv) {
     app.add_option("-L", o.library_paths, "include folder (repeatable)");
     app.add_option("--threads", threads, "threads for both renderers (0: all cores)");
     app.add_flag("--json", json, "print one JSON object");
-    app.add_option("--keep", keep, "folder to keep both images in");
+    app.add_option("--boxes", o.boxes, "povwall's black boxes (see render --boxes)")
+        ->capture_default_str();
+    app.add_option(
+        "--keep", keep,
+        "folder to keep both images (SCENE-povray.png, SCENE-povwall.png) and their "
+        "difference (SCENE-diff.png) in");
     std::string cache;
     bool warn_ok = false;
-    app.add_option("--cache", cache,
-                   "reuse POV-Ray renders from this folder, keyed by a hash of the scene, its "
-                   "includes and the render settings");
+    app.add_option(
+        "--cache", cache,
+        "reuse POV-Ray renders from this folder, keyed by a hash of the scene, its "
+        "includes and the render settings");
     app.add_flag("--warn-ok", warn_ok, "exit 0 on a warning (tests)");
+    output::DiffThresholds t;
+    app.add_option("--max-rmse", t.max_rmse, "largest RMSE that passes")
+        ->capture_default_str();
+    app.add_option("--max-bad-fraction", t.max_bad_fraction,
+                   "largest fraction of bad pixels that passes")
+        ->capture_default_str();
+    app.add_option("--fail", t.fail, "per-channel difference making a pixel bad")
+        ->capture_default_str();
     std::vector<std::string> pov_switches, rest;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
-        if (looks_like_pov_switch(a)) pov_switches.push_back(a);
-        else rest.push_back(a);
+        if (looks_like_pov_switch(a))
+            pov_switches.push_back(a);
+        else
+            rest.push_back(a);
     }
     std::vector<char*> args{argv[0]};
     for (auto& r : rest) args.push_back(r.data());
@@ -159,6 +190,14 @@ int run_compare(int argc, char** argv) {
         cmd.push_back("-A");
     }
     if (o.render.alpha) cmd.push_back("+UA");
+    // Partial renders: POV-Ray writes the full-size image with the rest black, as
+    // povwall.
+    for (const auto& sw : pov_switches) {
+        std::string head = sw.substr(1, 2);
+        for (char& c : head) c = char(std::toupper((unsigned char)c));
+        if (head == "SR" || head == "ER" || head == "SC" || head == "EC")
+            cmd.push_back(sw);
+    }
     std::string scene_dir = fs::path(o.scene).parent_path().string();
     cmd.push_back("+L" + (scene_dir.empty() ? std::string(".") : scene_dir));
     for (const auto& l : o.library_paths) cmd.push_back("+L" + l);
@@ -172,13 +211,15 @@ int run_compare(int argc, char** argv) {
     std::string cached;
     if (!cache.empty()) {
         std::string key = cache_key(o, cmd);
-        if (key.empty()) return 2;  // the scene does not parse: run_render reports it below
+        if (key.empty())
+            return 2;  // the scene does not parse: run_render reports it below
         fs::create_directories(cache);
         cached = (fs::path(cache) / (stem + "-" + key + ".png")).string();
     }
     auto t0 = Clock::now();
     int rc = 0;
-    if (!cached.empty() && fs::exists(cached)) {
+    const bool from_cache = !cached.empty() && fs::exists(cached);
+    if (from_cache) {
         fs::copy_file(cached, pov_png, fs::copy_options::overwrite_existing);
     } else {
         rc = run_process(cmd, log);
@@ -190,8 +231,9 @@ int run_compare(int argc, char** argv) {
     }
     auto t1 = Clock::now();
     if (rc == -1) {
-        std::cerr << "povwall: povray is not installed or not on PATH: nothing to compare "
-                     "with\n";
+        std::cerr
+            << "povwall: povray is not installed or not on PATH: nothing to compare "
+               "with\n";
         return 77;  // CTest's skip code
     }
     if (rc != 0 || !fs::exists(pov_png)) {
@@ -204,6 +246,8 @@ int run_compare(int argc, char** argv) {
         return 2;
     }
     o.output = our_png;
+    o.format_given = false;  // both renders are 8-bit PNG, compared as stored
+    o.bits = 8;
     o.quiet = true;
     auto t2 = Clock::now();
     int our_rc = run_render(o);
@@ -211,17 +255,38 @@ int run_compare(int argc, char** argv) {
     if (our_rc != 0) return our_rc;
     double pov_s = std::chrono::duration<double>(t1 - t0).count();
     double our_s = std::chrono::duration<double>(t3 - t2).count();
-    output::DiffResult r = output::diff_files(our_png, pov_png);
+    output::DiffResult r;
+    try {
+        Image ours = output::read_image(our_png), theirs = output::read_image(pov_png);
+        r = output::diff_images(ours, theirs, t);
+        if (!keep.empty() && r.status != output::DiffResult::Status::SizeMismatch) {
+            OutputEncoding raw;  // |povwall - povray| as values, for looking at
+            raw.gamma_handling = false;
+            output::write_image(output::difference_image(ours, theirs),
+                                (dir / (stem + "-diff.png")).string(), raw);
+        }
+    } catch (const output::ImageIoError& e) {
+        r.status = output::DiffResult::Status::Unreadable;
+        r.error = e.what();
+    }
     if (json) {
         nlohmann::json j = diff_json(r);
         j["povwall_seconds"] = our_s;
-        j["povray_seconds"] = pov_s;
+        // A cached reference has no render time of its own.
+        j["povray_seconds"] =
+            from_cache ? nlohmann::json(nullptr) : nlohmann::json(pov_s);
+        j["povray_cached"] = from_cache;
         j["scene"] = o.scene;
         std::printf("%s\n", j.dump().c_str());
     } else {
         std::printf("scene: %s (%dx%d)\n", o.scene.c_str(), o.width, o.height);
-        std::printf("povray: %.3f s\npovwall: %.3f s (%.2fx)\n", pov_s, our_s,
-                    our_s > 0 ? pov_s / our_s : 0.0);
+        if (from_cache) {
+            std::printf("povray: cached reference %s\npovwall: %.3f s\n", cached.c_str(),
+                        our_s);
+        } else {
+            std::printf("povray: %.3f s\npovwall: %.3f s (%.2fx faster)\n", pov_s, our_s,
+                        our_s > 0 ? pov_s / our_s : 0.0);
+        }
         print_diff(r);
     }
     if (keep.empty()) fs::remove_all(dir);

@@ -1,10 +1,9 @@
 // The povwall command: subcommands render, diff, compare, and POV-Ray's own +X switches.
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "cli/options.h"
 
@@ -12,11 +11,16 @@ namespace povwall::cli {
 namespace {
 
 const char* kUsage =
-    "usage: povwall render SCENE.pov [-o OUT.png] [-W N] [-H N] [-L DIR]... [--threads N]\n"
+    "usage: povwall render SCENE.pov [-o OUT.png] [-W N] [-H N] [-L DIR]... [--threads "
+    "N]\n"
     "                      [+POV-Ray switches]\n"
     "       povwall +ISCENE.pov +OOUT.png +W320 +H240 [+Ldir] [+A0.3] [+UA] ...\n"
-    "       povwall diff A.png B.png [--json] [--fail T] [--max-rmse R] [--max-bad-fraction F]\n"
-    "       povwall compare SCENE.pov [-W N] [-H N] [--json] [--keep DIR]\n";
+    "       povwall OPTIONS.ini [+switches]\n"
+    "       povwall diff A.png B.png [--json] [-o DIFF.png] [--fail T] [--failpercent "
+    "P]\n"
+    "                      [--warn T] [--warnpercent P] [--max-rmse R]\n"
+    "       povwall compare SCENE.pov [-W N] [-H N] [--json] [--keep DIR] [--threads N]\n"
+    "                      [-L DIR]... [+POV-Ray switches]\n";
 
 int render_main(const std::vector<std::string>& args) {
     RenderOptions o;
@@ -31,10 +35,22 @@ int render_main(const std::vector<std::string>& args) {
         ->capture_default_str();
     app.add_option("--stats", o.stats_file, "write render statistics as JSON");
     app.add_flag("-q,--quiet", o.quiet, "no timing summary, no #debug output");
+    app.add_option("--boxes", o.boxes,
+                   "black boxes: NxNxN equal slabs, N (balanced, N x N x N) or auto")
+        ->capture_default_str();
+    app.add_option("--results", o.results,
+                   "how boxes return colours: forward contributions, parents, or auto")
+        ->check(CLI::IsMember({"auto", "forward", "parents"}))
+        ->capture_default_str();
+    app.add_option("--queue", o.queue, "box work order: priority or fifo")
+        ->check(CLI::IsMember({"priority", "fifo"}))
+        ->capture_default_str();
     std::vector<std::string> pov, rest{"povwall render"};
     for (const auto& a : args) {
-        if (looks_like_pov_switch(a)) pov.push_back(a);
-        else rest.push_back(a);
+        if (looks_like_pov_switch(a) || looks_like_ini_file(a))
+            pov.push_back(a);
+        else
+            rest.push_back(a);
     }
     std::vector<char*> argv;
     for (auto& r : rest) argv.push_back(r.data());
@@ -43,8 +59,13 @@ int render_main(const std::vector<std::string>& args) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : 2;
     }
+    // Switches and .ini files apply in command-line order, later ones winning (as
+    // POV-Ray).
     for (const auto& s : pov) {
-        if (!apply_pov_switch(s, o)) throw UsageError("unknown switch '" + s + "'");
+        if (looks_like_ini_file(s))
+            apply_ini_file(s, o);
+        else if (!apply_pov_switch(s, o))
+            throw UsageError("unknown switch '" + s + "'");
     }
     if (!scene.empty()) o.scene = scene;
     return run_render(o);
@@ -69,12 +90,14 @@ int main(int argc, char** argv) {
             std::fputs(kUsage, stdout);
             return 0;
         }
-        if (looks_like_pov_switch(cmd)) return render_main(args);
+        if (looks_like_pov_switch(cmd) || looks_like_ini_file(cmd))
+            return render_main(args);
         throw UsageError("unknown command '" + cmd + "'");
     } catch (const UsageError& e) {
         std::string line = "povwall";
         for (int i = 1; i < argc; ++i) line += std::string(" ") + argv[i];
-        std::fprintf(stderr, "povwall: error: %s\n  in: %s\n%s", e.what(), line.c_str(), kUsage);
+        std::fprintf(stderr, "povwall: error: %s\n  in: %s\n%s", e.what(), line.c_str(),
+                     kUsage);
         return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "povwall: error: %s\n", e.what());

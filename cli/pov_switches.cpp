@@ -1,5 +1,6 @@
 // POV-Ray's command-line switches: `+` turns an option on (or sets a value), `-` off.
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
 #include "cli/options.h"
@@ -9,7 +10,8 @@ namespace {
 
 bool starts_with_ci(const std::string& s, size_t at, const char* prefix) {
     for (size_t i = 0; prefix[i]; ++i) {
-        if (at + i >= s.size() || std::toupper((unsigned char)s[at + i]) != prefix[i]) return false;
+        if (at + i >= s.size() || std::toupper((unsigned char)s[at + i]) != prefix[i])
+            return false;
     }
     return true;
 }
@@ -25,15 +27,42 @@ double number(const std::string& arg, const std::string& value) {
     }
 }
 
+RenderOptions::Partial partial(const std::string& arg) {
+    std::string v = arg.substr(3);
+    RenderOptions::Partial p;
+    p.value = number(arg, v);
+    p.fraction = v.find('.') != std::string::npos && p.value <= 1.0;
+    if (p.value < 0 || (!p.fraction && p.value < 1)) {
+        throw UsageError("bad value in switch '" + arg + "'");
+    }
+    return p;
+}
+
 }  // namespace
+
+void resolve_partial_render(RenderOptions& o) {
+    auto first = [](const RenderOptions::Partial& p, int size) {
+        if (p.value < 0) return 0;
+        return p.fraction ? int(p.value * size) : int(p.value) - 1;
+    };
+    auto last = [](const RenderOptions::Partial& p, int size) {
+        if (p.value < 0) return -1;
+        return p.fraction ? int(std::ceil(p.value * size)) - 1 : int(p.value) - 1;
+    };
+    o.render.first_row = first(o.start_row, o.height);
+    o.render.last_row = last(o.end_row, o.height);
+    o.render.first_col = first(o.start_col, o.width);
+    o.render.last_col = last(o.end_col, o.width);
+}
 
 bool looks_like_pov_switch(const std::string& arg) {
     if (arg.size() >= 2 && arg[0] == '+') return true;
     if (arg.rfind("Declare=", 0) == 0 || arg.rfind("declare=", 0) == 0) return true;
     if (arg.size() >= 2 && arg[0] == '-' && arg[1] != '-') {
-        // povwall's own short options: -o -W -H -L -h (with a separate or attached value).
+        // povwall's own short options: -o -W -H -L -h (with a separate or attached
+        // value).
         char c = arg[1];
-        if (c == 'o' || c == 'h') return false;
+        if (c == 'o' || c == 'h' || c == 'q') return false;
         if ((c == 'W' || c == 'H' || c == 'L') && arg.size() == 2) return false;
         return true;
     }
@@ -44,7 +73,8 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
     if (arg.rfind("Declare=", 0) == 0 || arg.rfind("declare=", 0) == 0) {
         std::string rest = arg.substr(8);
         size_t eq = rest.find('=');
-        if (eq == std::string::npos) throw UsageError("expected Declare=NAME=VALUE: '" + arg + "'");
+        if (eq == std::string::npos)
+            throw UsageError("expected Declare=NAME=VALUE: '" + arg + "'");
         o.declares[rest.substr(0, eq)] = number(arg, rest.substr(eq + 1));
         return true;
     }
@@ -58,29 +88,41 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
     } else if (starts_with_ci(arg, 1, "AM")) {
         o.render.aa_method = int(number(arg, arg.substr(3)));
     } else if (starts_with_ci(arg, 1, "SR")) {
-        o.render.first_row = int(number(arg, arg.substr(3))) - 1;
+        o.start_row = partial(arg);
     } else if (starts_with_ci(arg, 1, "ER")) {
-        o.render.last_row = int(number(arg, arg.substr(3))) - 1;
+        o.end_row = partial(arg);
     } else if (starts_with_ci(arg, 1, "SC")) {
-        o.render.first_col = int(number(arg, arg.substr(3))) - 1;
+        o.start_col = partial(arg);
     } else if (starts_with_ci(arg, 1, "EC")) {
-        o.render.last_col = int(number(arg, arg.substr(3))) - 1;
+        o.end_col = partial(arg);
     } else if (starts_with_ci(arg, 1, "GA") || starts_with_ci(arg, 1, "GD") ||
                starts_with_ci(arg, 1, "GF") || starts_with_ci(arg, 1, "GR") ||
                starts_with_ci(arg, 1, "GS") || starts_with_ci(arg, 1, "GW")) {
         o.quiet = !on;
     } else {
         switch (std::toupper((unsigned char)arg[1])) {
-            case 'I': o.scene = v2; break;
-            case 'O': o.output = v2; break;
-            case 'W': o.width = int(number(arg, v2)); break;
-            case 'H': o.height = int(number(arg, v2)); break;
-            case 'L': o.library_paths.push_back(v2); break;
+            case 'I':
+                o.scene = v2;
+                break;
+            case 'O':
+                o.output = v2;
+                break;
+            case 'W':
+                o.width = int(number(arg, v2));
+                break;
+            case 'H':
+                o.height = int(number(arg, v2));
+                break;
+            case 'L':
+                o.library_paths.push_back(v2);
+                break;
             case 'A':
                 o.render.antialias = on;
                 if (on && !v2.empty()) o.render.aa_threshold = number(arg, v2);
                 break;
-            case 'R': o.render.aa_depth = int(number(arg, v2)); break;
+            case 'R':
+                o.render.aa_depth = int(number(arg, v2));
+                break;
             case 'J':
                 o.render.aa_jitter = on;
                 if (on && !v2.empty()) o.render.aa_jitter_amount = number(arg, v2);
@@ -88,25 +130,42 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
             case 'F':
                 if (!v2.empty()) {
                     o.format = char(std::toupper((unsigned char)v2[0]));
+                    if (std::string("NTCPE").find(o.format) == std::string::npos) {
+                        throw UsageError("unsupported output format in '" + arg +
+                                         "' (povwall writes +FN, +FT, +FC, +FP, +FE)");
+                    }
+                    o.format_given = true;
                     if (v2.size() > 1) o.bits = int(number(arg, v2.substr(1)));
                 }
                 break;
-            case 'D': case 'V': case 'P': case 'X': case 'Q': case 'B': case 'C': case 'K':
+            case 'D':
+            case 'V':
+            case 'P':
+            case 'X':
+            case 'Q':
+            case 'B':
+            case 'C':
+            case 'K':
             case 'M':
-                break;  // display, verbosity, pause, quality, buffers: no effect on the image
-            default: return false;
+                break;  // display, verbosity, pause, quality, buffers: no effect on the
+                        // image
+            default:
+                return false;
         }
     }
     return true;
 }
 
+std::string format_extension(char format) {
+    return format == 'T' || format == 'C' ? ".tga"
+           : format == 'P'                ? ".ppm"
+           : format == 'E'                ? ".exr"
+                                          : ".png";
+}
+
 std::string default_output_name(const RenderOptions& o) {
     std::filesystem::path p(o.scene);
-    const char* ext = o.format == 'T' || o.format == 'C' ? ".tga"
-                      : o.format == 'P'                  ? ".ppm"
-                      : o.format == 'E'                  ? ".exr"
-                                                         : ".png";
-    return p.filename().replace_extension(ext).string();
+    return p.filename().replace_extension(format_extension(o.format)).string();
 }
 
 }  // namespace povwall::cli

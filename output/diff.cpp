@@ -41,19 +41,21 @@ DiffResult diff_images(const Image& a, const Image& b, const DiffThresholds& t) 
         r.warn_pixels += warn;
     }
     r.rmse = n ? std::sqrt(sum / double(n * 3)) : 0;
-    r.psnr = r.rmse > 0 ? 20 * std::log10(1 / r.rmse) : std::numeric_limits<double>::infinity();
+    r.psnr = r.rmse > 0 ? 20 * std::log10(1 / r.rmse)
+                        : std::numeric_limits<double>::infinity();
     r.bad_pixel_fraction = n ? double(r.bad_pixels) / double(n) : 0;
     // Fail when either golden threshold is exceeded; warn when some pixels are over the
     // per-channel threshold but few enough to be allowed.
     if (r.rmse > t.max_rmse || r.bad_pixel_fraction > t.max_bad_fraction) {
         r.status = DiffResult::Status::Fail;
-    } else if (r.warn_pixels > 0) {
+    } else if (n && double(r.warn_pixels) / double(n) > t.warn_percent / 100.0) {
         r.status = DiffResult::Status::Warn;
     }
     return r;
 }
 
-DiffResult diff_files(const std::string& a, const std::string& b, const DiffThresholds& t) {
+DiffResult diff_files(const std::string& a, const std::string& b,
+                      const DiffThresholds& t) {
     Image ia, ib;
     try {
         ia = read_image(a);
@@ -65,6 +67,17 @@ DiffResult diff_files(const std::string& a, const std::string& b, const DiffThre
         return r;
     }
     return diff_images(ia, ib, t);
+}
+
+Image difference_image(const Image& a, const Image& b) {
+    Image d(a.width, a.height);
+    if (a.width != b.width || a.height != b.height) return d;
+    for (size_t i = 0; i < d.rgba.size(); i += 4) {
+        for (int c = 0; c < 3; ++c)
+            d.rgba[i + c] = std::fabs(a.rgba[i + c] - b.rgba[i + c]);
+        d.rgba[i + 3] = 1.0f;
+    }
+    return d;
 }
 
 }  // namespace povwall::output

@@ -9,11 +9,13 @@ namespace povwall::output {
 
 struct DiffThresholds {
     double fail = 0.1;  // a channel differing by more than this makes a pixel "bad"
-    double warn = 0.1;  // pixels over this (but within the allowed fraction) give a warning
+    double warn =
+        0.1;  // pixels over this (but within the allowed fraction) give a warning
+    double warn_percent = 0.0;  // % of pixels allowed over `warn` before warning (idiff)
     // Failure: rmse above max_rmse or a bad-pixel fraction above max_bad_fraction
     // (povwall's golden thresholds by default).
     double max_rmse = 0.01;
-    double max_bad_fraction = 0.002;
+    double max_bad_fraction = 0.002;  // idiff's -failpercent, as a fraction
 };
 
 struct DiffResult {
@@ -23,13 +25,22 @@ struct DiffResult {
     double max_value_a = 0, max_value_b = 0;
     long long bad_pixels = 0, warn_pixels = 0;
     double bad_pixel_fraction = 0;
-    enum class Status { Pass = 0, Warn = 1, Fail = 2, SizeMismatch = 3, Unreadable = 4 } status =
-        Status::Pass;
+    enum class Status {
+        Pass = 0,
+        Warn = 1,
+        Fail = 2,
+        SizeMismatch = 3,
+        Unreadable = 4
+    } status = Status::Pass;
     std::string error;  // for Unreadable / SizeMismatch
 };
 
 // Compares RGB channels of two images as stored (0..1 scale).
 DiffResult diff_images(const Image& a, const Image& b, const DiffThresholds& t = {});
-DiffResult diff_files(const std::string& a, const std::string& b, const DiffThresholds& t = {});
+DiffResult diff_files(const std::string& a, const std::string& b,
+                      const DiffThresholds& t = {});
+
+// |a - b| per RGB channel (alpha 1), for looking at where two same-sized images differ.
+Image difference_image(const Image& a, const Image& b);
 
 }  // namespace povwall::output

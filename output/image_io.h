@@ -15,9 +15,16 @@ struct ImageIoError : std::runtime_error {
 // Working-space value -> file value in [0,1], before quantisation.
 float encode_channel(float v, const OutputEncoding& enc);
 
-// Writes `image` to `path` (format from the extension: png, tga, ppm, exr, ...) through a
-// temporary file in the same folder and a rename, so no partial file is ever left behind.
+// Writes `image` (working space) to `path`, format from the extension (png, tga, ppm,
+// exr), through a temporary file in the same folder and a rename, so no partial file is
+// ever left behind. With enc.alpha the image's colours are taken as premultiplied (as the
+// renderer makes them); integer formats get straight alpha and EXR premultiplied, as
+// POV-Ray writes them.
 void write_image(const Image& image, const std::string& path, const OutputEncoding& enc);
+// Same, in the given format whatever the extension ("png", "tga", "ppm", "exr"; POV-Ray's
+// +F).
+void write_image(const Image& image, const std::string& path, const OutputEncoding& enc,
+                 const std::string& format);
 
 // Reads an image as stored (encoded values scaled to 0..1), RGBA; throws ImageIoError.
 Image read_image(const std::string& path);

@@ -1,0 +1,226 @@
+// output/: POV-Ray 3.7 output encoding, file formats, atomic writes, and the image diff.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+
+#include "output/diff.h"
+#include "output/image_io.h"
+
+namespace povwall::output {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch() {
+    fs::path d =
+        fs::temp_directory_path() / ("povwall-output-test-" + std::to_string(getpid()));
+    fs::create_directories(d);
+    return d;
+}
+
+Image flat(int w, int h, float r, float g, float b, float a = 1.0f) {
+    Image img(w, h);
+    for (size_t i = 0; i < img.rgba.size(); i += 4) {
+        img.rgba[i] = r;
+        img.rgba[i + 1] = g;
+        img.rgba[i + 2] = b;
+        img.rgba[i + 3] = a;
+    }
+    return img;
+}
+
+std::string head_bytes(const fs::path& p, size_t n) {
+    std::ifstream in(p, std::ios::binary);
+    std::string s(n, '\0');
+    in.read(s.data(), std::streamsize(n));
+    s.resize(size_t(in.gcount()));
+    return s;
+}
+
+// Only the named files are left in `dir` (no temporaries).
+std::vector<std::string> listing(const fs::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir))
+        names.push_back(e.path().filename());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+int quantise8(float v) { return int(std::floor(v * 255.0f + 0.5f)); }
+
+TEST(EncodeChannel, LegacySceneWritesRawValuesClamped) {
+    OutputEncoding legacy;
+    legacy.gamma_handling = false;
+    EXPECT_FLOAT_EQ(encode_channel(0.5f, legacy), 0.5f);
+    EXPECT_EQ(quantise8(encode_channel(0.5f, legacy)), 128);  // verified with POV-Ray 3.7
+    EXPECT_FLOAT_EQ(encode_channel(1.7f, legacy), 1.0f);
+    EXPECT_FLOAT_EQ(encode_channel(-0.3f, legacy), 0.0f);
+}
+
+TEST(EncodeChannel, LinearWorkingSpaceIsSrgbEncoded) {
+    OutputEncoding e;  // assumed_gamma 1, File_Gamma sRGB
+    EXPECT_EQ(quantise8(encode_channel(0.5f, e)), 188);  // POV-Ray: rgb 0.5 -> 188
+    EXPECT_NEAR(encode_channel(0.5f, e), 1.055 * std::pow(0.5, 1 / 2.4) - 0.055, 1e-6);
+    // Below 0.0031308 the sRGB curve is linear with slope 12.92.
+    EXPECT_NEAR(encode_channel(0.002f, e), 0.002 * 12.92, 1e-7);
+    EXPECT_FLOAT_EQ(encode_channel(0.0f, e), 0.0f);
+    EXPECT_FLOAT_EQ(encode_channel(1.0f, e), 1.0f);
+    EXPECT_FLOAT_EQ(encode_channel(3.0f, e), 1.0f);
+}
+
+TEST(EncodeChannel, WorkingGammaIsUndoneBeforeFileEncoding) {
+    OutputEncoding e;
+    e.working_gamma =
+        2.2f;  // #version 3.6; assumed_gamma 2.2: POV-Ray writes 128 for 0.5
+    EXPECT_EQ(quantise8(encode_channel(0.5f, e)), 128);
+    EXPECT_NEAR(encode_channel(0.5f, e),
+                1.055 * std::pow(std::pow(0.5, 2.2), 1 / 2.4) - 0.055, 1e-6);
+    OutputEncoding g;
+    g.file_srgb = false;
+    g.file_gamma = 2.2f;
+    EXPECT_NEAR(encode_channel(0.5f, g), std::pow(0.5, 1 / 2.2), 1e-6);
+}
+
+TEST(WriteImage, Png8And16BitQuantiseAsPovRay) {
+    fs::path p8 = scratch() / "q8.png", p16 = scratch() / "q16.png";
+    Image img = flat(3, 2, 0.5f, 0.0f, 1.0f);
+    OutputEncoding e;
+    write_image(img, p8.string(), e);
+    EXPECT_EQ(head_bytes(p8, 4), "\x89PNG");
+    Image back = read_image(p8.string());
+    ASSERT_EQ(back.width, 3);
+    ASSERT_EQ(back.height, 2);
+    EXPECT_FLOAT_EQ(back.pixel(2, 1)[0] * 255.0f, 188.0f);
+    EXPECT_FLOAT_EQ(back.pixel(2, 1)[1], 0.0f);
+    EXPECT_FLOAT_EQ(back.pixel(2, 1)[2], 1.0f);
+    e.bits = 16;
+    write_image(img, p16.string(), e);
+    back = read_image(p16.string());
+    EXPECT_NEAR(back.pixel(0, 0)[0] * 65535.0f, 48192.0f, 1e-2);  // POV-Ray's PNG16 value
+}
+
+TEST(WriteImage, AlphaIsWrittenStraightAsPovRayDoes) {
+    fs::path p = scratch() / "alpha.png";
+    OutputEncoding e;
+    e.alpha = true;
+    // Premultiplied 0.125 at alpha 0.25 is straight 0.5, which sRGB-encodes to 188.
+    write_image(flat(2, 2, 0.125f, 0.125f, 0.125f, 0.25f), p.string(), e);
+    Image back = read_image(p.string());
+    EXPECT_FLOAT_EQ(back.pixel(1, 1)[0] * 255.0f, 188.0f);
+    EXPECT_FLOAT_EQ(back.pixel(1, 1)[3] * 255.0f, 64.0f);  // floor(0.25*255 + 0.5)
+    fs::path opaque = scratch() / "opaque.png";
+    write_image(flat(2, 2, 0.5f, 0.5f, 0.5f, 0.25f), opaque.string(), OutputEncoding{});
+    EXPECT_FLOAT_EQ(read_image(opaque.string()).pixel(0, 0)[3], 1.0f);  // RGB file
+}
+
+TEST(WriteImage, FormatFromExtensionOrExplicit) {
+    Image img = flat(4, 3, 0.5f, 0.25f, 0.125f);
+    OutputEncoding e;
+    fs::path tga = scratch() / "f.tga", ppm = scratch() / "f.ppm",
+             exr = scratch() / "f.exr";
+    write_image(img, tga.string(), e);
+    write_image(img, ppm.string(), e);
+    write_image(img, exr.string(), e);
+    EXPECT_EQ(head_bytes(ppm, 2), "P6");
+    EXPECT_EQ(head_bytes(exr, 4), std::string("\x76\x2f\x31\x01", 4));
+    EXPECT_FLOAT_EQ(read_image(tga.string()).pixel(0, 0)[0] * 255.0f, 188.0f);
+    EXPECT_FLOAT_EQ(read_image(ppm.string()).pixel(3, 2)[0] * 255.0f, 188.0f);
+    EXPECT_FLOAT_EQ(read_image(exr.string()).pixel(0, 0)[1], 0.25f);  // EXR stays linear
+    // POV-Ray's +FP with a .png name: the format wins over the extension.
+    fs::path forced = scratch() / "forced.png";
+    write_image(img, forced.string(), e, "ppm");
+    EXPECT_EQ(head_bytes(forced, 2), "P6");
+}
+
+TEST(WriteImage, FailuresLeaveNoFileBehind) {
+    fs::path dir = scratch() / "atomic";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    Image img = flat(2, 2, 1, 1, 1);
+    EXPECT_THROW(write_image(img, (dir / "x.unknownformat").string(), OutputEncoding{}),
+                 ImageIoError);
+    EXPECT_THROW(write_image(img, (dir / "missing" / "x.png").string(), OutputEncoding{}),
+                 ImageIoError);
+    EXPECT_TRUE(listing(dir).empty());
+    // Overwriting replaces the old file whole and leaves no temporary.
+    std::ofstream(dir / "old.png") << "not an image";
+    write_image(img, (dir / "old.png").string(), OutputEncoding{});
+    EXPECT_EQ(listing(dir), std::vector<std::string>{"old.png"});
+    EXPECT_EQ(read_image((dir / "old.png").string()).width, 2);
+}
+
+TEST(ReadImage, UnreadableFilesThrow) {
+    EXPECT_THROW(read_image((scratch() / "nonexistent.png").string()), ImageIoError);
+    fs::path text = scratch() / "text.png";
+    std::ofstream(text) << "hello";
+    EXPECT_THROW(read_image(text.string()), ImageIoError);
+}
+
+TEST(Diff, ExactMetricsAndLocationOfTheLargestError) {
+    Image a = flat(10, 10, 0.5f, 0.5f, 0.5f);
+    Image b = a;
+    b.pixel(7, 2)[2] = 0.8f;   // 0.3: bad
+    b.pixel(1, 1)[0] = 0.45f;  // 0.05: not bad
+    DiffResult r = diff_images(a, b);
+    const double sum = 0.3f * 0.3f + 0.05f * 0.05f;  // float inputs as stored
+    EXPECT_NEAR(r.rmse, std::sqrt(sum / 300.0), 1e-7);
+    EXPECT_NEAR(r.psnr, 20 * std::log10(1 / std::sqrt(sum / 300.0)), 1e-5);
+    EXPECT_NEAR(r.max_abs, 0.3, 1e-6);
+    EXPECT_EQ(r.max_x, 7);
+    EXPECT_EQ(r.max_y, 2);
+    EXPECT_EQ(r.max_channel, 2);
+    EXPECT_FLOAT_EQ(float(r.max_value_a), 0.5f);
+    EXPECT_FLOAT_EQ(float(r.max_value_b), 0.8f);
+    EXPECT_EQ(r.bad_pixels, 1);
+    EXPECT_DOUBLE_EQ(r.bad_pixel_fraction, 0.01);
+    EXPECT_EQ(r.status, DiffResult::Status::Fail);  // 0.01 > 0.002 and rmse 0.0176 > 0.01
+    // Alpha is not compared.
+    Image c = a;
+    c.pixel(0, 0)[3] = 0.0f;
+    DiffResult same = diff_images(a, c);
+    EXPECT_EQ(same.rmse, 0.0);
+    EXPECT_EQ(same.psnr, std::numeric_limits<double>::infinity());
+    EXPECT_EQ(same.status, DiffResult::Status::Pass);
+}
+
+TEST(Diff, ThresholdsDecidePassWarnFail) {
+    Image a = flat(100, 10, 0.5f, 0.5f, 0.5f);
+    Image b = a;
+    b.pixel(0, 0)[0] = 0.7f;  // one bad pixel of 1000, rmse 0.2/sqrt(3000) = 0.00365
+    DiffThresholds t;
+    EXPECT_EQ(diff_images(a, b, t).status, DiffResult::Status::Warn);  // 0.001 <= 0.002
+    t.warn_percent = 0.1;
+    EXPECT_EQ(diff_images(a, b, t).status, DiffResult::Status::Pass);  // 0.1 % allowed
+    t.max_bad_fraction = 0.0;
+    EXPECT_EQ(diff_images(a, b, t).status, DiffResult::Status::Fail);
+    t = {};
+    t.max_rmse = 0.003;
+    EXPECT_EQ(diff_images(a, b, t).status, DiffResult::Status::Fail);
+    t = {};
+    t.fail = t.warn = 0.25;  // the pixel is no longer over either threshold
+    DiffResult r = diff_images(a, b, t);
+    EXPECT_EQ(r.bad_pixels, 0);
+    EXPECT_EQ(r.status, DiffResult::Status::Pass);
+}
+
+TEST(Diff, SizeMismatchUnreadableAndDifferenceImage) {
+    DiffResult r = diff_images(flat(4, 4, 0, 0, 0), flat(4, 5, 0, 0, 0));
+    EXPECT_EQ(r.status, DiffResult::Status::SizeMismatch);
+    EXPECT_EQ(r.error, "image sizes differ: 4x4 vs 4x5");
+    r = diff_files((scratch() / "nope.png").string(), (scratch() / "nope2.png").string());
+    EXPECT_EQ(r.status, DiffResult::Status::Unreadable);
+    Image d =
+        difference_image(flat(2, 1, 0.5f, 0.2f, 1.0f), flat(2, 1, 0.25f, 0.7f, 1.0f));
+    EXPECT_FLOAT_EQ(d.pixel(1, 0)[0], 0.25f);
+    EXPECT_FLOAT_EQ(d.pixel(1, 0)[1], 0.5f);
+    EXPECT_FLOAT_EQ(d.pixel(1, 0)[2], 0.0f);
+    EXPECT_FLOAT_EQ(d.pixel(1, 0)[3], 1.0f);
+}
+
+}  // namespace
+}  // namespace povwall::output
