@@ -215,8 +215,7 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
         // Classic turbulence keywords edit the pattern's turbulence warp (created on
         // demand).
         for (Warp& wp : spec.warps) {
-            if (wp.kind == Warp::Kind::Turbulence && wp.transform.is_identity())
-                return wp;
+            if (wp.kind == Warp::Kind::Turbulence && wp.classic) return wp;
         }
         spec.warps.push_back(Warp{});
         return spec.warps.back();
@@ -277,28 +276,69 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
         expect_punct('{', "after 'warp'");
         Warp wp;
         Token k = next();
-        if (is_word(k, "turbulence")) {
+        std::string_view kind = k.kind == TokenKind::Word ? k.text : std::string_view();
+        if (kind == "turbulence") {
             wp.kind = Warp::Kind::Turbulence;
+            wp.classic = false;
             wp.turbulence = parse_vector();
-        } else if (is_word(k, "repeat")) {
+        } else if (kind == "repeat") {
             wp.kind = Warp::Kind::Repeat;
             wp.repeat = parse_vector();
+        } else if (kind == "black_hole") {
+            wp.kind = Warp::Kind::BlackHole;
+            wp.centre = parse_vector();
+            accept_punct(',');
+            wp.radius = parse_float();
+        } else if (kind == "cylindrical" || kind == "spherical" || kind == "toroidal" ||
+                   kind == "planar") {
+            wp.kind = kind == "cylindrical" ? Warp::Kind::Cylindrical
+                      : kind == "spherical" ? Warp::Kind::Spherical
+                      : kind == "toroidal"  ? Warp::Kind::Toroidal
+                                            : Warp::Kind::Planar;
+            const Token& n = peek();
+            bool vector_follows = is_punct(n, '<') || is_word(n, "x") ||
+                                  is_word(n, "y") || is_word(n, "z") ||
+                                  (n.kind == TokenKind::Word && lookup(n) &&
+                                   std::holds_alternative<Numeric>(*lookup(n)));
+            if (wp.kind == Warp::Kind::Planar &&
+                vector_follows) {  // planar <normal>, offset
+                wp.orientation = parse_vector();
+                accept_punct(',');
+                wp.plane_offset = parse_float();
+            }
         } else {
             unsupported(k, "warp " + std::string(k.text));
         }
         for (;;) {
             Token m = next();
             if (is_punct(m, '}')) break;
-            if (is_word(m, "octaves"))
+            std::string_view mw = m.kind == TokenKind::Word ? m.text : std::string_view();
+            if (mw == "octaves")
                 wp.octaves = int(parse_float());
-            else if (is_word(m, "omega"))
+            else if (mw == "omega")
                 wp.omega = parse_float();
-            else if (is_word(m, "lambda"))
+            else if (mw == "lambda")
                 wp.lambda = parse_float();
-            else if (is_word(m, "offset"))
+            else if (mw == "offset")
                 wp.offset = parse_vector();
-            else if (is_word(m, "flip"))
+            else if (mw == "flip")
                 wp.flip = parse_vector();
+            else if (mw == "strength")
+                wp.strength = parse_float();
+            else if (mw == "falloff")
+                wp.falloff = parse_float();
+            else if (mw == "inverse")
+                wp.inverse = true;
+            else if (mw == "repeat")
+                wp.repeat = parse_vector();
+            else if (mw == "turbulence")
+                wp.turbulence = parse_vector();
+            else if (mw == "orientation")
+                wp.orientation = parse_vector();
+            else if (mw == "dist_exp")
+                wp.dist_exp = parse_float();
+            else if (mw == "major_radius")
+                wp.major_radius = parse_float();
             else
                 expected("a warp modifier or '}'", m);
         }

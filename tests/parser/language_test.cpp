@@ -222,6 +222,31 @@ TEST(Lexer, NestedCommentsAndStrayHash) {
 
 std::string first_line(const std::string& text);
 
+TEST(Textures, WarpsAndClassicTurbulence) {
+    Scene s = parse(
+        "sphere { 0, 1 pigment { marble turbulence 0.5 octaves 3\n"
+        "  warp { turbulence <1, 2, 3> octaves 4 }\n"
+        "  warp { black_hole <1, 0, 0>, 0.5 strength 2 falloff 3 inverse }\n"
+        "  warp { planar z, 0.25 } warp { toroidal orientation y dist_exp 1 major_radius "
+        "2 } } }\n");
+    const auto& w = s.objects[0].texture[0].pigment.pattern.warps;
+    ASSERT_EQ(w.size(), 5u);
+    EXPECT_TRUE(w[0].classic);
+    EXPECT_EQ(w[0].octaves, 3);
+    EXPECT_FALSE(w[1].classic);
+    expect_vec(w[1].turbulence, 1, 2, 3);
+    EXPECT_EQ(w[2].kind, Warp::Kind::BlackHole);
+    expect_vec(w[2].centre, 1, 0, 0);
+    EXPECT_EQ(w[2].radius, 0.5);
+    EXPECT_EQ(w[2].strength, 2);
+    EXPECT_TRUE(w[2].inverse);
+    EXPECT_EQ(w[3].kind, Warp::Kind::Planar);
+    expect_vec(w[3].orientation, 0, 0, 1);
+    EXPECT_EQ(w[3].plane_offset, 0.25);
+    EXPECT_EQ(w[4].kind, Warp::Kind::Toroidal);
+    EXPECT_EQ(w[4].major_radius, 2);
+}
+
 TEST(Mesh2, PlainAndComputedVectorsAgree) {
     // The first vertices are plain numbers (fast path), the others expressions.
     Scene s = parse(
