@@ -1,5 +1,5 @@
-// The token stream and the directives it runs: #declare, #if, #while, #macro, #include, ...
-// Directives are executed when the stream reaches them, so they may appear anywhere.
+// The directives: #declare, #if, #while, #macro, #include, ... They run when the token
+// stream (tokens.cpp) reaches them, so they may appear anywhere.
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -10,284 +10,6 @@
 namespace povwall::parser {
 
 namespace fs = std::filesystem;
-
-Token Interpreter::next_raw() {
-    while (!frames_.empty()) {
-        Frame& f = frames_.back();
-        const SourceFile& file = sources_.file(f.file);
-        if (f.pos < f.end && file.tokens[f.pos].kind != TokenKind::End) {
-            return file.tokens[f.pos++];
-        }
-        // The frame is exhausted: a file or a macro body ends here.
-        const Token& end_tok = file.tokens[std::min(f.pos, file.tokens.size() - 1)];
-        while (!conds_.empty() && conds_.back().frame == frames_.size()) {
-            const Cond& c = conds_.back();
-            if (f.kind == Frame::Kind::Macro) break;
-            std::string what = c.at.kind == TokenKind::Directive ? std::string(c.at.text) : "?";
-            error(c.at, "#" + what + " has no matching #end");
-        }
-        if (frames_.size() == 1) return end_tok;
-        scopes_.resize(f.scope_depth);
-        if (f.kind == Frame::Kind::Macro) --macro_depth_;
-        frames_.pop_back();
-    }
-    return Token{};
-}
-
-void Interpreter::unget(const Token& t) { pushback_.push_back(t); }
-
-Token Interpreter::next() {
-    if (!pushback_.empty()) {
-        Token t = pushback_.back();
-        pushback_.pop_back();
-        return t;
-    }
-    for (;;) {
-        Token t = next_raw();
-        if (t.kind == TokenKind::Directive) {
-            run_directive(t);
-        } else if (t.kind == TokenKind::Word) {
-            const Value* v = lookup(t);
-            if (!v) return t;
-            if (auto m = std::get_if<std::shared_ptr<Macro>>(v)) {
-                std::shared_ptr<Macro> keep = *m;
-                invoke_macro(t, *keep);
-            } else if (auto u = std::get_if<std::shared_ptr<UnsupportedValue>>(v)) {
-                unsupported(t, (*u)->feature);
-            } else if (auto a = std::get_if<std::shared_ptr<ArrayValue>>(v)) {
-                const Frame& f = frames_.back();
-                const auto& toks = sources_.file(f.file).tokens;
-                if (f.pos < f.end && is_punct(toks[f.pos], '[')) {
-                    std::shared_ptr<ArrayValue> keep = *a;
-                    return subscript_token(t, *keep);
-                }
-                return t;
-            } else {
-                return t;
-            }
-        } else {
-            return t;
-        }
-        // A directive or macro call may have looked one token ahead.
-        if (!pushback_.empty()) {
-            Token p = pushback_.back();
-            pushback_.pop_back();
-            return p;
-        }
-    }
-}
-
-// POV-Ray reads subscripts in its tokenizer, so an element can stand wherever an identifier
-// can (`texture { T[i][j] }`). The element is bound to a name like "T[1][2]" (which no scene
-// can spell) and that name is returned; a small rotating pool bounds the memory.
-Token Interpreter::subscript_token(const Token& name, const ArrayValue& array) {
-    std::string label(name.text);
-    size_t flat = 0;
-    uint32_t end_offset = name.offset + name.length;
-    for (size_t d = 0; d < array.dims.size(); ++d) {
-        if (!is_punct(peek(), '[')) break;
-        next();
-        Token at = peek();
-        int i = int(parse_float());
-        Token close = next();
-        if (!is_punct(close, ']')) expected("']' after the subscript", close);
-        if (i < 0 || i >= array.dims[d]) {
-            error(at, "array subscript " + std::to_string(i) + " out of range 0.." +
-                          std::to_string(array.dims[d] - 1));
-        }
-        flat = flat * size_t(array.dims[d]) + size_t(i);
-        label += "[" + std::to_string(i) + "]";
-        if (close.file == name.file) end_offset = close.offset + close.length;
-    }
-    constexpr size_t kPool = 256;
-    if (element_names_.size() < kPool) element_names_.resize(kPool);
-    std::string& slot = element_names_[next_element_name_];
-    next_element_name_ = (next_element_name_ + 1) % kPool;
-    if (!slot.empty()) scopes_[0].erase(sources_.intern(slot));
-    slot = label;
-    uint32_t sym = sources_.intern(slot);
-    const Value& item = array.items[flat];
-    if (auto u = std::get_if<std::shared_ptr<UnsupportedValue>>(&item)) {
-        Token whole = name;
-        whole.length = end_offset - name.offset;
-        unsupported(whole, (*u)->feature);
-    }
-    if (!std::holds_alternative<std::monostate>(item)) bind(scopes_[0], sym).value = item;
-    Token t = name;
-    t.text = slot;
-    t.sym = sym;
-    t.length = end_offset - name.offset;
-    return t;
-}
-
-bool Interpreter::accept_punct(char c) {
-    if (is_punct(peek(), c)) {
-        next();
-        return true;
-    }
-    return false;
-}
-
-bool Interpreter::accept_semicolon() {
-    // Looks at the raw stream so that a directive after the statement is not run before
-    // the statement has taken effect.
-    if (!pushback_.empty()) return accept_punct(';');
-    if (frames_.empty()) return false;
-    Frame& f = frames_.back();
-    const auto& toks = sources_.file(f.file).tokens;
-    if (f.pos < f.end && is_punct(toks[f.pos], ';')) {
-        ++f.pos;
-        return true;
-    }
-    return false;
-}
-
-bool Interpreter::raw_next_is_punct(char c) {
-    if (!pushback_.empty()) return is_punct(pushback_.back(), c);
-    if (frames_.empty()) return false;
-    const Frame& f = frames_.back();
-    const auto& toks = sources_.file(f.file).tokens;
-    return f.pos < f.end && is_punct(toks[f.pos], c);
-}
-
-bool Interpreter::accept_raw_punct(char c) {
-    if (!pushback_.empty()) return accept_punct(c);
-    if (frames_.empty()) return false;
-    Frame& f = frames_.back();
-    const auto& toks = sources_.file(f.file).tokens;
-    if (f.pos < f.end && is_punct(toks[f.pos], c)) {
-        ++f.pos;
-        return true;
-    }
-    return false;
-}
-
-bool Interpreter::accept_raw_word(std::string_view w) {
-    // Like accept_semicolon: a directive after the item must not run before it is stored.
-    if (!pushback_.empty()) return accept_word(w);
-    if (frames_.empty()) return false;
-    Frame& f = frames_.back();
-    const auto& toks = sources_.file(f.file).tokens;
-    if (f.pos < f.end && is_word(toks[f.pos], w)) {
-        ++f.pos;
-        return true;
-    }
-    return false;
-}
-
-bool Interpreter::accept_word(std::string_view w) {
-    if (is_word(peek(), w)) {
-        next();
-        return true;
-    }
-    return false;
-}
-
-void Interpreter::expect_punct(char c, std::string_view what) {
-    Token t = next();
-    if (!is_punct(t, c)) {
-        std::string want = std::string("'") + c + "'";
-        if (!what.empty()) want += std::string(" ") + std::string(what);
-        expected(want, t);
-    }
-}
-
-std::string Interpreter::describe(const Token& t) const {
-    switch (t.kind) {
-        case TokenKind::End: return "end of file";
-        case TokenKind::String: return "string \"" + std::string(t.text) + "\"";
-        case TokenKind::Directive: return "'#" + std::string(t.text) + "'";
-        default: return "'" + std::string(t.text) + "'";
-    }
-}
-
-void Interpreter::error(const Token& at, const std::string& message) {
-    std::string text = format_diagnostic(sources_, at, "error", message);
-    // Inside macros, also point at the call sites, innermost first.
-    for (auto it = frames_.rbegin(); it != frames_.rend(); ++it) {
-        if (it->kind == Frame::Kind::Macro && it->call.file >= 0) {
-            std::string note = "in macro '";
-            note += it->call.text;
-            note += "' called from here";
-            text += '\n';
-            text += format_diagnostic(sources_, it->call, "note", note);
-        }
-    }
-    throw ParseError(ParseError::Kind::Syntax, text, message, sources_.location(at));
-}
-
-void Interpreter::unsupported(const Token& at, std::string_view feature) {
-    std::string message = "unsupported: " + std::string(feature);
-    throw ParseError(ParseError::Kind::Unsupported,
-                     format_diagnostic(sources_, at, "error", message), message,
-                     sources_.location(at));
-}
-
-void Interpreter::expected(std::string_view what, const Token& found) {
-    error(found, "expected " + std::string(what) + " but found " + describe(found));
-}
-
-// ------------------------------------------------------------------ symbols
-
-Interpreter::Binding* Interpreter::find_binding(uint32_t sym, int* scope_index) {
-    if (sym == 0 || sym >= bound_.size() || !bound_[sym]) return nullptr;
-    for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
-        auto it = scopes_[i].find(sym);
-        if (it != scopes_[i].end()) {
-            if (scope_index) *scope_index = i;
-            return &it->second;
-        }
-    }
-    return nullptr;
-}
-
-const Value* Interpreter::lookup_symbol(uint32_t sym) const {
-    // Most words are keywords, never bound: answered without touching the scopes.
-    if (sym == 0 || sym >= bound_.size() || !bound_[sym]) return nullptr;
-    for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
-        auto it = scopes_[i].find(sym);
-        if (it != scopes_[i].end()) return &it->second.value;
-    }
-    return nullptr;
-}
-
-const Value* Interpreter::lookup(std::string_view name) const {
-    return lookup_symbol(sources_.find_symbol(name));
-}
-
-void Interpreter::declare(const std::string& name, Value v, bool local, const Token& at) {
-    (void)at;
-    uint32_t sym = sources_.intern(name);
-    if (local) {
-        Binding& b = bind(scopes_.back(), sym);
-        b.value = std::move(v);
-        b.ref_scope = -1;
-        return;
-    }
-    // #declare: an existing macro parameter passed by reference writes through to the
-    // caller's variable; otherwise the identifier is global.
-    int index = -1;
-    Binding* b = find_binding(sym, &index);
-    uint32_t target = sym;
-    while (b && b->ref_scope >= 0) {
-        int target_scope = b->ref_scope;
-        target = b->ref_name;
-        b->value = v;
-        auto it = scopes_[target_scope].find(target);
-        if (it == scopes_[target_scope].end()) {
-            b = nullptr;
-            break;
-        }
-        b = &it->second;
-        index = target_scope;
-    }
-    if (b) {
-        // An existing identifier (global, or a #local of an enclosing scope) is updated.
-        b->value = std::move(v);
-        return;
-    }
-    bind(scopes_[0], target).value = std::move(v);
-}
 
 // ------------------------------------------------------------------ directives
 
@@ -317,8 +39,8 @@ void Interpreter::run_directive(const Token& t) {
         return directive_if(t, d == "ifdef" ? defined : !defined);
     }
     if (d == "else" || d == "elseif") {
-        if (conds_.empty() ||
-            (conds_.back().kind != Cond::Kind::If && conds_.back().kind != Cond::Kind::Switch)) {
+        if (conds_.empty() || (conds_.back().kind != Cond::Kind::If &&
+                               conds_.back().kind != Cond::Kind::Switch)) {
             error(t, "#" + std::string(d) + " without a matching #if");
         }
         if (conds_.back().kind == Cond::Kind::Switch) {
@@ -377,7 +99,8 @@ void Interpreter::run_directive(const Token& t) {
         std::string s = parse_string();
         if (options_.messages) {
             if (d == "warning") {
-                *options_.messages << format_diagnostic(sources_, t, "warning", s) << "\n";
+                *options_.messages << format_diagnostic(sources_, t, "warning", s)
+                                   << "\n";
             } else {
                 *options_.messages << s;
             }
@@ -411,8 +134,8 @@ void Interpreter::directive_if(const Token& t, bool taken) {
             const Token& s = toks[frames_.back().pos++];
             if (s.kind != TokenKind::Directive) continue;
             std::string_view n = s.text;
-            if (n == "if" || n == "ifdef" || n == "ifndef" || n == "while" || n == "for" ||
-                n == "switch" || n == "macro") {
+            if (n == "if" || n == "ifdef" || n == "ifndef" || n == "while" ||
+                n == "for" || n == "switch" || n == "macro") {
                 ++depth;
             } else if (n == "end") {
                 if (depth == 0) return;
@@ -498,9 +221,18 @@ void Interpreter::skip_switch_clauses(const Token& at) {
 
 void Interpreter::directive_while(const Token& t) {
     size_t directive_pos = frames_.back().pos - 1;
+    uint64_t key =
+        (uint64_t(uint32_t(frames_.back().file)) << 32) | uint64_t(directive_pos);
     if (parse_condition() != 0) {
+        // A loop that never ends would hang the parse: stop it with a located error.
+        if (++loop_counts_[key] > kMaxLoopIterations) {
+            loop_counts_.erase(key);
+            error(t, "#while loop ran " + std::to_string(kMaxLoopIterations) +
+                         " times: runaway loop?");
+        }
         conds_.push_back({Cond::Kind::While, frames_.size(), directive_pos, {}, 0, 1, t});
     } else {
+        loop_counts_.erase(key);
         skip_conditional(t, false);
     }
 }
@@ -523,7 +255,12 @@ void Interpreter::directive_for(const Token& t) {
         skip_conditional(t, false);
         return;
     }
-    Cond c{Cond::Kind::For, frames_.size(), frames_.back().pos, std::string(var.text), end, step,
+    Cond c{Cond::Kind::For,
+           frames_.size(),
+           frames_.back().pos,
+           std::string(var.text),
+           end,
+           step,
            t};
     conds_.push_back(c);
 }
@@ -541,10 +278,15 @@ void Interpreter::directive_end(const Token& t) {
         case Cond::Kind::For: {
             const Value* v = lookup(c.var);
             const Numeric* n = v ? std::get_if<Numeric>(v) : nullptr;
-            if (!n) error(t, "#for loop variable '" + c.var + "' was undefined in the loop");
+            if (!n)
+                error(t, "#for loop variable '" + c.var + "' was undefined in the loop");
             double value = n->c[0] + c.step;
             declare(c.var, Numeric::scalar(value), false, t);
             if (c.step > 0 ? value <= c.end : value >= c.end) {
+                if (++c.iterations > kMaxLoopIterations) {
+                    error(c.at, "#for loop ran " + std::to_string(kMaxLoopIterations) +
+                                    " times: runaway loop?");
+                }
                 conds_.push_back(c);
                 frames_.back().pos = c.pos;
             }
@@ -558,12 +300,14 @@ void Interpreter::directive_end(const Token& t) {
 void Interpreter::directive_declare(const Token& t, bool local) {
     Token name = next_raw();
     if (is_word(name, "deprecated")) {
-        // #declare deprecated [once] ["message"] NAME = ...: the note is for POV-Ray's console.
+        // #declare deprecated [once] ["message"] NAME = ...: the note is for POV-Ray's
+        // console.
         name = next_raw();
         if (is_word(name, "once")) name = next_raw();
         if (name.kind == TokenKind::String) name = next_raw();
     }
-    if (name.kind != TokenKind::Word) expected("an identifier after #" + std::string(t.text), name);
+    if (name.kind != TokenKind::Word)
+        expected("an identifier after #" + std::string(t.text), name);
     std::string key(name.text);
     // Element assignment: #declare A[i][j] = value
     std::vector<int> indices;
@@ -573,8 +317,9 @@ void Interpreter::directive_declare(const Token& t, bool local) {
         expect_punct(']');
     }
     expect_punct('=', "after the identifier");
-    // A right-hand side using an unsupported feature does not stop the parse (include files
-    // declare many things a scene never uses); the identifier errors only when used.
+    // A right-hand side using an unsupported feature does not stop the parse (include
+    // files declare many things a scene never uses); the identifier errors only when
+    // used.
     const size_t frame_count = frames_.size(), cond_count = conds_.size();
     const size_t scope_count = scopes_.size();
     const int macro_depth = macro_depth_;
@@ -598,14 +343,17 @@ void Interpreter::directive_declare(const Token& t, bool local) {
     }
     if (!indices.empty()) {
         const Value* existing = lookup(key);
-        auto arr = existing ? std::get_if<std::shared_ptr<ArrayValue>>(existing) : nullptr;
+        auto arr =
+            existing ? std::get_if<std::shared_ptr<ArrayValue>>(existing) : nullptr;
         if (!arr) error(name, "'" + key + "' is not an array");
         const auto& dims = (*arr)->dims;
-        if (indices.size() != dims.size()) error(name, "wrong number of array subscripts");
+        if (indices.size() != dims.size())
+            error(name, "wrong number of array subscripts");
         size_t flat = 0;
         for (size_t i = 0; i < dims.size(); ++i) {
             if (indices[i] < 0 || indices[i] >= dims[i]) {
-                error(name, "array subscript " + std::to_string(indices[i]) + " out of range");
+                error(name,
+                      "array subscript " + std::to_string(indices[i]) + " out of range");
             }
             flat = flat * dims[i] + size_t(indices[i]);
         }
@@ -616,8 +364,8 @@ void Interpreter::directive_declare(const Token& t, bool local) {
     accept_semicolon();
 }
 
-// Skips the rest of a declaration's right-hand side without running it: up to a ';' or the
-// brace that closes its block, or to the next directive of an expression with no ';'.
+// Skips the rest of a declaration's right-hand side without running it: up to a ';' or
+// the brace that closes its block, or to the next directive of an expression with no ';'.
 void Interpreter::skip_declaration_rest() {
     Frame& f = frames_.back();
     const auto& toks = sources_.file(f.file).tokens;
@@ -634,7 +382,8 @@ void Interpreter::skip_declaration_rest() {
             if (--depth <= 0) {
                 depth = 0;
                 // A layered texture continues with another `texture {`.
-                if (c == '}' && !(f.pos < f.end && is_word(toks[f.pos], "texture"))) return;
+                if (c == '}' && !(f.pos < f.end && is_word(toks[f.pos], "texture")))
+                    return;
             }
         } else if (c == ';' && depth == 0) {
             --f.pos;  // left for accept_semicolon
@@ -703,8 +452,8 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
     for (size_t i = 0; i < m.params.size(); ++i) {
         if (is_punct(peek(), ')')) {
             if (m.optional_params[i]) continue;
-            error(peek(), "macro '" + m.name + "' expects " + std::to_string(m.params.size()) +
-                              " parameters");
+            error(peek(), "macro '" + m.name + "' expects " +
+                              std::to_string(m.params.size()) + " parameters");
         }
         if (is_punct(peek(), ',') && m.optional_params[i]) {
             next();
@@ -717,7 +466,8 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
             int scope = -1;
             uint32_t key = a.sym;
             Binding* existing = find_binding(key, &scope);
-            if (existing && !std::holds_alternative<std::shared_ptr<Macro>>(existing->value)) {
+            if (existing &&
+                !std::holds_alternative<std::shared_ptr<Macro>>(existing->value)) {
                 Token id = next();
                 const Token& after = peek();
                 if (is_punct(after, ',') || is_punct(after, ')')) {
@@ -772,7 +522,8 @@ void Interpreter::directive_include(const Token& t) {
     Token nt = peek();
     std::string name = parse_string();
     if (frames_.size() >= size_t(kMaxIncludeDepth)) {
-        error(nt, "#include nested too deeply (limit " + std::to_string(kMaxIncludeDepth) + ")");
+        error(nt, "#include nested too deeply (limit " +
+                      std::to_string(kMaxIncludeDepth) + ")");
     }
     std::string path = resolve_include(name, frames_.back().file);
     if (path.empty()) error(nt, "cannot find include file \"" + name + "\"");
@@ -782,8 +533,12 @@ void Interpreter::directive_include(const Token& t) {
     ss << in.rdbuf();
     int index = sources_.add(path, ss.str());
     scopes_.emplace_back();
-    frames_.push_back(
-        {index, 0, sources_.file(index).tokens.size(), Frame::Kind::File, scopes_.size() - 1, {}});
+    frames_.push_back({index,
+                       0,
+                       sources_.file(index).tokens.size(),
+                       Frame::Kind::File,
+                       scopes_.size() - 1,
+                       {}});
 }
 
 }  // namespace povwall::parser

@@ -30,10 +30,18 @@ Numeric combine(Numeric a, Numeric b, char op) {
     r.colour = a.colour || b.colour;
     for (int i = 0; i < size; ++i) {
         switch (op) {
-            case '+': r.c[i] = a.c[i] + b.c[i]; break;
-            case '-': r.c[i] = a.c[i] - b.c[i]; break;
-            case '*': r.c[i] = a.c[i] * b.c[i]; break;
-            case '/': r.c[i] = a.c[i] / b.c[i]; break;
+            case '+':
+                r.c[i] = a.c[i] + b.c[i];
+                break;
+            case '-':
+                r.c[i] = a.c[i] - b.c[i];
+                break;
+            case '*':
+                r.c[i] = a.c[i] * b.c[i];
+                break;
+            case '/':
+                r.c[i] = a.c[i] / b.c[i];
+                break;
         }
     }
     return r;
@@ -55,44 +63,65 @@ Vector3 axis_rotate(const Vector3& v, const Vector3& axis, double degrees) {
 
 const char* type_name(const Value& v) {
     switch (v.index()) {
-        case 0: return "nothing";
-        case 1: return std::get<Numeric>(v).size == 1 ? "float" : "vector";
-        case 2: return "string";
-        case 3: return "object";
-        case 4: return "texture";
-        case 5: return "pigment";
-        case 6: return "finish";
-        case 7: return "normal";
-        case 8: return "interior";
-        case 9: return "camera";
-        case 10: return "light_source";
-        case 11: return "array";
-        case 12: return "transform";
-        case 13: return "macro";
-        case 14: return "material";
-        case 15: return "color_map";
-        case 16: return "sky_sphere";
-        case 17: return "fog";
-        case 18: return "unsupported feature";
+        case 0:
+            return "nothing";
+        case 1:
+            return std::get<Numeric>(v).size == 1 ? "float" : "vector";
+        case 2:
+            return "string";
+        case 3:
+            return "object";
+        case 4:
+            return "texture";
+        case 5:
+            return "pigment";
+        case 6:
+            return "finish";
+        case 7:
+            return "normal";
+        case 8:
+            return "interior";
+        case 9:
+            return "camera";
+        case 10:
+            return "light_source";
+        case 11:
+            return "array";
+        case 12:
+            return "transform";
+        case 13:
+            return "macro";
+        case 14:
+            return "material";
+        case 15:
+            return "color_map";
+        case 16:
+            return "sky_sphere";
+        case 17:
+            return "fog";
+        case 18:
+            return "unsupported feature";
     }
     return "value";
 }
 
 // A small recursive-descent evaluator bound to the interpreter's token stream.
 class ExpressionParser {
-public:
+  public:
     ExpressionParser(Interpreter& in, bool no_gt, bool full = true)
         : in_(in), no_gt_(no_gt), full_(full) {}
 
-    // POV-Ray's Parse_Float/Parse_Vector read only sums of terms (no comparisons, logic or
+    // POV-Ray's Parse_Float/Parse_Vector read only sums of terms (no comparisons, logic
+    // or
     // ?: outside parentheses), which is what lets `box { <a> <b> }` read two vectors.
     Value parse() { return full_ ? ternary() : additive(); }
 
-private:
+  private:
     static bool numeric(const Value& v) { return std::holds_alternative<Numeric>(v); }
     Numeric num(const Value& v, const Token& at) {
         if (auto n = std::get_if<Numeric>(&v)) return *n;
-        in_.error(at, std::string("expected a numeric expression but found ") + type_name(v));
+        in_.error(at,
+                  std::string("expected a numeric expression but found ") + type_name(v));
     }
 
     Value ternary() {
@@ -138,24 +167,37 @@ private:
             if (!numeric(a)) return a;
             const Token& t = in_.peek();
             std::string_view op;
-            if (in_.is_punct(t, '=')) op = "=";
-            else if (in_.is_punct2(t, "!=")) op = "!=";
-            else if (in_.is_punct(t, '<')) op = "<";
-            else if (in_.is_punct2(t, "<=")) op = "<=";
-            else if (in_.is_punct(t, '>') && !no_gt_) op = ">";
-            else if (in_.is_punct2(t, ">=")) op = ">=";
-            else return a;
+            if (in_.is_punct(t, '='))
+                op = "=";
+            else if (in_.is_punct2(t, "!="))
+                op = "!=";
+            else if (in_.is_punct(t, '<'))
+                op = "<";
+            else if (in_.is_punct2(t, "<="))
+                op = "<=";
+            else if (in_.is_punct(t, '>') && !no_gt_)
+                op = ">";
+            else if (in_.is_punct2(t, ">="))
+                op = ">=";
+            else
+                return a;
             in_.next();
             Value b = additive();
             double x = num(a, at).c[0], y = num(b, at).c[0];
             bool r = false;
             // POV-Ray compares with a tolerance for equality.
-            if (op == "=") r = std::fabs(x - y) < kPovEpsilon;
-            else if (op == "!=") r = std::fabs(x - y) >= kPovEpsilon;
-            else if (op == "<") r = x < y;
-            else if (op == "<=") r = x <= y;
-            else if (op == ">") r = x > y;
-            else r = x >= y;
+            if (op == "=")
+                r = std::fabs(x - y) < kPovEpsilon;
+            else if (op == "!=")
+                r = std::fabs(x - y) >= kPovEpsilon;
+            else if (op == "<")
+                r = x < y;
+            else if (op == "<=")
+                r = x <= y;
+            else if (op == ">")
+                r = x > y;
+            else
+                r = x >= y;
             a = Numeric::scalar(r ? 1 : 0);
         }
     }
@@ -167,9 +209,12 @@ private:
             if (!numeric(a)) return a;
             const Token& t = in_.peek();
             char op;
-            if (in_.is_punct(t, '+')) op = '+';
-            else if (in_.is_punct(t, '-')) op = '-';
-            else return a;
+            if (in_.is_punct(t, '+'))
+                op = '+';
+            else if (in_.is_punct(t, '-'))
+                op = '-';
+            else
+                return a;
             in_.next();
             Value b = multiplicative();
             a = combine(num(a, at), num(b, at), op);
@@ -183,9 +228,12 @@ private:
             if (!numeric(a)) return a;
             const Token& t = in_.peek();
             char op;
-            if (in_.is_punct(t, '*')) op = '*';
-            else if (in_.is_punct(t, '/')) op = '/';
-            else return a;
+            if (in_.is_punct(t, '*'))
+                op = '*';
+            else if (in_.is_punct(t, '/'))
+                op = '/';
+            else
+                return a;
             in_.next();
             Value b = unary();
             a = combine(num(a, at), num(b, at), op);
@@ -223,11 +271,16 @@ private:
             int index = -1;
             std::string_view w = m.text;
             if (m.kind != TokenKind::Word) in_.expected("a component name after '.'", m);
-            if (w == "x" || w == "u" || w == "red") index = 0;
-            else if (w == "y" || w == "v" || w == "green") index = 1;
-            else if (w == "z" || w == "blue") index = 2;
-            else if (w == "t" || w == "filter") index = 3;
-            else if (w == "transmit") index = 4;
+            if (w == "x" || w == "u" || w == "red")
+                index = 0;
+            else if (w == "y" || w == "v" || w == "green")
+                index = 1;
+            else if (w == "z" || w == "blue")
+                index = 2;
+            else if (w == "t" || w == "filter")
+                index = 3;
+            else if (w == "transmit")
+                index = 4;
             else if (w == "gray" || w == "grey") {
                 Numeric c = promote(n, 3);
                 v = Numeric::scalar(c.c[0] * 0.297 + c.c[1] * 0.589 + c.c[2] * 0.114);
@@ -288,8 +341,10 @@ private:
     Value primary() {
         Token t = in_.next();
         switch (t.kind) {
-            case TokenKind::Number: return Numeric::scalar(t.number);
-            case TokenKind::String: return std::string(t.text);
+            case TokenKind::Number:
+                return Numeric::scalar(t.number);
+            case TokenKind::String:
+                return std::string(t.text);
             case TokenKind::Punct:
                 if (in_.is_punct(t, '(')) {
                     Value v = ExpressionParser(in_, false).parse();
@@ -298,8 +353,10 @@ private:
                 }
                 if (in_.is_punct(t, '<')) return vector_literal(t);
                 in_.expected("an expression", t);
-            case TokenKind::Word: return word(t);
-            default: in_.expected("an expression", t);
+            case TokenKind::Word:
+                return word(t);
+            default:
+                in_.expected("an expression", t);
         }
     }
 
@@ -316,30 +373,41 @@ Value ExpressionParser::word(const Token& t) {
     if (const Value* v = in_.lookup(t)) {
         Value value = *v;
         while (auto arr = std::get_if<std::shared_ptr<ArrayValue>>(&value)) {
-            // Checked on the raw stream: `#declare D = Array` followed by a directive must not
-            // run that directive before D exists.
+            // Checked on the raw stream: `#declare D = Array` followed by a directive
+            // must not run that directive before D exists.
             if (!in_.raw_next_is_punct('[')) break;
             std::shared_ptr<ArrayValue> a = *arr;
             size_t flat = 0;
             for (size_t d = 0; d < a->dims.size(); ++d) {
                 Token open = in_.next();
-                if (!in_.is_punct(open, '[')) in_.expected("'[' for the next subscript", open);
+                if (!in_.is_punct(open, '['))
+                    in_.expected("'[' for the next subscript", open);
                 Token at = in_.peek();
                 double index = arg_float();
                 in_.expect_punct(']');
                 int i = int(index);
                 if (i < 0 || i >= a->dims[d]) {
-                    in_.error(at, "array subscript " + std::to_string(i) + " out of range 0.." +
+                    in_.error(at, "array subscript " + std::to_string(i) +
+                                      " out of range 0.." +
                                       std::to_string(a->dims[d] - 1));
                 }
                 flat = flat * a->dims[d] + size_t(i);
             }
             value = a->items[flat];
             if (std::holds_alternative<std::monostate>(value)) {
-                in_.error(t, "array element of '" + std::string(w) + "' used before it was set");
+                in_.error(t, "array element of '" + std::string(w) +
+                                 "' used before it was set");
             }
         }
         return value;
+    }
+    // rand() first: generated scenes call it in their innermost loops.
+    if (w == "rand") {
+        in_.expect_punct('(');
+        Token at = in_.peek();
+        double s = arg_float();
+        in_.expect_punct(')');
+        return Numeric::scalar(in_.draw_random(int(s), at));
     }
     auto f1 = [&](double (*f)(const double*)) { return call_float(t, 1, f); };
     if (w == "pi") return Numeric::scalar(kPi);
@@ -452,13 +520,6 @@ Value ExpressionParser::word(const Token& t) {
         in_.expect_punct(')');
         return Numeric::scalar(in_.new_random_stream(int(s)));
     }
-    if (w == "rand") {
-        in_.expect_punct('(');
-        Token at = in_.peek();
-        double s = arg_float();
-        in_.expect_punct(')');
-        return Numeric::scalar(in_.draw_random(int(s), at));
-    }
     if (w == "vlength") {
         in_.expect_punct('(');
         Vector3 v = arg_vector();
@@ -550,8 +611,8 @@ Value ExpressionParser::word(const Token& t) {
         in_.unget(t);
         return in_.parse_colour();
     }
-    static const char* const kUnsupportedFunctions[] = {"vturbulence", "trace", "inside",
-                                                        "eval_pigment", "now", "datetime"};
+    static const char* const kUnsupportedFunctions[] = {
+        "vturbulence", "trace", "inside", "eval_pigment", "now", "datetime"};
     for (const char* f : kUnsupportedFunctions) {
         if (w == f) in_.unsupported(t, w);
     }
@@ -561,8 +622,12 @@ Value ExpressionParser::word(const Token& t) {
     return in_.parse_item_value(t);
 }
 
-Value Interpreter::parse_expression_value() { return ExpressionParser(*this, false).parse(); }
-Value Interpreter::parse_value_additive() { return ExpressionParser(*this, false, false).parse(); }
+Value Interpreter::parse_expression_value() {
+    return ExpressionParser(*this, false).parse();
+}
+Value Interpreter::parse_value_additive() {
+    return ExpressionParser(*this, false, false).parse();
+}
 
 Numeric Interpreter::parse_numeric(bool no_gt) {
     Token at = peek();
@@ -592,7 +657,8 @@ double Interpreter::parse_condition() {
     Token at = peek();
     Value v = ExpressionParser(*this, false).parse();
     const Numeric* np = std::get_if<Numeric>(&v);
-    if (!np) error(at, std::string("expected a numeric expression but found ") + type_name(v));
+    if (!np)
+        error(at, std::string("expected a numeric expression but found ") + type_name(v));
     Numeric n = *np;
     expect_punct(')', "to close the condition");
     return n.c[0];
@@ -621,11 +687,13 @@ std::string Interpreter::parse_string() {
             expect_punct(')');
             char buf[512];
             if (prec < 0) {
-                // A negative precision means printf's default (6 digits), as POV-Ray prints.
-                std::snprintf(buf, sizeof buf, width < 0 ? "%0*f" : "%*f", std::abs(width), v);
+                // A negative precision means printf's default (6 digits), as POV-Ray
+                // prints.
+                std::snprintf(buf, sizeof buf, width < 0 ? "%0*f" : "%*f",
+                              std::abs(width), v);
             } else {
-                std::snprintf(buf, sizeof buf, width < 0 ? "%0*.*f" : "%*.*f", std::abs(width),
-                              prec, v);
+                std::snprintf(buf, sizeof buf, width < 0 ? "%0*.*f" : "%*.*f",
+                              std::abs(width), prec, v);
             }
             return buf;
         }
@@ -686,50 +754,6 @@ std::string Interpreter::parse_string() {
         }
     }
     expected("a string", t);
-}
-
-float Interpreter::parse_map_value(bool average) {
-    // `average` map entries may leave out their weight (1 by default).
-    if (average && !starts_float(peek())) return 1.0f;
-    return float(parse_float());
-}
-
-void Interpreter::require_operand(std::string_view what) {
-    // Commas are optional, so a missing value shows up as the block's closing token.
-    const Token& t = peek();
-    if (t.kind == TokenKind::End || is_punct(t, '}') || is_punct(t, ']') || is_punct(t, ')') ||
-        is_punct(t, ',') || is_punct(t, ';')) {
-        expected(what, t);
-    }
-}
-
-bool Interpreter::starts_float(const Token& t) {
-    if (t.kind == TokenKind::Number) return true;
-    if (t.kind == TokenKind::Punct) {
-        return is_punct(t, '(') || is_punct(t, '-') || is_punct(t, '+') || is_punct(t, '!');
-    }
-    if (t.kind != TokenKind::Word) return false;
-    if (const Value* v = lookup(t)) {
-        auto n = std::get_if<Numeric>(v);
-        return n && n->size == 1;
-    }
-    static const char* const kFloatWords[] = {
-        "on", "off", "true", "false", "yes", "no", "pi", "tau", "clock", "abs", "acos",
-        "asin", "atan", "atan2", "ceil", "cos", "cosh", "degrees", "radians", "div", "exp",
-        "floor", "int", "ln", "log", "max", "min", "mod", "pow", "rand", "select", "sin",
-        "sinh", "sqrt", "tan", "tanh", "vdot", "vlength", "image_width", "image_height",
-        "frame_number", "clock_delta", "version", "strlen", "val", "asc", "defined",
-        "dimension_size", "seed"};
-    for (const char* w : kFloatWords) {
-        if (t.text == w) return true;
-    }
-    return false;
-}
-
-bool Interpreter::parse_bool_opt() {
-    // `hollow`, `hollow on`, `hollow false`: a following float expression is the value.
-    if (starts_float(peek())) return parse_float() != 0;
-    return true;
 }
 
 }  // namespace povwall::parser

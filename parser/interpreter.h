@@ -1,5 +1,5 @@
-// The interpreter: a single pass over the token stream that runs directives as it meets them
-// (so they may appear anywhere, as in POV-Ray) and builds the scene as it goes.
+// The interpreter: a single pass over the token stream that runs directives as it meets
+// them (so they may appear anywhere, as in POV-Ray) and builds the scene as it goes.
 #pragma once
 
 #include <functional>
@@ -13,16 +13,20 @@
 
 namespace povwall::parser {
 
-// Limits that turn runaway scenes into located errors instead of exhausted memory or a hang.
-constexpr int kMaxIncludeDepth = 64;     // POV-Ray allows 32 open files; machine scenes stay lower
-constexpr int kMaxMacroDepth = 1000;     // recursion guard (POV-Ray's symbol table limit is 100)
+// Limits that turn runaway scenes into located errors instead of exhausted memory or a
+// hang.
+constexpr int kMaxIncludeDepth =
+    64;  // POV-Ray allows 32 open files; machine scenes stay lower
+constexpr int kMaxMacroDepth =
+    1000;  // recursion guard (POV-Ray's symbol table limit is 100)
 constexpr size_t kMaxArrayItems = 1u << 28;
+constexpr uint64_t kMaxLoopIterations = 10'000'000;  // per #while or #for run
 
 // Composes `t` into every pattern transform of the layers (textures move with objects).
 void transform_textures(LayeredTexture& layers, const Transform& t);
 
 class Interpreter {
-public:
+  public:
     Interpreter(const ParseOptions& options, SourceManager& sources);
     Scene run(int root_file);
 
@@ -63,22 +67,24 @@ public:
     void declare(const std::string& name, Value v, bool local, const Token& at);
 
     // ---- expressions (expressions.cpp)
-    Value parse_expression_value();       // float, vector, colour or string
-    Value parse_value_additive();         // same without comparisons (array items)
+    Value parse_expression_value();             // float, vector, colour or string
+    Value parse_value_additive();               // same without comparisons (array items)
     Numeric parse_numeric(bool no_gt = false);  // POV-Ray's Parse_Float/Vector level
     Numeric parse_express();                    // full expression (Parse_Express)
     double parse_float();
-    // A directive's parenthesised condition; reads nothing past the ')' so that the tokens
-    // after it are not consumed before the directive decides whether to skip them.
+    // A directive's parenthesised condition; reads nothing past the ')' so that the
+    // tokens after it are not consumed before the directive decides whether to skip them.
     double parse_condition();
-    Vector3 parse_vector();               // float promoted to <f,f,f>
+    Vector3 parse_vector();  // float promoted to <f,f,f>
     std::string parse_string();
-    Numeric parse_colour();               // colour keyword forms, rgb, identifiers
+    Numeric parse_colour();  // colour keyword forms, rgb, identifiers
     Colour parse_colour_value();
     bool parse_bool_opt();
     bool starts_float(const Token& t);  // can `t` begin a float expression?
     void require_operand(std::string_view what);
-    float parse_map_value(bool average);  // the value of a *_map entry  // error if the block ends here                // optional boolean after a flag keyword
+    float parse_map_value(
+        bool average);  // the value of a *_map entry  // error if the block ends here //
+                        // optional boolean after a flag keyword
 
     // ---- scene items (objects.cpp, textures.cpp, scene_items.cpp)
     bool try_parse_object(const Token& t, Object& out);
@@ -87,15 +93,15 @@ public:
     bool try_transform(const Token& t, Transform& out);
     Transform parse_transform_block();
     void apply_transform(Object& obj, const Transform& t);
-    LayeredTexture parse_texture_block();   // after 'texture'
+    LayeredTexture parse_texture_block();  // after 'texture'
     void parse_texture_body(LayeredTexture& layers, char terminator);
-    Pigment parse_pigment_block();          // after 'pigment'
+    Pigment parse_pigment_block();  // after 'pigment'
     void parse_pigment_body(Pigment& p, char terminator);
-    Finish parse_finish_block();            // after 'finish'
-    Normal parse_normal_block();            // after 'normal'
+    Finish parse_finish_block();  // after 'finish'
+    Normal parse_normal_block();  // after 'normal'
     void parse_normal_body(Normal& n, char terminator);
-    Interior parse_interior_block();        // after 'interior'
-    ColourMap parse_colour_map_block();     // after 'color_map'
+    Interior parse_interior_block();     // after 'interior'
+    ColourMap parse_colour_map_block();  // after 'color_map'
     bool try_pattern_keyword(const Token& t, PatternSpec& spec);
     bool try_pattern_modifier(const Token& t, PatternSpec& spec);
     Light parse_light_block();
@@ -109,6 +115,8 @@ public:
     void parse_mesh(Object& out);
     void parse_mesh2(Object& out);
     int parse_count();
+    const Token* raw_ahead(size_t k) const;  // k-th raw token ahead, if no pushback
+    bool try_plain_vector(Vector3& out, Token* at);
     int new_random_stream(int seed);
     double draw_random(int stream, const Token& at);
 
@@ -116,7 +124,7 @@ public:
     int language_version() const { return version_; }
     Texture default_texture() const { return default_texture_; }
 
-private:
+  private:
     friend class DirectiveRunner;
     struct Frame {
         int file;
@@ -127,11 +135,12 @@ private:
     };
     struct Cond {
         enum class Kind { If, Else, While, For, Switch, SwitchDone, Macro } kind;
-        size_t frame;       // frame depth where it was opened
-        size_t pos;         // loop restart position
-        std::string var;    // #for variable
+        size_t frame;     // frame depth where it was opened
+        size_t pos;       // loop restart position
+        std::string var;  // #for variable
         double end = 0, step = 1;
         Token at;
+        uint64_t iterations = 0;  // #for runs so far
     };
     struct Binding {
         Value value;
@@ -140,7 +149,8 @@ private:
         uint32_t ref_name = 0;
     };
     using Scope = std::unordered_map<uint32_t, Binding>;
-    // Inserts (or finds) `sym` in `scope`, remembering that the name has been bound somewhere.
+    // Inserts (or finds) `sym` in `scope`, remembering that the name has been bound
+    // somewhere.
     Binding& bind(Scope& scope, uint32_t sym) {
         if (sym >= bound_.size()) bound_.resize(sym + 1024, 0);
         bound_[sym] = 1;
@@ -176,7 +186,10 @@ private:
     std::vector<Frame> frames_;
     std::vector<Cond> conds_;
     std::vector<Scope> scopes_;
-    std::vector<uint8_t> bound_;  // by symbol: ever bound (keywords never are)
+    std::vector<uint8_t> bound_;
+    std::unordered_map<uint64_t, uint64_t>
+        loop_counts_;  // #while runs, by position  // by symbol: ever bound (keywords
+                       // never are)
     std::vector<Token> pushback_;
     std::vector<std::unique_ptr<RandomStream>> streams_;
     int version_ = 362;

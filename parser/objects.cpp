@@ -9,16 +9,19 @@ namespace {
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
     static const char* kNames[] = {
-        "text", "lathe", "sor", "prism", "blob", "superellipsoid", "quadric", "quartic", "poly",
-        "cubic", "height_field", "bicubic_patch", "isosurface", "parametric", "julia_fractal",
-        "sphere_sweep", "ovus", "lemon", "light_group", "polynomial"};
+        "text",           "lathe",         "sor",        "prism",       "blob",
+        "superellipsoid", "quadric",       "quartic",    "poly",        "cubic",
+        "height_field",   "bicubic_patch", "isosurface", "parametric",  "julia_fractal",
+        "sphere_sweep",   "ovus",          "lemon",      "light_group", "polynomial"};
     for (const char* n : kNames) {
         if (w == n) return true;
     }
     return false;
 }
 
-void transform_pattern(PatternSpec& p, const Transform& t) { p.transform = p.transform.then(t); }
+void transform_pattern(PatternSpec& p, const Transform& t) {
+    p.transform = p.transform.then(t);
+}
 
 // Pigment and normal map/list entries are evaluated at the outer pattern's point (as POV-Ray
 // does), so a transform moves only the outer pattern.
@@ -173,8 +176,10 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
     } else if (w == "double_illuminate") {
         obj.double_illuminate = true;
     } else if (w == "sturm") {
-        if (auto torus = std::get_if<Torus>(&obj.shape)) torus->sturm = parse_bool_opt();
-        else parse_bool_opt();
+        if (auto torus = std::get_if<Torus>(&obj.shape))
+            torus->sturm = parse_bool_opt();
+        else
+            parse_bool_opt();
     } else if (w == "open") {
         if (auto c = std::get_if<Cylinder>(&obj.shape)) c->open = true;
         if (auto c = std::get_if<Cone>(&obj.shape)) c->open = true;
@@ -184,7 +189,8 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         for (;;) {
             Token o = next();
             if (is_punct(o, '}')) break;
-            if (w == "bounded_by" && is_word(o, "clipped_by")) continue;  // bounded_by{clipped_by}
+            if (w == "bounded_by" && is_word(o, "clipped_by"))
+                continue;  // bounded_by{clipped_by}
             Object child;
             if (!try_parse_object(o, child)) expected("an object or '}'", o);
             list.push_back(std::move(child));
@@ -354,8 +360,10 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "mesh" || w == "mesh2") {
         open();
         if (!copy_identifier()) {
-            if (w == "mesh") parse_mesh(out);
-            else parse_mesh2(out);
+            if (w == "mesh")
+                parse_mesh(out);
+            else
+                parse_mesh2(out);
         }
     } else if (w == "union" || w == "merge" || w == "intersection" || w == "difference") {
         open();
@@ -373,8 +381,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 scene_.lights.push_back(parse_light_block());
                 continue;
             }
-            if (c.kind == TokenKind::Word && !is_word(c, "texture") && !is_word(c, "pigment") &&
-                !is_word(c, "finish") && !is_word(c, "normal") && !is_word(c, "interior") &&
+            if (c.kind == TokenKind::Word && !is_word(c, "texture") &&
+                !is_word(c, "pigment") && !is_word(c, "finish") &&
+                !is_word(c, "normal") && !is_word(c, "interior") &&
                 !is_word(c, "material")) {
                 next();
                 if (try_parse_object(c, child)) {
@@ -489,7 +498,8 @@ void Interpreter::parse_top_level_item(const Token& t) {
         }
         const Value* v = lookup(t);
         if (!v) error(t, "undeclared identifier '" + std::string(w) + "'");
-        // Exporters write bare object and light identifiers as statements; POV-Ray takes them.
+        // Exporters write bare object and light identifiers as statements; POV-Ray takes
+        // them.
         if (auto o = std::get_if<std::shared_ptr<Object>>(v)) {
             Object copy = **o;
             copy.loc = sources_.location(t);

@@ -12,14 +12,15 @@ Interpreter::Interpreter(const ParseOptions& options, SourceManager& sources)
     : options_(options), sources_(sources) {}
 
 Scene Interpreter::run(int root_file) {
-    scene_dir_ = std::filesystem::path(sources_.file(root_file).path).parent_path().string();
+    scene_dir_ =
+        std::filesystem::path(sources_.file(root_file).path).parent_path().string();
     scopes_.emplace_back();  // global #declare table
     for (const auto& [name, value] : options_.declares) {
         bind(scopes_[0], sources_.intern(name)).value = Numeric::scalar(value);
     }
     scopes_.emplace_back();  // the scene file's own #local table
-    frames_.push_back({root_file, 0, sources_.file(root_file).tokens.size(), Frame::Kind::File,
-                       1, {}});
+    frames_.push_back(
+        {root_file, 0, sources_.file(root_file).tokens.size(), Frame::Kind::File, 1, {}});
     for (;;) {
         Token t = next();
         if (t.kind == TokenKind::End) break;
@@ -29,7 +30,8 @@ Scene Interpreter::run(int root_file) {
         const Cond& c = conds_.back();
         error(c.at, "#" + std::string(c.at.text) + " has no matching #end");
     }
-    for (int i = 0; i < sources_.count(); ++i) scene_.files.push_back(sources_.file(i).path);
+    for (int i = 0; i < sources_.count(); ++i)
+        scene_.files.push_back(sources_.file(i).path);
     scene_.language_version = version_;
     scene_.version_set = version_set_;
     return std::move(scene_);

@@ -12,8 +12,8 @@
 namespace povwall::parser {
 
 struct ParseOptions {
-    // Include search path after the scene's own folder (POV-Ray's +L), in order; the installed
-    // standard include folder is searched last.
+    // Include search path after the scene's own folder (POV-Ray's +L), in order; the
+    // installed standard include folder is searched last.
     std::vector<std::string> library_paths;
     std::string standard_include_dir = "/usr/share/povray-3.7/include";
     // Values the language exposes: image_width, image_height, clock, frame_number, ...
@@ -23,23 +23,26 @@ struct ParseOptions {
     int initial_frame = 1, final_frame = 1;
     double initial_clock = 0.0, final_clock = 0.0;
     std::map<std::string, double> declares;  // Declare=NAME=value from the command line
-    // Where #debug/#warning/#render text goes (POV-Ray's console streams); null: discarded.
+    // Where #debug/#warning/#render text goes (POV-Ray's console streams); null:
+    // discarded.
     std::ostream* messages = nullptr;
 };
 
 // A located diagnostic. what() is the full text as printed: "file:line:col: error: msg",
 // then the source line and a caret, then notes (macro call sites, include chain).
 class ParseError : public std::runtime_error {
-public:
+  public:
     enum class Kind { Syntax, Unsupported, Io };
     ParseError(Kind kind, std::string formatted, std::string message, SourceLoc loc)
-        : std::runtime_error(std::move(formatted)), kind_(kind), message_(std::move(message)),
+        : std::runtime_error(std::move(formatted)),
+          kind_(kind),
+          message_(std::move(message)),
           loc_(loc) {}
     Kind kind() const { return kind_; }
     const std::string& message() const { return message_; }  // without location or caret
     SourceLoc loc() const { return loc_; }
 
-private:
+  private:
     Kind kind_;
     std::string message_;
     SourceLoc loc_;
@@ -47,21 +50,22 @@ private:
 
 // Parses `path` and everything it includes. Throws ParseError on the first error.
 Scene parse_scene_file(const std::string& path, const ParseOptions& options);
-// Same, from text in memory; `display_name` is used in diagnostics and for relative includes.
+// Same, from text in memory; `display_name` is used in diagnostics and for relative
+// includes.
 Scene parse_scene_text(const std::string& text, const std::string& display_name,
                        const ParseOptions& options);
 
 // POV-Ray 3.7's rand() stream: a 32-bit linear congruential generator, exactly as the
 // reference renderer draws it (scenes place objects with it).
 class RandomStream {
-public:
+  public:
     explicit RandomStream(int seed) : state_(static_cast<uint32_t>(seed)) {}
     double next() {
         state_ = state_ * 1812433253u + 12345u;
         return static_cast<double>(state_) / 4294967295.0;
     }
 
-private:
+  private:
     uint32_t state_;
 };
 

@@ -28,15 +28,26 @@ CameraSpec Interpreter::parse_camera_block() {
             continue;
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
-        if (w == "perspective") c.kind = Camera::Kind::Perspective;
-        else if (w == "orthographic") c.kind = Camera::Kind::Orthographic;
-        else if (w == "location") c.location = parse_vector();
-        else if (w == "direction") c.direction = parse_vector();
-        else if (w == "right") { c.right = parse_vector(); c.has_right = true; }
-        else if (w == "up") { c.up = parse_vector(); c.has_up = true; }
-        else if (w == "sky") c.sky = parse_vector();
-        else if (w == "look_at") { c.look_at = parse_vector(); c.has_look_at = true; }
-        else if (w == "angle") {
+        if (w == "perspective")
+            c.kind = Camera::Kind::Perspective;
+        else if (w == "orthographic")
+            c.kind = Camera::Kind::Orthographic;
+        else if (w == "location")
+            c.location = parse_vector();
+        else if (w == "direction")
+            c.direction = parse_vector();
+        else if (w == "right") {
+            c.right = parse_vector();
+            c.has_right = true;
+        } else if (w == "up") {
+            c.up = parse_vector();
+            c.has_up = true;
+        } else if (w == "sky")
+            c.sky = parse_vector();
+        else if (w == "look_at") {
+            c.look_at = parse_vector();
+            c.has_look_at = true;
+        } else if (w == "angle") {
             c.angle = parse_float();
             c.has_angle = true;
             // `angle h, v` (vertical angle) is accepted; the vertical value is ignored.
@@ -64,14 +75,15 @@ Camera Interpreter::finish_camera(const CameraSpec& s) {
     cam.kind = s.kind;
     cam.loc = s.loc;
     Vector3 right = s.right, direction = s.direction, up = s.up;
-    bool projective = s.kind == Camera::Kind::Perspective ||
-                      s.kind == Camera::Kind::Orthographic;
+    bool projective =
+        s.kind == Camera::Kind::Perspective || s.kind == Camera::Kind::Orthographic;
     if (s.has_angle && projective) {
         if (s.angle >= 180) {
             std::string msg = "camera angle must be below 180 degrees";
-            throw ParseError(ParseError::Kind::Syntax,
-                             format_diagnostic_at(sources_, s.loc.file, s.offset, 1, "error", msg), msg,
-                             s.loc);
+            throw ParseError(
+                ParseError::Kind::Syntax,
+                format_diagnostic_at(sources_, s.loc.file, s.offset, 1, "error", msg),
+                msg, s.loc);
         }
         if (s.angle > 0) {
             double len = length(right) / std::tan(s.angle * kPi / 360) / 2;
@@ -87,14 +99,16 @@ Camera Interpreter::finish_camera(const CameraSpec& s) {
         Vector3 d = s.look_at - location;
         if (dot(d, d) < kEpsilon) {
             std::string msg = "camera location and look_at point must be different";
-            throw ParseError(ParseError::Kind::Syntax,
-                             format_diagnostic_at(sources_, s.loc.file, s.offset, 1, "error", msg), msg,
-                             s.loc);
+            throw ParseError(
+                ParseError::Kind::Syntax,
+                format_diagnostic_at(sources_, s.loc.file, s.offset, 1, "error", msg),
+                msg, s.loc);
         }
         d = normalize(d);
         Vector3 r = cross(s.sky, d);
         // Sky parallel to the view: POV-Ray keeps the given right vector.
-        if (std::fabs(r.x) < kEpsilon && std::fabs(r.y) < kEpsilon && std::fabs(r.z) < kEpsilon) {
+        if (std::fabs(r.x) < kEpsilon && std::fabs(r.y) < kEpsilon &&
+            std::fabs(r.z) < kEpsilon) {
             r = right;
         }
         r = normalize(r);
@@ -102,7 +116,8 @@ Camera Interpreter::finish_camera(const CameraSpec& s) {
         direction = d * dl;
         right = r * (handed > 0 ? rl : -rl);
     }
-    if (s.kind == Camera::Kind::Orthographic && (s.has_angle || (!s.has_up && !s.has_right))) {
+    if (s.kind == Camera::Kind::Orthographic &&
+        (s.has_angle || (!s.has_up && !s.has_right))) {
         Point3 target = s.has_look_at ? s.look_at : Point3(0, 0, 1);
         double k1 = length(target - location), k2 = length(direction);
         if (k1 > kEpsilon && k2 > kEpsilon) {
@@ -156,21 +171,34 @@ Light Interpreter::parse_light_block() {
             continue;
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
-        if (w == "spotlight") l.kind = Light::Kind::Spot;
+        if (w == "spotlight")
+            l.kind = Light::Kind::Spot;
         else if (w == "cylinder") {
             l.kind = Light::Kind::Cylinder;
             if (!radius_set) l.radius = 0.75;
             if (!falloff_set) l.falloff = 1;
-        } else if (w == "parallel") l.kind = Light::Kind::Parallel;
-        else if (w == "point_at") l.point_at = parse_vector();
-        else if (w == "radius") { l.radius = parse_float(); radius_set = true; }
-        else if (w == "falloff") { l.falloff = parse_float(); falloff_set = true; }
-        else if (w == "tightness") l.tightness = parse_float();
-        else if (w == "fade_distance") l.fade_distance = parse_float();
-        else if (w == "fade_power") l.fade_power = parse_float();
-        else if (w == "shadowless") l.shadowless = true;
-        else if (w == "media_interaction") l.media_interaction = parse_bool_opt();
-        else if (w == "media_attenuation") l.media_attenuation = parse_bool_opt();
+        } else if (w == "parallel")
+            l.kind = Light::Kind::Parallel;
+        else if (w == "point_at")
+            l.point_at = parse_vector();
+        else if (w == "radius") {
+            l.radius = parse_float();
+            radius_set = true;
+        } else if (w == "falloff") {
+            l.falloff = parse_float();
+            falloff_set = true;
+        } else if (w == "tightness")
+            l.tightness = parse_float();
+        else if (w == "fade_distance")
+            l.fade_distance = parse_float();
+        else if (w == "fade_power")
+            l.fade_power = parse_float();
+        else if (w == "shadowless")
+            l.shadowless = true;
+        else if (w == "media_interaction")
+            l.media_interaction = parse_bool_opt();
+        else if (w == "media_attenuation")
+            l.media_attenuation = parse_bool_opt();
         else if (w == "color" || w == "colour" || w == "rgb") {
             unget(t);
             l.colour = parse_colour_value().rgb;
@@ -184,12 +212,17 @@ Light Interpreter::parse_light_block() {
             accept_punct(',');
             a.size2 = int(parse_float());
             l.area = a;
-        } else if (w == "adaptive" && l.area) l.area->adaptive = int(parse_float());
+        } else if (w == "adaptive" && l.area)
+            l.area->adaptive = int(parse_float());
         // These may come before area_light; kept and applied at the end.
-        else if (w == "jitter") jitter = true;
-        else if (w == "circular") circular = true;
-        else if (w == "orient") orient = true;
-        else if (w == "area_illumination") parse_bool_opt();
+        else if (w == "jitter")
+            jitter = true;
+        else if (w == "circular")
+            circular = true;
+        else if (w == "orient")
+            orient = true;
+        else if (w == "area_illumination")
+            parse_bool_opt();
         else if (w == "looks_like" || w == "projected_through") {
             if (w == "projected_through") unsupported(t, w);
             expect_punct('{');
@@ -246,7 +279,8 @@ void Interpreter::parse_global_settings() {
             next();
         } else if (w == "hf_gray_16") {
             parse_bool_opt();
-        } else if (w == "radiosity" || w == "photons" || w == "subsurface" || w == "mm_per_unit") {
+        } else if (w == "radiosity" || w == "photons" || w == "subsurface" ||
+                   w == "mm_per_unit") {
             unsupported(t, w);
         } else {
             expected("a global setting or '}'", t);
@@ -304,23 +338,32 @@ Fog Interpreter::parse_fog() {
             continue;
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
-        if (w == "fog_type") f.type = int(parse_float());
-        else if (w == "distance") f.distance = parse_float();
-        else if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" ||
-                 w == "rgbft") {
+        if (w == "fog_type")
+            f.type = int(parse_float());
+        else if (w == "distance")
+            f.distance = parse_float();
+        else if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" ||
+                 w == "rgbt" || w == "rgbft") {
             unget(t);
             f.colour = parse_colour_value();
-        } else if (w == "fog_offset") f.offset = parse_float();
-        else if (w == "fog_alt") f.alt = parse_float();
-        else if (w == "up") f.up = parse_vector();
-        else if (w == "turbulence") f.turbulence = parse_vector();
-        else if (w == "turb_depth") f.turb_depth = parse_float();
-        else if (w == "octaves" || w == "omega" || w == "lambda") parse_float();
+        } else if (w == "fog_offset")
+            f.offset = parse_float();
+        else if (w == "fog_alt")
+            f.alt = parse_float();
+        else if (w == "up")
+            f.up = parse_vector();
+        else if (w == "turbulence")
+            f.turbulence = parse_vector();
+        else if (w == "turb_depth")
+            f.turb_depth = parse_float();
+        else if (w == "octaves" || w == "omega" || w == "lambda")
+            parse_float();
         else if (t.kind == TokenKind::Word && lookup(t) &&
                  std::holds_alternative<Numeric>(*lookup(t))) {
             unget(t);  // fog { Blue+Gray70 ... }: a colour expression without keyword
             f.colour = parse_colour_value();
-        } else expected("a fog item or '}'", t);
+        } else
+            expected("a fog item or '}'", t);
     }
     return f;
 }
@@ -365,7 +408,45 @@ void Interpreter::parse_mesh(Object& out) {
     out.shape = std::move(mesh);
 }
 
-// A mesh2 list length: bounded so that a corrupt count fails cleanly instead of overflowing.
+const Token* Interpreter::raw_ahead(size_t k) const {
+    if (!pushback_.empty() || frames_.empty()) return nullptr;
+    const Frame& f = frames_.back();
+    if (f.pos + k >= f.end) return nullptr;
+    const Token& t = sources_.file(f.file).tokens[f.pos + k];
+    return t.kind == TokenKind::End ? nullptr : &t;
+}
+
+// Machine-written meshes are millions of `<n, n, n>`: when the raw tokens are exactly
+// that (commas required, optional minus signs, no operator after '>'), read them directly
+// instead of through the expression parser. Anything else is left for parse_vector().
+bool Interpreter::try_plain_vector(Vector3& out, Token* at) {
+    const Token* open = raw_ahead(0);
+    if (!open || !is_punct(*open, '<')) return false;
+    size_t k = 1;
+    double v[3];
+    for (int c = 0; c < 3; ++c) {
+        const Token* t = raw_ahead(k);
+        bool negative = t && is_punct(*t, '-');
+        if (negative) t = raw_ahead(++k);
+        if (!t || t->kind != TokenKind::Number) return false;
+        v[c] = negative ? -t->number : t->number;
+        const Token* sep = raw_ahead(++k);
+        if (!sep || !is_punct(*sep, c < 2 ? ',' : '>')) return false;
+        ++k;
+    }
+    const Token* after = raw_ahead(k);
+    if (after && after->kind == TokenKind::Punct && !is_punct(*after, ',') &&
+        !is_punct(*after, '}') && !is_punct(*after, '<')) {
+        return false;
+    }
+    if (at) *at = *open;
+    frames_.back().pos += k;
+    out = {v[0], v[1], v[2]};
+    return true;
+}
+
+// A mesh2 list length: bounded so that a corrupt count fails cleanly instead of
+// overflowing.
 int Interpreter::parse_count() {
     Token at = peek();
     double n = parse_float();
@@ -382,7 +463,9 @@ void Interpreter::parse_mesh2(Object& out) {
         int n = parse_count();
         for (int i = 0; i < n; ++i) {
             accept_punct(',');
-            into.push_back(parse_vector());
+            Vector3 v;
+            if (!try_plain_vector(v, nullptr)) v = parse_vector();
+            into.push_back(v);
         }
         accept_punct(',');  // trailing comma
         expect_punct('}');
@@ -426,8 +509,12 @@ void Interpreter::parse_mesh2(Object& out) {
             int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
-                Token at = peek();
-                Vector3 v = parse_vector();
+                Token at;
+                Vector3 v;
+                if (!try_plain_vector(v, &at)) {
+                    at = peek();
+                    v = parse_vector();
+                }
                 Mesh::Face f;
                 for (int k = 0; k < 3; ++k) {
                     if (v[k] < 0 || v[k] >= double(mesh.vertices.size())) {
@@ -435,24 +522,17 @@ void Interpreter::parse_mesh2(Object& out) {
                     }
                     f.v[k] = uint32_t(v[k]);
                 }
-                // Up to three texture indices may follow.
-                const Token& c = peek();
-                if (is_punct(c, ',')) {
-                    next();
-                    const Token& d = peek();
-                    if (d.kind == TokenKind::Number) {
-                        f.texture = int32_t(parse_float());
-                        while (is_punct(peek(), ',')) {
-                            next();
-                            if (peek().kind != TokenKind::Number) {
-                                unget(Token{TokenKind::Punct, c.file, c.offset, 1, 0, ","});
-                                break;
-                            }
-                            parse_float();
-                        }
-                    } else {
-                        unget(Token{TokenKind::Punct, c.file, c.offset, 1, 0, ","});
-                    }
+                // Up to three texture indices may follow (`<a,b,c>, t0, t1, t2`); read on
+                // the raw stream so that the fast path for the next face stays available.
+                for (int k = 0; k < 3; ++k) {
+                    const Token* first = raw_ahead(0);
+                    if (!first) break;
+                    size_t skip = is_punct(*first, ',') ? 1 : 0;  // the comma is optional
+                    const Token* value = raw_ahead(skip);
+                    if (!value || value->kind != TokenKind::Number) break;
+                    if (skip == 0 && mesh.textures.empty()) break;
+                    frames_.back().pos += skip + 1;
+                    if (k == 0) f.texture = int32_t(value->number);
                 }
                 mesh.faces.push_back(f);
             }
@@ -489,8 +569,10 @@ void Interpreter::parse_mesh2(Object& out) {
     for (size_t i = 0; i < mesh.faces.size(); ++i) {
         auto& f = mesh.faces[i];
         for (int k = 0; k < 3; ++k) {
-            if (i < normal_idx.size()) f.n[k] = normal_idx[i][k];
-            else if (!mesh.normals.empty()) f.n[k] = int32_t(f.v[k]);
+            if (i < normal_idx.size())
+                f.n[k] = normal_idx[i][k];
+            else if (!mesh.normals.empty())
+                f.n[k] = int32_t(f.v[k]);
         }
     }
     out.shape = std::move(mesh);
@@ -502,7 +584,8 @@ int Interpreter::new_random_stream(int seed) {
 }
 
 double Interpreter::draw_random(int stream, const Token& at) {
-    if (stream < 0 || stream >= int(streams_.size())) error(at, "illegal random number generator");
+    if (stream < 0 || stream >= int(streams_.size()))
+        error(at, "illegal random number generator");
     return streams_[stream]->next();
 }
 
@@ -567,10 +650,17 @@ Value Interpreter::parse_item_value(const Token& t) {
                 int depth = 1;
                 while (depth > 0) {
                     Token e = next();
-                    if (is_punct(e, '{')) { ++depth; continue; }
-                    if (is_punct(e, '}')) { --depth; continue; }
+                    if (is_punct(e, '{')) {
+                        ++depth;
+                        continue;
+                    }
+                    if (is_punct(e, '}')) {
+                        --depth;
+                        continue;
+                    }
                     if (is_punct(e, ',')) continue;
-                    if (index >= total) error(e, "too many elements in array initializer");
+                    if (index >= total)
+                        error(e, "too many elements in array initializer");
                     unget(e);
                     a->items[index++] = parse_value_additive();
                 }
@@ -578,12 +668,15 @@ Value Interpreter::parse_item_value(const Token& t) {
             return a;
         }
         static const char* const kUnsupportedItems[] = {
-            "spline", "function", "media", "density", "rainbow", "photons", "radiosity",
-            "max_extent", "min_extent", "pigment_map", "normal_map", "texture_map",
-            "density_map", "slope_map", "material_map", "text", "lathe", "sor", "prism",
-            "blob", "isosurface", "parametric", "julia_fractal", "height_field",
-            "superellipsoid", "bicubic_patch", "quadric", "quartic", "poly", "cubic",
-            "sphere_sweep", "ovus", "lemon"};
+            "spline",         "function",      "media",         "density",
+            "rainbow",        "photons",       "radiosity",     "max_extent",
+            "min_extent",     "pigment_map",   "normal_map",    "texture_map",
+            "density_map",    "slope_map",     "material_map",  "text",
+            "lathe",          "sor",           "prism",         "blob",
+            "isosurface",     "parametric",    "julia_fractal", "height_field",
+            "superellipsoid", "bicubic_patch", "quadric",       "quartic",
+            "poly",           "cubic",         "sphere_sweep",  "ovus",
+            "lemon"};
         for (const char* item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }

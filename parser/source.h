@@ -1,5 +1,5 @@
-// Source files and tokens. Every token keeps its file and byte offset; line and column are
-// computed only when a diagnostic is printed.
+// Source files and tokens. Every token keeps its file and byte offset; line and column
+// are computed only when a diagnostic is printed.
 #pragma once
 
 #include <cstdint>
@@ -14,7 +14,7 @@
 namespace povwall::parser {
 
 enum class TokenKind : uint8_t {
-    End,        // end of the file's token list
+    End,  // end of the file's token list
     Number,
     String,     // text holds the unescaped contents
     Word,       // identifier or keyword
@@ -35,12 +35,12 @@ struct SourceFile {
     std::string path;  // as it will be printed in diagnostics
     std::string text;
     std::vector<uint32_t> line_starts;
-    std::vector<Token> tokens;                       // always ends with an End token
+    std::vector<Token> tokens;                          // always ends with an End token
     std::vector<std::unique_ptr<std::string>> strings;  // unescaped string literals
 };
 
 class SourceManager {
-public:
+  public:
     // Takes the text, splits lines and lexes; throws ParseError on a lexical error.
     int add(std::string path, std::string text);
     const SourceFile& file(int index) const { return *files_[index]; }
@@ -52,14 +52,14 @@ public:
     uint32_t intern(std::string_view name);
     uint32_t find_symbol(std::string_view name) const;  // 0 when never interned
 
-private:
+  private:
     std::vector<std::unique_ptr<SourceFile>> files_;
     std::unordered_map<std::string, uint32_t> symbols_;
 };
 
 // "path:line:col: error: message", the source line and a caret under the token.
-std::string format_diagnostic(const SourceManager& sm, const Token& at, std::string_view severity,
-                              std::string_view message);
+std::string format_diagnostic(const SourceManager& sm, const Token& at,
+                              std::string_view severity, std::string_view message);
 std::string format_diagnostic_at(const SourceManager& sm, int file, uint32_t offset,
                                  uint32_t length, std::string_view severity,
                                  std::string_view message);

@@ -17,29 +17,44 @@ struct PatternName {
     PatternKind kind;
 };
 constexpr PatternName kPatterns[] = {
-    {"agate", PatternKind::Agate},     {"bozo", PatternKind::Bozo},
-    {"brick", PatternKind::Brick},     {"bumps", PatternKind::Bumps},
-    {"checker", PatternKind::Checker}, {"crackle", PatternKind::Crackle},
-    {"dents", PatternKind::Dents},     {"gradient", PatternKind::Gradient},
-    {"granite", PatternKind::Granite}, {"hexagon", PatternKind::Hexagon},
-    {"leopard", PatternKind::Leopard}, {"mandel", PatternKind::Mandel},
-    {"marble", PatternKind::Marble},   {"onion", PatternKind::Onion},
-    {"quilted", PatternKind::Quilted}, {"radial", PatternKind::Radial},
-    {"ripples", PatternKind::Ripples}, {"spiral1", PatternKind::Spiral1},
-    {"spiral2", PatternKind::Spiral2}, {"spotted", PatternKind::Spotted},
-    {"waves", PatternKind::Waves},     {"wood", PatternKind::Wood},
-    {"wrinkles", PatternKind::Wrinkles}, {"boxed", PatternKind::Boxed},
-    {"cylindrical", PatternKind::Cylindrical}, {"spherical", PatternKind::Spherical},
-    {"planar", PatternKind::Planar},   {"cells", PatternKind::Cells},
+    {"agate", PatternKind::Agate},
+    {"bozo", PatternKind::Bozo},
+    {"brick", PatternKind::Brick},
+    {"bumps", PatternKind::Bumps},
+    {"checker", PatternKind::Checker},
+    {"crackle", PatternKind::Crackle},
+    {"dents", PatternKind::Dents},
+    {"gradient", PatternKind::Gradient},
+    {"granite", PatternKind::Granite},
+    {"hexagon", PatternKind::Hexagon},
+    {"leopard", PatternKind::Leopard},
+    {"mandel", PatternKind::Mandel},
+    {"marble", PatternKind::Marble},
+    {"onion", PatternKind::Onion},
+    {"quilted", PatternKind::Quilted},
+    {"radial", PatternKind::Radial},
+    {"ripples", PatternKind::Ripples},
+    {"spiral1", PatternKind::Spiral1},
+    {"spiral2", PatternKind::Spiral2},
+    {"spotted", PatternKind::Spotted},
+    {"waves", PatternKind::Waves},
+    {"wood", PatternKind::Wood},
+    {"wrinkles", PatternKind::Wrinkles},
+    {"boxed", PatternKind::Boxed},
+    {"cylindrical", PatternKind::Cylindrical},
+    {"spherical", PatternKind::Spherical},
+    {"planar", PatternKind::Planar},
+    {"cells", PatternKind::Cells},
     {"average", PatternKind::Average},
 };
 
 bool is_unsupported_pattern(std::string_view w) {
-    static const char* kNames[] = {"image_map", "bump_map", "material_map", "function",
-                                   "object", "slope", "aoi", "density_file", "facets",
-                                   "pavement", "tiling", "julia", "magnet", "image_pattern",
-                                   "tiles", "proportion", "pigment_pattern",
-                                   "gradient_map"};
+    static const char* kNames[] = {"image_map",  "bump_map",        "material_map",
+                                   "function",   "object",          "slope",
+                                   "aoi",        "density_file",    "facets",
+                                   "pavement",   "tiling",          "julia",
+                                   "magnet",     "image_pattern",   "tiles",
+                                   "proportion", "pigment_pattern", "gradient_map"};
     for (const char* n : kNames) {
         if (w == n) return true;
     }
@@ -79,7 +94,8 @@ Numeric Interpreter::parse_colour() {
             if (p.size == 1) {
                 for (int i = 1; i < 5; ++i) p.c[i] = p.c[0];
             }
-            for (int i = 0; i < 3; ++i) c.c[i] = w == "srgbt" ? srgb_to_linear(p.c[i]) : p.c[i];
+            for (int i = 0; i < 3; ++i)
+                c.c[i] = w == "srgbt" ? srgb_to_linear(p.c[i]) : p.c[i];
             c.c[4] = p.c[3];
         } else if (w == "rgbft" || w == "srgbft") {
             next();
@@ -87,11 +103,15 @@ Numeric Interpreter::parse_colour() {
         } else if (w == "red" || w == "green" || w == "blue" || w == "filter" ||
                    w == "transmit") {
             next();
-            int i = w == "red" ? 0 : w == "green" ? 1 : w == "blue" ? 2 : w == "filter" ? 3 : 4;
+            int i = w == "red"      ? 0
+                    : w == "green"  ? 1
+                    : w == "blue"   ? 2
+                    : w == "filter" ? 3
+                                    : 4;
             c.c[i] = parse_float();
-        } else if (!any && (t.kind == TokenKind::Number || is_punct(t, '<') ||
-                            is_punct(t, '(') || is_punct(t, '-') ||
-                            (t.kind == TokenKind::Word && lookup(t)))) {
+        } else if (!any &&
+                   (t.kind == TokenKind::Number || is_punct(t, '<') || is_punct(t, '(') ||
+                    is_punct(t, '-') || (t.kind == TokenKind::Word && lookup(t)))) {
             Numeric v = parse_express();
             if (v.size == 1) {
                 for (int i = 0; i < 5; ++i) c.c[i] = v.c[0];
@@ -132,8 +152,9 @@ ColourMap Interpreter::parse_colour_map_block() {
         accept_punct(',');
         // Old two-value form: [v1, v2 color A color B]
         if (!is_word(peek(), "color") && !is_word(peek(), "colour") &&
-            !is_word(peek(), "rgb") && !is_word(peek(), "rgbf") && !is_word(peek(), "rgbt") &&
-            !is_word(peek(), "rgbft") && peek().kind == TokenKind::Number) {
+            !is_word(peek(), "rgb") && !is_word(peek(), "rgbf") &&
+            !is_word(peek(), "rgbt") && !is_word(peek(), "rgbft") &&
+            peek().kind == TokenKind::Number) {
             float v2 = float(parse_float());
             Colour a = parse_colour_value();
             Colour b = parse_colour_value();
@@ -155,23 +176,33 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
         if (w != p.name) continue;
         spec.kind = p.kind;
         switch (p.kind) {
-            case PatternKind::Gradient: spec.vector = parse_vector(); break;
-            case PatternKind::Agate: break;
+            case PatternKind::Gradient:
+                spec.vector = parse_vector();
+                break;
+            case PatternKind::Agate:
+                break;
             // POV-Ray's default wave for marble, wood and the spirals is the triangle wave.
             case PatternKind::Marble:
-            case PatternKind::Wood: spec.wave = WaveType::Triangle; break;
+            case PatternKind::Wood:
+                spec.wave = WaveType::Triangle;
+                break;
             case PatternKind::Spiral1:
             case PatternKind::Spiral2:
                 spec.scalar = parse_float();
                 spec.wave = WaveType::Triangle;
                 break;
-            case PatternKind::Mandel: spec.scalar = parse_float(); break;
-            case PatternKind::Quilted: spec.vector = {1, 1, 0}; break;  // control0/1 defaults
+            case PatternKind::Mandel:
+                spec.scalar = parse_float();
+                break;
+            case PatternKind::Quilted:
+                spec.vector = {1, 1, 0};  // control0, control1 defaults
+                break;
             case PatternKind::Crackle:
                 spec.vector = {-1, 1, 0};  // form
                 spec.scalar = 2;           // metric
                 break;
-            default: break;
+            default:
+                break;
         }
         return true;
     }
@@ -187,7 +218,8 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
         return true;
     }
     auto turbulence_warp = [&]() -> Warp& {
-        // Classic turbulence keywords edit the pattern's turbulence warp (created on demand).
+        // Classic turbulence keywords edit the pattern's turbulence warp (created on
+        // demand).
         for (Warp& wp : spec.warps) {
             if (wp.kind == Warp::Kind::Turbulence && wp.classic) return wp;
         }
@@ -237,7 +269,8 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     } else if (w == "solid") {
         spec.vector2.y = 1;
     } else if (w == "interior" || w == "exterior") {
-        // Fractal colouring types (mandel/julia): `interior TYPE, FACTOR`; read, not modelled.
+        // Fractal colouring types (mandel/julia): `interior TYPE, FACTOR`; read, not
+        // modelled.
         parse_float();
         accept_punct(',');
         parse_float();
@@ -248,9 +281,6 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     } else if (w == "warp") {
         expect_punct('{', "after 'warp'");
         Warp wp;
-        // Transforms written since the previous warp belong before this one in the chain.
-        wp.transform = spec.transform;
-        spec.transform = Transform();
         Token k = next();
         std::string_view kind = k.kind == TokenKind::Word ? k.text : std::string_view();
         if (kind == "turbulence") {
@@ -263,7 +293,7 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
         } else if (kind == "black_hole") {
             wp.kind = Warp::Kind::BlackHole;
             wp.centre = parse_vector();
-            expect_punct(',', "between the black_hole centre and radius");
+            accept_punct(',');
             wp.radius = parse_float();
         } else if (kind == "cylindrical" || kind == "spherical" || kind == "toroidal" ||
                    kind == "planar") {
@@ -271,10 +301,15 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
                       : kind == "spherical" ? Warp::Kind::Spherical
                       : kind == "toroidal"  ? Warp::Kind::Toroidal
                                             : Warp::Kind::Planar;
-            if (wp.kind == Warp::Kind::Planar && !is_punct(peek(), '}') &&
-                peek().kind != TokenKind::Word) {
+            const Token& n = peek();
+            bool vector_follows = is_punct(n, '<') || is_word(n, "x") ||
+                                  is_word(n, "y") || is_word(n, "z") ||
+                                  (n.kind == TokenKind::Word && lookup(n) &&
+                                   std::holds_alternative<Numeric>(*lookup(n)));
+            if (wp.kind == Warp::Kind::Planar &&
+                vector_follows) {  // planar <normal>, offset
                 wp.orientation = parse_vector();
-                expect_punct(',', "between the planar warp normal and offset");
+                accept_punct(',');
                 wp.plane_offset = parse_float();
             }
         } else {
@@ -284,20 +319,34 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
             Token m = next();
             if (is_punct(m, '}')) break;
             std::string_view mw = m.kind == TokenKind::Word ? m.text : std::string_view();
-            if (mw == "octaves") wp.octaves = int(parse_float());
-            else if (mw == "omega") wp.omega = parse_float();
-            else if (mw == "lambda") wp.lambda = parse_float();
-            else if (mw == "offset") wp.offset = parse_vector();
-            else if (mw == "flip") wp.flip = parse_vector();
-            else if (mw == "strength") wp.strength = parse_float();
-            else if (mw == "falloff") wp.falloff = parse_float();
-            else if (mw == "inverse") wp.inverse = true;
-            else if (mw == "repeat") wp.repeat = parse_vector();
-            else if (mw == "turbulence") wp.turbulence = parse_vector();
-            else if (mw == "orientation") wp.orientation = parse_vector();
-            else if (mw == "dist_exp") wp.dist_exp = parse_float();
-            else if (mw == "major_radius") wp.major_radius = parse_float();
-            else expected("a warp modifier or '}'", m);
+            if (mw == "octaves")
+                wp.octaves = int(parse_float());
+            else if (mw == "omega")
+                wp.omega = parse_float();
+            else if (mw == "lambda")
+                wp.lambda = parse_float();
+            else if (mw == "offset")
+                wp.offset = parse_vector();
+            else if (mw == "flip")
+                wp.flip = parse_vector();
+            else if (mw == "strength")
+                wp.strength = parse_float();
+            else if (mw == "falloff")
+                wp.falloff = parse_float();
+            else if (mw == "inverse")
+                wp.inverse = true;
+            else if (mw == "repeat")
+                wp.repeat = parse_vector();
+            else if (mw == "turbulence")
+                wp.turbulence = parse_vector();
+            else if (mw == "orientation")
+                wp.orientation = parse_vector();
+            else if (mw == "dist_exp")
+                wp.dist_exp = parse_float();
+            else if (mw == "major_radius")
+                wp.major_radius = parse_float();
+            else
+                expected("a warp modifier or '}'", m);
         }
         spec.warps.push_back(wp);
     } else {
@@ -327,8 +376,10 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
         Token t = next();
         if (is_punct(t, terminator)) return;
         if (try_pattern_keyword(t, p.pattern)) {
-            // checker/hexagon/brick take their colours or pigments right after the keyword
-            if (p.pattern.kind == PatternKind::Checker || p.pattern.kind == PatternKind::Hexagon ||
+            // checker/hexagon/brick take their colours or pigments right after the
+            // keyword
+            if (p.pattern.kind == PatternKind::Checker ||
+                p.pattern.kind == PatternKind::Hexagon ||
                 p.pattern.kind == PatternKind::Brick) {
                 int count = p.pattern.kind == PatternKind::Hexagon ? 3 : 2;
                 for (int i = 0; i < count; ++i) {
@@ -337,11 +388,11 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                     if (is_word(n, "pigment")) {
                         next();
                         p.list.push_back(parse_pigment_block());
-                    } else if (is_punct(n, '}') || (n.kind == TokenKind::Word &&
-                                                    !lookup(n) && !is_word(n, "color") &&
-                                                    !is_word(n, "colour") && !is_word(n, "rgb") &&
-                                                    !is_word(n, "rgbf") && !is_word(n, "rgbt") &&
-                                                    !is_word(n, "rgbft"))) {
+                    } else if (is_punct(n, '}') ||
+                               (n.kind == TokenKind::Word && !lookup(n) &&
+                                !is_word(n, "color") && !is_word(n, "colour") &&
+                                !is_word(n, "rgb") && !is_word(n, "rgbf") &&
+                                !is_word(n, "rgbt") && !is_word(n, "rgbft"))) {
                         break;
                     } else {
                         Pigment sub;
@@ -355,8 +406,9 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
         if (try_pattern_modifier(t, p.pattern)) continue;
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
         if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" ||
-            w == "rgbft" || w == "srgb" || w == "srgbf" || w == "srgbt" || w == "srgbft" ||
-            w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") {
+            w == "rgbft" || w == "srgb" || w == "srgbf" || w == "srgbt" ||
+            w == "srgbft" || w == "red" || w == "green" || w == "blue" || w == "filter" ||
+            w == "transmit") {
             unget(t);
             p.pattern.kind = PatternKind::Solid;
             p.colour = parse_colour_value();
@@ -418,7 +470,8 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
         Token t = next();
         if (is_punct(t, terminator)) return;
         if (try_pattern_keyword(t, n.pattern)) {
-            if (n.pattern.kind == PatternKind::Checker || n.pattern.kind == PatternKind::Hexagon ||
+            if (n.pattern.kind == PatternKind::Checker ||
+                n.pattern.kind == PatternKind::Hexagon ||
                 n.pattern.kind == PatternKind::Brick) {
                 // checker normal{..} normal{..}: entries follow the keyword.
                 int count = n.pattern.kind == PatternKind::Hexagon ? 3 : 2;
@@ -535,7 +588,8 @@ Finish Interpreter::parse_finish_block() {
                     } else if (is_word(m, "exponent")) {
                         f.reflection_exponent = float(parse_float());
                     } else if (is_word(m, "metallic")) {
-                        f.reflection_metallic = starts_float(peek()) ? float(parse_float()) : 1.0f;
+                        f.reflection_metallic =
+                            starts_float(peek()) ? float(parse_float()) : 1.0f;
                     } else {
                         expected("a reflection item or '}'", m);
                     }
@@ -556,12 +610,15 @@ Finish Interpreter::parse_finish_block() {
             for (;;) {
                 Token m = next();
                 if (is_punct(m, '}')) break;
-                if (is_word(m, "thickness")) f.irid_thickness = float(parse_float());
-                else if (is_word(m, "turbulence")) f.irid_turbulence = float(parse_float());
-                else expected("an irid item or '}'", m);
+                if (is_word(m, "thickness"))
+                    f.irid_thickness = float(parse_float());
+                else if (is_word(m, "turbulence"))
+                    f.irid_turbulence = float(parse_float());
+                else
+                    expected("an irid item or '}'", m);
             }
-        } else if (w == "refraction" || w == "ior" || w == "caustics" || w == "fade_distance" ||
-                   w == "fade_power") {
+        } else if (w == "refraction" || w == "ior" || w == "caustics" ||
+                   w == "fade_distance" || w == "fade_power") {
             unsupported(t, "finish " + std::string(w) + " (use interior)");
         } else if (w == "subsurface") {
             unsupported(t, "subsurface");
@@ -586,12 +643,18 @@ Interior Interpreter::parse_interior_block() {
         Token t = next();
         if (is_punct(t, '}')) return in;
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
-        if (w == "ior") in.ior = float(parse_float());
-        else if (w == "caustics") in.caustics = float(parse_float());
-        else if (w == "dispersion") in.dispersion = float(parse_float());
-        else if (w == "dispersion_samples") in.dispersion_samples = int(parse_float());
-        else if (w == "fade_distance") in.fade_distance = float(parse_float());
-        else if (w == "fade_power") in.fade_power = float(parse_float());
+        if (w == "ior")
+            in.ior = float(parse_float());
+        else if (w == "caustics")
+            in.caustics = float(parse_float());
+        else if (w == "dispersion")
+            in.dispersion = float(parse_float());
+        else if (w == "dispersion_samples")
+            in.dispersion_samples = int(parse_float());
+        else if (w == "fade_distance")
+            in.fade_distance = float(parse_float());
+        else if (w == "fade_power")
+            in.fade_power = float(parse_float());
         else if (w == "fade_color" || w == "fade_colour") {
             Colour c = parse_colour_value();
             in.fade_colour = c.rgb;
@@ -646,7 +709,8 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
                 Token e = next();
                 if (is_punct(e, '}')) break;
                 if (!is_punct(e, '[')) expected("'[' or '}' in a texture_map", e);
-                float value = parse_map_value(top.map_pattern->kind == PatternKind::Average);
+                float value =
+                    parse_map_value(top.map_pattern->kind == PatternKind::Average);
                 accept_punct(',');
                 LayeredTexture entry;
                 if (accept_word("texture")) {
@@ -667,7 +731,8 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
             PatternSpec spec;
             if (t.kind == TokenKind::Word && try_pattern_keyword(t, spec)) {
                 top.map_pattern = spec;
-                if (spec.kind == PatternKind::Checker || spec.kind == PatternKind::Hexagon ||
+                if (spec.kind == PatternKind::Checker ||
+                    spec.kind == PatternKind::Hexagon ||
                     spec.kind == PatternKind::Brick) {
                     // checker texture{..} texture{..}: entries follow the keyword.
                     int count = spec.kind == PatternKind::Hexagon ? 3 : 2;

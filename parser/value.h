@@ -17,11 +17,17 @@ struct Numeric {
     bool colour = false;
     double c[5] = {0, 0, 0, 0, 0};
 
-    static Numeric scalar(double v) { Numeric n; n.c[0] = v; return n; }
+    static Numeric scalar(double v) {
+        Numeric n;
+        n.c[0] = v;
+        return n;
+    }
     static Numeric vector(const Vector3& v) {
         Numeric n;
         n.size = 3;
-        n.c[0] = v.x; n.c[1] = v.y; n.c[2] = v.z;
+        n.c[0] = v.x;
+        n.c[1] = v.y;
+        n.c[2] = v.z;
         return n;
     }
     Vector3 vec3() const {
@@ -42,15 +48,13 @@ struct Material {
     std::optional<Interior> interior;
 };
 
-using Value = std::variant<std::monostate, Numeric, std::string, std::shared_ptr<Object>,
-                           std::shared_ptr<LayeredTexture>, std::shared_ptr<Pigment>,
-                           std::shared_ptr<Finish>, std::shared_ptr<Normal>,
-                           std::shared_ptr<Interior>, std::shared_ptr<CameraSpec>,
-                           std::shared_ptr<Light>, std::shared_ptr<ArrayValue>,
-                           std::shared_ptr<Transform>, std::shared_ptr<Macro>,
-                           std::shared_ptr<Material>, std::shared_ptr<ColourMap>,
-                           std::shared_ptr<SkySphere>, std::shared_ptr<Fog>,
-                           std::shared_ptr<UnsupportedValue>>;
+using Value = std::variant<
+    std::monostate, Numeric, std::string, std::shared_ptr<Object>,
+    std::shared_ptr<LayeredTexture>, std::shared_ptr<Pigment>, std::shared_ptr<Finish>,
+    std::shared_ptr<Normal>, std::shared_ptr<Interior>, std::shared_ptr<CameraSpec>,
+    std::shared_ptr<Light>, std::shared_ptr<ArrayValue>, std::shared_ptr<Transform>,
+    std::shared_ptr<Macro>, std::shared_ptr<Material>, std::shared_ptr<ColourMap>,
+    std::shared_ptr<SkySphere>, std::shared_ptr<Fog>, std::shared_ptr<UnsupportedValue>>;
 
 struct ArrayValue {
     std::vector<int> dims;

@@ -1,6 +1,7 @@
-// Scene-language fixtures: each tests/lang/NAME.pov prints values with #debug between BEGIN
-// and END lines; NAME.out holds what POV-Ray 3.7 printed for the same file (regenerate with
-// `povray +INAME.pov -D +W8 +H8 2>&1 | sed -n '/^BEGIN/,/^END/p' > NAME.out`).
+// Scene-language fixtures: each tests/lang/NAME.pov prints values with #debug between
+// BEGIN and END lines; NAME.out holds what POV-Ray 3.7 printed for the same file
+// (regenerate with `povray +INAME.pov -D +W8 +H8 2>&1 | sed -n '/^BEGIN/,/^END/p' >
+// NAME.out`).
 #include <gtest/gtest.h>
 
 #include <fstream>

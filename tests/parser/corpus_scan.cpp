@@ -1,12 +1,12 @@
-// Parses every scene listed in a corpus file and tallies ok / unsupported / error, printing
-// each failure's first line. Usage: parser_corpus LIST EXAMPLES_DIR [-v]
+// Parses every scene listed in a corpus file and tallies ok / unsupported / error,
+// printing each failure's first line. Usage: parser_corpus LIST EXAMPLES_DIR [-v]
 #include <chrono>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <string>
 #include <iostream>
 #include <sstream>
+#include <string>
 
 #include "parser/parser.h"
 
@@ -32,7 +32,8 @@ int main(int argc, char** argv) {
             std::ifstream in(ini);
             std::string line;
             while (std::getline(in, line)) {
-                if (line.rfind("Final_Frame=", 0) == 0) options.final_frame = std::atoi(line.c_str() + 12);
+                if (line.rfind("Final_Frame=", 0) == 0)
+                    options.final_frame = std::atoi(line.c_str() + 12);
             }
             options.frame_number = 1;
             options.initial_frame = 1;
@@ -42,7 +43,8 @@ int main(int argc, char** argv) {
         std::clock_t cpu_start = std::clock();
         std::string status;
         try {
-            povwall::Scene scene = povwall::parser::parse_scene_file(path.string(), options);
+            povwall::Scene scene =
+                povwall::parser::parse_scene_file(path.string(), options);
             ++ok;
             std::ostringstream s;
             s << "ok " << scene.objects.size() << " objects";
@@ -58,11 +60,15 @@ int main(int argc, char** argv) {
                 status = "ERROR " + first;
             }
         }
-        double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        double secs =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+                .count();
         double cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
         if (verbose || status.rfind("ok", 0) != 0)
-            std::cout << rel << ": " << status << " (" << secs << " s wall, " << cpu << " s cpu)\n";
+            std::cout << rel << ": " << status << " (" << secs << " s wall, " << cpu
+                      << " s cpu)\n";
     }
-    std::cout << "ok " << ok << "  unsupported " << unsupported << "  error " << errors << "\n";
+    std::cout << "ok " << ok << "  unsupported " << unsupported << "  error " << errors
+              << "\n";
     return 0;
 }

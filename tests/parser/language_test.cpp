@@ -58,7 +58,8 @@ TEST(Syntax, CommasAreOptionalAndTrailingCommasAccepted) {
 TEST(Syntax, ComparisonsNeedParenthesesInFloatPositions) {
     // POV-Ray's Parse_Float reads sums only; `<` after a vector starts the next vector.
     std::string out;
-    parse("#declare A = 2 < 3;\n#debug str(A, 0, 0)\n#debug str((1 > 2) + 5, 0, 0)\n", &out);
+    parse("#declare A = 2 < 3;\n#debug str(A, 0, 0)\n#debug str((1 > 2) + 5, 0, 0)\n",
+          &out);
     EXPECT_EQ(out, "15");
 }
 
@@ -80,7 +81,8 @@ TEST(Identifiers, ArrayElementsStandWhereIdentifiersDo) {
 
 TEST(Identifiers, LayeredTextureDeclarationAndBareObjectStatement) {
     Scene s = parse(
-        "#declare L = texture { pigment { rgb 1 } } texture { pigment { rgbt <0, 0, 0, 0.5> } }\n"
+        "#declare L = texture { pigment { rgb 1 } } texture { pigment { rgbt <0, 0, 0, "
+        "0.5> } }\n"
         "#declare Ball = sphere { 0, 1 texture { L } }\n"
         "Ball\n");
     ASSERT_EQ(s.objects.size(), 1u);
@@ -100,7 +102,9 @@ TEST(Tolerance, UnusedUnsupportedDeclarationsDoNotStopTheParse) {
     EXPECT_EQ(out, "4");
     EXPECT_EQ(s.objects.size(), 1u);
     try {
-        parse("#declare Q = quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }\nobject { Q }\n");
+        parse(
+            "#declare Q = quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }\nobject { Q "
+            "}\n");
         FAIL() << "no error";
     } catch (const ParseError& e) {
         EXPECT_EQ(e.kind(), ParseError::Kind::Unsupported);
@@ -114,7 +118,8 @@ TEST(Textures, TextureMapAndCheckerTextures) {
         "sphere { 0, 1 texture { gradient x texture_map {\n"
         "  [0.2 pigment { rgb 1 } finish { ambient 0.2 }]\n"
         "  [0.8 texture { pigment { rgb <1, 0, 0> } }] } scale 2 } }\n"
-        "box { 0, 1 texture { checker texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } } }\n");
+        "box { 0, 1 texture { checker texture { pigment { rgb 1 } } texture { pigment { "
+        "rgb 0 } } } }\n");
     ASSERT_EQ(s.objects.size(), 2u);
     const Texture& t = s.objects[0].texture[0];
     ASSERT_TRUE(t.map_pattern.has_value());
@@ -133,7 +138,8 @@ TEST(Textures, TextureMapAndCheckerTextures) {
 TEST(Textures, PigmentMapEntriesAreBodies) {
     Scene s = parse(
         "#declare P = pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } }\n"
-        "sphere { 0, 1 pigment { gradient y pigment_map { [0.01 rgb <1, 0, 0>] [0.5 P scale 2] } } }\n");
+        "sphere { 0, 1 pigment { gradient y pigment_map { [0.01 rgb <1, 0, 0>] [0.5 P "
+        "scale 2] } } }\n");
     const Pigment& p = s.objects[0].texture[0].pigment;
     ASSERT_EQ(p.list.size(), 2u);
     EXPECT_FLOAT_EQ(p.list[0].colour.rgb.r, 1.0f);
@@ -156,7 +162,8 @@ TEST(Textures, DefaultFinishAppliesToLaterTextures) {
 
 TEST(Camera, LookAtKeepsLengthsAndHandedness) {
     // angle 60 with right 4/3: |direction| = (4/3) / tan(30 deg) / 2.
-    Scene s = parse("camera { location <0, 0, -5> right x*4/3 angle 60 look_at <0, 0, 0> }");
+    Scene s =
+        parse("camera { location <0, 0, -5> right x*4/3 angle 60 look_at <0, 0, 0> }");
     double d = (4.0 / 3.0) / std::tan(kPi / 6) / 2;
     expect_vec(s.camera.direction, 0, 0, d);
     expect_vec(s.camera.right, 4.0 / 3.0, 0, 0);
@@ -166,7 +173,8 @@ TEST(Camera, LookAtKeepsLengthsAndHandedness) {
     expect_vec(l.camera.direction, 1, 0, 0);
     expect_vec(l.camera.right, 0, 0, 1);
     expect_vec(l.camera.up, 0, 1, 0);
-    // Items apply in POV-Ray's fixed order: look_at before angle in the file changes nothing.
+    // Items apply in POV-Ray's fixed order: look_at before angle in the file changes
+    // nothing.
     Scene o = parse("camera { look_at <0, 0, 0> angle 90 location <0, 0, -5> }");
     expect_vec(o.camera.direction, 0, 0, 1.33 / 2);
     // Sky tilts right and up.
@@ -188,7 +196,8 @@ TEST(Includes, SearchOrderAndLocationsInsideIncludes) {
         parse_scene_file((dir / "scene.pov").string(), o);
         FAIL() << "no error";
     } catch (const ParseError& e) {
-        std::string first = std::string(e.what()).substr(0, std::string(e.what()).find('\n'));
+        std::string first =
+            std::string(e.what()).substr(0, std::string(e.what()).find('\n'));
         EXPECT_EQ(first, (dir / "b.inc").string() +
                              ":3:15: error: expected the sphere's radius but found '}'");
     }
@@ -206,8 +215,83 @@ TEST(Includes, SearchOrderAndLocationsInsideIncludes) {
 
 TEST(Lexer, NestedCommentsAndStrayHash) {
     std::string out;
-    parse("/* a /* nested */ still comment */ #debug \"x\" // line\n#\n#debug \"y\"\n", &out);
+    parse("/* a /* nested */ still comment */ #debug \"x\" // line\n#\n#debug \"y\"\n",
+          &out);
     EXPECT_EQ(out, "xy");
+}
+
+std::string first_line(const std::string& text);
+
+TEST(Textures, WarpsAndClassicTurbulence) {
+    Scene s = parse(
+        "sphere { 0, 1 pigment { marble turbulence 0.5 octaves 3\n"
+        "  warp { turbulence <1, 2, 3> octaves 4 }\n"
+        "  warp { black_hole <1, 0, 0>, 0.5 strength 2 falloff 3 inverse }\n"
+        "  warp { planar z, 0.25 } warp { toroidal orientation y dist_exp 1 major_radius "
+        "2 } } }\n");
+    const auto& w = s.objects[0].texture[0].pigment.pattern.warps;
+    ASSERT_EQ(w.size(), 5u);
+    EXPECT_TRUE(w[0].classic);
+    EXPECT_EQ(w[0].octaves, 3);
+    EXPECT_FALSE(w[1].classic);
+    expect_vec(w[1].turbulence, 1, 2, 3);
+    EXPECT_EQ(w[2].kind, Warp::Kind::BlackHole);
+    expect_vec(w[2].centre, 1, 0, 0);
+    EXPECT_EQ(w[2].radius, 0.5);
+    EXPECT_EQ(w[2].strength, 2);
+    EXPECT_TRUE(w[2].inverse);
+    EXPECT_EQ(w[3].kind, Warp::Kind::Planar);
+    expect_vec(w[3].orientation, 0, 0, 1);
+    EXPECT_EQ(w[3].plane_offset, 0.25);
+    EXPECT_EQ(w[4].kind, Warp::Kind::Toroidal);
+    EXPECT_EQ(w[4].major_radius, 2);
+}
+
+TEST(Mesh2, PlainAndComputedVectorsAgree) {
+    // The first vertices are plain numbers (fast path), the others expressions.
+    Scene s = parse(
+        "#declare H = 0.5;\n"
+        "mesh2 { vertex_vectors { 4, <0, 0, 0>, <1, -2.5, 0>, <0, 1 + 1, 0> <H, H, -H> "
+        "}\n"
+        "  texture_list { 2, texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } "
+        "}\n"
+        "  face_indices { 2, <0, 1, 2>, 1, <1, 2, 3> 0, } }\n");
+    const Mesh& m = std::get<Mesh>(s.objects.at(0).shape);
+    ASSERT_EQ(m.vertices.size(), 4u);
+    expect_vec(m.vertices[1], 1, -2.5, 0);
+    expect_vec(m.vertices[2], 0, 2, 0);
+    expect_vec(m.vertices[3], 0.5, 0.5, -0.5);
+    ASSERT_EQ(m.faces.size(), 2u);
+    EXPECT_EQ(m.faces[0].v[2], 2u);
+    EXPECT_EQ(m.faces[0].texture, 1);
+    EXPECT_EQ(m.faces[1].v[0], 1u);
+    EXPECT_EQ(m.faces[1].texture, 0);
+    EXPECT_EQ(
+        first_line(
+            "mesh2 { vertex_vectors { 1, <0, 0, 0> } face_indices { 1, <0, 0, 5> } }"),
+        "test.pov:1:59: error: mesh2 face index out of range");
+}
+
+std::string first_line(const std::string& text) {
+    std::string e = error_of(text);
+    return e.substr(0, e.find('\n'));
+}
+
+TEST(BadInput, LocatedErrorsInsteadOfCrashesOrHangs) {
+    EXPECT_EQ(first_line("sphere { 0, 1 pigment { rgb <1, 0"),
+              "test.pov:1:34: error: expected an expression but found end of file");
+    EXPECT_EQ(
+        first_line("union { sphere { 0, 1 }\n"),
+        "test.pov:2:1: error: expected an object modifier or '}' but found end of file");
+    EXPECT_EQ(first_line("#macro M() M() #end\nM()\n"),
+              "test.pov:1:12: error: macro 'M' nested too deeply (limit 1000): runaway "
+              "recursion?");
+    EXPECT_EQ(first_line("mesh2 { vertex_vectors { 1e12, <0, 0, 0> } }"),
+              "test.pov:1:26: error: list length 1000000000000.000000 out of range");
+    EXPECT_EQ(first_line("#declare A = array[100000][100000][1000];"),
+              "test.pov:1:28: error: array too large");
+    EXPECT_EQ(first_line("#for (I, 0, 1, 1e-12) #end"),
+              "test.pov:1:1: error: #for loop ran 10000000 times: runaway loop?");
 }
 
 }  // namespace

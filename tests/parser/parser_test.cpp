@@ -183,7 +183,8 @@ union { sphere { 0, 1 } sphere { x, 1 pigment { rgb 1 } } pigment { rgb <1, 0, 0
 }
 
 TEST(Settings, VersionAndGlobalSettings) {
-    Scene s = parse("#version 3.7;\nglobal_settings { assumed_gamma 1.0 max_trace_level 300 }");
+    Scene s =
+        parse("#version 3.7;\nglobal_settings { assumed_gamma 1.0 max_trace_level 300 }");
     EXPECT_EQ(s.language_version, 370);
     EXPECT_TRUE(s.gamma_handling());
     EXPECT_EQ(s.settings.max_trace_level, 256);
