@@ -120,6 +120,7 @@ Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray) {
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     ShadingRecord& out) {
     out.clear();
+    if (!scene.scene().fogs.empty()) out.fog = fog_effect(scene.scene(), ray.ray, hit.t);
     const Scene& sc = scene.scene();
     const Material& m = *hit.material;
     const Vector3 D = ray.ray.direction;
@@ -340,7 +341,42 @@ TraceResult combine_children(const ShadingRecord& record, const TraceResult* res
         }
         if (c.kind == ChildRay::Kind::Transmission) r.transmit = c.transmit_factor * x.transmit;
     }
+    const FogEffect& f = record.fog;
+    r.colour = f.add + f.mul * r.colour;
+    r.transmit = f.add_transmit + f.mul_transmit * r.transmit;
     return r;
+}
+
+FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth) {
+    FogEffect e;
+    for (const Fog& fog : scene.fogs) {
+        if (std::fabs(fog.distance) <= kPovEpsilon) continue;
+        // POV-Ray's constant and ground fog (turbulence not yet modelled).
+        Real density = 1;
+        if (fog.type == 2) {
+            Vector3 up = fog.up;
+            Real y1 = dot(ray.origin, up), y2 = dot(ray.at(depth), up);
+            Real start = (y1 - fog.offset) / fog.alt, end = (y2 - fog.offset) / fog.alt;
+            if (start <= 0) {
+                density = end <= 0 ? 1.0 : (std::atan(end) - start) / (end - start);
+            } else if (end <= 0) {
+                density = (std::atan(start) - end) / (start - end);
+            } else if (std::fabs(start - end) > kPovEpsilon) {
+                density = (std::atan(start) - std::atan(end)) / (start - end);
+            } else {
+                density = 1 / (start * start + 1);
+            }
+        }
+        float att = float(std::exp(-depth * density / fog.distance));
+        const Colour& c = fog.colour;
+        att = std::max(att, c.transmit);  // minimum transmittance
+        const Rgb pass = Rgb(1 - c.filter) + c.rgb * c.filter;
+        e.mul *= pass * att;
+        e.mul_transmit *= att * c.transmit;
+        e.add += c.rgb * (1 - att);
+        e.add_transmit += c.transmit * (1 - att);
+    }
+    return e;
 }
 
 bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
@@ -494,6 +530,17 @@ Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, Ray
     return sampler.region(0, 0, n1 - 1, n2 - 1, 0);
 }
 
+namespace {
+
+// A ray that hits nothing crosses fog up to POV-Ray's MAX_DISTANCE.
+TraceResult fogged(const Scene& sc, const Ray& ray, TraceResult r) {
+    if (sc.fogs.empty()) return r;
+    FogEffect f = fog_effect(sc, ray, kMaxDistance);
+    return {f.add + f.mul * r.colour, f.add_transmit + f.mul_transmit * r.transmit};
+}
+
+}  // namespace
+
 TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
     const Scene& sc = scene.scene();
     if (sc.sky_sphere && !sc.sky_sphere->pigments.empty()) {
@@ -509,9 +556,9 @@ TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
             fil *= rgb_transm(c);
         }
         colour += fil * sc.background.rgb;
-        return {colour, 0};
+        return fogged(sc, ray, {colour, 0});
     }
-    return {sc.background.rgb, sc.background.transmit};
+    return fogged(sc, ray, {sc.background.rgb, sc.background.transmit});
 }
 
 }  // namespace povwall::trace

@@ -73,12 +73,22 @@ struct ChildRay {
     Rgb light_colour{1.0f};  // attenuated light colour (area-light refinement threshold)
 };
 
+// Fog along a ray of known length: the ray's colour c becomes add + mul * c (affine, so
+// the children still combine linearly). Identity when the scene has no fog.
+struct FogEffect {
+    Rgb add{0.0f}, mul{1.0f};
+    float add_transmit = 0, mul_transmit = 1;
+};
+FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth);
+
 struct ShadingRecord {
     Rgb local;  // ambient and emission: needs no child
     std::vector<ChildRay> children;
+    FogEffect fog;  // applied to the combined colour
     void clear() {
         local = Rgb{};
         children.clear();
+        fog = FogEffect{};
     }
 };
 
@@ -115,7 +125,7 @@ Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, Ray
 // shadow rays differ in one test, hence the flag).
 Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray);
 
-// Colour of a ray that hits nothing (background or sky_sphere).
+// Colour of a ray that hits nothing (background or sky_sphere), fog included.
 TraceResult miss_colour(const PreparedScene& scene, const Ray& ray);
 
 }  // namespace povwall::trace

@@ -360,6 +360,36 @@ light_source { <0,5,0> rgb 1 area_light <4,0,0>, <0,0,4>, 3, 3 )" + adaptive_kw 
     }
 }
 
+TEST(PovCompare, ConstantAndGroundFog) {
+    Scene s = base_scene();
+    s.background = Colour(Rgb(0.2f, 0.3f, 0.8f));
+    s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {tex({0.9f, 0.9f, 0.9f})}));
+    s.objects.push_back(object(Sphere{{-1, 0, 2}, 1}, {}, {tex({0.9f, 0.2f, 0.2f})}));
+    s.objects.push_back(object(Sphere{{2, 0.5, 8}, 1.5}, {}, {tex({0.2f, 0.9f, 0.2f})}));
+    s.lights.push_back(point_light({-3, 6, -5}));
+    Fog constant;
+    constant.distance = 25;
+    constant.colour = Colour(Rgb(0.6f, 0.6f, 0.7f), 0.3f, 0.2f);
+    s.fogs.push_back(constant);
+    Fog ground;
+    ground.type = 2;
+    ground.distance = 6;
+    ground.offset = -0.5;
+    ground.alt = 0.4;
+    ground.colour = Colour(Rgb(0.9f, 0.8f, 0.6f));
+    s.fogs.push_back(ground);
+    expect_matches("fog", R"(
+background { rgb <0.2,0.3,0.8> }
+plane { y, -1 pigment { rgb 0.9 } }
+sphere { <-1,0,2>, 1 pigment { rgb <0.9,0.2,0.2> } }
+sphere { <2,0.5,8>, 1.5 pigment { rgb <0.2,0.9,0.2> } }
+light_source { <-3,6,-5> rgb 1 }
+fog { distance 25 color rgbft <0.6,0.6,0.7,0.3,0.2> }
+fog { fog_type 2 distance 6 fog_offset -0.5 fog_alt 0.4 color rgb <0.9,0.8,0.6> }
+)",
+                   s);
+}
+
 TEST(PovCompare, AntialiasMethod1NoJitter) {
     Scene s = base_scene();
     s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {tex({0.9f, 0.9f, 0.9f})}));
