@@ -372,10 +372,9 @@ FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth) {
         att = std::max(att, c.transmit);  // minimum transmittance
         const Rgb pass = Rgb(1 - c.filter) + c.rgb * c.filter;
         e.mul *= pass * att;
-        e.mul_transmit *= att * c.transmit;
         e.add += c.rgb * (1 - att);
-        e.add_transmit += c.transmit * (1 - att);
     }
+    e.mul_transmit = e.mul.grey();  // POV-Ray 3.7 scales the ray's transmit only
     return e;
 }
 
@@ -542,23 +541,45 @@ TraceResult fogged(const Scene& sc, const Ray& ray, TraceResult r) {
 }  // namespace
 
 TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
+    // POV-Ray's ComputeSky: the sky_sphere's pigments (last one on top) over the background.
     const Scene& sc = scene.scene();
-    if (sc.sky_sphere && !sc.sky_sphere->pigments.empty()) {
-        Point3 p = sc.sky_sphere->transform.inverse_vector(ray.direction);
-        p = normalize(p);
-        // Layers composite top first, each letting the next show through its filter/transmit.
-        Rgb colour, fil(1.0f);
+    const bool alpha = scene.alpha_background();
+    const bool sky = sc.sky_sphere && !sc.sky_sphere->pigments.empty();
+    Point3 p;
+    if (sky) p = sc.sky_sphere->transform.inverse_point(ray.direction);
+    Colour bg = sc.background;
+    if (sc.language_version < 370) {
+        // Legacy: full transparency with alpha; else the 3.6 compositing.
+        if (alpha) return fogged(sc, ray, {Rgb{}, 1.0f});
+        if (!sky) return fogged(sc, ray, {bg.rgb, 0.0f});
+        Rgb col, fil(1.0f);
+        float ff = 1, ft = 1, trans = 1;
         for (auto it = sc.sky_sphere->pigments.rbegin(); it != sc.sky_sphere->pigments.rend();
              ++it) {
             Colour c = evaluate_pigment(*it, p, scene.pattern_env());
-            float att = 1 - c.filter - c.transmit;
-            colour += fil * c.rgb * att;
+            col += c.rgb * (trans * (1 - c.filter - c.transmit));
+            fil *= c.rgb;
+            ff *= c.filter;
+            ft *= c.transmit;
+            trans = std::fabs(ff) + std::fabs(ft);
+        }
+        return fogged(sc, ray, {col + bg.rgb * (fil * ff + Rgb(ft)), 0.0f});
+    }
+    Rgb col, fil(1.0f);
+    if (sky) {
+        for (auto it = sc.sky_sphere->pigments.rbegin(); it != sc.sky_sphere->pigments.rend();
+             ++it) {
+            Colour c = evaluate_pigment(*it, p, scene.pattern_env());
+            col += c.rgb * (1 - c.filter - c.transmit) * fil;
             fil *= rgb_transm(c);
         }
-        colour += fil * sc.background.rgb;
-        return fogged(sc, ray, {colour, 0});
     }
-    return fogged(sc, ray, {sc.background.rgb, sc.background.transmit});
+    // The background acts as one more uniform layer. Measured with POV-Ray 3.7.0.10: its
+    // transmit darkens it even without +UA (background rgbt <0.9,0.9,0.1,0.6> renders 0.36),
+    // as if composited over black.
+    col += bg.rgb * (1 - bg.filter - bg.transmit) * fil;
+    fil *= rgb_transm(bg);
+    return fogged(sc, ray, {col, std::min(1.0f, std::fabs(fil.grey()))});
 }
 
 }  // namespace povwall::trace

@@ -390,6 +390,26 @@ fog { fog_type 2 distance 6 fog_offset -0.5 fog_alt 0.4 color rgb <0.9,0.8,0.6> 
                    s);
 }
 
+TEST(PovCompare, LayeredSkySphereOverBackground) {
+    Scene s = base_scene();
+    s.background = Colour(Rgb(0.9f, 0.9f, 0.1f), 0.0f, 0.6f);  // transmit darkens it, +UA or not
+    s.objects.push_back(object(Sphere{{0, 0, 0}, 1}, {}, {tex({0.9f, 0.9f, 0.9f})}));
+    s.lights.push_back(point_light({-3, 6, -5}));
+    SkySphere sky;
+    Pigment under, over;
+    under.colour = Colour(Rgb(0.2f, 0.4f, 0.9f), 0.0f, 0.3f);
+    over.colour = Colour(Rgb(1.0f, 0.5f, 0.2f), 0.5f, 0.0f);
+    sky.pigments = {under, over};  // the last one is on top, as POV-Ray composites them
+    s.sky_sphere = sky;
+    expect_matches("sky", R"(
+background { rgbt <0.9,0.9,0.1,0.6> }
+sphere { 0, 1 pigment { rgb 0.9 } }
+light_source { <-3,6,-5> rgb 1 }
+sky_sphere { pigment { rgbt <0.2,0.4,0.9,0.3> } pigment { rgbf <1,0.5,0.2,0.5> } }
+)",
+                   s);
+}
+
 TEST(PovCompare, AntialiasMethod1NoJitter) {
     Scene s = base_scene();
     s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {tex({0.9f, 0.9f, 0.9f})}));

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "core/image.h"
 
 namespace povwall::test {
@@ -25,7 +27,9 @@ struct PovImage {
 inline PovImage render_with_povray(const std::string& name, const std::string& pov, int w,
                                    int h, const std::string& extra = "-A") {
     namespace fs = std::filesystem;
-    fs::path dir = fs::temp_directory_path() / "povwall_trace_tests";
+    // Per-process folder: ctest runs tests of this binary in parallel processes.
+    fs::path dir = fs::temp_directory_path() /
+                   ("povwall_trace_tests_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     fs::path in = dir / (name + ".pov"), out = dir / (name + ".ppm");
     std::ofstream(in) << pov;
@@ -33,7 +37,8 @@ inline PovImage render_with_povray(const std::string& name, const std::string& p
                       std::to_string(w) + " +H" + std::to_string(h) + " -D +WT1 " + extra +
                       " -GA > /dev/null 2>&1";
     PovImage img;
-    if (std::system(cmd.c_str()) != 0) return img;
+    // One retry: on a loaded machine povray occasionally fails to start.
+    if (std::system(cmd.c_str()) != 0 && std::system(cmd.c_str()) != 0) return img;
     std::ifstream f(out, std::ios::binary);
     // Header fields, skipping POV-Ray's "# Software" comment lines.
     auto field = [&f]() {
@@ -69,7 +74,8 @@ inline float srgb_encode(float x) {
 // Debug aid: with POVWALL_DUMP set, tests write their own render next to POV-Ray's.
 inline void dump_ppm(const Image& img, const std::string& name) {
     if (!std::getenv("POVWALL_DUMP")) return;
-    std::ofstream f(std::filesystem::temp_directory_path() / "povwall_trace_tests" /
+    std::ofstream f(std::filesystem::temp_directory_path() /
+                        ("povwall_trace_tests_" + std::to_string(::getpid())) /
                         (name + "-ours.ppm"),
                     std::ios::binary);
     f << "P6\n" << img.width << " " << img.height << "\n255\n";
