@@ -3,7 +3,7 @@
 // golden ones: rmse <= 0.01 and bad-pixel fraction <= 0.002 on the encoded values.
 #include <gtest/gtest.h>
 
-#include "tests/trace/pov_reference.h"
+#include "tests/trace/pov_image_reference.h"
 #include "tests/trace/scene_builder.h"
 #include "trace/render.h"
 

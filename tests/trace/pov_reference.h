@@ -1,113 +1,112 @@
-// Renders hand-written .pov text with the real POV-Ray (16-bit PPM) so tests can compare
-// povwall's renderer against it on a core::Scene built directly in C++ (no parser involved).
+// Renders tiny scenes with the real POV-Ray and reads the pixels back, so pattern tests
+// compare against POV-Ray itself. Renders are cached under the build tree by scene hash.
 #pragma once
 
-#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
-#include "core/image.h"
+#include "core/math.h"
 
 namespace povwall::test {
 
-inline bool povray_available() { return std::system("command -v povray > /dev/null 2>&1") == 0; }
-
-// Linear values decoded from POV-Ray's sRGB-encoded output (scene uses assumed_gamma 1).
-struct PovImage {
+struct RgbImage {
     int width = 0, height = 0;
-    std::vector<float> rgb;  // file values in 0..1 (sRGB encoded)
+    std::vector<double> rgb;  // 0..1, row-major, 3 per pixel
+    double at(int x, int y, int c) const { return rgb[size_t((y * width + x) * 3 + c)]; }
 };
 
-inline PovImage render_with_povray(const std::string& name, const std::string& pov, int w,
-                                   int h, const std::string& extra = "-A") {
-    namespace fs = std::filesystem;
-    // Per-process folder: ctest runs tests of this binary in parallel processes.
-    fs::path dir = fs::temp_directory_path() /
-                   ("povwall_trace_tests_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    fs::path in = dir / (name + ".pov"), out = dir / (name + ".ppm");
-    std::ofstream(in) << pov;
-    std::string cmd = "povray +I" + in.string() + " +O" + out.string() + " +FP16 +W" +
-                      std::to_string(w) + " +H" + std::to_string(h) + " -D +WT1 " + extra +
-                      " -GA > /dev/null 2>&1";
-    PovImage img;
-    // One retry: on a loaded machine povray occasionally fails to start.
-    if (std::system(cmd.c_str()) != 0 && std::system(cmd.c_str()) != 0) return img;
-    std::ifstream f(out, std::ios::binary);
-    // Header fields, skipping POV-Ray's "# Software" comment lines.
-    auto field = [&f]() {
-        std::string tok;
-        while (f >> tok) {
-            if (tok[0] != '#') return tok;
-            std::getline(f, tok);
+// 16-bit binary PPM as POV-Ray writes it (+FP16), comments allowed in the header.
+inline RgbImage read_ppm16(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot open " + path);
+    auto token = [&]() {
+        std::string t;
+        char c;
+        while (in.get(c)) {
+            if (c == '#') {
+                std::string line;
+                std::getline(in, line);
+            } else if (!isspace(static_cast<unsigned char>(c))) {
+                t += c;
+                break;
+            }
         }
-        return std::string("0");
+        while (in.get(c) && !isspace(static_cast<unsigned char>(c))) t += c;
+        return t;
     };
-    std::string magic = field();
-    img.width = std::stoi(field());
-    img.height = std::stoi(field());
-    int maxval = std::stoi(field());
-    f.get();
-    img.rgb.resize(size_t(img.width) * img.height * 3);
-    for (float& v : img.rgb) {
+    if (token() != "P6") throw std::runtime_error("not a P6 file: " + path);
+    RgbImage img;
+    img.width = std::stoi(token());
+    img.height = std::stoi(token());
+    int maxval = std::stoi(token());
+    size_t n = size_t(img.width) * size_t(img.height) * 3;
+    img.rgb.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        unsigned v;
         if (maxval > 255) {
-            int hi = f.get(), lo = f.get();
-            v = float(hi * 256 + lo) / float(maxval);
+            unsigned char b[2];
+            in.read(reinterpret_cast<char*>(b), 2);
+            v = (unsigned(b[0]) << 8) | b[1];
         } else {
-            v = float(f.get()) / float(maxval);
+            unsigned char b;
+            in.read(reinterpret_cast<char*>(&b), 1);
+            v = b;
         }
+        img.rgb[i] = double(v) / maxval;
     }
+    if (!in) throw std::runtime_error("short read: " + path);
     return img;
 }
 
-inline float srgb_encode(float x) {
-    x = std::clamp(x, 0.0f, 1.0f);
-    return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1 / 2.4f) - 0.055f;
-}
-
-// Debug aid: with POVWALL_DUMP set, tests write their own render next to POV-Ray's.
-inline void dump_ppm(const Image& img, const std::string& name) {
-    if (!std::getenv("POVWALL_DUMP")) return;
-    std::ofstream f(std::filesystem::temp_directory_path() /
-                        ("povwall_trace_tests_" + std::to_string(::getpid())) /
-                        (name + "-ours.ppm"),
-                    std::ios::binary);
-    f << "P6\n" << img.width << " " << img.height << "\n255\n";
-    for (size_t i = 0; i < img.rgba.size(); i += 4) {
-        for (int c = 0; c < 3; ++c) f.put(char(int(srgb_encode(img.rgba[i + c]) * 255 + 0.5f)));
-    }
-}
-
-struct Diff {
-    double rmse = 1, bad_fraction = 1, max_abs = 1;
-};
-
-// Compared as POV-Ray writes them: sRGB-encoded values on 0..1.
-inline Diff compare(const Image& ours, const PovImage& pov) {
-    Diff d;
-    if (ours.width != pov.width || ours.height != pov.height) return d;
-    double sum = 0, mx = 0;
-    size_t bad = 0, n = size_t(ours.width) * ours.height;
-    for (size_t i = 0; i < n; ++i) {
-        bool is_bad = false;
-        for (int c = 0; c < 3; ++c) {
-            double e = srgb_encode(ours.rgba[i * 4 + c]) - pov.rgb[i * 3 + c];
-            sum += e * e;
-            mx = std::max(mx, std::fabs(e));
-            if (std::fabs(e) > 0.1) is_bad = true;
+// Renders `scene` (full .pov text) at size x size with linear 16-bit output; cached.
+inline RgbImage render_with_povray(const std::string& scene, int size) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::path(POVWALL_TEST_CACHE_DIR) / "pov_refs";
+    fs::create_directories(dir);
+    std::string key = std::to_string(std::hash<std::string>{}(scene + std::to_string(size)));
+    // Per-process scratch names: test processes may run in parallel.
+    std::string scratch = key + "." + std::to_string(getpid());
+    fs::path pov = dir / (scratch + ".pov"), ppm = dir / (key + ".ppm");
+    if (!fs::exists(ppm)) {
+        std::ofstream(pov) << scene;
+        std::ostringstream cmd;
+        cmd << "povray +W" << size << " +H" << size << " -D -A +FP16 File_Gamma=1.0 -GA +I"
+            << pov.string() << " +O" << dir.string() << "/" << scratch << ".tmp.ppm >/dev/null 2>&1";
+        if (std::system(cmd.str().c_str()) != 0) {
+            throw std::runtime_error("povray failed on " + pov.string());
         }
-        bad += is_bad;
+        fs::rename(dir / (scratch + ".tmp.ppm"), ppm);
+        fs::remove(pov);
     }
-    d.rmse = std::sqrt(sum / double(n * 3));
-    d.bad_fraction = double(bad) / double(n);
-    d.max_abs = mx;
-    return d;
+    return read_ppm16(ppm.string());
 }
+
+// Scene with an orthographic camera looking down -y at the plane y = `height`: pixel (x, y)
+// sees the world point ((x+0.5)/n - 0.5) * extent + centre.x, height,
+// (0.5 - (y+0.5)/n) * extent + centre.z.
+struct TopView {
+    double extent = 4, height = 0.37;
+    Vector3 centre{0, 0, 0};
+    std::string camera() const {
+        std::ostringstream s;
+        s.precision(17);
+        s << "camera { orthographic location <" << centre.x << ",10," << centre.z
+          << "> direction <0,-1,0> right <" << extent << ",0,0> up <0,0," << extent << "> }\n";
+        return s.str();
+    }
+    Point3 point(int x, int y, int n) const {
+        return {((x + 0.5) / n - 0.5) * extent + centre.x, height,
+                (0.5 - (y + 0.5) / n) * extent + centre.z};
+    }
+};
 
 }  // namespace povwall::test
