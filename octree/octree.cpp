@@ -1,95 +1,256 @@
+// Octree builder: recursive subdivision with exact cell/primitive overlap tests (through the
+// caller's callback; octree/overlap.h offers CGAL-backed ones) and a surface-area cost
+// estimate. The top levels are split serially, the subtrees below are built in parallel into
+// private arrays and stitched into the flat node array afterwards.
 #include "octree/octree.h"
 
+#include <array>
+#include <atomic>
 #include <chrono>
+#include <thread>
 
 namespace povwall::octree {
 namespace {
 
-bool boxes_overlap(const Bounds3& a, const Bounds3& b) {
-    return a.lo.x <= b.hi.x && a.hi.x >= b.lo.x && a.lo.y <= b.hi.y && a.hi.y >= b.lo.y &&
-           a.lo.z <= b.hi.z && a.hi.z >= b.lo.z;
+bool finite_box(const Bounds3& b) {
+    for (int a = 0; a < 3; ++a) {
+        if (!(std::fabs(b.lo[a]) < kInfinity && std::fabs(b.hi[a]) < kInfinity)) return false;
+    }
+    return !b.empty();
 }
+
+Bounds3 child_box(const Bounds3& box, const Point3& mid, unsigned c) {
+    Bounds3 cb;
+    for (int a = 0; a < 3; ++a) {
+        bool high = c & (1u << a);
+        cb.lo[a] = high ? mid[a] : box.lo[a];
+        cb.hi[a] = high ? box.hi[a] : mid[a];
+    }
+    return cb;
+}
+
+using Node = Octree::Node;
+
+// A subtree left for a worker thread: its root node (already in the global array) and ids.
+struct Task {
+    uint32_t node = 0;
+    Bounds3 box;
+    int depth = 0;
+    std::vector<uint32_t> ids;
+    // Filled by the worker: local node 0 is the task root.
+    std::vector<Node> nodes;
+    std::vector<uint32_t> leaf_ids;
+    int max_depth = 0;
+};
+
+class Builder {
+public:
+    Builder(const BuildInput& in, const BuildOptions& opt, Real min_cell)
+        : in_(in), opt_(opt), min_cell_(min_cell) {}
+
+    // Builds the subtree of nodes[index] (already allocated) over `ids`. At spawn_depth the
+    // node is handed to `tasks` instead (null: never).
+    void build(std::vector<Node>& nodes, std::vector<uint32_t>& out, uint32_t index,
+               std::vector<uint32_t>& ids, const Bounds3& box, int depth, int& max_depth,
+               std::vector<Task>* tasks, int spawn_depth) {
+        max_depth = std::max(max_depth, depth);
+        if (tasks && depth == spawn_depth) {
+            Task t;
+            t.node = index;
+            t.box = box;
+            t.depth = depth;
+            t.ids = std::move(ids);
+            tasks->push_back(std::move(t));
+            return;
+        }
+        std::array<std::vector<uint32_t>, 8> kids;
+        if (!split(ids, box, depth, kids)) {
+            nodes[index] = Node{uint32_t(out.size()), uint32_t(ids.size())};
+            out.insert(out.end(), ids.begin(), ids.end());
+            return;
+        }
+        std::vector<uint32_t>().swap(ids);
+        const uint32_t first = uint32_t(nodes.size());
+        nodes[index] = Node{first, Octree::kInner};
+        nodes.resize(first + 8);
+        const Point3 mid = box.centre();
+        for (unsigned c = 0; c < 8; ++c) {
+            build(nodes, out, first + c, kids[c], child_box(box, mid, c), depth + 1, max_depth,
+                  tasks, spawn_depth);
+        }
+    }
+
+    uint64_t exact_tests() const { return exact_tests_; }
+    uint64_t exact_rejected() const { return exact_rejected_; }
+
+private:
+    // Distributes `ids` over the 8 children; false: this cell stays a leaf.
+    bool split(const std::vector<uint32_t>& ids, const Bounds3& box, int depth,
+               std::array<std::vector<uint32_t>, 8>& kids) {
+        const size_t n = ids.size();
+        if (n <= size_t(opt_.leaf_primitives) || depth >= opt_.max_depth) return false;
+        const Vector3 size = box.diagonal();
+        if (std::min({size.x, size.y, size.z}) <= min_cell_) return false;
+        const Point3 mid = box.centre();
+        uint64_t tests = 0, rejected = 0;
+        size_t total = 0;
+        for (uint32_t id : ids) {
+            const Bounds3& b = in_.bounds[id];
+            // Closed cells: a primitive touching the mid-plane belongs to both sides.
+            unsigned lo_mask = 0, hi_mask = 0;
+            for (int a = 0; a < 3; ++a) {
+                if (b.lo[a] <= mid[a]) lo_mask |= 1u << a;
+                if (b.hi[a] >= mid[a]) hi_mask |= 1u << a;
+            }
+            // Children c with, per axis, bit clear only if lo side touched, set only if hi.
+            unsigned touched = 0;
+            for (unsigned c = 0; c < 8; ++c) {
+                bool ok = true;
+                for (int a = 0; a < 3; ++a) {
+                    ok = ok && ((c & (1u << a)) ? (hi_mask >> a) & 1 : (lo_mask >> a) & 1);
+                }
+                if (ok) touched |= 1u << c;
+            }
+            // One child only: the primitive touches this cell, so it touches that child.
+            bool single = (touched & (touched - 1)) == 0;
+            for (unsigned c = 0; c < 8; ++c) {
+                if (!(touched & (1u << c))) continue;
+                if (!single && in_.overlaps) {
+                    ++tests;
+                    if (!in_.overlaps(id, child_box(box, mid, c))) {
+                        ++rejected;
+                        continue;
+                    }
+                }
+                kids[c].push_back(id);
+                ++total;
+            }
+        }
+        exact_tests_ += tests;
+        exact_rejected_ += rejected;
+        // Surface-area estimate: a ray crossing this cell crosses each child with
+        // probability 1/4. Split when the expected tests drop by more than the extra node
+        // steps cost; this stops when children barely reduce the references (everything
+        // crossing the centre: 8 copies each). The one-level estimate ignores that children
+        // split further, so a split that about breaks even (a row of primitives cut by two
+        // mid-planes: 4 copies each) is taken too, provided every child is clearly smaller
+        // (else primitives covering whole cells would be split forever).
+        size_t max_child = 0;
+        for (const auto& k : kids) max_child = std::max(max_child, k.size());
+        const Real leaf_cost = Real(n);
+        const Real split_cost = opt_.traversal_cost * 2 + 0.25 * Real(total);
+        const bool pays = split_cost < leaf_cost;
+        const bool breaks_even = split_cost < leaf_cost * 1.25 && max_child * 4 <= n * 3;
+        if (!pays && !breaks_even) {
+            for (auto& k : kids) std::vector<uint32_t>().swap(k);
+            return false;
+        }
+        return true;
+    }
+
+    const BuildInput& in_;
+    const BuildOptions& opt_;
+    const Real min_cell_;
+    std::atomic<uint64_t> exact_tests_{0}, exact_rejected_{0};
+};
 
 }  // namespace
 
 void Octree::build(const BuildInput& input, const BuildOptions& options) {
-    auto start = std::chrono::steady_clock::now();
+    const auto start = std::chrono::steady_clock::now();
     nodes_.clear();
     ids_.clear();
     stats_ = {};
     primitive_count_ = input.bounds.size();
     bounds_ = Bounds3{};
-    for (const Bounds3& b : input.bounds) bounds_.extend(b);
-    if (input.bounds.empty()) return;
-    // Pad flat scenes so every cell has volume.
-    Vector3 d = bounds_.diagonal();
-    Real pad = std::max({d.x, d.y, d.z}) * 1e-6 + 1e-9;
-    bounds_.lo -= Vector3(pad);
-    bounds_.hi += Vector3(pad);
-    std::vector<uint32_t> all(input.bounds.size());
-    for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
-    nodes_.push_back(Node{bounds_});
+    std::vector<uint32_t> all;
+    all.reserve(input.bounds.size());
+    for (uint32_t i = 0; i < input.bounds.size(); ++i) {
+        // Unbounded primitives are the caller's to test on every ray.
+        if (!finite_box(input.bounds[i])) continue;
+        bounds_.extend(input.bounds[i]);
+        all.push_back(i);
+    }
+    if (all.empty()) return;
+    // Give every axis extent (flat scenes) so cells have volume and mid-planes separate.
+    const Vector3 ext = bounds_.diagonal();
+    const Real ext_max = std::max({ext.x, ext.y, ext.z});
+    Real mag = 0;
+    for (int a = 0; a < 3; ++a) {
+        mag = std::max({mag, std::fabs(bounds_.lo[a]), std::fabs(bounds_.hi[a])});
+    }
+    const Real pad = std::max({ext_max * 1e-6, mag * 1e-12, 1e-300});
+    for (int a = 0; a < 3; ++a) {
+        if (ext[a] < pad) {
+            bounds_.lo[a] -= pad;
+            bounds_.hi[a] += pad;
+        }
+    }
     BuildOptions opt = options;
-    if (int(all.size()) < opt.flat_threshold) opt.max_depth = 0;
-    opt.max_depth = std::min(opt.max_depth, 30);
-    build_node(0, all, 0, input, opt);
+    opt.max_depth = std::clamp(opt.max_depth, 0, kMaxDepth);
+    if (int(all.size()) < opt.flat_threshold) {
+        opt.max_depth = 0;
+        stats_.flat = true;
+    }
+    // Cells narrower than this lose their mid-plane to rounding.
+    const Real min_cell = mag * 1e-13;
+    Builder builder(input, opt, min_cell);
+    nodes_.push_back(Node{});
+    int threads = opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency());
+    threads = std::max(threads, 1);
+    std::vector<Task> tasks;
+    int max_depth = 0;
+    // 64 subtrees (depth 2) keep a few threads busy despite uneven scenes.
+    const int spawn_depth = threads > 1 ? 2 : -1;
+    builder.build(nodes_, ids_, 0, all, bounds_, 0, max_depth, threads > 1 ? &tasks : nullptr,
+                  spawn_depth);
+    if (!tasks.empty()) {
+        std::atomic<size_t> next{0};
+        auto work = [&] {
+            for (size_t i; (i = next.fetch_add(1)) < tasks.size();) {
+                Task& t = tasks[i];
+                t.nodes.resize(1);
+                t.max_depth = t.depth;
+                builder.build(t.nodes, t.leaf_ids, 0, t.ids, t.box, t.depth, t.max_depth,
+                              nullptr, -1);
+            }
+        };
+        std::vector<std::thread> pool;
+        for (int i = 1; i < std::min<int>(threads, int(tasks.size())); ++i) {
+            pool.emplace_back(work);
+        }
+        work();
+        for (auto& th : pool) th.join();
+        for (Task& t : tasks) {
+            const uint32_t node_base = uint32_t(nodes_.size()) - 1;  // local i -> base + i
+            const uint32_t id_base = uint32_t(ids_.size());
+            auto relocate = [&](Node n) {
+                if (n.count == kInner) {
+                    n.first += node_base;
+                } else {
+                    n.first += id_base;
+                }
+                return n;
+            };
+            nodes_[t.node] = relocate(t.nodes[0]);
+            for (size_t i = 1; i < t.nodes.size(); ++i) nodes_.push_back(relocate(t.nodes[i]));
+            ids_.insert(ids_.end(), t.leaf_ids.begin(), t.leaf_ids.end());
+            max_depth = std::max(max_depth, t.max_depth);
+            t = Task{};
+        }
+    }
     for (const Node& n : nodes_) {
-        if (n.leaf) {
+        if (n.count != kInner) {
             ++stats_.leaves;
             stats_.references += n.count;
         }
     }
     stats_.nodes = int(nodes_.size());
+    stats_.depth = max_depth;
+    stats_.exact_tests = builder.exact_tests();
+    stats_.exact_rejected = builder.exact_rejected();
     stats_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-void Octree::build_node(uint32_t node, std::vector<uint32_t>& ids, int depth,
-                        const BuildInput& in, const BuildOptions& opt) {
-    stats_.depth = std::max(stats_.depth, depth);
-    if (depth >= opt.max_depth || int(ids.size()) <= opt.leaf_primitives) {
-        nodes_[node].first = uint32_t(ids_.size());
-        nodes_[node].count = uint32_t(ids.size());
-        nodes_[node].leaf = true;
-        ids_.insert(ids_.end(), ids.begin(), ids.end());
-        return;
-    }
-    const Bounds3 box = nodes_[node].box;
-    const Point3 mid = box.centre();
-    std::vector<uint32_t> child_ids[8];
-    size_t total = 0;
-    for (int c = 0; c < 8; ++c) {
-        Bounds3 cb;
-        cb.lo = {(c & 1) ? mid.x : box.lo.x, (c & 2) ? mid.y : box.lo.y, (c & 4) ? mid.z : box.lo.z};
-        cb.hi = {(c & 1) ? box.hi.x : mid.x, (c & 2) ? box.hi.y : mid.y, (c & 4) ? box.hi.z : mid.z};
-        for (uint32_t id : ids) {
-            if (!boxes_overlap(in.bounds[id], cb)) continue;
-            if (in.overlaps && !in.overlaps(id, cb)) continue;
-            child_ids[c].push_back(id);
-        }
-        total += child_ids[c].size();
-    }
-    // Splitting pays only when the children hold clearly fewer references than a leaf here.
-    if (total > ids.size() * 4) {
-        nodes_[node].first = uint32_t(ids_.size());
-        nodes_[node].count = uint32_t(ids.size());
-        nodes_[node].leaf = true;
-        ids_.insert(ids_.end(), ids.begin(), ids.end());
-        return;
-    }
-    uint32_t first = uint32_t(nodes_.size());
-    nodes_[node].leaf = false;
-    nodes_[node].first = first;
-    nodes_[node].count = 0;
-    for (int c = 0; c < 8; ++c) {
-        Bounds3 cb;
-        cb.lo = {(c & 1) ? mid.x : box.lo.x, (c & 2) ? mid.y : box.lo.y, (c & 4) ? mid.z : box.lo.z};
-        cb.hi = {(c & 1) ? box.hi.x : mid.x, (c & 2) ? box.hi.y : mid.y, (c & 4) ? box.hi.z : mid.z};
-        nodes_.push_back(Node{cb});
-    }
-    ids.clear();
-    ids.shrink_to_fit();
-    for (int c = 0; c < 8; ++c) build_node(first + c, child_ids[c], depth + 1, in, opt);
 }
 
 }  // namespace povwall::octree

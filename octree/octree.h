@@ -1,10 +1,19 @@
 // Octree over bounded primitives. The tracer owns the primitives; the octree only knows
 // their ids, bounds, and (at build time) an exact overlap test per primitive.
 //
-// traverse() calls `visit(ids, count, t_max)` for the leaves the ray crosses, front to back;
-// `visit` tests those primitives, may shrink t_max (the closest hit so far) and returns true
-// to stop (any-hit queries). Leaves starting beyond t_max are never visited. A primitive may
-// sit in several leaves: callers that care use a mailbox (see Mailbox below).
+// Contract used by trace/:
+// - build(BuildInput): per-primitive world bounds plus an optional exact "does primitive id
+//   touch this cell" callback (octree/overlap.h has exact ones for spheres, boxes and
+//   triangles). Cells hold only the primitives that really overlap them (closed cells).
+// - traverse(ray, t_min, t_max&, visit) calls `visit(ids, count, t_max)` for the leaves the
+//   ray crosses, front to back (non-decreasing entry distance). `visit` tests those
+//   primitives, may shrink t_max (the closest hit so far) and returns true to stop (any-hit
+//   queries). Traversal ends as soon as the next leaf starts beyond t_max. A primitive may sit
+//   in several leaves: callers use a Mailbox so it is intersected once per ray.
+// - Rays with a NaN or infinite component visit nothing; zero direction components, rays
+//   starting inside and rays running exactly along cell planes are handled exactly.
+// Additions: BuildStats (per build, for --stats), BuildOptions::threads, leaf_entry()
+// (entry distance passed to visit_with_entry for tests and diagnostics).
 #pragma once
 
 #include <algorithm>
@@ -18,35 +27,51 @@
 namespace povwall::octree {
 
 struct BuildOptions {
-    int max_depth = 10;
-    int leaf_primitives = 8;  // split a cell holding more than this
-    int flat_threshold = 16;  // fewer primitives than this: one leaf, no tree
+    /// Deepest level (root = 0); also bounded by kMaxDepth.
+    int max_depth = 16;
+    /// A cell holding this many primitives or fewer stays a leaf.
+    int leaf_primitives = 8;
+    /// Fewer bounded primitives than this: one flat list, no tree. Measured with
+    /// povwall_bench BM_Small (docs/performance.md): below this the flat loop wins.
+    int flat_threshold = 24;
+    /// Cost of one node step in units of one primitive test, for the split decision.
+    /// Measured on sphere scenes (BM_Octree): 8 beats 0.3..4 by 10-25% at 1e3..1e5.
+    Real traversal_cost = 8;
+    /// Build threads; 0 = hardware concurrency.
+    int threads = 0;
 };
 
 struct BuildInput {
-    std::vector<Bounds3> bounds;  // world bounds per primitive id
-    // Exact "does primitive `id` touch `cell`" test; null: bounds overlap only.
+    /// World bounds per primitive id. Empty bounds (lo > hi) are left out of the tree.
+    std::vector<Bounds3> bounds;
+    /// Exact "does primitive `id` touch closed `cell`" test; null: bounds overlap only.
+    /// Called only for primitives whose bounds straddle several children, possibly from
+    /// several build threads at once, so it must be thread-safe.
     std::function<bool(uint32_t id, const Bounds3& cell)> overlaps;
 };
 
 struct BuildStats {
     int nodes = 0, leaves = 0, depth = 0;
-    uint64_t references = 0;
+    uint64_t references = 0;      // ids stored in leaves
+    uint64_t exact_tests = 0;     // overlap callback calls
+    uint64_t exact_rejected = 0;  // cell references the exact test removed (bounds overlapped)
+    bool flat = false;            // below flat_threshold: a single leaf, no tree
     double seconds = 0;
 };
 
-// Per-thread "already tested for this ray" stamps, so a primitive spanning several leaves is
-// intersected once per ray.
+/// Per-thread "already tested for this ray" stamps, so a primitive spanning several leaves
+/// is intersected once per ray. One per thread; call next_ray() before each traversal.
 class Mailbox {
 public:
     void resize(size_t primitives) { stamp_.assign(primitives, 0); }
+    size_t size() const { return stamp_.size(); }
     void next_ray() {
-        if (++ray_ == 0) {  // wrapped: clear and restart
+        if (++ray_ == 0) {  // wrapped after 2^32 rays: clear and restart
             std::fill(stamp_.begin(), stamp_.end(), 0);
             ray_ = 1;
         }
     }
-    // True the first time `id` is seen for the current ray.
+    /// True the first time `id` is seen for the current ray.
     bool first_visit(uint32_t id) {
         if (stamp_[id] == ray_) return false;
         stamp_[id] = ray_;
@@ -58,28 +83,47 @@ private:
     uint32_t ray_ = 0;
 };
 
+/// Deepest level the traversal stack holds; cells are then 2^-24 of the root, far below
+/// any useful size, so deeper builds are never needed.
+constexpr int kMaxDepth = 24;
+
 class Octree {
 public:
     void build(const BuildInput& input, const BuildOptions& options = {});
+    /// Root cell (the primitives' bounds, padded so every axis has extent).
     const Bounds3& bounds() const { return bounds_; }
     const BuildStats& stats() const { return stats_; }
     size_t primitive_count() const { return primitive_count_; }
 
     template <class Visit>
-    void traverse(const Ray& ray, Real t_min, Real& t_max, Visit&& visit) const;
+    void traverse(const Ray& ray, Real t_min, Real& t_max, Visit&& visit) const {
+        traverse_with_entry(ray, t_min, t_max,
+                            [&](const uint32_t* ids, size_t n, Real& t, Real) {
+                                return visit(ids, n, t);
+                            });
+    }
+    /// As traverse(), with the leaf's entry distance along the ray as fourth argument.
+    template <class Visit>
+    void traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&& visit) const;
+
+    /// Compact node: a leaf holds ids_[first, first + count); an inner node (count ==
+    /// kInner) has its 8 children at nodes_[first .. first + 7], child index = x | y<<1 | z<<2.
+    struct Node {
+        uint32_t first = 0;
+        uint32_t count = 0;
+    };
+    static constexpr uint32_t kInner = 0xffffffffu;
+    const std::vector<Node>& nodes() const { return nodes_; }
+    const std::vector<uint32_t>& ids() const { return ids_; }
 
 private:
-    struct Node {
-        Bounds3 box;
-        uint32_t first = 0;  // leaf: first index into ids_; inner: first of 8 child nodes
-        uint32_t count = 0;  // leaf: number of ids; inner: 0
-        bool leaf = true;
-    };
-    template <class Visit>
-    void visit_subtree(uint32_t index, const Vector3& t0, const Vector3& t1, unsigned mirror,
-                       Real t_min, Real& t_max, Visit& visit, bool& stop) const;
-    void build_node(uint32_t node, std::vector<uint32_t>& ids, int depth, const BuildInput& in,
-                    const BuildOptions& opt);
+    // kParallel: some direction component is zero, so mid-plane parameters come from the
+    // cell geometry (cells are tracked); otherwise they are the mean of the entry and exit
+    // parameters, which needs no geometry.
+    template <bool kParallel, class Visit>
+    void walk(const Point3& o, const Vector3& inv, const bool* parallel, unsigned mirror,
+              const Vector3& t0, const Vector3& t1, Real t_min, Real& t_max,
+              Visit& visit) const;
 
     std::vector<Node> nodes_;
     std::vector<uint32_t> ids_;
@@ -89,73 +133,146 @@ private:
 };
 
 // Parametric front-to-back traversal after Revelles, Urena and Lastra ("An efficient
-// parametric algorithm for octree traversal", 2000): the ray is mirrored so every direction
-// component is positive, child order follows from which mid-plane the ray crosses first, and
-// no child box is ever intersected explicitly.
+// parametric algorithm for octree traversal", 2000). Per axis, t0/t1 are the parameters
+// where the ray crosses a cell's entry and exit planes, i.e. the ray is mirrored so every
+// direction component is positive (real child = mirrored child ^ mirror). Each plane's
+// parameter is computed once, at the cell where it is the mid-plane, and handed down, so
+// neighbouring cells agree exactly. Child boxes are never intersected; the next child
+// follows from the exit plane. Zero direction components get t = -inf/+inf, never 0 * inf.
 template <class Visit>
-void Octree::traverse(const Ray& ray, Real t_min, Real& t_max, Visit&& visit) const {
+void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&& visit) const {
     if (nodes_.empty()) return;
-    if (ray.direction.x == 0 && ray.direction.y == 0 && ray.direction.z == 0) return;
-    const Bounds3& b = nodes_[0].box;
-    Point3 o = ray.origin;
-    Vector3 d = ray.direction;
-    unsigned mirror = 0;
-    for (int a = 0; a < 3; ++a) {
-        if (std::isnan(o[a]) || std::isnan(d[a])) return;
-        if (d[a] < 0) {
-            o[a] = b.lo[a] + b.hi[a] - o[a];
-            d[a] = -d[a];
-            mirror |= 1u << a;
-        }
-        // A zero component would give 0/0 on a cell plane through the origin.
-        if (d[a] < 1e-300) d[a] = 1e-300;
-    }
-    Vector3 t0, t1;
-    for (int a = 0; a < 3; ++a) {
-        t0[a] = (b.lo[a] - o[a]) / d[a];
-        t1[a] = (b.hi[a] - o[a]) / d[a];
-    }
-    if (std::max({t0.x, t0.y, t0.z}) >= std::min({t1.x, t1.y, t1.z})) return;
-    bool stop = false;
-    visit_subtree(0, t0, t1, mirror, t_min, t_max, visit, stop);
-}
-
-template <class Visit>
-void Octree::visit_subtree(uint32_t index, const Vector3& t0, const Vector3& t1,
-                           unsigned mirror, Real t_min, Real& t_max, Visit& visit,
-                           bool& stop) const {
-    const Real enter = std::max({t0.x, t0.y, t0.z});
-    const Real exit = std::min({t1.x, t1.y, t1.z});
-    if (exit < t_min || enter > t_max || enter >= exit) return;
-    const Node& n = nodes_[index];
-    if (n.leaf) {
-        if (n.count && visit(&ids_[n.first], size_t(n.count), t_max)) stop = true;
+    const Point3 o = ray.origin;
+    const Real dmax = std::max({std::fabs(ray.direction.x), std::fabs(ray.direction.y),
+                                std::fabs(ray.direction.z)});
+    // Also rejects NaN (comparisons are false) and infinite components, in O(1).
+    if (!(dmax > 0 && dmax < kInfinity)) return;
+    if (!(std::fabs(o.x) < kInfinity && std::fabs(o.y) < kInfinity &&
+          std::fabs(o.z) < kInfinity)) {
         return;
     }
-    const Vector3 tm = (t0 + t1) * 0.5;
-    // First child: the entry plane tells which halves the ray starts in.
-    unsigned child = 0;
-    if (t0.x > t0.y && t0.x > t0.z) {  // enters through the x = lo plane
-        if (tm.y < t0.x) child |= 2;
-        if (tm.z < t0.x) child |= 4;
-    } else if (t0.y > t0.z) {  // through y = lo
-        if (tm.x < t0.y) child |= 1;
-        if (tm.z < t0.y) child |= 4;
-    } else {  // through z = lo
-        if (tm.x < t0.z) child |= 1;
-        if (tm.y < t0.z) child |= 2;
+    if (!(t_min <= t_max)) return;
+    Vector3 inv, t0, t1;
+    bool parallel[3];
+    bool any_parallel = false;
+    unsigned mirror = 0;
+    for (int a = 0; a < 3; ++a) {
+        const Real d = ray.direction[a];
+        // A component this small moves the ray less than an ulp across the scene.
+        parallel[a] = std::fabs(d) <= dmax * 1e-20;
+        if (parallel[a]) {
+            any_parallel = true;
+            inv[a] = 0;
+            const bool inside = o[a] >= bounds_.lo[a] && o[a] <= bounds_.hi[a];
+            t0[a] = inside ? -kInfinity : kInfinity;
+            t1[a] = inside ? kInfinity : -kInfinity;
+            continue;
+        }
+        inv[a] = 1 / d;
+        if (d < 0) mirror |= 1u << a;
+        const Real ta = (bounds_.lo[a] - o[a]) * inv[a], tb = (bounds_.hi[a] - o[a]) * inv[a];
+        t0[a] = d < 0 ? tb : ta;
+        t1[a] = d < 0 ? ta : tb;
     }
-    while (child < 8 && !stop) {
+    const Real enter = std::max({t0.x, t0.y, t0.z}), exit = std::min({t1.x, t1.y, t1.z});
+    if (!(enter <= exit) || exit < t_min || enter > t_max) return;
+    if (nodes_[0].count != kInner) {
+        const Node& n = nodes_[0];
+        if (n.count) visit(&ids_[n.first], size_t(n.count), t_max, enter);
+        return;
+    }
+    if (any_parallel) {
+        walk<true>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit);
+    } else {
+        walk<false>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit);
+    }
+}
+
+template <bool kParallel, class Visit>
+void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel, unsigned mirror,
+                  const Vector3& root_t0, const Vector3& root_t1, Real t_min, Real& t_max,
+                  Visit& visit) const {
+    struct Cell {
+        Point3 lo, hi;  // real space
+    };
+    struct Frame {
+        Vector3 t0, tm, t1;
+        uint32_t first;  // the node's first child
+        unsigned child;  // next mirrored child to visit; 8 = done
+    };
+    Frame stack[kMaxDepth + 1];
+    // Cells are tracked only when a mid-plane parameter needs the geometry.
+    Cell cells[kParallel ? kMaxDepth + 1 : 1];
+    // Mid-plane parameters of a frame's cell and its first child (the entry-plane rule).
+    auto open = [&](Frame& f, const Cell& cell) {
+        for (int a = 0; a < 3; ++a) {
+            if constexpr (kParallel) {
+                const Real mid = (cell.lo[a] + cell.hi[a]) * 0.5;
+                if (parallel[a]) {
+                    f.tm[a] = o[a] < mid ? kInfinity : -kInfinity;
+                } else {
+                    f.tm[a] = (mid - o[a]) * inv[a];
+                }
+            } else {
+                f.tm[a] = (f.t0[a] + f.t1[a]) * 0.5;
+            }
+        }
+        const Real enter = std::max({f.t0.x, f.t0.y, f.t0.z});
+        f.child = unsigned(f.tm.x < enter) | unsigned(f.tm.y < enter) << 1 |
+                  unsigned(f.tm.z < enter) << 2;
+    };
+    stack[0].t0 = root_t0;
+    stack[0].t1 = root_t1;
+    stack[0].first = nodes_[0].first;
+    cells[0] = {bounds_.lo, bounds_.hi};
+    open(stack[0], cells[0]);
+    int top = 0;
+    while (top >= 0) {
+        Frame& f = stack[top];
+        if (f.child >= 8) {
+            --top;
+            continue;
+        }
+        const unsigned c = f.child;
         Vector3 c0, c1;
         for (int a = 0; a < 3; ++a) {
-            bool high = child & (1u << a);
-            c0[a] = high ? tm[a] : t0[a];
-            c1[a] = high ? t1[a] : tm[a];
+            const bool high = c & (1u << a);
+            c0[a] = high ? f.tm[a] : f.t0[a];
+            c1[a] = high ? f.t1[a] : f.tm[a];
         }
-        visit_subtree(n.first + (child ^ mirror), c0, c1, mirror, t_min, t_max, visit, stop);
-        // Next child: step along the axis whose exit plane comes first; 8 means "left".
-        int axis = (c1.x <= c1.y && c1.x <= c1.z) ? 0 : (c1.y <= c1.z ? 1 : 2);
-        child = (child & (1u << axis)) ? 8 : (child | (1u << axis));
+        // Next sibling: step across the exit plane that comes first; leaving the parent
+        // through its own far plane ends this frame.
+        const int axis = (c1.x <= c1.y && c1.x <= c1.z) ? 0 : (c1.y <= c1.z ? 1 : 2);
+        f.child = (c & (1u << axis)) ? 8 : (c | (1u << axis));
+        const Real enter = std::max({c0.x, c0.y, c0.z});
+        const Real exit = std::min({c1.x, c1.y, c1.z});
+        // Front to back: every later cell starts at or after this one.
+        if (enter > t_max) return;
+        if (exit < t_min || !(enter <= exit)) continue;
+        const unsigned real = c ^ mirror;
+        const Node n = nodes_[f.first + real];
+        if (n.count != kInner) {
+            if (n.count && visit(&ids_[n.first], size_t(n.count), t_max, enter)) return;
+            continue;
+        }
+        Frame& g = stack[top + 1];
+        g.t0 = c0;
+        g.t1 = c1;
+        g.first = n.first;
+        if constexpr (kParallel) {
+            const Cell& pc = cells[top];
+            Cell& cc = cells[top + 1];
+            for (int a = 0; a < 3; ++a) {
+                const Real mid = (pc.lo[a] + pc.hi[a]) * 0.5;
+                const bool high = real & (1u << a);
+                cc.lo[a] = high ? mid : pc.lo[a];
+                cc.hi[a] = high ? pc.hi[a] : mid;
+            }
+            open(g, cc);
+        } else {
+            open(g, cells[0]);
+        }
+        ++top;
     }
 }
 

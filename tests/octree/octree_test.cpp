@@ -5,6 +5,8 @@
 #include <cmath>
 #include <random>
 
+#include "octree/overlap.h"
+
 namespace povwall::octree {
 namespace {
 
@@ -12,11 +14,15 @@ struct Sphere {
     Point3 c;
     Real r;
 };
+struct Tri {
+    Point3 a, b, c;
+};
 
 Real hit_sphere(const Sphere& s, const Ray& ray) {
     Vector3 oc = s.c - ray.origin;
-    Real tca = dot(oc, ray.direction);
-    Real d2 = s.r * s.r - dot(oc, oc) + tca * tca;
+    Real dd = dot(ray.direction, ray.direction);
+    Real tca = dot(oc, ray.direction) / dd;
+    Real d2 = s.r * s.r / dd - (dot(oc, oc) / dd - tca * tca);
     if (d2 < 0) return kInfinity;
     Real th = std::sqrt(d2);
     if (tca - th > 1e-9) return tca - th;
@@ -24,52 +30,260 @@ Real hit_sphere(const Sphere& s, const Ray& ray) {
     return kInfinity;
 }
 
-std::vector<Sphere> random_spheres(int n, std::mt19937& rng) {
-    std::uniform_real_distribution<Real> pos(-10, 10), rad(0.05, 0.6);
+// Moller-Trumbore; the same code serves brute force and octree, so hits compare exactly.
+Real hit_tri(const Tri& t, const Ray& ray) {
+    Vector3 e1 = t.b - t.a, e2 = t.c - t.a;
+    Vector3 p = cross(ray.direction, e2);
+    Real det = dot(e1, p);
+    if (det == 0) return kInfinity;
+    Real inv = 1 / det;
+    Vector3 s = ray.origin - t.a;
+    Real u = dot(s, p) * inv;
+    if (u < 0 || u > 1) return kInfinity;
+    Vector3 q = cross(s, e1);
+    Real v = dot(ray.direction, q) * inv;
+    if (v < 0 || u + v > 1) return kInfinity;
+    Real d = dot(e2, q) * inv;
+    return d > 1e-9 ? d : kInfinity;
+}
+
+std::vector<Sphere> random_spheres(int n, Real spread, std::mt19937& rng, Real scale = 1) {
+    std::uniform_real_distribution<Real> pos(-spread, spread), rad(0.05, 0.6);
     std::vector<Sphere> s;
-    for (int i = 0; i < n; ++i) s.push_back({{pos(rng), pos(rng), pos(rng)}, rad(rng)});
+    for (int i = 0; i < n; ++i) {
+        s.push_back({Point3{pos(rng), pos(rng), pos(rng)} * scale, rad(rng) * scale});
+    }
     return s;
 }
 
-Octree build_for(const std::vector<Sphere>& spheres) {
+BuildInput sphere_input(const std::vector<Sphere>& spheres, bool exact = true) {
     BuildInput in;
     for (const auto& s : spheres) in.bounds.push_back({s.c - Vector3(s.r), s.c + Vector3(s.r)});
+    if (exact) {
+        in.overlaps = [&spheres](uint32_t id, const Bounds3& cell) {
+            return sphere_overlaps(spheres[id].c, spheres[id].r, cell);
+        };
+    }
+    return in;
+}
+
+Octree build_spheres(const std::vector<Sphere>& spheres, BuildOptions opt = {}) {
     Octree t;
-    t.build(in);
+    t.build(sphere_input(spheres), opt);
     return t;
 }
 
-TEST(Octree, ClosestHitEqualsBruteForceOnRandomScenes) {
+// Closest hit through the octree with a mailbox; also checks leaf order and counts tests.
+template <class Hit>
+Real octree_closest(const Octree& tree, const Ray& ray, Mailbox& mb, Hit hit, int* tests,
+                    bool* ordered) {
+    Real best = kInfinity;
+    Real last_entry = -kInfinity;
+    mb.next_ray();
+    tree.traverse_with_entry(ray, 0, best,
+                             [&](const uint32_t* ids, size_t n, Real& t_max, Real entry) {
+                                 if (entry < last_entry || entry > t_max) *ordered = false;
+                                 last_entry = entry;
+                                 for (size_t i = 0; i < n; ++i) {
+                                     if (!mb.first_visit(ids[i])) continue;
+                                     ++*tests;
+                                     t_max = std::min(t_max, hit(ids[i]));
+                                 }
+                                 return false;
+                             });
+    return best;
+}
+
+Ray random_ray(std::mt19937& rng, Real spread, int n) {
+    std::uniform_real_distribution<Real> u(-1, 1), p(-1.5 * spread, 1.5 * spread);
+    Ray ray{{p(rng), p(rng), p(rng)}, {u(rng), u(rng), u(rng)}};
+    if (n % 7 == 0) ray.direction = {0, 0, n % 2 ? 1.0 : -1.0};  // along an axis
+    if (n % 13 == 0) ray.direction = {1, -1, 0};                 // parallel to a plane
+    return ray;
+}
+
+TEST(Octree, ClosestHitEqualsBruteForceOnRandomSpheres) {
     std::mt19937 rng(11);
-    std::vector<Sphere> spheres = random_spheres(3000, rng);
-    Octree tree = build_for(spheres);
-    EXPECT_GT(tree.stats().leaves, 64);
-    std::uniform_real_distribution<Real> u(-1, 1), p(-15, 15);
-    int hits = 0;
+    std::vector<Sphere> spheres = random_spheres(3000, 10, rng);
+    Octree tree = build_spheres(spheres);
+    EXPECT_FALSE(tree.stats().flat);
+    EXPECT_GT(tree.stats().leaves, 500);
+    Mailbox mb;
+    mb.resize(spheres.size());
+    int hits = 0, tests = 0;
+    bool ordered = true;
     for (int n = 0; n < 20000; ++n) {
-        Ray ray{{p(rng), p(rng), p(rng)}, normalize(Vector3{u(rng), u(rng), u(rng)})};
-        if (n % 7 == 0) ray.direction = {0, 0, n % 2 ? 1.0 : -1.0};  // along an axis
-        if (n % 11 == 0) ray.origin.x = 0;                            // on a cell plane
+        Ray ray = random_ray(rng, 10, n);
+        if (n % 11 == 0) ray.origin.x = tree.bounds().centre().x;  // on the root mid-plane
         Real brute = kInfinity;
         for (const auto& s : spheres) brute = std::min(brute, hit_sphere(s, ray));
-        Real best = kInfinity;
-        Real last_leaf_entry = -kInfinity;
-        tree.traverse(ray, 0, best, [&](const uint32_t* ids, size_t count, Real& t_max) {
-            for (size_t i = 0; i < count; ++i) t_max = std::min(t_max, hit_sphere(spheres[ids[i]], ray));
-            return false;
-        });
-        (void)last_leaf_entry;
+        Real best = octree_closest(
+            tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); }, &tests,
+            &ordered);
         ASSERT_EQ(best, brute) << "ray " << n;
         hits += best < kInfinity;
     }
+    EXPECT_TRUE(ordered);
+    EXPECT_GT(hits, 5000);
+    // The octree must prune: far fewer than 3000 tests per ray on average.
+    EXPECT_LT(tests / 20000, 60);
+}
+
+TEST(Octree, ClosestHitEqualsBruteForceOnRandomTriangles) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<Real> pos(-10, 10), off(-1.5, 1.5);
+    std::vector<Tri> tris;
+    for (int i = 0; i < 3000; ++i) {
+        Point3 a{pos(rng), pos(rng), pos(rng)};
+        tris.push_back({a, a + Vector3{off(rng), off(rng), off(rng)},
+                        a + Vector3{off(rng), off(rng), off(rng)}});
+    }
+    BuildInput in;
+    for (const Tri& t : tris) {
+        Bounds3 b;
+        b.extend(t.a);
+        b.extend(t.b);
+        b.extend(t.c);
+        in.bounds.push_back(b);
+    }
+    in.overlaps = [&](uint32_t id, const Bounds3& cell) {
+        return triangle_overlaps(tris[id].a, tris[id].b, tris[id].c, cell);
+    };
+    Octree tree;
+    tree.build(in);
+    EXPECT_GT(tree.stats().exact_rejected, 0u);
+    Mailbox mb;
+    mb.resize(tris.size());
+    int hits = 0, tests = 0;
+    bool ordered = true;
+    for (int n = 0; n < 10000; ++n) {
+        Ray ray = random_ray(rng, 10, n);
+        Real brute = kInfinity;
+        for (const auto& t : tris) brute = std::min(brute, hit_tri(t, ray));
+        Real best = octree_closest(
+            tree, ray, mb, [&](uint32_t id) { return hit_tri(tris[id], ray); }, &tests, &ordered);
+        ASSERT_EQ(best, brute) << "ray " << n;
+        hits += best < kInfinity;
+    }
+    EXPECT_TRUE(ordered);
+    EXPECT_GT(hits, 2000);
+}
+
+// Rays running exactly inside cell planes of several levels, in all axis directions.
+TEST(Octree, RaysAlongCellBoundaries) {
+    std::mt19937 rng(7);
+    std::vector<Sphere> spheres = random_spheres(4000, 8, rng);
+    Octree tree = build_spheres(spheres);
+    ASSERT_GE(tree.stats().depth, 3);
+    const Bounds3 root = tree.bounds();
+    // Plane coordinates as the builder makes them: repeated halving.
+    std::vector<Real> planes[3];
+    for (int a = 0; a < 3; ++a) {
+        std::vector<std::pair<Real, Real>> cells{{root.lo[a], root.hi[a]}};
+        for (int level = 0; level < 3; ++level) {
+            std::vector<std::pair<Real, Real>> next;
+            for (auto [lo, hi] : cells) {
+                Real mid = (lo + hi) * 0.5;
+                planes[a].push_back(mid);
+                next.push_back({lo, mid});
+                next.push_back({mid, hi});
+            }
+            cells = next;
+        }
+    }
+    Mailbox mb;
+    mb.resize(spheres.size());
+    int tests = 0, hits = 0;
+    bool ordered = true;
+    std::uniform_real_distribution<Real> p(-12, 12);
+    for (int n = 0; n < 6000; ++n) {
+        int axis = n % 3;
+        Vector3 d(0);
+        d[axis] = (n / 3) % 2 ? 1 : -1;
+        if (n % 5 == 0) d[(axis + 1) % 3] = 0.5;  // diagonal inside the plane
+        Point3 o{p(rng), p(rng), p(rng)};
+        // Pin the two coordinates across the travel axis to cell planes.
+        for (int k = 1; k < 3; ++k) {
+            int a = (axis + k) % 3;
+            if (d[a] == 0 || k == 2) o[a] = planes[a][rng() % planes[a].size()];
+        }
+        Ray ray{o, d};
+        Real brute = kInfinity;
+        for (const auto& s : spheres) brute = std::min(brute, hit_sphere(s, ray));
+        Real best = octree_closest(
+            tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); }, &tests,
+            &ordered);
+        ASSERT_EQ(best, brute) << "ray " << n;
+        hits += best < kInfinity;
+    }
+    EXPECT_TRUE(ordered);
     EXPECT_GT(hits, 1000);
+}
+
+TEST(Octree, HugeTinyAndFlatScenes) {
+    for (Real scale : {1e-9, 1e12}) {
+        std::mt19937 rng(9);
+        std::vector<Sphere> spheres = random_spheres(2000, 10, rng, scale);
+        Octree tree = build_spheres(spheres);
+        EXPECT_GE(tree.stats().depth, 3) << scale;
+        Mailbox mb;
+        mb.resize(spheres.size());
+        int tests = 0;
+        bool ordered = true;
+        for (int n = 0; n < 3000; ++n) {
+            Ray ray = random_ray(rng, 10, n);
+            ray.origin *= scale;
+            Real brute = kInfinity;
+            for (const auto& s : spheres) brute = std::min(brute, hit_sphere(s, ray));
+            Real best = octree_closest(
+                tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); },
+                &tests, &ordered);
+            ASSERT_EQ(best, brute) << "scale " << scale << " ray " << n;
+        }
+        EXPECT_TRUE(ordered);
+    }
+    // All triangles in the plane z = 3: the root is flat and must be padded.
+    std::mt19937 rng(2);
+    std::uniform_real_distribution<Real> pos(-10, 10), off(-1, 1);
+    std::vector<Tri> tris;
+    BuildInput in;
+    for (int i = 0; i < 2000; ++i) {
+        Point3 a{pos(rng), pos(rng), 3};
+        tris.push_back({a, a + Vector3{off(rng), off(rng), 0}, a + Vector3{off(rng), off(rng), 0}});
+        Bounds3 b;
+        b.extend(tris.back().a);
+        b.extend(tris.back().b);
+        b.extend(tris.back().c);
+        in.bounds.push_back(b);
+    }
+    in.overlaps = [&](uint32_t id, const Bounds3& cell) {
+        return triangle_overlaps(tris[id].a, tris[id].b, tris[id].c, cell);
+    };
+    Octree tree;
+    tree.build(in);
+    EXPECT_GT(tree.bounds().hi.z, tree.bounds().lo.z);
+    EXPECT_GT(tree.stats().leaves, 100);
+    Mailbox mb;
+    mb.resize(tris.size());
+    int tests = 0, hits = 0;
+    bool ordered = true;
+    for (int n = 0; n < 3000; ++n) {
+        Ray ray = random_ray(rng, 10, n);
+        Real brute = kInfinity;
+        for (const auto& t : tris) brute = std::min(brute, hit_tri(t, ray));
+        Real best = octree_closest(
+            tree, ray, mb, [&](uint32_t id) { return hit_tri(tris[id], ray); }, &tests, &ordered);
+        ASSERT_EQ(best, brute) << "ray " << n;
+        hits += best < kInfinity;
+    }
+    EXPECT_GT(hits, 150);
 }
 
 TEST(Octree, LeavesComeFrontToBackAndStopEarly) {
     // Spheres in a row along x: the first leaf visited must hold the nearest one.
     std::vector<Sphere> row;
     for (int i = 0; i < 200; ++i) row.push_back({{Real(i), 0, 0}, 0.3});
-    Octree tree = build_for(row);
+    Octree tree = build_spheres(row);
     Ray ray{{-5, 0.01, 0.02}, {1, 0, 0}};
     std::vector<uint32_t> order;
     Real t_max = kInfinity;
@@ -83,25 +297,132 @@ TEST(Octree, LeavesComeFrontToBackAndStopEarly) {
     EXPECT_EQ(order[0], 0u);
     EXPECT_LT(order[0], order[1]);
     EXPECT_LT(order[1], order[2]);
+    // A closest hit at t = 4.7 ends traversal: no leaf starting beyond it is visited.
+    int visits = 0;
+    t_max = kInfinity;
+    tree.traverse_with_entry(ray, 0, t_max, [&](const uint32_t*, size_t, Real& t, Real entry) {
+        EXPECT_LE(entry, 4.7);
+        ++visits;
+        t = 4.7;
+        return false;
+    });
+    EXPECT_GE(visits, 1);
+    EXPECT_LE(visits, 3);
 }
 
-TEST(Octree, NanAndDegenerateRaysAreHarmless) {
-    std::mt19937 rng(3);
-    Octree tree = build_for(random_spheres(500, rng));
-    int visits = 0;
-    Real t = kInfinity;
-    tree.traverse({{0, 0, 0}, {std::nan(""), 0, 1}}, 0, t, [&](auto, auto, auto&) {
-        return ++visits, false;
+TEST(Octree, RayStartingInsideSkipsCellsBehindIt) {
+    std::vector<Sphere> row;
+    for (int i = 0; i < 200; ++i) row.push_back({{Real(i), 0, 0}, 0.3});
+    Octree tree = build_spheres(row);
+    Ray ray{{100, 0, 0}, {1, 0, 0}};
+    Real t_max = kInfinity;
+    uint32_t lowest = 1000;
+    tree.traverse(ray, 0, t_max, [&](const uint32_t* ids, size_t count, Real&) {
+        for (size_t i = 0; i < count; ++i) lowest = std::min(lowest, ids[i]);
+        return false;
     });
-    tree.traverse({{0, 0, 0}, {0, 0, 0}}, 0, t, [&](auto, auto, auto&) { return ++visits, false; });
+    EXPECT_GE(lowest, 98u);  // cells wholly behind the origin are never visited
+    EXPECT_LE(lowest, 100u);
+}
+
+TEST(Octree, NanAndInfiniteRaysVisitNothing) {
+    std::mt19937 rng(3);
+    std::vector<Sphere> spheres = random_spheres(500, 10, rng);
+    Octree tree = build_spheres(spheres);
+    const Real nan = std::nan("");
+    const Ray bad[] = {
+        {{0, 0, 0}, {nan, 0, 1}},       {{nan, 0, 0}, {0, 0, 1}},
+        {{0, 0, 0}, {kInfinity, 1, 0}}, {{-kInfinity, 0, 0}, {1, 0, 0}},
+        {{0, 0, 0}, {0, 0, 0}},         {{0, 0, 0}, {-0.0, 0.0, -0.0}},
+    };
+    int visits = 0;
+    for (const Ray& r : bad) {
+        Real t = kInfinity;
+        tree.traverse(r, 0, t, [&](auto, auto, auto&) { return ++visits, false; });
+        Real t_nan = nan;
+        tree.traverse({{0, 0, -20}, {0, 0, 1}}, 0, t_nan,
+                      [&](auto, auto, auto&) { return ++visits, false; });
+    }
     EXPECT_EQ(visits, 0);
 }
 
 TEST(Octree, FlatThresholdBuildsNoTree) {
     std::mt19937 rng(5);
-    Octree tree = build_for(random_spheres(10, rng));
+    std::vector<Sphere> few = random_spheres(BuildOptions{}.flat_threshold - 1, 10, rng);
+    Octree tree = build_spheres(few);
+    EXPECT_TRUE(tree.stats().flat);
     EXPECT_EQ(tree.stats().nodes, 1);
     EXPECT_EQ(tree.stats().leaves, 1);
+    EXPECT_EQ(tree.stats().references, few.size());
+    std::vector<Sphere> more = random_spheres(BuildOptions{}.flat_threshold, 10, rng);
+    EXPECT_FALSE(build_spheres(more).stats().flat);
+}
+
+TEST(Octree, StatsCountLeavesReferencesAndExactSavings) {
+    std::mt19937 rng(21);
+    std::vector<Sphere> spheres = random_spheres(5000, 10, rng);
+    Octree exact = build_spheres(spheres);
+    Octree loose;
+    loose.build(sphere_input(spheres, false));
+    const BuildStats& s = exact.stats();
+    // Stats agree with the arrays.
+    int leaves = 0;
+    uint64_t refs = 0;
+    for (const Octree::Node& n : exact.nodes()) {
+        if (n.count != Octree::kInner) ++leaves, refs += n.count;
+    }
+    EXPECT_EQ(s.nodes, int(exact.nodes().size()));
+    EXPECT_EQ(s.leaves, leaves);
+    EXPECT_EQ(s.references, refs);
+    EXPECT_EQ(refs, exact.ids().size());
+    EXPECT_EQ((s.nodes - 1) % 8, 0);
+    EXPECT_EQ(s.leaves, s.nodes - (s.nodes - 1) / 8);
+    EXPECT_GT(s.exact_tests, s.exact_rejected);
+    EXPECT_GT(s.exact_rejected, 0u);
+    EXPECT_EQ(loose.stats().exact_tests, 0u);
+    // Exact tests keep fewer references than bounds overlap alone.
+    EXPECT_LT(double(s.references) / double(s.leaves),
+              double(loose.stats().references) / double(loose.stats().leaves));
+    EXPECT_LE(s.depth, BuildOptions{}.max_depth);
+    EXPECT_GT(s.seconds, 0);
+}
+
+TEST(Octree, ParallelBuildEqualsSerialBuild) {
+    std::mt19937 rng(8);
+    std::vector<Sphere> spheres = random_spheres(6000, 10, rng);
+    BuildOptions one, four;
+    one.threads = 1;
+    four.threads = 4;
+    Octree a = build_spheres(spheres, one), b = build_spheres(spheres, four);
+    ASSERT_EQ(a.nodes().size(), b.nodes().size());
+    ASSERT_EQ(a.ids().size(), b.ids().size());
+    // Node order differs (subtrees are stitched in task order); compare by walking.
+    std::vector<std::pair<uint32_t, uint32_t>> stack{{0, 0}};
+    while (!stack.empty()) {
+        auto [x, y] = stack.back();
+        stack.pop_back();
+        const Octree::Node &nx = a.nodes()[x], &ny = b.nodes()[y];
+        ASSERT_EQ(nx.count, ny.count);
+        if (nx.count == Octree::kInner) {
+            for (uint32_t c = 0; c < 8; ++c) stack.push_back({nx.first + c, ny.first + c});
+        } else {
+            for (uint32_t i = 0; i < nx.count; ++i) {
+                ASSERT_EQ(a.ids()[nx.first + i], b.ids()[ny.first + i]);
+            }
+        }
+    }
+    EXPECT_EQ(a.stats().depth, b.stats().depth);
+    EXPECT_EQ(a.stats().exact_tests, b.stats().exact_tests);
+}
+
+TEST(Octree, UnboundedAndEmptyBoundsAreLeftOut) {
+    BuildInput in;
+    in.bounds = {Bounds3::everything(), Bounds3{}, {{0, 0, 0}, {1, 1, 1}}};
+    Octree tree;
+    tree.build(in);
+    EXPECT_EQ(tree.stats().references, 1u);
+    EXPECT_EQ(tree.bounds().lo.x, 0);
+    EXPECT_EQ(tree.bounds().hi.x, 1);
 }
 
 TEST(Mailbox, FirstVisitPerRay) {
@@ -110,6 +431,7 @@ TEST(Mailbox, FirstVisitPerRay) {
     m.next_ray();
     EXPECT_TRUE(m.first_visit(2));
     EXPECT_FALSE(m.first_visit(2));
+    EXPECT_TRUE(m.first_visit(3));
     m.next_ray();
     EXPECT_TRUE(m.first_visit(2));
 }

@@ -1,0 +1,190 @@
+// Closest-hit throughput of the octree against brute force and a naive uniform grid on
+// random sphere scenes at the seed scene's density, build times, and the flat-list
+// crossover. Rays are half camera rays, half secondary rays from inside the scene.
+// Run: build/bench/povwall_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
+#include <benchmark/benchmark.h>
+
+#include <climits>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <memory>
+
+#include "bench/scene.h"
+#include "octree/overlap.h"
+
+namespace povwall::bench {
+namespace {
+
+constexpr size_t kRays = 4096;
+
+struct Fixture {
+    Spheres spheres;
+    Real half = 0;
+    std::vector<Ray> rays;
+    octree::Octree tree, loose;  // exact overlap / bounds overlap only
+    UniformGrid grid;
+    bool has_loose = false, has_grid = false;
+};
+
+// POVWALL_BENCH_LEAF / POVWALL_BENCH_TRAV override the build options (tuning runs).
+octree::BuildOptions options() {
+    octree::BuildOptions opt;
+    if (const char* v = std::getenv("POVWALL_BENCH_LEAF")) opt.leaf_primitives = std::atoi(v);
+    if (const char* v = std::getenv("POVWALL_BENCH_TRAV")) opt.traversal_cost = std::atof(v);
+    return opt;
+}
+
+octree::BuildInput input_for(const Spheres& s, bool exact) {
+    octree::BuildInput in;
+    in.bounds.reserve(s.size());
+    for (size_t i = 0; i < s.size(); ++i) in.bounds.push_back(s.bounds(i));
+    if (exact) {
+        in.overlaps = [&s](uint32_t id, const Bounds3& cell) {
+            return octree::sphere_overlaps({s.x[id], s.y[id], s.z[id]}, s.r[id], cell);
+        };
+    }
+    return in;
+}
+
+// Scenes are built once per size and shared by every engine.
+Fixture& fixture(size_t n) {
+    static std::map<size_t, std::unique_ptr<Fixture>> cache;
+    auto& f = cache[n];
+    if (!f) {
+        f = std::make_unique<Fixture>();
+        f->half = make_spheres(n, 1997, f->spheres);
+        f->rays = make_rays(kRays, f->half, 42);
+        f->tree.build(input_for(f->spheres, true), options());
+        // The octree must agree with brute force before it is timed.
+        octree::Mailbox mb;
+        mb.resize(n);
+        uint64_t tests = 0;
+        for (size_t i = 0; i < 256; ++i) {
+            Real a = octree_closest(f->tree, f->spheres, f->rays[i], mb, tests);
+            Real b = brute_closest(f->spheres, f->rays[i], tests);
+            if (a != b) {
+                std::fprintf(stderr, "octree/brute mismatch, n=%zu ray %zu\n", n, i);
+                std::abort();
+            }
+        }
+    }
+    return *f;
+}
+
+template <class Closest>
+void run_rays(benchmark::State& state, const Fixture& f, Closest closest) {
+    uint64_t tests = 0, rays = 0, hits = 0;
+    size_t i = 0;
+    for (auto _ : state) {
+        const Ray& ray = f.rays[i];
+        i = (i + 1) % f.rays.size();
+        Real t = closest(ray, tests);
+        hits += t < kInfinity;
+        ++rays;
+        benchmark::DoNotOptimize(t);
+    }
+    state.SetItemsProcessed(int64_t(rays));
+    state.counters["tests_per_ray"] = double(tests) / double(std::max<uint64_t>(rays, 1));
+    state.counters["hit_fraction"] = double(hits) / double(std::max<uint64_t>(rays, 1));
+}
+
+void BM_Octree(benchmark::State& state) {
+    Fixture& f = fixture(size_t(state.range(0)));
+    octree::Mailbox mb;
+    mb.resize(f.spheres.size());
+    run_rays(state, f, [&](const Ray& r, uint64_t& tests) {
+        return octree_closest(f.tree, f.spheres, r, mb, tests);
+    });
+    state.counters["leaves"] = f.tree.stats().leaves;
+    state.counters["refs_per_prim"] =
+        double(f.tree.stats().references) / double(f.spheres.size());
+}
+
+void BM_OctreeBoundsOnly(benchmark::State& state) {
+    Fixture& f = fixture(size_t(state.range(0)));
+    if (!f.has_loose) f.loose.build(input_for(f.spheres, false), options()), f.has_loose = true;
+    octree::Mailbox mb;
+    mb.resize(f.spheres.size());
+    run_rays(state, f, [&](const Ray& r, uint64_t& tests) {
+        return octree_closest(f.loose, f.spheres, r, mb, tests);
+    });
+    state.counters["refs_per_prim"] =
+        double(f.loose.stats().references) / double(f.spheres.size());
+}
+
+void BM_Grid(benchmark::State& state) {
+    Fixture& f = fixture(size_t(state.range(0)));
+    if (!f.has_grid) f.grid.build(f.spheres), f.has_grid = true;
+    octree::Mailbox mb;
+    mb.resize(f.spheres.size());
+    run_rays(state, f, [&](const Ray& r, uint64_t& tests) {
+        return f.grid.closest(f.spheres, r, mb, tests);
+    });
+}
+
+void BM_Brute(benchmark::State& state) {
+    Fixture& f = fixture(size_t(state.range(0)));
+    run_rays(state, f,
+             [&](const Ray& r, uint64_t& tests) { return brute_closest(f.spheres, r, tests); });
+}
+
+// NaN rays must cost no more than ordinary ones (they are rejected up front).
+void BM_OctreeNanRays(benchmark::State& state) {
+    Fixture& f = fixture(size_t(state.range(0)));
+    Fixture bad;
+    bad.rays = f.rays;
+    for (size_t i = 0; i < bad.rays.size(); ++i) bad.rays[i].direction[i % 3] = std::nan("");
+    octree::Mailbox mb;
+    mb.resize(f.spheres.size());
+    run_rays(state, bad, [&](const Ray& r, uint64_t& tests) {
+        return octree_closest(f.tree, f.spheres, r, mb, tests);
+    });
+}
+
+void BM_Build(benchmark::State& state) {
+    Spheres s;
+    make_spheres(size_t(state.range(0)), 1997, s);
+    octree::BuildInput in = input_for(s, true);
+    octree::BuildOptions opt = options();
+    opt.threads = int(state.range(1));
+    for (auto _ : state) {
+        octree::Octree t;
+        t.build(in, opt);
+        benchmark::DoNotOptimize(t.stats().nodes);
+        state.counters["exact_tests"] = double(t.stats().exact_tests);
+        state.counters["exact_rejected"] = double(t.stats().exact_rejected);
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+// Flat list (one leaf) against a tree for small scenes: where flat_threshold should sit.
+void BM_Small(benchmark::State& state) {
+    const size_t n = size_t(state.range(0));
+    Fixture f;
+    f.half = make_spheres(n, 7, f.spheres);
+    f.rays = make_rays(kRays, f.half, 8);
+    octree::BuildOptions opt = options();
+    opt.flat_threshold = state.range(1) ? INT_MAX : 0;
+    f.tree.build(input_for(f.spheres, true), opt);
+    octree::Mailbox mb;
+    mb.resize(n);
+    run_rays(state, f, [&](const Ray& r, uint64_t& tests) {
+        return octree_closest(f.tree, f.spheres, r, mb, tests);
+    });
+}
+
+BENCHMARK(BM_Octree)->RangeMultiplier(10)->Range(1000, 1000000);
+BENCHMARK(BM_OctreeBoundsOnly)->RangeMultiplier(10)->Range(1000, 100000);
+BENCHMARK(BM_Grid)->RangeMultiplier(10)->Range(1000, 1000000);
+BENCHMARK(BM_Brute)->RangeMultiplier(10)->Range(1000, 100000);
+BENCHMARK(BM_OctreeNanRays)->Arg(10000);
+BENCHMARK(BM_Build)
+    ->ArgsProduct({{1000, 10000, 100000, 1000000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Small)->ArgsProduct({{4, 8, 16, 24, 32, 64}, {0, 1}});
+
+}  // namespace
+}  // namespace povwall::bench
+
+BENCHMARK_MAIN();

@@ -1,0 +1,113 @@
+// Benchmark fixtures: random sphere scenes at the seed scene's density, ray sets, and three
+// closest-hit engines (octree, brute force, naive uniform grid) over the same SoA spheres.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "core/math.h"
+#include "octree/octree.h"
+
+namespace povwall::bench {
+
+/// Spheres in structure-of-arrays form, as trace/ keeps them.
+struct Spheres {
+    std::vector<Real> x, y, z, r;
+    size_t size() const { return r.size(); }
+    Bounds3 bounds(size_t i) const {
+        Point3 c{x[i], y[i], z[i]};
+        return {c - Vector3(r[i]), c + Vector3(r[i])};
+    }
+};
+
+/// N spheres (radius 0.25..0.6) in a cube sized so the density equals
+/// scenes/demo/walls.pov's (5000 spheres in a 20-unit cube). Returns the cube half-size.
+inline Real make_spheres(size_t n, uint32_t seed, Spheres& s) {
+    const Real half = 10 * std::cbrt(Real(n) / 5000);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<Real> pos(-half, half), rad(0.25, 0.6);
+    s = {};
+    for (size_t i = 0; i < n; ++i) {
+        s.x.push_back(pos(rng));
+        s.y.push_back(pos(rng));
+        s.z.push_back(pos(rng));
+        s.r.push_back(rad(rng));
+    }
+    return half;
+}
+
+/// Half camera rays (pinhole in front of the cube, 48 degree view, as walls.pov), half
+/// secondary rays (random origins inside the cube, random directions).
+inline std::vector<Ray> make_rays(size_t count, Real half, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<Real> u(-1, 1), in(-half, half);
+    std::vector<Ray> rays;
+    const Point3 eye{0, 0, -2.2 * half};
+    const Real tan_half = std::tan(24 * kPi / 180);
+    for (size_t i = 0; i < count; ++i) {
+        if (i % 2 == 0) {
+            rays.push_back({eye, normalize(Vector3{u(rng) * tan_half, u(rng) * tan_half, 1})});
+        } else {
+            Vector3 d;
+            do d = {u(rng), u(rng), u(rng)};
+            while (dot(d, d) > 1 || dot(d, d) < 1e-4);
+            rays.push_back({{in(rng), in(rng), in(rng)}, normalize(d)});
+        }
+    }
+    return rays;
+}
+
+/// Nearest sphere intersection beyond 1e-6 (unit direction assumed).
+inline bool hit_sphere(const Spheres& s, uint32_t i, const Ray& ray, Real& t_max) {
+    const Real ox = s.x[i] - ray.origin.x, oy = s.y[i] - ray.origin.y,
+               oz = s.z[i] - ray.origin.z;
+    const Real b = ox * ray.direction.x + oy * ray.direction.y + oz * ray.direction.z;
+    const Real disc = b * b - (ox * ox + oy * oy + oz * oz) + s.r[i] * s.r[i];
+    if (disc < 0) return false;
+    const Real root = std::sqrt(disc);
+    Real t = b - root;
+    if (t <= 1e-6) t = b + root;
+    if (t <= 1e-6 || t >= t_max) return false;
+    t_max = t;
+    return true;
+}
+
+inline Real brute_closest(const Spheres& s, const Ray& ray, uint64_t& tests) {
+    Real t = kInfinity;
+    for (uint32_t i = 0; i < s.size(); ++i) hit_sphere(s, i, ray, t);
+    tests += s.size();
+    return t;
+}
+
+inline Real octree_closest(const octree::Octree& tree, const Spheres& s, const Ray& ray,
+                           octree::Mailbox& mb, uint64_t& tests) {
+    Real best = kInfinity;
+    mb.next_ray();
+    tree.traverse(ray, 0, best, [&](const uint32_t* ids, size_t n, Real& t_max) {
+        for (size_t k = 0; k < n; ++k) {
+            if (!mb.first_visit(ids[k])) continue;
+            ++tests;
+            hit_sphere(s, ids[k], ray, t_max);
+        }
+        return false;
+    });
+    return best;
+}
+
+/// The naive alternative: a uniform grid of about one cell per sphere, references by
+/// bounds overlap, 3D-DDA (Amanatides and Woo) with a mailbox and early exit.
+class UniformGrid {
+public:
+    void build(const Spheres& s);
+    Real closest(const Spheres& s, const Ray& ray, octree::Mailbox& mb, uint64_t& tests) const;
+
+private:
+    Bounds3 box_;
+    int res_[3] = {1, 1, 1};
+    Vector3 cell_;
+    std::vector<uint32_t> start_, ids_;
+};
+
+}  // namespace povwall::bench

@@ -1,0 +1,87 @@
+#include "octree/overlap.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace povwall::octree {
+namespace {
+
+Real up(Real v) { return std::nextafter(v, kInfinity); }
+
+TEST(SphereOverlap, TouchingACellCornerCounts) {
+    // |(1, 2, 2)| = 3 exactly: the sphere touches the box at its corner only.
+    Bounds3 cell{{1, 2, 2}, {5, 5, 5}};
+    EXPECT_TRUE(sphere_overlaps({0, 0, 0}, 3, cell));
+    Bounds3 moved{{up(1), 2, 2}, {5, 5, 5}};
+    EXPECT_FALSE(sphere_overlaps({0, 0, 0}, 3, moved));
+}
+
+TEST(SphereOverlap, TouchingAFaceWithAnInexactRadius) {
+    // 0.1 is not exact in binary, nor is its square; the tangency must still hold exactly.
+    EXPECT_TRUE(sphere_overlaps({0, 0, 0}, 0.1, {{0.1, -1, -1}, {1, 1, 1}}));
+    EXPECT_FALSE(sphere_overlaps({0, 0, 0}, 0.1, {{up(0.1), -1, -1}, {1, 1, 1}}));
+}
+
+TEST(SphereOverlap, ExactWhereDoublesRoundToATouch) {
+    // In doubles x^2 + y^2 rounds to <= 0.1^2, exactly it is larger: the corner is outside.
+    const Real x = 0.056704775781208826, y = 0.08236849157052006;
+    ASSERT_LE(x * x + y * y, 0.1 * 0.1);
+    EXPECT_FALSE(sphere_overlaps({0, 0, 0}, 0.1, {{x, y, -1}, {1, 1, 1}}));
+    EXPECT_TRUE(sphere_overlaps({0, 0, 0}, 0.1, {{x, std::nextafter(y, 0.0), -1}, {1, 1, 1}}));
+}
+
+TEST(SphereOverlap, BoundsOverlapButSphereMissesTheCorner) {
+    // The sphere's bounding box covers the cell's corner region; the ball does not.
+    EXPECT_FALSE(sphere_overlaps({0, 0, 0}, 1, {{0.6, 0.6, 0.6}, {2, 2, 2}}));
+    EXPECT_TRUE(sphere_overlaps({0, 0, 0}, 1, {{0.5, 0.5, 0.5}, {2, 2, 2}}));
+    EXPECT_TRUE(sphere_overlaps({0.5, 0.5, 0.5}, 0.01, {{0, 0, 0}, {1, 1, 1}}));  // inside
+    EXPECT_TRUE(sphere_overlaps({0.5, 0.5, 0.5}, 10, {{0, 0, 0}, {1, 1, 1}}));    // encloses
+}
+
+TEST(TriangleOverlap, CrossingACellWithoutAnyVertexInside) {
+    Bounds3 cell{{0, 0, 0}, {1, 1, 1}};
+    EXPECT_TRUE(triangle_overlaps({-5, 0.5, -5}, {5, 0.5, -5}, {0, 0.5, 10}, cell));
+    // A sliver through the cell's interior, vertices far outside on both sides.
+    EXPECT_TRUE(triangle_overlaps({-3, -3, 0.5}, {4, 4, 0.5}, {4, 4.01, 0.5}, cell));
+}
+
+TEST(TriangleOverlap, TiltedTrianglesUseThe3dPredicate) {
+    Bounds3 cell{{0, 0, 0}, {1, 1, 1}};
+    // y = 0.5 + (z + 5) / 150: crosses the cell at y ~ 0.54 with every vertex outside.
+    EXPECT_TRUE(triangle_overlaps({-5, 0.5, -5}, {5, 0.5, -5}, {0, 0.6, 10}, cell));
+    // Covers x + y >= 2.5 only, tilted in z; its bounds overlap the cell.
+    EXPECT_FALSE(triangle_overlaps({3, -0.5, 0.4}, {-0.5, 3, 0.5}, {3, 3, 0.6}, cell));
+    EXPECT_TRUE(triangle_overlaps({3, -1, 0.4}, {-1, 3, 0.5}, {3, 3, 0.6}, cell));
+}
+
+TEST(TriangleOverlap, BoundsOverlapButTriangleMisses) {
+    Bounds3 cell{{0, 0, 0}, {1, 1, 1}};
+    // Half-plane x + y >= 2.5 at z = 0.5: the cell's largest x + y is 2.
+    EXPECT_FALSE(triangle_overlaps({3, -0.5, 0.5}, {-0.5, 3, 0.5}, {3, 3, 0.5}, cell));
+    // x + y >= 2 touches the corner edge (1, 1, z) exactly.
+    EXPECT_TRUE(triangle_overlaps({3, -1, 0.5}, {-1, 3, 0.5}, {3, 3, 0.5}, cell));
+    // Just above the cell.
+    EXPECT_FALSE(triangle_overlaps({-5, -5, up(1)}, {5, -5, up(1)}, {0, 5, up(1)}, cell));
+    EXPECT_TRUE(triangle_overlaps({-5, -5, 1}, {5, -5, 1}, {0, 5, 1}, cell));
+}
+
+TEST(TriangleOverlap, DegenerateTrianglesAreSegmentsOrPoints) {
+    Bounds3 cell{{0, 0, 0}, {1, 1, 1}};
+    EXPECT_TRUE(triangle_overlaps({-1, 0.5, 0.5}, {2, 0.5, 0.5}, {0.5, 0.5, 0.5}, cell));
+    // Segment on x + y = 0.5 crosses the cell; on x + y = 2.5 it misses it.
+    EXPECT_TRUE(triangle_overlaps({-1, 1.5, 0.5}, {1.5, -1, 0.5}, {-1, 1.5, 0.5}, cell));
+    EXPECT_FALSE(triangle_overlaps({3, -0.5, 0.5}, {-0.5, 3, 0.5}, {3, -0.5, 0.5}, cell));
+    EXPECT_TRUE(triangle_overlaps({1, 1, 1}, {1, 1, 1}, {1, 1, 1}, cell));
+    EXPECT_FALSE(triangle_overlaps({up(1), 1, 1}, {up(1), 1, 1}, {up(1), 1, 1}, cell));
+}
+
+TEST(BoxOverlap, ClosedBoxes) {
+    Bounds3 cell{{0, 0, 0}, {1, 1, 1}};
+    EXPECT_TRUE(box_overlaps({{1, 1, 1}, {2, 2, 2}}, cell));
+    EXPECT_FALSE(box_overlaps({{up(1), 0, 0}, {2, 2, 2}}, cell));
+    EXPECT_TRUE(box_overlaps({{-1, -1, -1}, {3, 3, 3}}, cell));
+}
+
+}  // namespace
+}  // namespace povwall::octree
