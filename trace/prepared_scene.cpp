@@ -309,9 +309,12 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     }
     materials_.reserve(leaves + 1);
     for (const Object* o : objects) add_object(*o, nullptr);
+    // A light's looks_like object is visible but casts no shadow (it would block its light).
+    const size_t first_looks_like = materials_.size();
     for (const Light& l : scene.lights) {
         for (const Object& o : l.looks_like) add_object(o, nullptr);
     }
+    for (size_t i = first_looks_like; i < materials_.size(); ++i) materials_[i].no_shadow = true;
     std::sort(leaf_materials_.begin(), leaf_materials_.end());
     octree::BuildInput input;
     std::vector<uint32_t> bounded_ids;

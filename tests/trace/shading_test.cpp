@@ -124,6 +124,19 @@ TEST(Shading, OpaqueBlockerAndFilteredShadow) {
     expect_rgb(centre_pixel(s), Rgb(1.0f));
 }
 
+TEST(Shading, LooksLikeObjectCastsNoShadow) {
+    Scene s;
+    Texture wall = solid({1, 1, 1});
+    wall.finish.ambient = Rgb(0.0f);
+    wall.finish.diffuse = 1;
+    s.objects.push_back(object(Plane{{0, 0, -1}, -5}, {}, {wall}));
+    Light l = point_light({0, 3, 2});
+    l.looks_like.push_back(object(Sphere{{0, 3, 2}, 0.2}, {}, {solid({1, 1, 0})}));
+    s.lights.push_back(l);
+    // The shadow ray ends inside the bulb: it must not be blocked by it.
+    expect_rgb(centre_pixel(s), Rgb(float(std::sqrt(0.5))), 1e-6f);
+}
+
 Scene busy_scene() {
     Scene s;
     s.background = Colour(Rgb(0.3f, 0.5f, 0.7f));
