@@ -79,8 +79,11 @@ bool light_at(const Light& l, const Point3& p, LightSample& s) {
         }
         if (att <= 0) return false;
     }
-    if (l.fade_power > 0 && l.fade_distance != 0 && s.distance < kInfinity) {
-        att *= float(2 / (1 + std::pow(s.distance / l.fade_distance, l.fade_power)));
+    if (l.fade_power > 0 && att > 0 && s.distance < kInfinity) {
+        // POV-Ray's Attenuate_Light: without a fade_distance the power law applies alone.
+        att *= std::fabs(l.fade_distance) >= kPovEpsilon
+                   ? float(2 / (1 + std::pow(s.distance / l.fade_distance, l.fade_power)))
+                   : float(std::pow(s.distance, -l.fade_power));
     }
     s.colour = l.colour * att;
     return !s.colour.is_black();

@@ -48,6 +48,14 @@ TEST(Shading, SphereLitHeadOnByHand) {
     const Rgb pig{0.8f, 0.6f, 0.4f};
     Rgb expected = pig * 0.1f + pig * (0.6f * light) + Rgb(0.5f * light) + Rgb(0.3f * light);
     expect_rgb(centre_pixel(s), expected);
+    // fade_power without fade_distance: distance^-power (POV-Ray's Attenuate_Light).
+    s.lights[0].fade_distance = 0;
+    {
+        const float l2 = 0.5f / 16.0f;  // 4^-2
+        Rgb e2 = pig * 0.1f + pig * (0.6f * l2) + Rgb(0.5f * l2) + Rgb(0.3f * l2);
+        expect_rgb(centre_pixel(s), e2);
+    }
+    s.lights[0].fade_distance = 2;
     // ambient_light scales the ambient term only.
     s.settings.ambient_light = Rgb(0.5f, 0.0f, 1.0f);
     expect_rgb(centre_pixel(s), expected - pig * 0.1f + pig * Rgb(0.05f, 0.0f, 0.1f));
