@@ -1,15 +1,24 @@
 // Shading, written once as two steps so that every back end uses the same code:
 //
-//   spawn():   from a hit, the local colour and the child rays to trace (one shadow ray per
-//              light, reflections per texture layer, one refraction/transmission ray), each
-//              with the coefficient it contributes with;
-//   combine(): from the children's results, the colour.
+//   spawn_children():   from a hit, the local colour and the child rays to trace (one shadow
+//                       ray per light, a reflection per reflective texture layer, one
+//                       refraction/transmission ray), each with the coefficient it
+//                       contributes with;
+//   combine_children(): from the children's results, the colour.
 //
 // The single-process tracer calls them recursively; a black box of the distributed back end
-// calls spawn() when a ray hits and combine() when the children's results have arrived.
-// The result is linear in the children's results (colour = local + sum coeff * child) except
-// for reflection children with `exponent` != 1: only those need a waiting parent; the others
-// can forward `coeff` times the parent's own weight straight to the pixel.
+// calls spawn_children() when a ray hits and combine_children() when the results are in.
+//
+// Linearity: colour = fog.add + fog.mul * (local + sum_i coeff_i * result_i), where every
+// coeff_i and the fog terms are fixed at spawn time, so most children can forward
+// `parent weight * coeff` to the pixel without a waiting parent. The non-linear cases are:
+//   - reflection children with `exponent` != 1: coeff * pow(result, 1/exponent);
+//   - the alpha channel (transmit): transmit_factor * child transmit, scaled by fog;
+//   - area-light shadow children: one child stands for POV-Ray's whole adaptive sample grid,
+//     whose refinement depends on sample results (evaluated as a unit by
+//     shadow_transmittance()).
+// Shadow children of point lights return a transmittance (product of filters and interior
+// fades), which multiplies the light's contribution: linear in that transmittance.
 #pragma once
 
 #include <cstdint>
