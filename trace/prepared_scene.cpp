@@ -477,7 +477,7 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
                  ocz = sz_[s] - ray.origin.z;
             Real tca = ocx * ray.direction.x + ocy * ray.direction.y + ocz * ray.direction.z;
             Real t2hc = sr_[s] * sr_[s] - (ocx * ocx + ocy * ocy + ocz * ocz) + tca * tca;
-            if (t2hc < 0) return false;
+            if (!(t2hc > kPovEpsilon)) return false;  // tangent rays miss (POV-Ray)
             Real th = std::sqrt(t2hc);
             Real t = tca - th;
             if (!(t > kSphereTolerance && t >= lo)) {
