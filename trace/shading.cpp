@@ -123,7 +123,15 @@ Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray) {
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     ShadingRecord& out) {
     out.clear();
-    if (!scene.scene().fogs.empty()) out.fog = fog_effect(scene.scene(), ray.ray, hit.t);
+    if (!scene.scene().fogs.empty()) {
+        // Fog fills only "hollow" space: not the inside of a solid (non-hollow) object.
+        bool hollow = true;
+        for (int i = 0; i < ray.interiors.size && i < InteriorStack::kCapacity; ++i) {
+            const Material* m = ray.interiors.items[i];
+            if (m && m->object && !m->object->hollow) hollow = false;
+        }
+        if (hollow) out.fog = fog_effect(scene.scene(), ray.ray, hit.t);
+    }
     const Scene& sc = scene.scene();
     const Material& m = *hit.material;
     const Vector3 D = ray.ray.direction;
@@ -164,7 +172,16 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         if (f.diffuse != 0 || f.phong != 0 || f.specular != 0) {
             for (size_t l = 0; l < nlights; ++l) {
                 const Light& light = sc.lights[l];
-                if (sample_ok[l] == 2) sample_ok[l] = light_at(light, P, samples[l]) ? 1 : 0;
+                if (sample_ok[l] == 2) {
+                    sample_ok[l] = light_at(light, P, samples[l]) ? 1 : 0;
+                    // media_attenuation: fog dims the light along its way (no fog colour
+                    // is added to light, as for POV-Ray's shadow test rays).
+                    if (sample_ok[l] && light.media_attenuation && !sc.fogs.empty() &&
+                        samples[l].distance < kInfinity) {
+                        LightSample& ls = samples[l];
+                        ls.colour *= fog_effect(sc, {P, ls.dir}, ls.distance).mul;
+                    }
+                }
                 if (!sample_ok[l]) continue;
                 const LightSample& s = samples[l];
                 Real cos_nl = dot(Nl, s.dir);
