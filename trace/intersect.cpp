@@ -26,7 +26,8 @@ void intersect_sphere(const Sphere& s, const Point3& o, const Vector3& dir, Cros
     Vector3 oc = s.centre - o;
     Real tca = dot(oc, dir);
     Real t2hc = s.radius * s.radius - dot(oc, oc) + tca * tca;
-    if (t2hc < 0) return;
+    // POV-Ray needs a half chord above EPSILON: tangent rays miss.
+    if (!(t2hc > kPovEpsilon)) return;
     Real th = std::sqrt(t2hc);
     Real t1 = tca - th, t2 = tca + th;
     if (t1 > kSphereTolerance) out.add(t1, 0);

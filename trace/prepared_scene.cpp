@@ -310,9 +310,12 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     }
     materials_.reserve(leaves + 1);
     for (const Object* o : objects) add_object(*o, nullptr);
+    // A light's looks_like object is visible but casts no shadow (it would block its light).
+    const size_t first_looks_like = materials_.size();
     for (const Light& l : scene.lights) {
         for (const Object& o : l.looks_like) add_object(o, nullptr);
     }
+    for (size_t i = first_looks_like; i < materials_.size(); ++i) materials_[i].no_shadow = true;
     std::sort(leaf_materials_.begin(), leaf_materials_.end());
     octree::BuildInput input;
     std::vector<uint32_t> bounded_ids;
@@ -475,7 +478,7 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
                  ocz = sz_[s] - ray.origin.z;
             Real tca = ocx * ray.direction.x + ocy * ray.direction.y + ocz * ray.direction.z;
             Real t2hc = sr_[s] * sr_[s] - (ocx * ocx + ocy * ocy + ocz * ocz) + tca * tca;
-            if (t2hc < 0) return false;
+            if (!(t2hc > kPovEpsilon)) return false;  // tangent rays miss (POV-Ray)
             Real th = std::sqrt(t2hc);
             Real t = tca - th;
             if (!(t > kSphereTolerance && t >= lo)) {

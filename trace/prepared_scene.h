@@ -57,6 +57,9 @@ public:
     const octree::Octree& tree() const { return tree_; }
     size_t primitive_count() const { return kind_.size(); }
     const PatternEnv& pattern_env() const { return env_; }
+    // +UA: the background's filter/transmit count (POV-Ray's alphaBackground).
+    bool alpha_background() const { return alpha_background_; }
+    void set_alpha_background(bool on) { alpha_background_ = on; }
     void init_context(RayContext& ctx) const { ctx.mailbox.resize(kind_.size()); }
 
     // Nearest hit with t in (t_min, t_max), never closer than MIN_ISECT_DEPTH (1e-4),
@@ -80,6 +83,7 @@ private:
 
     const Scene& scene_;
     PatternEnv env_;
+    bool alpha_background_ = false;
     std::vector<Material> materials_;  // reserved up front: pointers stay valid
     // Per primitive id.
     std::vector<PrimKind> kind_;

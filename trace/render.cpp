@@ -23,6 +23,7 @@ float aa_encode(float v) { return std::pow(std::max(0.0f, v), 1.0f / 2.5f); }
 Image render_scene(const Scene& scene, const RenderSettings& settings, RenderStats* stats) {
     auto t0 = Clock::now();
     PreparedScene prepared(scene);
+    prepared.set_alpha_background(settings.alpha);
     auto t1 = Clock::now();
     const int W = settings.width, H = settings.height;
     Image image(W, H);

@@ -79,8 +79,11 @@ bool light_at(const Light& l, const Point3& p, LightSample& s) {
         }
         if (att <= 0) return false;
     }
-    if (l.fade_power > 0 && l.fade_distance != 0 && s.distance < kInfinity) {
-        att *= float(2 / (1 + std::pow(s.distance / l.fade_distance, l.fade_power)));
+    if (l.fade_power > 0 && att > 0 && s.distance < kInfinity) {
+        // POV-Ray's Attenuate_Light: without a fade_distance the power law applies alone.
+        att *= std::fabs(l.fade_distance) >= kPovEpsilon
+                   ? float(2 / (1 + std::pow(s.distance / l.fade_distance, l.fade_power)))
+                   : float(std::pow(s.distance, -l.fade_power));
     }
     s.colour = l.colour * att;
     return !s.colour.is_black();
@@ -120,6 +123,15 @@ Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray) {
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     ShadingRecord& out) {
     out.clear();
+    if (!scene.scene().fogs.empty()) {
+        // Fog fills only "hollow" space: not the inside of a solid (non-hollow) object.
+        bool hollow = true;
+        for (int i = 0; i < ray.interiors.size && i < InteriorStack::kCapacity; ++i) {
+            const Material* m = ray.interiors.items[i];
+            if (m && m->object && !m->object->hollow) hollow = false;
+        }
+        if (hollow) out.fog = fog_effect(scene.scene(), ray.ray, hit.t);
+    }
     const Scene& sc = scene.scene();
     const Material& m = *hit.material;
     const Vector3 D = ray.ray.direction;
@@ -160,7 +172,16 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         if (f.diffuse != 0 || f.phong != 0 || f.specular != 0) {
             for (size_t l = 0; l < nlights; ++l) {
                 const Light& light = sc.lights[l];
-                if (sample_ok[l] == 2) sample_ok[l] = light_at(light, P, samples[l]) ? 1 : 0;
+                if (sample_ok[l] == 2) {
+                    sample_ok[l] = light_at(light, P, samples[l]) ? 1 : 0;
+                    // media_attenuation: fog dims the light along its way (no fog colour
+                    // is added to light, as for POV-Ray's shadow test rays).
+                    if (sample_ok[l] && light.media_attenuation && !sc.fogs.empty() &&
+                        samples[l].distance < kInfinity) {
+                        LightSample& ls = samples[l];
+                        ls.colour *= fog_effect(sc, {P, ls.dir}, ls.distance).mul;
+                    }
+                }
                 if (!sample_ok[l]) continue;
                 const LightSample& s = samples[l];
                 Real cos_nl = dot(Nl, s.dir);
@@ -340,7 +361,41 @@ TraceResult combine_children(const ShadingRecord& record, const TraceResult* res
         }
         if (c.kind == ChildRay::Kind::Transmission) r.transmit = c.transmit_factor * x.transmit;
     }
+    const FogEffect& f = record.fog;
+    r.colour = f.add + f.mul * r.colour;
+    r.transmit = f.add_transmit + f.mul_transmit * r.transmit;
     return r;
+}
+
+FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth) {
+    FogEffect e;
+    for (const Fog& fog : scene.fogs) {
+        if (std::fabs(fog.distance) <= kPovEpsilon) continue;
+        // POV-Ray's constant and ground fog (turbulence not yet modelled).
+        Real density = 1;
+        if (fog.type == 2) {
+            Vector3 up = fog.up;
+            Real y1 = dot(ray.origin, up), y2 = dot(ray.at(depth), up);
+            Real start = (y1 - fog.offset) / fog.alt, end = (y2 - fog.offset) / fog.alt;
+            if (start <= 0) {
+                density = end <= 0 ? 1.0 : (std::atan(end) - start) / (end - start);
+            } else if (end <= 0) {
+                density = (std::atan(start) - end) / (start - end);
+            } else if (std::fabs(start - end) > kPovEpsilon) {
+                density = (std::atan(start) - std::atan(end)) / (start - end);
+            } else {
+                density = 1 / (start * start + 1);
+            }
+        }
+        float att = float(std::exp(-depth * density / fog.distance));
+        const Colour& c = fog.colour;
+        att = std::max(att, c.transmit);  // minimum transmittance
+        const Rgb pass = Rgb(1 - c.filter) + c.rgb * c.filter;
+        e.mul *= pass * att;
+        e.add += c.rgb * (1 - att);
+    }
+    e.mul_transmit = e.mul.grey();  // POV-Ray 3.7 scales the ray's transmit only
+    return e;
 }
 
 bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
@@ -494,24 +549,57 @@ Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, Ray
     return sampler.region(0, 0, n1 - 1, n2 - 1, 0);
 }
 
+namespace {
+
+// A ray that hits nothing crosses fog up to POV-Ray's MAX_DISTANCE.
+TraceResult fogged(const Scene& sc, const Ray& ray, TraceResult r) {
+    if (sc.fogs.empty()) return r;
+    FogEffect f = fog_effect(sc, ray, kMaxDistance);
+    return {f.add + f.mul * r.colour, f.add_transmit + f.mul_transmit * r.transmit};
+}
+
+}  // namespace
+
 TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
+    // POV-Ray's ComputeSky: the sky_sphere's pigments (last one on top) over the background.
     const Scene& sc = scene.scene();
-    if (sc.sky_sphere && !sc.sky_sphere->pigments.empty()) {
-        Point3 p = sc.sky_sphere->transform.inverse_vector(ray.direction);
-        p = normalize(p);
-        // Layers composite top first, each letting the next show through its filter/transmit.
-        Rgb colour, fil(1.0f);
+    const bool alpha = scene.alpha_background();
+    const bool sky = sc.sky_sphere && !sc.sky_sphere->pigments.empty();
+    Point3 p;
+    if (sky) p = sc.sky_sphere->transform.inverse_point(ray.direction);
+    Colour bg = sc.background;
+    if (sc.language_version < 370) {
+        // Legacy: full transparency with alpha; else the 3.6 compositing.
+        if (alpha) return fogged(sc, ray, {Rgb{}, 1.0f});
+        if (!sky) return fogged(sc, ray, {bg.rgb, 0.0f});
+        Rgb col, fil(1.0f);
+        float ff = 1, ft = 1, trans = 1;
         for (auto it = sc.sky_sphere->pigments.rbegin(); it != sc.sky_sphere->pigments.rend();
              ++it) {
             Colour c = evaluate_pigment(*it, p, scene.pattern_env());
-            float att = 1 - c.filter - c.transmit;
-            colour += fil * c.rgb * att;
+            col += c.rgb * (trans * (1 - c.filter - c.transmit));
+            fil *= c.rgb;
+            ff *= c.filter;
+            ft *= c.transmit;
+            trans = std::fabs(ff) + std::fabs(ft);
+        }
+        return fogged(sc, ray, {col + bg.rgb * (fil * ff + Rgb(ft)), 0.0f});
+    }
+    Rgb col, fil(1.0f);
+    if (sky) {
+        for (auto it = sc.sky_sphere->pigments.rbegin(); it != sc.sky_sphere->pigments.rend();
+             ++it) {
+            Colour c = evaluate_pigment(*it, p, scene.pattern_env());
+            col += c.rgb * (1 - c.filter - c.transmit) * fil;
             fil *= rgb_transm(c);
         }
-        colour += fil * sc.background.rgb;
-        return {colour, 0};
     }
-    return {sc.background.rgb, sc.background.transmit};
+    // The background acts as one more uniform layer. Measured with POV-Ray 3.7.0.10: its
+    // transmit darkens it even without +UA (background rgbt <0.9,0.9,0.1,0.6> renders 0.36),
+    // as if composited over black.
+    col += bg.rgb * (1 - bg.filter - bg.transmit) * fil;
+    fil *= rgb_transm(bg);
+    return fogged(sc, ray, {col, std::min(1.0f, std::fabs(fil.grey()))});
 }
 
 }  // namespace povwall::trace

@@ -1,15 +1,24 @@
 // Shading, written once as two steps so that every back end uses the same code:
 //
-//   spawn():   from a hit, the local colour and the child rays to trace (one shadow ray per
-//              light, reflections per texture layer, one refraction/transmission ray), each
-//              with the coefficient it contributes with;
-//   combine(): from the children's results, the colour.
+//   spawn_children():   from a hit, the local colour and the child rays to trace (one shadow
+//                       ray per light, a reflection per reflective texture layer, one
+//                       refraction/transmission ray), each with the coefficient it
+//                       contributes with;
+//   combine_children(): from the children's results, the colour.
 //
 // The single-process tracer calls them recursively; a black box of the distributed back end
-// calls spawn() when a ray hits and combine() when the children's results have arrived.
-// The result is linear in the children's results (colour = local + sum coeff * child) except
-// for reflection children with `exponent` != 1: only those need a waiting parent; the others
-// can forward `coeff` times the parent's own weight straight to the pixel.
+// calls spawn_children() when a ray hits and combine_children() when the results are in.
+//
+// Linearity: colour = fog.add + fog.mul * (local + sum_i coeff_i * result_i), where every
+// coeff_i and the fog terms are fixed at spawn time, so most children can forward
+// `parent weight * coeff` to the pixel without a waiting parent. The non-linear cases are:
+//   - reflection children with `exponent` != 1: coeff * pow(result, 1/exponent);
+//   - the alpha channel (transmit): transmit_factor * child transmit, scaled by fog;
+//   - area-light shadow children: one child stands for POV-Ray's whole adaptive sample grid,
+//     whose refinement depends on sample results (evaluated as a unit by
+//     shadow_transmittance()).
+// Shadow children of point lights return a transmittance (product of filters and interior
+// fades), which multiplies the light's contribution: linear in that transmittance.
 #pragma once
 
 #include <cstdint>
@@ -73,12 +82,22 @@ struct ChildRay {
     Rgb light_colour{1.0f};  // attenuated light colour (area-light refinement threshold)
 };
 
+// Fog along a ray of known length: the ray's colour c becomes add + mul * c (affine, so
+// the children still combine linearly). Identity when the scene has no fog.
+struct FogEffect {
+    Rgb add{0.0f}, mul{1.0f};
+    float add_transmit = 0, mul_transmit = 1;
+};
+FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth);
+
 struct ShadingRecord {
     Rgb local;  // ambient and emission: needs no child
     std::vector<ChildRay> children;
+    FogEffect fog;  // applied to the combined colour
     void clear() {
         local = Rgb{};
         children.clear();
+        fog = FogEffect{};
     }
 };
 
@@ -115,7 +134,7 @@ Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, Ray
 // shadow rays differ in one test, hence the flag).
 Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray);
 
-// Colour of a ray that hits nothing (background or sky_sphere).
+// Colour of a ray that hits nothing (background or sky_sphere), fog included.
 TraceResult miss_colour(const PreparedScene& scene, const Ray& ray);
 
 }  // namespace povwall::trace

@@ -360,6 +360,88 @@ light_source { <0,5,0> rgb 1 area_light <4,0,0>, <0,0,4>, 3, 3 )" + adaptive_kw 
     }
 }
 
+TEST(PovCompare, ConstantAndGroundFog) {
+    Scene s = base_scene();
+    s.background = Colour(Rgb(0.2f, 0.3f, 0.8f));
+    s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {tex({0.9f, 0.9f, 0.9f})}));
+    s.objects.push_back(object(Sphere{{-1, 0, 2}, 1}, {}, {tex({0.9f, 0.2f, 0.2f})}));
+    s.objects.push_back(object(Sphere{{2, 0.5, 8}, 1.5}, {}, {tex({0.2f, 0.9f, 0.2f})}));
+    s.lights.push_back(point_light({-3, 6, -5}));
+    Fog constant;
+    constant.distance = 25;
+    constant.colour = Colour(Rgb(0.6f, 0.6f, 0.7f), 0.3f, 0.2f);
+    s.fogs.push_back(constant);
+    Fog ground;
+    ground.type = 2;
+    ground.distance = 6;
+    ground.offset = -0.5;
+    ground.alt = 0.4;
+    ground.colour = Colour(Rgb(0.9f, 0.8f, 0.6f));
+    s.fogs.push_back(ground);
+    expect_matches("fog", R"(
+background { rgb <0.2,0.3,0.8> }
+plane { y, -1 pigment { rgb 0.9 } }
+sphere { <-1,0,2>, 1 pigment { rgb <0.9,0.2,0.2> } }
+sphere { <2,0.5,8>, 1.5 pigment { rgb <0.2,0.9,0.2> } }
+light_source { <-3,6,-5> rgb 1 }
+fog { distance 25 color rgbft <0.6,0.6,0.7,0.3,0.2> }
+fog { fog_type 2 distance 6 fog_offset -0.5 fog_alt 0.4 color rgb <0.9,0.8,0.6> }
+)",
+                   s);
+}
+
+// A bright light dimmed by the fog (media_attenuation), and a solid (non-hollow) glass ball
+// whose inside has no fog while a hollow one is fogged.
+TEST(PovCompare, FogMediaAttenuationAndHollow) {
+    Scene s = base_scene();
+    s.background = Colour(Rgb(0.2f, 0.3f, 0.8f));
+    s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {tex({0.9f, 0.9f, 0.9f})}));
+    for (int i = 0; i < 2; ++i) {
+        Finish f;
+        f.ambient = Rgb(0.0f);
+        f.diffuse = 0;
+        Object ball = object(Sphere{{i ? 1.3 : -1.3, 0.2, 1}, 1.2}, {}, {tex({1, 1, 1}, f, 0, 0.9f)});
+        ball.hollow = i == 1;
+        s.objects.push_back(ball);
+    }
+    Light l = point_light({-20, 30, -20}, Rgb(30.0f));
+    l.media_attenuation = true;
+    s.lights.push_back(l);
+    Fog fog;
+    fog.distance = 12;
+    fog.colour = Colour(Rgb(0.5f, 0.5f, 0.5f));
+    s.fogs.push_back(fog);
+    expect_matches("fog_attenuation", R"(
+background { rgb <0.2,0.3,0.8> }
+plane { y, -1 pigment { rgb 0.9 } }
+sphere { <-1.3,0.2,1>, 1.2 pigment { rgbt <1,1,1,0.9> } finish { ambient 0 diffuse 0 } }
+sphere { <1.3,0.2,1>, 1.2 pigment { rgbt <1,1,1,0.9> } finish { ambient 0 diffuse 0 } hollow }
+light_source { <-20,30,-20> rgb 30 media_attenuation on }
+fog { distance 12 color rgb 0.5 }
+)",
+                   s);
+}
+
+TEST(PovCompare, LayeredSkySphereOverBackground) {
+    Scene s = base_scene();
+    s.background = Colour(Rgb(0.9f, 0.9f, 0.1f), 0.0f, 0.6f);  // transmit darkens it, +UA or not
+    s.objects.push_back(object(Sphere{{0, 0, 0}, 1}, {}, {tex({0.9f, 0.9f, 0.9f})}));
+    s.lights.push_back(point_light({-3, 6, -5}));
+    SkySphere sky;
+    Pigment under, over;
+    under.colour = Colour(Rgb(0.2f, 0.4f, 0.9f), 0.0f, 0.3f);
+    over.colour = Colour(Rgb(1.0f, 0.5f, 0.2f), 0.5f, 0.0f);
+    sky.pigments = {under, over};  // the last one is on top, as POV-Ray composites them
+    s.sky_sphere = sky;
+    expect_matches("sky", R"(
+background { rgbt <0.9,0.9,0.1,0.6> }
+sphere { 0, 1 pigment { rgb 0.9 } }
+light_source { <-3,6,-5> rgb 1 }
+sky_sphere { pigment { rgbt <0.2,0.4,0.9,0.3> } pigment { rgbf <1,0.5,0.2,0.5> } }
+)",
+                   s);
+}
+
 TEST(PovCompare, AntialiasMethod1NoJitter) {
     Scene s = base_scene();
     s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {tex({0.9f, 0.9f, 0.9f})}));

@@ -48,6 +48,14 @@ TEST(Shading, SphereLitHeadOnByHand) {
     const Rgb pig{0.8f, 0.6f, 0.4f};
     Rgb expected = pig * 0.1f + pig * (0.6f * light) + Rgb(0.5f * light) + Rgb(0.3f * light);
     expect_rgb(centre_pixel(s), expected);
+    // fade_power without fade_distance: distance^-power (POV-Ray's Attenuate_Light).
+    s.lights[0].fade_distance = 0;
+    {
+        const float l2 = 0.5f / 16.0f;  // 4^-2
+        Rgb e2 = pig * 0.1f + pig * (0.6f * l2) + Rgb(0.5f * l2) + Rgb(0.3f * l2);
+        expect_rgb(centre_pixel(s), e2);
+    }
+    s.lights[0].fade_distance = 2;
     // ambient_light scales the ambient term only.
     s.settings.ambient_light = Rgb(0.5f, 0.0f, 1.0f);
     expect_rgb(centre_pixel(s), expected - pig * 0.1f + pig * Rgb(0.05f, 0.0f, 0.1f));
@@ -122,6 +130,19 @@ TEST(Shading, OpaqueBlockerAndFilteredShadow) {
     expect_rgb(centre_pixel(s), Rgb(0.0f));
     s.objects.back().no_shadow = true;
     expect_rgb(centre_pixel(s), Rgb(1.0f));
+}
+
+TEST(Shading, LooksLikeObjectCastsNoShadow) {
+    Scene s;
+    Texture wall = solid({1, 1, 1});
+    wall.finish.ambient = Rgb(0.0f);
+    wall.finish.diffuse = 1;
+    s.objects.push_back(object(Plane{{0, 0, -1}, -5}, {}, {wall}));
+    Light l = point_light({0, 3, 2});
+    l.looks_like.push_back(object(Sphere{{0, 3, 2}, 0.2}, {}, {solid({1, 1, 0})}));
+    s.lights.push_back(l);
+    // The shadow ray ends inside the bulb: it must not be blocked by it.
+    expect_rgb(centre_pixel(s), Rgb(float(std::sqrt(0.5))), 1e-6f);
 }
 
 Scene busy_scene() {
