@@ -143,14 +143,13 @@ template <class Visit>
 void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&& visit) const {
     if (nodes_.empty()) return;
     const Point3 o = ray.origin;
-    const Real dmax = std::max({std::fabs(ray.direction.x), std::fabs(ray.direction.y),
-                                std::fabs(ray.direction.z)});
-    // Also rejects NaN (comparisons are false) and infinite components, in O(1).
-    if (!(dmax > 0 && dmax < kInfinity)) return;
-    if (!(std::fabs(o.x) < kInfinity && std::fabs(o.y) < kInfinity &&
-          std::fabs(o.z) < kInfinity)) {
-        return;
-    }
+    const Vector3& dir = ray.direction;
+    // Any NaN or infinite component makes this NaN (inf * 0 is NaN): such rays visit
+    // nothing, in O(1). std::max/min would silently drop NaNs further down.
+    const Real poison = (o.x + o.y + o.z + dir.x + dir.y + dir.z) * 0;
+    if (poison != 0) return;
+    const Real dmax = std::max({std::fabs(dir.x), std::fabs(dir.y), std::fabs(dir.z)});
+    if (!(dmax > 0)) return;
     if (!(t_min <= t_max)) return;
     Vector3 inv, t0, t1;
     bool parallel[3];
