@@ -31,6 +31,16 @@ int render_main(const std::vector<std::string>& args) {
         ->capture_default_str();
     app.add_option("--stats", o.stats_file, "write render statistics as JSON");
     app.add_flag("-q,--quiet", o.quiet, "no timing summary, no #debug output");
+    app.add_option("--boxes", o.boxes,
+                   "black boxes: NxNxN equal slabs, N (balanced, N x N x N) or auto")
+        ->capture_default_str();
+    app.add_option("--results", o.results,
+                   "how boxes return colours: forward contributions, parents, or auto")
+        ->check(CLI::IsMember({"auto", "forward", "parents"}))
+        ->capture_default_str();
+    app.add_option("--queue", o.queue, "box work order: priority or fifo")
+        ->check(CLI::IsMember({"priority", "fifo"}))
+        ->capture_default_str();
     std::vector<std::string> pov, rest{"povwall render"};
     for (const auto& a : args) {
         if (looks_like_pov_switch(a)) pov.push_back(a);

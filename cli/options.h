@@ -20,6 +20,10 @@ struct RenderOptions {
     std::map<std::string, double> declares;
     bool quiet = false;
     std::string stats_file;
+    // Space subdivision (virtual walls): "1x1x1" renders in one process without boxes.
+    std::string boxes = "1x1x1";
+    std::string results = "auto";  // forward | parents | auto
+    std::string queue = "priority";  // priority | fifo
 };
 
 // Applies one POV-Ray switch (+W320, -A, +Ldir, Declare=X=1, ...) to `o`.

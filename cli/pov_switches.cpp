@@ -33,7 +33,7 @@ bool looks_like_pov_switch(const std::string& arg) {
     if (arg.size() >= 2 && arg[0] == '-' && arg[1] != '-') {
         // povwall's own short options: -o -W -H -L -h (with a separate or attached value).
         char c = arg[1];
-        if (c == 'o' || c == 'h') return false;
+        if (c == 'o' || c == 'h' || c == 'q') return false;
         if ((c == 'W' || c == 'H' || c == 'L') && arg.size() == 2) return false;
         return true;
     }

@@ -37,6 +37,18 @@ struct Warp {
     int octaves = 6;
     Real omega = 0.5, lambda = 2.0;
     Vector3 repeat{0, 0, 0}, offset{0, 0, 0}, flip{0, 0, 0};  // repeat warp
+    // Turbulence only: true for the pattern's classic `turbulence` keyword (POV-Ray applies
+    // it last and marble/wood/spiral/agate read it), false for `warp { turbulence }`.
+    bool classic = true;
+    // black_hole: centre, radius, strength, falloff, inverse; its `repeat` vector and its
+    // `turbulence` (the position uncertainty) use the fields above.
+    Point3 centre{0, 0, 0};
+    Real radius = 1, strength = 1, falloff = 2;
+    bool inverse = false;
+    // cylindrical/spherical/toroidal/planar warps: orientation, dist_exp, toroidal
+    // major_radius, planar offset.
+    Vector3 orientation{0, 0, 1};
+    Real dist_exp = 0, major_radius = 1, plane_offset = 0;
     Transform transform;  // transforms applied after this warp (pattern space)
 };
 
@@ -167,7 +179,7 @@ struct Object {
 struct AreaLight {
     Vector3 axis1, axis2;
     int size1 = 1, size2 = 1;
-    int adaptive = 0;
+    int adaptive = 100;  // POV-Ray's default when `adaptive` is absent: the full grid
     bool jitter = false, circular = false, orient = false;
 };
 

@@ -63,6 +63,12 @@ int VirtualWalls::slab_of(int axis, Real v) const {
     return int(std::upper_bound(w.begin(), w.end(), v) - w.begin());
 }
 
+int VirtualWalls::slab_of_directed(int axis, Real v, Real direction) const {
+    const auto& w = walls_[axis];
+    if (direction < 0) return int(std::lower_bound(w.begin(), w.end(), v) - w.begin());
+    return int(std::upper_bound(w.begin(), w.end(), v) - w.begin());
+}
+
 int VirtualWalls::locate(const Point3& p) const {
     return box_index({slab_of(0, p.x), slab_of(1, p.y), slab_of(2, p.z)});
 }

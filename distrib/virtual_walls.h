@@ -2,8 +2,9 @@
 //
 // Only interior walls are stored; the outermost boxes extend to infinity, so every point of
 // space belongs to exactly one box and infinite objects (planes) simply touch many boxes.
-// A point lying exactly on a wall belongs to the box on the wall's high side; a ray walk uses
-// the same comparisons, so routing is deterministic for rays on walls or along axes.
+// A point lying exactly on a wall belongs to the box on the wall's high side; a ray walk
+// starting on a wall starts in the box it moves into, so routing is deterministic for rays
+// on walls or along axes, and a ray forwarded at a wall never bounces back.
 #pragma once
 
 #include <array>
@@ -50,6 +51,7 @@ public:
 
 private:
     int slab_of(int axis, Real v) const;
+    int slab_of_directed(int axis, Real v, Real direction) const;
     std::array<std::vector<Real>, 3> walls_;
     std::array<int, 3> slabs_{1, 1, 1};
 };
@@ -61,7 +63,11 @@ void VirtualWalls::walk(const Ray& ray, Real t_min, Real t_max, Visit&& visit) c
     for (int a = 0; a < 3; ++a) {
         if (std::isnan(start[a]) || std::isnan(ray.direction[a])) return;
     }
-    std::array<int, 3> cell{slab_of(0, start.x), slab_of(1, start.y), slab_of(2, start.z)};
+    // A start exactly on a wall belongs to the side the ray moves into, so a ray forwarded
+    // at a wall never bounces back to the box it left.
+    std::array<int, 3> cell{slab_of_directed(0, start.x, ray.direction.x),
+                            slab_of_directed(1, start.y, ray.direction.y),
+                            slab_of_directed(2, start.z, ray.direction.z)};
     Real t = t_min;
     for (;;) {
         // Distance to the next wall along each axis in the direction of travel.
@@ -75,7 +81,11 @@ void VirtualWalls::walk(const Ray& ray, Real t_min, Real t_max, Visit&& visit) c
             }
         }
         Real t_exit = std::min(std::max(t_next, t), t_max);
-        if (visit(Segment{box_index(cell), t, t_exit})) return;
+        // A start rounded onto the near side of a wall gives an empty segment: step over it
+        // without visiting, the same way whichever box computes the walk.
+        if (t_next > t || t_next >= t_max) {
+            if (visit(Segment{box_index(cell), t, t_exit})) return;
+        }
         if (t_next >= t_max) return;
         // Step every axis whose wall lies at t_next (corners and edges cross at once).
         for (int a = 0; a < 3; ++a) {

@@ -7,7 +7,8 @@
 #pragma once
 
 #include <cstdint>
-#include <queue>
+#include <algorithm>
+#include <deque>
 #include <vector>
 
 namespace povwall::distrib {
@@ -19,39 +20,47 @@ class WorkQueue {
 public:
     explicit WorkQueue(QueuePolicy policy = QueuePolicy::Priority) : policy_(policy) {}
 
+    // `depth` is the ray's trace level (0..255). Items move once into a bucket and once out:
+    // buckets per priority level instead of a heap, because items are large.
     void push(Item item, bool is_result, int depth) {
-        uint64_t key;
         if (policy_ == QueuePolicy::Fifo) {
-            key = 0;
+            fifo_.push_back(std::move(item));
+        } else if (is_result) {
+            results_.push_back(std::move(item));
         } else {
-            key = (uint64_t(is_result ? 1 : 0) << 8) | uint64_t(depth & 0xff);
+            size_t d = size_t(std::clamp(depth, 0, 255));
+            if (by_depth_.size() <= d) by_depth_.resize(d + 1);
+            by_depth_[d].push_back(std::move(item));
+            top_ = std::max(top_, d);
         }
-        heap_.push(Slot{key, sequence_++, std::move(item)});
-        peak_ = std::max(peak_, heap_.size());
+        ++size_;
+        peak_ = std::max(peak_, size_);
     }
-    bool empty() const { return heap_.empty(); }
-    size_t size() const { return heap_.size(); }
+    bool empty() const { return size_ == 0; }
+    size_t size() const { return size_; }
     size_t peak() const { return peak_; }
     Item pop() {
-        Item item = std::move(const_cast<Slot&>(heap_.top()).item);
-        heap_.pop();
+        --size_;
+        std::deque<Item>* q = &fifo_;
+        if (policy_ == QueuePolicy::Priority) {
+            if (!results_.empty()) {
+                q = &results_;
+            } else {
+                while (by_depth_[top_].empty()) --top_;
+                q = &by_depth_[top_];
+            }
+        }
+        Item item = std::move(q->front());
+        q->pop_front();
         return item;
     }
 
 private:
-    struct Slot {
-        uint64_t key;
-        uint64_t sequence;
-        Item item;
-        bool operator<(const Slot& o) const {
-            // std::priority_queue pops the largest: high key first, then low sequence.
-            return key != o.key ? key < o.key : sequence > o.sequence;
-        }
-    };
     QueuePolicy policy_;
-    std::priority_queue<Slot> heap_;
-    uint64_t sequence_ = 0;
-    size_t peak_ = 0;
+    std::deque<Item> fifo_, results_;
+    std::vector<std::deque<Item>> by_depth_;
+    size_t top_ = 0;
+    size_t size_ = 0, peak_ = 0;
 };
 
 }  // namespace povwall::distrib

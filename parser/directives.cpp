@@ -34,11 +34,6 @@ Token Interpreter::next_raw() {
     return Token{};
 }
 
-const Token& Interpreter::peek() {
-    if (pushback_.empty()) pushback_.push_back(next());
-    return pushback_.back();
-}
-
 void Interpreter::unget(const Token& t) { pushback_.push_back(t); }
 
 Token Interpreter::next() {
@@ -51,10 +46,25 @@ Token Interpreter::next() {
         Token t = next_raw();
         if (t.kind == TokenKind::Directive) {
             run_directive(t);
-        } else if (t.kind == TokenKind::Word && lookup(t.text) &&
-                   std::holds_alternative<std::shared_ptr<Macro>>(*lookup(t.text))) {
-            auto m = std::get<std::shared_ptr<Macro>>(*lookup(t.text));
-            invoke_macro(t, *m);
+        } else if (t.kind == TokenKind::Word) {
+            const Value* v = lookup(t);
+            if (!v) return t;
+            if (auto m = std::get_if<std::shared_ptr<Macro>>(v)) {
+                std::shared_ptr<Macro> keep = *m;
+                invoke_macro(t, *keep);
+            } else if (auto u = std::get_if<std::shared_ptr<UnsupportedValue>>(v)) {
+                unsupported(t, (*u)->feature);
+            } else if (auto a = std::get_if<std::shared_ptr<ArrayValue>>(v)) {
+                const Frame& f = frames_.back();
+                const auto& toks = sources_.file(f.file).tokens;
+                if (f.pos < f.end && is_punct(toks[f.pos], '[')) {
+                    std::shared_ptr<ArrayValue> keep = *a;
+                    return subscript_token(t, *keep);
+                }
+                return t;
+            } else {
+                return t;
+            }
         } else {
             return t;
         }
@@ -65,6 +75,49 @@ Token Interpreter::next() {
             return p;
         }
     }
+}
+
+// POV-Ray reads subscripts in its tokenizer, so an element can stand wherever an identifier
+// can (`texture { T[i][j] }`). The element is bound to a name like "T[1][2]" (which no scene
+// can spell) and that name is returned; a small rotating pool bounds the memory.
+Token Interpreter::subscript_token(const Token& name, const ArrayValue& array) {
+    std::string label(name.text);
+    size_t flat = 0;
+    uint32_t end_offset = name.offset + name.length;
+    for (size_t d = 0; d < array.dims.size(); ++d) {
+        if (!is_punct(peek(), '[')) break;
+        next();
+        Token at = peek();
+        int i = int(parse_float());
+        Token close = next();
+        if (!is_punct(close, ']')) expected("']' after the subscript", close);
+        if (i < 0 || i >= array.dims[d]) {
+            error(at, "array subscript " + std::to_string(i) + " out of range 0.." +
+                          std::to_string(array.dims[d] - 1));
+        }
+        flat = flat * size_t(array.dims[d]) + size_t(i);
+        label += "[" + std::to_string(i) + "]";
+        if (close.file == name.file) end_offset = close.offset + close.length;
+    }
+    constexpr size_t kPool = 256;
+    if (element_names_.size() < kPool) element_names_.resize(kPool);
+    std::string& slot = element_names_[next_element_name_];
+    next_element_name_ = (next_element_name_ + 1) % kPool;
+    if (!slot.empty()) scopes_[0].erase(sources_.intern(slot));
+    slot = label;
+    uint32_t sym = sources_.intern(slot);
+    const Value& item = array.items[flat];
+    if (auto u = std::get_if<std::shared_ptr<UnsupportedValue>>(&item)) {
+        Token whole = name;
+        whole.length = end_offset - name.offset;
+        unsupported(whole, (*u)->feature);
+    }
+    if (!std::holds_alternative<std::monostate>(item)) bind(scopes_[0], sym).value = item;
+    Token t = name;
+    t.text = slot;
+    t.sym = sym;
+    t.length = end_offset - name.offset;
+    return t;
 }
 
 bool Interpreter::accept_punct(char c) {
@@ -83,6 +136,39 @@ bool Interpreter::accept_semicolon() {
     Frame& f = frames_.back();
     const auto& toks = sources_.file(f.file).tokens;
     if (f.pos < f.end && is_punct(toks[f.pos], ';')) {
+        ++f.pos;
+        return true;
+    }
+    return false;
+}
+
+bool Interpreter::raw_next_is_punct(char c) {
+    if (!pushback_.empty()) return is_punct(pushback_.back(), c);
+    if (frames_.empty()) return false;
+    const Frame& f = frames_.back();
+    const auto& toks = sources_.file(f.file).tokens;
+    return f.pos < f.end && is_punct(toks[f.pos], c);
+}
+
+bool Interpreter::accept_raw_punct(char c) {
+    if (!pushback_.empty()) return accept_punct(c);
+    if (frames_.empty()) return false;
+    Frame& f = frames_.back();
+    const auto& toks = sources_.file(f.file).tokens;
+    if (f.pos < f.end && is_punct(toks[f.pos], c)) {
+        ++f.pos;
+        return true;
+    }
+    return false;
+}
+
+bool Interpreter::accept_raw_word(std::string_view w) {
+    // Like accept_semicolon: a directive after the item must not run before it is stored.
+    if (!pushback_.empty()) return accept_word(w);
+    if (frames_.empty()) return false;
+    Frame& f = frames_.back();
+    const auto& toks = sources_.file(f.file).tokens;
+    if (f.pos < f.end && is_word(toks[f.pos], w)) {
         ++f.pos;
         return true;
     }
@@ -143,9 +229,10 @@ void Interpreter::expected(std::string_view what, const Token& found) {
 
 // ------------------------------------------------------------------ symbols
 
-Interpreter::Binding* Interpreter::find_binding(const std::string& name, int* scope_index) {
+Interpreter::Binding* Interpreter::find_binding(uint32_t sym, int* scope_index) {
+    if (sym == 0 || sym >= bound_.size() || !bound_[sym]) return nullptr;
     for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
-        auto it = scopes_[i].find(name);
+        auto it = scopes_[i].find(sym);
         if (it != scopes_[i].end()) {
             if (scope_index) *scope_index = i;
             return &it->second;
@@ -154,18 +241,25 @@ Interpreter::Binding* Interpreter::find_binding(const std::string& name, int* sc
     return nullptr;
 }
 
-const Value* Interpreter::lookup(std::string_view name) const {
-    std::string key(name);
+const Value* Interpreter::lookup_symbol(uint32_t sym) const {
+    // Most words are keywords, never bound: answered without touching the scopes.
+    if (sym == 0 || sym >= bound_.size() || !bound_[sym]) return nullptr;
     for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
-        auto it = scopes_[i].find(key);
+        auto it = scopes_[i].find(sym);
         if (it != scopes_[i].end()) return &it->second.value;
     }
     return nullptr;
 }
 
+const Value* Interpreter::lookup(std::string_view name) const {
+    return lookup_symbol(sources_.find_symbol(name));
+}
+
 void Interpreter::declare(const std::string& name, Value v, bool local, const Token& at) {
+    (void)at;
+    uint32_t sym = sources_.intern(name);
     if (local) {
-        Binding& b = scopes_.back()[name];
+        Binding& b = bind(scopes_.back(), sym);
         b.value = std::move(v);
         b.ref_scope = -1;
         return;
@@ -173,8 +267,8 @@ void Interpreter::declare(const std::string& name, Value v, bool local, const To
     // #declare: an existing macro parameter passed by reference writes through to the
     // caller's variable; otherwise the identifier is global.
     int index = -1;
-    Binding* b = find_binding(name, &index);
-    std::string target = name;
+    Binding* b = find_binding(sym, &index);
+    uint32_t target = sym;
     while (b && b->ref_scope >= 0) {
         int target_scope = b->ref_scope;
         target = b->ref_name;
@@ -192,7 +286,7 @@ void Interpreter::declare(const std::string& name, Value v, bool local, const To
         b->value = std::move(v);
         return;
     }
-    scopes_[0][target].value = std::move(v);
+    bind(scopes_[0], target).value = std::move(v);
 }
 
 // ------------------------------------------------------------------ directives
@@ -205,10 +299,10 @@ void Interpreter::run_directive(const Token& t) {
         expect_punct('(');
         Token name = next_raw();
         if (name.kind != TokenKind::Word) expected("an identifier", name);
-        bool defined = lookup(name.text) != nullptr;
+        bool defined = lookup(name) != nullptr;
         if (defined && is_punct(peek(), '[')) {
             // #ifdef(A[i]): defined when that element has been assigned.
-            const Value* v = lookup(name.text);
+            const Value* v = lookup(name);
             auto arr = std::get_if<std::shared_ptr<ArrayValue>>(v);
             size_t flat = 0;
             while (accept_punct('[')) {
@@ -248,7 +342,7 @@ void Interpreter::run_directive(const Token& t) {
         expect_punct('(');
         parse_numeric();
         if (d == "range") {
-            expect_punct(',');
+            accept_punct(',');
             parse_float();
         }
         expect_punct(')');
@@ -272,7 +366,7 @@ void Interpreter::run_directive(const Token& t) {
     if (d == "undef") {
         Token name = next_raw();
         if (name.kind != TokenKind::Word) expected("an identifier", name);
-        std::string key(name.text);
+        uint32_t key = sources_.intern(name.text);
         for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
             if (scopes_[i].erase(key)) break;
         }
@@ -379,7 +473,7 @@ void Interpreter::directive_switch(const Token& t) {
             double a = parse_numeric().c[0];
             bool match;
             if (n == "range") {
-                expect_punct(',');
+                accept_punct(',');
                 double b = parse_numeric().c[0];
                 match = value >= a && value <= b;
             } else {
@@ -415,9 +509,9 @@ void Interpreter::directive_for(const Token& t) {
     expect_punct('(');
     Token var = next_raw();
     if (var.kind != TokenKind::Word) expected("a loop variable", var);
-    expect_punct(',');
+    accept_punct(',');
     double start = parse_float();
-    expect_punct(',');
+    accept_punct(',');
     double end = parse_float();
     double step = 1;
     if (accept_punct(',')) step = parse_float();
@@ -463,6 +557,12 @@ void Interpreter::directive_end(const Token& t) {
 
 void Interpreter::directive_declare(const Token& t, bool local) {
     Token name = next_raw();
+    if (is_word(name, "deprecated")) {
+        // #declare deprecated [once] ["message"] NAME = ...: the note is for POV-Ray's console.
+        name = next_raw();
+        if (is_word(name, "once")) name = next_raw();
+        if (name.kind == TokenKind::String) name = next_raw();
+    }
     if (name.kind != TokenKind::Word) expected("an identifier after #" + std::string(t.text), name);
     std::string key(name.text);
     // Element assignment: #declare A[i][j] = value
@@ -473,8 +573,29 @@ void Interpreter::directive_declare(const Token& t, bool local) {
         expect_punct(']');
     }
     expect_punct('=', "after the identifier");
-    Token first = next();
-    Value v = parse_declared_value(first);
+    // A right-hand side using an unsupported feature does not stop the parse (include files
+    // declare many things a scene never uses); the identifier errors only when used.
+    const size_t frame_count = frames_.size(), cond_count = conds_.size();
+    const size_t scope_count = scopes_.size();
+    const int macro_depth = macro_depth_;
+    const bool can_recover = pushback_.empty();
+    const size_t rhs_pos = frames_.back().pos;
+    Value v;
+    try {
+        Token first = next();
+        v = parse_declared_value(first);
+    } catch (const ParseError& e) {
+        if (e.kind() != ParseError::Kind::Unsupported || !can_recover) throw;
+        frames_.resize(frame_count);
+        conds_.resize(cond_count);
+        scopes_.resize(scope_count);
+        macro_depth_ = macro_depth;
+        pushback_.clear();
+        frames_.back().pos = rhs_pos;
+        skip_declaration_rest();
+        std::string feature = e.message().substr(std::string("unsupported: ").size());
+        v = std::make_shared<UnsupportedValue>(UnsupportedValue{feature});
+    }
     if (!indices.empty()) {
         const Value* existing = lookup(key);
         auto arr = existing ? std::get_if<std::shared_ptr<ArrayValue>>(existing) : nullptr;
@@ -493,6 +614,33 @@ void Interpreter::directive_declare(const Token& t, bool local) {
         declare(key, std::move(v), local, name);
     }
     accept_semicolon();
+}
+
+// Skips the rest of a declaration's right-hand side without running it: up to a ';' or the
+// brace that closes its block, or to the next directive of an expression with no ';'.
+void Interpreter::skip_declaration_rest() {
+    Frame& f = frames_.back();
+    const auto& toks = sources_.file(f.file).tokens;
+    int depth = 0;
+    while (f.pos < f.end && toks[f.pos].kind != TokenKind::End) {
+        const Token& t = toks[f.pos];
+        if (depth == 0 && t.kind == TokenKind::Directive) return;
+        ++f.pos;
+        if (t.kind != TokenKind::Punct || t.length != 1) continue;
+        char c = t.text[0];
+        if (c == '{' || c == '(' || c == '[') {
+            ++depth;
+        } else if (c == '}' || c == ')' || c == ']') {
+            if (--depth <= 0) {
+                depth = 0;
+                // A layered texture continues with another `texture {`.
+                if (c == '}' && !(f.pos < f.end && is_word(toks[f.pos], "texture"))) return;
+            }
+        } else if (c == ';' && depth == 0) {
+            --f.pos;  // left for accept_semicolon
+            return;
+        }
+    }
 }
 
 size_t Interpreter::find_matching_end(const Token& at) {
@@ -567,7 +715,7 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
         const Token& a = peek();
         if (a.kind == TokenKind::Word) {
             int scope = -1;
-            std::string key(a.text);
+            uint32_t key = a.sym;
             Binding* existing = find_binding(key, &scope);
             if (existing && !std::holds_alternative<std::shared_ptr<Macro>>(existing->value)) {
                 Token id = next();
@@ -576,7 +724,7 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
                     b.value = existing->value;
                     b.ref_scope = scope;
                     b.ref_name = key;
-                    params[m.params[i]] = std::move(b);
+                    bind(params, sources_.intern(m.params[i])) = std::move(b);
                     if (i + 1 < m.params.size()) accept_punct(',');
                     continue;
                 }
@@ -584,9 +732,9 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
             }
         }
         b.value = parse_declared_value(next());
-        params[m.params[i]] = std::move(b);
+        bind(params, sources_.intern(m.params[i])) = std::move(b);
         if (i + 1 < m.params.size() && !is_punct(peek(), ')')) {
-            expect_punct(',', "between macro arguments");
+            accept_punct(',');
         }
     }
     expect_punct(')', "after the arguments of '" + m.name + "'");

@@ -47,8 +47,8 @@ Vector3 rotate_vector(const Vector3& v, const Vector3& degrees) {
 Vector3 axis_rotate(const Vector3& v, const Vector3& axis, double degrees) {
     Vector3 k = normalize(axis);
     double a = degrees * kPi / 180, c = std::cos(a), s = std::sin(a);
-    // Left-handed rotation to match POV-Ray's vaxis_rotate (same sense as rotate).
-    return v * c + cross(v, k) * s + k * (dot(k, v) * (1 - c));
+    // Same sense as `rotate`: vaxis_rotate(x, y, 90) is -z in POV-Ray 3.7.
+    return v * c + cross(k, v) * s + k * (dot(k, v) * (1 - c));
 }
 
 }  // namespace
@@ -71,6 +71,9 @@ const char* type_name(const Value& v) {
         case 13: return "macro";
         case 14: return "material";
         case 15: return "color_map";
+        case 16: return "sky_sphere";
+        case 17: return "fog";
+        case 18: return "unsupported feature";
     }
     return "value";
 }
@@ -78,9 +81,12 @@ const char* type_name(const Value& v) {
 // A small recursive-descent evaluator bound to the interpreter's token stream.
 class ExpressionParser {
 public:
-    ExpressionParser(Interpreter& in, bool no_gt) : in_(in), no_gt_(no_gt) {}
+    ExpressionParser(Interpreter& in, bool no_gt, bool full = true)
+        : in_(in), no_gt_(no_gt), full_(full) {}
 
-    Value parse() { return ternary(); }
+    // POV-Ray's Parse_Float/Parse_Vector read only sums of terms (no comparisons, logic or
+    // ?: outside parentheses), which is what lets `box { <a> <b> }` read two vectors.
+    Value parse() { return full_ ? ternary() : additive(); }
 
 private:
     static bool numeric(const Value& v) { return std::holds_alternative<Numeric>(v); }
@@ -249,9 +255,10 @@ private:
             Token at = in_.peek();
             Numeric c = num(ExpressionParser(in_, true).parse(), at);
             r.c[r.size++] = c.c[0];
-            Token t = in_.next();
-            if (in_.is_punct(t, '>')) break;
-            if (!in_.is_punct(t, ',')) in_.expected("',' or '>' in a vector", t);
+            // Commas between components are optional, as POV-Ray reads `< -1 0 0 >`.
+            if (in_.accept_punct('>')) break;
+            // A trailing comma before '>' is accepted too.
+            if (in_.accept_punct(',') && in_.accept_punct('>')) break;
         }
         if (r.size < 2) in_.error(open, "a vector needs at least 2 components");
         return r;
@@ -271,7 +278,7 @@ private:
         in_.expect_punct('(', "after '" + std::string(t.text) + "'");
         double a[3] = {0, 0, 0};
         for (int i = 0; i < arity; ++i) {
-            if (i > 0) in_.expect_punct(',');
+            if (i > 0) in_.accept_punct(',');
             a[i] = arg_float();
         }
         in_.expect_punct(')');
@@ -300,15 +307,18 @@ private:
 
     Interpreter& in_;
     bool no_gt_;
+    bool full_;
 };
 
 Value ExpressionParser::word(const Token& t) {
     const std::string_view w = t.text;
     // User identifiers shadow nothing built in: POV-Ray reserves keywords.
-    if (const Value* v = in_.lookup(w)) {
+    if (const Value* v = in_.lookup(t)) {
         Value value = *v;
         while (auto arr = std::get_if<std::shared_ptr<ArrayValue>>(&value)) {
-            if (!in_.is_punct(in_.peek(), '[')) break;
+            // Checked on the raw stream: `#declare D = Array` followed by a directive must not
+            // run that directive before D exists.
+            if (!in_.raw_next_is_punct('[')) break;
             std::shared_ptr<ArrayValue> a = *arr;
             size_t flat = 0;
             for (size_t d = 0; d < a->dims.size(); ++d) {
@@ -422,9 +432,9 @@ Value ExpressionParser::word(const Token& t) {
     if (w == "select") {
         in_.expect_punct('(');
         double c = arg_float();
-        in_.expect_punct(',');
+        in_.accept_punct(',');
         Value a = ExpressionParser(in_, false).parse();
-        in_.expect_punct(',');
+        in_.accept_punct(',');
         Value b = ExpressionParser(in_, false).parse();
         Value r;
         if (in_.accept_punct(',')) {
@@ -464,7 +474,7 @@ Value ExpressionParser::word(const Token& t) {
     if (w == "vdot" || w == "vcross" || w == "vrotate") {
         in_.expect_punct('(');
         Vector3 a = arg_vector();
-        in_.expect_punct(',');
+        in_.accept_punct(',');
         Vector3 b = arg_vector();
         in_.expect_punct(')');
         if (w == "vdot") return Numeric::scalar(dot(a, b));
@@ -474,9 +484,9 @@ Value ExpressionParser::word(const Token& t) {
     if (w == "vaxis_rotate") {
         in_.expect_punct('(');
         Vector3 a = arg_vector();
-        in_.expect_punct(',');
+        in_.accept_punct(',');
         Vector3 b = arg_vector();
-        in_.expect_punct(',');
+        in_.accept_punct(',');
         double deg = arg_float();
         in_.expect_punct(')');
         return Numeric::vector(axis_rotate(a, b, deg));
@@ -510,19 +520,19 @@ Value ExpressionParser::word(const Token& t) {
         in_.expect_punct('(');
         Token id = in_.next();
         in_.expect_punct(')');
-        return Numeric::scalar(in_.lookup(id.text) ? 1 : 0);
+        return Numeric::scalar(in_.lookup(id) ? 1 : 0);
     }
     if (w == "dimensions" || w == "dimension_size") {
         in_.expect_punct('(');
         Token id = in_.next();
-        const Value* v = in_.lookup(id.text);
+        const Value* v = in_.lookup(id);
         auto arr = v ? std::get_if<std::shared_ptr<ArrayValue>>(v) : nullptr;
         if (!arr) in_.error(id, "'" + std::string(id.text) + "' is not an array");
         double r;
         if (w == "dimensions") {
             r = double((*arr)->dims.size());
         } else {
-            in_.expect_punct(',');
+            in_.accept_punct(',');
             int d = int(arg_float());
             r = (d >= 1 && d <= int((*arr)->dims.size())) ? (*arr)->dims[d - 1] : 0;
         }
@@ -540,14 +550,30 @@ Value ExpressionParser::word(const Token& t) {
         in_.unget(t);
         return in_.parse_colour();
     }
+    static const char* const kUnsupportedFunctions[] = {"vturbulence", "trace", "inside",
+                                                        "eval_pigment", "now", "datetime"};
+    for (const char* f : kUnsupportedFunctions) {
+        if (w == f) in_.unsupported(t, w);
+    }
+    if (w.find('[') != std::string_view::npos) {
+        in_.error(t, "array element '" + std::string(w) + "' used before it was set");
+    }
     return in_.parse_item_value(t);
 }
 
 Value Interpreter::parse_expression_value() { return ExpressionParser(*this, false).parse(); }
+Value Interpreter::parse_value_additive() { return ExpressionParser(*this, false, false).parse(); }
 
 Numeric Interpreter::parse_numeric(bool no_gt) {
     Token at = peek();
-    Value v = ExpressionParser(*this, no_gt).parse();
+    Value v = ExpressionParser(*this, no_gt, false).parse();
+    if (auto n = std::get_if<Numeric>(&v)) return *n;
+    error(at, std::string("expected a numeric expression but found ") + type_name(v));
+}
+
+Numeric Interpreter::parse_express() {
+    Token at = peek();
+    Value v = ExpressionParser(*this, false).parse();
     if (auto n = std::get_if<Numeric>(&v)) return *n;
     error(at, std::string("expected a numeric expression but found ") + type_name(v));
 }
@@ -563,7 +589,11 @@ double Interpreter::parse_condition() {
         unget(open);
         return parse_float();
     }
-    Numeric n = parse_numeric();
+    Token at = peek();
+    Value v = ExpressionParser(*this, false).parse();
+    const Numeric* np = std::get_if<Numeric>(&v);
+    if (!np) error(at, std::string("expected a numeric expression but found ") + type_name(v));
+    Numeric n = *np;
     expect_punct(')', "to close the condition");
     return n.c[0];
 }
@@ -575,7 +605,7 @@ std::string Interpreter::parse_string() {
     if (t.kind == TokenKind::String) return std::string(t.text);
     if (t.kind == TokenKind::Word) {
         std::string_view w = t.text;
-        if (lookup(w)) {
+        if (lookup(t)) {
             unget(t);
             Value val = ExpressionParser(*this, false).parse();
             if (auto s = std::get_if<std::string>(&val)) return *s;
@@ -584,14 +614,15 @@ std::string Interpreter::parse_string() {
         if (w == "str") {
             expect_punct('(');
             double v = parse_float();
-            expect_punct(',');
+            accept_punct(',');
             int width = int(parse_float());
-            expect_punct(',');
+            accept_punct(',');
             int prec = int(parse_float());
             expect_punct(')');
             char buf[512];
             if (prec < 0) {
-                std::snprintf(buf, sizeof buf, width < 0 ? "%0*g" : "%*g", std::abs(width), v);
+                // A negative precision means printf's default (6 digits), as POV-Ray prints.
+                std::snprintf(buf, sizeof buf, width < 0 ? "%0*f" : "%*f", std::abs(width), v);
             } else {
                 std::snprintf(buf, sizeof buf, width < 0 ? "%0*.*f" : "%*.*f", std::abs(width),
                               prec, v);
@@ -601,13 +632,13 @@ std::string Interpreter::parse_string() {
         if (w == "vstr") {
             expect_punct('(');
             double dims = parse_float();
-            expect_punct(',');
+            accept_punct(',');
             Numeric v = parse_numeric();
-            expect_punct(',');
+            accept_punct(',');
             std::string sep = parse_string();
-            expect_punct(',');
+            accept_punct(',');
             int width = int(parse_float());
-            expect_punct(',');
+            accept_punct(',');
             int prec = int(parse_float());
             expect_punct(')');
             std::string out;
@@ -636,9 +667,9 @@ std::string Interpreter::parse_string() {
         if (w == "substr") {
             expect_punct('(');
             std::string s = parse_string();
-            expect_punct(',');
+            accept_punct(',');
             int start = int(parse_float());
-            expect_punct(',');
+            accept_punct(',');
             int len = int(parse_float());
             expect_punct(')');
             if (start < 1 || start - 1 + len > int(s.size()) || len < 0) {
@@ -657,14 +688,47 @@ std::string Interpreter::parse_string() {
     expected("a string", t);
 }
 
-bool Interpreter::parse_bool_opt() {
-    // `hollow`, `hollow on`, `hollow false`: a following number or boolean word is the value.
+float Interpreter::parse_map_value(bool average) {
+    // `average` map entries may leave out their weight (1 by default).
+    if (average && !starts_float(peek())) return 1.0f;
+    return float(parse_float());
+}
+
+void Interpreter::require_operand(std::string_view what) {
+    // Commas are optional, so a missing value shows up as the block's closing token.
     const Token& t = peek();
-    if (t.kind == TokenKind::Number || is_word(t, "on") || is_word(t, "off") ||
-        is_word(t, "true") || is_word(t, "false") || is_word(t, "yes") || is_word(t, "no") ||
-        is_punct(t, '(') || is_punct(t, '!')) {
-        return parse_float() != 0;
+    if (t.kind == TokenKind::End || is_punct(t, '}') || is_punct(t, ']') || is_punct(t, ')') ||
+        is_punct(t, ',') || is_punct(t, ';')) {
+        expected(what, t);
     }
+}
+
+bool Interpreter::starts_float(const Token& t) {
+    if (t.kind == TokenKind::Number) return true;
+    if (t.kind == TokenKind::Punct) {
+        return is_punct(t, '(') || is_punct(t, '-') || is_punct(t, '+') || is_punct(t, '!');
+    }
+    if (t.kind != TokenKind::Word) return false;
+    if (const Value* v = lookup(t)) {
+        auto n = std::get_if<Numeric>(v);
+        return n && n->size == 1;
+    }
+    static const char* const kFloatWords[] = {
+        "on", "off", "true", "false", "yes", "no", "pi", "tau", "clock", "abs", "acos",
+        "asin", "atan", "atan2", "ceil", "cos", "cosh", "degrees", "radians", "div", "exp",
+        "floor", "int", "ln", "log", "max", "min", "mod", "pow", "rand", "select", "sin",
+        "sinh", "sqrt", "tan", "tanh", "vdot", "vlength", "image_width", "image_height",
+        "frame_number", "clock_delta", "version", "strlen", "val", "asc", "defined",
+        "dimension_size", "seed"};
+    for (const char* w : kFloatWords) {
+        if (t.text == w) return true;
+    }
+    return false;
+}
+
+bool Interpreter::parse_bool_opt() {
+    // `hollow`, `hollow on`, `hollow false`: a following float expression is the value.
+    if (starts_float(peek())) return parse_float() != 0;
     return true;
 }
 

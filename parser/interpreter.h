@@ -27,11 +27,17 @@ public:
     Scene run(int root_file);
 
     // ---- token stream (tokens.cpp)
-    const Token& peek();
+    const Token& peek() {
+        if (pushback_.empty()) pushback_.push_back(next());
+        return pushback_.back();
+    }
     Token next();
     void unget(const Token& t);
     bool accept_punct(char c);
     bool accept_word(std::string_view w);
+    bool accept_raw_word(std::string_view w);
+    bool accept_raw_punct(char c);
+    bool raw_next_is_punct(char c);  // without running a directive behind it
     bool accept_semicolon();
     void expect_punct(char c, std::string_view what = {});
     bool is_punct(const Token& t, char c) const {
@@ -50,11 +56,17 @@ public:
 
     // ---- symbols
     const Value* lookup(std::string_view name) const;
+    const Value* lookup(const Token& t) const {
+        return t.sym ? lookup_symbol(t.sym) : lookup(t.text);
+    }
+    const Value* lookup_symbol(uint32_t sym) const;
     void declare(const std::string& name, Value v, bool local, const Token& at);
 
     // ---- expressions (expressions.cpp)
     Value parse_expression_value();       // float, vector, colour or string
-    Numeric parse_numeric(bool no_gt = false);
+    Value parse_value_additive();         // same without comparisons (array items)
+    Numeric parse_numeric(bool no_gt = false);  // POV-Ray's Parse_Float/Vector level
+    Numeric parse_express();                    // full expression (Parse_Express)
     double parse_float();
     // A directive's parenthesised condition; reads nothing past the ')' so that the tokens
     // after it are not consumed before the directive decides whether to skip them.
@@ -63,7 +75,10 @@ public:
     std::string parse_string();
     Numeric parse_colour();               // colour keyword forms, rgb, identifiers
     Colour parse_colour_value();
-    bool parse_bool_opt();                // optional boolean after a flag keyword
+    bool parse_bool_opt();
+    bool starts_float(const Token& t);  // can `t` begin a float expression?
+    void require_operand(std::string_view what);
+    float parse_map_value(bool average);  // the value of a *_map entry  // error if the block ends here                // optional boolean after a flag keyword
 
     // ---- scene items (objects.cpp, textures.cpp, scene_items.cpp)
     bool try_parse_object(const Token& t, Object& out);
@@ -73,9 +88,12 @@ public:
     Transform parse_transform_block();
     void apply_transform(Object& obj, const Transform& t);
     LayeredTexture parse_texture_block();   // after 'texture'
+    void parse_texture_body(LayeredTexture& layers, char terminator);
     Pigment parse_pigment_block();          // after 'pigment'
+    void parse_pigment_body(Pigment& p, char terminator);
     Finish parse_finish_block();            // after 'finish'
     Normal parse_normal_block();            // after 'normal'
+    void parse_normal_body(Normal& n, char terminator);
     Interior parse_interior_block();        // after 'interior'
     ColourMap parse_colour_map_block();     // after 'color_map'
     bool try_pattern_keyword(const Token& t, PatternSpec& spec);
@@ -86,10 +104,11 @@ public:
     Value parse_declared_value(const Token& first);
     Value parse_item_value(const Token& t);
     Camera finish_camera(const CameraSpec& spec);
-    void parse_sky_sphere();
-    void parse_fog();
+    SkySphere parse_sky_sphere();
+    Fog parse_fog();
     void parse_mesh(Object& out);
     void parse_mesh2(Object& out);
+    int parse_count();
     int new_random_stream(int seed);
     double draw_random(int stream, const Token& at);
 
@@ -118,11 +137,20 @@ private:
         Value value;
         // Macro parameters passed an identifier alias the caller's variable.
         int ref_scope = -1;
-        std::string ref_name;
+        uint32_t ref_name = 0;
     };
-    using Scope = std::unordered_map<std::string, Binding>;
+    using Scope = std::unordered_map<uint32_t, Binding>;
+    // Inserts (or finds) `sym` in `scope`, remembering that the name has been bound somewhere.
+    Binding& bind(Scope& scope, uint32_t sym) {
+        if (sym >= bound_.size()) bound_.resize(sym + 1024, 0);
+        bound_[sym] = 1;
+        return scope[sym];
+    }
 
     Token next_raw();
+    // `A[i][j]` read as one token standing for the element (see next()).
+    Token subscript_token(const Token& name, const ArrayValue& array);
+    void skip_declaration_rest();
     void run_directive(const Token& t);
     void directive_if(const Token& t, bool taken_value);
     void skip_conditional(const Token& at, bool stop_at_else);
@@ -137,7 +165,7 @@ private:
     void directive_default();
     void invoke_macro(const Token& name, const Macro& m);
     size_t find_matching_end(const Token& at);
-    Binding* find_binding(const std::string& name, int* scope_index = nullptr);
+    Binding* find_binding(uint32_t sym, int* scope_index = nullptr);
     void parse_top_level_item(const Token& t);
     std::string resolve_include(const std::string& name, int from_file) const;
     void finish_object(Object& obj);
@@ -148,6 +176,7 @@ private:
     std::vector<Frame> frames_;
     std::vector<Cond> conds_;
     std::vector<Scope> scopes_;
+    std::vector<uint8_t> bound_;  // by symbol: ever bound (keywords never are)
     std::vector<Token> pushback_;
     std::vector<std::unique_ptr<RandomStream>> streams_;
     int version_ = 362;
@@ -156,6 +185,8 @@ private:
     bool camera_seen_ = false;
     Texture default_texture_;
     std::string scene_dir_;
+    std::vector<std::string> element_names_;  // rotating names bound to array elements
+    size_t next_element_name_ = 0;
     friend class ExpressionParser;
 };
 

@@ -21,7 +21,7 @@ bool is_digit(char c) { return c >= '0' && c <= '9'; }
                      sm.location(file, offset));
 }
 
-void lex(const SourceManager& sm, int file_index, SourceFile& f) {
+void lex(SourceManager& sm, int file_index, SourceFile& f) {
     const std::string& s = f.text;
     const size_t n = s.size();
     size_t i = 0;
@@ -85,7 +85,8 @@ void lex(const SourceManager& sm, int file_index, SourceFile& f) {
         }
         if (is_ident_start(c)) {
             while (i < n && is_ident(s[i])) ++i;
-            push(TokenKind::Word, start, i - start);
+            Token* word = push(TokenKind::Word, start, i - start);
+            word->sym = sm.intern(word->text);
             continue;
         }
         if (c == '#') {
@@ -99,7 +100,9 @@ void lex(const SourceManager& sm, int file_index, SourceFile& f) {
                 i = j;
                 continue;
             }
-            lex_error(sm, file_index, uint32_t(start), 1, "expected a directive name after '#'");
+            // A stray '#' before a line break or brace: POV-Ray reads past it.
+            ++i;
+            continue;
         }
         if (c == '"') {
             ++i;
@@ -173,6 +176,19 @@ int SourceManager::add(std::string path, std::string text) {
     files_.push_back(std::move(f));
     lex(*this, index, *files_.back());
     return index;
+}
+
+uint32_t SourceManager::intern(std::string_view name) {
+    auto it = symbols_.find(std::string(name));
+    if (it != symbols_.end()) return it->second;
+    uint32_t id = uint32_t(symbols_.size()) + 1;
+    symbols_.emplace(std::string(name), id);
+    return id;
+}
+
+uint32_t SourceManager::find_symbol(std::string_view name) const {
+    auto it = symbols_.find(std::string(name));
+    return it == symbols_.end() ? 0 : it->second;
 }
 
 SourceLoc SourceManager::location(int file, uint32_t offset) const {

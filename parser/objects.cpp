@@ -72,7 +72,7 @@ bool Interpreter::try_transform(const Token& t, Transform& out) {
         expect_punct('<', "to start the 12 matrix values");
         Real m[12];
         for (int i = 0; i < 12; ++i) {
-            if (i) expect_punct(',', "between matrix values");
+            if (i) accept_punct(',');
             m[i] = parse_numeric(true).c[0];
         }
         expect_punct('>', "after the 12 matrix values");
@@ -84,7 +84,7 @@ bool Interpreter::try_transform(const Token& t, Transform& out) {
             out = parse_transform_block();
         } else {
             next();
-            const Value* v = lookup(n.text);
+            const Value* v = lookup(n);
             auto tp = v ? std::get_if<std::shared_ptr<Transform>>(v) : nullptr;
             if (!tp) expected("a transform identifier or '{'", n);
             out = **tp;
@@ -107,7 +107,7 @@ Transform Interpreter::parse_transform_block() {
         } else if (is_word(t, "inverse")) {
             result = result.inverse();
         } else if (t.kind == TokenKind::Word) {
-            const Value* v = lookup(t.text);
+            const Value* v = lookup(t);
             auto tp = v ? std::get_if<std::shared_ptr<Transform>>(v) : nullptr;
             if (!tp) expected("a transformation or '}'", t);
             result = result.then(**tp);
@@ -154,9 +154,9 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
                 obj.interior = parse_interior_block();
             } else if (try_transform(m, tr)) {
                 apply_transform(obj, tr);
-            } else if (m.kind == TokenKind::Word && lookup(m.text) &&
-                       std::holds_alternative<std::shared_ptr<Material>>(*lookup(m.text))) {
-                auto mat = std::get<std::shared_ptr<Material>>(*lookup(m.text));
+            } else if (m.kind == TokenKind::Word && lookup(m) &&
+                       std::holds_alternative<std::shared_ptr<Material>>(*lookup(m))) {
+                auto mat = std::get<std::shared_ptr<Material>>(*lookup(m));
                 for (auto l : mat->texture) obj.texture.push_back(l);
                 if (mat->interior) obj.interior = mat->interior;
             } else {
@@ -231,7 +231,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     auto copy_identifier = [&]() -> bool {
         const Token& p = peek();
         if (p.kind != TokenKind::Word) return false;
-        const Value* v = lookup(p.text);
+        const Value* v = lookup(p);
         auto o = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr;
         if (!o) return false;
         next();
@@ -244,8 +244,10 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         open();
         if (!copy_identifier()) {
             Sphere s;
+            require_operand("the sphere's centre");
             s.centre = parse_vector();
-            expect_punct(',', "between the sphere's centre and radius");
+            accept_punct(',');
+            require_operand("the sphere's radius");
             s.radius = parse_float();
             out.shape = s;
         }
@@ -253,8 +255,10 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         open();
         if (!copy_identifier()) {
             Box b;
+            require_operand("the box's first corner");
             b.corner1 = parse_vector();
-            expect_punct(',', "between the box corners");
+            accept_punct(',');
+            require_operand("the box's second corner");
             b.corner2 = parse_vector();
             out.shape = b;
         }
@@ -266,7 +270,8 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             Vector3 n = parse_vector();
             if (length(n) < 1e-10) error(at, "degenerate plane normal");
             p.normal = normalize(n);
-            expect_punct(',', "between the plane's normal and distance");
+            accept_punct(',');
+            require_operand("the plane's distance");
             p.distance = parse_float();
             out.shape = p;
         }
@@ -275,9 +280,10 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             Cylinder c;
             c.base = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             c.cap = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
+            require_operand("the cylinder's radius");
             c.radius = parse_float();
             out.shape = c;
         }
@@ -286,11 +292,11 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             Cone c;
             c.base = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             c.base_radius = parse_float();
-            expect_punct(',');
+            accept_punct(',');
             c.cap = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             c.cap_radius = parse_float();
             out.shape = c;
         }
@@ -299,7 +305,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             Torus tor;
             tor.major = parse_float();
-            expect_punct(',');
+            accept_punct(',');
             tor.minor = parse_float();
             out.shape = tor;
         }
@@ -308,9 +314,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             Disc d;
             d.centre = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             d.normal = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             d.radius = parse_float();
             if (accept_punct(',')) d.hole_radius = parse_float();
             out.shape = d;
@@ -320,7 +326,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             Triangle tri;
             for (int i = 0; i < 3; ++i) {
-                if (i) expect_punct(',');
+                if (i) accept_punct(',');
                 tri.p[i] = parse_vector();
             }
             out.shape = tri;
@@ -330,9 +336,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (!copy_identifier()) {
             SmoothTriangle tri;
             for (int i = 0; i < 3; ++i) {
-                if (i) expect_punct(',');
+                if (i) accept_punct(',');
                 tri.p[i] = parse_vector();
-                expect_punct(',');
+                accept_punct(',');
                 tri.n[i] = parse_vector();
             }
             out.shape = tri;
@@ -343,7 +349,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             Polygon poly;
             int n = int(parse_float());
             for (int i = 0; i < n; ++i) {
-                expect_punct(',');
+                accept_punct(',');
                 poly.points.push_back(parse_vector());
             }
             out.shape = poly;
@@ -386,7 +392,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "object") {
         open();
         Token id = next();
-        const Value* v = id.kind == TokenKind::Word ? lookup(id.text) : nullptr;
+        const Value* v = id.kind == TokenKind::Word ? lookup(id) : nullptr;
         if (v && std::holds_alternative<std::shared_ptr<Light>>(*v)) {
             // object { LightId }: a light source; modifiers transform it.
             Light l = *std::get<std::shared_ptr<Light>>(*v);
@@ -463,11 +469,15 @@ void Interpreter::parse_top_level_item(const Token& t) {
             return;
         }
         if (w == "sky_sphere") {
-            parse_sky_sphere();
+            scene_.sky_sphere = parse_sky_sphere();
             return;
         }
         if (w == "fog") {
-            parse_fog();
+            scene_.fogs.push_back(parse_fog());
+            return;
+        }
+        if (w == "default") {  // pre-3.0 spelling of #default
+            directive_default();
             return;
         }
         if (w == "media" || w == "atmosphere" || w == "rainbow" || w == "photons" ||
@@ -480,8 +490,20 @@ void Interpreter::parse_top_level_item(const Token& t) {
             scene_.objects.push_back(std::move(obj));
             return;
         }
-        const Value* v = lookup(w);
+        const Value* v = lookup(t);
         if (!v) error(t, "undeclared identifier '" + std::string(w) + "'");
+        // Exporters write bare object and light identifiers as statements; POV-Ray takes them.
+        if (auto o = std::get_if<std::shared_ptr<Object>>(v)) {
+            Object copy = **o;
+            copy.loc = sources_.location(t);
+            finish_object(copy);
+            scene_.objects.push_back(std::move(copy));
+            return;
+        }
+        if (auto l = std::get_if<std::shared_ptr<Light>>(v)) {
+            scene_.lights.push_back(**l);
+            return;
+        }
         error(t, "a " + std::string(type_name(*v)) + " identifier '" + std::string(w) +
                      "' cannot stand alone here (use object { " + std::string(w) + " })");
     }

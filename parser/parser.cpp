@@ -15,7 +15,7 @@ Scene Interpreter::run(int root_file) {
     scene_dir_ = std::filesystem::path(sources_.file(root_file).path).parent_path().string();
     scopes_.emplace_back();  // global #declare table
     for (const auto& [name, value] : options_.declares) {
-        scopes_[0][name].value = Numeric::scalar(value);
+        bind(scopes_[0], sources_.intern(name)).value = Numeric::scalar(value);
     }
     scopes_.emplace_back();  // the scene file's own #local table
     frames_.push_back({root_file, 0, sources_.file(root_file).tokens.size(), Frame::Kind::File,

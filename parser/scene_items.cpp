@@ -10,9 +10,10 @@ CameraSpec Interpreter::parse_camera_block() {
     if (!is_punct(open, '{')) expected("'{' after 'camera'", open);
     CameraSpec c;
     c.loc = sources_.location(open);
+    c.offset = open.offset;
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<CameraSpec>>(*v)) {
             next();
             c = *std::get<std::shared_ptr<CameraSpec>>(*v);
@@ -56,36 +57,58 @@ CameraSpec Interpreter::parse_camera_block() {
 }
 
 // POV-Ray 3.5+ applies the camera items in a fixed order whatever the order in the file:
-// right, direction, angle, up, sky, location, look_at, then transforms.
+// right, direction, angle, up, sky, location, look_at, then transforms (Parse_Camera).
 Camera Interpreter::finish_camera(const CameraSpec& s) {
+    constexpr double kEpsilon = 1e-10;
     Camera cam;
     cam.kind = s.kind;
     cam.loc = s.loc;
     Vector3 right = s.right, direction = s.direction, up = s.up;
-    if (s.has_angle) {
-        if (s.angle >= 180 && s.kind == Camera::Kind::Perspective) {
-            throw ParseError(ParseError::Kind::Syntax, "camera angle must be below 180 degrees",
-                             "camera angle must be below 180 degrees", s.loc);
+    bool projective = s.kind == Camera::Kind::Perspective ||
+                      s.kind == Camera::Kind::Orthographic;
+    if (s.has_angle && projective) {
+        if (s.angle >= 180) {
+            std::string msg = "camera angle must be below 180 degrees";
+            throw ParseError(ParseError::Kind::Syntax,
+                             format_diagnostic_at(sources_, s.loc.file, s.offset, 1, "error", msg), msg,
+                             s.loc);
         }
-        double len = length(right) / (2 * std::tan(s.angle * kPi / 360));
-        direction = normalize(direction) * len;
+        if (s.angle > 0) {
+            double len = length(right) / std::tan(s.angle * kPi / 360) / 2;
+            direction = normalize(direction) * len;
+        }
     }
     Point3 location = s.location;
     if (s.has_look_at) {
         double dl = length(direction), rl = length(right), ul = length(up);
-        // Handedness of the original frame decides the sign of `right`.
+        // The handedness of the frame before look_at decides the sign of `right`; `up` is
+        // always direction x right (not flipped), as in POV-Ray.
         double handed = dot(cross(up, direction), right);
-        direction = normalize(s.look_at - location) * dl;
-        right = normalize(cross(s.sky, direction)) * rl;
-        if (handed < 0) right = -right;
-        up = normalize(cross(direction, right)) * ul;
-        if (handed < 0) up = -up;
+        Vector3 d = s.look_at - location;
+        if (dot(d, d) < kEpsilon) {
+            std::string msg = "camera location and look_at point must be different";
+            throw ParseError(ParseError::Kind::Syntax,
+                             format_diagnostic_at(sources_, s.loc.file, s.offset, 1, "error", msg), msg,
+                             s.loc);
+        }
+        d = normalize(d);
+        Vector3 r = cross(s.sky, d);
+        // Sky parallel to the view: POV-Ray keeps the given right vector.
+        if (std::fabs(r.x) < kEpsilon && std::fabs(r.y) < kEpsilon && std::fabs(r.z) < kEpsilon) {
+            r = right;
+        }
+        r = normalize(r);
+        up = cross(d, r) * ul;
+        direction = d * dl;
+        right = r * (handed > 0 ? rl : -rl);
     }
-    if (s.kind == Camera::Kind::Orthographic && s.has_look_at &&
-        (s.has_angle || (!s.has_up && !s.has_right))) {
-        double k = length(s.look_at - location) / length(direction);
-        right = right * k;
-        up = up * k;
+    if (s.kind == Camera::Kind::Orthographic && (s.has_angle || (!s.has_up && !s.has_right))) {
+        Point3 target = s.has_look_at ? s.look_at : Point3(0, 0, 1);
+        double k1 = length(target - location), k2 = length(direction);
+        if (k1 > kEpsilon && k2 > kEpsilon) {
+            right = right * (k1 / k2);
+            up = up * (k1 / k2);
+        }
     }
     cam.location = s.transform.point(location);
     cam.direction = s.transform.vector(direction);
@@ -103,7 +126,7 @@ Light Interpreter::parse_light_block() {
     const Token& first = peek();
     bool copied = false;
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Light>>(*v)) {
             next();
             l = *std::get<std::shared_ptr<Light>>(*v);
@@ -117,6 +140,7 @@ Light Interpreter::parse_light_block() {
         l.colour = c.rgb;
     }
     bool radius_set = false, falloff_set = false;
+    bool jitter = false, circular = false, orient = false;
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) break;
@@ -153,17 +177,18 @@ Light Interpreter::parse_light_block() {
         } else if (w == "area_light") {
             AreaLight a;
             a.axis1 = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             a.axis2 = parse_vector();
-            expect_punct(',');
+            accept_punct(',');
             a.size1 = int(parse_float());
-            expect_punct(',');
+            accept_punct(',');
             a.size2 = int(parse_float());
             l.area = a;
         } else if (w == "adaptive" && l.area) l.area->adaptive = int(parse_float());
-        else if (w == "jitter" && l.area) l.area->jitter = true;
-        else if (w == "circular" && l.area) l.area->circular = true;
-        else if (w == "orient" && l.area) l.area->orient = true;
+        // These may come before area_light; kept and applied at the end.
+        else if (w == "jitter") jitter = true;
+        else if (w == "circular") circular = true;
+        else if (w == "orient") orient = true;
         else if (w == "area_illumination") parse_bool_opt();
         else if (w == "looks_like" || w == "projected_through") {
             if (w == "projected_through") unsupported(t, w);
@@ -182,6 +207,11 @@ Light Interpreter::parse_light_block() {
         } else {
             expected("a light_source item or '}'", t);
         }
+    }
+    if (l.area) {
+        l.area->jitter = l.area->jitter || jitter;
+        l.area->circular = l.area->circular || circular;
+        l.area->orient = l.area->orient || orient;
     }
     return l;
 }
@@ -224,9 +254,17 @@ void Interpreter::parse_global_settings() {
     }
 }
 
-void Interpreter::parse_sky_sphere() {
+SkySphere Interpreter::parse_sky_sphere() {
     expect_punct('{', "after 'sky_sphere'");
     SkySphere sky;
+    const Token& first = peek();
+    if (first.kind == TokenKind::Word) {
+        const Value* v = lookup(first);
+        if (v && std::holds_alternative<std::shared_ptr<SkySphere>>(*v)) {
+            next();
+            sky = *std::get<std::shared_ptr<SkySphere>>(*v);
+        }
+    }
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) break;
@@ -243,12 +281,20 @@ void Interpreter::parse_sky_sphere() {
             expected("a pigment or '}' in sky_sphere", t);
         }
     }
-    scene_.sky_sphere = std::move(sky);
+    return sky;
 }
 
-void Interpreter::parse_fog() {
+Fog Interpreter::parse_fog() {
     expect_punct('{', "after 'fog'");
     Fog f;
+    const Token& first = peek();
+    if (first.kind == TokenKind::Word) {
+        const Value* v = lookup(first);
+        if (v && std::holds_alternative<std::shared_ptr<Fog>>(*v)) {
+            next();
+            f = *std::get<std::shared_ptr<Fog>>(*v);
+        }
+    }
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) break;
@@ -270,9 +316,13 @@ void Interpreter::parse_fog() {
         else if (w == "turbulence") f.turbulence = parse_vector();
         else if (w == "turb_depth") f.turb_depth = parse_float();
         else if (w == "octaves" || w == "omega" || w == "lambda") parse_float();
-        else expected("a fog item or '}'", t);
+        else if (t.kind == TokenKind::Word && lookup(t) &&
+                 std::holds_alternative<Numeric>(*lookup(t))) {
+            unget(t);  // fog { Blue+Gray70 ... }: a colour expression without keyword
+            f.colour = parse_colour_value();
+        } else expected("a fog item or '}'", t);
     }
-    scene_.fogs.push_back(std::move(f));
+    return f;
 }
 
 void Interpreter::parse_mesh(Object& out) {
@@ -287,11 +337,11 @@ void Interpreter::parse_mesh(Object& out) {
         uint32_t base = uint32_t(mesh.vertices.size());
         Mesh::Face face;
         for (int i = 0; i < 3; ++i) {
-            if (i) expect_punct(',');
+            if (i) accept_punct(',');
             mesh.vertices.push_back(parse_vector());
             face.v[i] = base + i;
             if (smooth) {
-                expect_punct(',');
+                accept_punct(',');
                 face.n[i] = int32_t(mesh.normals.size());
                 mesh.normals.push_back(parse_vector());
             }
@@ -315,15 +365,26 @@ void Interpreter::parse_mesh(Object& out) {
     out.shape = std::move(mesh);
 }
 
+// A mesh2 list length: bounded so that a corrupt count fails cleanly instead of overflowing.
+int Interpreter::parse_count() {
+    Token at = peek();
+    double n = parse_float();
+    if (!(n >= 0 && n <= 1e9)) {
+        error(at, "list length " + std::to_string(n) + " out of range");
+    }
+    return int(n);
+}
+
 void Interpreter::parse_mesh2(Object& out) {
     Mesh mesh;
     auto read_vectors = [&](std::vector<Vector3>& into) {
         expect_punct('{');
-        int n = int(parse_float());
+        int n = parse_count();
         for (int i = 0; i < n; ++i) {
             accept_punct(',');
             into.push_back(parse_vector());
         }
+        accept_punct(',');  // trailing comma
         expect_punct('}');
     };
     std::vector<std::array<int, 3>> normal_idx;
@@ -342,25 +403,27 @@ void Interpreter::parse_mesh2(Object& out) {
         } else if (w == "uv_vectors") {
             std::vector<Vector3> uv;
             expect_punct('{');
-            int n = int(parse_float());
+            int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 parse_numeric();
             }
+            accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "texture_list") {
             expect_punct('{');
-            int n = int(parse_float());
+            int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 Token k = next();
                 if (!is_word(k, "texture")) expected("texture in texture_list", k);
                 mesh.textures.push_back(parse_texture_block());
             }
+            accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "face_indices") {
             expect_punct('{');
-            int n = int(parse_float());
+            int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 Token at = peek();
@@ -393,23 +456,26 @@ void Interpreter::parse_mesh2(Object& out) {
                 }
                 mesh.faces.push_back(f);
             }
+            accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "normal_indices") {
             expect_punct('{');
-            int n = int(parse_float());
+            int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 Vector3 v = parse_vector();
                 normal_idx.push_back({int(v.x), int(v.y), int(v.z)});
             }
+            accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "uv_indices") {
             expect_punct('{');
-            int n = int(parse_float());
+            int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 parse_vector();
             }
+            accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "inside_vector") {
             mesh.inside_vector = parse_vector();
@@ -446,7 +512,17 @@ Value Interpreter::parse_item_value(const Token& t) {
         std::string_view w = t.text;
         Object obj;
         if (try_parse_object(t, obj)) return std::make_shared<Object>(std::move(obj));
-        if (w == "texture") return std::make_shared<LayeredTexture>(parse_texture_block());
+        if (w == "texture") {
+            // `#declare T = texture {...} texture {...}` declares a layered texture.
+            LayeredTexture layers = parse_texture_block();
+            while (accept_raw_word("texture")) {
+                LayeredTexture more = parse_texture_block();
+                layers.insert(layers.end(), more.begin(), more.end());
+            }
+            return std::make_shared<LayeredTexture>(std::move(layers));
+        }
+        if (w == "sky_sphere") return std::make_shared<SkySphere>(parse_sky_sphere());
+        if (w == "fog") return std::make_shared<Fog>(parse_fog());
         if (w == "pigment") return std::make_shared<Pigment>(parse_pigment_block());
         if (w == "finish") return std::make_shared<Finish>(parse_finish_block());
         if (w == "normal") return std::make_shared<Normal>(parse_normal_block());
@@ -474,8 +550,7 @@ Value Interpreter::parse_item_value(const Token& t) {
         if (w == "array") {
             auto a = std::make_shared<ArrayValue>();
             size_t total = 1;
-            while (is_punct(peek(), '[')) {
-                next();
+            while (accept_raw_punct('[')) {
                 Token at = peek();
                 int n = int(parse_float());
                 if (n <= 0) error(at, "array size must be positive");
@@ -486,7 +561,7 @@ Value Interpreter::parse_item_value(const Token& t) {
             }
             if (a->dims.empty()) expected("'[' and the array size", peek());
             a->items.resize(total);
-            if (accept_punct('{')) {
+            if (accept_raw_punct('{')) {
                 // Nested braces per dimension; items are filled in row-major order.
                 size_t index = 0;
                 int depth = 1;
@@ -497,12 +572,21 @@ Value Interpreter::parse_item_value(const Token& t) {
                     if (is_punct(e, ',')) continue;
                     if (index >= total) error(e, "too many elements in array initializer");
                     unget(e);
-                    a->items[index++] = parse_expression_value();
+                    a->items[index++] = parse_value_additive();
                 }
             }
             return a;
         }
-        if (w == "spline" || w == "function") unsupported(t, w);
+        static const char* const kUnsupportedItems[] = {
+            "spline", "function", "media", "density", "rainbow", "photons", "radiosity",
+            "max_extent", "min_extent", "pigment_map", "normal_map", "texture_map",
+            "density_map", "slope_map", "material_map", "text", "lathe", "sor", "prism",
+            "blob", "isosurface", "parametric", "julia_fractal", "height_field",
+            "superellipsoid", "bicubic_patch", "quadric", "quartic", "poly", "cubic",
+            "sphere_sweep", "ovus", "lemon"};
+        for (const char* item : kUnsupportedItems) {
+            if (w == item) unsupported(t, w);
+        }
         error(t, "undeclared identifier '" + std::string(w) + "'");
     }
     expected("an expression", t);

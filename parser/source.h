@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "core/source_loc.h"
@@ -27,6 +28,7 @@ struct Token {
     uint32_t offset = 0, length = 0;
     double number = 0;
     std::string_view text;  // view into the file text, or into SourceFile::strings
+    uint32_t sym = 0;       // Word: interned name (SourceManager::intern), 0 otherwise
 };
 
 struct SourceFile {
@@ -46,9 +48,13 @@ public:
     SourceLoc location(int file, uint32_t offset) const;
     SourceLoc location(const Token& t) const { return location(t.file, t.offset); }
     std::string_view line_text(int file, int line) const;
+    // Identifiers are interned once when lexed, so symbol lookups hash integers.
+    uint32_t intern(std::string_view name);
+    uint32_t find_symbol(std::string_view name) const;  // 0 when never interned
 
 private:
     std::vector<std::unique_ptr<SourceFile>> files_;
+    std::unordered_map<std::string, uint32_t> symbols_;
 };
 
 // "path:line:col: error: message", the source line and a caret under the token.

@@ -31,13 +31,14 @@ constexpr PatternName kPatterns[] = {
     {"wrinkles", PatternKind::Wrinkles}, {"boxed", PatternKind::Boxed},
     {"cylindrical", PatternKind::Cylindrical}, {"spherical", PatternKind::Spherical},
     {"planar", PatternKind::Planar},   {"cells", PatternKind::Cells},
+    {"average", PatternKind::Average},
 };
 
 bool is_unsupported_pattern(std::string_view w) {
     static const char* kNames[] = {"image_map", "bump_map", "material_map", "function",
                                    "object", "slope", "aoi", "density_file", "facets",
                                    "pavement", "tiling", "julia", "magnet", "image_pattern",
-                                   "average", "tiles", "proportion", "pigment_pattern",
+                                   "tiles", "proportion", "pigment_pattern",
                                    "gradient_map"};
     for (const char* n : kNames) {
         if (w == n) return true;
@@ -67,13 +68,13 @@ Numeric Interpreter::parse_colour() {
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
         if (w == "rgb" || w == "srgb") {
             next();
-            set(parse_numeric(), 3, w == "srgb");
+            set(parse_express(), 3, w == "srgb");
         } else if (w == "rgbf" || w == "srgbf") {
             next();
-            set(parse_numeric(), 4, w == "srgbf");
+            set(parse_express(), 4, w == "srgbf");
         } else if (w == "rgbt" || w == "srgbt") {
             next();
-            Numeric v = parse_numeric();
+            Numeric v = parse_express();
             Numeric p = v;
             if (p.size == 1) {
                 for (int i = 1; i < 5; ++i) p.c[i] = p.c[0];
@@ -82,7 +83,7 @@ Numeric Interpreter::parse_colour() {
             c.c[4] = p.c[3];
         } else if (w == "rgbft" || w == "srgbft") {
             next();
-            set(parse_numeric(), 5, w == "srgbft");
+            set(parse_express(), 5, w == "srgbft");
         } else if (w == "red" || w == "green" || w == "blue" || w == "filter" ||
                    w == "transmit") {
             next();
@@ -90,8 +91,8 @@ Numeric Interpreter::parse_colour() {
             c.c[i] = parse_float();
         } else if (!any && (t.kind == TokenKind::Number || is_punct(t, '<') ||
                             is_punct(t, '(') || is_punct(t, '-') ||
-                            (t.kind == TokenKind::Word && lookup(t.text)))) {
-            Numeric v = parse_numeric();
+                            (t.kind == TokenKind::Word && lookup(t)))) {
+            Numeric v = parse_express();
             if (v.size == 1) {
                 for (int i = 0; i < 5; ++i) c.c[i] = v.c[0];
             } else {
@@ -117,7 +118,7 @@ ColourMap Interpreter::parse_colour_map_block() {
     ColourMap map;
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<ColourMap>>(*v)) {
             next();
             map = *std::get<std::shared_ptr<ColourMap>>(*v);
@@ -160,6 +161,10 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
             case PatternKind::Spiral2: spec.scalar = parse_float(); break;
             case PatternKind::Mandel: spec.scalar = parse_float(); break;
             case PatternKind::Quilted: spec.vector = {0, 1, 0}; break;  // control0/1 defaults
+            case PatternKind::Crackle:
+                spec.vector = {-1, 1, 0};  // form
+                spec.scalar = 2;           // metric
+                break;
             default: break;
         }
         return true;
@@ -208,7 +213,7 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     } else if (w == "poly_wave") {
         spec.wave = WaveType::Poly;
         const Token& n = peek();
-        if (n.kind == TokenKind::Number || is_punct(n, '(')) spec.wave_exponent = parse_float();
+        if (starts_float(n)) spec.wave_exponent = parse_float();
     } else if (w == "noise_generator") {
         spec.noise_generator = int(parse_float());
     } else if (w == "agate_turb") {
@@ -217,6 +222,19 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
         spec.scalar = parse_float();
     } else if (w == "brick_size") {
         spec.vector2 = parse_vector();
+    } else if (w == "metric") {
+        spec.scalar = parse_float();  // crackle: scalar = metric, vector = form
+    } else if (w == "form") {
+        spec.vector = parse_vector();
+    } else if (w == "offset") {
+        spec.vector2.x = parse_float();  // crackle: vector2 = <offset, solid, 0>
+    } else if (w == "solid") {
+        spec.vector2.y = 1;
+    } else if (w == "interior" || w == "exterior") {
+        // Fractal colouring types (mandel/julia): `interior TYPE, FACTOR`; read, not modelled.
+        parse_float();
+        accept_punct(',');
+        parse_float();
     } else if (w == "control0") {
         spec.vector.x = parse_float();
     } else if (w == "control1") {
@@ -254,9 +272,15 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
 Pigment Interpreter::parse_pigment_block() {
     expect_punct('{', "after 'pigment'");
     Pigment p = default_texture_.pigment;
+    parse_pigment_body(p, '}');
+    return p;
+}
+
+// The inside of `pigment { ... }`, also the entries of a pigment_map (ending at ']').
+void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Pigment>>(*v)) {
             next();
             p = *std::get<std::shared_ptr<Pigment>>(*v);
@@ -264,7 +288,7 @@ Pigment Interpreter::parse_pigment_block() {
     }
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return p;
+        if (is_punct(t, terminator)) return;
         if (try_pattern_keyword(t, p.pattern)) {
             // checker/hexagon/brick take their colours or pigments right after the keyword
             if (p.pattern.kind == PatternKind::Checker || p.pattern.kind == PatternKind::Hexagon ||
@@ -277,7 +301,7 @@ Pigment Interpreter::parse_pigment_block() {
                         next();
                         p.list.push_back(parse_pigment_block());
                     } else if (is_punct(n, '}') || (n.kind == TokenKind::Word &&
-                                                    !lookup(n.text) && !is_word(n, "color") &&
+                                                    !lookup(n) && !is_word(n, "color") &&
                                                     !is_word(n, "colour") && !is_word(n, "rgb") &&
                                                     !is_word(n, "rgbf") && !is_word(n, "rgbt") &&
                                                     !is_word(n, "rgbft"))) {
@@ -307,31 +331,28 @@ Pigment Interpreter::parse_pigment_block() {
                 Token e = next();
                 if (is_punct(e, '}')) break;
                 if (!is_punct(e, '[')) expected("'[' in a pigment_map", e);
-                float v = float(parse_float());
+                float v = parse_map_value(p.pattern.kind == PatternKind::Average);
                 accept_punct(',');
-                Token k = next();
-                Pigment sub;
-                if (is_word(k, "pigment")) {
+                Pigment sub = default_texture_.pigment;
+                if (accept_word("pigment")) {
                     sub = parse_pigment_block();
+                    expect_punct(']');
                 } else {
-                    const Value* pv = k.kind == TokenKind::Word ? lookup(k.text) : nullptr;
-                    if (!pv || !std::holds_alternative<std::shared_ptr<Pigment>>(*pv)) {
-                        expected("a pigment in the pigment_map", k);
-                    }
-                    sub = *std::get<std::shared_ptr<Pigment>>(*pv);
+                    parse_pigment_body(sub, ']');
                 }
-                expect_punct(']');
                 p.map_values.push_back(v);
                 p.list.push_back(std::move(sub));
             }
         } else if (w == "quick_color" || w == "quick_colour") {
             p.quick_colour = parse_colour_value();
-        } else if (t.kind == TokenKind::Word && lookup(w) &&
-                   std::holds_alternative<Numeric>(*lookup(w))) {
+        } else if (t.kind == TokenKind::Word && lookup(t) &&
+                   std::holds_alternative<Numeric>(*lookup(t))) {
             // A colour identifier alone: pigment { Red }
             unget(t);
             p.pattern.kind = PatternKind::Solid;
             p.colour = parse_colour_value();
+        } else if (w == "uv_mapping" || w == "image_map" || w == "pigment_pattern") {
+            unsupported(t, w);
         } else {
             expected("a pigment item or '}'", t);
         }
@@ -342,9 +363,15 @@ Normal Interpreter::parse_normal_block() {
     expect_punct('{', "after 'normal'");
     Normal n;
     if (default_texture_.normal) n = *default_texture_.normal;
+    parse_normal_body(n, '}');
+    return n;
+}
+
+// The inside of `normal { ... }`, also a normal_map entry (ending at ']').
+void Interpreter::parse_normal_body(Normal& n, char terminator) {
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Normal>>(*v)) {
             next();
             n = *std::get<std::shared_ptr<Normal>>(*v);
@@ -352,12 +379,22 @@ Normal Interpreter::parse_normal_block() {
     }
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return n;
+        if (is_punct(t, terminator)) return;
         if (try_pattern_keyword(t, n.pattern)) {
-            const Token& a = peek();
-            if (a.kind == TokenKind::Number || is_punct(a, '(') || is_punct(a, '-')) {
-                n.amount = parse_float();
+            if (n.pattern.kind == PatternKind::Checker || n.pattern.kind == PatternKind::Hexagon ||
+                n.pattern.kind == PatternKind::Brick) {
+                // checker normal{..} normal{..}: entries follow the keyword.
+                int count = n.pattern.kind == PatternKind::Hexagon ? 3 : 2;
+                for (int i = 0; i < count; ++i) {
+                    if (i) accept_punct(',');
+                    if (!accept_word("normal")) break;
+                    n.list.push_back(parse_normal_block());
+                    n.map_values.push_back(float(i));
+                }
             }
+            // `bumps 0.5`, `gradient x, 5.6`: an optional bump size follows the pattern.
+            accept_punct(',');
+            if (starts_float(peek())) n.amount = parse_float();
             continue;
         }
         if (try_pattern_modifier(t, n.pattern)) continue;
@@ -365,7 +402,29 @@ Normal Interpreter::parse_normal_block() {
             n.amount = parse_float();
         } else if (is_word(t, "accuracy")) {
             n.accuracy = parse_float();
-        } else if (is_word(t, "normal_map") || is_word(t, "slope_map")) {
+        } else if (is_word(t, "normal_map")) {
+            expect_punct('{', "after 'normal_map'");
+            n.list.clear();
+            n.map_values.clear();
+            for (;;) {
+                Token e = next();
+                if (is_punct(e, '}')) break;
+                if (!is_punct(e, '[')) expected("'[' or '}' in a normal_map", e);
+                float value = parse_map_value(n.pattern.kind == PatternKind::Average);
+                accept_punct(',');
+                Normal sub;
+                if (accept_word("normal")) {
+                    sub = parse_normal_block();
+                    expect_punct(']', "to close the normal_map entry");
+                } else {
+                    parse_normal_body(sub, ']');
+                }
+                n.map_values.push_back(value);
+                n.list.push_back(std::move(sub));
+            }
+        } else if (is_word(t, "slope_map")) {
+            unsupported(t, t.text);
+        } else if (is_word(t, "uv_mapping") || is_word(t, "bump_map")) {
             unsupported(t, t.text);
         } else {
             expected("a normal item or '}'", t);
@@ -378,7 +437,7 @@ Finish Interpreter::parse_finish_block() {
     Finish f = default_texture_.finish;
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Finish>>(*v)) {
             next();
             f = *std::get<std::shared_ptr<Finish>>(*v);
@@ -417,9 +476,7 @@ Finish Interpreter::parse_finish_block() {
         } else if (w == "roughness") {
             f.roughness = float(parse_float());
         } else if (w == "metallic") {
-            const Token& n = peek();
-            f.metallic = (n.kind == TokenKind::Number || is_punct(n, '(')) ? float(parse_float())
-                                                                           : 1.0f;
+            f.metallic = starts_float(peek()) ? float(parse_float()) : 1.0f;
         } else if (w == "reflection") {
             if (accept_punct('{')) {
                 Rgb a = rgb_of(parse_colour());
@@ -441,7 +498,7 @@ Finish Interpreter::parse_finish_block() {
                     } else if (is_word(m, "exponent")) {
                         f.reflection_exponent = float(parse_float());
                     } else if (is_word(m, "metallic")) {
-                        f.reflection_metallic = float(parse_float());
+                        f.reflection_metallic = starts_float(peek()) ? float(parse_float()) : 1.0f;
                     } else {
                         expected("a reflection item or '}'", m);
                     }
@@ -482,7 +539,7 @@ Interior Interpreter::parse_interior_block() {
     Interior in;
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Interior>>(*v)) {
             next();
             in = *std::get<std::shared_ptr<Interior>>(*v);
@@ -512,9 +569,15 @@ Interior Interpreter::parse_interior_block() {
 LayeredTexture Interpreter::parse_texture_block() {
     expect_punct('{', "after 'texture'");
     LayeredTexture layers;
+    parse_texture_body(layers, '}');
+    return layers;
+}
+
+// The inside of `texture { ... }`; also a texture_map entry (ending at ']').
+void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
-        const Value* v = lookup(first.text);
+        const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<LayeredTexture>>(*v)) {
             next();
             layers = *std::get<std::shared_ptr<LayeredTexture>>(*v);
@@ -523,27 +586,64 @@ LayeredTexture Interpreter::parse_texture_block() {
     if (layers.empty()) layers.push_back(default_texture_);
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return layers;
+        if (is_punct(t, terminator)) return;
         Transform tr;
         if (try_transform(t, tr)) {
             transform_textures(layers, tr);
             continue;
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        Texture& top = layers.back();
         if (w == "pigment") {
-            layers.back().pigment = parse_pigment_block();
+            top.pigment = parse_pigment_block();
         } else if (w == "finish") {
-            layers.back().finish = parse_finish_block();
+            top.finish = parse_finish_block();
         } else if (w == "normal") {
-            layers.back().normal = parse_normal_block();
-        } else if (w == "texture_map" || w == "material_map" || w == "tiles") {
-            unsupported(t, w);
-        } else {
-            PatternSpec probe;
-            if (t.kind == TokenKind::Word && (try_pattern_keyword(t, probe))) {
-                unsupported(t, "patterned texture (texture_map)");
+            top.normal = parse_normal_block();
+        } else if (w == "texture_map") {
+            if (!top.map_pattern) expected("a pattern before texture_map", t);
+            expect_punct('{', "after 'texture_map'");
+            top.map.clear();
+            top.map_values.clear();
+            for (;;) {
+                Token e = next();
+                if (is_punct(e, '}')) break;
+                if (!is_punct(e, '[')) expected("'[' or '}' in a texture_map", e);
+                float value = parse_map_value(top.map_pattern->kind == PatternKind::Average);
+                accept_punct(',');
+                LayeredTexture entry;
+                if (accept_word("texture")) {
+                    entry = parse_texture_block();
+                    expect_punct(']', "to close the texture_map entry");
+                } else {
+                    parse_texture_body(entry, ']');
+                }
+                top.map_values.push_back(value);
+                top.map.push_back(std::move(entry));
             }
-            expected("a texture item or '}'", t);
+        } else if (w == "material_map" || w == "tiles" || w == "uv_mapping" ||
+                   w == "image_pattern") {
+            unsupported(t, w);
+        } else if (top.map_pattern && try_pattern_modifier(t, *top.map_pattern)) {
+            continue;
+        } else {
+            PatternSpec spec;
+            if (t.kind == TokenKind::Word && try_pattern_keyword(t, spec)) {
+                top.map_pattern = spec;
+                if (spec.kind == PatternKind::Checker || spec.kind == PatternKind::Hexagon ||
+                    spec.kind == PatternKind::Brick) {
+                    // checker texture{..} texture{..}: entries follow the keyword.
+                    int count = spec.kind == PatternKind::Hexagon ? 3 : 2;
+                    for (int i = 0; i < count; ++i) {
+                        if (i) accept_punct(',');
+                        if (!accept_word("texture")) break;
+                        top.map.push_back(parse_texture_block());
+                        top.map_values.push_back(float(i));
+                    }
+                }
+                continue;
+            }
+            expected("a texture item or '" + std::string(1, terminator) + "'", t);
         }
     }
 }

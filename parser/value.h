@@ -32,6 +32,10 @@ struct Numeric {
 
 struct Macro;
 struct ArrayValue;
+// A declaration whose right-hand side uses a feature povwall lacks: harmless until used.
+struct UnsupportedValue {
+    std::string feature;
+};
 struct CameraSpec;
 struct Material {
     LayeredTexture texture;
@@ -44,7 +48,9 @@ using Value = std::variant<std::monostate, Numeric, std::string, std::shared_ptr
                            std::shared_ptr<Interior>, std::shared_ptr<CameraSpec>,
                            std::shared_ptr<Light>, std::shared_ptr<ArrayValue>,
                            std::shared_ptr<Transform>, std::shared_ptr<Macro>,
-                           std::shared_ptr<Material>, std::shared_ptr<ColourMap>>;
+                           std::shared_ptr<Material>, std::shared_ptr<ColourMap>,
+                           std::shared_ptr<SkySphere>, std::shared_ptr<Fog>,
+                           std::shared_ptr<UnsupportedValue>>;
 
 struct ArrayValue {
     std::vector<int> dims;
@@ -68,6 +74,7 @@ struct CameraSpec {
     double angle = 90;
     Transform transform;
     SourceLoc loc;
+    uint32_t offset = 0;  // of the camera's '{', for diagnostics
 };
 
 const char* type_name(const Value& v);

@@ -270,6 +270,47 @@ Vector3 smooth_triangle_normal(const SmoothTriangle& tri, const Point3& q) {
     return tri.n[0] * (1 - v - u2) + tri.n[1] * v + tri.n[2] * u2;
 }
 
+Vector3 polygon_normal(const Polygon& poly) {
+    // Newell's method: robust for any planar loop, whatever its first points are.
+    Vector3 n{0, 0, 0};
+    const size_t k = poly.points.size();
+    for (size_t i = 0; i < k; ++i) {
+        const Point3& a = poly.points[i];
+        const Point3& b = poly.points[(i + 1) % k];
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+    }
+    return normalize(n);
+}
+
+void intersect_polygon(const Polygon& poly, const Point3& o, const Vector3& dir,
+                       Crossings& out) {
+    const size_t k = poly.points.size();
+    if (k < 3) return;
+    Vector3 n = polygon_normal(poly);
+    Real nd = dot(n, dir);
+    if (std::fabs(nd) < kPovEpsilon) return;
+    Real t = dot(n, poly.points[0] - o) / nd;
+    if (!(t > kPolygonTolerance) || t > kMaxDistance) return;
+    Point3 p = o + dir * t;
+    // Project on the plane of the two axes the normal is least aligned with.
+    int drop = 0;
+    if (std::fabs(n.y) > std::fabs(n[drop])) drop = 1;
+    if (std::fabs(n.z) > std::fabs(n[drop])) drop = 2;
+    const int u = drop == 0 ? 1 : 0, v = drop == 2 ? 1 : 2;
+    bool inside = false;
+    for (size_t i = 0; i < k; ++i) {
+        const Point3& a = poly.points[i];
+        const Point3& b = poly.points[(i + 1) % k];
+        if ((a[v] > p[v]) != (b[v] > p[v])) {
+            Real x = a[u] + (p[v] - a[v]) / (b[v] - a[v]) * (b[u] - a[u]);
+            if (p[u] < x) inside = !inside;
+        }
+    }
+    if (inside) out.add(t, 0);
+}
+
 // ------------------------------------------------------------------ torus
 
 namespace {

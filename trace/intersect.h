@@ -17,6 +17,7 @@ constexpr Real kPlaneTolerance = 1e-6;
 constexpr Real kConeTolerance = 1e-9;
 constexpr Real kTorusTolerance = 1e-4;
 constexpr Real kTriangleTolerance = 1e-6;
+constexpr Real kPolygonTolerance = 1e-8;
 constexpr Real kMinIsectDepth = 1e-4;
 constexpr Real kPovEpsilon = 1e-10;
 constexpr Real kMaxDistance = 1e7;
@@ -45,6 +46,10 @@ void intersect_cone(const Cone& c, const Point3& o, const Vector3& dir, Crossing
 void intersect_disc(const Disc& d, const Point3& o, const Vector3& dir, Crossings& out);
 void intersect_triangle(const Point3 p[3], const Point3& o, const Vector3& dir, Crossings& out);
 void intersect_torus(const Torus& t, const Point3& o, const Vector3& dir, Crossings& out);
+// Even-odd rule over all edges of the point list (sub-polygons closed by repeating their
+// first point, as POV-Ray writes them); the plane is the points' Newell plane.
+void intersect_polygon(const Polygon& p, const Point3& o, const Vector3& dir, Crossings& out);
+Vector3 polygon_normal(const Polygon& p);
 
 // Outward surface normal (object space, not normalised necessarily) at a crossing.
 Vector3 sphere_normal(const Sphere& s, const Point3& p);

@@ -59,6 +59,8 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
                 intersect_triangle(s.p, local.origin, dn, cs);
             else if constexpr (std::is_same_v<T, SmoothTriangle>)
                 intersect_triangle(s.p, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Polygon>)
+                intersect_polygon(s, local.origin, dn, cs);
         },
         o.shape);
     for (int i = 0; i < cs.n; ++i) {
@@ -77,6 +79,7 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
                 else if constexpr (std::is_same_v<T, Triangle>)
                     n = cross(s.p[1] - s.p[0], s.p[2] - s.p[0]);
                 else if constexpr (std::is_same_v<T, SmoothTriangle>) n = smooth_triangle_normal(s, p);
+                else if constexpr (std::is_same_v<T, Polygon>) n = polygon_normal(s);
             },
             o.shape);
         n = normalize(o.transform.is_identity() ? n : o.transform.normal(n));
@@ -122,7 +125,7 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
         if (o.inverse) {
             for (size_t k = start; k < out.size(); ++k) out[k].normal = -out[k].normal;
         }
-    } else if (std::holds_alternative<Mesh>(o.shape) || std::holds_alternative<Polygon>(o.shape)) {
+    } else if (std::holds_alternative<Mesh>(o.shape)) {
         // Meshes are split into triangles at preparation; inside CSG they act as surfaces.
         const Mesh* m = std::get_if<Mesh>(&o.shape);
         if (m) {
@@ -281,15 +284,31 @@ bool inside_object(const Object& o, const Point3& p) {
     return in != o.inverse;
 }
 
+Bounds3 object_world_bounds(const Object& obj) { return object_bounds(obj); }
+
 PreparedScene::PreparedScene(const Scene& scene) : scene_(scene) {
+    std::vector<const Object*> all;
+    for (const Object& o : scene.objects) all.push_back(&o);
+    build(all);
+}
+
+PreparedScene::PreparedScene(const Scene& scene, const std::vector<uint32_t>& object_subset)
+    : scene_(scene) {
+    std::vector<const Object*> some;
+    for (uint32_t i : object_subset) some.push_back(&scene.objects[i]);
+    build(some);
+}
+
+void PreparedScene::build(const std::vector<const Object*>& objects) {
+    const Scene& scene = scene_;
     env_.noise_generator = scene.settings.noise_generator;
     size_t leaves = 0;
-    for (const Object& o : scene.objects) leaves += count_leaves(o);
+    for (const Object* o : objects) leaves += count_leaves(*o);
     for (const Light& l : scene.lights) {
         for (const Object& o : l.looks_like) leaves += count_leaves(o);
     }
     materials_.reserve(leaves + 1);
-    for (const Object& o : scene.objects) add_object(o, nullptr);
+    for (const Object* o : objects) add_object(*o, nullptr);
     for (const Light& l : scene.lights) {
         for (const Object& o : l.looks_like) add_object(o, nullptr);
     }

@@ -48,6 +48,10 @@ struct RayContext {
 class PreparedScene {
 public:
     explicit PreparedScene(const Scene& scene);
+    // Only the given top-level objects (indices into scene.objects) and light looks_like
+    // objects: the local scene of a black box. Materials still point into `scene`, so object
+    // identity (interior stacks) is the same in every box.
+    PreparedScene(const Scene& scene, const std::vector<uint32_t>& object_subset);
 
     const Scene& scene() const { return scene_; }
     const octree::Octree& tree() const { return tree_; }
@@ -67,6 +71,7 @@ public:
                         RayContext& ctx) const;
 
 private:
+    void build(const std::vector<const Object*>& objects);
     void add_object(const Object& obj, const Material* parent_material);
     uint32_t add_material(const Object& obj);
     bool test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max, Hit& hit) const;
@@ -87,6 +92,9 @@ private:
     std::vector<uint32_t> unbounded_;
     octree::Octree tree_;
 };
+
+// World-space bounds of an object (everything() when unbounded).
+Bounds3 object_world_bounds(const Object& obj);
 
 // Whether a point is inside an object (CSG semantics, world space).
 bool inside_object(const Object& obj, const Point3& p);

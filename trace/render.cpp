@@ -7,22 +7,13 @@
 #include <thread>
 #include <vector>
 
+#include "trace/camera.h"
 #include "trace/tracer.h"
 
 namespace povwall::trace {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// Primary ray through image position (px, py) in pixels (pixel centres at +0.5).
-Ray camera_ray(const Camera& cam, Real px, Real py, int width, int height) {
-    Real x0 = px / width - 0.5;
-    Real y0 = 0.5 - py / height;
-    if (cam.kind == Camera::Kind::Orthographic) {
-        return {cam.location + cam.right * x0 + cam.up * y0, normalize(cam.direction)};
-    }
-    return {cam.location, normalize(cam.direction + cam.right * x0 + cam.up * y0)};
-}
 
 // POV-Ray compares neighbours for anti-aliasing after encoding with gamma 2.5.
 float aa_encode(float v) { return std::pow(std::max(0.0f, v), 1.0f / 2.5f); }

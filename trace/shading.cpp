@@ -104,8 +104,10 @@ const LayeredTexture& texture_of(const Material& m) {
 
 }  // namespace
 
-Rgb interior_attenuation(const Interior& in, Real distance) {
-    if (in.fade_distance <= 0 || in.fade_power <= 0) return Rgb(1.0f);
+Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray) {
+    // POV-Ray tests fade_power > 0 only on shadow rays (ComputeShadowTexture).
+    if (std::fabs(in.fade_distance) <= kPovEpsilon) return Rgb(1.0f);
+    if (shadow_ray && in.fade_power <= 0) return Rgb(1.0f);
     Rgb fc = in.fade_colour;
     if (in.fade_power >= 1000) {
         auto e = [&](float c) { return float(std::exp(-(1 - c) * distance / in.fade_distance)); };
@@ -255,38 +257,17 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
             continue;
         }
         const LightSample& s = samples[l];
-        if (light.area && light.area->size1 * light.area->size2 > 1) {
-            const AreaLight& a = *light.area;
-            int n1 = std::max(1, a.size1), n2 = std::max(1, a.size2);
-            float share = 1.0f / float(n1 * n2);
-            for (int i = 0; i < n1; ++i) {
-                for (int j = 0; j < n2; ++j) {
-                    Real u = n1 > 1 ? Real(i) / (n1 - 1) - 0.5 : 0;
-                    Real v = n2 > 1 ? Real(j) / (n2 - 1) - 0.5 : 0;
-                    Point3 q = light.location + a.axis1 * u + a.axis2 * v;
-                    Vector3 to = q - P;
-                    Real d = length(to);
-                    ChildRay child;
-                    child.kind = ChildRay::Kind::Shadow;
-                    child.trace.ray = {P, to / d};
-                    child.trace.depth = ray.depth;
-                    child.trace.use = RayUse::Shadow;
-                    child.t_max = d;
-                    child.light = int(l);
-                    child.coeff = lit[l] * share;
-                    out.children.push_back(child);
-                }
-            }
-            continue;
-        }
         ChildRay child;
         child.kind = ChildRay::Kind::Shadow;
         child.trace.ray = {P, s.dir};
+        child.trace.interiors = ray.interiors;
         child.trace.depth = ray.depth;
         child.trace.use = RayUse::Shadow;
         child.t_max = s.distance;
         child.light = int(l);
         child.coeff = lit[l];
+        child.area = light.area.has_value();
+        child.light_colour = s.colour;
         out.children.push_back(child);
     }
 
@@ -315,7 +296,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         // by the distance the incoming ray travelled in it (only the transmitted part).
         Rgb att(1.0f);
         if (ray.interiors.contains(m.object) && m.interior) {
-            att = interior_attenuation(*m.interior, hit.t);
+            att = interior_attenuation(*m.interior, hit.t, false);
             child.coeff *= att;
             child.transmit_factor *= att.grey();
         }
@@ -362,38 +343,155 @@ TraceResult combine_children(const ShadingRecord& record, const TraceResult* res
     return r;
 }
 
-Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx) {
-    const float adc = scene.scene().settings.adc_bailout;
-    Ray ray = shadow.trace.ray;
-    Real remaining = shadow.t_max;
-    Rgb filter(1.0f);
-    if (remaining <= 2 * kShadowTolerance) return filter;
+bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
+                    Real light_distance, ShadowState& state, RayContext& ctx) {
+    const Real hi = std::min(segment_end, light_distance - kShadowTolerance);
+    if (state.blocked) return true;
+    if (!(state.t_min < hi)) return false;
     // Most shadow rays meet only opaque blockers or nothing: find out in any order.
     bool transparent = false;
-    if (scene.opaque_blocker(ray, kShadowTolerance, remaining - kShadowTolerance, transparent,
-                             ctx)) {
-        return Rgb{};
+    if (scene.opaque_blocker(ray, state.t_min, hi, transparent, ctx)) {
+        state.blocked = true;
+        state.filter = Rgb{};
+        return true;
     }
-    if (!transparent) return filter;
-    for (int guard = 0; guard < 256; ++guard) {
-        if (remaining <= 2 * kShadowTolerance) break;
+    if (!transparent) {
+        state.t_min = std::max(state.t_min, hi);
+        return false;
+    }
+    // See-through blockers: each crossing multiplies the light by its filter, nearest first,
+    // the next search starting 1e-3 past the previous hit as POV-Ray's restarted ray does.
+    // The ray enters or leaves each object it crosses; the stretch inside fades with the
+    // object's interior. (No adc_bailout test per layer: POV-Ray's combined shadow texture
+    // always has filter 1, so that test never fires.)
+    for (int guard = 0; guard < 256 && state.t_min < hi; ++guard) {
         Hit hit;
-        if (!scene.closest_hit(ray, kShadowTolerance, remaining - kShadowTolerance,
-                               RayUse::Shadow, hit, ctx)) {
-            break;
-        }
+        if (!scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx)) break;
         const Material& m = *hit.material;
-        if (m.opaque) return Rgb{};
+        bool black = m.opaque;
         for (const Texture& t : texture_of(m)) {
-            Colour c = eval_pigment(scene, t.pigment, hit.point);
-            if (std::fabs(c.filter) + std::fabs(c.transmit) < adc) return Rgb{};
-            filter *= rgb_transm(c);
+            if (black) break;
+            state.filter *= rgb_transm(eval_pigment(scene, t.pigment, hit.point));
         }
-        if (filter.max_component() <= 0) return Rgb{};
-        ray.origin = hit.point;
-        remaining -= hit.t;
+        if (!black) {
+            if (state.inside.contains(m.object)) {
+                if (m.interior) {
+                    state.filter *=
+                        interior_attenuation(*m.interior, hit.t - state.last_hit, true);
+                }
+                state.inside.remove(m.object);
+            } else {
+                state.inside.push(&m);
+            }
+        }
+        if (black || state.filter.max_component() <= 0) {
+            state.blocked = true;
+            state.filter = Rgb{};
+            return true;
+        }
+        state.last_hit = hit.t;
+        state.t_min = hit.t + kShadowTolerance;
     }
-    return filter;
+    state.t_min = std::max(state.t_min, hi);
+    return false;
+}
+
+namespace {
+
+Rgb point_shadow(const ChildRay& shadow, const PreparedScene& scene, const Ray& ray,
+                 Real distance, RayContext& ctx) {
+    ShadowState state;
+    state.inside = shadow.trace.interiors;
+    shadow_segment(scene, ray, kInfinity, distance, state, ctx);
+    return state.filter;
+}
+
+float colour_distance(const Rgb& a, const Rgb& b) {
+    return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
+}
+
+// POV-Ray's area light: a size1 x size2 grid over axis1/axis2 centred on the light, sampled
+// at the corners of a region and refined by quadrants; each level averages its 4 quadrants.
+struct AreaSampler {
+    const PreparedScene& scene;
+    const ChildRay& shadow;
+    RayContext& ctx;
+    const Light& light;
+    const AreaLight& area;
+    Vector3 axis1, axis2;
+    Point3 at;
+    std::vector<Rgb>& grid;
+    std::vector<uint8_t>& done;
+    int n1, n2;
+
+    Rgb sample(int u, int v) {
+        size_t k = size_t(u) * n2 + v;
+        if (done[k]) return grid[k];
+        Vector3 offset{0, 0, 0};
+        Real ju = u, jv = v;
+        if (area.circular && n1 > 1 && n2 > 1) {
+            ju = ju / (n1 - 1) - 0.5 + 0.001;
+            jv = jv / (n2 - 1) - 0.5 + 0.001;
+            Real scale = std::max(std::fabs(ju), std::fabs(jv)) / std::sqrt(ju * ju + jv * jv);
+            offset = axis1 * (ju * scale) + axis2 * (jv * scale);
+        } else {
+            if (n1 > 1) offset += axis1 * (ju / (n1 - 1) - 0.5);
+            if (n2 > 1) offset += axis2 * (jv / (n2 - 1) - 0.5);
+        }
+        Vector3 to = light.location + offset - at;
+        Real d = length(to);
+        Rgb t = d > 0 ? point_shadow(shadow, scene, {at, to / d}, d, ctx) : Rgb(1.0f);
+        grid[k] = t;
+        done[k] = 1;
+        return t;
+    }
+
+    Rgb region(int u1, int v1, int u2, int v2, int level) {
+        Rgb s[4] = {sample(u1, v1), sample(u2, v1), sample(u1, v2), sample(u2, v2)};
+        if (u2 - u1 > 1 || v2 - v1 > 1) {
+            const Rgb& lc = shadow.light_colour;
+            bool refine = level < area.adaptive ||
+                          colour_distance(lc * s[0], lc * s[1]) > 0.1f ||
+                          colour_distance(lc * s[1], lc * s[3]) > 0.1f ||
+                          colour_distance(lc * s[3], lc * s[2]) > 0.1f ||
+                          colour_distance(lc * s[2], lc * s[0]) > 0.1f;
+            if (refine) {
+                int ul = (u1 + u2) / 2, uh = (u1 + u2 + 1) / 2;  // floor and ceil of the middle
+                int vl = (v1 + v2) / 2, vh = (v1 + v2 + 1) / 2;
+                s[0] = region(u1, v1, ul, vl, level + 1);
+                s[1] = region(uh, v1, u2, vl, level + 1);
+                s[2] = region(u1, vh, ul, v2, level + 1);
+                s[3] = region(uh, vh, u2, v2, level + 1);
+            }
+        }
+        return (s[0] + s[1] + s[2] + s[3]) * 0.25f;
+    }
+};
+
+}  // namespace
+
+Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx) {
+    if (!shadow.area) return point_shadow(shadow, scene, shadow.trace.ray, shadow.t_max, ctx);
+    const Light& light = scene.scene().lights[shadow.light];
+    const AreaLight& area = *light.area;
+    const Point3 at = shadow.trace.ray.origin;
+    Vector3 axis1 = area.axis1, axis2 = area.axis2;
+    if (area.orient) {
+        // Face the lit point: both axes perpendicular to the light ray, axis1's length.
+        Vector3 dir = normalize(light.location - at);
+        Real len = length(axis1);
+        Vector3 up = std::fabs(std::fabs(dir.z) - 1) < 0.01 ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
+        axis1 = normalize(cross(dir, up));
+        axis2 = normalize(cross(dir, axis1)) * len;
+        axis1 *= len;
+    }
+    thread_local std::vector<Rgb> grid;
+    thread_local std::vector<uint8_t> done;
+    const int n1 = std::max(1, area.size1), n2 = std::max(1, area.size2);
+    grid.resize(size_t(n1) * n2);
+    done.assign(size_t(n1) * n2, 0);
+    AreaSampler sampler{scene, shadow, ctx, light, area, axis1, axis2, at, grid, done, n1, n2};
+    return sampler.region(0, 0, n1 - 1, n2 - 1, 0);
 }
 
 TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {

@@ -25,8 +25,8 @@ struct InteriorStack {
     const Material* items[kCapacity] = {};
     int size = 0;
     bool contains(const Object* o) const {
-        for (int i = 0; i < size; ++i)
-            if (items[i]->object == o) return true;
+        for (int i = 0; i < size && i < kCapacity; ++i)
+            if (items[i] && items[i]->object == o) return true;
         return false;
     }
     void push(const Material* m) {
@@ -35,7 +35,7 @@ struct InteriorStack {
     void remove(const Object* o) {
         for (int i = 0; i < size; ++i) {
             if (items[i]->object == o) {
-                for (int j = i; j + 1 < size; ++j) items[j] = items[j + 1];
+                for (int j = i; j + 1 < size && j + 1 < kCapacity; ++j) items[j] = items[j + 1];
                 --size;
                 return;
             }
@@ -66,6 +66,11 @@ struct ChildRay {
     Rgb coeff{1.0f};         // contribution factor of the child's result
     float exponent = 1;      // reflection: result is coeff * pow(child, 1/exponent)
     float transmit_factor = 0;  // transmission: share of the child's transmit that shows
+    // Area-light shadow: the child stands for POV-Ray's whole adaptive sample grid of light
+    // `light`; its result is the grid's averaged transmittance. The grid refinement depends
+    // on sample results (a documented non-linear case), so it is evaluated as one unit.
+    bool area = false;
+    Rgb light_colour{1.0f};  // attenuated light colour (area-light refinement threshold)
 };
 
 struct ShadingRecord {
@@ -85,12 +90,30 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
 // reflection/transmission, the light's transmittance (rgb) for shadow rays.
 TraceResult combine_children(const ShadingRecord& record, const TraceResult* results);
 
-// Transmittance of the segment toward a light (shadow ray), POV-Ray's rules: hits in
-// (1e-3, distance - 1e-3), filters multiply, opaque blocks.
+// Shadow ray state carried from box to box: the product of filters met so far, where the
+// search resumes (absolute distance along the ray: the origin is never moved), and the
+// transparent objects the ray is inside of (for their interior fade).
+struct ShadowState {
+    Rgb filter{1.0f};
+    Real t_min = 1e-3;  // POV-Ray's SHADOW_TOLERANCE
+    Real last_hit = 0;  // distance of the previous crossing (fade is per stretch)
+    bool blocked = false;
+    InteriorStack inside;  // start with the lit ray's interiors
+};
+// Advances `state` over hits with t in [state.t_min, min(segment_end, light_distance - 1e-3)).
+// Returns true once the light is fully blocked.
+bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
+                    Real light_distance, ShadowState& state, RayContext& ctx);
+
+// Transmittance toward a light (shadow ray), POV-Ray's rules: hits in (1e-3, distance -
+// 1e-3), filters multiply, opaque blocks, interior fade between entering and leaving. For an
+// area light (`shadow.area`), the adaptive grid average (TraceAreaLightShadowRay's rules:
+// corners first, quadrants refined while level < adaptive or corners differ by > 0.1).
 Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx);
 
-// POV-Ray 3.7's interior fade after `distance` inside a medium.
-Rgb interior_attenuation(const Interior& in, Real distance);
+// POV-Ray 3.7's interior fade after `distance` inside a medium (camera/secondary rays and
+// shadow rays differ in one test, hence the flag).
+Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray);
 
 // Colour of a ray that hits nothing (background or sky_sphere).
 TraceResult miss_colour(const PreparedScene& scene, const Ray& ray);

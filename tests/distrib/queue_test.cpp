@@ -24,6 +24,7 @@ TEST(ParentTable, ReleasesParentAfterLastChild) {
 }
 
 TEST(WorkQueue, ResultsFirstThenDeeperRaysThenArrivalOrder) {
+    // Results release waiting parents: they go first, in arrival order.
     WorkQueue<std::string> q;
     q.push("ray d1 a", false, 1);
     q.push("ray d3", false, 3);
@@ -32,7 +33,7 @@ TEST(WorkQueue, ResultsFirstThenDeeperRaysThenArrivalOrder) {
     q.push("result d2", true, 2);
     std::vector<std::string> order;
     while (!q.empty()) order.push_back(q.pop());
-    EXPECT_EQ(order, (std::vector<std::string>{"result d2", "result d1", "ray d3", "ray d1 a",
+    EXPECT_EQ(order, (std::vector<std::string>{"result d1", "result d2", "ray d3", "ray d1 a",
                                                "ray d1 b"}));
 }
 

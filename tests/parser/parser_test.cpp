@@ -197,11 +197,11 @@ TEST(Errors, ExactLocationsAndCarets) {
               "test.pov:2:13: error: expected a pigment item or '}' but found 'colr'\n"
               "  pigment { colr Red }\n"
               "            ^~~~");
-    EXPECT_EQ(error_of("sphere { <0, 0, 0> 1 }"),
-              "test.pov:1:20: error: expected ',' between the sphere's centre and radius but "
-              "found '1'\n"
-              "sphere { <0, 0, 0> 1 }\n"
-              "                   ^");
+    // Commas are optional in POV-Ray (`<0, 0, 0> 1` is a sphere); a missing value is not.
+    EXPECT_EQ(error_of("sphere { <0, 0, 0>, }"),
+              "test.pov:1:21: error: expected the sphere's radius but found '}'\n"
+              "sphere { <0, 0, 0>, }\n"
+              "                    ^");
     EXPECT_EQ(error_of("#declare X = Undefined_Thing + 1;"),
               "test.pov:1:14: error: undeclared identifier 'Undefined_Thing'\n"
               "#declare X = Undefined_Thing + 1;\n"
@@ -222,8 +222,7 @@ TEST(Errors, ExactLocationsAndCarets) {
 
 TEST(Errors, InsideMacroPointsAtCallSite) {
     EXPECT_EQ(error_of("#macro M()\n  sphere { 0 }\n#end\nM()"),
-              "test.pov:2:14: error: expected ',' between the sphere's centre and radius but "
-              "found '}'\n"
+              "test.pov:2:14: error: expected the sphere's radius but found '}'\n"
               "  sphere { 0 }\n"
               "             ^\n"
               "test.pov:4:1: note: in macro 'M' called from here\n"

@@ -1,0 +1,55 @@
+// Space subdivision: virtual walls cut the scene into black boxes; each box holds only the
+// objects that overlap it, traces the rays crossing its region, and forwards rays that leave
+// it to the neighbouring box. Shading is trace/shading.h's spawn_children/combine_children.
+//
+// Two ways to return colours, chosen per scene (see RenderPlan):
+//  - forward contributions: each ray carries the factor from its colour to the pixel, so a
+//    hit adds its local colour straight to the pixel and no parent waits (linear shading);
+//  - parent tracking: a hit parks its shading record in the box's ParentTable until the
+//    children's results come back (needed for reflection exponents).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "core/scene.h"
+#include "distrib/virtual_walls.h"
+#include "distrib/work_queue.h"
+#include "trace/render.h"
+
+namespace povwall::distrib {
+
+struct SpaceOptions {
+    std::array<int, 3> boxes{1, 1, 1};
+    bool balanced = false;  // walls at object quantiles instead of equal slabs
+    enum class Results { Auto, Forward, Parents } results = Results::Auto;
+    QueuePolicy queue = QueuePolicy::Priority;
+    size_t max_rays_in_flight = 1 << 16;  // flow control: camera rays wait beyond this
+};
+
+struct BoxStats {
+    Bounds3 region;
+    size_t objects = 0;
+    size_t resident_bytes = 0;  // estimate of the local scene
+    uint64_t camera = 0, reflected = 0, refracted = 0, shadow = 0;
+    uint64_t rays_received = 0, results_received = 0, messages_sent = 0;
+    size_t peak_queue = 0, peak_parents = 0;
+    double busy_seconds = 0;
+};
+
+struct SpaceStats {
+    bool parent_tracking = false;
+    std::vector<BoxStats> boxes;
+    double seconds = 0;
+};
+
+// True when the scene's shading is linear in child colours (no reflection exponent), so
+// forward contributions give the same image as parent tracking.
+bool shading_is_linear(const Scene& scene);
+
+Image render_space(const Scene& scene, const trace::RenderSettings& settings,
+                   const SpaceOptions& options, SpaceStats* stats = nullptr);
+
+}  // namespace povwall::distrib

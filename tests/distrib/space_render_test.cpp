@@ -1,0 +1,114 @@
+// The distributed back end must give the single-process image: same scene, many wall layouts,
+// both ways of returning colours.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "distrib/space_render.h"
+#include "parser/parser.h"
+#include "trace/render.h"
+
+namespace povwall::distrib {
+namespace {
+
+const char* kScene = R"(
+#version 3.7;
+global_settings { assumed_gamma 1.0 max_trace_level 6 }
+camera { location <0.3, 2.5, -9> look_at <0, 0.8, 0> angle 45 }
+light_source { <-4, 8, -6> color rgb 1 }
+light_source { <5, 3, -4> color rgb 0.4 }
+plane { y, 0 pigment { color rgb <0.7, 0.7, 0.6> } finish { reflection 0.2 } }
+#declare S = seed(7);
+#declare I = 0;
+#while (I < 60)
+  sphere { <rand(S) * 8 - 4, rand(S) * 3, rand(S) * 6 - 2>, 0.2 + 0.4 * rand(S)
+    pigment { color rgb <rand(S), rand(S), rand(S)> }
+    finish { phong 0.5 reflection 0.3 } }
+  #declare I = I + 1;
+#end
+// On the walls of a 2x2x2 and 4x4x4 cut, and straddling them:
+sphere { <0, 1, 0>, 0.7 pigment { rgbf <1, 1, 1, 0.8> } interior { ior 1.4 } }
+box { <-0.5, 0, 2>, <0.5, 2, 2.5> pigment { rgbt <0.2, 0.9, 0.3, 0.5> } }
+difference { box { -0.6, 0.6 } sphere { 0, 0.75 } translate <2, 0.6, -1>
+             pigment { color rgb <1, 0.4, 0.1> } }
+)";
+
+double rmse(const Image& a, const Image& b) {
+    double s = 0;
+    for (size_t i = 0; i < a.rgba.size(); ++i) {
+        if (i % 4 == 3) continue;
+        double d = a.rgba[i] - b.rgba[i];
+        s += d * d;
+    }
+    return std::sqrt(s / double(a.width * a.height * 3));
+}
+
+class SpaceRender : public ::testing::Test {
+protected:
+    void SetUp() override {
+        scene_ = parser::parse_scene_text(kScene, "space.pov", {});
+        settings_.width = 96;
+        settings_.height = 72;
+        settings_.threads = 2;
+        reference_ = trace::render_scene(scene_, settings_);
+    }
+    Image render(std::array<int, 3> boxes, SpaceOptions::Results results, bool balanced,
+                 SpaceStats* stats = nullptr) {
+        SpaceOptions o;
+        o.boxes = boxes;
+        o.results = results;
+        o.balanced = balanced;
+        return render_space(scene_, settings_, o, stats);
+    }
+    Scene scene_;
+    trace::RenderSettings settings_;
+    Image reference_;
+};
+
+TEST_F(SpaceRender, EveryLayoutAndModeGivesTheSingleProcessImage) {
+    using R = SpaceOptions::Results;
+    for (auto boxes : {std::array<int, 3>{1, 1, 1}, {2, 2, 2}, {4, 4, 4}, {3, 1, 5}}) {
+        for (R mode : {R::Forward, R::Parents}) {
+            for (bool balanced : {false, true}) {
+                Image img = render(boxes, mode, balanced);
+                EXPECT_LE(rmse(img, reference_), 1e-6)
+                    << boxes[0] << "x" << boxes[1] << "x" << boxes[2] << " mode "
+                    << int(mode) << " balanced " << balanced;
+            }
+        }
+    }
+}
+
+TEST_F(SpaceRender, StatsShowLocalScenesAndTraffic) {
+    SpaceStats stats;
+    render({2, 2, 2}, SpaceOptions::Results::Forward, false, &stats);
+    ASSERT_EQ(stats.boxes.size(), 8u);
+    EXPECT_FALSE(stats.parent_tracking);
+    size_t max_objects = 0;
+    uint64_t camera = 0, sent = 0;
+    for (const auto& b : stats.boxes) {
+        max_objects = std::max(max_objects, b.objects);
+        camera += b.camera;
+        sent += b.messages_sent;
+        EXPECT_EQ(b.peak_parents, 0u);  // forward contributions park nothing
+    }
+    EXPECT_LT(max_objects, scene_.objects.size());  // each box holds part of the scene
+    EXPECT_EQ(camera, uint64_t(96 * 72));
+    EXPECT_GT(sent, 0u);
+    render({2, 2, 2}, SpaceOptions::Results::Parents, false, &stats);
+    EXPECT_TRUE(stats.parent_tracking);
+    size_t parents = 0;
+    for (const auto& b : stats.boxes) parents = std::max(parents, b.peak_parents);
+    EXPECT_GT(parents, 0u);
+}
+
+TEST(SpaceRenderPlan, ReflectionExponentNeedsParents) {
+    Scene linear = parser::parse_scene_text("sphere { 0, 1 finish { reflection 0.5 } }", "a.pov", {});
+    Scene exponent = parser::parse_scene_text(
+        "sphere { 0, 1 finish { reflection { 0.5 exponent 2 } } }", "b.pov", {});
+    EXPECT_TRUE(shading_is_linear(linear));
+    EXPECT_FALSE(shading_is_linear(exponent));
+}
+
+}  // namespace
+}  // namespace povwall::distrib

@@ -1,0 +1,214 @@
+// Scene-language behaviour that real scenes and include files rely on: optional commas,
+// expression levels, identifiers of every kind, tolerance of unused unsupported features.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "parser/parser.h"
+
+namespace povwall::parser {
+namespace {
+
+Scene parse(const std::string& text, std::string* debug = nullptr) {
+    std::ostringstream messages;
+    ParseOptions o;
+    o.messages = &messages;
+    Scene s = parse_scene_text(text, "test.pov", o);
+    if (debug) *debug = messages.str();
+    return s;
+}
+
+std::string error_of(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const ParseError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+void expect_vec(const Vector3& v, double x, double y, double z) {
+    EXPECT_NEAR(v.x, x, 1e-9);
+    EXPECT_NEAR(v.y, y, 1e-9);
+    EXPECT_NEAR(v.z, z, 1e-9);
+}
+
+TEST(Syntax, CommasAreOptionalAndTrailingCommasAccepted) {
+    Scene s = parse(
+        "box { <-0.5, 0, -0.5> <0.5, 10, 0.5> }\n"
+        "sphere { < -1 0 0 > 2 }\n"
+        "cylinder { 0 y 0.5 }\n"
+        "sphere { 0, 1 pigment { color rgb <0.2, 0.1, 0.5,> } }\n");
+    ASSERT_EQ(s.objects.size(), 4u);
+    const Box& b = std::get<Box>(s.objects[0].shape);
+    expect_vec(b.corner1, -0.5, 0, -0.5);
+    expect_vec(b.corner2, 0.5, 10, 0.5);
+    const Sphere& sp = std::get<Sphere>(s.objects[1].shape);
+    expect_vec(sp.centre, -1, 0, 0);
+    EXPECT_EQ(sp.radius, 2);
+    const Cylinder& c = std::get<Cylinder>(s.objects[2].shape);
+    expect_vec(c.cap, 0, 1, 0);
+    EXPECT_EQ(c.radius, 0.5);
+    EXPECT_FLOAT_EQ(s.objects[3].texture[0].pigment.colour.rgb.b, 0.5f);
+}
+
+TEST(Syntax, ComparisonsNeedParenthesesInFloatPositions) {
+    // POV-Ray's Parse_Float reads sums only; `<` after a vector starts the next vector.
+    std::string out;
+    parse("#declare A = 2 < 3;\n#debug str(A, 0, 0)\n#debug str((1 > 2) + 5, 0, 0)\n", &out);
+    EXPECT_EQ(out, "15");
+}
+
+TEST(Identifiers, ArrayElementsStandWhereIdentifiersDo) {
+    Scene s = parse(
+        "#declare T = array[2]\n"
+        "#declare T[0] = texture { pigment { rgb <1, 0, 0> } }\n"
+        "#declare T[1] = texture { pigment { rgb <0, 0, 1> } }\n"
+        "#declare O = array[1] { sphere { 0, 3 } }\n"
+        "object { O[0] texture { T[1] } }\n");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).radius, 3);
+    EXPECT_FLOAT_EQ(s.objects[0].texture[0].pigment.colour.rgb.b, 1.0f);
+    EXPECT_EQ(error_of("#declare A = array[3]\n#declare B = A[1] + 1;"),
+              "test.pov:2:14: error: array element 'A[1]' used before it was set\n"
+              "#declare B = A[1] + 1;\n"
+              "             ^~~~");
+}
+
+TEST(Identifiers, LayeredTextureDeclarationAndBareObjectStatement) {
+    Scene s = parse(
+        "#declare L = texture { pigment { rgb 1 } } texture { pigment { rgbt <0, 0, 0, 0.5> } }\n"
+        "#declare Ball = sphere { 0, 1 texture { L } }\n"
+        "Ball\n");
+    ASSERT_EQ(s.objects.size(), 1u);
+    ASSERT_EQ(s.objects[0].texture.size(), 2u);
+    EXPECT_FLOAT_EQ(s.objects[0].texture[1].pigment.colour.transmit, 0.5f);
+}
+
+TEST(Tolerance, UnusedUnsupportedDeclarationsDoNotStopTheParse) {
+    std::string out;
+    Scene s = parse(
+        "#declare F = function { x * y }\n"
+        "#declare Q = quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }\n"
+        "#declare deprecated once \"old\" D = 4;\n"
+        "#debug str(D, 0, 0)\n"
+        "sphere { 0, 1 }\n",
+        &out);
+    EXPECT_EQ(out, "4");
+    EXPECT_EQ(s.objects.size(), 1u);
+    try {
+        parse("#declare Q = quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }\nobject { Q }\n");
+        FAIL() << "no error";
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.kind(), ParseError::Kind::Unsupported);
+        EXPECT_EQ(std::string(e.what()),
+                  "test.pov:2:10: error: unsupported: quadric\nobject { Q }\n         ^");
+    }
+}
+
+TEST(Textures, TextureMapAndCheckerTextures) {
+    Scene s = parse(
+        "sphere { 0, 1 texture { gradient x texture_map {\n"
+        "  [0.2 pigment { rgb 1 } finish { ambient 0.2 }]\n"
+        "  [0.8 texture { pigment { rgb <1, 0, 0> } }] } scale 2 } }\n"
+        "box { 0, 1 texture { checker texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } } }\n");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const Texture& t = s.objects[0].texture[0];
+    ASSERT_TRUE(t.map_pattern.has_value());
+    EXPECT_EQ(t.map_pattern->kind, PatternKind::Gradient);
+    ASSERT_EQ(t.map.size(), 2u);
+    EXPECT_EQ(t.map_values[0], 0.2f);
+    EXPECT_EQ(t.map[0][0].finish.ambient.r, 0.2f);
+    EXPECT_FLOAT_EQ(t.map[1][0].pigment.colour.rgb.r, 1.0f);
+    // `scale 2` after the map moves the pattern and the entries' patterns alike.
+    EXPECT_NEAR(t.map_pattern->transform.point({1, 1, 1}).x, 2, 1e-12);
+    EXPECT_NEAR(t.map[1][0].pigment.pattern.transform.point({1, 1, 1}).x, 2, 1e-12);
+    EXPECT_EQ(s.objects[1].texture[0].map.size(), 2u);
+    EXPECT_EQ(s.objects[1].texture[0].map_pattern->kind, PatternKind::Checker);
+}
+
+TEST(Textures, PigmentMapEntriesAreBodies) {
+    Scene s = parse(
+        "#declare P = pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } }\n"
+        "sphere { 0, 1 pigment { gradient y pigment_map { [0.01 rgb <1, 0, 0>] [0.5 P scale 2] } } }\n");
+    const Pigment& p = s.objects[0].texture[0].pigment;
+    ASSERT_EQ(p.list.size(), 2u);
+    EXPECT_FLOAT_EQ(p.list[0].colour.rgb.r, 1.0f);
+    EXPECT_EQ(p.list[1].pattern.kind, PatternKind::Bozo);
+    EXPECT_NEAR(p.list[1].pattern.transform.point({1, 0, 0}).x, 2, 1e-12);
+}
+
+TEST(Textures, DefaultFinishAppliesToLaterTextures) {
+    Scene s = parse(
+        "sphere { 0, 1 pigment { rgb 1 } }\n"
+        "#default { finish { ambient 0.3 diffuse 0.5 } }\n"
+        "sphere { 0, 1 pigment { rgb 1 } }\n"
+        "sphere { 0, 1 texture { finish { phong 1 } } }\n");
+    EXPECT_FLOAT_EQ(s.objects[0].texture[0].finish.ambient.r, 0.1f);
+    EXPECT_FLOAT_EQ(s.objects[1].texture[0].finish.ambient.r, 0.3f);
+    EXPECT_FLOAT_EQ(s.objects[1].texture[0].finish.diffuse, 0.5f);
+    EXPECT_FLOAT_EQ(s.objects[2].texture[0].finish.diffuse, 0.5f);
+    EXPECT_FLOAT_EQ(s.objects[2].texture[0].finish.phong, 1.0f);
+}
+
+TEST(Camera, LookAtKeepsLengthsAndHandedness) {
+    // angle 60 with right 4/3: |direction| = (4/3) / tan(30 deg) / 2.
+    Scene s = parse("camera { location <0, 0, -5> right x*4/3 angle 60 look_at <0, 0, 0> }");
+    double d = (4.0 / 3.0) / std::tan(kPi / 6) / 2;
+    expect_vec(s.camera.direction, 0, 0, d);
+    expect_vec(s.camera.right, 4.0 / 3.0, 0, 0);
+    expect_vec(s.camera.up, 0, 1, 0);
+    // A left-handed frame (right -x) flips right only; up stays direction x right.
+    Scene l = parse("camera { location <0, 0, -5> right -x up y look_at <5, 0, -5> }");
+    expect_vec(l.camera.direction, 1, 0, 0);
+    expect_vec(l.camera.right, 0, 0, 1);
+    expect_vec(l.camera.up, 0, 1, 0);
+    // Items apply in POV-Ray's fixed order: look_at before angle in the file changes nothing.
+    Scene o = parse("camera { look_at <0, 0, 0> angle 90 location <0, 0, -5> }");
+    expect_vec(o.camera.direction, 0, 0, 1.33 / 2);
+    // Sky tilts right and up.
+    Scene k = parse("camera { location <0, 0, -1> sky x look_at 0 }");
+    expect_vec(k.camera.right, 0, -1.33, 0);
+    expect_vec(k.camera.up, 1, 0, 0);
+}
+
+TEST(Includes, SearchOrderAndLocationsInsideIncludes) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::temp_directory_path() / "povwall_parser_include_test";
+    fs::create_directories(dir / "lib");
+    std::ofstream(dir / "lib" / "a.inc") << "#declare FromLib = 1;\n";
+    std::ofstream(dir / "b.inc") << "#declare FromScene = 2;\n\n  sphere { 0, }\n";
+    std::ofstream(dir / "scene.pov") << "#include \"a.inc\"\n#include \"b.inc\"\n";
+    ParseOptions o;
+    o.library_paths.push_back((dir / "lib").string());
+    try {
+        parse_scene_file((dir / "scene.pov").string(), o);
+        FAIL() << "no error";
+    } catch (const ParseError& e) {
+        std::string first = std::string(e.what()).substr(0, std::string(e.what()).find('\n'));
+        EXPECT_EQ(first, (dir / "b.inc").string() +
+                             ":3:15: error: expected the sphere's radius but found '}'");
+    }
+    std::ofstream(dir / "scene.pov") << "#include \"missing.inc\"\n";
+    try {
+        parse_scene_file((dir / "scene.pov").string(), o);
+        FAIL() << "no error";
+    } catch (const ParseError& e) {
+        EXPECT_EQ(std::string(e.what()).substr(0, std::string(e.what()).find('\n')),
+                  (dir / "scene.pov").string() +
+                      ":1:10: error: cannot find include file \"missing.inc\"");
+    }
+    fs::remove_all(dir);
+}
+
+TEST(Lexer, NestedCommentsAndStrayHash) {
+    std::string out;
+    parse("/* a /* nested */ still comment */ #debug \"x\" // line\n#\n#debug \"y\"\n", &out);
+    EXPECT_EQ(out, "xy");
+}
+
+}  // namespace
+}  // namespace povwall::parser

@@ -1,0 +1,273 @@
+// Ray-primitive intersections through the prepared scene: exact distances and normals,
+// transforms, grazing rays, rays starting inside, POV-Ray's minimum depths.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "tests/trace/scene_builder.h"
+#include "trace/intersect.h"
+#include "trace/prepared_scene.h"
+
+namespace povwall::trace {
+namespace {
+
+using test::object;
+
+struct Probe {
+    Scene scene;
+    Hit hit;
+    bool found = false;
+};
+
+bool shoot(const Scene& scene, Ray ray, Hit& hit, Real t_min = 0) {
+    ray.direction = normalize(ray.direction);
+    PreparedScene prepared(scene);
+    RayContext ctx;
+    prepared.init_context(ctx);
+    return prepared.closest_hit(ray, t_min, kInfinity, RayUse::Camera, hit, ctx);
+}
+
+Scene one(Object o) {
+    Scene s;
+    s.objects.push_back(std::move(o));
+    return s;
+}
+
+void expect_vec(const Vector3& a, const Vector3& b, Real tol = 1e-12) {
+    EXPECT_NEAR(a.x, b.x, tol);
+    EXPECT_NEAR(a.y, b.y, tol);
+    EXPECT_NEAR(a.z, b.z, tol);
+}
+
+TEST(Intersect, SphereFrontHitDistanceAndNormal) {
+    Hit h;
+    ASSERT_TRUE(shoot(one(object(Sphere{{0, 0, 5}, 1})), {{0, 0, 0}, {0, 0, 1}}, h));
+    EXPECT_DOUBLE_EQ(h.t, 4.0);
+    expect_vec(h.normal, {0, 0, -1});
+    expect_vec(h.point, {0, 0, 4});
+}
+
+TEST(Intersect, SphereMissJustOutside) {
+    Hit h;
+    EXPECT_FALSE(shoot(one(object(Sphere{{0, 0, 5}, 1})), {{1.000001, 0, 0}, {0, 0, 1}}, h));
+}
+
+TEST(Intersect, SphereGrazingRayTouches) {
+    // Discriminant exactly 0: POV-Ray counts the tangent point.
+    Hit h;
+    ASSERT_TRUE(shoot(one(object(Sphere{{0, 0, 5}, 1})), {{1, 0, 0}, {0, 0, 1}}, h));
+    EXPECT_DOUBLE_EQ(h.t, 5.0);
+    expect_vec(h.normal, {1, 0, 0});
+}
+
+TEST(Intersect, SphereFromInsideHitsFarSide) {
+    Hit h;
+    ASSERT_TRUE(shoot(one(object(Sphere{{0, 0, 5}, 2})), {{0, 0, 5}, {0, 1, 0}}, h));
+    EXPECT_DOUBLE_EQ(h.t, 2.0);
+    expect_vec(h.normal, {0, 1, 0});
+}
+
+TEST(Intersect, HitsCloserThanMinIsectDepthAreIgnored) {
+    // Surface 5e-5 ahead (< MIN_ISECT_DEPTH 1e-4): the next crossing is returned.
+    Hit h;
+    ASSERT_TRUE(shoot(one(object(Sphere{{0, 0, 5}, 1})), {{0, 0, 4 - 5e-5}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 2 + 5e-5, 1e-12);
+    // 2e-4 ahead is accepted.
+    ASSERT_TRUE(shoot(one(object(Sphere{{0, 0, 5}, 1})), {{0, 0, 4 - 2e-4}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 2e-4, 1e-12);
+}
+
+TEST(Intersect, ScaledTranslatedSphere) {
+    Transform xf = Transform::scale({1, 2, 1}).then(Transform::translate({0, 0, 5}));
+    Scene s = one(object(Sphere{{0, 0, 0}, 1}, xf));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0, 0, 0}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 4.0, 1e-12);
+    expect_vec(h.normal, {0, 0, -1});
+    ASSERT_TRUE(shoot(s, {{0, 10, 5}, {0, -1, 0}}, h));
+    EXPECT_NEAR(h.t, 8.0, 1e-12);
+    expect_vec(h.normal, {0, 1, 0});
+    // Off-axis on the ellipsoid: x = 0.6 gives y = 2 * 0.8 = 1.6, normal ~ (0.6, 0.8/2, 0).
+    ASSERT_TRUE(shoot(s, {{0.6, 10, 5}, {0, -1, 0}}, h));
+    EXPECT_NEAR(h.t, 10 - 1.6, 1e-12);
+    expect_vec(h.normal, normalize(Vector3{0.6, 0.4, 0}), 1e-12);
+}
+
+TEST(Intersect, BoxFacesFromOutsideAndInside) {
+    Scene s = one(object(Box{{-1, -2, -3}, {1, 2, 3}}));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0, 0, -10}, {0, 0, 1}}, h));
+    EXPECT_DOUBLE_EQ(h.t, 7.0);
+    expect_vec(h.normal, {0, 0, -1});
+    ASSERT_TRUE(shoot(s, {{5, 0, 0}, {-1, 0, 0}}, h));
+    EXPECT_DOUBLE_EQ(h.t, 4.0);
+    expect_vec(h.normal, {1, 0, 0});
+    ASSERT_TRUE(shoot(s, {{0, 0, 0}, {0, 1, 0}}, h));  // inside: exit face
+    EXPECT_DOUBLE_EQ(h.t, 2.0);
+    expect_vec(h.normal, {0, 1, 0});
+    // Swapped corners describe the same box.
+    Scene s2 = one(object(Box{{1, 2, 3}, {-1, -2, -3}}));
+    ASSERT_TRUE(shoot(s2, {{0, 0, -10}, {0, 0, 1}}, h));
+    EXPECT_DOUBLE_EQ(h.t, 7.0);
+    EXPECT_FALSE(shoot(s, {{0, 2.5, -10}, {0, 0, 1}}, h));
+}
+
+TEST(Intersect, RotatedBox) {
+    // Unit cube rotated 45 degrees about y: the corner points at the viewer.
+    Scene s = one(object(Box{{-1, -1, -1}, {1, 1, 1}},
+                         Transform::rotate({0, 45, 0}).then(Transform::translate({0, 0, 10}))));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0, 0.5, 0}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 10 - std::sqrt(2.0), 1e-12);
+    ASSERT_TRUE(shoot(s, {{0.1, 0, 0}, {0, 0, 1}}, h));
+    // Face x = -1 rotated: normal (-1,0,0) -> (-cos45, 0, sin45) ... facing -z and -x.
+    expect_vec(h.normal, normalize(Vector3{1, 0, -1}), 1e-12);
+}
+
+TEST(Intersect, PlaneFromAboveAndParallel) {
+    Scene s = one(object(Plane{{0, 1, 0}, -1}));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0, 0, 0}, {0, -1, 1}}, h));
+    EXPECT_NEAR(h.t, std::sqrt(2.0), 1e-12);
+    expect_vec(h.normal, {0, 1, 0});
+    EXPECT_FALSE(shoot(s, {{0, 0, 0}, {0, 0, 1}}, h));
+    EXPECT_FALSE(shoot(s, {{0, 0, 0}, {0, 1, 1}}, h));
+}
+
+TEST(Intersect, TransformedPlane) {
+    // plane { y, 0 } rotated <-90,0,0> (y goes to -z, left-handed) and moved to z = 3.
+    Scene s = one(object(Plane{{0, 1, 0}, 0},
+                         Transform::rotate({-90, 0, 0}).then(Transform::translate({0, 0, 3}))));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0, 0, 0}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 3.0, 1e-12);
+    expect_vec(h.normal, {0, 0, -1}, 1e-12);
+}
+
+TEST(Intersect, InverseSphereNormalPointsInward) {
+    Object o = object(Sphere{{0, 0, 5}, 1});
+    o.inverse = true;
+    Hit h;
+    ASSERT_TRUE(shoot(one(o), {{0, 0, 0}, {0, 0, 1}}, h));
+    EXPECT_DOUBLE_EQ(h.t, 4.0);
+    expect_vec(h.normal, {0, 0, 1});
+}
+
+TEST(Intersect, NoImageObjectsAreInvisibleToCameraRays) {
+    Scene s;
+    s.objects.push_back(object(Sphere{{0, 0, 5}, 1}));
+    s.objects.back().no_image = true;
+    s.objects.push_back(object(Sphere{{0, 0, 10}, 1}));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0, 0, 0}, {0, 0, 1}}, h));
+    EXPECT_DOUBLE_EQ(h.t, 9.0);
+}
+
+TEST(Intersect, ClosestOfManyThroughTheOctree) {
+    Scene s;
+    for (int i = 0; i < 200; ++i) s.objects.push_back(object(Sphere{{0, 0, 10.0 + i}, 0.25}));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0, 0, 0}, {0, 0, 1}}, h));
+    EXPECT_DOUBLE_EQ(h.t, 9.75);
+    ASSERT_TRUE(shoot(s, {{0, 0, 300}, {0, 0, -1}}, h));
+    EXPECT_DOUBLE_EQ(h.t, 300 - 209.25);
+}
+
+TEST(Intersect, CylinderSideAndCaps) {
+    Scene s = one(object(Cylinder{{0, 0, 0}, {0, 2, 0}, 1, false}));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0, 1, -5}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 4.0, 1e-12);
+    expect_vec(h.normal, {0, 0, -1}, 1e-12);
+    ASSERT_TRUE(shoot(s, {{0.5, 5, 0}, {0, -1, 0}}, h));
+    EXPECT_NEAR(h.t, 3.0, 1e-12);
+    expect_vec(h.normal, {0, 1, 0});
+    Scene open = one(object(Cylinder{{0, 0, 0}, {0, 2, 0}, 1, true}));
+    EXPECT_FALSE(shoot(open, {{0.5, 5, 0}, {0, -1, 0}}, h));  // no caps: through the tube
+    ASSERT_TRUE(shoot(open, {{0, 1, 0}, {1, 0, 0}}, h));       // from inside: the wall
+    EXPECT_NEAR(h.t, 1.0, 1e-12);
+}
+
+TEST(Intersect, TorusQuartic) {
+    Scene s = one(object(Torus{2, 0.5}));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{-10, 0, 0}, {1, 0, 0}}, h));
+    EXPECT_NEAR(h.t, 7.5, 1e-9);
+    expect_vec(h.normal, {-1, 0, 0}, 1e-9);
+    ASSERT_TRUE(shoot(s, {{2, 10, 0}, {0, -1, 0}}, h));
+    EXPECT_NEAR(h.t, 9.5, 1e-9);
+    EXPECT_FALSE(shoot(s, {{0, 10, 0}, {0, -1, 0}}, h));  // through the hole
+    // Thin torus at large scale stays accurate.
+    Scene big = one(object(Torus{1000, 1}));
+    ASSERT_TRUE(shoot(big, {{-2000, 0, 0}, {1, 0, 0}}, h));
+    EXPECT_NEAR(h.t, 999, 1e-6);
+}
+
+TEST(Intersect, PolygonWithHoleEvenOdd) {
+    Polygon poly;
+    for (auto [x, y] : {std::pair{0.0, 0.0}, {4.0, 0.0}, {4.0, 4.0}, {0.0, 4.0}, {0.0, 0.0},
+                        {1.0, 1.0}, {3.0, 1.0}, {3.0, 3.0}, {1.0, 3.0}, {1.0, 1.0}}) {
+        poly.points.push_back({x, y, 2});
+    }
+    Scene s = one(object(poly));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0.5, 0.5, 0}, {0, 0, 1}}, h));
+    EXPECT_DOUBLE_EQ(h.t, 2.0);
+    EXPECT_NEAR(std::fabs(h.normal.z), 1.0, 1e-12);
+    EXPECT_FALSE(shoot(s, {{2, 2, 0}, {0, 0, 1}}, h));    // in the hole
+    EXPECT_FALSE(shoot(s, {{4.5, 2, 0}, {0, 0, 1}}, h));  // outside
+    ASSERT_TRUE(shoot(s, {{3.5, 2, 0}, {0, 0, 1}}, h));   // ring between hole and edge
+}
+
+TEST(Intersect, QuarticSolverRoots) {
+    // (x-1)(x-2)(x-3)(x-4) = x^4 - 10x^3 + 35x^2 - 50x + 24
+    Real c[5] = {24, -50, 35, -10, 1};
+    Real r[4];
+    ASSERT_EQ(solve_quartic(c, r), 4);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(r[i], i + 1, 1e-12);
+}
+
+// Re-shooting from a hit point must never find the surface just left, at any scale.
+TEST(Intersect, NoSelfIntersectionUnderRandomTransforms) {
+    std::mt19937 rng(12345);
+    std::uniform_real_distribution<Real> u(-1, 1), ang(0, 360), lscale(-2, 3);
+    int checked = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        Real k = std::pow(10.0, lscale(rng));
+        Vector3 sc{k * (1 + 0.5 * u(rng)), k * (1 + 0.5 * u(rng)), k * (1 + 0.5 * u(rng))};
+        Transform xf = Transform::scale(sc)
+                           .then(Transform::rotate({ang(rng), ang(rng), ang(rng)}))
+                           .then(Transform::translate({u(rng) * k, u(rng) * k, u(rng) * k}));
+        ShapeData shape = (trial % 2) ? ShapeData(Sphere{{0, 0, 0}, 1})
+                                      : ShapeData(Box{{-1, -1, -1}, {1, 1, 1}});
+        Scene s = one(object(shape, xf));
+        Point3 centre = xf.point({0, 0, 0});
+        Point3 from = centre + Vector3{u(rng), u(rng), -3} * (4 * k);
+        Vector3 dir = normalize(centre + Vector3{u(rng), u(rng), u(rng)} * (0.3 * k) - from);
+        PreparedScene prepared(s);
+        RayContext ctx;
+        prepared.init_context(ctx);
+        Hit h;
+        if (!prepared.closest_hit({from, dir}, 0, kInfinity, RayUse::Camera, h, ctx)) continue;
+        ++checked;
+        // Mirror ray off a convex solid: never hits it again.
+        Vector3 n = dot(h.normal, dir) > 0 ? -h.normal : h.normal;
+        Vector3 refl = normalize(dir - n * (2 * dot(dir, n)));
+        Hit again;
+        EXPECT_FALSE(prepared.closest_hit({h.point, refl}, 0, kInfinity, RayUse::Camera, again,
+                                          ctx))
+            << "trial " << trial << " scale " << k << " t " << again.t;
+        // Straight on: the next hit is the far side, well away from the entry point.
+        Hit far;
+        ASSERT_TRUE(
+            prepared.closest_hit({h.point, dir}, 0, kInfinity, RayUse::Camera, far, ctx))
+            << "trial " << trial;
+        EXPECT_GT(far.t, 1e-3 * k) << "trial " << trial;
+        EXPECT_GT(dot(far.normal, dir), 0) << "trial " << trial;
+    }
+    EXPECT_GT(checked, 300);
+}
+
+}  // namespace
+}  // namespace povwall::trace

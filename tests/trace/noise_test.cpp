@@ -1,0 +1,65 @@
+// Properties of the noise functions that POV-Ray's definitions imply; the exact values are
+// checked against POV-Ray renders in pattern_test.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "trace/noise.h"
+
+namespace povwall::trace {
+namespace {
+
+TEST(Noise, ContinuousAcrossLatticeCellsIncludingNegative) {
+    for (int gen : {1, 2, 3}) {
+        for (double c : {-3.0, -1.0, 0.0, 1.0, 7.0, 4095.0, 4096.0}) {
+            Vector3 a{c - 1e-9, 0.3, 0.7}, b{c + 1e-9, 0.3, 0.7};
+            EXPECT_NEAR(noise(a, gen), noise(b, gen), 1e-6) << "gen " << gen << " x=" << c;
+            Vector3 da = dnoise({0.4, c - 1e-9, 0.2}), db = dnoise({0.4, c + 1e-9, 0.2});
+            EXPECT_NEAR(length(da - db), 0.0, 1e-6) << "y=" << c;
+        }
+    }
+}
+
+TEST(Noise, RangeIsClampedUnitInterval) {
+    double lo = 1, hi = 0;
+    for (int i = 0; i < 20000; ++i) {
+        Vector3 p{i * 0.173, i * 0.0711 - 300, std::sin(i * 1.3) * 50};
+        double v = noise(p, 2);
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+        ASSERT_GE(v, 0.0);
+        ASSERT_LE(v, 1.0);
+    }
+    // Range-corrected noise spans most of [0,1].
+    EXPECT_LT(lo, 0.15);
+    EXPECT_GT(hi, 0.85);
+}
+
+TEST(Noise, SingleOctaveTurbulenceIsNoise) {
+    TurbulenceParams one{1, 0.5, 2.0};
+    Vector3 p{1.25, -2.5, 3.75};
+    EXPECT_DOUBLE_EQ(turbulence(p, one, 1), noise(p, 1));
+    EXPECT_DOUBLE_EQ(turbulence(p, one, 2), std::clamp(2 * noise(p, 2) - 0.5, 0.0, 1.0));
+    EXPECT_EQ(dturbulence(p, one), dnoise(p));
+}
+
+TEST(Noise, WaveTableIsUnitSourcesAndPositiveFrequencies) {
+    const WaveTable& w = wave_table();
+    for (int i = 0; i < kMaxWaves; ++i) {
+        EXPECT_NEAR(length(w.source[i]), 1.0, 1e-12);
+        EXPECT_GE(w.frequency[i], 0.01);
+        EXPECT_LE(w.frequency[i], 1.01);
+    }
+}
+
+TEST(Noise, CycloidalAndTriangleWave) {
+    EXPECT_NEAR(cycloidal(0.25), 1.0, 1e-12);
+    EXPECT_NEAR(cycloidal(-0.25), -1.0, 1e-12);
+    EXPECT_NEAR(cycloidal(3.75), -1.0, 1e-12);
+    EXPECT_DOUBLE_EQ(triangle_wave(0.25), 0.5);
+    EXPECT_DOUBLE_EQ(triangle_wave(-0.25), 0.5);
+    EXPECT_DOUBLE_EQ(triangle_wave(1.75), 0.5);
+}
+
+}  // namespace
+}  // namespace povwall::trace

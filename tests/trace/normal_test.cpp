@@ -1,0 +1,117 @@
+// Perturbed normals compared with POV-Ray: a white plane lit by three parallel lights (red,
+// green, blue from different directions) with diffuse 1 shows N.L per channel.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "tests/trace/pov_reference.h"
+#include "trace/pattern.h"
+
+namespace povwall::trace {
+namespace {
+
+constexpr int kSize = 16;
+const Vector3 kLights[3] = {normalize(Vector3{1, 2, 0}), Vector3{0, 1, 0},
+                            normalize(Vector3{0, 2, -1})};
+
+double max_normal_error(const std::string& pov_normal, const Normal& normal) {
+    test::TopView view;
+    view.extent = 3.1;
+    std::string scene =
+        "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n" + view.camera() +
+        "light_source { <100,200,0> rgb <1,0,0> parallel point_at <0,0,0> }\n"
+        "light_source { <0,100,0> rgb <0,1,0> parallel point_at <0,0,0> }\n"
+        "light_source { <0,200,-100> rgb <0,0,1> parallel point_at <0,0,0> }\n"
+        "plane { y, 0.37 pigment { rgb 1 } normal { " + pov_normal +
+        " } finish { ambient 0 diffuse 1 } }\n";
+    test::RgbImage img = test::render_with_povray(scene, kSize);
+    double worst = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            Vector3 n = perturb_normal(normal, view.point(x, y, kSize), {0, 1, 0}, {});
+            for (int ch = 0; ch < 3; ++ch) {
+                double expected = std::clamp(dot(n, kLights[ch]), 0.0, 1.0);
+                worst = std::max(worst, std::fabs(img.at(x, y, ch) - expected));
+            }
+        }
+    }
+    std::printf("max error %.2e  normal { %s }\n", worst, pov_normal.c_str());
+    return worst;
+}
+
+constexpr double kTol = 1e-3;
+
+Normal with(PatternKind kind, double amount) {
+    Normal n;
+    n.pattern.kind = kind;
+    n.amount = amount;
+    return n;
+}
+
+TEST(NormalVsPovray, DedicatedNormals) {
+    EXPECT_LE(max_normal_error("bumps 0.6", with(PatternKind::Bumps, 0.6)), kTol);
+    EXPECT_LE(max_normal_error("dents 0.9", with(PatternKind::Dents, 0.9)), kTol);
+    EXPECT_LE(max_normal_error("wrinkles 0.4", with(PatternKind::Wrinkles, 0.4)), kTol);
+    EXPECT_LE(max_normal_error("ripples 0.5", with(PatternKind::Ripples, 0.5)), kTol);
+    EXPECT_LE(max_normal_error("waves 0.5", with(PatternKind::Waves, 0.5)), kTol);
+}
+
+TEST(NormalVsPovray, ScaledBumps) {
+    Normal n = with(PatternKind::Bumps, 0.5);
+    n.pattern.transform = Transform::scale({0.3, 0.6, 0.2});
+    EXPECT_LE(max_normal_error("bumps 0.5 scale <0.3,0.6,0.2>", n), kTol);
+}
+
+TEST(NormalVsPovray, PatternNormals) {
+    Normal g = with(PatternKind::Granite, 0.3);
+    EXPECT_LE(max_normal_error("granite 0.3", g), kTol);
+    Normal a = with(PatternKind::Agate, 0.5);
+    a.accuracy = 0.05;
+    EXPECT_LE(max_normal_error("agate 0.5 accuracy 0.05", a), kTol);
+    Normal gr = with(PatternKind::Gradient, 0.5);
+    gr.pattern.vector = {1, 0, 0};
+    gr.pattern.wave = WaveType::Sine;
+    EXPECT_LE(max_normal_error("gradient x 0.5 sine_wave", gr), kTol);
+}
+
+TEST(NormalVsPovray, QuiltedAndDiscreteNormals) {
+    Normal q = with(PatternKind::Quilted, 0.7);
+    q.pattern.vector = {1, 1, 0};
+    q.pattern.transform = Transform::scale({0.6, 0.6, 0.6});
+    EXPECT_LE(max_normal_error("quilted 0.7 scale 0.6", q), kTol);
+    q.pattern.vector = {0.2, 0.9, 0};
+    EXPECT_LE(max_normal_error("quilted 0.7 control0 0.2 control1 0.9 scale 0.6", q), kTol);
+    Normal c = with(PatternKind::Crackle, 0.5);
+    EXPECT_LE(max_normal_error("crackle 0.5", c), kTol);
+    Normal h = with(PatternKind::Hexagon, 0.5);
+    h.pattern.transform = Transform::scale({0.4, 0.4, 0.4});
+    EXPECT_LE(max_normal_error("hexagon 0.5 scale 0.4", h), kTol);
+}
+
+TEST(NormalVsPovray, AverageNormals) {
+    Normal avg;
+    avg.pattern.kind = PatternKind::Average;
+    avg.map_values = {1.0f, 2.0f};
+    avg.list = {with(PatternKind::Bumps, 0.9), with(PatternKind::Granite, 0.4)};
+    EXPECT_LE(max_normal_error("average normal_map { [1 bumps 0.9] [2 granite 0.4] }", avg),
+              kTol);
+}
+
+TEST(NormalVsPovray, ScaledPatternNormalAndNormalMap) {
+    Normal g = with(PatternKind::Granite, 0.4);
+    g.pattern.transform = Transform::scale({2, 2, 2});
+    EXPECT_LE(max_normal_error("granite 0.4 scale 2", g), kTol);
+    Normal m;
+    m.pattern.kind = PatternKind::Gradient;
+    m.pattern.vector = {1, 0, 0};
+    m.map_values = {0.3f, 0.7f};
+    m.list = {with(PatternKind::Bumps, 0.8), with(PatternKind::Wrinkles, 0.5)};
+    EXPECT_LE(max_normal_error("gradient x normal_map { [0.3 bumps 0.8] [0.7 wrinkles 0.5] }",
+                               m),
+              kTol);
+}
+
+}  // namespace
+}  // namespace povwall::trace

@@ -1,0 +1,291 @@
+// Tables: the hash permutation, the generator-3 gradients and permutation, the wave
+// sources/frequencies and the pattern random table are all generated here the way POV-Ray
+// 3.7 generates them (its 31-bit LCG, and MT19937 with the default seed for the pattern
+// random table). Only the lattice-noise value table (noise_rtable.inc) is literal data: 3.7
+// ships it as numbers that do not come from any of its generators.
+#include "trace/noise.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+namespace povwall::trace {
+namespace {
+
+constexpr Real kEpsilon = 1e-10;  // POV-Ray's EPSILON
+constexpr int kLatticeOffset = -10000;  // POV-Ray shifts lattice coordinates by this
+constexpr int kPerlinEntries = 2048;    // gradient table size of the generator-3 noise
+constexpr Real kRollover = 10000000.023157213;
+
+// The 31-bit LCG POV-Ray uses for its tables: state*1812433253+12345, bits 16..30.
+struct PovRand {
+    uint32_t state;
+    int next() {
+        state = state * 1812433253u + 12345u;
+        return int((state >> 16) & 0x7FFF);
+    }
+};
+
+// The RTable literal: value k and its half are what each lattice corner reads.
+constexpr Real kRValues[267] = {
+#include "trace/noise_rtable.inc"
+};
+
+struct Tables {
+    uint16_t hash[8192];
+    // rtab[2k] = value k, rtab[2k+1] = value k / 2, as POV-Ray lays them out.
+    Real rtab[267 * 2];
+    int perm[2 * (kPerlinEntries + 1)];
+    Vector3 grad[2 * (kPerlinEntries + 1)];
+    WaveTable waves;
+    Real pattern_rands[32768];
+};
+
+Vector3 lattice_dnoise(const Tables& t, const Vector3& p);
+
+Tables build_tables() {
+    Tables t{};
+    // Hash table: a seed-0 shuffle of 0..4095, then duplicated.
+    for (int i = 0; i < 4096; ++i) t.hash[i] = uint16_t(i);
+    PovRand rng{0};
+    for (int i = 4095; i >= 0; --i) {
+        int j = rng.next() % 4096;
+        std::swap(t.hash[i], t.hash[j]);
+    }
+    for (int i = 0; i < 4096; ++i) t.hash[4096 + i] = t.hash[i];
+    for (int i = 0; i < 267; ++i) {
+        t.rtab[2 * i] = kRValues[i];
+        t.rtab[2 * i + 1] = kRValues[i] * 0.5;
+    }
+    // Generator 3: unit gradients by rejection sampling, then a pairwise shuffle, both from
+    // the same LCG seeded with 1. The permutation's last slot starts at 0 and the
+    // duplication is a forward copy that overlaps itself, exactly as POV-Ray does it.
+    PovRand prng{1};
+    for (int i = 0; i < kPerlinEntries; ++i) {
+        Vector3 v;
+        Real s;
+        do {
+            for (int j = 0; j < 3; ++j) {
+                v[j] = Real((prng.next() % (kPerlinEntries << 1)) - kPerlinEntries) /
+                       Real(kPerlinEntries);
+            }
+            s = dot(v, v);
+        } while (s > 1.0 || s < 1.0e-5);
+        t.grad[i] = v / std::sqrt(s);
+    }
+    for (int i = 0; i < kPerlinEntries; ++i) t.perm[i] = i;
+    for (int i = kPerlinEntries; i > 0; i -= 2) {
+        int k = t.perm[i];
+        int j = prng.next() % kPerlinEntries;
+        t.perm[i] = t.perm[j];
+        t.perm[j] = k;
+    }
+    for (int i = 0; i < kPerlinEntries + 2; ++i) {
+        t.perm[kPerlinEntries + i] = t.perm[i];
+        t.grad[kPerlinEntries + i] = t.grad[i];
+    }
+    // Wave sources: normalised vector noise at (i,0,0); frequencies from an LCG whose
+    // signed state starts at -560851967.
+    uint32_t state = uint32_t(int32_t(-560851967));
+    for (int i = 0; i < kMaxWaves; ++i) {
+        t.waves.source[i] = normalize(lattice_dnoise(t, Vector3(Real(i), 0, 0)));
+        state = state * 1812433253u + 12345u;
+        int r = int(int32_t(state) >> 16) & 0x7FFF;
+        t.waves.frequency[i] = Real(r) * 0.000030518509476 + 0.01;
+    }
+    std::mt19937 mt;  // default seed 5489, as boost::mt19937
+    for (Real& r : t.pattern_rands) r = Real(mt()) / 4294967296.0;
+    return t;
+}
+
+// Lattice cell and fractional offset of one coordinate (POV-Ray's "range fix").
+inline void lattice_axis(Real v, int& cell, Real& frac) {
+    int tmp = v >= 0 ? int(v) : int(v - (1 - kEpsilon));
+    cell = (tmp - kLatticeOffset) & 0xFFF;
+    frac = v - tmp;
+}
+
+inline Real scurve(Real a) { return a * a * (3.0 - 2.0 * a); }
+
+struct Corners {
+    int h00, h10, h01, h11;  // hashes of the four (x,y) columns
+    int iz;
+    Real fx, fy, fz;         // offsets from the low corner
+    Real sx, sy, sz, tx, ty, tz;
+};
+
+inline Corners corners(const Tables& t, const Vector3& p) {
+    Corners c;
+    int ix, iy;
+    lattice_axis(p.x, ix, c.fx);
+    lattice_axis(p.y, iy, c.fy);
+    lattice_axis(p.z, c.iz, c.fz);
+    c.sx = scurve(c.fx);
+    c.sy = scurve(c.fy);
+    c.sz = scurve(c.fz);
+    c.tx = 1 - c.sx;
+    c.ty = 1 - c.sy;
+    c.tz = 1 - c.sz;
+    auto hash2 = [&](int a, int b) { return int(t.hash[int(t.hash[a]) ^ b]); };
+    c.h00 = hash2(ix, iy);
+    c.h10 = hash2(ix + 1, iy);
+    c.h01 = hash2(ix, iy + 1);
+    c.h11 = hash2(ix + 1, iy + 1);
+    return c;
+}
+
+// Index into rtab of the corner (column hash, z cell).
+inline int rindex(const Tables& t, int column_hash, int z) {
+    return (t.hash[column_hash ^ z] & 0xFF) * 2;
+}
+
+// One corner's contribution: weight * (half value + linear gradient term).
+inline Real corner_term(const Real* m, Real w, Real x, Real y, Real z) {
+    return w * (m[1] + m[2] * x + m[4] * y + m[6] * z);
+}
+
+Real lattice_noise_raw(const Tables& t, const Vector3& p) {
+    Corners c = corners(t, p);
+    Real x0 = c.fx, y0 = c.fy, z0 = c.fz, x1 = c.fx - 1, y1 = c.fy - 1, z1 = c.fz - 1;
+    Real txty = c.tx * c.ty, sxty = c.sx * c.ty, txsy = c.tx * c.sy, sxsy = c.sx * c.sy;
+    const Real* r = t.rtab;
+    Real sum = corner_term(r + rindex(t, c.h00, c.iz), txty * c.tz, x0, y0, z0);
+    sum += corner_term(r + rindex(t, c.h10, c.iz), sxty * c.tz, x1, y0, z0);
+    sum += corner_term(r + rindex(t, c.h01, c.iz), txsy * c.tz, x0, y1, z0);
+    sum += corner_term(r + rindex(t, c.h11, c.iz), sxsy * c.tz, x1, y1, z0);
+    sum += corner_term(r + rindex(t, c.h00, c.iz + 1), txty * c.sz, x0, y0, z1);
+    sum += corner_term(r + rindex(t, c.h10, c.iz + 1), sxty * c.sz, x1, y0, z1);
+    sum += corner_term(r + rindex(t, c.h01, c.iz + 1), txsy * c.sz, x0, y1, z1);
+    sum += corner_term(r + rindex(t, c.h11, c.iz + 1), sxsy * c.sz, x1, y1, z1);
+    return sum;
+}
+
+// Vector version: three consecutive table windows, 8 entries apart, per corner.
+inline void add_corner(Vector3& acc, const Real* m, Real w, Real x, Real y, Real z) {
+    acc.x += corner_term(m, w, x, y, z);
+    acc.y += corner_term(m + 8, w, x, y, z);
+    acc.z += corner_term(m + 16, w, x, y, z);
+}
+
+Vector3 lattice_dnoise(const Tables& t, const Vector3& p) {
+    Corners c = corners(t, p);
+    Real x0 = c.fx, y0 = c.fy, z0 = c.fz, x1 = c.fx - 1, y1 = c.fy - 1, z1 = c.fz - 1;
+    Real txty = c.tx * c.ty, sxty = c.sx * c.ty, txsy = c.tx * c.sy, sxsy = c.sx * c.sy;
+    const Real* r = t.rtab;
+    // Same corner order as POV-Ray so the floating-point sums agree.
+    Vector3 v{0, 0, 0};
+    add_corner(v, r + rindex(t, c.h00, c.iz), txty * c.tz, x0, y0, z0);
+    add_corner(v, r + rindex(t, c.h10, c.iz), sxty * c.tz, x1, y0, z0);
+    add_corner(v, r + rindex(t, c.h11, c.iz), sxsy * c.tz, x1, y1, z0);
+    add_corner(v, r + rindex(t, c.h01, c.iz), txsy * c.tz, x0, y1, z0);
+    add_corner(v, r + rindex(t, c.h01, c.iz + 1), txsy * c.sz, x0, y1, z1);
+    add_corner(v, r + rindex(t, c.h11, c.iz + 1), sxsy * c.sz, x1, y1, z1);
+    add_corner(v, r + rindex(t, c.h10, c.iz + 1), sxty * c.sz, x1, y0, z1);
+    add_corner(v, r + rindex(t, c.h00, c.iz + 1), txty * c.sz, x0, y0, z1);
+    return v;
+}
+
+inline void perlin_axis(Real v, int& b0, int& b1, Real& r0, Real& r1) {
+    Real t = v + kRollover;
+    int it = int(std::floor(t));
+    b0 = it & (kPerlinEntries - 1);
+    b1 = (b0 + 1) & (kPerlinEntries - 1);
+    r0 = t - it;
+    r1 = r0 - 1.0;
+}
+
+inline Real lerp(Real t, Real a, Real b) { return a + t * (b - a); }
+
+Real perlin_noise(const Tables& t, const Vector3& p) {
+    int bx0, bx1, by0, by1, bz0, bz1;
+    Real rx0, rx1, ry0, ry1, rz0, rz1;
+    perlin_axis(p.x, bx0, bx1, rx0, rx1);
+    perlin_axis(p.y, by0, by1, ry0, ry1);
+    perlin_axis(p.z, bz0, bz1, rz0, rz1);
+    int i = t.perm[bx0], j = t.perm[bx1];
+    int b00 = t.perm[i + by0], b10 = t.perm[j + by0];
+    int b01 = t.perm[i + by1], b11 = t.perm[j + by1];
+    Real sx = scurve(rx0), sy = scurve(ry0), sz = scurve(rz0);
+    auto at = [&](int g, Real x, Real y, Real z) {
+        const Vector3& q = t.grad[g];
+        return x * q.x + y * q.y + z * q.z;
+    };
+    Real a = lerp(sx, at(b00 + bz0, rx0, ry0, rz0), at(b10 + bz0, rx1, ry0, rz0));
+    Real b = lerp(sx, at(b01 + bz0, rx0, ry1, rz0), at(b11 + bz0, rx1, ry1, rz0));
+    Real c = lerp(sy, a, b);
+    a = lerp(sx, at(b00 + bz1, rx0, ry0, rz1), at(b10 + bz1, rx1, ry0, rz1));
+    b = lerp(sx, at(b01 + bz1, rx0, ry1, rz1), at(b11 + bz1, rx1, ry1, rz1));
+    Real d = lerp(sy, a, b);
+    return lerp(sz, c, d);
+}
+
+const Tables kTables = build_tables();
+
+inline Real clamp01(Real v) { return v < 0 ? 0 : (v > 1 ? 1 : v); }
+
+}  // namespace
+
+Real noise(const Vector3& p, int generator) {
+    if (generator == 3) {
+        // POV-Ray's empirical bias correction for this generator.
+        return clamp01(0.5 * (1.59 * perlin_noise(kTables, p) + 0.985));
+    }
+    Real sum = lattice_noise_raw(kTables, p);
+    if (generator == 1) return clamp01(sum + 0.5);
+    // Range-corrected: maps the measured range [-1.05242, 0.988997] onto [0,1].
+    return clamp01((sum + 1.05242) * 0.48985582);
+}
+
+Vector3 dnoise(const Vector3& p) { return lattice_dnoise(kTables, p); }
+
+Real turbulence(const Vector3& p, const TurbulenceParams& t, int generator) {
+    // Generators 2 and 3 stretch each octave's noise (2n - 0.5); only the first is clipped.
+    bool stretch = generator != 1 && generator != 0;
+    Real value = stretch ? clamp01(2.0 * noise(p, generator) - 0.5) : noise(p, generator);
+    Real l = t.lambda, o = t.omega;
+    for (int i = 2; i <= t.octaves; ++i) {
+        Real n = noise(p * l, generator);
+        value += o * (stretch ? 2.0 * n - 0.5 : n);
+        if (i < t.octaves) {
+            l *= t.lambda;
+            o *= t.omega;
+        }
+    }
+    return value;
+}
+
+Vector3 dturbulence(const Vector3& p, const TurbulenceParams& t) {
+    Vector3 result = dnoise(p);
+    Real l = t.lambda, o = t.omega;
+    for (int i = 2; i <= t.octaves; ++i) {
+        result += dnoise(p * l) * o;
+        if (i < t.octaves) {
+            l *= t.lambda;
+            o *= t.omega;
+        }
+    }
+    return result;
+}
+
+Real cycloidal(Real v) {
+    constexpr Real kTwoPi = 2 * kPi;
+    if (v >= 0.0) return std::sin(((v - std::floor(v)) * 50000.0) / 50000.0 * kTwoPi);
+    return -std::sin(((0.0 - (v + std::floor(0.0 - v))) * 50000.0) / 50000.0 * kTwoPi);
+}
+
+Real triangle_wave(Real v) {
+    Real offset = v >= 0.0 ? v - std::floor(v) : v + 1.0 + std::floor(std::fabs(v));
+    return offset >= 0.5 ? 2.0 * (1.0 - offset) : 2.0 * offset;
+}
+
+const WaveTable& wave_table() { return kTables.waves; }
+
+int hash3d(int x, int y, int z) {
+    const uint16_t* h = kTables.hash;
+    return h[int(h[int(h[x & 0xfff]) ^ (y & 0xfff)]) ^ (z & 0xfff)];
+}
+
+Real pattern_random(size_t index) { return kTables.pattern_rands[index % 32768]; }
+
+}  // namespace povwall::trace

@@ -1,0 +1,36 @@
+// Pieces shared by the pattern, pigment and normal evaluators (not a public interface).
+#pragma once
+
+#include "core/scene.h"
+#include "trace/noise.h"
+#include "trace/pattern.h"
+
+namespace povwall::trace::detail {
+
+// The classic turbulence of a pattern, or null.
+const Warp* classic_turbulence(const PatternSpec& spec);
+
+// World point -> pattern-space point: transforms and warps, classic turbulence included
+// where POV-Ray applies it (everything but marble and wood).
+Point3 warp_point(const PatternSpec& spec, const Point3& world);
+
+// World-space normal -> pattern space (only the transforms act, as in POV-Ray), unit.
+Vector3 warp_normal(const PatternSpec& spec, const Vector3& n);
+// Pattern-space normal -> world space, unit.
+Vector3 unwarp_normal(const PatternSpec& spec, const Vector3& n);
+
+// The pattern value at an already warped point (POV-Ray's Evaluate_TPat).
+Real value_at(const PatternSpec& spec, const Point3& p, const PatternEnv& env);
+
+// POV-Ray's quilted profile (Bezier with controls p1, p2).
+Real quilt_cubic(Real t, Real p1, Real p2);
+
+inline int resolve_generator(const PatternSpec& spec, const PatternEnv& env) {
+    return spec.noise_generator != 0 ? spec.noise_generator : env.noise_generator;
+}
+
+inline bool is_discrete(PatternKind k) {
+    return k == PatternKind::Checker || k == PatternKind::Brick || k == PatternKind::Hexagon;
+}
+
+}  // namespace povwall::trace::detail
