@@ -47,7 +47,8 @@ Real hit_tri(const Tri& t, const Ray& ray) {
     return d > 1e-9 ? d : kInfinity;
 }
 
-std::vector<Sphere> random_spheres(int n, Real spread, std::mt19937& rng, Real scale = 1) {
+std::vector<Sphere> random_spheres(int n, Real spread, std::mt19937& rng,
+                                   Real scale = 1) {
     std::uniform_real_distribution<Real> pos(-spread, spread), rad(0.05, 0.6);
     std::vector<Sphere> s;
     for (int i = 0; i < n; ++i) {
@@ -58,7 +59,8 @@ std::vector<Sphere> random_spheres(int n, Real spread, std::mt19937& rng, Real s
 
 BuildInput sphere_input(const std::vector<Sphere>& spheres, bool exact = true) {
     BuildInput in;
-    for (const auto& s : spheres) in.bounds.push_back({s.c - Vector3(s.r), s.c + Vector3(s.r)});
+    for (const auto& s : spheres)
+        in.bounds.push_back({s.c - Vector3(s.r), s.c + Vector3(s.r)});
     if (exact) {
         in.overlaps = [&spheres](uint32_t id, const Bounds3& cell) {
             return sphere_overlaps(spheres[id].c, spheres[id].r, cell);
@@ -82,7 +84,8 @@ Real octree_closest(const Octree& tree, const Ray& ray, Mailbox& mb, Hit hit, in
     mb.next_ray();
     tree.traverse_with_entry(ray, 0, best,
                              [&](const uint32_t* ids, size_t n, Real& t_max, Real entry) {
-                                 if (entry < last_entry || entry > t_max) *ordered = false;
+                                 if (entry < last_entry || entry > t_max)
+                                     *ordered = false;
                                  last_entry = entry;
                                  for (size_t i = 0; i < n; ++i) {
                                      if (!mb.first_visit(ids[i])) continue;
@@ -114,12 +117,13 @@ TEST(Octree, ClosestHitEqualsBruteForceOnRandomSpheres) {
     bool ordered = true;
     for (int n = 0; n < 20000; ++n) {
         Ray ray = random_ray(rng, 10, n);
-        if (n % 11 == 0) ray.origin.x = tree.bounds().centre().x;  // on the root mid-plane
+        if (n % 11 == 0)
+            ray.origin.x = tree.bounds().centre().x;  // on the root mid-plane
         Real brute = kInfinity;
         for (const auto& s : spheres) brute = std::min(brute, hit_sphere(s, ray));
         Real best = octree_closest(
-            tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); }, &tests,
-            &ordered);
+            tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); },
+            &tests, &ordered);
         ASSERT_EQ(best, brute) << "ray " << n;
         hits += best < kInfinity;
     }
@@ -161,7 +165,8 @@ TEST(Octree, ClosestHitEqualsBruteForceOnRandomTriangles) {
         Real brute = kInfinity;
         for (const auto& t : tris) brute = std::min(brute, hit_tri(t, ray));
         Real best = octree_closest(
-            tree, ray, mb, [&](uint32_t id) { return hit_tri(tris[id], ray); }, &tests, &ordered);
+            tree, ray, mb, [&](uint32_t id) { return hit_tri(tris[id], ray); }, &tests,
+            &ordered);
         ASSERT_EQ(best, brute) << "ray " << n;
         hits += best < kInfinity;
     }
@@ -211,8 +216,8 @@ TEST(Octree, RaysAlongCellBoundaries) {
         Real brute = kInfinity;
         for (const auto& s : spheres) brute = std::min(brute, hit_sphere(s, ray));
         Real best = octree_closest(
-            tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); }, &tests,
-            &ordered);
+            tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); },
+            &tests, &ordered);
         ASSERT_EQ(best, brute) << "ray " << n;
         hits += best < kInfinity;
     }
@@ -249,7 +254,8 @@ TEST(Octree, HugeTinyAndFlatScenes) {
     BuildInput in;
     for (int i = 0; i < 2000; ++i) {
         Point3 a{pos(rng), pos(rng), 3};
-        tris.push_back({a, a + Vector3{off(rng), off(rng), 0}, a + Vector3{off(rng), off(rng), 0}});
+        tris.push_back(
+            {a, a + Vector3{off(rng), off(rng), 0}, a + Vector3{off(rng), off(rng), 0}});
         Bounds3 b;
         b.extend(tris.back().a);
         b.extend(tris.back().b);
@@ -272,7 +278,8 @@ TEST(Octree, HugeTinyAndFlatScenes) {
         Real brute = kInfinity;
         for (const auto& t : tris) brute = std::min(brute, hit_tri(t, ray));
         Real best = octree_closest(
-            tree, ray, mb, [&](uint32_t id) { return hit_tri(tris[id], ray); }, &tests, &ordered);
+            tree, ray, mb, [&](uint32_t id) { return hit_tri(tris[id], ray); }, &tests,
+            &ordered);
         ASSERT_EQ(best, brute) << "ray " << n;
         hits += best < kInfinity;
     }
@@ -300,12 +307,13 @@ TEST(Octree, LeavesComeFrontToBackAndStopEarly) {
     // A closest hit at t = 4.7 ends traversal: no leaf starting beyond it is visited.
     int visits = 0;
     t_max = kInfinity;
-    tree.traverse_with_entry(ray, 0, t_max, [&](const uint32_t*, size_t, Real& t, Real entry) {
-        EXPECT_LE(entry, 4.7);
-        ++visits;
-        t = 4.7;
-        return false;
-    });
+    tree.traverse_with_entry(ray, 0, t_max,
+                             [&](const uint32_t*, size_t, Real& t, Real entry) {
+                                 EXPECT_LE(entry, 4.7);
+                                 ++visits;
+                                 t = 4.7;
+                                 return false;
+                             });
     EXPECT_GE(visits, 1);
     EXPECT_LE(visits, 3);
 }
@@ -417,7 +425,8 @@ TEST(Octree, ParallelBuildEqualsSerialBuild) {
         const Octree::Node &nx = a.nodes()[x], &ny = b.nodes()[y];
         ASSERT_EQ(nx.count, ny.count);
         if (nx.count == Octree::kInner) {
-            for (uint32_t c = 0; c < 8; ++c) stack.push_back({nx.first + c, ny.first + c});
+            for (uint32_t c = 0; c < 8; ++c)
+                stack.push_back({nx.first + c, ny.first + c});
         } else {
             for (uint32_t i = 0; i < nx.count; ++i) {
                 ASSERT_EQ(a.ids()[nx.first + i], b.ids()[ny.first + i]);
