@@ -215,6 +215,8 @@ void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel,
     // Cells are tracked only when a mid-plane parameter needs the geometry.
     Cell cells[kParallel ? kMaxDepth + 1 : 1];
     // Mid-plane parameters of a frame's cell and its first child (the entry-plane rule).
+    // The rule is applied at max(entry, t_min): a ray starting inside the cell begins in
+    // the child holding its start, skipping the children behind it in O(1).
     auto open = [&](Frame& f, const Cell& cell) {
         for (int a = 0; a < 3; ++a) {
             if constexpr (kParallel) {
@@ -228,7 +230,7 @@ void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel,
                 f.tm[a] = (f.t0[a] + f.t1[a]) * 0.5;
             }
         }
-        const Real enter = std::max({f.t0[0], f.t0[1], f.t0[2]});
+        const Real enter = std::max({f.t0[0], f.t0[1], f.t0[2], t_min});
         f.child = unsigned(f.tm[0] < enter) | unsigned(f.tm[1] < enter) << 1 |
                   unsigned(f.tm[2] < enter) << 2;
     };

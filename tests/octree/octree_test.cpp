@@ -333,6 +333,49 @@ TEST(Octree, RayStartingInsideSkipsCellsBehindIt) {
     EXPECT_LE(lowest, 100u);
 }
 
+// Secondary-ray style queries: only hits beyond t_min count, cells behind are skipped.
+TEST(Octree, ClosestHitBeyondTMinEqualsBruteForce) {
+    std::mt19937 rng(17);
+    std::vector<Sphere> spheres = random_spheres(3000, 10, rng);
+    Octree tree = build_spheres(spheres);
+    std::uniform_real_distribution<Real> tm(0, 20);
+    auto hit_after = [&](const Sphere& s, const Ray& ray, Real t_min) {
+        Vector3 oc = s.c - ray.origin;
+        Real dd = dot(ray.direction, ray.direction);
+        Real tca = dot(oc, ray.direction) / dd;
+        Real d2 = s.r * s.r / dd - (dot(oc, oc) / dd - tca * tca);
+        if (d2 < 0) return kInfinity;
+        Real th = std::sqrt(d2);
+        if (tca - th > t_min) return tca - th;
+        if (tca + th > t_min) return tca + th;
+        return kInfinity;
+    };
+    Mailbox mb;
+    mb.resize(spheres.size());
+    int hits = 0;
+    for (int n = 0; n < 10000; ++n) {
+        Ray ray = random_ray(rng, 10, n);
+        const Real t_min = tm(rng);
+        Real brute = kInfinity;
+        for (const auto& s : spheres) brute = std::min(brute, hit_after(s, ray, t_min));
+        Real best = kInfinity;
+        mb.next_ray();
+        tree.traverse_with_entry(
+            ray, t_min, best, [&](const uint32_t* ids, size_t k, Real& t_max, Real entry) {
+                EXPECT_LE(entry, t_max);
+                for (size_t i = 0; i < k; ++i) {
+                    if (mb.first_visit(ids[i])) {
+                        t_max = std::min(t_max, hit_after(spheres[ids[i]], ray, t_min));
+                    }
+                }
+                return false;
+            });
+        ASSERT_EQ(best, brute) << "ray " << n;
+        hits += best < kInfinity;
+    }
+    EXPECT_GT(hits, 1000);
+}
+
 TEST(Octree, NanAndInfiniteRaysVisitNothing) {
     std::mt19937 rng(3);
     std::vector<Sphere> spheres = random_spheres(500, 10, rng);
