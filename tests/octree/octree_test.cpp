@@ -361,7 +361,8 @@ TEST(Octree, ClosestHitBeyondTMinEqualsBruteForce) {
         Real best = kInfinity;
         mb.next_ray();
         tree.traverse_with_entry(
-            ray, t_min, best, [&](const uint32_t* ids, size_t k, Real& t_max, Real entry) {
+            ray, t_min, best,
+            [&](const uint32_t* ids, size_t k, Real& t_max, Real entry) {
                 EXPECT_LE(entry, t_max);
                 for (size_t i = 0; i < k; ++i) {
                     if (mb.first_visit(ids[i])) {
