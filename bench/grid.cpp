@@ -43,7 +43,8 @@ Real UniformGrid::closest(const Spheres& s, const Ray& ray, octree::Mailbox& mb,
     Real t0 = 0, t1 = kInfinity;
     for (int a = 0; a < 3; ++a) {
         Real inv = 1 / ray.direction[a];
-        Real ta = (box_.lo[a] - ray.origin[a]) * inv, tb = (box_.hi[a] - ray.origin[a]) * inv;
+        Real ta = (box_.lo[a] - ray.origin[a]) * inv,
+             tb = (box_.hi[a] - ray.origin[a]) * inv;
         if (ta > tb) std::swap(ta, tb);
         t0 = std::max(t0, ta);
         t1 = std::min(t1, tb);

@@ -1,7 +1,8 @@
 // Closest-hit throughput of the octree against brute force and a naive uniform grid on
 // random sphere scenes at the seed scene's density, build times, and the flat-list
 // crossover. Rays are half camera rays, half secondary rays from inside the scene.
-// Run: build/bench/povwall_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
+// Run: build/bench/povwall_bench --benchmark_repetitions=5
+// --benchmark_report_aggregates_only
 #include <benchmark/benchmark.h>
 
 #include <climits>
@@ -30,8 +31,10 @@ struct Fixture {
 // POVWALL_BENCH_LEAF / POVWALL_BENCH_TRAV override the build options (tuning runs).
 octree::BuildOptions options() {
     octree::BuildOptions opt;
-    if (const char* v = std::getenv("POVWALL_BENCH_LEAF")) opt.leaf_primitives = std::atoi(v);
-    if (const char* v = std::getenv("POVWALL_BENCH_TRAV")) opt.traversal_cost = std::atof(v);
+    if (const char* v = std::getenv("POVWALL_BENCH_LEAF"))
+        opt.leaf_primitives = std::atoi(v);
+    if (const char* v = std::getenv("POVWALL_BENCH_TRAV"))
+        opt.traversal_cost = std::atof(v);
     return opt;
 }
 
@@ -103,7 +106,8 @@ void BM_Octree(benchmark::State& state) {
 
 void BM_OctreeBoundsOnly(benchmark::State& state) {
     Fixture& f = fixture(size_t(state.range(0)));
-    if (!f.has_loose) f.loose.build(input_for(f.spheres, false), options()), f.has_loose = true;
+    if (!f.has_loose)
+        f.loose.build(input_for(f.spheres, false), options()), f.has_loose = true;
     octree::Mailbox mb;
     mb.resize(f.spheres.size());
     run_rays(state, f, [&](const Ray& r, uint64_t& tests) {
@@ -125,8 +129,9 @@ void BM_Grid(benchmark::State& state) {
 
 void BM_Brute(benchmark::State& state) {
     Fixture& f = fixture(size_t(state.range(0)));
-    run_rays(state, f,
-             [&](const Ray& r, uint64_t& tests) { return brute_closest(f.spheres, r, tests); });
+    run_rays(state, f, [&](const Ray& r, uint64_t& tests) {
+        return brute_closest(f.spheres, r, tests);
+    });
 }
 
 // NaN rays must cost no more than ordinary ones (they are rejected up front).
@@ -134,7 +139,8 @@ void BM_OctreeNanRays(benchmark::State& state) {
     Fixture& f = fixture(size_t(state.range(0)));
     Fixture bad;
     bad.rays = f.rays;
-    for (size_t i = 0; i < bad.rays.size(); ++i) bad.rays[i].direction[i % 3] = std::nan("");
+    for (size_t i = 0; i < bad.rays.size(); ++i)
+        bad.rays[i].direction[i % 3] = std::nan("");
     octree::Mailbox mb;
     mb.resize(f.spheres.size());
     run_rays(state, bad, [&](const Ray& r, uint64_t& tests) {

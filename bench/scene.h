@@ -1,5 +1,6 @@
-// Benchmark fixtures: random sphere scenes at the seed scene's density, ray sets, and three
-// closest-hit engines (octree, brute force, naive uniform grid) over the same SoA spheres.
+// Benchmark fixtures: random sphere scenes at the seed scene's density, ray sets, and
+// three closest-hit engines (octree, brute force, naive uniform grid) over the same SoA
+// spheres.
 #pragma once
 
 #include <cmath>
@@ -48,7 +49,8 @@ inline std::vector<Ray> make_rays(size_t count, Real half, uint32_t seed) {
     const Real tan_half = std::tan(24 * kPi / 180);
     for (size_t i = 0; i < count; ++i) {
         if (i % 2 == 0) {
-            rays.push_back({eye, normalize(Vector3{u(rng) * tan_half, u(rng) * tan_half, 1})});
+            rays.push_back(
+                {eye, normalize(Vector3{u(rng) * tan_half, u(rng) * tan_half, 1})});
         } else {
             Vector3 d;
             do d = {u(rng), u(rng), u(rng)};
@@ -99,11 +101,12 @@ inline Real octree_closest(const octree::Octree& tree, const Spheres& s, const R
 /// The naive alternative: a uniform grid of about one cell per sphere, references by
 /// bounds overlap, 3D-DDA (Amanatides and Woo) with a mailbox and early exit.
 class UniformGrid {
-public:
+  public:
     void build(const Spheres& s);
-    Real closest(const Spheres& s, const Ray& ray, octree::Mailbox& mb, uint64_t& tests) const;
+    Real closest(const Spheres& s, const Ray& ray, octree::Mailbox& mb,
+                 uint64_t& tests) const;
 
-private:
+  private:
     Bounds3 box_;
     int res_[3] = {1, 1, 1};
     Vector3 cell_;

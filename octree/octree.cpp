@@ -1,7 +1,7 @@
-// Octree builder: recursive subdivision with exact cell/primitive overlap tests (through the
-// caller's callback; octree/overlap.h offers CGAL-backed ones) and a surface-area cost
-// estimate. The top levels are split serially, the subtrees below are built in parallel into
-// private arrays and stitched into the flat node array afterwards.
+// Octree builder: recursive subdivision with exact cell/primitive overlap tests (through
+// the caller's callback; octree/overlap.h offers CGAL-backed ones) and a surface-area
+// cost estimate. The top levels are split serially, the subtrees below are built in
+// parallel into private arrays and stitched into the flat node array afterwards.
 #include "octree/octree.h"
 
 #include <array>
@@ -14,7 +14,8 @@ namespace {
 
 bool finite_box(const Bounds3& b) {
     for (int a = 0; a < 3; ++a) {
-        if (!(std::fabs(b.lo[a]) < kInfinity && std::fabs(b.hi[a]) < kInfinity)) return false;
+        if (!(std::fabs(b.lo[a]) < kInfinity && std::fabs(b.hi[a]) < kInfinity))
+            return false;
     }
     return !b.empty();
 }
@@ -31,7 +32,8 @@ Bounds3 child_box(const Bounds3& box, const Point3& mid, unsigned c) {
 
 using Node = Octree::Node;
 
-// A subtree left for a worker thread: its root node (already in the global array) and ids.
+// A subtree left for a worker thread: its root node (already in the global array) and
+// ids.
 struct Task {
     uint32_t node = 0;
     Bounds3 box;
@@ -44,12 +46,12 @@ struct Task {
 };
 
 class Builder {
-public:
+  public:
     Builder(const BuildInput& in, const BuildOptions& opt, Real min_cell)
         : in_(in), opt_(opt), min_cell_(min_cell) {}
 
-    // Builds the subtree of nodes[index] (already allocated) over `ids`. At spawn_depth the
-    // node is handed to `tasks` instead (null: never).
+    // Builds the subtree of nodes[index] (already allocated) over `ids`. At spawn_depth
+    // the node is handed to `tasks` instead (null: never).
     void build(std::vector<Node>& nodes, std::vector<uint32_t>& out, uint32_t index,
                std::vector<uint32_t>& ids, const Bounds3& box, int depth, int& max_depth,
                std::vector<Task>* tasks, int spawn_depth) {
@@ -75,15 +77,15 @@ public:
         nodes.resize(first + 8);
         const Point3 mid = box.centre();
         for (unsigned c = 0; c < 8; ++c) {
-            build(nodes, out, first + c, kids[c], child_box(box, mid, c), depth + 1, max_depth,
-                  tasks, spawn_depth);
+            build(nodes, out, first + c, kids[c], child_box(box, mid, c), depth + 1,
+                  max_depth, tasks, spawn_depth);
         }
     }
 
     uint64_t exact_tests() const { return exact_tests_; }
     uint64_t exact_rejected() const { return exact_rejected_; }
 
-private:
+  private:
     // Distributes `ids` over the 8 children; false: this cell stays a leaf.
     bool split(const std::vector<uint32_t>& ids, const Bounds3& box, int depth,
                std::array<std::vector<uint32_t>, 8>& kids) {
@@ -102,12 +104,14 @@ private:
                 if (b.lo[a] <= mid[a]) lo_mask |= 1u << a;
                 if (b.hi[a] >= mid[a]) hi_mask |= 1u << a;
             }
-            // Children c with, per axis, bit clear only if lo side touched, set only if hi.
+            // Children c with, per axis, bit clear only if lo side touched, set only if
+            // hi.
             unsigned touched = 0;
             for (unsigned c = 0; c < 8; ++c) {
                 bool ok = true;
                 for (int a = 0; a < 3; ++a) {
-                    ok = ok && ((c & (1u << a)) ? (hi_mask >> a) & 1 : (lo_mask >> a) & 1);
+                    ok =
+                        ok && ((c & (1u << a)) ? (hi_mask >> a) & 1 : (lo_mask >> a) & 1);
                 }
                 if (ok) touched |= 1u << c;
             }
@@ -131,10 +135,10 @@ private:
         // Surface-area estimate: a ray crossing this cell crosses each child with
         // probability 1/4. Split when the expected tests drop by more than the extra node
         // steps cost; this stops when children barely reduce the references (everything
-        // crossing the centre: 8 copies each). The one-level estimate ignores that children
-        // split further, so a split that about breaks even (a row of primitives cut by two
-        // mid-planes: 4 copies each) is taken too, provided every child is clearly smaller
-        // (else primitives covering whole cells would be split forever).
+        // crossing the centre: 8 copies each). The one-level estimate ignores that
+        // children split further, so a split that about breaks even (a row of primitives
+        // cut by two mid-planes: 4 copies each) is taken too, provided every child is
+        // clearly smaller (else primitives covering whole cells would be split forever).
         size_t max_child = 0;
         for (const auto& k : kids) max_child = std::max(max_child, k.size());
         const Real leaf_cost = Real(n);
@@ -196,14 +200,15 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
     const Real min_cell = mag * 1e-13;
     Builder builder(input, opt, min_cell);
     nodes_.push_back(Node{});
-    int threads = opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency());
+    int threads =
+        opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency());
     threads = std::max(threads, 1);
     std::vector<Task> tasks;
     int max_depth = 0;
     // 64 subtrees (depth 2) keep a few threads busy despite uneven scenes.
     const int spawn_depth = threads > 1 ? 2 : -1;
-    builder.build(nodes_, ids_, 0, all, bounds_, 0, max_depth, threads > 1 ? &tasks : nullptr,
-                  spawn_depth);
+    builder.build(nodes_, ids_, 0, all, bounds_, 0, max_depth,
+                  threads > 1 ? &tasks : nullptr, spawn_depth);
     if (!tasks.empty()) {
         std::atomic<size_t> next{0};
         auto work = [&] {
@@ -222,7 +227,8 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
         work();
         for (auto& th : pool) th.join();
         for (Task& t : tasks) {
-            const uint32_t node_base = uint32_t(nodes_.size()) - 1;  // local i -> base + i
+            const uint32_t node_base =
+                uint32_t(nodes_.size()) - 1;  // local i -> base + i
             const uint32_t id_base = uint32_t(ids_.size());
             auto relocate = [&](Node n) {
                 if (n.count == kInner) {
@@ -233,7 +239,8 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
                 return n;
             };
             nodes_[t.node] = relocate(t.nodes[0]);
-            for (size_t i = 1; i < t.nodes.size(); ++i) nodes_.push_back(relocate(t.nodes[i]));
+            for (size_t i = 1; i < t.nodes.size(); ++i)
+                nodes_.push_back(relocate(t.nodes[i]));
             ids_.insert(ids_.end(), t.leaf_ids.begin(), t.leaf_ids.end());
             max_depth = std::max(max_depth, t.max_depth);
             t = Task{};

@@ -2,14 +2,17 @@
 // their ids, bounds, and (at build time) an exact overlap test per primitive.
 //
 // Contract used by trace/:
-// - build(BuildInput): per-primitive world bounds plus an optional exact "does primitive id
+// - build(BuildInput): per-primitive world bounds plus an optional exact "does primitive
+// id
 //   touch this cell" callback (octree/overlap.h has exact ones for spheres, boxes and
 //   triangles). Cells hold only the primitives that really overlap them (closed cells).
-// - traverse(ray, t_min, t_max&, visit) calls `visit(ids, count, t_max)` for the leaves the
+// - traverse(ray, t_min, t_max&, visit) calls `visit(ids, count, t_max)` for the leaves
+// the
 //   ray crosses, front to back (non-decreasing entry distance). `visit` tests those
-//   primitives, may shrink t_max (the closest hit so far) and returns true to stop (any-hit
-//   queries). Traversal ends as soon as the next leaf starts beyond t_max. A primitive may sit
-//   in several leaves: callers use a Mailbox so it is intersected once per ray.
+//   primitives, may shrink t_max (the closest hit so far) and returns true to stop
+//   (any-hit queries). Traversal ends as soon as the next leaf starts beyond t_max. A
+//   primitive may sit in several leaves: callers use a Mailbox so it is intersected once
+//   per ray.
 // - Rays with a NaN or infinite component visit nothing; zero direction components, rays
 //   starting inside and rays running exactly along cell planes are handled exactly.
 // Additions: BuildStats (per build, for --stats), BuildOptions::threads, leaf_entry()
@@ -52,17 +55,19 @@ struct BuildInput {
 
 struct BuildStats {
     int nodes = 0, leaves = 0, depth = 0;
-    uint64_t references = 0;      // ids stored in leaves
-    uint64_t exact_tests = 0;     // overlap callback calls
-    uint64_t exact_rejected = 0;  // cell references the exact test removed (bounds overlapped)
-    bool flat = false;            // below flat_threshold: a single leaf, no tree
+    uint64_t references = 0;   // ids stored in leaves
+    uint64_t exact_tests = 0;  // overlap callback calls
+    uint64_t exact_rejected =
+        0;              // cell references the exact test removed (bounds overlapped)
+    bool flat = false;  // below flat_threshold: a single leaf, no tree
     double seconds = 0;
 };
 
-/// Per-thread "already tested for this ray" stamps, so a primitive spanning several leaves
-/// is intersected once per ray. One per thread; call next_ray() before each traversal.
+/// Per-thread "already tested for this ray" stamps, so a primitive spanning several
+/// leaves is intersected once per ray. One per thread; call next_ray() before each
+/// traversal.
 class Mailbox {
-public:
+  public:
     void resize(size_t primitives) { stamp_.assign(primitives, 0); }
     size_t size() const { return stamp_.size(); }
     void next_ray() {
@@ -78,7 +83,7 @@ public:
         return true;
     }
 
-private:
+  private:
     std::vector<uint32_t> stamp_;
     uint32_t ray_ = 0;
 };
@@ -88,7 +93,7 @@ private:
 constexpr int kMaxDepth = 24;
 
 class Octree {
-public:
+  public:
     void build(const BuildInput& input, const BuildOptions& options = {});
     /// Root cell (the primitives' bounds, padded so every axis has extent).
     const Bounds3& bounds() const { return bounds_; }
@@ -104,10 +109,12 @@ public:
     }
     /// As traverse(), with the leaf's entry distance along the ray as fourth argument.
     template <class Visit>
-    void traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&& visit) const;
+    void traverse_with_entry(const Ray& ray, Real t_min, Real& t_max,
+                             Visit&& visit) const;
 
     /// Compact node: a leaf holds ids_[first, first + count); an inner node (count ==
-    /// kInner) has its 8 children at nodes_[first .. first + 7], child index = x | y<<1 | z<<2.
+    /// kInner) has its 8 children at nodes_[first .. first + 7], child index = x | y<<1 |
+    /// z<<2.
     struct Node {
         uint32_t first = 0;
         uint32_t count = 0;
@@ -116,10 +123,10 @@ public:
     const std::vector<Node>& nodes() const { return nodes_; }
     const std::vector<uint32_t>& ids() const { return ids_; }
 
-private:
+  private:
     // kParallel: some direction component is zero, so mid-plane parameters come from the
-    // cell geometry (cells are tracked); otherwise they are the mean of the entry and exit
-    // parameters, which needs no geometry.
+    // cell geometry (cells are tracked); otherwise they are the mean of the entry and
+    // exit parameters, which needs no geometry.
     template <bool kParallel, class Visit>
     void walk(const Point3& o, const Vector3& inv, const bool* parallel, unsigned mirror,
               const Vector3& t0, const Vector3& t1, Real t_min, Real& t_max,
@@ -138,19 +145,20 @@ private:
 // direction component is positive (real child = mirrored child ^ mirror). Each plane's
 // parameter is computed once, at the cell where it is the mid-plane, and handed down, so
 // neighbouring cells agree exactly. Child boxes are never intersected; the next child
-// follows from the exit plane. Zero direction components get t = -inf/+inf, never 0 * inf.
+// follows from the exit plane. Zero direction components get t = -inf/+inf, never 0 *
+// inf.
 template <class Visit>
-void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&& visit) const {
+void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max,
+                                 Visit&& visit) const {
     if (nodes_.empty()) return;
     const Point3 o = ray.origin;
-    const Real dmax = std::max({std::fabs(ray.direction.x), std::fabs(ray.direction.y),
-                                std::fabs(ray.direction.z)});
-    // Also rejects NaN (comparisons are false) and infinite components, in O(1).
-    if (!(dmax > 0 && dmax < kInfinity)) return;
-    if (!(std::fabs(o.x) < kInfinity && std::fabs(o.y) < kInfinity &&
-          std::fabs(o.z) < kInfinity)) {
-        return;
-    }
+    const Vector3& dir = ray.direction;
+    // Any NaN or infinite component makes this NaN (inf * 0 is NaN): such rays visit
+    // nothing, in O(1). std::max/min would silently drop NaNs further down.
+    const Real poison = (o.x + o.y + o.z + dir.x + dir.y + dir.z) * 0;
+    if (poison != 0) return;
+    const Real dmax = std::max({std::fabs(dir.x), std::fabs(dir.y), std::fabs(dir.z)});
+    if (!(dmax > 0)) return;
     if (!(t_min <= t_max)) return;
     Vector3 inv, t0, t1;
     bool parallel[3];
@@ -170,7 +178,8 @@ void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&
         }
         inv[a] = 1 / d;
         if (d < 0) mirror |= 1u << a;
-        const Real ta = (bounds_.lo[a] - o[a]) * inv[a], tb = (bounds_.hi[a] - o[a]) * inv[a];
+        const Real ta = (bounds_.lo[a] - o[a]) * inv[a],
+                   tb = (bounds_.hi[a] - o[a]) * inv[a];
         t0[a] = d < 0 ? tb : ta;
         t1[a] = d < 0 ? ta : tb;
     }
@@ -189,14 +198,16 @@ void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&
 }
 
 template <bool kParallel, class Visit>
-void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel, unsigned mirror,
-                  const Vector3& root_t0, const Vector3& root_t1, Real t_min, Real& t_max,
-                  Visit& visit) const {
+void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel,
+                  unsigned mirror, const Vector3& root_t0, const Vector3& root_t1,
+                  Real t_min, Real& t_max, Visit& visit) const {
+    // Plain arrays, not Vector3: its default member initialisers would zero the whole
+    // stack on every ray.
     struct Cell {
-        Point3 lo, hi;  // real space
+        Real lo[3], hi[3];  // real space
     };
     struct Frame {
-        Vector3 t0, tm, t1;
+        Real t0[3], tm[3], t1[3];
         uint32_t first;  // the node's first child
         unsigned child;  // next mirrored child to visit; 8 = done
     };
@@ -204,6 +215,8 @@ void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel, uns
     // Cells are tracked only when a mid-plane parameter needs the geometry.
     Cell cells[kParallel ? kMaxDepth + 1 : 1];
     // Mid-plane parameters of a frame's cell and its first child (the entry-plane rule).
+    // The rule is applied at max(entry, t_min): a ray starting inside the cell begins in
+    // the child holding its start, skipping the children behind it in O(1).
     auto open = [&](Frame& f, const Cell& cell) {
         for (int a = 0; a < 3; ++a) {
             if constexpr (kParallel) {
@@ -217,14 +230,17 @@ void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel, uns
                 f.tm[a] = (f.t0[a] + f.t1[a]) * 0.5;
             }
         }
-        const Real enter = std::max({f.t0.x, f.t0.y, f.t0.z});
-        f.child = unsigned(f.tm.x < enter) | unsigned(f.tm.y < enter) << 1 |
-                  unsigned(f.tm.z < enter) << 2;
+        const Real enter = std::max({f.t0[0], f.t0[1], f.t0[2], t_min});
+        f.child = unsigned(f.tm[0] < enter) | unsigned(f.tm[1] < enter) << 1 |
+                  unsigned(f.tm[2] < enter) << 2;
     };
-    stack[0].t0 = root_t0;
-    stack[0].t1 = root_t1;
+    for (int a = 0; a < 3; ++a) {
+        stack[0].t0[a] = root_t0[a];
+        stack[0].t1[a] = root_t1[a];
+        cells[0].lo[a] = bounds_.lo[a];
+        cells[0].hi[a] = bounds_.hi[a];
+    }
     stack[0].first = nodes_[0].first;
-    cells[0] = {bounds_.lo, bounds_.hi};
     open(stack[0], cells[0]);
     int top = 0;
     while (top >= 0) {
@@ -234,7 +250,7 @@ void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel, uns
             continue;
         }
         const unsigned c = f.child;
-        Vector3 c0, c1;
+        Real c0[3], c1[3];
         for (int a = 0; a < 3; ++a) {
             const bool high = c & (1u << a);
             c0[a] = high ? f.tm[a] : f.t0[a];
@@ -242,10 +258,11 @@ void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel, uns
         }
         // Next sibling: step across the exit plane that comes first; leaving the parent
         // through its own far plane ends this frame.
-        const int axis = (c1.x <= c1.y && c1.x <= c1.z) ? 0 : (c1.y <= c1.z ? 1 : 2);
+        const int axis =
+            (c1[0] <= c1[1] && c1[0] <= c1[2]) ? 0 : (c1[1] <= c1[2] ? 1 : 2);
         f.child = (c & (1u << axis)) ? 8 : (c | (1u << axis));
-        const Real enter = std::max({c0.x, c0.y, c0.z});
-        const Real exit = std::min({c1.x, c1.y, c1.z});
+        const Real enter = std::max({c0[0], c0[1], c0[2]});
+        const Real exit = std::min({c1[0], c1[1], c1[2]});
         // Front to back: every later cell starts at or after this one.
         if (enter > t_max) return;
         if (exit < t_min || !(enter <= exit)) continue;
@@ -256,8 +273,10 @@ void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel, uns
             continue;
         }
         Frame& g = stack[top + 1];
-        g.t0 = c0;
-        g.t1 = c1;
+        for (int a = 0; a < 3; ++a) {
+            g.t0[a] = c0[a];
+            g.t1[a] = c1[a];
+        }
         g.first = n.first;
         if constexpr (kParallel) {
             const Cell& pc = cells[top];

@@ -1,7 +1,7 @@
 // The only translation unit that includes CGAL: exact overlap predicates on CGAL's
-// exact-predicate kernels. Triangles use Epick (inputs are doubles, the predicate is exact);
-// spheres need r^2, which doubles cannot hold exactly, so they go to Epeck after a double
-// prefilter that decides every case far from tangency.
+// exact-predicate kernels. Triangles use Epick (inputs are doubles, the predicate is
+// exact); spheres need r^2, which doubles cannot hold exactly, so they go to Epeck after
+// a double prefilter that decides every case far from tangency.
 #include "octree/overlap.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -41,10 +41,11 @@ bool box_overlaps(const Bounds3& b, const Bounds3& cell) {
     return CGAL::do_overlap(to_bbox(b), to_bbox(cell));
 }
 
-bool triangle_overlaps(const Point3& a, const Point3& b, const Point3& c, const Bounds3& cell) {
+bool triangle_overlaps(const Point3& a, const Point3& b, const Point3& c,
+                       const Bounds3& cell) {
     // A triangle in an axis plane (flat scenes, tessellated boxes) lies exactly on cell
-    // faces, where the 3D predicate's filter always fails into slow exact arithmetic; in the
-    // plane the question is 2D and exact in doubles' filter range.
+    // faces, where the 3D predicate's filter always fails into slow exact arithmetic; in
+    // the plane the question is 2D and exact in doubles' filter range.
     for (int axis = 0; axis < 3; ++axis) {
         if (a[axis] != b[axis] || a[axis] != c[axis]) continue;
         if (a[axis] < cell.lo[axis] || a[axis] > cell.hi[axis]) return false;
@@ -59,7 +60,8 @@ bool triangle_overlaps(const Point3& a, const Point3& b, const Point3& c, const 
     Epick::Triangle_3 t(Epick::Point_3(a.x, a.y, a.z), Epick::Point_3(b.x, b.y, b.z),
                         Epick::Point_3(c.x, c.y, c.z));
     if (t.is_degenerate()) {
-        // CGAL's triangle predicates require a proper triangle: test the segments instead.
+        // CGAL's triangle predicates require a proper triangle: test the segments
+        // instead.
         const Epick::Point_3 p[3] = {t[0], t[1], t[2]};
         for (int i = 0; i < 3; ++i) {
             Epick::Segment_3 s(p[i], p[(i + 1) % 3]);

@@ -47,7 +47,8 @@ Real hit_tri(const Tri& t, const Ray& ray) {
     return d > 1e-9 ? d : kInfinity;
 }
 
-std::vector<Sphere> random_spheres(int n, Real spread, std::mt19937& rng, Real scale = 1) {
+std::vector<Sphere> random_spheres(int n, Real spread, std::mt19937& rng,
+                                   Real scale = 1) {
     std::uniform_real_distribution<Real> pos(-spread, spread), rad(0.05, 0.6);
     std::vector<Sphere> s;
     for (int i = 0; i < n; ++i) {
@@ -58,7 +59,8 @@ std::vector<Sphere> random_spheres(int n, Real spread, std::mt19937& rng, Real s
 
 BuildInput sphere_input(const std::vector<Sphere>& spheres, bool exact = true) {
     BuildInput in;
-    for (const auto& s : spheres) in.bounds.push_back({s.c - Vector3(s.r), s.c + Vector3(s.r)});
+    for (const auto& s : spheres)
+        in.bounds.push_back({s.c - Vector3(s.r), s.c + Vector3(s.r)});
     if (exact) {
         in.overlaps = [&spheres](uint32_t id, const Bounds3& cell) {
             return sphere_overlaps(spheres[id].c, spheres[id].r, cell);
@@ -82,7 +84,8 @@ Real octree_closest(const Octree& tree, const Ray& ray, Mailbox& mb, Hit hit, in
     mb.next_ray();
     tree.traverse_with_entry(ray, 0, best,
                              [&](const uint32_t* ids, size_t n, Real& t_max, Real entry) {
-                                 if (entry < last_entry || entry > t_max) *ordered = false;
+                                 if (entry < last_entry || entry > t_max)
+                                     *ordered = false;
                                  last_entry = entry;
                                  for (size_t i = 0; i < n; ++i) {
                                      if (!mb.first_visit(ids[i])) continue;
@@ -114,12 +117,13 @@ TEST(Octree, ClosestHitEqualsBruteForceOnRandomSpheres) {
     bool ordered = true;
     for (int n = 0; n < 20000; ++n) {
         Ray ray = random_ray(rng, 10, n);
-        if (n % 11 == 0) ray.origin.x = tree.bounds().centre().x;  // on the root mid-plane
+        if (n % 11 == 0)
+            ray.origin.x = tree.bounds().centre().x;  // on the root mid-plane
         Real brute = kInfinity;
         for (const auto& s : spheres) brute = std::min(brute, hit_sphere(s, ray));
         Real best = octree_closest(
-            tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); }, &tests,
-            &ordered);
+            tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); },
+            &tests, &ordered);
         ASSERT_EQ(best, brute) << "ray " << n;
         hits += best < kInfinity;
     }
@@ -161,7 +165,8 @@ TEST(Octree, ClosestHitEqualsBruteForceOnRandomTriangles) {
         Real brute = kInfinity;
         for (const auto& t : tris) brute = std::min(brute, hit_tri(t, ray));
         Real best = octree_closest(
-            tree, ray, mb, [&](uint32_t id) { return hit_tri(tris[id], ray); }, &tests, &ordered);
+            tree, ray, mb, [&](uint32_t id) { return hit_tri(tris[id], ray); }, &tests,
+            &ordered);
         ASSERT_EQ(best, brute) << "ray " << n;
         hits += best < kInfinity;
     }
@@ -211,8 +216,8 @@ TEST(Octree, RaysAlongCellBoundaries) {
         Real brute = kInfinity;
         for (const auto& s : spheres) brute = std::min(brute, hit_sphere(s, ray));
         Real best = octree_closest(
-            tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); }, &tests,
-            &ordered);
+            tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); },
+            &tests, &ordered);
         ASSERT_EQ(best, brute) << "ray " << n;
         hits += best < kInfinity;
     }
@@ -249,7 +254,8 @@ TEST(Octree, HugeTinyAndFlatScenes) {
     BuildInput in;
     for (int i = 0; i < 2000; ++i) {
         Point3 a{pos(rng), pos(rng), 3};
-        tris.push_back({a, a + Vector3{off(rng), off(rng), 0}, a + Vector3{off(rng), off(rng), 0}});
+        tris.push_back(
+            {a, a + Vector3{off(rng), off(rng), 0}, a + Vector3{off(rng), off(rng), 0}});
         Bounds3 b;
         b.extend(tris.back().a);
         b.extend(tris.back().b);
@@ -272,7 +278,8 @@ TEST(Octree, HugeTinyAndFlatScenes) {
         Real brute = kInfinity;
         for (const auto& t : tris) brute = std::min(brute, hit_tri(t, ray));
         Real best = octree_closest(
-            tree, ray, mb, [&](uint32_t id) { return hit_tri(tris[id], ray); }, &tests, &ordered);
+            tree, ray, mb, [&](uint32_t id) { return hit_tri(tris[id], ray); }, &tests,
+            &ordered);
         ASSERT_EQ(best, brute) << "ray " << n;
         hits += best < kInfinity;
     }
@@ -300,12 +307,13 @@ TEST(Octree, LeavesComeFrontToBackAndStopEarly) {
     // A closest hit at t = 4.7 ends traversal: no leaf starting beyond it is visited.
     int visits = 0;
     t_max = kInfinity;
-    tree.traverse_with_entry(ray, 0, t_max, [&](const uint32_t*, size_t, Real& t, Real entry) {
-        EXPECT_LE(entry, 4.7);
-        ++visits;
-        t = 4.7;
-        return false;
-    });
+    tree.traverse_with_entry(ray, 0, t_max,
+                             [&](const uint32_t*, size_t, Real& t, Real entry) {
+                                 EXPECT_LE(entry, 4.7);
+                                 ++visits;
+                                 t = 4.7;
+                                 return false;
+                             });
     EXPECT_GE(visits, 1);
     EXPECT_LE(visits, 3);
 }
@@ -325,16 +333,73 @@ TEST(Octree, RayStartingInsideSkipsCellsBehindIt) {
     EXPECT_LE(lowest, 100u);
 }
 
+// Secondary-ray style queries: only hits beyond t_min count, cells behind are skipped.
+TEST(Octree, ClosestHitBeyondTMinEqualsBruteForce) {
+    std::mt19937 rng(17);
+    std::vector<Sphere> spheres = random_spheres(3000, 10, rng);
+    Octree tree = build_spheres(spheres);
+    std::uniform_real_distribution<Real> tm(0, 20);
+    auto hit_after = [&](const Sphere& s, const Ray& ray, Real t_min) {
+        Vector3 oc = s.c - ray.origin;
+        Real dd = dot(ray.direction, ray.direction);
+        Real tca = dot(oc, ray.direction) / dd;
+        Real d2 = s.r * s.r / dd - (dot(oc, oc) / dd - tca * tca);
+        if (d2 < 0) return kInfinity;
+        Real th = std::sqrt(d2);
+        if (tca - th > t_min) return tca - th;
+        if (tca + th > t_min) return tca + th;
+        return kInfinity;
+    };
+    Mailbox mb;
+    mb.resize(spheres.size());
+    int hits = 0;
+    for (int n = 0; n < 10000; ++n) {
+        Ray ray = random_ray(rng, 10, n);
+        const Real t_min = tm(rng);
+        Real brute = kInfinity;
+        for (const auto& s : spheres) brute = std::min(brute, hit_after(s, ray, t_min));
+        Real best = kInfinity;
+        mb.next_ray();
+        tree.traverse_with_entry(
+            ray, t_min, best,
+            [&](const uint32_t* ids, size_t k, Real& t_max, Real entry) {
+                EXPECT_LE(entry, t_max);
+                for (size_t i = 0; i < k; ++i) {
+                    if (mb.first_visit(ids[i])) {
+                        t_max = std::min(t_max, hit_after(spheres[ids[i]], ray, t_min));
+                    }
+                }
+                return false;
+            });
+        ASSERT_EQ(best, brute) << "ray " << n;
+        hits += best < kInfinity;
+    }
+    EXPECT_GT(hits, 1000);
+}
+
 TEST(Octree, NanAndInfiniteRaysVisitNothing) {
     std::mt19937 rng(3);
     std::vector<Sphere> spheres = random_spheres(500, 10, rng);
     Octree tree = build_spheres(spheres);
     const Real nan = std::nan("");
-    const Ray bad[] = {
-        {{0, 0, 0}, {nan, 0, 1}},       {{nan, 0, 0}, {0, 0, 1}},
-        {{0, 0, 0}, {kInfinity, 1, 0}}, {{-kInfinity, 0, 0}, {1, 0, 0}},
-        {{0, 0, 0}, {0, 0, 0}},         {{0, 0, 0}, {-0.0, 0.0, -0.0}},
-    };
+    // Every NaN/Inf position: std::max drops a NaN unless it comes first.
+    std::vector<Ray> bad = {{{0, 0, 0}, {0, 0, 0}}, {{0, 0, 0}, {-0.0, 0.0, -0.0}}};
+    for (Real v : {nan, kInfinity, -kInfinity}) {
+        for (int a = 0; a < 3; ++a) {
+            Ray r{{0.5, -0.25, 0.125}, {0.3, 0.4, 0.5}};
+            r.direction[a] = v;
+            bad.push_back(r);
+            r = {{0.5, -0.25, 0.125}, {0.3, 0.4, 0.5}};
+            r.origin[a] = v;
+            bad.push_back(r);
+        }
+    }
+    // The same rays without the bad component do visit leaves.
+    Real t_ok = kInfinity;
+    int ok_visits = 0;
+    tree.traverse({{0.5, -0.25, 0.125}, {0.3, 0.4, 0.5}}, 0, t_ok,
+                  [&](auto, auto, auto&) { return ++ok_visits, false; });
+    EXPECT_GT(ok_visits, 0);
     int visits = 0;
     for (const Ray& r : bad) {
         Real t = kInfinity;
@@ -404,7 +469,8 @@ TEST(Octree, ParallelBuildEqualsSerialBuild) {
         const Octree::Node &nx = a.nodes()[x], &ny = b.nodes()[y];
         ASSERT_EQ(nx.count, ny.count);
         if (nx.count == Octree::kInner) {
-            for (uint32_t c = 0; c < 8; ++c) stack.push_back({nx.first + c, ny.first + c});
+            for (uint32_t c = 0; c < 8; ++c)
+                stack.push_back({nx.first + c, ny.first + c});
         } else {
             for (uint32_t i = 0; i < nx.count; ++i) {
                 ASSERT_EQ(a.ids()[nx.first + i], b.ids()[ny.first + i]);

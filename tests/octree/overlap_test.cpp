@@ -18,25 +18,30 @@ TEST(SphereOverlap, TouchingACellCornerCounts) {
 }
 
 TEST(SphereOverlap, TouchingAFaceWithAnInexactRadius) {
-    // 0.1 is not exact in binary, nor is its square; the tangency must still hold exactly.
+    // 0.1 is not exact in binary, nor is its square; the tangency must still hold
+    // exactly.
     EXPECT_TRUE(sphere_overlaps({0, 0, 0}, 0.1, {{0.1, -1, -1}, {1, 1, 1}}));
     EXPECT_FALSE(sphere_overlaps({0, 0, 0}, 0.1, {{up(0.1), -1, -1}, {1, 1, 1}}));
 }
 
 TEST(SphereOverlap, ExactWhereDoublesRoundToATouch) {
-    // In doubles x^2 + y^2 rounds to <= 0.1^2, exactly it is larger: the corner is outside.
+    // In doubles x^2 + y^2 rounds to <= 0.1^2, exactly it is larger: the corner is
+    // outside.
     const Real x = 0.056704775781208826, y = 0.08236849157052006;
     ASSERT_LE(x * x + y * y, 0.1 * 0.1);
     EXPECT_FALSE(sphere_overlaps({0, 0, 0}, 0.1, {{x, y, -1}, {1, 1, 1}}));
-    EXPECT_TRUE(sphere_overlaps({0, 0, 0}, 0.1, {{x, std::nextafter(y, 0.0), -1}, {1, 1, 1}}));
+    EXPECT_TRUE(
+        sphere_overlaps({0, 0, 0}, 0.1, {{x, std::nextafter(y, 0.0), -1}, {1, 1, 1}}));
 }
 
 TEST(SphereOverlap, BoundsOverlapButSphereMissesTheCorner) {
     // The sphere's bounding box covers the cell's corner region; the ball does not.
     EXPECT_FALSE(sphere_overlaps({0, 0, 0}, 1, {{0.6, 0.6, 0.6}, {2, 2, 2}}));
     EXPECT_TRUE(sphere_overlaps({0, 0, 0}, 1, {{0.5, 0.5, 0.5}, {2, 2, 2}}));
-    EXPECT_TRUE(sphere_overlaps({0.5, 0.5, 0.5}, 0.01, {{0, 0, 0}, {1, 1, 1}}));  // inside
-    EXPECT_TRUE(sphere_overlaps({0.5, 0.5, 0.5}, 10, {{0, 0, 0}, {1, 1, 1}}));    // encloses
+    EXPECT_TRUE(
+        sphere_overlaps({0.5, 0.5, 0.5}, 0.01, {{0, 0, 0}, {1, 1, 1}}));  // inside
+    EXPECT_TRUE(
+        sphere_overlaps({0.5, 0.5, 0.5}, 10, {{0, 0, 0}, {1, 1, 1}}));  // encloses
 }
 
 TEST(TriangleOverlap, CrossingACellWithoutAnyVertexInside) {
