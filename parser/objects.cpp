@@ -20,15 +20,11 @@ bool is_unsupported_shape(std::string_view w) {
 
 void transform_pattern(PatternSpec& p, const Transform& t) { p.transform = p.transform.then(t); }
 
-void transform_pigment(Pigment& p, const Transform& t) {
-    transform_pattern(p.pattern, t);
-    for (Pigment& sub : p.list) transform_pigment(sub, t);
-}
+// Pigment and normal map/list entries are evaluated at the outer pattern's point (as POV-Ray
+// does), so a transform moves only the outer pattern.
+void transform_pigment(Pigment& p, const Transform& t) { transform_pattern(p.pattern, t); }
 
-void transform_normal(Normal& n, const Transform& t) {
-    transform_pattern(n.pattern, t);
-    for (Normal& sub : n.list) transform_normal(sub, t);
-}
+void transform_normal(Normal& n, const Transform& t) { transform_pattern(n.pattern, t); }
 
 }  // namespace
 
@@ -37,6 +33,7 @@ void transform_textures(LayeredTexture& layers, const Transform& t) {
         transform_pigment(tex.pigment, t);
         if (tex.normal) transform_normal(*tex.normal, t);
         if (tex.map_pattern) transform_pattern(*tex.map_pattern, t);
+        // Texture map entries are whole textures evaluated at the world point: they move too.
         for (auto& entry : tex.map) transform_textures(entry, t);
     }
 }

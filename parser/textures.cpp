@@ -157,10 +157,16 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
         switch (p.kind) {
             case PatternKind::Gradient: spec.vector = parse_vector(); break;
             case PatternKind::Agate: break;
+            // POV-Ray's default wave for marble, wood and the spirals is the triangle wave.
+            case PatternKind::Marble:
+            case PatternKind::Wood: spec.wave = WaveType::Triangle; break;
             case PatternKind::Spiral1:
-            case PatternKind::Spiral2: spec.scalar = parse_float(); break;
+            case PatternKind::Spiral2:
+                spec.scalar = parse_float();
+                spec.wave = WaveType::Triangle;
+                break;
             case PatternKind::Mandel: spec.scalar = parse_float(); break;
-            case PatternKind::Quilted: spec.vector = {0, 1, 0}; break;  // control0/1 defaults
+            case PatternKind::Quilted: spec.vector = {1, 1, 0}; break;  // control0/1 defaults
             case PatternKind::Crackle:
                 spec.vector = {-1, 1, 0};  // form
                 spec.scalar = 2;           // metric
@@ -183,7 +189,7 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     auto turbulence_warp = [&]() -> Warp& {
         // Classic turbulence keywords edit the pattern's turbulence warp (created on demand).
         for (Warp& wp : spec.warps) {
-            if (wp.kind == Warp::Kind::Turbulence && wp.transform.is_identity()) return wp;
+            if (wp.kind == Warp::Kind::Turbulence && wp.classic) return wp;
         }
         spec.warps.push_back(Warp{});
         return spec.warps.back();
@@ -242,24 +248,55 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     } else if (w == "warp") {
         expect_punct('{', "after 'warp'");
         Warp wp;
+        // Transforms written since the previous warp belong before this one in the chain.
+        wp.transform = spec.transform;
+        spec.transform = Transform();
         Token k = next();
-        if (is_word(k, "turbulence")) {
+        std::string_view kind = k.kind == TokenKind::Word ? k.text : std::string_view();
+        if (kind == "turbulence") {
             wp.kind = Warp::Kind::Turbulence;
+            wp.classic = false;
             wp.turbulence = parse_vector();
-        } else if (is_word(k, "repeat")) {
+        } else if (kind == "repeat") {
             wp.kind = Warp::Kind::Repeat;
             wp.repeat = parse_vector();
+        } else if (kind == "black_hole") {
+            wp.kind = Warp::Kind::BlackHole;
+            wp.centre = parse_vector();
+            expect_punct(',', "between the black_hole centre and radius");
+            wp.radius = parse_float();
+        } else if (kind == "cylindrical" || kind == "spherical" || kind == "toroidal" ||
+                   kind == "planar") {
+            wp.kind = kind == "cylindrical" ? Warp::Kind::Cylindrical
+                      : kind == "spherical" ? Warp::Kind::Spherical
+                      : kind == "toroidal"  ? Warp::Kind::Toroidal
+                                            : Warp::Kind::Planar;
+            if (wp.kind == Warp::Kind::Planar && !is_punct(peek(), '}') &&
+                peek().kind != TokenKind::Word) {
+                wp.orientation = parse_vector();
+                expect_punct(',', "between the planar warp normal and offset");
+                wp.plane_offset = parse_float();
+            }
         } else {
             unsupported(k, "warp " + std::string(k.text));
         }
         for (;;) {
             Token m = next();
             if (is_punct(m, '}')) break;
-            if (is_word(m, "octaves")) wp.octaves = int(parse_float());
-            else if (is_word(m, "omega")) wp.omega = parse_float();
-            else if (is_word(m, "lambda")) wp.lambda = parse_float();
-            else if (is_word(m, "offset")) wp.offset = parse_vector();
-            else if (is_word(m, "flip")) wp.flip = parse_vector();
+            std::string_view mw = m.kind == TokenKind::Word ? m.text : std::string_view();
+            if (mw == "octaves") wp.octaves = int(parse_float());
+            else if (mw == "omega") wp.omega = parse_float();
+            else if (mw == "lambda") wp.lambda = parse_float();
+            else if (mw == "offset") wp.offset = parse_vector();
+            else if (mw == "flip") wp.flip = parse_vector();
+            else if (mw == "strength") wp.strength = parse_float();
+            else if (mw == "falloff") wp.falloff = parse_float();
+            else if (mw == "inverse") wp.inverse = true;
+            else if (mw == "repeat") wp.repeat = parse_vector();
+            else if (mw == "turbulence") wp.turbulence = parse_vector();
+            else if (mw == "orientation") wp.orientation = parse_vector();
+            else if (mw == "dist_exp") wp.dist_exp = parse_float();
+            else if (mw == "major_radius") wp.major_radius = parse_float();
             else expected("a warp modifier or '}'", m);
         }
         spec.warps.push_back(wp);

@@ -302,6 +302,7 @@ PreparedScene::PreparedScene(const Scene& scene, const std::vector<uint32_t>& ob
 void PreparedScene::build(const std::vector<const Object*>& objects) {
     const Scene& scene = scene_;
     env_.noise_generator = scene.settings.noise_generator;
+    env_.number_of_waves = scene.settings.number_of_waves;
     size_t leaves = 0;
     for (const Object* o : objects) leaves += count_leaves(*o);
     for (const Light& l : scene.lights) {
