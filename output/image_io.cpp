@@ -134,9 +134,12 @@ Image read_image(const std::string& path) {
     Image img(spec.width, spec.height);
     const int nc = spec.nchannels;
     for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i) {
-        for (int c = 0; c < 3; ++c)
-            img.rgba[i * 4 + c] = pixels[i * nc + std::min(c, nc - 1)];
-        img.rgba[i * 4 + 3] = nc >= 4 ? pixels[i * nc + 3] : 1.0f;
+        // Grey (1 channel) and grey+alpha (2) files spread their grey over RGB.
+        const bool grey = nc <= 2;
+        for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] = pixels[i * nc + (grey ? 0 : c)];
+        img.rgba[i * 4 + 3] = nc == 2   ? pixels[i * nc + 1]
+                              : nc >= 4 ? pixels[i * nc + 3]
+                                        : 1.0f;
     }
     in->close();
     return img;
