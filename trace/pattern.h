@@ -9,6 +9,11 @@
 //   pattern space] finally the classic turbulence (Warp::classic, the last one wins),
 //   applied last as POV-Ray does, except for marble and wood which read it inside the
 //   pattern.
+//
+// Nested entries (pigment_map / normal_map / checker, hexagon and brick lists,
+// texture_map entries via pick_map_entries) are evaluated at the OUTER pattern's warped
+// point, as POV-Ray does, so their own transforms are relative to the outer pattern
+// space: an object transform belongs in the outer spec only, not copied into the entries.
 #pragma once
 
 #include "core/scene.h"

@@ -466,6 +466,15 @@ TEST(PatternVsPovray, PigmentMap) {
     std::string pov =
         "gradient x pigment_map { [0.2 bozo" + kGrey + " scale 0.3] [0.8 checker] }";
     EXPECT_LE(max_pigment_error(pov, p), kTol);
+    // Nested pigments are evaluated in the outer pattern's space (POV-Ray passes them the
+    // warped point), so an outer transform reaches them without being copied into them.
+    Pigment outer = p;
+    outer.pattern.transform =
+        Transform::scale({2, 2, 2}).then(Transform::rotate({0, 30, 0}));
+    outer.pattern.warps.push_back(classic_turb({0.2, 0.2, 0.2}));
+    std::string pov2 = "gradient x pigment_map { [0.2 bozo" + kGrey +
+                       " scale 0.3] [0.8 checker] } turbulence 0.2 scale 2 rotate y*30";
+    EXPECT_LE(max_pigment_error(pov2, outer), kTol);
 }
 
 }  // namespace
