@@ -1,8 +1,8 @@
 // Tables: the hash permutation, the generator-3 gradients and permutation, the wave
 // sources/frequencies and the pattern random table are all generated here the way POV-Ray
 // 3.7 generates them (its 31-bit LCG, and MT19937 with the default seed for the pattern
-// random table). Only the lattice-noise value table (noise_rtable.inc) is literal data: 3.7
-// ships it as numbers that do not come from any of its generators.
+// random table). Only the lattice-noise value table (noise_rtable.inc) is literal
+// data: 3.7 ships it as numbers that do not come from any of its generators.
 #include "trace/noise.h"
 
 #include <algorithm>
@@ -13,7 +13,7 @@
 namespace povwall::trace {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;  // POV-Ray's EPSILON
+constexpr Real kEpsilon = 1e-10;        // POV-Ray's EPSILON
 constexpr int kLatticeOffset = -10000;  // POV-Ray shifts lattice coordinates by this
 constexpr int kPerlinEntries = 2048;    // gradient table size of the generator-3 noise
 constexpr Real kRollover = 10000000.023157213;
@@ -58,8 +58,8 @@ Tables build_tables() {
         t.rtab[2 * i] = kRValues[i];
         t.rtab[2 * i + 1] = kRValues[i] * 0.5;
     }
-    // Generator 3: unit gradients by rejection sampling, then a pairwise shuffle, both from
-    // the same LCG seeded with 1. The permutation's last slot starts at 0 and the
+    // Generator 3: unit gradients by rejection sampling, then a pairwise shuffle, both
+    // from the same LCG seeded with 1. The permutation's last slot starts at 0 and the
     // duplication is a forward copy that overlaps itself, exactly as POV-Ray does it.
     PovRand prng{1};
     for (int i = 0; i < kPerlinEntries; ++i) {
@@ -111,7 +111,7 @@ inline Real scurve(Real a) { return a * a * (3.0 - 2.0 * a); }
 struct Corners {
     int h00, h10, h01, h11;  // hashes of the four (x,y) columns
     int iz;
-    Real fx, fy, fz;         // offsets from the low corner
+    Real fx, fy, fz;  // offsets from the low corner
     Real sx, sy, sz, tx, ty, tz;
 };
 
@@ -240,7 +240,8 @@ Real noise(const Vector3& p, int generator) {
 Vector3 dnoise(const Vector3& p) { return lattice_dnoise(kTables, p); }
 
 Real turbulence(const Vector3& p, const TurbulenceParams& t, int generator) {
-    // Generators 2 and 3 stretch each octave's noise (2n - 0.5); only the first is clipped.
+    // Generators 2 and 3 stretch each octave's noise (2n - 0.5); only the first is
+    // clipped.
     bool stretch = generator != 1 && generator != 0;
     Real value = stretch ? clamp01(2.0 * noise(p, generator) - 0.5) : noise(p, generator);
     Real l = t.lambda, o = t.omega;

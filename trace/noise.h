@@ -1,7 +1,7 @@
 // POV-Ray 3.7's solid noise, reproduced exactly: lattice noise (noise_generator 1 and the
-// range-corrected 2) and Perlin's improved-style gradient noise (3), their vector version,
-// fractal turbulence, and the wave helpers patterns share. Tables are built once at
-// start-up; evaluation never allocates.
+// range-corrected 2) and Perlin's improved-style gradient noise (3), their vector
+// version, fractal turbulence, and the wave helpers patterns share. Tables are built once
+// at start-up; evaluation never allocates.
 #pragma once
 
 #include "core/math.h"

@@ -38,7 +38,8 @@ Point3 apply_repeat(const Warp& w, const Point3& p) {
     Vector3 flip = w.flip;
     for (int i = 0; i < 3; ++i) flip[i] = flip[i] != 0 ? -1.0 : 1.0;
     Point3 r = p;
-    float block = float(std::floor(p[axis] / width));  // POV-Ray keeps it single precision
+    float block =
+        float(std::floor(p[axis] / width));  // POV-Ray keeps it single precision
     r[axis] = p[axis] - block * width;
     if (int(block) & 1) {
         r = r * flip;
@@ -50,8 +51,9 @@ Point3 apply_repeat(const Warp& w, const Point3& p) {
 Point3 apply_black_hole(const Warp& w, const Point3& p) {
     Point3 centre = w.centre;
     if (w.repeat != Vector3(0, 0, 0)) {
-        // POV-Ray's parser keeps repeated holes inside their cells: the centre is at least
-        // one radius from the cell origin and the cell fits centre + radius + uncertainty.
+        // POV-Ray's parser keeps repeated holes inside their cells: the centre is at
+        // least one radius from the cell origin and the cell fits centre + radius +
+        // uncertainty.
         Vector3 repeat = w.repeat;
         for (int i = 0; i < 3; ++i) {
             if (repeat[i] > 0.0) {
@@ -76,15 +78,18 @@ Point3 apply_black_hole(const Warp& w, const Point3& p) {
     Vector3 delta = p - centre;
     Real len = length(delta);
     if (len >= w.radius) return p;
-    Real strength = std::min(std::pow((w.radius - len) / w.radius, w.falloff) * w.strength, 1.0);
+    Real strength =
+        std::min(std::pow((w.radius - len) / w.radius, w.falloff) * w.strength, 1.0);
     return p + delta * (w.inverse ? -strength : strength);
 }
 
-// Re-orients a mapping warp's (x, y, z) result the way POV-Ray does for non-z orientations.
+// Re-orients a mapping warp's (x, y, z) result the way POV-Ray does for non-z
+// orientations.
 Point3 orient(const Warp& w, Real x, Real y, Real z) {
     Vector3 o = normalize(w.orientation);  // POV-Ray normalises it when parsing
     if (o.x == 0.0 && o.y == 0.0 && o.z == 1.0) return {x, y, z};
-    return {o.x * z + o.y * x + o.z * x, o.x * y + o.y * -z + o.z * y, o.x * -x + o.y * y + o.z * z};
+    return {o.x * z + o.y * x + o.z * x, o.x * y + o.y * -z + o.z * y,
+            o.x * -x + o.y * y + o.z * z};
 }
 
 // Angle of (x, z) from +x in [0, 2pi), as POV-Ray's mapping warps compute it.
@@ -229,7 +234,8 @@ Real mandel(const Point3& p, int iterations) {
         a = a2 - b2 + x;
         a2 = a * a;
         b2 = b * b;
-        if (a2 + b2 > 4.0) return Real(col) / Real(iterations);  // exterior: iteration ratio
+        if (a2 + b2 > 4.0)
+            return Real(col) / Real(iterations);  // exterior: iteration ratio
     }
     return 1.0;  // interior factor
 }
@@ -238,12 +244,14 @@ Real spiral_angle_term(const Point3& p, Real arms, Real& rad) {
     rad = std::sqrt(p.x * p.x + p.y * p.y);
     Real phi = 0;
     if (rad != 0.0) {
-        phi = p.x < 0.0 ? 3.0 * kPi / 2 - std::asin(p.y / rad) : kPi / 2 + std::asin(p.y / rad);
+        phi = p.x < 0.0 ? 3.0 * kPi / 2 - std::asin(p.y / rad)
+                        : kPi / 2 + std::asin(p.y / rad);
     }
     return arms * phi / (2 * kPi);
 }
 
-// The 81 cubes around a crackle cell (offsets -2..2 with at most one |2|), in POV-Ray's order.
+// The 81 cubes around a crackle cell (offsets -2..2 with at most one |2|), in POV-Ray's
+// order.
 struct CrackleCubes {
     int offset[81][3];
     CrackleCubes() {
@@ -251,7 +259,8 @@ struct CrackleCubes {
         for (int x = -2; x <= 2; ++x)
             for (int y = -2; y <= 2; ++y)
                 for (int z = -2; z <= 2; ++z)
-                    if ((std::abs(x) == 2) + (std::abs(y) == 2) + (std::abs(z) == 2) <= 1) {
+                    if ((std::abs(x) == 2) + (std::abs(y) == 2) + (std::abs(z) == 2) <=
+                        1) {
                         offset[n][0] = x;
                         offset[n][1] = y;
                         offset[n][2] = z;
@@ -286,7 +295,8 @@ Real crackle(const PatternSpec& s, const Point3& p, int gen) {
     thread_local Cache cache;
     if (!cache.valid || cache.x != fx || cache.y != fy || cache.z != fz) {
         for (int i = 0; i < 81; ++i) {
-            int cx = fx + kCrackleCubes.offset[i][0], cy = fy + kCrackleCubes.offset[i][1],
+            int cx = fx + kCrackleCubes.offset[i][0],
+                cy = fy + kCrackleCubes.offset[i][1],
                 cz = fz + kCrackleCubes.offset[i][2];
             size_t seed = size_t(hash3d(cx & 0xFFF, cy & 0xFFF, cz & 0xFFF));
             cache.nucleus[i] = {cx + pattern_random(seed), cy + pattern_random(seed + 1),
@@ -337,13 +347,15 @@ Real crackle(const PatternSpec& s, const Point3& p, int gen) {
     } else if (unity) {
         tf = form.x * best[0] + form.y * best[1] + form.z * best[2];
     } else {
-        tf = form.x * std::pow(best[0], 1.0 / metric) + form.y * std::pow(best[1], 1.0 / metric) +
+        tf = form.x * std::pow(best[0], 1.0 / metric) +
+             form.y * std::pow(best[1], 1.0 / metric) +
              form.z * std::pow(best[2], 1.0 / metric);
     }
     return std::max(std::min(tf, 1.0), 0.0);
 }
 
-// POV-Ray's density clip for boxed/spherical/cylindrical/planar: 1 at 0 falling to 0 at 1.
+// POV-Ray's density clip for boxed/spherical/cylindrical/planar: 1 at 0 falling to 0
+// at 1.
 Real clip_density(Real r) { return r < 0.0 ? 1.0 : (r > 1.0 ? 0.0 : 1.0 - r); }
 
 Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
@@ -371,10 +383,11 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
         case PatternKind::Crackle:
             return crackle(s, p, gen);
         case PatternKind::Cells:
-            return std::min(pattern_random(size_t(hash3d(int(std::floor(p.x + kEpsilon)),
-                                                          int(std::floor(p.y + kEpsilon)),
-                                                          int(std::floor(p.z + kEpsilon))))),
-                            1.0);
+            return std::min(
+                pattern_random(size_t(hash3d(int(std::floor(p.x + kEpsilon)),
+                                             int(std::floor(p.y + kEpsilon)),
+                                             int(std::floor(p.z + kEpsilon))))),
+                1.0);
         case PatternKind::Dents: {
             Real n = noise(p, gen);
             return n * n * n;
@@ -395,7 +408,8 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
         case PatternKind::Mandel:
             return mandel(p, int(s.scalar));
         case PatternKind::Marble: {
-            Real t = turb ? turb->turbulence.x * turbulence(p, turb_params(turb), gen) : 0.0;
+            Real t =
+                turb ? turb->turbulence.x * turbulence(p, turb_params(turb), gen) : 0.0;
             return p.x + t;
         }
         case PatternKind::Onion:
@@ -429,7 +443,8 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
         }
         case PatternKind::Spiral1:
         case PatternKind::Spiral2: {
-            Real t = turb ? turb->turbulence.x * turbulence(p, turb_params(turb), gen) : 0.0;
+            Real t =
+                turb ? turb->turbulence.x * turbulence(p, turb_params(turb), gen) : 0.0;
             Real rad;
             Real angle = spiral_angle_term(p, Real(int(s.scalar)), rad);
             if (s.kind == PatternKind::Spiral1) return p.z + rad + angle + t;
@@ -447,7 +462,8 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
         case PatternKind::Wrinkles:
             return wrinkles(p, gen);
         case PatternKind::Boxed:
-            return clip_density(std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
+            return clip_density(
+                std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
         case PatternKind::Cylindrical:
             return clip_density(std::sqrt(p.x * p.x + p.z * p.z));
         case PatternKind::Spherical:
@@ -458,9 +474,11 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
     return 0;
 }
 
-// POV-Ray sets frequency 0 (no wrapping) for these patterns; the data model cannot tell an
-// explicit `frequency 1` apart, so they always skip it.
-bool has_no_frequency(PatternKind k) { return is_discrete(k) || k == PatternKind::Quilted; }
+// POV-Ray sets frequency 0 (no wrapping) for these patterns; the data model cannot tell
+// an explicit `frequency 1` apart, so they always skip it.
+bool has_no_frequency(PatternKind k) {
+    return is_discrete(k) || k == PatternKind::Quilted;
+}
 
 }  // namespace
 
@@ -484,17 +502,26 @@ Point3 warp_point(const PatternSpec& spec, const Point3& world) {
         const Warp& w = *it;
         if (&w == classic) continue;
         switch (w.kind) {
-            case Warp::Kind::Turbulence: p = apply_turbulence(w, p); break;
-            case Warp::Kind::Repeat: p = apply_repeat(w, p); break;
-            case Warp::Kind::BlackHole: p = apply_black_hole(w, p); break;
-            default: p = apply_mapping_warp(w, p); break;
+            case Warp::Kind::Turbulence:
+                p = apply_turbulence(w, p);
+                break;
+            case Warp::Kind::Repeat:
+                p = apply_repeat(w, p);
+                break;
+            case Warp::Kind::BlackHole:
+                p = apply_black_hole(w, p);
+                break;
+            default:
+                p = apply_mapping_warp(w, p);
+                break;
         }
         if (!w.transform.is_identity()) p = w.transform.inverse_point(p);
     }
     if (classic && spec.kind != PatternKind::Marble && spec.kind != PatternKind::Wood) {
         p = apply_turbulence(*classic, p);
     }
-    for (int i = 0; i < 3; ++i) p[i] = std::clamp(p[i], -kCoordinateLimit, kCoordinateLimit);
+    for (int i = 0; i < 3; ++i)
+        p[i] = std::clamp(p[i], -kCoordinateLimit, kCoordinateLimit);
     return p;
 }
 
@@ -531,23 +558,36 @@ Real value_at(const PatternSpec& spec, const Point3& p, const PatternEnv& env) {
     if (has_no_frequency(spec.kind)) {
         if (value < 0.0) value -= std::floor(value);
     } else {
-        if (spec.frequency != 0.0) value = std::fmod(value * spec.frequency + spec.phase, 1.00001);
+        if (spec.frequency != 0.0)
+            value = std::fmod(value * spec.frequency + spec.phase, 1.00001);
         if (value < 0.0) value -= std::floor(value);
     }
     switch (spec.wave) {
-        case WaveType::Ramp: break;
-        case WaveType::Sine: value = (1.0 + cycloidal(value)) * 0.5; break;
-        case WaveType::Triangle: value = triangle_wave(value); break;
-        case WaveType::Scallop: value = std::fabs(cycloidal(value * 0.5)); break;
-        case WaveType::Cubic: value = value * value * (-2.0 * value + 3.0); break;
-        case WaveType::Poly: value = std::pow(value, spec.wave_exponent); break;
+        case WaveType::Ramp:
+            break;
+        case WaveType::Sine:
+            value = (1.0 + cycloidal(value)) * 0.5;
+            break;
+        case WaveType::Triangle:
+            value = triangle_wave(value);
+            break;
+        case WaveType::Scallop:
+            value = std::fabs(cycloidal(value * 0.5));
+            break;
+        case WaveType::Cubic:
+            value = value * value * (-2.0 * value + 3.0);
+            break;
+        case WaveType::Poly:
+            value = std::pow(value, spec.wave_exponent);
+            break;
     }
     return value;
 }
 
 }  // namespace detail
 
-Real evaluate_pattern(const PatternSpec& spec, const Point3& world, const PatternEnv& env) {
+Real evaluate_pattern(const PatternSpec& spec, const Point3& world,
+                      const PatternEnv& env) {
     if (spec.kind == PatternKind::Solid) return 0;
     return detail::value_at(spec, detail::warp_point(spec, world), env);
 }
@@ -563,7 +603,8 @@ MapLookup search_map(const float* values, int count, Real value) {
     while (value > values[c]) ++c;
     r.cur = c;
     r.prev = c > 0 ? c - 1 : 0;
-    if (r.prev != r.cur) r.fraction = (value - values[r.prev]) / (values[r.cur] - values[r.prev]);
+    if (r.prev != r.cur)
+        r.fraction = (value - values[r.prev]) / (values[r.cur] - values[r.prev]);
     return r;
 }
 

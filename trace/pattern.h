@@ -4,10 +4,16 @@
 // Point mapping (POV-Ray's warp list, see docs in pattern.cpp):
 //   p = spec.transform^-1(world)
 //   for the warps from last to first (POV-Ray prepends each parsed warp), skipping the
-//   classic turbulence: p = warp(p), then p = warp.transform^-1(p)  [the transforms written
-//   *before* that warp in the scene, i.e. applied after it on the way into pattern space]
-//   finally the classic turbulence (Warp::classic, the last one wins), applied last as
-//   POV-Ray does, except for marble and wood which read it inside the pattern.
+//   classic turbulence: p = warp(p), then p = warp.transform^-1(p)  [the transforms
+//   written *before* that warp in the scene, i.e. applied after it on the way into
+//   pattern space] finally the classic turbulence (Warp::classic, the last one wins),
+//   applied last as POV-Ray does, except for marble and wood which read it inside the
+//   pattern.
+//
+// Nested entries (pigment_map / normal_map / checker, hexagon and brick lists,
+// texture_map entries via pick_map_entries) are evaluated at the OUTER pattern's warped
+// point, as POV-Ray does, so their own transforms are relative to the outer pattern
+// space: an object transform belongs in the outer spec only, not copied into the entries.
 #pragma once
 
 #include "core/scene.h"
@@ -15,20 +21,25 @@
 namespace povwall::trace {
 
 struct PatternEnv {
-    int noise_generator = 2;  // global_settings noise_generator, used when a pattern says 0
-    int number_of_waves = 10; // global_settings number_of_waves (ripples, waves)
+    // global_settings noise_generator, used when a pattern says 0.
+    int noise_generator = 2;
+    // global_settings number_of_waves (ripples, waves).
+    int number_of_waves = 10;
 };
 
-// The pattern's value at `world` (after warps, wave type, frequency and phase). Continuous
-// patterns give [0,1]; checker/brick give 0 or 1, hexagon 0, 1 or 2.
-Real evaluate_pattern(const PatternSpec& spec, const Point3& world, const PatternEnv& env);
+// The pattern's value at `world` (after warps, wave type, frequency and phase).
+// Continuous patterns give [0,1]; checker/brick give 0 or 1, hexagon 0, 1 or 2.
+Real evaluate_pattern(const PatternSpec& spec, const Point3& world,
+                      const PatternEnv& env);
 
 // The pigment's colour (rgbft) at `world`.
-Colour evaluate_pigment(const Pigment& pigment, const Point3& world, const PatternEnv& env);
+Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
+                        const PatternEnv& env);
 
-// `geometric` (unit, world space) perturbed by the normal pattern at `world`; unit length.
-Vector3 perturb_normal(const Normal& normal, const Point3& world, const Vector3& geometric,
-                       const PatternEnv& env);
+// `geometric` (unit, world space) perturbed by the normal pattern at `world`; unit
+// length.
+Vector3 perturb_normal(const Normal& normal, const Point3& world,
+                       const Vector3& geometric, const PatternEnv& env);
 
 // The index of the map entry pair for `value` (POV-Ray's Search_Blend_Map): `prev` and
 // `cur` are equal outside the map's range; otherwise `fraction` blends prev -> cur.

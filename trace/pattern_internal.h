@@ -30,7 +30,8 @@ inline int resolve_generator(const PatternSpec& spec, const PatternEnv& env) {
 }
 
 inline bool is_discrete(PatternKind k) {
-    return k == PatternKind::Checker || k == PatternKind::Brick || k == PatternKind::Hexagon;
+    return k == PatternKind::Checker || k == PatternKind::Brick ||
+           k == PatternKind::Hexagon;
 }
 
 }  // namespace povwall::trace::detail

@@ -17,8 +17,9 @@ constexpr Vector3 kPyramid[4] = {{0.942809041, -0.333333333, 0.0},
                                  {0.0, 1.0, 0.0}};
 
 bool has_dedicated_normal(PatternKind k) {
-    return k == PatternKind::Bumps || k == PatternKind::Dents || k == PatternKind::Ripples ||
-           k == PatternKind::Waves || k == PatternKind::Wrinkles || k == PatternKind::Quilted;
+    return k == PatternKind::Bumps || k == PatternKind::Dents ||
+           k == PatternKind::Ripples || k == PatternKind::Waves ||
+           k == PatternKind::Wrinkles || k == PatternKind::Quilted;
 }
 
 // Adds the dedicated normal pattern's displacement at pattern-space point p to n.
@@ -77,8 +78,8 @@ void displace(const Normal& nm, const Point3& p, Vector3& n, const PatternEnv& e
 
 }  // namespace
 
-Vector3 perturb_normal(const Normal& normal, const Point3& world, const Vector3& geometric,
-                       const PatternEnv& env) {
+Vector3 perturb_normal(const Normal& normal, const Point3& world,
+                       const Vector3& geometric, const PatternEnv& env) {
     const PatternSpec& spec = normal.pattern;
     if (spec.kind == PatternKind::Solid) return normalize(geometric);
 

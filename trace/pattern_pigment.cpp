@@ -1,5 +1,5 @@
-// Pigments: colour maps (with POV-Ray's default maps), colour lists of checker/hexagon/brick
-// and pigment maps, blended as POV-Ray 3.7's Compute_Pigment does.
+// Pigments: colour maps (with POV-Ray's default maps), colour lists of
+// checker/hexagon/brick and pigment maps, blended as POV-Ray 3.7's Compute_Pigment does.
 #include <algorithm>
 #include <array>
 
@@ -21,18 +21,19 @@ constexpr Rgb kBlack{0, 0, 0}, kWhite{1, 1, 1}, kRed{1, 0, 0}, kGreen{0, 1, 0},
 // POV-Ray's built-in maps for pigments given without a colour_map (pigment.cpp).
 const DefaultMap& default_map(PatternKind k) {
     static const DefaultMap kGray{2, {0, 1}, {kBlack, kWhite}};
-    static const DefaultMap kBozo{
-        6, {0.4f, 0.4f, 0.6f, 0.6f, 0.8f, 0.8f}, {kWhite, kGreen, kGreen, kBlue, kBlue, kRed}};
+    static const DefaultMap kBozo{6,
+                                  {0.4f, 0.4f, 0.6f, 0.6f, 0.8f, 0.8f},
+                                  {kWhite, kGreen, kGreen, kBlue, kBlue, kRed}};
     static const DefaultMap kWood{
         2, {0.6f, 0.6f}, {Rgb{0.666f, 0.312f, 0.2f}, Rgb{0.4f, 0.1333f, 0.066f}}};
     static const DefaultMap kMandel{5,
                                     {0.001f, 0.001f, 0.012f, 0.015f, 0.1f},
                                     {kBlack, kCyan, kYellow, kMagenta, kCyan}};
-    static const DefaultMap kAgate{6,
-                                   {0.0f, 0.5f, 0.5f, 0.6f, 0.6f, 1.0f},
-                                   {kWhite, Rgb{0.95f, 0.75f, 0.5f}, Rgb{0.9f, 0.7f, 0.5f},
-                                    Rgb{0.9f, 0.7f, 0.4f}, Rgb{1.0f, 0.7f, 0.4f},
-                                    Rgb{0.6f, 0.3f, 0.0f}}};
+    static const DefaultMap kAgate{
+        6,
+        {0.0f, 0.5f, 0.5f, 0.6f, 0.6f, 1.0f},
+        {kWhite, Rgb{0.95f, 0.75f, 0.5f}, Rgb{0.9f, 0.7f, 0.5f}, Rgb{0.9f, 0.7f, 0.4f},
+         Rgb{1.0f, 0.7f, 0.4f}, Rgb{0.6f, 0.3f, 0.0f}}};
     static const DefaultMap kRadial{
         4, {0.0f, 0.333f, 0.666f, 1.0f}, {kCyan, kYellow, kMagenta, kCyan}};
     static const DefaultMap kMarble{
@@ -43,16 +44,26 @@ const DefaultMap& default_map(PatternKind k) {
     static const DefaultMap kHex{3, {0.0f, 1.0f, 2.0f}, {kBlue, kGreen, kRed}};
     static const DefaultMap kChecker{2, {0.0f, 1.0f}, {kBlue, kGreen}};
     switch (k) {
-        case PatternKind::Bozo: return kBozo;
-        case PatternKind::Brick: return kBrick;
-        case PatternKind::Wood: return kWood;
-        case PatternKind::Mandel: return kMandel;
-        case PatternKind::Radial: return kRadial;
-        case PatternKind::Agate: return kAgate;
-        case PatternKind::Marble: return kMarble;
-        case PatternKind::Hexagon: return kHex;
-        case PatternKind::Checker: return kChecker;
-        default: return kGray;
+        case PatternKind::Bozo:
+            return kBozo;
+        case PatternKind::Brick:
+            return kBrick;
+        case PatternKind::Wood:
+            return kWood;
+        case PatternKind::Mandel:
+            return kMandel;
+        case PatternKind::Radial:
+            return kRadial;
+        case PatternKind::Agate:
+            return kAgate;
+        case PatternKind::Marble:
+            return kMarble;
+        case PatternKind::Hexagon:
+            return kHex;
+        case PatternKind::Checker:
+            return kChecker;
+        default:
+            return kGray;
     }
 }
 
@@ -67,7 +78,8 @@ Colour blend(const Colour& prev, const Colour& cur, Real f) {
 
 }  // namespace
 
-Colour evaluate_pigment(const Pigment& pigment, const Point3& world, const PatternEnv& env) {
+Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
+                        const PatternEnv& env) {
     const PatternSpec& spec = pigment.pattern;
     if (spec.kind == PatternKind::Solid) return pigment.colour;
     Point3 p = detail::warp_point(spec, world);

@@ -1,10 +1,10 @@
-// Properties of the noise functions that POV-Ray's definitions imply; the exact values are
-// checked against POV-Ray renders in pattern_test.cpp.
+// Properties of the noise functions that POV-Ray's definitions imply; the exact values
+// are checked against POV-Ray renders in pattern_test.cpp.
+#include "trace/noise.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "trace/noise.h"
 
 namespace povwall::trace {
 namespace {
@@ -13,7 +13,8 @@ TEST(Noise, ContinuousAcrossLatticeCellsIncludingNegative) {
     for (int gen : {1, 2, 3}) {
         for (double c : {-3.0, -1.0, 0.0, 1.0, 7.0, 4095.0, 4096.0}) {
             Vector3 a{c - 1e-9, 0.3, 0.7}, b{c + 1e-9, 0.3, 0.7};
-            EXPECT_NEAR(noise(a, gen), noise(b, gen), 1e-6) << "gen " << gen << " x=" << c;
+            EXPECT_NEAR(noise(a, gen), noise(b, gen), 1e-6)
+                << "gen " << gen << " x=" << c;
             Vector3 da = dnoise({0.4, c - 1e-9, 0.2}), db = dnoise({0.4, c + 1e-9, 0.2});
             EXPECT_NEAR(length(da - db), 0.0, 1e-6) << "y=" << c;
         }

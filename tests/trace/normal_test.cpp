@@ -1,5 +1,5 @@
-// Perturbed normals compared with POV-Ray: a white plane lit by three parallel lights (red,
-// green, blue from different directions) with diffuse 1 shows N.L per channel.
+// Perturbed normals compared with POV-Ray: a white plane lit by three parallel lights
+// (red, green, blue from different directions) with diffuse 1 shows N.L per channel.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,8 +24,8 @@ double max_normal_error(const std::string& pov_normal, const Normal& normal) {
         "light_source { <100,200,0> rgb <1,0,0> parallel point_at <0,0,0> }\n"
         "light_source { <0,100,0> rgb <0,1,0> parallel point_at <0,0,0> }\n"
         "light_source { <0,200,-100> rgb <0,0,1> parallel point_at <0,0,0> }\n"
-        "plane { y, 0.37 pigment { rgb 1 } normal { " + pov_normal +
-        " } finish { ambient 0 diffuse 1 } }\n";
+        "plane { y, 0.37 pigment { rgb 1 } normal { " +
+        pov_normal + " } finish { ambient 0 diffuse 1 } }\n";
     test::RgbImage img = test::render_with_povray(scene, kSize);
     double worst = 0;
     for (int y = 0; y < kSize; ++y) {
@@ -82,7 +82,8 @@ TEST(NormalVsPovray, QuiltedAndDiscreteNormals) {
     q.pattern.transform = Transform::scale({0.6, 0.6, 0.6});
     EXPECT_LE(max_normal_error("quilted 0.7 scale 0.6", q), kTol);
     q.pattern.vector = {0.2, 0.9, 0};
-    EXPECT_LE(max_normal_error("quilted 0.7 control0 0.2 control1 0.9 scale 0.6", q), kTol);
+    EXPECT_LE(max_normal_error("quilted 0.7 control0 0.2 control1 0.9 scale 0.6", q),
+              kTol);
     Normal c = with(PatternKind::Crackle, 0.5);
     EXPECT_LE(max_normal_error("crackle 0.5", c), kTol);
     Normal h = with(PatternKind::Hexagon, 0.5);
@@ -95,8 +96,9 @@ TEST(NormalVsPovray, AverageNormals) {
     avg.pattern.kind = PatternKind::Average;
     avg.map_values = {1.0f, 2.0f};
     avg.list = {with(PatternKind::Bumps, 0.9), with(PatternKind::Granite, 0.4)};
-    EXPECT_LE(max_normal_error("average normal_map { [1 bumps 0.9] [2 granite 0.4] }", avg),
-              kTol);
+    EXPECT_LE(
+        max_normal_error("average normal_map { [1 bumps 0.9] [2 granite 0.4] }", avg),
+        kTol);
 }
 
 TEST(NormalVsPovray, ScaledPatternNormalAndNormalMap) {
@@ -108,8 +110,8 @@ TEST(NormalVsPovray, ScaledPatternNormalAndNormalMap) {
     m.pattern.vector = {1, 0, 0};
     m.map_values = {0.3f, 0.7f};
     m.list = {with(PatternKind::Bumps, 0.8), with(PatternKind::Wrinkles, 0.5)};
-    EXPECT_LE(max_normal_error("gradient x normal_map { [0.3 bumps 0.8] [0.7 wrinkles 0.5] }",
-                               m),
+    EXPECT_LE(max_normal_error(
+                  "gradient x normal_map { [0.3 bumps 0.8] [0.7 wrinkles 0.5] }", m),
               kTol);
 }
 

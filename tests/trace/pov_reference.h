@@ -2,10 +2,11 @@
 // compare against POV-Ray itself. Renders are cached under the build tree by scene hash.
 #pragma once
 
+#include <unistd.h>
+
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -72,15 +73,17 @@ inline RgbImage render_with_povray(const std::string& scene, int size) {
     namespace fs = std::filesystem;
     fs::path dir = fs::path(POVWALL_TEST_CACHE_DIR) / "pov_refs";
     fs::create_directories(dir);
-    std::string key = std::to_string(std::hash<std::string>{}(scene + std::to_string(size)));
+    std::string key =
+        std::to_string(std::hash<std::string>{}(scene + std::to_string(size)));
     // Per-process scratch names: test processes may run in parallel.
     std::string scratch = key + "." + std::to_string(getpid());
     fs::path pov = dir / (scratch + ".pov"), ppm = dir / (key + ".ppm");
     if (!fs::exists(ppm)) {
         std::ofstream(pov) << scene;
         std::ostringstream cmd;
-        cmd << "povray +W" << size << " +H" << size << " -D -A +FP16 File_Gamma=1.0 -GA +I"
-            << pov.string() << " +O" << dir.string() << "/" << scratch << ".tmp.ppm >/dev/null 2>&1";
+        cmd << "povray +W" << size << " +H" << size
+            << " -D -A +FP16 File_Gamma=1.0 -GA +I" << pov.string() << " +O"
+            << dir.string() << "/" << scratch << ".tmp.ppm >/dev/null 2>&1";
         if (std::system(cmd.str().c_str()) != 0) {
             throw std::runtime_error("povray failed on " + pov.string());
         }
@@ -90,9 +93,9 @@ inline RgbImage render_with_povray(const std::string& scene, int size) {
     return read_ppm16(ppm.string());
 }
 
-// Scene with an orthographic camera looking down -y at the plane y = `height`: pixel (x, y)
-// sees the world point ((x+0.5)/n - 0.5) * extent + centre.x, height,
-// (0.5 - (y+0.5)/n) * extent + centre.z.
+// Scene with an orthographic camera looking down -y at the plane y = `height`: pixel (x,
+// y) sees the world point ((x+0.5)/n - 0.5) * extent + centre.x, height, (0.5 -
+// (y+0.5)/n) * extent + centre.z.
 struct TopView {
     double extent = 4, height = 0.37;
     Vector3 centre{0, 0, 0};
@@ -100,7 +103,8 @@ struct TopView {
         std::ostringstream s;
         s.precision(17);
         s << "camera { orthographic location <" << centre.x << ",10," << centre.z
-          << "> direction <0,-1,0> right <" << extent << ",0,0> up <0,0," << extent << "> }\n";
+          << "> direction <0,-1,0> right <" << extent << ",0,0> up <0,0," << extent
+          << "> }\n";
         return s.str();
     }
     Point3 point(int x, int y, int n) const {
