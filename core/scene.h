@@ -150,9 +150,13 @@ struct Mesh {
 
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
+struct Light;
 struct Csg {
     CsgKind kind = CsgKind::Union;
     std::vector<Object> children;
+    // Light sources written inside the CSG move with it; the parser moves them to
+    // Scene::lights when the object is placed in the scene.
+    std::vector<Light> lights;
 };
 
 using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,

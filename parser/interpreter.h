@@ -93,6 +93,9 @@ class Interpreter {
     bool try_transform(const Token& t, Transform& out);
     Transform parse_transform_block();
     void apply_transform(Object& obj, const Transform& t);
+    void transform_light(Light& l, const Transform& t);
+    // Moves light sources written inside CSG objects into the scene.
+    void collect_lights(Object& obj);
     LayeredTexture parse_texture_block();  // after 'texture'
     void parse_texture_body(LayeredTexture& layers, char terminator);
     Pigment parse_pigment_block();  // after 'pigment'

@@ -41,12 +41,23 @@ void transform_textures(LayeredTexture& layers, const Transform& t) {
     }
 }
 
+void Interpreter::transform_light(Light& l, const Transform& t) {
+    l.location = t.point(l.location);
+    l.point_at = t.point(l.point_at);
+    if (l.area) {
+        l.area->axis1 = t.vector(l.area->axis1);
+        l.area->axis2 = t.vector(l.area->axis2);
+    }
+    for (Object& o : l.looks_like) apply_transform(o, t);
+}
+
 void Interpreter::apply_transform(Object& obj, const Transform& t) {
     obj.transform = obj.transform.then(t);
     transform_textures(obj.texture, t);
     transform_textures(obj.interior_texture, t);
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
         for (Object& child : csg->children) apply_transform(child, t);
+        for (Light& l : csg->lights) transform_light(l, t);
     }
     for (Object& o : obj.clipped_by) apply_transform(o, t);
     for (Object& o : obj.bounded_by) apply_transform(o, t);
@@ -378,7 +389,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             Object child;
             if (c.kind == TokenKind::Word && is_word(c, "light_source")) {
                 next();
-                scene_.lights.push_back(parse_light_block());
+                csg.lights.push_back(parse_light_block());
                 continue;
             }
             if (c.kind == TokenKind::Word && !is_word(c, "texture") &&
@@ -400,20 +411,19 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         Token id = next();
         const Value* v = id.kind == TokenKind::Word ? lookup(id) : nullptr;
         if (v && std::holds_alternative<std::shared_ptr<Light>>(*v)) {
-            // object { LightId }: a light source; modifiers transform it.
-            Light l = *std::get<std::shared_ptr<Light>>(*v);
-            scene_.lights.push_back(l);
+            // object { LightId }: a light source, carried by an empty CSG so that later
+            // transforms (its own and those of enclosing objects) move it.
+            Csg holder;
+            holder.lights.push_back(*std::get<std::shared_ptr<Light>>(*v));
+            out = Object{};
+            out.shape = std::move(holder);
             for (;;) {
                 Token m = next();
                 if (is_punct(m, '}')) break;
                 Transform tr;
                 if (!try_transform(m, tr)) expected("a transformation or '}'", m);
-                Light& ll = scene_.lights.back();
-                ll.location = tr.point(ll.location);
-                ll.point_at = tr.point(ll.point_at);
+                apply_transform(out, tr);
             }
-            out = Object{};
-            out.shape = Csg{};  // empty: contributes nothing
             return true;
         }
         auto o = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr;
@@ -431,6 +441,14 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     }
     parse_object_modifiers(out);
     return true;
+}
+
+void Interpreter::collect_lights(Object& obj) {
+    if (auto csg = std::get_if<Csg>(&obj.shape)) {
+        for (Light& l : csg->lights) scene_.lights.push_back(std::move(l));
+        csg->lights.clear();
+        for (Object& child : csg->children) collect_lights(child);
+    }
 }
 
 void Interpreter::finish_object(Object& obj) {
@@ -493,6 +511,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
         Object obj;
         if (try_parse_object(t, obj)) {
             finish_object(obj);
+            collect_lights(obj);
             scene_.objects.push_back(std::move(obj));
             return;
         }

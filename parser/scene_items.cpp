@@ -161,13 +161,7 @@ Light Interpreter::parse_light_block() {
         if (is_punct(t, '}')) break;
         Transform tr;
         if (try_transform(t, tr)) {
-            l.location = tr.point(l.location);
-            l.point_at = tr.point(l.point_at);
-            if (l.area) {
-                l.area->axis1 = tr.vector(l.area->axis1);
-                l.area->axis2 = tr.vector(l.area->axis2);
-            }
-            for (Object& o : l.looks_like) apply_transform(o, tr);
+            transform_light(l, tr);
             continue;
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();

@@ -243,3 +243,30 @@ TEST(Errors, UnsupportedFeatureIsNamed) {
 
 }  // namespace
 }  // namespace povwall::parser
+
+namespace povwall::parser {
+namespace {
+
+TEST(Lights, LightsInsideCsgMoveWithIt) {
+    Scene s = parse(R"(
+#declare L = light_source { <1, 0, 0> color rgb 1 }
+union {
+  light_source { <0, 1, 0> color rgb 1 }
+  object { L translate <0, 0, 1> }
+  sphere { 0, 0.1 }
+  translate <10, 0, 0>
+  rotate y * 90
+}
+)");
+    ASSERT_EQ(s.lights.size(), 2u);
+    // <0,1,0> + 10x = <10,1,0>; rotate 90 about y: x -> -z.
+    EXPECT_NEAR(s.lights[0].location.x, 0, 1e-12);
+    EXPECT_NEAR(s.lights[0].location.y, 1, 1e-12);
+    EXPECT_NEAR(s.lights[0].location.z, -10, 1e-12);
+    // <1,0,0> + z + 10x = <11,0,1> -> rotate: <1, 0, -11>.
+    EXPECT_NEAR(s.lights[1].location.x, 1, 1e-12);
+    EXPECT_NEAR(s.lights[1].location.z, -11, 1e-12);
+}
+
+}  // namespace
+}  // namespace povwall::parser
