@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "core/noise.h"
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
@@ -552,6 +553,20 @@ Value ExpressionParser::word(const Token& t) {
         in_.expect_punct(')');
         return Numeric::vector(axis_rotate(a, b, deg));
     }
+    if (w == "vturbulence") {
+        // vturbulence(Lambda, Omega, Octaves, <point>): POV-Ray's DTurbulence vector.
+        in_.expect_punct('(');
+        TurbulenceParams tp;
+        tp.lambda = arg_float();
+        in_.accept_punct(',');
+        tp.omega = arg_float();
+        in_.accept_punct(',');
+        tp.octaves = int(arg_float());
+        in_.accept_punct(',');
+        Vector3 p = arg_vector();
+        in_.expect_punct(')');
+        return Numeric::vector(dturbulence(p, tp));
+    }
     if (w == "strlen") {
         in_.expect_punct('(');
         std::string s = arg_string();
@@ -612,7 +627,7 @@ Value ExpressionParser::word(const Token& t) {
         return in_.parse_colour();
     }
     static const char* const kUnsupportedFunctions[] = {
-        "vturbulence", "trace", "inside", "eval_pigment", "now", "datetime"};
+        "trace", "inside", "eval_pigment", "now", "datetime"};
     for (const char* f : kUnsupportedFunctions) {
         if (w == f) in_.unsupported(t, w);
     }

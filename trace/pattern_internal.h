@@ -2,7 +2,7 @@
 #pragma once
 
 #include "core/scene.h"
-#include "trace/noise.h"
+#include "core/noise.h"
 #include "trace/pattern.h"
 
 namespace povwall::trace::detail {

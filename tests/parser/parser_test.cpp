@@ -270,3 +270,20 @@ union {
 
 }  // namespace
 }  // namespace povwall::parser
+
+namespace povwall::parser {
+namespace {
+
+TEST(Expressions, VturbulenceMatchesPovRay) {
+    // Values printed by POV-Ray 3.7.0.10 for the same #debug lines.
+    std::string out;
+    parse(R"(
+#debug concat(vstr(3, vturbulence(2, 0.5, 6, <0.3, 0.7, 1.1>), ",", 0, 6), "\n")
+#debug concat(vstr(3, vturbulence(2.5, 0.4, 3, <-12.5, 3.25, 100>), ",", 0, 6), "\n")
+)",
+          &out);
+    EXPECT_EQ(out, "0.344564,-0.261187,-0.078804\n-0.116862,-0.399384,0.198307\n");
+}
+
+}  // namespace
+}  // namespace povwall::parser

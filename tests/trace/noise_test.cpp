@@ -1,6 +1,6 @@
 // Properties of the noise functions that POV-Ray's definitions imply; the exact values
 // are checked against POV-Ray renders in pattern_test.cpp.
-#include "trace/noise.h"
+#include "core/noise.h"
 
 #include <gtest/gtest.h>
 

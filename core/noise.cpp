@@ -3,14 +3,14 @@
 // 3.7 generates them (its 31-bit LCG, and MT19937 with the default seed for the pattern
 // random table). Only the lattice-noise value table (noise_rtable.inc) is literal
 // data: 3.7 ships it as numbers that do not come from any of its generators.
-#include "trace/noise.h"
+#include "core/noise.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
 
-namespace povwall::trace {
+namespace povwall {
 namespace {
 
 constexpr Real kEpsilon = 1e-10;        // POV-Ray's EPSILON
@@ -29,7 +29,7 @@ struct PovRand {
 
 // The RTable literal: value k and its half are what each lattice corner reads.
 constexpr Real kRValues[267] = {
-#include "trace/noise_rtable.inc"
+#include "core/noise_rtable.inc"
 };
 
 struct Tables {
@@ -289,4 +289,4 @@ int hash3d(int x, int y, int z) {
 
 Real pattern_random(size_t index) { return kTables.pattern_rands[index % 32768]; }
 
-}  // namespace povwall::trace
+}  // namespace povwall

@@ -6,7 +6,7 @@
 
 #include "core/math.h"
 
-namespace povwall::trace {
+namespace povwall {
 
 // Scalar noise in [0,1] at `p` for noise_generator 1, 2 or 3 (anything else acts as 2).
 Real noise(const Vector3& p, int generator);
@@ -44,4 +44,4 @@ int hash3d(int x, int y, int z);
 // default-seeded MT19937 (Boost's uniform_real over mt19937, which POV-Ray uses).
 Real pattern_random(size_t index);
 
-}  // namespace povwall::trace
+}  // namespace povwall
