@@ -20,7 +20,8 @@ const char* kUsage =
     "P]\n"
     "                      [--warn T] [--warnpercent P] [--max-rmse R]\n"
     "       povwall compare SCENE.pov [-W N] [-H N] [--json] [--keep DIR] [--threads N]\n"
-    "                      [-L DIR]... [+POV-Ray switches]\n";
+    "                      [-L DIR]... [+POV-Ray switches]\n"
+    "       povwall parse SCENE.pov [-L DIR]... [--json]   (exit 0 ok, 3 unsupported, 2 error)\n";
 
 int render_main(const std::vector<std::string>& args) {
     RenderOptions o;
@@ -86,6 +87,7 @@ int main(int argc, char** argv) {
         if (cmd == "render") return render_main({args.begin() + 1, args.end()});
         if (cmd == "diff") return run_diff(argc - 1, argv + 1);
         if (cmd == "compare") return run_compare(argc - 1, argv + 1);
+        if (cmd == "parse") return run_parse(argc - 1, argv + 1);
         if (cmd == "-h" || cmd == "--help" || cmd == "help") {
             std::fputs(kUsage, stdout);
             return 0;

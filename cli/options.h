@@ -55,6 +55,7 @@ void resolve_partial_render(RenderOptions& o);
 int run_render(RenderOptions o);
 int run_diff(int argc, char** argv);
 int run_compare(int argc, char** argv);
+int run_parse(int argc, char** argv);
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;

@@ -87,6 +87,35 @@ TEST(Cli, UnknownIdentifierAndMissingIncludeAreLocated) {
     EXPECT_FALSE(fs::exists(scratch() / "i.png"));
 }
 
+TEST(Cli, ParseReportsContentsUnsupportedAndErrors) {
+    fs::path ok = write_scene("parse_ok.pov",
+                              "#version 3.7;\n#declare I = 0;\n#while (I < 3) sphere { x * I, 0.5 }"
+                              " #declare I = I + 1; #end\nunion { box { 0, 1 } cone { 0, 1, y, 0 } }\n"
+                              "light_source { <1, 2, 3> color rgb 1 }\n");
+    RunResult r = run("parse " + ok.string() + " --json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["status"], "ok");
+    EXPECT_EQ(j["objects"], 4);
+    EXPECT_EQ(j["shapes"]["sphere"], 3);
+    EXPECT_EQ(j["shapes"]["union"], 1);
+    EXPECT_EQ(j["shapes"]["cone"], 1);
+    EXPECT_EQ(j["lights"], 1);
+    EXPECT_DOUBLE_EQ(j["language_version"].get<double>(), 3.7);
+    fs::path unsupported = write_scene("parse_text.pov", "sphere { 0, 1 }\n  text { ttf \"a.ttf\" \"x\" 1, 0 }\n");
+    r = run("parse " + unsupported.string() + " --json");
+    EXPECT_EQ(r.code, 3);
+    j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["status"], "unsupported");
+    EXPECT_EQ(j["message"], "unsupported: text");
+    EXPECT_EQ(j["line"], 2);
+    EXPECT_EQ(j["column"], 3);
+    fs::path bad = write_scene("parse_bad.pov", "sphere { 0, 1 ");
+    r = run("parse " + bad.string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find(bad.string() + ":1:"), std::string::npos) << r.err;
+}
+
 TEST(Cli, MissingSceneFile) {
     RunResult r =
         run("render /nonexistent/scene.pov -o " + (scratch() / "m.png").string());
