@@ -2,6 +2,7 @@
 #include "trace/shading.h"
 
 #include <algorithm>
+#include <deque>
 #include <cmath>
 
 #include "trace/intersect.h"
@@ -120,6 +121,63 @@ Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray) {
     return fc + (Rgb(1.0f) - fc) * k;
 }
 
+namespace {
+
+// A texture_map (or checker/hexagon/brick of textures) as the object's texture: POV-Ray
+// blends the final colours of the two entries around the pattern value. Both entries are
+// shaded and their records merged with the blend weights; children keep combining linearly.
+bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
+                       ShadingRecord& out) {
+    const Material& m = *hit.material;
+    if (!m.texture || m.texture->size() != 1) return false;
+    const Texture& t = m.texture->front();
+    if (!t.map_pattern || t.map.empty()) return false;
+    const int count = int(t.map.size());
+    const bool has_values = int(t.map_values.size()) == count;
+    MapPick pick = pick_map_entries(*t.map_pattern, has_values ? t.map_values.data() : nullptr,
+                                    count, hit.point, scene.pattern_env());
+    const int entries[2] = {pick.lookup.prev, pick.lookup.cur};
+    const float weights[2] = {float(1 - pick.lookup.fraction), float(pick.lookup.fraction)};
+    FogEffect fog = out.fog;
+    Rgb local;
+    // A deque keeps references valid while nested texture maps grow it.
+    thread_local std::deque<ShadingRecord> scratch_pool;
+    thread_local size_t depth = 0;
+    if (scratch_pool.size() <= depth) scratch_pool.resize(depth + 1);
+    std::vector<ChildRay> children;
+    for (int e = 0; e < 2; ++e) {
+        if (weights[e] <= 0) continue;
+        if (e == 1 && entries[1] == entries[0]) continue;
+        int index = std::clamp(entries[e], 0, count - 1);
+        float w = (entries[1] == entries[0]) ? 1.0f : weights[e];
+        Material sub = m;
+        sub.texture = &t.map[size_t(index)];
+        Hit h = hit;
+        h.material = &sub;
+        ++depth;
+        ShadingRecord& rec = scratch_pool[depth - 1];
+        spawn_children(scene, ray, h, rec);
+        --depth;
+        local += rec.local * w;
+        for (ChildRay c : rec.children) {
+            c.coeff *= w;
+            c.transmit_factor *= w;
+            // Interior stacks must name the object's own material, not this stand-in.
+            for (int k = 0; k < c.trace.interiors.size; ++k) {
+                if (c.trace.interiors.items[k] == &sub) c.trace.interiors.items[k] = &m;
+            }
+            children.push_back(c);
+        }
+    }
+    out.clear();
+    out.fog = fog;
+    out.local = local;
+    out.children = std::move(children);
+    return true;
+}
+
+}  // namespace
+
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     ShadingRecord& out) {
     out.clear();
@@ -132,6 +190,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         }
         if (hollow) out.fog = fog_effect(scene.scene(), ray.ray, hit.t);
     }
+    if (spawn_texture_map(scene, ray, hit, out)) return;
     const Scene& sc = scene.scene();
     const Material& m = *hit.material;
     const Vector3 D = ray.ray.direction;
@@ -359,7 +418,7 @@ TraceResult combine_children(const ShadingRecord& record, const TraceResult* res
         } else {
             r.colour += c.coeff * x.colour;
         }
-        if (c.kind == ChildRay::Kind::Transmission) r.transmit = c.transmit_factor * x.transmit;
+        if (c.kind == ChildRay::Kind::Transmission) r.transmit += c.transmit_factor * x.transmit;
     }
     const FogEffect& f = record.fog;
     r.colour = f.add + f.mul * r.colour;
