@@ -418,6 +418,16 @@ void PreparedScene::add_object(const Object& o, const Material*) {
         push(PrimKind::Sphere, index, add_material(o), {c - Vector3(r), c + Vector3(r)});
         return;
     }
+    if (auto pl = std::get_if<Plane>(&o.shape);
+        pl && !o.inverse && o.clipped_by.empty() && similarity(o.transform, scale)) {
+        // Ground planes are tested by every ray: keep them out of the general object path.
+        Vector3 n = normalize(o.transform.normal(pl->normal));
+        Point3 on = o.transform.point(pl->normal * pl->distance);
+        planes_.push_back({n, dot(n, on), kPlaneTolerance * scale});  // tolerance: world units
+        push(PrimKind::Plane, uint32_t(planes_.size()) - 1, add_material(o),
+             Bounds3::everything());
+        return;
+    }
     if (auto m = std::get_if<Mesh>(&o.shape); m && !o.inverse && o.clipped_by.empty()) {
         uint32_t base = add_material(o);
         std::vector<uint32_t> face_materials;
@@ -490,6 +500,25 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
             hit.prim = id;
             hit.point = ray.at(t);
             hit.normal = (hit.point - Point3{sx_[s], sy_[s], sz_[s]}) / sr_[s];
+            hit.material = &materials_[material_[id]];
+            return true;
+        }
+        case PrimKind::Plane: {
+            const PlanePrim& pl = planes_[index_[id]];
+            // Same arithmetic as POV-Ray's (and the general path's): re-normalised direction,
+            // object-space depth, then back to world distance. Coincident faces depend on it.
+            Real len = length(ray.direction);
+            Vector3 dn = ray.direction / len;
+            Real nd = dot(pl.normal, dn);
+            if (std::fabs(nd) < kPovEpsilon) return false;
+            Real t_obj = (pl.distance - dot(pl.normal, ray.origin)) / nd;
+            if (!(t_obj > pl.tolerance && t_obj < kMaxDistance)) return false;
+            Real t = t_obj / len;
+            if (!(t >= lo && t < t_max)) return false;
+            hit.t = t;
+            hit.prim = id;
+            hit.point = ray.at(t);
+            hit.normal = pl.normal;
             hit.material = &materials_[material_[id]];
             return true;
         }

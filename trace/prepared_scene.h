@@ -21,7 +21,7 @@ struct Material {
     bool opaque = true;  // no filter or transmit anywhere in its textures
 };
 
-enum class PrimKind : uint8_t { Sphere, Triangle, Object };
+enum class PrimKind : uint8_t { Sphere, Triangle, Plane, Object };
 
 struct TrianglePrim {
     Point3 p[3];
@@ -92,6 +92,13 @@ private:
     // Spheres in world space, structure of arrays for the hot loop.
     std::vector<Real> sx_, sy_, sz_, sr_;
     std::vector<TrianglePrim> triangles_;
+    // Planes in world space: dot(normal, p) = distance; `tolerance` is POV-Ray's 1e-6
+    // object-space depth tolerance in world units.
+    struct PlanePrim {
+        Vector3 normal;
+        Real distance, tolerance;
+    };
+    std::vector<PlanePrim> planes_;
     std::vector<const Object*> objects_;
     std::vector<uint32_t> unbounded_;
     octree::Octree tree_;
