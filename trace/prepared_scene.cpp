@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "octree/overlap.h"
 #include "trace/intersect.h"
 
 namespace povwall::trace {
@@ -329,18 +330,18 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     // The octree indexes bounded primitives by their position in bounded_ids.
     input.bounds.reserve(bounded_ids.size());
     for (uint32_t id : bounded_ids) input.bounds.push_back(bounds_[id]);
+    // Exact (CGAL) cell tests: a sphere or triangle is referenced only by cells it touches.
     input.overlaps = [&](uint32_t i, const Bounds3& cell) {
         uint32_t id = bounded_ids[i];
-        if (kind_[id] != PrimKind::Sphere) return true;
-        // Exact sphere-box test: distance from the centre to the box.
-        uint32_t s = index_[id];
-        Point3 c{sx_[s], sy_[s], sz_[s]};
-        Real d2 = 0;
-        for (int a = 0; a < 3; ++a) {
-            Real v = std::clamp(c[a], cell.lo[a], cell.hi[a]) - c[a];
-            d2 += v * v;
+        if (kind_[id] == PrimKind::Sphere) {
+            uint32_t s = index_[id];
+            return octree::sphere_overlaps({sx_[s], sy_[s], sz_[s]}, sr_[s], cell);
         }
-        return d2 <= sr_[s] * sr_[s];
+        if (kind_[id] == PrimKind::Triangle) {
+            const TrianglePrim& t = triangles_[index_[id]];
+            return octree::triangle_overlaps(t.p[0], t.p[1], t.p[2], cell);
+        }
+        return true;
     };
     tree_.build(input);
     // Re-map: store octree ids as primitive ids by permuting primitive arrays is avoided;
