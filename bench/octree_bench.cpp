@@ -44,7 +44,7 @@ octree::BuildInput input_for(const Spheres& s, bool exact) {
     for (size_t i = 0; i < s.size(); ++i) in.bounds.push_back(s.bounds(i));
     if (exact) {
         in.overlaps = [&s](uint32_t id, const Bounds3& cell) {
-            return octree::sphere_overlaps({s.x[id], s.y[id], s.z[id]}, s.r[id], cell);
+            return octree::sphere_overlaps({s[id].x, s[id].y, s[id].z}, s[id].r, cell);
         };
     }
     return in;

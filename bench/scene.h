@@ -10,16 +10,23 @@
 
 #include "core/math.h"
 #include "octree/octree.h"
+#include "octree/spatial_order.h"
 
 namespace povwall::bench {
 
-/// Spheres in structure-of-arrays form, as trace/ keeps them.
+/// Spheres as trace/ keeps them: one 32-byte record each (a candidate test touches one
+/// cache line), numbered along a Morton curve.
+struct SphereRecord {
+    Real x, y, z, r;
+};
 struct Spheres {
-    std::vector<Real> x, y, z, r;
-    size_t size() const { return r.size(); }
+    std::vector<SphereRecord> records;
+    size_t size() const { return records.size(); }
+    const SphereRecord& operator[](size_t i) const { return records[i]; }
     Bounds3 bounds(size_t i) const {
-        Point3 c{x[i], y[i], z[i]};
-        return {c - Vector3(r[i]), c + Vector3(r[i])};
+        const SphereRecord& s = records[i];
+        Point3 c{s.x, s.y, s.z};
+        return {c - Vector3(s.r), c + Vector3(s.r)};
     }
 };
 
@@ -29,13 +36,20 @@ inline Real make_spheres(size_t n, uint32_t seed, Spheres& s) {
     const Real half = 10 * std::cbrt(Real(n) / 5000);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<Real> pos(-half, half), rad(0.25, 0.6);
-    s = {};
+    Spheres raw;
     for (size_t i = 0; i < n; ++i) {
-        s.x.push_back(pos(rng));
-        s.y.push_back(pos(rng));
-        s.z.push_back(pos(rng));
-        s.r.push_back(rad(rng));
+        SphereRecord r;
+        r.x = pos(rng);
+        r.y = pos(rng);
+        r.z = pos(rng);
+        r.r = rad(rng);
+        raw.records.push_back(r);
     }
+    // Numbered along a Morton curve, as trace/ numbers a scene's spheres.
+    std::vector<Bounds3> b;
+    for (size_t i = 0; i < n; ++i) b.push_back(raw.bounds(i));
+    s = {};
+    for (uint32_t i : octree::morton_order(b)) s.records.push_back(raw.records[i]);
     return half;
 }
 
@@ -63,10 +77,10 @@ inline std::vector<Ray> make_rays(size_t count, Real half, uint32_t seed) {
 
 /// Nearest sphere intersection beyond 1e-6 (unit direction assumed).
 inline bool hit_sphere(const Spheres& s, uint32_t i, const Ray& ray, Real& t_max) {
-    const Real ox = s.x[i] - ray.origin.x, oy = s.y[i] - ray.origin.y,
-               oz = s.z[i] - ray.origin.z;
+    const Real ox = s[i].x - ray.origin.x, oy = s[i].y - ray.origin.y,
+               oz = s[i].z - ray.origin.z;
     const Real b = ox * ray.direction.x + oy * ray.direction.y + oz * ray.direction.z;
-    const Real disc = b * b - (ox * ox + oy * oy + oz * oz) + s.r[i] * s.r[i];
+    const Real disc = b * b - (ox * ox + oy * oy + oz * oz) + s[i].r * s[i].r;
     if (disc < 0) return false;
     const Real root = std::sqrt(disc);
     Real t = b - root;

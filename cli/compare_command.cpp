@@ -17,11 +17,11 @@
 #include <thread>
 
 #include "cli/options.h"
+#include "cli/process.h"
 #include "output/diff.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
 
-extern char** environ;
 
 namespace povwall::cli {
 
@@ -32,26 +32,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-// Runs a command (no shell), stderr to `log`; returns its exit status, -1 if it cannot
-// run.
-int run_process(const std::vector<std::string>& args, const std::string& log) {
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                     0644);
-    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-    pid_t pid;
-    int rc = posix_spawnp(&pid, argv[0], &fa, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&fa);
-    if (rc != 0) return -1;
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-}
 
 uint64_t fnv1a(uint64_t h, std::string_view bytes) {
     for (unsigned char c : bytes) {

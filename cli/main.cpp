@@ -1,11 +1,16 @@
 // The povwall command: subcommands render, diff, compare, and POV-Ray's own +X switches.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "cli/options.h"
+#include "output/image_io.h"
 
 namespace povwall::cli {
 namespace {
@@ -21,7 +26,12 @@ const char* kUsage =
     "                      [--warn T] [--warnpercent P] [--max-rmse R]\n"
     "       povwall compare SCENE.pov [-W N] [-H N] [--json] [--keep DIR] [--threads N]\n"
     "                      [-L DIR]... [+POV-Ray switches]\n"
-    "       povwall parse SCENE.pov [-L DIR]... [--json]   (exit 0 ok, 3 unsupported, 2 error)\n";
+    "       povwall parse SCENE.pov [-L DIR]... [--json]   (exit 0 ok, 3 unsupported, 2 "
+    "error)\n"
+    "       povwall worker --listen HOST:PORT --token T [--threads N]\n"
+    "       povwall check-numerics SCENE.pov [-W N] [-H N] [-L DIR]... [--povray] "
+    "[--json]\n"
+    "       povwall batch JOBS... [--resume]   (scenes, .ini files, job files)\n";
 
 int render_main(const std::vector<std::string>& args) {
     RenderOptions o;
@@ -37,8 +47,26 @@ int render_main(const std::vector<std::string>& args) {
     app.add_option("--stats", o.stats_file, "write render statistics as JSON");
     app.add_flag("-q,--quiet", o.quiet, "no timing summary, no #debug output");
     app.add_option("--boxes", o.boxes,
-                   "black boxes: NxNxN equal slabs, N (balanced, N x N x N) or auto")
+                   "black boxes: NxNxN equal slabs, N (balanced, N x N x N) or auto");
+    app.add_option("--mode", o.mode,
+                   "auto: screen subdivision when the scene fits --worker-memory, else "
+                   "space subdivision; single; screen; space")
+        ->check(CLI::IsMember({"auto", "single", "screen", "space"}))
         ->capture_default_str();
+    app.add_option(
+        "--worker-memory", o.worker_memory,
+        "memory a worker may hold (512M, 2G; default: half of this machine's)");
+    app.add_option("--plan", o.plan,
+                   "auto: leave out what the scene does not need; all: leave nothing out")
+        ->check(CLI::IsMember({"auto", "all"}))
+        ->capture_default_str();
+    app.add_flag("--explain", o.explain, "print the render plan before rendering");
+    app.add_option("--procs", o.procs,
+                   "worker processes: screen tiles, or with --boxes black boxes over TCP "
+                   "(loopback)");
+    app.add_flag("--tile-worker", o.tile_worker,
+                 "internal: serve screen tiles on stdin/stdout")
+        ->group("");
     app.add_option("--results", o.results,
                    "how boxes return colours: forward contributions, parents, or auto")
         ->check(CLI::IsMember({"auto", "forward", "parents"}))
@@ -46,6 +74,9 @@ int render_main(const std::vector<std::string>& args) {
     app.add_option("--queue", o.queue, "box work order: priority or fifo")
         ->check(CLI::IsMember({"priority", "fifo"}))
         ->capture_default_str();
+    app.add_option("--workers", o.workers, "black boxes in running workers, host:port,...")
+        ->delimiter(',');
+    app.add_option("--token", o.token, "job token of the running --workers");
     std::vector<std::string> pov, rest{"povwall render"};
     for (const auto& a : args) {
         if (looks_like_pov_switch(a) || looks_like_ini_file(a))
@@ -75,8 +106,23 @@ int render_main(const std::vector<std::string>& args) {
 }  // namespace
 }  // namespace povwall::cli
 
+// SIGINT/SIGTERM: nothing half-written stays behind (outputs go through a temporary name
+// and a rename), and the user is told so. Only async-signal-safe calls here.
+extern "C" void on_interrupt(int sig) {
+    const bool removed = povwall::output::remove_partial_output();
+    const char* msg =
+        removed ? "\npovwall: interrupted: the partly written image was removed; "
+                  "no image written\n"
+                : "\npovwall: interrupted: no image written\n";
+    ssize_t written = write(2, msg, std::strlen(msg));
+    (void)written;
+    _exit(128 + sig);
+}
+
 int main(int argc, char** argv) {
     using namespace povwall::cli;
+    std::signal(SIGINT, on_interrupt);
+    std::signal(SIGTERM, on_interrupt);
     std::vector<std::string> args(argv + 1, argv + argc);
     try {
         if (args.empty()) {
@@ -88,6 +134,9 @@ int main(int argc, char** argv) {
         if (cmd == "diff") return run_diff(argc - 1, argv + 1);
         if (cmd == "compare") return run_compare(argc - 1, argv + 1);
         if (cmd == "parse") return run_parse(argc - 1, argv + 1);
+        if (cmd == "worker") return run_worker_command(argc - 1, argv + 1);
+        if (cmd == "check-numerics") return run_check_numerics(argc - 1, argv + 1);
+        if (cmd == "batch") return run_batch(argc - 1, argv + 1);
         if (cmd == "-h" || cmd == "--help" || cmd == "help") {
             std::fputs(kUsage, stdout);
             return 0;

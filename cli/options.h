@@ -1,7 +1,9 @@
 // Command-line settings shared by the subcommands, and POV-Ray's +X switches.
 #pragma once
 
+#include <istream>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,12 +28,37 @@ struct RenderOptions {
         bool fraction = false;
     } start_row, end_row, start_col, end_col;
     std::map<std::string, double> declares;
+    // POV-Ray's animation options (+KFI +KFF +KI +KF +KC +SF +EF, Initial_Frame=...) and the
+    // clock of a still image (+K).
+    struct Animation {
+        int initial_frame = 1, final_frame = 1;
+        double initial_clock = 0.0, final_clock = 1.0;
+        bool cyclic = false;
+        int subset_start = 0, subset_end = 0;  // 0: from the first / to the last frame
+        double clock = 0.0;                    // still image
+    } animation;
+    bool continue_trace = false;  // +C: frames whose image exists are kept, not rendered
+    struct FrameValues {
+        int number = 0;
+        double clock = 0.0, clock_delta = 0.0;
+    };
+    std::optional<FrameValues> frame;  // set while one frame of an animation renders
     bool quiet = false;
     std::string stats_file;
-    // Space subdivision (virtual walls): "1x1x1" renders in one process without boxes.
-    std::string boxes = "1x1x1";
-    std::string results = "auto";  // forward | parents | auto
+    // Space subdivision (virtual walls): empty lets --mode decide; "1x1x1" is one box.
+    std::string boxes;
+    std::string mode = "auto";  // auto | single | screen | space
+    int procs = 0;  // worker processes: screen tiles, or boxes over TCP (0: as many as cores)
+    bool tile_worker = false;   // internal: serve screen tiles on stdin/stdout
+    std::string
+        worker_memory;  // "2G": the budget auto mode fits each worker's scene into
+    std::string plan = "auto";       // auto | all (leave nothing out)
+    bool explain = false;            // print the render plan before rendering
+    std::string results = "auto";    // forward | parents | auto
     std::string queue = "priority";  // priority | fifo
+    // Black boxes in running workers over TCP (--procs starts local ones).
+    std::vector<std::string> workers;  // "host:port"
+    std::string token;                 // job token the workers were started with
 };
 
 // Applies one POV-Ray switch (+W320, -A, +Ldir, Declare=X=1, ...) to `o`.
@@ -44,8 +71,20 @@ bool looks_like_pov_switch(const std::string& arg);
 // POV-Ray .ini option files (Input_File_Name=..., Width=..., Antialias=on, ...).
 bool looks_like_ini_file(const std::string& arg);
 void apply_ini_file(const std::string& path, RenderOptions& o);
+// Same, from a stream; `path` names it in messages ("file:line: ...").
+void apply_ini_stream(std::istream& in, const std::string& path, RenderOptions& o);
 
 std::string default_output_name(const RenderOptions& o);
+
+// One frame of an animation: its number, clock and output name (POV-Ray's numbering: the
+// frame number zero-padded to the width of the final frame's, before the extension).
+struct Frame {
+    int number = 0;
+    double clock = 0.0, clock_delta = 0.0;
+    std::string output;
+};
+// The frames to render (subset applied); empty when `o` is a still image.
+std::vector<Frame> animation_frames(const RenderOptions& o);
 // The file extension of the +F format (".png", ".tga", ".ppm", ".exr").
 std::string format_extension(char format);
 
@@ -56,6 +95,9 @@ int run_render(RenderOptions o);
 int run_diff(int argc, char** argv);
 int run_compare(int argc, char** argv);
 int run_parse(int argc, char** argv);
+int run_worker_command(int argc, char** argv);
+int run_check_numerics(int argc, char** argv);
+int run_batch(int argc, char** argv);
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/options.h"
+#include "output/image_io.h"
 #include "parser/parser.h"
 
 namespace povwall::cli {
@@ -49,6 +50,7 @@ int run_parse(int argc, char** argv) {
     }
     parser::ParseOptions popts;
     popts.library_paths = library_paths;
+    popts.image_reader = output::read_stored_image;
     nlohmann::json j;
     j["scene"] = scene;
     auto t0 = std::chrono::steady_clock::now();

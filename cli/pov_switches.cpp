@@ -1,4 +1,5 @@
 // POV-Ray's command-line switches: `+` turns an option on (or sets a value), `-` off.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -87,6 +88,20 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
         o.render.alpha = on;
     } else if (starts_with_ci(arg, 1, "AM")) {
         o.render.aa_method = int(number(arg, arg.substr(3)));
+    } else if (starts_with_ci(arg, 1, "KFI")) {
+        o.animation.initial_frame = int(number(arg, arg.substr(4)));
+    } else if (starts_with_ci(arg, 1, "KFF")) {
+        o.animation.final_frame = int(number(arg, arg.substr(4)));
+    } else if (starts_with_ci(arg, 1, "KI")) {
+        o.animation.initial_clock = number(arg, arg.substr(3));
+    } else if (starts_with_ci(arg, 1, "KF")) {
+        o.animation.final_clock = number(arg, arg.substr(3));
+    } else if (starts_with_ci(arg, 1, "KC")) {
+        o.animation.cyclic = on;
+    } else if (starts_with_ci(arg, 1, "SF")) {
+        o.animation.subset_start = int(number(arg, arg.substr(3)));
+    } else if (starts_with_ci(arg, 1, "EF")) {
+        o.animation.subset_end = int(number(arg, arg.substr(3)));
     } else if (starts_with_ci(arg, 1, "SR")) {
         o.start_row = partial(arg);
     } else if (starts_with_ci(arg, 1, "ER")) {
@@ -130,9 +145,10 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
             case 'F':
                 if (!v2.empty()) {
                     o.format = char(std::toupper((unsigned char)v2[0]));
-                    if (std::string("NTCPE").find(o.format) == std::string::npos) {
-                        throw UsageError("unsupported output format in '" + arg +
-                                         "' (povwall writes +FN, +FT, +FC, +FP, +FE)");
+                    if (std::string("NTCPEH").find(o.format) == std::string::npos) {
+                        throw UsageError(
+                            "unsupported output format in '" + arg +
+                            "' (povwall writes +FN, +FT, +FC, +FP, +FE, +FH)");
                     }
                     o.format_given = true;
                     if (v2.size() > 1) o.bits = int(number(arg, v2.substr(1)));
@@ -145,7 +161,11 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
             case 'Q':
             case 'B':
             case 'C':
+                o.continue_trace = on;
+                break;
             case 'K':
+                if (!v2.empty()) o.animation.clock = number(arg, v2);
+                break;
             case 'M':
                 break;  // display, verbosity, pause, quality, buffers: no effect on the
                         // image
@@ -160,12 +180,42 @@ std::string format_extension(char format) {
     return format == 'T' || format == 'C' ? ".tga"
            : format == 'P'                ? ".ppm"
            : format == 'E'                ? ".exr"
+           : format == 'H'                ? ".hdr"
                                           : ".png";
 }
 
 std::string default_output_name(const RenderOptions& o) {
     std::filesystem::path p(o.scene);
     return p.filename().replace_extension(format_extension(o.format)).string();
+}
+
+std::vector<Frame> animation_frames(const RenderOptions& o) {
+    const RenderOptions::Animation& a = o.animation;
+    if (a.final_frame <= a.initial_frame) return {};
+    // POV-Ray: frames initial..final share the clock range evenly; a cyclic animation
+    // leaves the last step for the wrap to the first frame.
+    const int steps = a.final_frame - a.initial_frame + (a.cyclic ? 1 : 0);
+    const double delta = (a.final_clock - a.initial_clock) / steps;
+    const int digits = int(std::to_string(a.final_frame).size());
+    std::filesystem::path out(o.output.empty() ? default_output_name(o) : o.output);
+    const std::string ext = out.extension().empty() ? format_extension(o.format)
+                                                    : out.extension().string();
+    const std::filesystem::path stem = out.parent_path() / out.stem();
+    const int first = a.subset_start > 0 ? std::max(a.subset_start, a.initial_frame)
+                                         : a.initial_frame;
+    const int last = a.subset_end > 0 ? std::min(a.subset_end, a.final_frame) : a.final_frame;
+    std::vector<Frame> frames;
+    for (int n = first; n <= last; ++n) {
+        Frame f;
+        f.number = n;
+        f.clock = a.initial_clock + delta * (n - a.initial_frame);
+        f.clock_delta = delta;
+        std::string num = std::to_string(n);
+        if (int(num.size()) < digits) num.insert(0, size_t(digits) - num.size(), '0');
+        f.output = stem.string() + num + ext;
+        frames.push_back(f);
+    }
+    return frames;
 }
 
 }  // namespace povwall::cli

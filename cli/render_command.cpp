@@ -1,16 +1,23 @@
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
-#include <thread>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "cli/options.h"
+#include "distrib/distribution_plan.h"
+#include "distrib/screen_render.h"
 #include "distrib/space_render.h"
+#include "distrib/tcp.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
+#include "trace/render_plan.h"
 
 namespace povwall::cli {
 
@@ -25,34 +32,81 @@ OutputEncoding encoding_for(const Scene& scene, const RenderOptions& o) {
     return enc;
 }
 
-// "4x4x4": equal slabs; "8": walls balanced on object positions, 8x8x8 (no: N per axis);
-// "auto": balanced, about 4 boxes per core. Returns false for one box (no subdivision).
-bool parse_boxes(const std::string& spec, distrib::SpaceOptions& space) {
-    if (spec == "auto") {
-        int n = int(std::max(1u, std::thread::hardware_concurrency()));
-        int per_axis = n >= 4 ? 3 : 2;
-        space.boxes = {per_axis, per_axis, per_axis};
-        space.balanced = true;
-        return true;
+// A screen-subdivision worker: this binary, the same scene and settings, one thread,
+// serving tiles on stdin/stdout.
+std::vector<std::string> tile_worker_command(const RenderOptions& o) {
+    char exe[4096];
+    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n <= 0) throw UsageError("cannot find the povwall binary for worker processes");
+    exe[n] = 0;
+    std::vector<std::string> cmd = {exe,
+                                    "render",
+                                    o.scene,
+                                    "-W",
+                                    std::to_string(o.width),
+                                    "-H",
+                                    std::to_string(o.height),
+                                    "--threads",
+                                    "1",
+                                    "--plan",
+                                    o.plan,
+                                    "--tile-worker",
+                                    "-q"};
+    for (const auto& dir : o.library_paths) {
+        cmd.push_back("-L");
+        cmd.push_back(dir);
     }
-    int a = 0, b = 0, c = 0;
-    if (std::sscanf(spec.c_str(), "%dx%dx%d", &a, &b, &c) == 3 && a > 0 && b > 0 && c > 0) {
-        space.boxes = {a, b, c};
-        return a * b * c > 1;
+    for (const auto& [name, value] : o.declares) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.17g", value);
+        cmd.push_back("Declare=" + name + "=" + buf);
     }
-    char extra;
-    if (std::sscanf(spec.c_str(), "%d%c", &a, &extra) == 1 && a > 0) {
-        space.boxes = {a, a, a};
-        space.balanced = true;
-        return a > 1;
+    if (o.render.alpha) cmd.push_back("+UA");
+    return cmd;
+}
+
+// An animation: each frame is a still with its own clock, written to a numbered file. With
+// +C (Continue_Trace) a frame whose image exists is kept: images are only ever renamed into
+// place once complete, so an existing one is whole, and an interrupted batch resumes.
+int run_animation(const RenderOptions& base, const std::vector<Frame>& frames) {
+    int rendered = 0, kept = 0;
+    for (const Frame& f : frames) {
+        if (base.continue_trace && std::filesystem::exists(f.output)) {
+            ++kept;
+            if (!base.quiet)
+                std::fprintf(stderr, "povwall: frame %d: %s exists, kept (+C)\n", f.number,
+                             f.output.c_str());
+            continue;
+        }
+        RenderOptions o = base;
+        o.output = f.output;
+        o.frame = RenderOptions::FrameValues{f.number, f.clock, f.clock_delta};
+        if (int rc = run_render(o); rc != 0) return rc;  // POV-Ray stops at a failing frame
+        ++rendered;
     }
-    throw UsageError("bad --boxes value '" + spec + "' (expected NxNxN, N or auto)");
+    if (!base.quiet) {
+        std::fprintf(stderr, "povwall: frames %d..%d: %d rendered, %d kept\n",
+                     frames.front().number, frames.back().number, rendered, kept);
+    }
+    return 0;
 }
 
 int run_render(RenderOptions o) {
     if (o.scene.empty())
         throw UsageError("no scene file given (+ISCENE.pov or render SCENE.pov)");
     if (o.width <= 0 || o.height <= 0) throw UsageError("image size must be positive");
+    if (!o.frame) {
+        const std::vector<Frame> frames = animation_frames(o);
+        if (!frames.empty()) return run_animation(o, frames);
+    }
+    if (o.continue_trace && !o.frame) {
+        std::string out = o.output.empty() ? default_output_name(o) : o.output;
+        if (std::filesystem::path(out).extension().empty()) out += format_extension(o.format);
+        if (std::filesystem::exists(out)) {
+            if (!o.quiet) std::fprintf(stderr, "povwall: %s exists, kept (+C)\n", out.c_str());
+            return 0;
+        }
+    }
     if (o.output.empty()) o.output = default_output_name(o);
     // As POV-Ray does: an output name without an extension gets the format's.
     if (std::filesystem::path(o.output).extension().empty()) {
@@ -63,6 +117,14 @@ int run_render(RenderOptions o) {
     popts.image_width = o.width;
     popts.image_height = o.height;
     popts.declares = o.declares;
+    popts.image_reader = output::read_stored_image;
+    popts.initial_frame = o.animation.initial_frame;
+    popts.final_frame = o.frame ? o.animation.final_frame : o.animation.initial_frame;
+    popts.initial_clock = o.animation.initial_clock;
+    popts.final_clock = o.animation.final_clock;
+    popts.clock = o.frame ? o.frame->clock : o.animation.clock;
+    popts.clock_delta = o.frame ? o.frame->clock_delta : 0.0;
+    popts.frame_number = o.frame ? o.frame->number : 0;
     popts.messages = o.quiet ? nullptr : &std::cerr;
     auto t0 = Clock::now();
     Scene scene;
@@ -76,18 +138,84 @@ int run_render(RenderOptions o) {
     resolve_partial_render(o);
     o.render.width = o.width;
     o.render.height = o.height;
+    o.render.plan_everything_on = o.plan == "all";
+    if (o.tile_worker) {
+        // POVWALL_FAULT_WORKER_EXIT_AFTER=N: the worker dies after N tiles (for the
+        // tests).
+        const char* fault = std::getenv("POVWALL_FAULT_WORKER_EXIT_AFTER");
+        return distrib::serve_tiles(scene, o.render, 0, 1, fault ? std::atoi(fault) : -1);
+    }
+    distrib::DistributionRequest request;
+    request.mode = o.mode == "single"   ? distrib::RenderMode::Single
+                   : o.mode == "space"  ? distrib::RenderMode::Space
+                   : o.mode == "screen" ? distrib::RenderMode::Screen
+                                        : distrib::RenderMode::Auto;
+    request.boxes = o.boxes;
+    request.threads = o.render.threads;
+    request.procs = o.procs;
+    // Running workers host black boxes: --workers means space subdivision.
+    if (!o.workers.empty() && request.mode == distrib::RenderMode::Auto)
+        request.mode = distrib::RenderMode::Space;
+    if (!o.workers.empty() && request.mode != distrib::RenderMode::Space)
+        throw UsageError("--workers hosts black boxes: it needs --mode space (or auto)");
+    if (!o.workers.empty() && o.procs > 0)
+        throw UsageError("--procs and --workers exclude each other");
+    distrib::DistributionPlan dplan;
+    try {
+        if (!o.worker_memory.empty())
+            request.worker_memory = distrib::parse_memory_size(o.worker_memory);
+        dplan = distrib::plan_distribution(scene, request);
+    } catch (const distrib::DistributionError& e) {
+        throw UsageError(e.what());
+    }
+    if (o.explain) {
+        const trace::RenderPlan plan =
+            trace::make_render_plan(scene, o.render.plan_everything_on);
+        std::printf("render plan for %s:\n", o.scene.c_str());
+        for (const auto& line : trace::explain_plan(plan, scene))
+            std::printf("  %s\n", line.c_str());
+        for (const auto& line : dplan.reasons) std::printf("  %s\n", line.c_str());
+        std::fflush(stdout);
+    }
     trace::RenderStats stats;
-    distrib::SpaceOptions space;
-    bool use_boxes = parse_boxes(o.boxes, space);
+    distrib::SpaceOptions space = dplan.space;
+    const bool use_boxes = dplan.mode == distrib::RenderMode::Space;
     distrib::SpaceStats space_stats;
     Image image;
     if (use_boxes) {
-        if (o.render.antialias) throw UsageError("anti-aliasing is not available with --boxes yet");
+        if (o.render.antialias)
+            throw UsageError("anti-aliasing is not available with --boxes yet");
         space.results = o.results == "forward"   ? distrib::SpaceOptions::Results::Forward
                         : o.results == "parents" ? distrib::SpaceOptions::Results::Parents
                                                  : distrib::SpaceOptions::Results::Auto;
-        space.queue = o.queue == "fifo" ? distrib::QueuePolicy::Fifo : distrib::QueuePolicy::Priority;
-        image = distrib::render_space(scene, o.render, space, &space_stats);
+        space.queue = o.queue == "fifo" ? distrib::QueuePolicy::Fifo
+                                        : distrib::QueuePolicy::Priority;
+        if (o.procs > 0 || !o.workers.empty()) {
+            distrib::SceneSource source;
+            std::ifstream in(o.scene, std::ios::binary);
+            source.text.assign(std::istreambuf_iterator<char>(in), {});
+            source.display_name = o.scene;
+            source.library_paths = o.library_paths;
+            source.declares = o.declares;
+            source.clock = popts.clock, source.clock_delta = popts.clock_delta;
+            source.initial_clock = popts.initial_clock, source.final_clock = popts.final_clock;
+            source.frame_number = popts.frame_number;
+            source.initial_frame = popts.initial_frame, source.final_frame = popts.final_frame;
+            distrib::TcpOptions tcp;
+            tcp.procs = o.workers.empty() ? o.procs : 0;
+            tcp.workers = o.workers;
+            tcp.token = o.token;
+            tcp.worker_binary = std::filesystem::read_symlink("/proc/self/exe").string();
+            try {
+                image = distrib::render_tcp(scene, source, o.render, space, tcp,
+                                            &space_stats);
+            } catch (const distrib::DistribError& e) {
+                std::cerr << "povwall: error: " << e.what() << " (no image written)\n";
+                return 3;
+            }
+        } else {
+            image = distrib::render_space(scene, o.render, space, &space_stats);
+        }
         stats.trace_seconds = space_stats.seconds;
         for (const auto& b : space_stats.boxes) {
             stats.camera_rays += b.camera;
@@ -95,6 +223,24 @@ int run_render(RenderOptions o) {
             stats.refracted_rays += b.refracted;
             stats.shadow_rays += b.shadow;
         }
+    } else if (dplan.mode == distrib::RenderMode::Screen) {
+        if (o.render.antialias)
+            throw UsageError("anti-aliasing is not available with --mode screen yet");
+        distrib::ScreenOptions screen;
+        screen.workers = dplan.procs;
+        screen.worker_command = tile_worker_command(o);
+        distrib::ScreenStats screen_stats;
+        try {
+            image = distrib::render_screen(o.render, screen, &screen_stats);
+        } catch (const distrib::ScreenError& e) {
+            std::cerr << "povwall: error: " << e.what() << " (no image written)\n";
+            return 2;
+        }
+        stats.trace_seconds = screen_stats.seconds;
+        stats.camera_rays = screen_stats.camera;
+        stats.reflected_rays = screen_stats.reflected;
+        stats.refracted_rays = screen_stats.refracted;
+        stats.shadow_rays = screen_stats.shadow;
     } else {
         image = trace::render_scene(scene, o.render, &stats);
     }
@@ -131,23 +277,54 @@ int run_render(RenderOptions o) {
                      {"refracted", stats.refracted_rays},
                      {"shadow", stats.shadow_rays}};
         j["intersection_tests"] = stats.intersection_tests;
+        // What the plan left out, with the counters that show it cost nothing.
+        const trace::RenderPlan plan =
+            trace::make_render_plan(scene, o.render.plan_everything_on);
+        nlohmann::json lights = nlohmann::json::array();
+        for (const auto& l : plan.lights)
+            lights.push_back({{"shadow_rays", l.shadow_rays}, {"why", l.reason}});
+        j["plan"] = {{"mode", use_boxes                                   ? "space"
+                              : dplan.mode == distrib::RenderMode::Screen ? "screen"
+                                                                          : "single"},
+                     {"forced_on", plan.everything_on},
+                     {"reflection_rays", plan.reflection_rays},
+                     {"transmission_rays", plan.transmission_rays},
+                     {"refraction_rays", plan.refraction_rays},
+                     {"lights", lights},
+                     {"parent_tracking", use_boxes && space_stats.parent_tracking},
+                     {"scene_bytes_estimate", dplan.scene_bytes},
+                     {"worker_memory", dplan.worker_memory}};
+        if (!use_boxes) {
+            j["plan"]["octree"] = stats.octree_flat ? "flat list" : "octree";
+            j["plan"]["octree_nodes"] = stats.octree_nodes;
+            j["plan"]["resident_bytes"] = stats.resident_bytes;
+        }
         if (use_boxes) {
             j["results"] = space_stats.parent_tracking ? "parents" : "forward";
             nlohmann::json boxes = nlohmann::json::array();
             for (const auto& b : space_stats.boxes) {
-                auto lim = [](double v) { return std::isinf(v) ? nlohmann::json(nullptr) : nlohmann::json(v); };
-                boxes.push_back({{"region", {{"lo", {lim(b.region.lo.x), lim(b.region.lo.y), lim(b.region.lo.z)}},
-                                             {"hi", {lim(b.region.hi.x), lim(b.region.hi.y), lim(b.region.hi.z)}}}},
-                                 {"objects", b.objects},
-                                 {"resident_bytes", b.resident_bytes},
-                                 {"rays", {{"camera", b.camera}, {"reflected", b.reflected},
-                                           {"refracted", b.refracted}, {"shadow", b.shadow}}},
-                                 {"rays_received", b.rays_received},
-                                 {"results_received", b.results_received},
-                                 {"messages_sent", b.messages_sent},
-                                 {"peak_queue", b.peak_queue},
-                                 {"peak_waiting_parents", b.peak_parents},
-                                 {"busy_seconds", b.busy_seconds}});
+                auto lim = [](double v) {
+                    return std::isinf(v) ? nlohmann::json(nullptr) : nlohmann::json(v);
+                };
+                boxes.push_back(
+                    {{"region",
+                      {{"lo",
+                        {lim(b.region.lo.x), lim(b.region.lo.y), lim(b.region.lo.z)}},
+                       {"hi",
+                        {lim(b.region.hi.x), lim(b.region.hi.y), lim(b.region.hi.z)}}}},
+                     {"objects", b.objects},
+                     {"resident_bytes", b.resident_bytes},
+                     {"rays",
+                      {{"camera", b.camera},
+                       {"reflected", b.reflected},
+                       {"refracted", b.refracted},
+                       {"shadow", b.shadow}}},
+                     {"rays_received", b.rays_received},
+                     {"results_received", b.results_received},
+                     {"messages_sent", b.messages_sent},
+                     {"peak_queue", b.peak_queue},
+                     {"peak_waiting_parents", b.peak_parents},
+                     {"busy_seconds", b.busy_seconds}});
             }
             j["boxes"] = boxes;
         } else {

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "core/colour.h"
@@ -28,5 +30,20 @@ struct OutputEncoding {
     int bits = 8;                // 8 or 16 per channel
     bool alpha = false;          // +UA: write RGBA (non-premultiplied)
 };
+
+// An image file's pixels as stored (encoded values scaled to 0..1, not decoded) and what
+// POV-Ray's input gamma rules need to know about the file.
+struct StoredImage {
+    Image pixels;  // RGBA; files without alpha have alpha 1
+    bool has_alpha = false;
+    std::string format;  // "png", "targa", "pnm", "jpeg", "gif", "bmp", "tiff", "openexr", "hdr"
+    // Encoding gamma the file declares (PNG gAMA chunk), as a decoding exponent; 0: none
+    // (PNG without gAMA: sRGB as POV-Ray assumes).
+    float declared_gamma = 0;
+};
+
+// Reads an image file; throws std::runtime_error with a message naming the problem. The
+// parser gets one from its caller so that it does not depend on the image library.
+using ImageReader = std::function<StoredImage(const std::string& path)>;
 
 }  // namespace povwall

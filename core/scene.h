@@ -1,9 +1,9 @@
 // The scene model: what the parser produces and every back end consumes.
 //
 // Plain data only. Shapes are structs in a variant; intersection lives in trace/.
-// Every transform is stored object-to-world. The parser resolves POV-Ray's inheritance rules
-// (textures pushed into CSG children, camera look_at/angle, #default), so consumers never
-// need to know the scene language.
+// Every transform is stored object-to-world. The parser resolves POV-Ray's inheritance
+// rules (textures pushed into CSG children, camera look_at/angle, #default), so consumers
+// never need to know the scene language.
 #pragma once
 
 #include <cstdint>
@@ -23,22 +23,57 @@ namespace povwall {
 
 enum class PatternKind : uint8_t {
     Solid,  // plain colour, no pattern
-    Agate, Bozo, Brick, Bumps, Checker, Crackle, Dents, Gradient, Granite, Hexagon,
-    Leopard, Mandel, Marble, Onion, Quilted, Radial, Ripples, Spiral1, Spiral2, Spotted,
-    Waves, Wood, Wrinkles, Boxed, Cylindrical, Spherical, Planar, Average, ImageMap, Cells,
+    Agate,
+    Bozo,
+    Brick,
+    Bumps,
+    Checker,
+    Crackle,
+    Dents,
+    Gradient,
+    Granite,
+    Hexagon,
+    Leopard,
+    Mandel,
+    Marble,
+    Onion,
+    Quilted,
+    Radial,
+    Ripples,
+    Spiral1,
+    Spiral2,
+    Spotted,
+    Waves,
+    Wood,
+    Wrinkles,
+    Boxed,
+    Cylindrical,
+    Spherical,
+    Planar,
+    Average,
+    ImageMap,
+    Cells,
 };
 
 enum class WaveType : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
 
 struct Warp {
-    enum class Kind : uint8_t { Turbulence, Repeat, BlackHole, Cylindrical, Spherical, Toroidal,
-                                Planar } kind = Kind::Turbulence;
+    enum class Kind : uint8_t {
+        Turbulence,
+        Repeat,
+        BlackHole,
+        Cylindrical,
+        Spherical,
+        Toroidal,
+        Planar
+    } kind = Kind::Turbulence;
     Vector3 turbulence{0, 0, 0};
     int octaves = 6;
     Real omega = 0.5, lambda = 2.0;
     Vector3 repeat{0, 0, 0}, offset{0, 0, 0}, flip{0, 0, 0};  // repeat warp
-    // Turbulence only: true for the pattern's classic `turbulence` keyword (POV-Ray applies
-    // it last and marble/wood/spiral/agate read it), false for `warp { turbulence }`.
+    // Turbulence only: true for the pattern's classic `turbulence` keyword (POV-Ray
+    // applies it last and marble/wood/spiral/agate read it), false for `warp { turbulence
+    // }`.
     bool classic = true;
     // black_hole: centre, radius, strength, falloff, inverse; its `repeat` vector and its
     // `turbulence` (the position uncertainty) use the fields above.
@@ -52,19 +87,48 @@ struct Warp {
     Transform transform;  // transforms applied after this warp (pattern space)
 };
 
+// The pixels of an image_map / bump_map file after POV-Ray's gamma decoding:
+// working-space colour plus filter and transmit (transmit from the file's alpha), top row
+// first.
+struct ImagePixels {
+    int width = 0, height = 0;
+    std::vector<float> rgbft;  // 5 floats per pixel
+    const float* at(int x, int y) const {
+        return &rgbft[(size_t(y) * size_t(width) + size_t(x)) * 5];
+    }
+};
+
+// image_map { } / bump_map { }: the file and how it is laid onto pattern space.
+struct ImageMapping {
+    std::string path;  // as resolved by the include search rules
+    // Null when the scene was parsed without an image reader
+    // (ParseOptions::image_reader).
+    std::shared_ptr<const ImagePixels> pixels;
+    int map_type = 0;     // 0 planar, 1 spherical, 2 cylindrical, 5 torus
+    int interpolate = 0;  // 0 none, 2 bilinear, 3 bicubic, 4 normalised distance
+    bool once = false;
+    bool use_index = false;  // bump_map: same as use_color for non-indexed images
+    float all_filter = 0, all_transmit = 0;
+    Real width = 0, height = 0;  // image size in pixels times the `repeat` vector
+    Real offset_u = 0,
+         offset_v = 0;  // `offset` in pixels (negated, as POV-Ray stores it)
+};
+
 // Everything that turns a point into a pattern value in [0,1].
 struct PatternSpec {
     PatternKind kind = PatternKind::Solid;
-    Vector3 vector{0, 0, 0};  // gradient direction; brick size; mortar in scalar below
-    Real scalar = 0;          // agate_turb, mortar, spiral arms, mandel iterations, ...
-    Vector3 vector2{0, 0, 0}; // secondary parameter (brick: mortar as vector unused)
+    Vector3 vector{0, 0, 0};   // gradient direction; brick size; mortar in scalar below
+    Real scalar = 0;           // agate_turb, mortar, spiral arms, mandel iterations, ...
+    Vector3 vector2{0, 0, 0};  // secondary parameter (brick: mortar as vector unused)
     Real frequency = 1, phase = 0;
     WaveType wave = WaveType::Ramp;
     Real wave_exponent = 1;
     int noise_generator = 0;  // 0: inherit global setting
-    // Classic turbulence keyword applied before the pattern (ordered after warps as POV-Ray does).
+    // Classic turbulence keyword applied before the pattern (ordered after warps as
+    // POV-Ray does).
     std::vector<Warp> warps;
     Transform transform;  // pattern space -> world (inverse applied to hit points)
+    std::shared_ptr<const ImageMapping> image;  // PatternKind::ImageMap only
 };
 
 struct ColourMapEntry {
@@ -75,11 +139,17 @@ using ColourMap = std::vector<ColourMapEntry>;
 
 struct Pigment {
     PatternSpec pattern;
-    Colour colour;                 // Solid pigments; also the colour a scene gets by default
-    ColourMap colour_map;          // pattern pigments
-    std::vector<float> map_values; // pigment_map values, parallel to `list`
-    std::vector<Pigment> list;     // checker/hexagon/brick entries, or pigment_map entries
+    Colour colour;         // Solid pigments; also the colour a scene gets by default
+    ColourMap colour_map;  // pattern pigments
+    std::vector<float> map_values;  // pigment_map values, parallel to `list`
+    std::vector<Pigment> list;  // checker/hexagon/brick entries, or pigment_map entries
     std::optional<Colour> quick_colour;
+};
+
+// slope_map entry: at pattern value `value`, the surface height and its slope.
+struct SlopeMapEntry {
+    float value;
+    Real height, slope;
 };
 
 struct Normal {
@@ -87,6 +157,7 @@ struct Normal {
     Real amount = 0.5;  // bump_size
     std::vector<float> map_values;
     std::vector<Normal> list;  // normal_map entries
+    std::vector<SlopeMapEntry> slope_map;
     Real accuracy = 0.02;
 };
 
@@ -98,7 +169,8 @@ struct Finish {
     float specular = 0.0f, roughness = 0.05f;
     float metallic = 0.0f;
     Rgb reflection_min{0.0f}, reflection_max{0.0f};
-    float reflection_falloff = 1.0f, reflection_exponent = 1.0f, reflection_metallic = 0.0f;
+    float reflection_falloff = 1.0f, reflection_exponent = 1.0f,
+          reflection_metallic = 0.0f;
     bool reflection_fresnel = false;
     bool conserve_energy = false;
     float irid = 0.0f, irid_thickness = 0.0f, irid_turbulence = 0.0f;
@@ -127,21 +199,55 @@ struct Interior {
 
 // ---------------------------------------------------------------- shapes (object space)
 
-struct Sphere { Point3 centre; Real radius = 1; };
-struct Box { Point3 corner1, corner2; };
-struct Plane { Vector3 normal{0, 1, 0}; Real distance = 0; };  // dot(n, p) = distance
-struct Cylinder { Point3 base, cap; Real radius = 1; bool open = false; };
-struct Cone { Point3 base, cap; Real base_radius = 1, cap_radius = 0; bool open = false; };
-struct Torus { Real major = 1, minor = 0.25; bool sturm = false; };
-struct Disc { Point3 centre; Vector3 normal{0, 1, 0}; Real radius = 1, hole_radius = 0; };
-struct Triangle { Point3 p[3]; };
-struct SmoothTriangle { Point3 p[3]; Vector3 n[3]; };
-struct Polygon { std::vector<Point3> points; };  // parser stores the plane-projected loop
+struct Sphere {
+    Point3 centre;
+    Real radius = 1;
+};
+struct Box {
+    Point3 corner1, corner2;
+};
+struct Plane {
+    Vector3 normal{0, 1, 0};
+    Real distance = 0;
+};  // dot(n, p) = distance
+struct Cylinder {
+    Point3 base, cap;
+    Real radius = 1;
+    bool open = false;
+};
+struct Cone {
+    Point3 base, cap;
+    Real base_radius = 1, cap_radius = 0;
+    bool open = false;
+};
+struct Torus {
+    Real major = 1, minor = 0.25;
+    bool sturm = false;
+};
+struct Disc {
+    Point3 centre;
+    Vector3 normal{0, 1, 0};
+    Real radius = 1, hole_radius = 0;
+};
+struct Triangle {
+    Point3 p[3];
+};
+struct SmoothTriangle {
+    Point3 p[3];
+    Vector3 n[3];
+};
+struct Polygon {
+    std::vector<Point3> points;
+};  // parser stores the plane-projected loop
 
 struct Mesh {
     std::vector<Point3> vertices;
     std::vector<Vector3> normals;  // empty when flat
-    struct Face { uint32_t v[3]; int32_t n[3] = {-1, -1, -1}; int32_t texture = -1; };
+    struct Face {
+        uint32_t v[3];
+        int32_t n[3] = {-1, -1, -1};
+        int32_t texture = -1;
+    };
     std::vector<Face> faces;
     std::vector<LayeredTexture> textures;  // per-face textures (mesh2 texture_list)
     Point3 inside_vector{0, 0, 0};
@@ -178,7 +284,8 @@ struct Object {
     SourceLoc loc;
 };
 
-// ---------------------------------------------------------------- lights, camera, settings
+// ---------------------------------------------------------------- lights, camera,
+// settings
 
 struct AreaLight {
     Vector3 axis1, axis2;
@@ -202,14 +309,16 @@ struct Light {
 };
 
 struct Camera {
-    enum class Kind : uint8_t { Perspective, Orthographic, Fisheye, UltraWideAngle,
-                                Omnimax, Panoramic, Spherical, Cylinder } kind = Kind::Perspective;
+    enum class Kind : uint8_t {
+        Perspective, Orthographic, Fisheye, UltraWideAngle, Panoramic,
+        Cylinder1, Cylinder2, Cylinder3, Cylinder4  // `cylinder N`
+    } kind = Kind::Perspective;
     // Final vectors after look_at, angle, sky and transforms have been applied.
     Point3 location{0, 0, 0};
     Vector3 direction{0, 0, 1};
     Vector3 right{1.33, 0, 0};
     Vector3 up{0, 1, 0};
-    Real angle = 0;  // degrees; used by non-perspective kinds
+    Real angle = 90;  // degrees; the field of view of the non-projective kinds
     Real aperture = 0, focal_distance = 0;
     int blur_samples = 0;
     SourceLoc loc;
@@ -219,7 +328,12 @@ struct Fog {
     int type = 1;  // 1 constant, 2 ground fog
     Real distance = 0;
     Colour colour;
+    // Turbulence thins the fog along each ray (POV-Ray's fog Turb): present once any of
+    // turbulence/octaves/omega/lambda is given.
+    bool turbulent = false;
     Vector3 turbulence{0, 0, 0};
+    int octaves = 6;
+    Real omega = 0.5, lambda = 2.0;
     Real turb_depth = 0.5, offset = 0, alt = 0;
     Vector3 up{0, 1, 0};
     std::vector<Warp> warps;
@@ -244,7 +358,8 @@ struct GlobalSettings {
 
 // Everything a render needs besides the output settings.
 struct Scene {
-    std::vector<std::string> files;  // SourceLoc::file indexes this
+    std::vector<std::string>
+        files;  // sources (SourceLoc::file indexes these), then image files
     Camera camera;
     std::vector<Object> objects;
     std::vector<Light> lights;
@@ -256,7 +371,9 @@ struct Scene {
     int language_version = 362;
     bool version_set = false;
     // Whether output colours are gamma-encoded (3.7 rules) or written raw (legacy).
-    bool gamma_handling() const { return assumed_gamma_given() || language_version >= 370; }
+    bool gamma_handling() const {
+        return assumed_gamma_given() || language_version >= 370;
+    }
     bool assumed_gamma_given() const { return settings.assumed_gamma.has_value(); }
 };
 

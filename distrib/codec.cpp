@@ -137,6 +137,17 @@ void encode_results(std::span<const ResultMessage> results, std::vector<uint8_t>
     encode(FrameType::Results, results, out, write_result);
 }
 
+void encode_opaque(FrameType type, uint32_t count, std::span<const uint8_t> body,
+                   std::vector<uint8_t>& out) {
+    Writer w{out};
+    w.u16(kFrameMagic);
+    w.u8(uint8_t(type));
+    w.u8(kProtocolVersion);
+    w.u32(uint32_t(body.size()));
+    w.u32(count);
+    out.insert(out.end(), body.begin(), body.end());
+}
+
 DecodeStatus decode_frame(std::span<const uint8_t> bytes, Frame& frame) {
     if (bytes.size() < kHeaderSize) return DecodeStatus::NeedMore;
     Reader rd{bytes.data()};
@@ -146,6 +157,15 @@ DecodeStatus decode_frame(std::span<const uint8_t> bytes, Frame& frame) {
     uint32_t body = rd.u32();
     uint32_t count = rd.u32();
     if (body > kMaxBodySize) return DecodeStatus::Bad;
+    if (type == uint8_t(FrameType::Pixels) || type == uint8_t(FrameType::Control) ||
+        type == uint8_t(FrameType::Items)) {
+        if (bytes.size() < kHeaderSize + body) return DecodeStatus::NeedMore;
+        frame.type = FrameType(type);
+        frame.count = count;
+        frame.body.assign(bytes.begin() + kHeaderSize, bytes.begin() + kHeaderSize + body);
+        frame.consumed = kHeaderSize + body;
+        return DecodeStatus::Complete;
+    }
     size_t record = 0;
     if (type == uint8_t(FrameType::Rays)) {
         record = encoded_ray_size();

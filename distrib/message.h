@@ -49,7 +49,9 @@ struct ResultMessage {
     Real distance = kInfinity;
 };
 
-enum class FrameType : uint8_t { Rays = 1, Results = 2, Pixels = 3, Control = 4 };
+// Rays/Results: fixed records (RayMessage, ResultMessage). Pixels, Control (JSON text) and
+// Items (black-box work items, distrib/tcp_render.cpp) carry an opaque body.
+enum class FrameType : uint8_t { Rays = 1, Results = 2, Pixels = 3, Control = 4, Items = 5 };
 constexpr uint16_t kFrameMagic = 0x5057;  // "PW"
 constexpr uint8_t kProtocolVersion = 1;
 constexpr size_t kHeaderSize = 12;
@@ -58,12 +60,17 @@ constexpr size_t kMaxBodySize = size_t(4) << 20;
 
 void encode_rays(std::span<const RayMessage> rays, std::vector<uint8_t>& out);
 void encode_results(std::span<const ResultMessage> results, std::vector<uint8_t>& out);
+// A frame with an opaque body of at most kMaxBodySize bytes.
+void encode_opaque(FrameType type, uint32_t count, std::span<const uint8_t> body,
+                   std::vector<uint8_t>& out);
 
 enum class DecodeStatus { Complete, NeedMore, Bad };
 struct Frame {
     FrameType type = FrameType::Rays;
     std::vector<RayMessage> rays;
     std::vector<ResultMessage> results;
+    uint32_t count = 0;
+    std::vector<uint8_t> body;  // Pixels, Control, Items
     size_t consumed = 0;  // bytes of input used by this frame
 };
 // Decodes one frame from the start of `bytes`.

@@ -18,6 +18,7 @@
 #include "distrib/virtual_walls.h"
 #include "distrib/work_queue.h"
 #include "trace/render.h"
+#include "trace/render_plan.h"
 
 namespace povwall::distrib {
 
@@ -45,9 +46,10 @@ struct SpaceStats {
     double seconds = 0;
 };
 
-// True when the scene's shading is linear in child colours (no reflection exponent), so
-// forward contributions give the same image as parent tracking.
-bool shading_is_linear(const Scene& scene);
+using trace::shading_is_linear;  // trace/render_plan.h
+
+// The image from per-pixel sums of r, g, b and background transmit (+UA: alpha from it).
+Image image_from_sums(const std::vector<double>& sums, int width, int height, bool alpha);
 
 Image render_space(const Scene& scene, const trace::RenderSettings& settings,
                    const SpaceOptions& options, SpaceStats* stats = nullptr);

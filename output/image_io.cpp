@@ -1,11 +1,17 @@
 #include "output/image_io.h"
 
-#include <OpenImageIO/imageio.h>
+#include <dlfcn.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <random>
+
+#include "output/image_backend.h"
 
 namespace povwall::output {
 namespace {
@@ -27,7 +33,61 @@ fs::path temporary_name(const fs::path& target) {
     return dir / name;
 }
 
+// The temporary file being written, for remove_partial_output() in a signal handler:
+// a plain buffer and a lock-free flag, nothing a handler could find half-updated.
+char g_partial_path[4096];
+std::atomic<bool> g_partial_active{false};
+
+void set_partial(const fs::path& tmp) {
+    const std::string p = tmp.string();
+    if (p.size() >= sizeof g_partial_path) return;
+    std::memcpy(g_partial_path, p.c_str(), p.size() + 1);
+    g_partial_active.store(true);
+}
+
+// The OpenImageIO module: next to the binary (the build tree's layout), else where CMake
+// built it.
+const ImageBackend* load_backend(std::string& error) {
+    std::vector<std::string> candidates;
+    char exe[4096];
+    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n > 0) {
+        exe[n] = 0;
+        candidates.push_back((fs::path(exe).parent_path() / POVWALL_IMAGE_BACKEND_NAME).string());
+    }
+    candidates.push_back(POVWALL_IMAGE_BACKEND_PATH);
+    for (const std::string& path : candidates) {
+        void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!handle) {
+            error = dlerror();
+            continue;
+        }
+        using Entry = const ImageBackend* (*)();
+        auto entry = reinterpret_cast<Entry>(dlsym(handle, "povwall_image_backend"));
+        if (entry) return entry();
+        error = path + ": no povwall_image_backend()";
+    }
+    return nullptr;
+}
+
+std::once_flag g_backend_once;
+const ImageBackend* g_backend = nullptr;
+std::string g_backend_error;
+
+const ImageBackend& backend() {
+    std::call_once(g_backend_once, [] { g_backend = load_backend(g_backend_error); });
+    if (!g_backend)
+        throw ImageIoError("cannot load the OpenImageIO module: " + g_backend_error);
+    return *g_backend;
+}
+
 }  // namespace
+
+bool remove_partial_output() noexcept {
+    if (!g_partial_active.exchange(false)) return false;
+    ::unlink(g_partial_path);
+    return true;
+}
 
 float encode_channel(float v, const OutputEncoding& enc) {
     if (!enc.gamma_handling) return std::clamp(v, 0.0f, 1.0f);
@@ -51,19 +111,10 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
     if (ext == ".tga") ext = ".targa";  // OIIO's plugin names
     if (ext == ".ppm") ext = ".pnm";
     const bool linear_format = ext == ".exr" || ext == ".hdr";
-    const int channels = enc.alpha ? 4 : 3;
+    // Radiance RGBE has no alpha channel (POV-Ray's +FH ignores +UA likewise).
+    const int channels = enc.alpha && ext != ".hdr" ? 4 : 3;
     const int W = image.width, H = image.height;
     const bool sixteen = enc.bits > 8 && !linear_format;
-    OIIO::ImageSpec spec(
-        W, H, channels,
-        linear_format ? OIIO::TypeDesc::FLOAT
-                      : (sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8));
-    // POV-Ray writes straight (non-premultiplied) alpha; without this OIIO would divide
-    // the colours by alpha on the way out.
-    if (!linear_format) spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!linear_format && enc.gamma_handling && enc.file_srgb) {
-        spec.attribute("oiio:ColorSpace", "sRGB");
-    }
     std::vector<float> floats;
     std::vector<uint16_t> words;
     std::vector<uint8_t> bytes;
@@ -93,25 +144,27 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
                 bytes.push_back(uint8_t(q));
         }
     }
+    const ImageBackend& io = backend();
     fs::path tmp = temporary_name(target);
-    auto out =
-        OIIO::ImageOutput::create(format.empty() ? target.string() : ext.substr(1));
-    if (!out) throw ImageIoError("cannot write '" + path + "': unsupported image format");
-    // OIIO picks the format from the file name: give the temporary the same extension.
-    std::error_code ec;
-    if (!out->open(tmp.string(), spec)) {
-        std::string err = out->geterror();
-        fs::remove(tmp, ec);
-        throw ImageIoError("cannot write '" + path + "': " + err);
-    }
+    set_partial(tmp);
+    struct ClearPartial {
+        ~ClearPartial() { g_partial_active.store(false); }
+    } clear_partial;
     const void* data = linear_format ? static_cast<const void*>(floats.data())
                        : sixteen     ? static_cast<const void*>(words.data())
                                      : static_cast<const void*>(bytes.data());
-    bool ok = out->write_image(spec.format, data);
-    ok = out->close() && ok;
-    if (!ok) {
+    const PixelType type = linear_format ? PixelType::Float
+                           : sixteen     ? PixelType::UInt16
+                                         : PixelType::UInt8;
+    // OIIO picks the format from the file name unless told: the temporary keeps the
+    // extension.
+    std::string err = io.write(tmp.string(), format.empty() ? std::string() : ext.substr(1), W,
+                               H, channels, type, data, !linear_format,
+                               !linear_format && enc.gamma_handling && enc.file_srgb);
+    std::error_code ec;
+    if (!err.empty()) {
         fs::remove(tmp, ec);
-        throw ImageIoError("cannot write '" + path + "': " + out->geterror());
+        throw ImageIoError("cannot write '" + path + "': " + err);
     }
     fs::rename(tmp, target, ec);
     if (ec) {
@@ -120,20 +173,16 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
     }
 }
 
-Image read_image(const std::string& path) {
-    // Values as stored: no premultiplication by alpha on the way in.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(path, &config);
-    if (!in) throw ImageIoError("cannot read '" + path + "': " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    std::vector<float> pixels(size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) {
-        throw ImageIoError("cannot read '" + path + "': " + in->geterror());
-    }
-    Image img(spec.width, spec.height);
-    const int nc = spec.nchannels;
-    for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i) {
+Image read_image(const std::string& path) { return read_stored_image(path).pixels; }
+
+StoredImage read_stored_image(const std::string& path) {
+    int width = 0, height = 0, nc = 0;
+    std::vector<float> pixels;
+    ImageFileInfo info;
+    std::string err = backend().read(path, width, height, nc, pixels, info);
+    if (!err.empty()) throw ImageIoError("cannot read '" + path + "': " + err);
+    Image img(width, height);
+    for (size_t i = 0; i < size_t(width) * height; ++i) {
         // Grey (1 channel) and grey+alpha (2) files spread their grey over RGB.
         const bool grey = nc <= 2;
         for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] = pixels[i * nc + (grey ? 0 : c)];
@@ -141,8 +190,12 @@ Image read_image(const std::string& path) {
                               : nc >= 4 ? pixels[i * nc + 3]
                                         : 1.0f;
     }
-    in->close();
-    return img;
+    StoredImage stored;
+    stored.pixels = std::move(img);
+    stored.format = info.format;
+    stored.declared_gamma = info.declared_gamma;
+    stored.has_alpha = info.has_alpha;
+    return stored;
 }
 
 }  // namespace povwall::output

@@ -26,7 +26,16 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
 void write_image(const Image& image, const std::string& path, const OutputEncoding& enc,
                  const std::string& format);
 
+// For a SIGINT/SIGTERM handler (async-signal-safe): removes the temporary file of a
+// write_image() in progress, so an interrupted write leaves nothing behind. Returns true
+// when there was one.
+bool remove_partial_output() noexcept;
+
 // Reads an image as stored (encoded values scaled to 0..1), RGBA; throws ImageIoError.
 Image read_image(const std::string& path);
+
+// Reads an image file as stored plus its format and declared gamma (for image_map and
+// bump_map, decoded by the parser with POV-Ray's input gamma rules); throws ImageIoError.
+StoredImage read_stored_image(const std::string& path);
 
 }  // namespace povwall::output

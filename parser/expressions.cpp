@@ -438,7 +438,7 @@ Value ExpressionParser::word(const Token& t) {
     }
     const ParseOptions& o = in_.options();
     if (w == "clock") return Numeric::scalar(o.clock);
-    if (w == "clock_delta") return Numeric::scalar(0);
+    if (w == "clock_delta") return Numeric::scalar(o.clock_delta);
     if (w == "clock_on") return Numeric::scalar(o.final_frame > o.initial_frame ? 1 : 0);
     if (w == "image_width") return Numeric::scalar(o.image_width);
     if (w == "image_height") return Numeric::scalar(o.image_height);

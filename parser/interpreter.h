@@ -54,6 +54,15 @@ class Interpreter {
         return t.kind == TokenKind::Word && t.text == w;
     }
     [[noreturn]] void error(const Token& at, const std::string& message);
+    // A located `warning:` diagnostic on the messages stream; parsing goes on.
+    void warn(const Token& at, const std::string& message) {
+        if (options_.messages)
+            *options_.messages << format_diagnostic(sources_, at, "warning", message) << "\n";
+    }
+    // POV-Ray's degenerate triangle: coincident or collinear corners.
+    static bool degenerate_corners(const Point3 p[3]) {
+        return length(cross(p[1] - p[0], p[2] - p[0])) < 1e-10;
+    }
     [[noreturn]] void unsupported(const Token& at, std::string_view feature);
     [[noreturn]] void expected(std::string_view what, const Token& found);
     std::string describe(const Token& t) const;
@@ -106,6 +115,8 @@ class Interpreter {
     Interior parse_interior_block();     // after 'interior'
     ColourMap parse_colour_map_block();  // after 'color_map'
     bool try_pattern_keyword(const Token& t, PatternSpec& spec);
+    // After image_map / bump_map (`bump` receives bump_size): the mapping, pixels loaded.
+    std::shared_ptr<const ImageMapping> parse_image_block(const Token& keyword, Normal* bump);
     bool try_pattern_modifier(const Token& t, PatternSpec& spec);
     Light parse_light_block();
     CameraSpec parse_camera_block();
@@ -201,6 +212,7 @@ class Interpreter {
     bool camera_seen_ = false;
     Texture default_texture_;
     std::string scene_dir_;
+    std::vector<std::string> image_files_;  // image_map/bump_map files, for Scene::files
     std::vector<std::string> element_names_;  // rotating names bound to array elements
     size_t next_element_name_ = 0;
     friend class ExpressionParser;

@@ -74,10 +74,12 @@ bool Interpreter::try_transform(const Token& t, Transform& out) {
         Token at = peek();
         Vector3 s = parse_vector();
         for (int i = 0; i < 3; ++i) {
-            // POV-Ray warns about a zero scale and substitutes a tiny one.
-            if (s[i] == 0) s[i] = 1e-10;
+            // POV-Ray warns and substitutes 1.0; a scene that scales by 0 almost surely has a
+            // bug, and any stand-in value makes a singular (or wildly stretched) inverse.
+            if (s[i] == 0)
+                error(at, std::string("singular transform: scale by 0 in ") + "xyz"[i] +
+                              " (the object would be flattened)");
         }
-        (void)at;
         out = Transform::scale(s);
     } else if (w == "matrix") {
         expect_punct('<', "to start the 12 matrix values");
@@ -87,6 +89,9 @@ bool Interpreter::try_transform(const Token& t, Transform& out) {
             m[i] = parse_numeric(true).c[0];
         }
         expect_punct('>', "after the 12 matrix values");
+        const Real det = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) +
+                         m[2] * (m[3] * m[7] - m[4] * m[6]);
+        if (det == 0) error(t, "singular transform: matrix has determinant 0");
         out = Transform::from_pov_matrix(m);
     } else if (w == "transform") {
         Token n = peek();
@@ -299,6 +304,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             accept_punct(',');
             require_operand("the cylinder's radius");
             c.radius = parse_float();
+            // POV-Ray stops here too: the axis has no direction.
+            if (length(c.cap - c.base) < 1e-10)
+                error(t, "degenerate cylinder, base point = cap point");
             out.shape = c;
         }
     } else if (w == "cone") {
@@ -312,6 +320,8 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             c.cap = parse_vector();
             accept_punct(',');
             c.cap_radius = parse_float();
+            if (length(c.cap - c.base) < 1e-10)
+                error(t, "degenerate cone, base point = cap point");
             out.shape = c;
         }
     } else if (w == "torus") {
@@ -343,6 +353,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 if (i) accept_punct(',');
                 tri.p[i] = parse_vector();
             }
+            if (degenerate_corners(tri.p)) warn(t, "degenerate triangle, never hit; please remove");
             out.shape = tri;
         }
     } else if (w == "smooth_triangle") {
@@ -355,6 +366,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 accept_punct(',');
                 tri.n[i] = parse_vector();
             }
+            if (degenerate_corners(tri.p)) warn(t, "degenerate triangle, never hit; please remove");
             out.shape = tri;
         }
     } else if (w == "polygon") {

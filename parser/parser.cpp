@@ -32,6 +32,8 @@ Scene Interpreter::run(int root_file) {
     }
     for (int i = 0; i < sources_.count(); ++i)
         scene_.files.push_back(sources_.file(i).path);
+    // Image files after the sources (SourceLoc indexes only the sources).
+    for (const auto& f : image_files_) scene_.files.push_back(f);
     scene_.language_version = version_;
     scene_.version_set = version_set_;
     return std::move(scene_);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/image.h"
 #include "core/scene.h"
 
 namespace povwall::parser {
@@ -22,10 +23,14 @@ struct ParseOptions {
     int frame_number = 0;
     int initial_frame = 1, final_frame = 1;
     double initial_clock = 0.0, final_clock = 0.0;
+    double clock_delta = 0.0;  // clock step between frames (0 for a still image)
     std::map<std::string, double> declares;  // Declare=NAME=value from the command line
     // Where #debug/#warning/#render text goes (POV-Ray's console streams); null:
     // discarded.
     std::ostream* messages = nullptr;
+    // Reads image_map/bump_map files. Without one the scene records the file references
+    // only (enough to list the files a scene reads), and cannot be rendered.
+    ImageReader image_reader;
 };
 
 // A located diagnostic. what() is the full text as printed: "file:line:col: error: msg",

@@ -1,4 +1,5 @@
 // Camera, lights, global settings, sky and fog, meshes, and declared non-numeric values.
+#include <algorithm>
 #include <cmath>
 
 #include "parser/interpreter.h"
@@ -32,7 +33,22 @@ CameraSpec Interpreter::parse_camera_block() {
             c.kind = Camera::Kind::Perspective;
         else if (w == "orthographic")
             c.kind = Camera::Kind::Orthographic;
-        else if (w == "location")
+        else if (w == "fisheye")
+            c.kind = Camera::Kind::Fisheye;
+        else if (w == "ultra_wide_angle")
+            c.kind = Camera::Kind::UltraWideAngle;
+        else if (w == "panoramic")
+            c.kind = Camera::Kind::Panoramic;
+        else if (w == "cylinder") {
+            const Token at = peek();
+            const double n = parse_float();
+            if (n < 1 || n > 4 || n != std::floor(n))
+                error(at, "cylinder camera type must be 1, 2, 3 or 4");
+            static constexpr Camera::Kind kCylinders[] = {
+                Camera::Kind::Cylinder1, Camera::Kind::Cylinder2, Camera::Kind::Cylinder3,
+                Camera::Kind::Cylinder4};
+            c.kind = kCylinders[int(n) - 1];
+        } else if (w == "location")
             c.location = parse_vector();
         else if (w == "direction")
             c.direction = parse_vector();
@@ -55,9 +71,8 @@ CameraSpec Interpreter::parse_camera_block() {
         } else if (w == "aperture" || w == "blur_samples" || w == "focal_point" ||
                    w == "confidence" || w == "variance") {
             unsupported(t, "focal blur");
-        } else if (w == "fisheye" || w == "ultra_wide_angle" || w == "omnimax" ||
-                   w == "panoramic" || w == "spherical" || w == "cylinder" ||
-                   w == "mesh_camera") {
+        } else if (w == "omnimax" || w == "spherical" || w == "mesh_camera" ||
+                   w == "user_defined") {
             unsupported(t, "camera " + std::string(w));
         } else if (w == "normal") {
             unsupported(t, "camera normal");
@@ -346,14 +361,22 @@ Fog Interpreter::parse_fog() {
             f.alt = parse_float();
         else if (w == "up")
             f.up = parse_vector();
-        else if (w == "turbulence")
+        else if (w == "turbulence") {
+            f.turbulent = true;
             f.turbulence = parse_vector();
-        else if (w == "turb_depth")
+        } else if (w == "turb_depth")
             f.turb_depth = parse_float();
-        else if (w == "octaves" || w == "omega" || w == "lambda")
-            parse_float();
-        else if (t.kind == TokenKind::Word && lookup(t) &&
-                 std::holds_alternative<Numeric>(*lookup(t))) {
+        else if (w == "octaves") {
+            f.turbulent = true;
+            f.octaves = std::clamp(int(parse_float()), 1, 10);
+        } else if (w == "omega") {
+            f.turbulent = true;
+            f.omega = parse_float();
+        } else if (w == "lambda") {
+            f.turbulent = true;
+            f.lambda = parse_float();
+        } else if (t.kind == TokenKind::Word && lookup(t) &&
+                   std::holds_alternative<Numeric>(*lookup(t))) {
             unget(t);  // fog { Blue+Gray70 ... }: a colour expression without keyword
             f.colour = parse_colour_value();
         } else
@@ -393,7 +416,10 @@ void Interpreter::parse_mesh(Object& out) {
                 expected("texture or '}' in a mesh triangle", m);
             }
         }
-        mesh.faces.push_back(face);
+        // Degenerate triangles are dropped silently, as POV-Ray does in meshes.
+        const Point3 corners[3] = {mesh.vertices[face.v[0]], mesh.vertices[face.v[1]],
+                                   mesh.vertices[face.v[2]]};
+        if (!degenerate_corners(corners)) mesh.faces.push_back(face);
     }
     if (accept_word("inside_vector")) {
         mesh.inside_vector = parse_vector();
@@ -528,7 +554,7 @@ void Interpreter::parse_mesh2(Object& out) {
                     frames_.back().pos += skip + 1;
                     if (k == 0) f.texture = int32_t(value->number);
                 }
-                mesh.faces.push_back(f);
+                mesh.faces.push_back(f);  // degenerate ones are dropped at the end
             }
             accept_punct(',');  // trailing comma
             expect_punct('}');
@@ -569,6 +595,14 @@ void Interpreter::parse_mesh2(Object& out) {
                 f.n[k] = int32_t(f.v[k]);
         }
     }
+    mesh.faces.erase(std::remove_if(mesh.faces.begin(), mesh.faces.end(),
+                                    [&](const Mesh::Face& f) {
+                                        const Point3 p[3] = {mesh.vertices[f.v[0]],
+                                                             mesh.vertices[f.v[1]],
+                                                             mesh.vertices[f.v[2]]};
+                                        return degenerate_corners(p);
+                                    }),
+                     mesh.faces.end());
     out.shape = std::move(mesh);
 }
 

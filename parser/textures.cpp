@@ -49,12 +49,11 @@ constexpr PatternName kPatterns[] = {
 };
 
 bool is_unsupported_pattern(std::string_view w) {
-    static const char* kNames[] = {"image_map",  "bump_map",        "material_map",
-                                   "function",   "object",          "slope",
-                                   "aoi",        "density_file",    "facets",
-                                   "pavement",   "tiling",          "julia",
-                                   "magnet",     "image_pattern",   "tiles",
-                                   "proportion", "pigment_pattern", "gradient_map"};
+    static const char* kNames[] = {
+        "material_map", "function",     "object",          "slope",
+        "aoi",          "density_file", "facets",          "pavement",
+        "tiling",       "julia",        "magnet",          "image_pattern",
+        "tiles",        "proportion",   "pigment_pattern", "gradient_map"};
     for (const char* n : kNames) {
         if (w == n) return true;
     }
@@ -81,6 +80,10 @@ Numeric Interpreter::parse_colour() {
     for (;;) {
         const Token& t = peek();
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        // A second form keyword starts the next colour (checker rgb A rgb B).
+        bool form = w == "rgb" || w == "srgb" || w == "rgbf" || w == "srgbf" ||
+                    w == "rgbt" || w == "srgbt" || w == "rgbft" || w == "srgbft";
+        if (form && any) break;
         if (w == "rgb" || w == "srgb") {
             next();
             set(parse_express(), 3, w == "srgb");
@@ -181,7 +184,8 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
                 break;
             case PatternKind::Agate:
                 break;
-            // POV-Ray's default wave for marble, wood and the spirals is the triangle wave.
+            // POV-Ray's default wave for marble, wood and the spirals is the triangle
+            // wave.
             case PatternKind::Marble:
             case PatternKind::Wood:
                 spec.wave = WaveType::Triangle;
@@ -440,7 +444,10 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
             unget(t);
             p.pattern.kind = PatternKind::Solid;
             p.colour = parse_colour_value();
-        } else if (w == "uv_mapping" || w == "image_map" || w == "pigment_pattern") {
+        } else if (w == "image_map") {
+            p.pattern.kind = PatternKind::ImageMap;
+            p.pattern.image = parse_image_block(t, nullptr);
+        } else if (w == "uv_mapping" || w == "pigment_pattern") {
             unsupported(t, w);
         } else {
             expected("a pigment item or '}'", t);
@@ -513,8 +520,24 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
                 n.list.push_back(std::move(sub));
             }
         } else if (is_word(t, "slope_map")) {
-            unsupported(t, t.text);
-        } else if (is_word(t, "uv_mapping") || is_word(t, "bump_map")) {
+            expect_punct('{', "after 'slope_map'");
+            n.slope_map.clear();
+            for (;;) {
+                Token e = next();
+                if (is_punct(e, '}')) break;
+                if (!is_punct(e, '[')) expected("'[' or '}' in a slope_map", e);
+                SlopeMapEntry entry{parse_map_value(false), 0, 0};
+                accept_punct(',');
+                Numeric hs = parse_express();
+                entry.height = hs.c[0];
+                entry.slope = hs.size == 1 ? hs.c[0] : hs.c[1];
+                expect_punct(']', "to close the slope_map entry");
+                n.slope_map.push_back(entry);
+            }
+        } else if (is_word(t, "bump_map")) {
+            n.pattern.kind = PatternKind::ImageMap;
+            n.pattern.image = parse_image_block(t, &n);
+        } else if (is_word(t, "uv_mapping")) {
             unsupported(t, t.text);
         } else {
             expected("a normal item or '}'", t);

@@ -1,6 +1,7 @@
 // The token stream under the directives: raw and cooked tokens, one-token lookahead,
 // array subscripts read as identifiers, symbol tables, and located diagnostics.
 #include <string>
+#include <vector>
 
 #include "parser/interpreter.h"
 
@@ -204,15 +205,28 @@ std::string Interpreter::describe(const Token& t) const {
 
 void Interpreter::error(const Token& at, const std::string& message) {
     std::string text = format_diagnostic(sources_, at, "error", message);
-    // Inside macros, also point at the call sites, innermost first.
+    // Inside macros, also point at the call sites, innermost first. Deep recursion would
+    // print thousands of identical notes: as clang does, only the innermost and outermost
+    // few are shown, with a count of the rest between them.
+    std::vector<const Token*> calls;
     for (auto it = frames_.rbegin(); it != frames_.rend(); ++it) {
-        if (it->kind == Frame::Kind::Macro && it->call.file >= 0) {
-            std::string note = "in macro '";
-            note += it->call.text;
-            note += "' called from here";
-            text += '\n';
-            text += format_diagnostic(sources_, it->call, "note", note);
+        if (it->kind == Frame::Kind::Macro && it->call.file >= 0)
+            calls.push_back(&it->call);
+    }
+    constexpr size_t kShownAtEachEnd = 5;
+    for (size_t i = 0; i < calls.size(); ++i) {
+        if (calls.size() > 2 * kShownAtEachEnd && i == kShownAtEachEnd) {
+            size_t hidden = calls.size() - 2 * kShownAtEachEnd;
+            text +=
+                "\nnote: (" + std::to_string(hidden) + " more macro contexts not shown)";
+            i += hidden - 1;
+            continue;
         }
+        std::string note = "in macro '";
+        note += calls[i]->text;
+        note += "' called from here";
+        text += '\n';
+        text += format_diagnostic(sources_, *calls[i], "note", note);
     }
     throw ParseError(ParseError::Kind::Syntax, text, message, sources_.location(at));
 }

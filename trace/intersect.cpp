@@ -3,26 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "trace/roots.h"
+
 namespace povwall::trace {
 
-int solve_quadratic(Real a, Real b, Real c, Real roots[2]) {
-    if (a == 0) {
-        if (b == 0) return 0;
-        roots[0] = -c / b;
-        return 1;
-    }
-    Real disc = b * b - 4 * a * c;
-    if (disc < 0) return 0;
-    Real s = std::sqrt(disc);
-    // q has the sign of b, so neither root subtracts nearly equal numbers.
-    Real q = -0.5 * (b + (b >= 0 ? s : -s));
-    Real r0 = q / a, r1 = q != 0 ? c / q : r0;
-    roots[0] = std::min(r0, r1);
-    roots[1] = std::max(r0, r1);
-    return 2;
-}
-
-void intersect_sphere(const Sphere& s, const Point3& o, const Vector3& dir, Crossings& out) {
+void intersect_sphere(const Sphere& s, const Point3& o, const Vector3& dir,
+                      Crossings& out) {
     Vector3 oc = s.centre - o;
     Real tca = dot(oc, dir);
     Real t2hc = s.radius * s.radius - dot(oc, oc) + tca * tca;
@@ -34,7 +20,9 @@ void intersect_sphere(const Sphere& s, const Point3& o, const Vector3& dir, Cros
     if (t2 > kSphereTolerance) out.add(t2, 0);
 }
 
-Vector3 sphere_normal(const Sphere& s, const Point3& p) { return (p - s.centre) / s.radius; }
+Vector3 sphere_normal(const Sphere& s, const Point3& p) {
+    return (p - s.centre) / s.radius;
+}
 
 bool inside_sphere(const Sphere& s, const Point3& p) {
     Vector3 d = p - s.centre;
@@ -85,14 +73,17 @@ bool inside_box(const Box& b, const Point3& p) {
            p.z <= hi.z;
 }
 
-void intersect_plane(const Plane& p, const Point3& o, const Vector3& dir, Crossings& out) {
+void intersect_plane(const Plane& p, const Point3& o, const Vector3& dir,
+                     Crossings& out) {
     Real nd = dot(p.normal, dir);
     if (std::fabs(nd) < kPovEpsilon) return;
     Real t = (p.distance - dot(p.normal, o)) / nd;
     if (t > kPlaneTolerance && t < kMaxDistance) out.add(t, 0);
 }
 
-bool inside_plane(const Plane& pl, const Point3& p) { return dot(pl.normal, p) < pl.distance; }
+bool inside_plane(const Plane& pl, const Point3& p) {
+    return dot(pl.normal, p) < pl.distance;
+}
 
 namespace {
 
@@ -108,7 +99,10 @@ AxisFrame axis_of(const Point3& base, const Point3& cap) {
 
 }  // namespace
 
-void intersect_cylinder(const Cylinder& c, const Point3& o, const Vector3& dir, Crossings& out) {
+void intersect_cylinder(const Cylinder& c, const Point3& o, const Vector3& dir,
+                        Crossings& out) {
+    // Zero radius (exporters write them): a line, never hit; its normal would be 0/0.
+    if (c.radius == 0) return;
     AxisFrame f = axis_of(c.base, c.cap);
     Vector3 u = o - c.base;
     Real dp = dot(dir, f.axis), up = dot(u, f.axis);
@@ -164,6 +158,7 @@ bool inside_cylinder(const Cylinder& c, const Point3& p) {
 }
 
 void intersect_cone(const Cone& c, const Point3& o, const Vector3& dir, Crossings& out) {
+    if (c.base_radius == 0 && c.cap_radius == 0) return;  // a line, as a zero-radius cylinder
     AxisFrame f = axis_of(c.base, c.cap);
     Real k = (c.cap_radius - c.base_radius) / f.len;
     Vector3 u = o - c.base;
@@ -244,7 +239,8 @@ void intersect_disc(const Disc& d, const Point3& o, const Vector3& dir, Crossing
     if (r2 <= d.radius * d.radius && r2 >= d.hole_radius * d.hole_radius) out.add(t, 0);
 }
 
-void intersect_triangle(const Point3 p[3], const Point3& o, const Vector3& dir, Crossings& out) {
+void intersect_triangle(const Point3 p[3], const Point3& o, const Vector3& dir,
+                        Crossings& out) {
     Vector3 e1 = p[1] - p[0], e2 = p[2] - p[0];
     Vector3 pv = cross(dir, e2);
     Real det = dot(e1, pv);
@@ -314,113 +310,76 @@ void intersect_polygon(const Polygon& poly, const Point3& o, const Vector3& dir,
 
 // ------------------------------------------------------------------ torus
 
-namespace {
-
-int solve_cubic_real(Real a, Real b, Real c, Real roots[3]) {
-    // x^3 + a x^2 + b x + c
-    Real q = (a * a - 3 * b) / 9, r = (2 * a * a * a - 9 * a * b + 27 * c) / 54;
-    Real q3 = q * q * q;
-    if (r * r < q3) {
-        Real th = std::acos(std::clamp(r / std::sqrt(q3), -1.0, 1.0));
-        Real s = -2 * std::sqrt(q);
-        roots[0] = s * std::cos(th / 3) - a / 3;
-        roots[1] = s * std::cos((th + 2 * kPi) / 3) - a / 3;
-        roots[2] = s * std::cos((th - 2 * kPi) / 3) - a / 3;
-        return 3;
-    }
-    Real A = -std::cbrt(std::fabs(r) + std::sqrt(r * r - q3));
-    if (r < 0) A = -A;
-    Real B = A != 0 ? q / A : 0;
-    roots[0] = A + B - a / 3;
-    return 1;
-}
-
-Real poly4(const Real c[5], Real x) { return (((x + c[3]) * x + c[2]) * x + c[1]) * x + c[0]; }
-Real dpoly4(const Real c[5], Real x) { return ((4 * x + 3 * c[3]) * x + 2 * c[2]) * x + c[1]; }
-
-}  // namespace
-
-int solve_quartic(const Real c[5], Real roots[4]) {
-    // Depressed quartic y^4 + p y^2 + q y + r with x = y - c3/4.
-    Real a = c[3], b = c[2], cc = c[1], d = c[0];
-    Real a2 = a * a;
-    Real p = b - 3 * a2 / 8;
-    Real q = cc - a * b / 2 + a2 * a / 8;
-    Real r = d - a * cc / 4 + a2 * b / 16 - 3 * a2 * a2 / 256;
-    int n = 0;
-    Real ys[4];
-    if (std::fabs(q) < 1e-14) {
-        // Biquadratic.
-        Real z[2];
-        int k = solve_quadratic(1, p, r, z);
-        for (int i = 0; i < k; ++i) {
-            if (z[i] >= 0) {
-                Real s = std::sqrt(z[i]);
-                ys[n++] = s;
-                ys[n++] = -s;
-            }
-        }
-    } else {
-        // Resolvent cubic: m^3 + p m^2 + (p^2/4 - r) m - q^2/8 = 0, take the largest root > 0.
-        Real m3[3];
-        int k = solve_cubic_real(p, p * p / 4 - r, -q * q / 8, m3);
-        Real m = m3[0];
-        for (int i = 1; i < k; ++i) m = std::max(m, m3[i]);
-        if (m <= 0) m = 1e-300;
-        Real s = std::sqrt(2 * m);
-        Real z[2];
-        int k1 = solve_quadratic(1, s, p / 2 + m - q / (2 * s), z);
-        for (int i = 0; i < k1; ++i) ys[n++] = z[i];
-        int k2 = solve_quadratic(1, -s, p / 2 + m + q / (2 * s), z);
-        for (int i = 0; i < k2; ++i) ys[n++] = z[i];
-    }
-    for (int i = 0; i < n; ++i) {
-        Real x = ys[i] - a / 4;
-        // Newton polishing: the closed form loses digits on stiff (thin) tori.
-        for (int it = 0; it < 4; ++it) {
-            Real fx = poly4(c, x), dfx = dpoly4(c, x);
-            if (dfx == 0) break;
-            Real nx = x - fx / dfx;
-            if (!std::isfinite(nx)) break;
-            if (std::fabs(poly4(c, nx)) > std::fabs(fx)) break;
-            x = nx;
-        }
-        roots[i] = x;
-    }
-    std::sort(roots, roots + n);
-    return n;
-}
-
-void intersect_torus(const Torus& tor, const Point3& o0, const Vector3& dir, Crossings& out) {
-    Real R = tor.major, r = tor.minor;
+bool torus_quartic(const Torus& tor, const Point3& o0, const Vector3& dir,
+                   TorusQuartic& q) {
+    const Real R = tor.major, r = tor.minor;
+    const Real bound = R + r;
+    const Real tc = -dot(o0, dir);
+    const Real closest2 = dot(o0 + dir * tc, o0 + dir * tc);
+    if (closest2 > bound * bound) return false;
     // Start from just outside the bounding sphere to keep the quartic well conditioned,
     // as POV-Ray does.
-    Real bound = R + r;
-    Real tc = -dot(o0, dir);
-    Real closest2 = dot(o0 + dir * tc, o0 + dir * tc);
-    if (closest2 > bound * bound) return;
-    Real shift = 0;
-    if (dot(o0, o0) > (R + 2 * r) * (R + 2 * r)) shift = std::max(0.0, tc - (R + 2 * r));
-    Point3 o = o0 + dir * shift;
-    Real R2 = R * R, r2 = r * r;
-    Real py2 = o.y * o.y, dy2 = dir.y * dir.y, pdy = o.y * dir.y;
-    Real k1 = dot(o, o) - py2 - 0 + 0;  // x^2+z^2 part of |o|^2
-    Real k2 = dot(o, dir) - pdy;
-    Real dd = dot(dir, dir);
-    // (|p|^2 + R^2 - r^2)^2 = 4 R^2 (x^2 + z^2), torus in the xz plane around y.
-    Real od = dot(o, dir), oo = dot(o, o);
-    Real e = oo + R2 - r2;
-    Real c[5];
-    c[4] = dd * dd;
-    c[3] = 4 * dd * od;
-    c[2] = 2 * dd * e + 4 * od * od - 4 * R2 * (dd - dy2);
-    c[1] = 4 * od * e - 8 * R2 * k2;
-    c[0] = e * e - 4 * R2 * k1;
-    Real norm[5] = {c[0] / c[4], c[1] / c[4], c[2] / c[4], c[3] / c[4], 1};
+    q.shift = 0;
+    if (dot(o0, o0) > (R + 2 * r) * (R + 2 * r))
+        q.shift = std::max(0.0, tc - (R + 2 * r));
+    const Point3 o = o0 + dir * q.shift;
+    const Real R2 = R * R, r2 = r * r;
+    // (|p|^2 + R^2 - r^2)^2 = 4 R^2 (x^2 + z^2): the torus lies in the xz plane around y.
+    const Real dd = dot(dir, dir), od = dot(o, dir), oo = dot(o, o);
+    const Real oxz = o.x * o.x + o.z * o.z, odxz = o.x * dir.x + o.z * dir.z;
+    const Real dxz = dir.x * dir.x + dir.z * dir.z;
+    const Real e = oo + R2 - r2;
+    q.c[4] = dd * dd;
+    q.c[3] = 4 * dd * od;
+    q.c[2] = 2 * dd * e + 4 * od * od - 4 * R2 * dxz;
+    q.c[1] = 4 * od * e - 8 * R2 * odxz;
+    q.c[0] = e * e - 4 * R2 * oxz;
+    // Every crossing lies inside the bounding sphere: solve only over that chord.
+    const Real half_chord = std::sqrt(std::max(0.0, bound * bound - closest2));
+    const Real slack = 1e-9 * (bound + std::fabs(tc));
+    q.lo = std::max(kTorusTolerance - q.shift, tc - q.shift - half_chord - slack);
+    q.hi = tc - q.shift + half_chord + slack;
+    return q.lo < q.hi;
+}
+
+void intersect_torus(const Torus& tor, const Point3& o, const Vector3& dir,
+                     Crossings& out) {
+    TorusQuartic q;
+    if (!torus_quartic(tor, o, dir, q)) return;
     Real roots[4];
-    int n = solve_quartic(norm, roots);
+    int n = solve_quartic(q.c, q.lo, q.hi, roots);
+    // The quartic's coefficients are rounded sums of large terms, so its exact roots are
+    // off by ~1e-12 on thin tori. Newton on the surface's signed distance along the ray
+    // (condition ~1 near the surface) recovers the last digits; a step may not cross half
+    // way to a neighbouring root, so close pairs stay apart.
+    auto distance = [&](Real t, Real& slope) {
+        const Point3 p = o + dir * t;
+        const Real rho = std::sqrt(p.x * p.x + p.z * p.z);
+        const Real ring = rho - tor.major;
+        const Real d = std::sqrt(ring * ring + p.y * p.y);
+        if (rho == 0 || d == 0) {
+            slope = 0;
+            return d - tor.minor;
+        }
+        const Vector3 grad{ring * p.x / (rho * d), p.y / d, ring * p.z / (rho * d)};
+        slope = dot(grad, dir);
+        return d - tor.minor;
+    };
     for (int i = 0; i < n; ++i) {
-        Real t = roots[i] + shift;
+        Real reach = 0.5 * (q.hi - q.lo);
+        if (i > 0) reach = std::min(reach, 0.5 * (roots[i] - roots[i - 1]));
+        if (i + 1 < n) reach = std::min(reach, 0.5 * (roots[i + 1] - roots[i]));
+        const Real t0 = roots[i] + q.shift;
+        Real t = t0, slope;
+        const Real g = distance(t, slope);
+        // One step: the solver's root is ~1e-12 off and Newton converges quadratically.
+        if (g != 0 && slope != 0) {
+            const Real nt = t - g / slope;
+            Real nslope;
+            if (std::isfinite(nt) && std::fabs(nt - t0) <= reach &&
+                std::fabs(distance(nt, nslope)) < std::fabs(g))
+                t = nt;
+        }
         if (t > kTorusTolerance) out.add(t, 0);
     }
 }

@@ -19,7 +19,8 @@ constexpr Vector3 kPyramid[4] = {{0.942809041, -0.333333333, 0.0},
 bool has_dedicated_normal(PatternKind k) {
     return k == PatternKind::Bumps || k == PatternKind::Dents ||
            k == PatternKind::Ripples || k == PatternKind::Waves ||
-           k == PatternKind::Wrinkles || k == PatternKind::Quilted;
+           k == PatternKind::Wrinkles || k == PatternKind::Quilted ||
+           k == PatternKind::ImageMap;
 }
 
 // Adds the dedicated normal pattern's displacement at pattern-space point p to n.
@@ -71,9 +72,30 @@ void displace(const Normal& nm, const Point3& p, Vector3& n, const PatternEnv& e
             n += v * nm.amount;
             break;
         }
+        case PatternKind::ImageMap:
+            if (s.image) detail::bump_map_normal(*s.image, nm.amount, p, n);
+            break;
         default:
             break;
     }
+}
+
+// The height a slope_map gives the pattern value: a cubic Hermite segment between the two
+// neighbouring entries' heights and slopes (POV-Ray's Do_Slope_Map); no map: the value.
+Real slope_mapped(const Normal& nm, Real value) {
+    const std::vector<SlopeMapEntry>& map = nm.slope_map;
+    if (map.empty()) return value;
+    float values[256];
+    int n = int(std::min<size_t>(map.size(), 256));
+    for (int i = 0; i < n; ++i) values[i] = map[size_t(i)].value;
+    MapLookup m = search_map(values, n, value);
+    const SlopeMapEntry& cur = map[size_t(m.cur)];
+    if (m.prev == m.cur) return cur.height;
+    const SlopeMapEntry& prev = map[size_t(m.prev)];
+    Real t = m.fraction, tt = t * t, ttt = tt * t;
+    return ttt * (prev.slope + cur.slope + 2.0 * (prev.height - cur.height)) -
+           tt * (2.0 * prev.slope + cur.slope + 3.0 * (prev.height - cur.height)) +
+           t * prev.slope + prev.height;
 }
 
 }  // namespace
@@ -119,7 +141,8 @@ Vector3 perturb_normal(const Normal& normal, const Point3& world,
         Real accuracy = normal.accuracy > 0 ? normal.accuracy : 0.02;
         Real amount = normal.amount * -5.0 * (0.02 / accuracy);
         for (const Vector3& dir : kPyramid) {
-            Real v = detail::value_at(spec, p + dir * accuracy, env);
+            Real v =
+                slope_mapped(normal, detail::value_at(spec, p + dir * accuracy, env));
             n += dir * (v * amount);
         }
     }

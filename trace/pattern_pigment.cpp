@@ -83,6 +83,10 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
     const PatternSpec& spec = pigment.pattern;
     if (spec.kind == PatternKind::Solid) return pigment.colour;
     Point3 p = detail::warp_point(spec, world);
+    if (spec.kind == PatternKind::ImageMap) {
+        return spec.image ? detail::image_map_colour(*spec.image, p)
+                          : Colour{Rgb{1.0f}, 0.0f, 1.0f};
+    }
     if (spec.kind == PatternKind::Average) {
         // Weighted mean of the pigment_map entries, weights being the entry values.
         Colour sum{Rgb{0.0f}};

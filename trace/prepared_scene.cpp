@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "octree/overlap.h"
+#include "octree/spatial_order.h"
 #include "trace/intersect.h"
 
 namespace povwall::trace {
@@ -15,7 +16,23 @@ struct WorldCrossing {
     const Object* leaf;
 };
 
+}  // namespace
+
+// An image_map is see-through off the image (once), with filter/transmit all, or where
+// the file's alpha is below 1.
+bool image_opaque(const ImageMapping& m) {
+    if (m.once || m.all_filter != 0 || m.all_transmit != 0 || !m.pixels) return false;
+    const std::vector<float>& v = m.pixels->rgbft;
+    for (size_t i = 0; i + 4 < v.size(); i += 5) {
+        if (v[i + 3] != 0 || v[i + 4] != 0) return false;
+    }
+    return true;
+}
+
 bool pigment_opaque(const Pigment& p) {
+    if (p.pattern.kind == PatternKind::ImageMap && p.pattern.image &&
+        !image_opaque(*p.pattern.image))
+        return false;
     if (p.colour.filter != 0 || p.colour.transmit != 0) {
         if (p.pattern.kind == PatternKind::Solid) return false;
     }
@@ -38,6 +55,8 @@ bool texture_opaque(const LayeredTexture& layers) {
     return true;
 }
 
+namespace {
+
 // Leaf shape crossings along a world ray, in world distances, with outward world normals.
 void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out) {
     Ray local = o.transform.is_identity() ? ray : o.transform.inverse_ray(ray);
@@ -48,18 +67,25 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
     std::visit(
         [&](const auto& s) {
             using T = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<T, Sphere>) intersect_sphere(s, local.origin, dn, cs);
-            else if constexpr (std::is_same_v<T, Box>) intersect_box(s, local.origin, dn, cs);
-            else if constexpr (std::is_same_v<T, Plane>) intersect_plane(s, local.origin, dn, cs);
+            if constexpr (std::is_same_v<T, Sphere>)
+                intersect_sphere(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Box>)
+                intersect_box(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Plane>)
+                intersect_plane(s, local.origin, dn, cs);
             else if constexpr (std::is_same_v<T, Cylinder>)
                 intersect_cylinder(s, local.origin, dn, cs);
-            else if constexpr (std::is_same_v<T, Cone>) intersect_cone(s, local.origin, dn, cs);
-            else if constexpr (std::is_same_v<T, Torus>) intersect_torus(s, local.origin, dn, cs);
-            else if constexpr (std::is_same_v<T, Disc>) intersect_disc(s, local.origin, dn, cs);
-            else if constexpr (std::is_same_v<T, Triangle>)
-                intersect_triangle(s.p, local.origin, dn, cs);
-            else if constexpr (std::is_same_v<T, SmoothTriangle>)
-                intersect_triangle(s.p, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Cone>)
+                intersect_cone(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Torus>)
+                intersect_torus(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Disc>)
+                intersect_disc(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Triangle>) {
+                if (!degenerate_triangle(s.p)) intersect_triangle(s.p, local.origin, dn, cs);
+            } else if constexpr (std::is_same_v<T, SmoothTriangle>) {
+                if (!degenerate_triangle(s.p)) intersect_triangle(s.p, local.origin, dn, cs);
+            }
             else if constexpr (std::is_same_v<T, Polygon>)
                 intersect_polygon(s, local.origin, dn, cs);
         },
@@ -70,17 +96,26 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
         std::visit(
             [&](const auto& s) {
                 using T = std::decay_t<decltype(s)>;
-                if constexpr (std::is_same_v<T, Sphere>) n = sphere_normal(s, p);
-                else if constexpr (std::is_same_v<T, Box>) n = box_normal(s, cs.c[i].face);
-                else if constexpr (std::is_same_v<T, Plane>) n = s.normal;
-                else if constexpr (std::is_same_v<T, Cylinder>) n = cylinder_normal(s, p, cs.c[i].face);
-                else if constexpr (std::is_same_v<T, Cone>) n = cone_normal(s, p, cs.c[i].face);
-                else if constexpr (std::is_same_v<T, Torus>) n = torus_normal(s, p);
-                else if constexpr (std::is_same_v<T, Disc>) n = s.normal;
+                if constexpr (std::is_same_v<T, Sphere>)
+                    n = sphere_normal(s, p);
+                else if constexpr (std::is_same_v<T, Box>)
+                    n = box_normal(s, cs.c[i].face);
+                else if constexpr (std::is_same_v<T, Plane>)
+                    n = s.normal;
+                else if constexpr (std::is_same_v<T, Cylinder>)
+                    n = cylinder_normal(s, p, cs.c[i].face);
+                else if constexpr (std::is_same_v<T, Cone>)
+                    n = cone_normal(s, p, cs.c[i].face);
+                else if constexpr (std::is_same_v<T, Torus>)
+                    n = torus_normal(s, p);
+                else if constexpr (std::is_same_v<T, Disc>)
+                    n = s.normal;
                 else if constexpr (std::is_same_v<T, Triangle>)
                     n = cross(s.p[1] - s.p[0], s.p[2] - s.p[0]);
-                else if constexpr (std::is_same_v<T, SmoothTriangle>) n = smooth_triangle_normal(s, p);
-                else if constexpr (std::is_same_v<T, Polygon>) n = polygon_normal(s);
+                else if constexpr (std::is_same_v<T, SmoothTriangle>)
+                    n = smooth_triangle_normal(s, p);
+                else if constexpr (std::is_same_v<T, Polygon>)
+                    n = polygon_normal(s);
             },
             o.shape);
         n = normalize(o.transform.is_identity() ? n : o.transform.normal(n));
@@ -110,9 +145,14 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
                     if (j == i) continue;
                     bool in = inside_object(csg->children[j], p);
                     switch (csg->kind) {
-                        case CsgKind::Union: break;
-                        case CsgKind::Merge: keep = !in; break;
-                        case CsgKind::Intersection: keep = in; break;
+                        case CsgKind::Union:
+                            break;
+                        case CsgKind::Merge:
+                            keep = !in;
+                            break;
+                        case CsgKind::Intersection:
+                            keep = in;
+                            break;
                         case CsgKind::Difference:
                             keep = (j == 0) ? in : !in;
                             break;
@@ -127,18 +167,21 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             for (size_t k = start; k < out.size(); ++k) out[k].normal = -out[k].normal;
         }
     } else if (std::holds_alternative<Mesh>(o.shape)) {
-        // Meshes are split into triangles at preparation; inside CSG they act as surfaces.
+        // Meshes are split into triangles at preparation; inside CSG they are surfaces, and
+        // solids for the other children's inside tests when they have an inside_vector.
         const Mesh* m = std::get_if<Mesh>(&o.shape);
         if (m) {
             Ray local = o.transform.is_identity() ? ray : o.transform.inverse_ray(ray);
             Real len = length(local.direction);
             Vector3 dn = local.direction / len;
             for (const auto& f : m->faces) {
-                Point3 p[3] = {m->vertices[f.v[0]], m->vertices[f.v[1]], m->vertices[f.v[2]]};
+                Point3 p[3] = {m->vertices[f.v[0]], m->vertices[f.v[1]],
+                               m->vertices[f.v[2]]};
                 Crossings cs;
                 intersect_triangle(p, local.origin, dn, cs);
                 if (cs.n) {
-                    Vector3 n = normalize(o.transform.normal(cross(p[1] - p[0], p[2] - p[0])));
+                    Vector3 n =
+                        normalize(o.transform.normal(cross(p[1] - p[0], p[2] - p[0])));
                     out.push_back({cs.c[0].t / len, n, &o});
                 }
             }
@@ -183,7 +226,8 @@ Bounds3 object_bounds(const Object& o) {
                 local = {{-a, -s.minor, -a}, {a, s.minor, a}};
             } else if constexpr (std::is_same_v<T, Disc>) {
                 local = {s.centre - Vector3(s.radius), s.centre + Vector3(s.radius)};
-            } else if constexpr (std::is_same_v<T, Triangle> || std::is_same_v<T, SmoothTriangle>) {
+            } else if constexpr (std::is_same_v<T, Triangle> ||
+                                 std::is_same_v<T, SmoothTriangle>) {
                 for (const auto& p : s.p) local.extend(p);
             } else if constexpr (std::is_same_v<T, Polygon>) {
                 for (const auto& p : s.points) local.extend(p);
@@ -245,6 +289,21 @@ size_t count_leaves(const Object& o) {
     return n;
 }
 
+// A mesh is solid only with an inside_vector (as in POV-Ray): a point is inside when a ray
+// from it along that vector crosses the triangles an odd number of times.
+bool inside_mesh(const Mesh& m, const Point3& q) {
+    if (!m.has_inside_vector || dot(m.inside_vector, m.inside_vector) == 0) return false;
+    const Vector3 dir = normalize(m.inside_vector);
+    int crossed = 0;
+    for (const auto& f : m.faces) {
+        Point3 p[3] = {m.vertices[f.v[0]], m.vertices[f.v[1]], m.vertices[f.v[2]]};
+        Crossings cs;
+        intersect_triangle(p, q, dir, cs);
+        crossed += cs.n;
+    }
+    return crossed % 2 == 1;
+}
+
 }  // namespace
 
 bool inside_object(const Object& o, const Point3& p) {
@@ -271,13 +330,22 @@ bool inside_object(const Object& o, const Point3& p) {
         std::visit(
             [&](const auto& s) {
                 using T = std::decay_t<decltype(s)>;
-                if constexpr (std::is_same_v<T, Sphere>) in = inside_sphere(s, q);
-                else if constexpr (std::is_same_v<T, Box>) in = inside_box(s, q);
-                else if constexpr (std::is_same_v<T, Plane>) in = inside_plane(s, q);
-                else if constexpr (std::is_same_v<T, Cylinder>) in = inside_cylinder(s, q);
-                else if constexpr (std::is_same_v<T, Cone>) in = inside_cone(s, q);
-                else if constexpr (std::is_same_v<T, Torus>) in = inside_torus(s, q);
-                else in = false;
+                if constexpr (std::is_same_v<T, Sphere>)
+                    in = inside_sphere(s, q);
+                else if constexpr (std::is_same_v<T, Box>)
+                    in = inside_box(s, q);
+                else if constexpr (std::is_same_v<T, Plane>)
+                    in = inside_plane(s, q);
+                else if constexpr (std::is_same_v<T, Cylinder>)
+                    in = inside_cylinder(s, q);
+                else if constexpr (std::is_same_v<T, Cone>)
+                    in = inside_cone(s, q);
+                else if constexpr (std::is_same_v<T, Torus>)
+                    in = inside_torus(s, q);
+                else if constexpr (std::is_same_v<T, Mesh>)
+                    in = inside_mesh(s, q);
+                else
+                    in = false;
             },
             o.shape);
     }
@@ -287,14 +355,17 @@ bool inside_object(const Object& o, const Point3& p) {
 
 Bounds3 object_world_bounds(const Object& obj) { return object_bounds(obj); }
 
-PreparedScene::PreparedScene(const Scene& scene) : scene_(scene) {
+PreparedScene::PreparedScene(const Scene& scene, const RenderPlan* plan)
+    : scene_(scene), plan_(plan ? *plan : make_render_plan(scene)) {
     std::vector<const Object*> all;
     for (const Object& o : scene.objects) all.push_back(&o);
     build(all);
 }
 
-PreparedScene::PreparedScene(const Scene& scene, const std::vector<uint32_t>& object_subset)
-    : scene_(scene) {
+PreparedScene::PreparedScene(const Scene& scene,
+                             const std::vector<uint32_t>& object_subset,
+                             const RenderPlan* plan)
+    : scene_(scene), plan_(plan ? *plan : make_render_plan(scene)) {
     std::vector<const Object*> some;
     for (uint32_t i : object_subset) some.push_back(&scene.objects[i]);
     build(some);
@@ -311,12 +382,14 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     }
     materials_.reserve(leaves + 1);
     for (const Object* o : objects) add_object(*o, nullptr);
-    // A light's looks_like object is visible but casts no shadow (it would block its light).
+    // A light's looks_like object is visible but casts no shadow (it would block its
+    // light).
     const size_t first_looks_like = materials_.size();
     for (const Light& l : scene.lights) {
         for (const Object& o : l.looks_like) add_object(o, nullptr);
     }
-    for (size_t i = first_looks_like; i < materials_.size(); ++i) materials_[i].no_shadow = true;
+    for (size_t i = first_looks_like; i < materials_.size(); ++i)
+        materials_[i].no_shadow = true;
     std::sort(leaf_materials_.begin(), leaf_materials_.end());
     octree::BuildInput input;
     std::vector<uint32_t> bounded_ids;
@@ -327,15 +400,30 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
             bounded_ids.push_back(id);
         }
     }
+    // Spheres first (their ids then index spheres_ directly in the hot loop), numbered along
+    // a Morton curve so that neighbours in space are neighbours in memory.
+    auto first_other = std::stable_partition(
+        bounded_ids.begin(), bounded_ids.end(),
+        [&](uint32_t id) { return kind_[id] == PrimKind::Sphere; });
+    {
+        std::vector<Bounds3> sphere_bounds;
+        for (auto it = bounded_ids.begin(); it != first_other; ++it)
+            sphere_bounds.push_back(bounds_[*it]);
+        std::vector<uint32_t> spheres(bounded_ids.begin(), first_other);
+        const std::vector<uint32_t> order = octree::morton_order(sphere_bounds);
+        for (size_t i = 0; i < order.size(); ++i) bounded_ids[i] = spheres[order[i]];
+    }
     // The octree indexes bounded primitives by their position in bounded_ids.
     input.bounds.reserve(bounded_ids.size());
     for (uint32_t id : bounded_ids) input.bounds.push_back(bounds_[id]);
-    // Exact (CGAL) cell tests: a sphere or triangle is referenced only by cells it touches.
+    // Exact (CGAL) cell tests: a sphere or triangle is referenced only by cells it
+    // touches.
     input.overlaps = [&](uint32_t i, const Bounds3& cell) {
         uint32_t id = bounded_ids[i];
         if (kind_[id] == PrimKind::Sphere) {
             uint32_t s = index_[id];
-            return octree::sphere_overlaps({sx_[s], sy_[s], sz_[s]}, sr_[s], cell);
+            const SpherePrim& sp = spheres_[s];
+            return octree::sphere_overlaps({sp.x, sp.y, sp.z}, sp.r, cell);
         }
         if (kind_[id] == PrimKind::Triangle) {
             const TrianglePrim& t = triangles_[index_[id]];
@@ -343,12 +431,18 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
         }
         return true;
     };
-    tree_.build(input);
+    octree::BuildOptions build_options;
+    build_options.flat_threshold = plan_.flat_threshold;
+    tree_.build(input, build_options);
     // Re-map: store octree ids as primitive ids by permuting primitive arrays is avoided;
     // instead the bounded primitives are moved to the front so octree id == primitive id.
     std::vector<PrimKind> kind;
     std::vector<uint32_t> index, material;
     std::vector<Bounds3> bounds;
+    kind.reserve(kind_.size());
+    index.reserve(kind_.size());
+    material.reserve(kind_.size());
+    bounds.reserve(kind_.size());
     for (uint32_t id : bounded_ids) {
         kind.push_back(kind_[id]);
         index.push_back(index_[id]);
@@ -363,11 +457,36 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
         material.push_back(material_[id]);
         bounds.push_back(bounds_[id]);
     }
+    // Spheres re-packed in primitive order: spheres_[id] for id < sphere_count_.
+    std::vector<SpherePrim> spheres;
+    spheres.reserve(spheres_.size());
+    for (uint32_t id = 0; id < kind.size() && kind[id] == PrimKind::Sphere; ++id) {
+        spheres.push_back(spheres_[index[id]]);
+        index[id] = id;
+    }
+    sphere_count_ = uint32_t(spheres.size());
+    spheres_ = std::move(spheres);
     kind_ = std::move(kind);
     index_ = std::move(index);
     material_ = std::move(material);
     bounds_ = std::move(bounds);
     unbounded_ = std::move(unbounded);
+    // A box's resident scene is what it keeps: drop the growth slack of push_back.
+    spheres_.shrink_to_fit();
+    triangles_.shrink_to_fit();
+    planes_.shrink_to_fit();
+    objects_.shrink_to_fit();
+    leaf_materials_.shrink_to_fit();
+}
+
+size_t PreparedScene::resident_bytes() const {
+    auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+    const auto& ts = tree_.stats();
+    return sizeof(*this) + bytes(materials_) + bytes(kind_) + bytes(index_) +
+           bytes(material_) + bytes(bounds_) + bytes(spheres_) + bytes(triangles_) +
+           bytes(planes_) + bytes(objects_) + bytes(unbounded_) + bytes(leaf_materials_) +
+           size_t(ts.nodes) * sizeof(octree::Octree::Node) +
+           ts.references * sizeof(uint32_t);
 }
 
 uint32_t PreparedScene::add_material(const Object& o) {
@@ -411,20 +530,19 @@ void PreparedScene::add_object(const Object& o, const Material*) {
         s && !o.inverse && o.clipped_by.empty() && similarity(o.transform, scale)) {
         Point3 c = o.transform.point(s->centre);
         Real r = s->radius * scale;
-        uint32_t index = uint32_t(sx_.size());
-        sx_.push_back(c.x);
-        sy_.push_back(c.y);
-        sz_.push_back(c.z);
-        sr_.push_back(r);
+        uint32_t index = uint32_t(spheres_.size());
+        spheres_.push_back({c.x, c.y, c.z, r});
         push(PrimKind::Sphere, index, add_material(o), {c - Vector3(r), c + Vector3(r)});
         return;
     }
     if (auto pl = std::get_if<Plane>(&o.shape);
         pl && !o.inverse && o.clipped_by.empty() && similarity(o.transform, scale)) {
-        // Ground planes are tested by every ray: keep them out of the general object path.
+        // Ground planes are tested by every ray: keep them out of the general object
+        // path.
         Vector3 n = normalize(o.transform.normal(pl->normal));
         Point3 on = o.transform.point(pl->normal * pl->distance);
-        planes_.push_back({n, dot(n, on), kPlaneTolerance * scale});  // tolerance: world units
+        planes_.push_back(
+            {n, dot(n, on), kPlaneTolerance * scale});  // tolerance: world units
         push(PrimKind::Plane, uint32_t(planes_.size()) - 1, add_material(o),
              Bounds3::everything());
         return;
@@ -479,35 +597,43 @@ void PreparedScene::add_object(const Object& o, const Material*) {
     push(PrimKind::Object, uint32_t(objects_.size()) - 1, mat, object_bounds(o));
 }
 
+// POV-Ray's sphere test: the nearer root beyond the tolerances, else the farther one;
+// tangent rays miss. Returns a value >= t_max when there is no hit in [lo, t_max).
+inline Real sphere_distance(const PreparedScene::SpherePrim& sp, const Ray& ray, Real lo,
+                            Real t_max) {
+    Real ocx = sp.x - ray.origin.x, ocy = sp.y - ray.origin.y, ocz = sp.z - ray.origin.z;
+    Real tca = ocx * ray.direction.x + ocy * ray.direction.y + ocz * ray.direction.z;
+    Real t2hc = sp.r * sp.r - (ocx * ocx + ocy * ocy + ocz * ocz) + tca * tca;
+    if (!(t2hc > kPovEpsilon)) return t_max;
+    Real th = std::sqrt(t2hc);
+    Real t = tca - th;
+    if (!(t > kSphereTolerance && t >= lo)) {
+        t = tca + th;
+        if (!(t > kSphereTolerance && t >= lo)) return t_max;
+    }
+    return t;
+}
+
 bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max,
                                    Hit& hit) const {
     const Real lo = std::max(t_min, kMinIsectDepth);
     switch (kind_[id]) {
         case PrimKind::Sphere: {
-            uint32_t s = index_[id];
-            Real ocx = sx_[s] - ray.origin.x, ocy = sy_[s] - ray.origin.y,
-                 ocz = sz_[s] - ray.origin.z;
-            Real tca = ocx * ray.direction.x + ocy * ray.direction.y + ocz * ray.direction.z;
-            Real t2hc = sr_[s] * sr_[s] - (ocx * ocx + ocy * ocy + ocz * ocz) + tca * tca;
-            if (!(t2hc > kPovEpsilon)) return false;  // tangent rays miss (POV-Ray)
-            Real th = std::sqrt(t2hc);
-            Real t = tca - th;
-            if (!(t > kSphereTolerance && t >= lo)) {
-                t = tca + th;
-                if (!(t > kSphereTolerance && t >= lo)) return false;
-            }
-            if (t >= t_max) return false;
+            const SpherePrim& sp = spheres_[index_[id]];
+            const Real t = sphere_distance(sp, ray, lo, t_max);
+            if (!(t < t_max)) return false;
             hit.t = t;
             hit.prim = id;
             hit.point = ray.at(t);
-            hit.normal = (hit.point - Point3{sx_[s], sy_[s], sz_[s]}) / sr_[s];
+            hit.normal = (hit.point - Point3{sp.x, sp.y, sp.z}) / sp.r;
             hit.material = &materials_[material_[id]];
             return true;
         }
         case PrimKind::Plane: {
             const PlanePrim& pl = planes_[index_[id]];
-            // Same arithmetic as POV-Ray's (and the general path's): re-normalised direction,
-            // object-space depth, then back to world distance. Coincident faces depend on it.
+            // Same arithmetic as POV-Ray's (and the general path's): re-normalised
+            // direction, object-space depth, then back to world distance. Coincident
+            // faces depend on it.
             Real len = length(ray.direction);
             Vector3 dn = ray.direction / len;
             Real nd = dot(pl.normal, dn);
@@ -532,7 +658,8 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
             hit.prim = id;
             hit.point = ray.at(hit.t);
             if (tri.smooth) {
-                SmoothTriangle st{{tri.p[0], tri.p[1], tri.p[2]}, {tri.n[0], tri.n[1], tri.n[2]}};
+                SmoothTriangle st{{tri.p[0], tri.p[1], tri.p[2]},
+                                  {tri.n[0], tri.n[1], tri.n[2]}};
                 hit.normal = normalize(smooth_triangle_normal(st, hit.point));
             } else {
                 hit.normal = normalize(cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]));
@@ -561,21 +688,33 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
     return false;
 }
 
-bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use, Hit& hit,
-                                RayContext& ctx) const {
+bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use,
+                                Hit& hit, RayContext& ctx) const {
     bool found = false;
+    auto hidden = [use](const Material& m) {
+        return (use == RayUse::Camera && m.no_image) ||
+               (use == RayUse::Reflection && m.no_reflection) ||
+               (use == RayUse::Shadow && m.no_shadow);
+    };
+    // Spheres: distance only; the nearest one's point and normal are computed once at the
+    // end.
+    const Real lo = std::max(t_min, kMinIsectDepth);
+    uint32_t nearest_sphere = ~0u;
     auto consider = [&](uint32_t id, Real& limit) {
-        Hit h;
         ++ctx.tests;
-        if (!test_primitive(id, ray, t_min, limit, h)) return;
-        const Material& m = *h.material;
-        if ((use == RayUse::Camera && m.no_image) ||
-            (use == RayUse::Reflection && m.no_reflection) ||
-            (use == RayUse::Shadow && m.no_shadow)) {
+        if (id < sphere_count_) {
+            const Real t = sphere_distance(spheres_[id], ray, lo, limit);
+            if (!(t < limit) || hidden(materials_[material_[id]])) return;
+            limit = t;
+            nearest_sphere = id;
+            found = true;
             return;
         }
+        Hit h;
+        if (!test_primitive(id, ray, t_min, limit, h) || hidden(*h.material)) return;
         limit = h.t;
         hit = h;
+        nearest_sphere = ~0u;
         found = true;
     };
     Real limit = t_max;
@@ -585,35 +724,57 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
         for (size_t i = 0; i < n; ++i) {
             // Objects hidden from this ray kind can have a hit beyond a visible one: a
             // primitive seen in an earlier leaf was fully tested there.
-            if (!ctx.mailbox.first_visit(ids[i])) continue;
+            if (ids[i] >= sphere_count_ && !ctx.mailbox.first_visit(ids[i])) continue;
             consider(ids[i], tmax);
         }
         return false;
     });
+    // The same arithmetic again, so the distance is exactly the one that won.
+    if (nearest_sphere != ~0u) test_primitive(nearest_sphere, ray, t_min, t_max, hit);
     return found;
 }
 
-bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max, bool& transparent,
-                                   RayContext& ctx) const {
+bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
+                                   bool& transparent, RayContext& ctx, int light) const {
     transparent = false;
-    bool blocked = false;
-    auto consider = [&](uint32_t id) {
-        Hit h;
+    const Real lo = std::max(t_min, kMinIsectDepth);
+    // 1: an opaque shadow caster in range; 0: nothing; -1: a see-through one.
+    auto meets = [&](uint32_t id) {
         ++ctx.tests;
-        if (!test_primitive(id, ray, t_min, t_max, h)) return false;
-        if (h.material->no_shadow) return false;
-        if (h.material->opaque) return blocked = true;
-        transparent = true;
-        return false;
+        const Material* m;
+        if (id < sphere_count_) {
+            if (!(sphere_distance(spheres_[id], ray, lo, t_max) < t_max)) return 0;
+            m = &materials_[material_[id]];
+        } else {
+            Hit h;
+            if (!test_primitive(id, ray, t_min, t_max, h)) return 0;
+            m = h.material;
+        }
+        if (m->no_shadow) return 0;
+        return m->opaque ? 1 : -1;
+    };
+    uint32_t* cache = light >= 0 && size_t(light) < ctx.last_blocker.size()
+                          ? &ctx.last_blocker[size_t(light)]
+                          : nullptr;
+    if (cache && *cache != ~0u && meets(*cache) == 1) return true;
+    auto consider = [&](uint32_t id) {
+        const int r = meets(id);
+        if (r < 0) transparent = true;
+        if (r <= 0) return false;
+        if (cache) *cache = id;
+        return true;
     };
     for (uint32_t id : unbounded_) {
         if (consider(id)) return true;
     }
     ctx.mailbox.next_ray();
     Real limit = t_max;
+    bool blocked = false;
     tree_.traverse(ray, t_min, limit, [&](const uint32_t* ids, size_t n, Real&) {
         for (size_t i = 0; i < n; ++i) {
-            if (ctx.mailbox.first_visit(ids[i]) && consider(ids[i])) return true;
+            if ((ids[i] < sphere_count_ || ctx.mailbox.first_visit(ids[i])) &&
+                consider(ids[i]))
+                return blocked = true;
         }
         return false;
     });

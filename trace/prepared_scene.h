@@ -8,6 +8,7 @@
 #include "core/scene.h"
 #include "octree/octree.h"
 #include "trace/pattern.h"
+#include "trace/render_plan.h"
 
 namespace povwall::trace {
 
@@ -43,45 +44,64 @@ struct Hit {
 struct RayContext {
     octree::Mailbox mailbox;
     uint64_t tests = 0;
+    // Per light: the primitive that last blocked a shadow ray toward it. Neighbouring
+    // points are usually shadowed by the same object, so it is tried first.
+    std::vector<uint32_t> last_blocker;
 };
 
 class PreparedScene {
-public:
-    explicit PreparedScene(const Scene& scene);
+  public:
+    // `plan`: what the scene leaves out (null: make_render_plan(scene)).
+    explicit PreparedScene(const Scene& scene, const RenderPlan* plan = nullptr);
     // Only the given top-level objects (indices into scene.objects) and light looks_like
-    // objects: the local scene of a black box. Materials still point into `scene`, so object
-    // identity (interior stacks) is the same in every box.
-    PreparedScene(const Scene& scene, const std::vector<uint32_t>& object_subset);
+    // objects: the local scene of a black box. Materials still point into `scene`, so
+    // object identity (interior stacks) is the same in every box.
+    PreparedScene(const Scene& scene, const std::vector<uint32_t>& object_subset,
+                  const RenderPlan* plan = nullptr);
 
     const Scene& scene() const { return scene_; }
     const octree::Octree& tree() const { return tree_; }
     size_t primitive_count() const { return kind_.size(); }
     const PatternEnv& pattern_env() const { return env_; }
+    const RenderPlan& plan() const { return plan_; }
+    // Bytes held by the prepared primitives, materials and octree (a box's resident
+    // scene).
+    size_t resident_bytes() const;
     // +UA: the background's filter/transmit count (POV-Ray's alphaBackground).
     bool alpha_background() const { return alpha_background_; }
     void set_alpha_background(bool on) { alpha_background_ = on; }
-    void init_context(RayContext& ctx) const { ctx.mailbox.resize(kind_.size()); }
+    void init_context(RayContext& ctx) const {
+        ctx.mailbox.resize(kind_.size());
+        ctx.last_blocker.assign(scene_.lights.size(), ~0u);
+    }
 
     // Nearest hit with t in (t_min, t_max), never closer than MIN_ISECT_DEPTH (1e-4),
     // respecting no_image / no_reflection / no_shadow.
     bool closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use, Hit& hit,
                      RayContext& ctx) const;
 
-    // Shadow-ray fast path: true if an opaque, shadow-casting surface lies in (t_min, t_max).
-    // Sets `transparent` when a see-through surface was met there (the caller then needs
-    // the full product of filters).
+    // Shadow-ray fast path: true if an opaque, shadow-casting surface lies in (t_min,
+    // t_max). Sets `transparent` when a see-through surface was met there (the caller
+    // then needs the full product of filters). `light` >= 0 uses and updates
+    // ctx.last_blocker[light].
     bool opaque_blocker(const Ray& ray, Real t_min, Real t_max, bool& transparent,
-                        RayContext& ctx) const;
+                        RayContext& ctx, int light = -1) const;
 
-private:
+    struct SpherePrim {
+        Real x, y, z, r;
+    };
+
+  private:
     void build(const std::vector<const Object*>& objects);
     void add_object(const Object& obj, const Material* parent_material);
     uint32_t add_material(const Object& obj);
-    bool test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max, Hit& hit) const;
+    bool test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max,
+                        Hit& hit) const;
     const Material* material_for(const Object* leaf) const;
     std::vector<std::pair<const Object*, uint32_t>> leaf_materials_;  // sorted by pointer
 
     const Scene& scene_;
+    RenderPlan plan_;
     PatternEnv env_;
     bool alpha_background_ = false;
     std::vector<Material> materials_;  // reserved up front: pointers stay valid
@@ -89,8 +109,12 @@ private:
     std::vector<PrimKind> kind_;
     std::vector<uint32_t> index_, material_;
     std::vector<Bounds3> bounds_;
-    // Spheres in world space, structure of arrays for the hot loop.
-    std::vector<Real> sx_, sy_, sz_, sr_;
+    // Spheres in world space, one 32-byte record each (one cache line per candidate).
+    // After build() the bounded spheres are primitives 0 .. sphere_count_-1 and
+    // spheres_[id] is primitive id's sphere, so the hot loop needs neither kind_ nor
+    // index_ for them.
+    std::vector<SpherePrim> spheres_;
+    uint32_t sphere_count_ = 0;
     std::vector<TrianglePrim> triangles_;
     // Planes in world space: dot(normal, p) = distance; `tolerance` is POV-Ray's 1e-6
     // object-space depth tolerance in world units.
@@ -106,6 +130,10 @@ private:
 
 // World-space bounds of an object (everything() when unbounded).
 Bounds3 object_world_bounds(const Object& obj);
+
+// True when no pigment of the layers (maps included) has filter or transmit.
+bool pigment_opaque(const Pigment& p);
+bool texture_opaque(const LayeredTexture& layers);
 
 // Whether a point is inside an object (CSG semantics, world space).
 bool inside_object(const Object& obj, const Point3& p);

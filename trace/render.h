@@ -16,18 +16,36 @@ struct RenderSettings {
     bool antialias = false;
     double aa_threshold = 0.3;
     int aa_method = 1, aa_depth = 3;
-    bool aa_jitter = false;
+    bool aa_jitter = true;  // POV-Ray jitters AA samples unless -J
     double aa_jitter_amount = 1.0;
     bool alpha = false;  // +UA: background contributes transparency
     // Partial render (+SR/+ER/+SC/+EC), 0-based inclusive rows/columns; -1: to the end.
     int first_row = 0, last_row = -1, first_col = 0, last_col = -1;
+    // --plan all: leave nothing out (tests that the render plan changes no pixel).
+    bool plan_everything_on = false;
 };
 
 struct RenderStats {
     uint64_t camera_rays = 0, reflected_rays = 0, refracted_rays = 0, shadow_rays = 0;
     uint64_t intersection_tests = 0;
     double prepare_seconds = 0, trace_seconds = 0;
+    // What the prepared scene holds: octree or flat list, and its size.
+    bool octree_flat = false;
+    int octree_nodes = 0;
+    size_t resident_bytes = 0;
 };
+
+// The jitter of an anti-aliasing sample at image position (px, py): each component in
+// [-0.5, 0.5), a fixed function of the position (scaled by the jitter amount over the
+// sample spacing before use).
+void aa_jitter_offset(Real px, Real py, Real& jx, Real& jy);
+
+class Tracer;
+// One camera sample at image position (px, py): RGBA into `out`, as every renderer writes it
+// (nothing seen, e.g. a fisheye's corners: black and transparent; background transmit only
+// with +UA).
+void trace_camera_sample(Tracer& tracer, const Camera& camera, Real px, Real py,
+                         const RenderSettings& settings, float* out);
 
 Image render_scene(const Scene& scene, const RenderSettings& settings,
                    RenderStats* stats = nullptr);

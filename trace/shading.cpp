@@ -2,9 +2,10 @@
 #include "trace/shading.h"
 
 #include <algorithm>
-#include <deque>
 #include <cmath>
+#include <deque>
 
+#include "core/noise.h"
 #include "trace/intersect.h"
 
 namespace povwall::trace {
@@ -40,9 +41,9 @@ float ior_of(const Material* m) {
 }
 
 struct LightSample {
-    Vector3 dir;   // unit, from the point toward the light
+    Vector3 dir;  // unit, from the point toward the light
     Real distance;
-    Rgb colour;    // after spot, cylinder and fade attenuation
+    Rgb colour;  // after spot, cylinder and fade attenuation
 };
 
 bool light_at(const Light& l, const Point3& p, LightSample& s) {
@@ -73,7 +74,8 @@ bool light_at(const Light& l, const Point3& p, LightSample& s) {
             if (along <= 0) return false;
             Real dist = length(rel - axis * along);
             if (dist > l.falloff) return false;
-            att = float(l.tightness != 0 ? std::pow(1 - dist / l.falloff, l.tightness) : 1.0);
+            att = float(l.tightness != 0 ? std::pow(1 - dist / l.falloff, l.tightness)
+                                         : 1.0);
             if (dist > l.radius) att *= 1 - cubic_spline(l.radius, l.falloff, dist);
             s.dir = -axis;
             s.distance = along;
@@ -97,9 +99,7 @@ Colour eval_pigment(const PreparedScene& scene, const Pigment& p, const Point3& 
     return evaluate_pigment(p, at, scene.pattern_env());
 }
 
-Rgb rgb_transm(const Colour& c) {
-    return c.rgb * c.filter + Rgb(c.transmit);
-}
+Rgb rgb_transm(const Colour& c) { return c.rgb * c.filter + Rgb(c.transmit); }
 
 const LayeredTexture& texture_of(const Material& m) {
     static const LayeredTexture kDefault{Texture{}};
@@ -114,7 +114,9 @@ Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray) {
     if (shadow_ray && in.fade_power <= 0) return Rgb(1.0f);
     Rgb fc = in.fade_colour;
     if (in.fade_power >= 1000) {
-        auto e = [&](float c) { return float(std::exp(-(1 - c) * distance / in.fade_distance)); };
+        auto e = [&](float c) {
+            return float(std::exp(-(1 - c) * distance / in.fade_distance));
+        };
         return {e(fc.r), e(fc.g), e(fc.b)};
     }
     float k = float(1 / (1 + std::pow(distance / in.fade_distance, Real(in.fade_power))));
@@ -125,7 +127,8 @@ namespace {
 
 // A texture_map (or checker/hexagon/brick of textures) as the object's texture: POV-Ray
 // blends the final colours of the two entries around the pattern value. Both entries are
-// shaded and their records merged with the blend weights; children keep combining linearly.
+// shaded and their records merged with the blend weights; children keep combining
+// linearly.
 bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                        ShadingRecord& out) {
     const Material& m = *hit.material;
@@ -134,10 +137,12 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
     if (!t.map_pattern || t.map.empty()) return false;
     const int count = int(t.map.size());
     const bool has_values = int(t.map_values.size()) == count;
-    MapPick pick = pick_map_entries(*t.map_pattern, has_values ? t.map_values.data() : nullptr,
-                                    count, hit.point, scene.pattern_env());
+    MapPick pick =
+        pick_map_entries(*t.map_pattern, has_values ? t.map_values.data() : nullptr,
+                         count, hit.point, scene.pattern_env());
     const int entries[2] = {pick.lookup.prev, pick.lookup.cur};
-    const float weights[2] = {float(1 - pick.lookup.fraction), float(pick.lookup.fraction)};
+    const float weights[2] = {float(1 - pick.lookup.fraction),
+                              float(pick.lookup.fraction)};
     FogEffect fog = out.fog;
     Rgb local;
     // A deque keeps references valid while nested texture maps grow it.
@@ -251,8 +256,9 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                 Rgb c;
                 if (f.diffuse != 0) {
                     Real base = std::fabs(cos_nl);
-                    float k = float((f.brilliance != 1 ? std::pow(base, Real(f.brilliance)) : base) *
-                                    f.diffuse * att);
+                    float k = float(
+                        (f.brilliance != 1 ? std::pow(base, Real(f.brilliance)) : base) *
+                        f.diffuse * att);
                     c += lay.rgb * k;
                 }
                 if (!light.shadowless) {
@@ -269,7 +275,8 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                         Real hl = length(H);
                         Real cc = hl > 0 ? dot(H, Nl) / hl : 0;
                         if (cc > 0) {
-                            float k = float(f.specular * std::pow(cc, Real(1 / f.roughness)));
+                            float k =
+                                float(f.specular * std::pow(cc, Real(1 / f.roughness)));
                             c += metallic_tint(f.metallic, cos_nl, lay.rgb) * k;
                         }
                     }
@@ -311,7 +318,8 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
             }
             reflectivity_grey = reflec.grey();
             Vector3 R = D - Nl * (2 * dot(D, Nl));
-            if (dot(R, N) < 0) R = D - N * (2 * dot(D, N));  // perturbed normal pointed away
+            if (dot(R, N) < 0)
+                R = D - N * (2 * dot(D, N));  // perturbed normal pointed away
             ChildRay child;
             child.kind = ChildRay::Kind::Reflection;
             child.trace.ray = {P, normalize(R)};
@@ -329,8 +337,12 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     }
 
     // One shadow ray per light (shared by all layers); shadowless lights need none.
+    const RenderPlan& plan = scene.plan();
     for (size_t l = 0; l < nlights; ++l) {
-        if (lit[l].is_black()) continue;
+        // A light that does not reach the point adds nothing: its shadow ray is left out
+        // unless the plan is forced on (then it is traced and multiplied by zero).
+        if (lit[l].is_black() && (plan.skip_unlit_shadow_rays || sample_ok[l] != 1))
+            continue;
         const Light& light = sc.lights[l];
         if (light.shadowless) {
             out.local += lit[l];
@@ -348,6 +360,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         child.coeff = lit[l];
         child.area = light.area.has_value();
         child.light_colour = s.colour;
+        child.unoccluded = l < plan.lights.size() && plan.lights[l].unoccluded;
         out.children.push_back(child);
     }
 
@@ -360,8 +373,8 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         child.transmit_factor = trans;
         child.trace.interiors = ray.interiors;
         child.trace.use = RayUse::Refraction;
-        child.trace.weight = ray.weight * max3(Rgb(std::fabs(fil.r), std::fabs(fil.g),
-                                                   std::fabs(fil.b)));
+        child.trace.weight =
+            ray.weight * max3(Rgb(std::fabs(fil.r), std::fabs(fil.g), std::fabs(fil.b)));
         float n1, n2;
         if (ray.interiors.contains(m.object)) {
             n1 = ior_of(&m);
@@ -412,13 +425,15 @@ TraceResult combine_children(const ShadingRecord& record, const TraceResult* res
         const TraceResult& x = results[i];
         if (c.kind == ChildRay::Kind::Reflection && c.exponent != 1) {
             float e = 1 / c.exponent;
-            Rgb p(std::pow(std::max(0.0f, x.colour.r), e), std::pow(std::max(0.0f, x.colour.g), e),
+            Rgb p(std::pow(std::max(0.0f, x.colour.r), e),
+                  std::pow(std::max(0.0f, x.colour.g), e),
                   std::pow(std::max(0.0f, x.colour.b), e));
             r.colour += c.coeff * p;
         } else {
             r.colour += c.coeff * x.colour;
         }
-        if (c.kind == ChildRay::Kind::Transmission) r.transmit += c.transmit_factor * x.transmit;
+        if (c.kind == ChildRay::Kind::Transmission)
+            r.transmit += c.transmit_factor * x.transmit;
     }
     const FogEffect& f = record.fog;
     r.colour = f.add + f.mul * r.colour;
@@ -430,8 +445,24 @@ FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth) {
     FogEffect e;
     for (const Fog& fog : scene.fogs) {
         if (std::fabs(fog.distance) <= kPovEpsilon) continue;
-        // POV-Ray's constant and ground fog (turbulence not yet modelled).
+        // POV-Ray's constant and ground fog.
         Real density = 1;
+        Real width = depth;
+        if (fog.turbulent) {
+            // Turbulence at the middle of the stretch (scaled per axis) thins the fog,
+            // less so the longer the stretch is.
+            Point3 mid = ray.at(depth * 0.5);
+            mid = Point3{mid.x * fog.turbulence.x, mid.y * fog.turbulence.y,
+                         mid.z * fog.turbulence.z};
+            TurbulenceParams tp;
+            tp.octaves = fog.octaves;
+            tp.omega = fog.omega;
+            tp.lambda = fog.lambda;
+            Real k = std::exp(-depth / fog.distance);
+            width *= 1.0 - k * std::min(1.0, turbulence(mid, tp,
+                                                        scene.settings.noise_generator) *
+                                                 fog.turb_depth);
+        }
         if (fog.type == 2) {
             Vector3 up = fog.up;
             Real y1 = dot(ray.origin, up), y2 = dot(ray.at(depth), up);
@@ -446,7 +477,7 @@ FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth) {
                 density = 1 / (start * start + 1);
             }
         }
-        float att = float(std::exp(-depth * density / fog.distance));
+        float att = float(std::exp(-width * density / fog.distance));
         const Colour& c = fog.colour;
         att = std::max(att, c.transmit);  // minimum transmittance
         const Rgb pass = Rgb(1 - c.filter) + c.rgb * c.filter;
@@ -464,7 +495,7 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
     if (!(state.t_min < hi)) return false;
     // Most shadow rays meet only opaque blockers or nothing: find out in any order.
     bool transparent = false;
-    if (scene.opaque_blocker(ray, state.t_min, hi, transparent, ctx)) {
+    if (scene.opaque_blocker(ray, state.t_min, hi, transparent, ctx, state.light)) {
         state.blocked = true;
         state.filter = Rgb{};
         return true;
@@ -473,11 +504,11 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
         state.t_min = std::max(state.t_min, hi);
         return false;
     }
-    // See-through blockers: each crossing multiplies the light by its filter, nearest first,
-    // the next search starting 1e-3 past the previous hit as POV-Ray's restarted ray does.
-    // The ray enters or leaves each object it crosses; the stretch inside fades with the
-    // object's interior. (No adc_bailout test per layer: POV-Ray's combined shadow texture
-    // always has filter 1, so that test never fires.)
+    // See-through blockers: each crossing multiplies the light by its filter, nearest
+    // first, the next search starting 1e-3 past the previous hit as POV-Ray's restarted
+    // ray does. The ray enters or leaves each object it crosses; the stretch inside fades
+    // with the object's interior. (No adc_bailout test per layer: POV-Ray's combined
+    // shadow texture always has filter 1, so that test never fires.)
     for (int guard = 0; guard < 256 && state.t_min < hi; ++guard) {
         Hit hit;
         if (!scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx)) break;
@@ -516,6 +547,7 @@ Rgb point_shadow(const ChildRay& shadow, const PreparedScene& scene, const Ray& 
                  Real distance, RayContext& ctx) {
     ShadowState state;
     state.inside = shadow.trace.interiors;
+    state.light = shadow.light;
     shadow_segment(scene, ray, kInfinity, distance, state, ctx);
     return state.filter;
 }
@@ -524,8 +556,9 @@ float colour_distance(const Rgb& a, const Rgb& b) {
     return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
 }
 
-// POV-Ray's area light: a size1 x size2 grid over axis1/axis2 centred on the light, sampled
-// at the corners of a region and refined by quadrants; each level averages its 4 quadrants.
+// POV-Ray's area light: a size1 x size2 grid over axis1/axis2 centred on the light,
+// sampled at the corners of a region and refined by quadrants; each level averages its 4
+// quadrants.
 struct AreaSampler {
     const PreparedScene& scene;
     const ChildRay& shadow;
@@ -546,7 +579,8 @@ struct AreaSampler {
         if (area.circular && n1 > 1 && n2 > 1) {
             ju = ju / (n1 - 1) - 0.5 + 0.001;
             jv = jv / (n2 - 1) - 0.5 + 0.001;
-            Real scale = std::max(std::fabs(ju), std::fabs(jv)) / std::sqrt(ju * ju + jv * jv);
+            Real scale =
+                std::max(std::fabs(ju), std::fabs(jv)) / std::sqrt(ju * ju + jv * jv);
             offset = axis1 * (ju * scale) + axis2 * (jv * scale);
         } else {
             if (n1 > 1) offset += axis1 * (ju / (n1 - 1) - 0.5);
@@ -570,7 +604,8 @@ struct AreaSampler {
                           colour_distance(lc * s[3], lc * s[2]) > 0.1f ||
                           colour_distance(lc * s[2], lc * s[0]) > 0.1f;
             if (refine) {
-                int ul = (u1 + u2) / 2, uh = (u1 + u2 + 1) / 2;  // floor and ceil of the middle
+                int ul = (u1 + u2) / 2,
+                    uh = (u1 + u2 + 1) / 2;  // floor and ceil of the middle
                 int vl = (v1 + v2) / 2, vh = (v1 + v2 + 1) / 2;
                 s[0] = region(u1, v1, ul, vl, level + 1);
                 s[1] = region(uh, v1, u2, vl, level + 1);
@@ -584,8 +619,10 @@ struct AreaSampler {
 
 }  // namespace
 
-Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx) {
-    if (!shadow.area) return point_shadow(shadow, scene, shadow.trace.ray, shadow.t_max, ctx);
+Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow,
+                         RayContext& ctx) {
+    if (!shadow.area)
+        return point_shadow(shadow, scene, shadow.trace.ray, shadow.t_max, ctx);
     const Light& light = scene.scene().lights[shadow.light];
     const AreaLight& area = *light.area;
     const Point3 at = shadow.trace.ray.origin;
@@ -594,7 +631,8 @@ Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, Ray
         // Face the lit point: both axes perpendicular to the light ray, axis1's length.
         Vector3 dir = normalize(light.location - at);
         Real len = length(axis1);
-        Vector3 up = std::fabs(std::fabs(dir.z) - 1) < 0.01 ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
+        Vector3 up =
+            std::fabs(std::fabs(dir.z) - 1) < 0.01 ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
         axis1 = normalize(cross(dir, up));
         axis2 = normalize(cross(dir, axis1)) * len;
         axis1 *= len;
@@ -604,7 +642,8 @@ Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, Ray
     const int n1 = std::max(1, area.size1), n2 = std::max(1, area.size2);
     grid.resize(size_t(n1) * n2);
     done.assign(size_t(n1) * n2, 0);
-    AreaSampler sampler{scene, shadow, ctx, light, area, axis1, axis2, at, grid, done, n1, n2};
+    AreaSampler sampler{scene, shadow, ctx,  light, area, axis1,
+                        axis2, at,     grid, done,  n1,   n2};
     return sampler.region(0, 0, n1 - 1, n2 - 1, 0);
 }
 
@@ -620,7 +659,8 @@ TraceResult fogged(const Scene& sc, const Ray& ray, TraceResult r) {
 }  // namespace
 
 TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
-    // POV-Ray's ComputeSky: the sky_sphere's pigments (last one on top) over the background.
+    // POV-Ray's ComputeSky: the sky_sphere's pigments (last one on top) over the
+    // background.
     const Scene& sc = scene.scene();
     const bool alpha = scene.alpha_background();
     const bool sky = sc.sky_sphere && !sc.sky_sphere->pigments.empty();
@@ -633,8 +673,8 @@ TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
         if (!sky) return fogged(sc, ray, {bg.rgb, 0.0f});
         Rgb col, fil(1.0f);
         float ff = 1, ft = 1, trans = 1;
-        for (auto it = sc.sky_sphere->pigments.rbegin(); it != sc.sky_sphere->pigments.rend();
-             ++it) {
+        for (auto it = sc.sky_sphere->pigments.rbegin();
+             it != sc.sky_sphere->pigments.rend(); ++it) {
             Colour c = evaluate_pigment(*it, p, scene.pattern_env());
             col += c.rgb * (trans * (1 - c.filter - c.transmit));
             fil *= c.rgb;
@@ -646,16 +686,16 @@ TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
     }
     Rgb col, fil(1.0f);
     if (sky) {
-        for (auto it = sc.sky_sphere->pigments.rbegin(); it != sc.sky_sphere->pigments.rend();
-             ++it) {
+        for (auto it = sc.sky_sphere->pigments.rbegin();
+             it != sc.sky_sphere->pigments.rend(); ++it) {
             Colour c = evaluate_pigment(*it, p, scene.pattern_env());
             col += c.rgb * (1 - c.filter - c.transmit) * fil;
             fil *= rgb_transm(c);
         }
     }
     // The background acts as one more uniform layer. Measured with POV-Ray 3.7.0.10: its
-    // transmit darkens it even without +UA (background rgbt <0.9,0.9,0.1,0.6> renders 0.36),
-    // as if composited over black.
+    // transmit darkens it even without +UA (background rgbt <0.9,0.9,0.1,0.6> renders
+    // 0.36), as if composited over black.
     col += bg.rgb * (1 - bg.filter - bg.transmit) * fil;
     fil *= rgb_transm(bg);
     return fogged(sc, ray, {col, std::min(1.0f, std::fabs(fil.grey()))});

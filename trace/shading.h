@@ -1,20 +1,24 @@
 // Shading, written once as two steps so that every back end uses the same code:
 //
-//   spawn_children():   from a hit, the local colour and the child rays to trace (one shadow
+//   spawn_children():   from a hit, the local colour and the child rays to trace (one
+//   shadow
 //                       ray per light, a reflection per reflective texture layer, one
 //                       refraction/transmission ray), each with the coefficient it
 //                       contributes with;
 //   combine_children(): from the children's results, the colour.
 //
-// The single-process tracer calls them recursively; a black box of the distributed back end
-// calls spawn_children() when a ray hits and combine_children() when the results are in.
+// The single-process tracer calls them recursively; a black box of the distributed back
+// end calls spawn_children() when a ray hits and combine_children() when the results are
+// in.
 //
 // Linearity: colour = fog.add + fog.mul * (local + sum_i coeff_i * result_i), where every
 // coeff_i and the fog terms are fixed at spawn time, so most children can forward
-// `parent weight * coeff` to the pixel without a waiting parent. The non-linear cases are:
+// `parent weight * coeff` to the pixel without a waiting parent. The non-linear cases
+// are:
 //   - reflection children with `exponent` != 1: coeff * pow(result, 1/exponent);
 //   - the alpha channel (transmit): transmit_factor * child transmit, scaled by fog;
-//   - area-light shadow children: one child stands for POV-Ray's whole adaptive sample grid,
+//   - area-light shadow children: one child stands for POV-Ray's whole adaptive sample
+//   grid,
 //     whose refinement depends on sample results (evaluated as a unit by
 //     shadow_transmittance()).
 // Shadow children of point lights return a transmittance (product of filters and interior
@@ -28,7 +32,8 @@
 
 namespace povwall::trace {
 
-// The objects a ray is inside of, innermost last (for the relative IOR and interior fade).
+// The objects a ray is inside of, innermost last (for the relative IOR and interior
+// fade).
 struct InteriorStack {
     static constexpr int kCapacity = 8;
     const Material* items[kCapacity] = {};
@@ -44,7 +49,8 @@ struct InteriorStack {
     void remove(const Object* o) {
         for (int i = 0; i < size; ++i) {
             if (items[i]->object == o) {
-                for (int j = i; j + 1 < size && j + 1 < kCapacity; ++j) items[j] = items[j + 1];
+                for (int j = i; j + 1 < size && j + 1 < kCapacity; ++j)
+                    items[j] = items[j + 1];
                 --size;
                 return;
             }
@@ -55,9 +61,9 @@ struct InteriorStack {
 
 // A ray to trace, with what exact POV-Ray semantics need to know about it.
 struct TraceRay {
-    Ray ray;            // unit direction
-    int depth = 1;      // 1 for camera rays; refused when above max_trace_level
-    float weight = 1;   // adc_bailout weight
+    Ray ray;           // unit direction
+    int depth = 1;     // 1 for camera rays; refused when above max_trace_level
+    float weight = 1;  // adc_bailout weight
     RayUse use = RayUse::Camera;
     InteriorStack interiors;
 };
@@ -72,14 +78,18 @@ struct ChildRay {
     TraceRay trace;
     Real t_max = kInfinity;  // shadow rays: distance to the light
     int light = -1;
-    Rgb coeff{1.0f};         // contribution factor of the child's result
-    float exponent = 1;      // reflection: result is coeff * pow(child, 1/exponent)
+    Rgb coeff{1.0f};            // contribution factor of the child's result
+    float exponent = 1;         // reflection: result is coeff * pow(child, 1/exponent)
     float transmit_factor = 0;  // transmission: share of the child's transmit that shows
-    // Area-light shadow: the child stands for POV-Ray's whole adaptive sample grid of light
-    // `light`; its result is the grid's averaged transmittance. The grid refinement depends
-    // on sample results (a documented non-linear case), so it is evaluated as one unit.
+    // Area-light shadow: the child stands for POV-Ray's whole adaptive sample grid of
+    // light `light`; its result is the grid's averaged transmittance. The grid refinement
+    // depends on sample results (a documented non-linear case), so it is evaluated as one
+    // unit.
     bool area = false;
     Rgb light_colour{1.0f};  // attenuated light colour (area-light refinement threshold)
+    // The render plan proved nothing can block this shadow ray: its result is 1 without a
+    // query (kept as a child so the colour is summed exactly as when traced).
+    bool unoccluded = false;
 };
 
 // Fog along a ray of known length: the ray's colour c becomes add + mul * c (affine, so
@@ -118,17 +128,20 @@ struct ShadowState {
     Real last_hit = 0;  // distance of the previous crossing (fade is per stretch)
     bool blocked = false;
     InteriorStack inside;  // start with the lit ray's interiors
+    int light = -1;        // the light it goes to (for the box's last-blocker cache)
 };
-// Advances `state` over hits with t in [state.t_min, min(segment_end, light_distance - 1e-3)).
-// Returns true once the light is fully blocked.
+// Advances `state` over hits with t in [state.t_min, min(segment_end, light_distance -
+// 1e-3)). Returns true once the light is fully blocked.
 bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
                     Real light_distance, ShadowState& state, RayContext& ctx);
 
 // Transmittance toward a light (shadow ray), POV-Ray's rules: hits in (1e-3, distance -
-// 1e-3), filters multiply, opaque blocks, interior fade between entering and leaving. For an
-// area light (`shadow.area`), the adaptive grid average (TraceAreaLightShadowRay's rules:
-// corners first, quadrants refined while level < adaptive or corners differ by > 0.1).
-Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow, RayContext& ctx);
+// 1e-3), filters multiply, opaque blocks, interior fade between entering and leaving. For
+// an area light (`shadow.area`), the adaptive grid average (TraceAreaLightShadowRay's
+// rules: corners first, quadrants refined while level < adaptive or corners differ by >
+// 0.1).
+Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow,
+                         RayContext& ctx);
 
 // POV-Ray 3.7's interior fade after `distance` inside a medium (camera/secondary rays and
 // shadow rays differ in one test, hence the flag).

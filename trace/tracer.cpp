@@ -33,8 +33,12 @@ TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
         const ChildRay child = records_[level].children[i];
         TraceResult r;
         if (child.kind == ChildRay::Kind::Shadow) {
-            ++counters_.shadow;
-            r.colour = shadow_transmittance(scene_, child, ctx_);
+            if (child.unoccluded) {
+                r.colour = Rgb(1.0f);
+            } else {
+                ++counters_.shadow;
+                r.colour = shadow_transmittance(scene_, child, ctx_);
+            }
         } else {
             r = trace_at(child.trace, level + 1);
         }

@@ -8,16 +8,23 @@ namespace povwall::trace {
 
 struct TraceCounters {
     uint64_t camera = 0, reflected = 0, refracted = 0, shadow = 0;
+    TraceCounters& operator+=(const TraceCounters& o) {
+        camera += o.camera;
+        reflected += o.reflected;
+        refracted += o.refracted;
+        shadow += o.shadow;
+        return *this;
+    }
 };
 
 class Tracer {
-public:
+  public:
     explicit Tracer(const PreparedScene& scene);
     TraceResult trace(const TraceRay& ray);
     const TraceCounters& counters() const { return counters_; }
     uint64_t intersection_tests() const { return ctx_.tests; }
 
-private:
+  private:
     TraceResult trace_at(const TraceRay& ray, size_t level);
 
     const PreparedScene& scene_;

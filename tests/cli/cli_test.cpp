@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <string>
 
 #include "core/image.h"
@@ -88,10 +89,11 @@ TEST(Cli, UnknownIdentifierAndMissingIncludeAreLocated) {
 }
 
 TEST(Cli, ParseReportsContentsUnsupportedAndErrors) {
-    fs::path ok = write_scene("parse_ok.pov",
-                              "#version 3.7;\n#declare I = 0;\n#while (I < 3) sphere { x * I, 0.5 }"
-                              " #declare I = I + 1; #end\nunion { box { 0, 1 } cone { 0, 1, y, 0 } }\n"
-                              "light_source { <1, 2, 3> color rgb 1 }\n");
+    fs::path ok = write_scene(
+        "parse_ok.pov",
+        "#version 3.7;\n#declare I = 0;\n#while (I < 3) sphere { x * I, 0.5 }"
+        " #declare I = I + 1; #end\nunion { box { 0, 1 } cone { 0, 1, y, 0 } }\n"
+        "light_source { <1, 2, 3> color rgb 1 }\n");
     RunResult r = run("parse " + ok.string() + " --json");
     ASSERT_EQ(r.code, 0) << r.err;
     nlohmann::json j = nlohmann::json::parse(r.out);
@@ -102,7 +104,8 @@ TEST(Cli, ParseReportsContentsUnsupportedAndErrors) {
     EXPECT_EQ(j["shapes"]["cone"], 1);
     EXPECT_EQ(j["lights"], 1);
     EXPECT_DOUBLE_EQ(j["language_version"].get<double>(), 3.7);
-    fs::path unsupported = write_scene("parse_text.pov", "sphere { 0, 1 }\n  text { ttf \"a.ttf\" \"x\" 1, 0 }\n");
+    fs::path unsupported = write_scene(
+        "parse_text.pov", "sphere { 0, 1 }\n  text { ttf \"a.ttf\" \"x\" 1, 0 }\n");
     r = run("parse " + unsupported.string() + " --json");
     EXPECT_EQ(r.code, 3);
     j = nlohmann::json::parse(r.out);
@@ -242,6 +245,22 @@ TEST(Cli, FormatSwitchWinsOverExtensionAndSixteenBits) {
         << r.err;
 }
 
+TEST(Cli, RadianceHdrHoldsLinearColourWithoutAlpha) {
+    fs::path scene = write_scene("hdr.pov", kGreyScene);
+    fs::path out = scratch() / "radiance";
+    fs::remove(scratch() / "radiance.hdr");
+    ASSERT_EQ(
+        run("+I" + scene.string() + " +O" + out.string() + " +W3 +H2 +FH +UA -GA").code,
+        0);
+    fs::path hdr = scratch() / "radiance.hdr";  // POV-Ray's extension for +FH
+    EXPECT_EQ(head_bytes(hdr, 10), "#?RADIANCE");
+    povwall::Image img = povwall::output::read_image(hdr.string());
+    EXPECT_EQ(img.pixel(2, 1)[0], 0.5f);  // exact in RGBE
+    EXPECT_EQ(img.pixel(2, 1)[1], 0.0f);
+    EXPECT_EQ(img.pixel(2, 1)[2], 1.0f);
+    EXPECT_EQ(img.pixel(2, 1)[3], 1.0f);  // no alpha channel in the file: opaque
+}
+
 TEST(Cli, PartialRenderByRowNumbersAndFractions) {
     fs::path scene = write_scene("part.pov", kGreyScene);
     fs::path out = scratch() / "part.png";
@@ -360,3 +379,264 @@ TEST(Cli, CompareReportsPovRayFailure) {
 }
 
 }  // namespace
+
+namespace povwall_cli_plan {
+
+TEST(Cli, ExplainPrintsThePlanAndStatsShowWhatWasLeftOut) {
+    fs::path scene = write_scene("plan.pov", R"(
+camera { location <0, 0, -4> look_at 0 }
+light_source { <2, 4, -3> color rgb 1 }
+sphere { 0, 1 pigment { color rgb <1, 0.6, 0.3> } }
+)");
+    fs::path out = scratch() / "plan.png", stats = scratch() / "plan.json";
+    RunResult r = run("render " + scene.string() +
+                      " -W 16 -H 12 -q --threads 2 --explain --worker-memory 1G -o " +
+                      out.string() + " --stats " + stats.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(
+        r.out,
+        "render plan for " + scene.string() +
+            ":\n"
+            "  no reflective materials: reflection rays off\n"
+            "  no transparent materials: transmission and refraction rays off\n"
+            "  light 1 (point light): the only object is convex and cannot shadow "
+            "itself: no shadow rays\n"
+            "  points a light does not reach (back faces, outside spot cones): no "
+            "shadow ray\n"
+            "  1 bounded primitives (< 24): no octree, a flat list\n"
+            "  shading is linear: contributions go straight to the pixel, no parent "
+            "table\n"
+            "  scene 0.2 KB fits the 1.0 GB worker budget: one process, no walls; 2 "
+            "threads take image rows as they finish (screen subdivision, one shared "
+            "scene)\n");
+    std::ifstream in(stats);
+    auto j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["rays"]["shadow"], 0);
+    EXPECT_EQ(j["rays"]["reflected"], 0);
+    EXPECT_EQ(j["rays"]["refracted"], 0);
+    EXPECT_EQ(j["plan"]["octree"], "flat list");
+    EXPECT_EQ(j["plan"]["mode"], "single");
+}
+
+TEST(Cli, BadPlanOptionsExitTwo) {
+    fs::path scene = write_scene("plan2.pov", "sphere { 0, 1 }\n");
+    RunResult r = run("render " + scene.string() + " -W 8 -H 8 --worker-memory 12Q");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(
+        r.err.rfind("povwall: error: bad memory size '12Q' (expected e.g. 512M or 2G)\n",
+                    0),
+        0u)
+        << r.err;
+    r = run("render " + scene.string() + " -W 8 -H 8 --boxes 4x4");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(
+        r.err.rfind(
+            "povwall: error: bad --boxes value '4x4' (expected NxNxN, N or auto)\n", 0),
+        0u)
+        << r.err;
+}
+
+}  // namespace povwall_cli_plan
+
+namespace povwall_cli_screen {
+
+const char* kScreenScene = R"(
+camera { location <0, 2, -6> look_at <0, 0.5, 0> }
+light_source { <-3, 6, -4> color rgb 1 }
+plane { y, 0 pigment { checker color rgb 1 color rgb 0.2 } finish { reflection 0.2 } }
+sphere { <0, 1, 0>, 1 pigment { rgbf <1, 0.9, 0.8, 0.8> } interior { ior 1.4 } }
+sphere { <1.6, 0.5, 1>, 0.5 pigment { color rgb <0.2, 0.5, 1> } finish { phong 0.8 } }
+)";
+
+povwall::Image read_exr(const fs::path& p) {
+    return povwall::output::read_image(p.string());
+}
+
+TEST(Cli, ScreenSubdivisionWorkersGiveTheSingleProcessImage) {
+    fs::path scene = write_scene("screen.pov", kScreenScene);
+    fs::path single = scratch() / "single.exr", screen = scratch() / "screen.exr";
+    std::string common = "render " + scene.string() + " -W 70 -H 50 -q ";
+    ASSERT_EQ(run(common + "--mode single -o " + single.string()).code, 0);
+    // 3 workers, 50 tiles of 32x32 would be 6: the partial last row/column tiles too.
+    RunResult r = run(common + "--mode screen --procs 3 --explain -o " + screen.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(
+        r.out.find("  --mode screen: screen subdivision, 3 worker processes each hold "
+                   "the whole scene and take tiles as they finish\n"),
+        std::string::npos)
+        << r.out;
+    povwall::Image a = read_exr(single), b = read_exr(screen);
+    ASSERT_EQ(a.rgba.size(), b.rgba.size());
+    EXPECT_EQ(a.rgba, b.rgba);  // bit-identical: the same code per pixel
+}
+
+TEST(Cli, DeadScreenWorkerIsNamedAndNoImageIsWritten) {
+    fs::path scene = write_scene("screen2.pov", kScreenScene);
+    fs::path out = scratch() / "dead.png";
+    setenv("POVWALL_FAULT_WORKER_EXIT_AFTER", "1", 1);
+    RunResult r = run("render " + scene.string() +
+                      " -W 70 -H 50 -q --mode screen --procs 2 -o " + out.string());
+    unsetenv("POVWALL_FAULT_WORKER_EXIT_AFTER");
+    EXPECT_EQ(r.code, 2);
+    std::smatch m;
+    EXPECT_TRUE(
+        std::regex_match(r.err, m,
+                         std::regex("povwall: error: screen worker [12] \\(pid [0-9]+\\) "
+                                    "stopped answering: exit code 3 \\(no image "
+                                    "written\\)\n")))
+        << r.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace povwall_cli_screen
+
+namespace povwall_cli_interrupt {
+
+TEST(Cli, InterruptedRenderSaysSoAndLeavesNoFile) {
+    fs::path dir = scratch() / "interrupt";
+    fs::create_directories(dir);
+    fs::path out = dir / "walls.png";
+    fs::path err = dir / "err";
+    // The demo at 1500x1500 on one thread takes seconds: interrupt it after 0.5 s.
+    std::string cmd = std::string(POVWALL_BINARY) + " render " + POVWALL_SOURCE_DIR +
+                      "/scenes/demo/walls.pov -W 1500 -H 1500 --threads 1 -q -o " +
+                      out.string() + " 2>" + err.string() +
+                      " & pid=$!; sleep 0.5; kill -INT $pid; wait $pid";
+    int status = std::system(("sh -c '" + cmd + "'").c_str());
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    std::ifstream in(err);
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    EXPECT_EQ(text, "\npovwall: interrupted: no image written\n");
+    size_t files = 0;
+    for (const auto& e : fs::directory_iterator(dir)) files += e.path() != err;
+    EXPECT_EQ(files, 0u);  // no image, no temporary
+}
+
+}  // namespace povwall_cli_interrupt
+
+// image_map files: a missing one is located at its name; an unreadable one too, with the
+// image library's reason; exit 2 and no output file either way.
+TEST(Cli, MissingOrUnreadableImageFileIsLocated) {
+    fs::path scene = write_scene("img.pov",
+                                 "camera { location -3*z }\nplane { z, 0\n"
+                                 "  pigment { image_map { png \"no_such.png\" } } }\n");
+    fs::path out = scratch() / "img.png";
+    fs::remove(out);
+    RunResult r = run("render " + scene.string() + " -o " + out.string() + " -W 8 -H 8");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err, scene.string() +
+                         ":3:29: error: cannot find image file \"no_such.png\"\n"
+                         "  pigment { image_map { png \"no_such.png\" } } }\n"
+                         "                            ^~~~~~~~~~~~~\n");
+    EXPECT_FALSE(fs::exists(out));
+
+    std::ofstream(scratch() / "garbage.png") << "not an image";
+    fs::path bad = write_scene("img2.pov",
+                               "camera { location -3*z }\nplane { z, 0 normal {\n"
+                               "  bump_map { \"garbage.png\" } } }\n");
+    r = run("render " + bad.string() + " -o " + out.string() + " -W 8 -H 8");
+    EXPECT_EQ(r.code, 2);
+    const std::string head = bad.string() + ":3:14: error: cannot read '" +
+                             (scratch() / "garbage.png").string() + "'";
+    EXPECT_EQ(r.err.substr(0, head.size()), head) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+namespace povwall_cli_batch {
+
+const char* kSpin = R"(
+camera { location <0, 2, -5> look_at 0 }
+light_source { <3, 5, -4> color rgb 1 }
+sphere { <cos(clock * 2 * pi), 0, sin(clock * 2 * pi)>, 0.5 pigment { color rgb <1, 0.5, 0.2> } }
+box { -1, 1 scale <2, 0.05, 2> translate -0.6 * y pigment { checker color rgb 1 color rgb frame_number / 50 } }
+)";
+
+std::string slurp_file(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(Cli, AnimationFramesAreNumberedAndClockedAsPovRay) {
+    fs::path dir = scratch() / "anim";
+    fs::create_directories(dir);
+    fs::path scene =
+        write_scene("spin_numbers.pov",
+                    "#debug concat(str(frame_number, 0, 0), \":\", str(clock, 0, 4), "
+                    "\":\", str(clock_delta, 0, 4), \" \")\nsphere { 0, 1 }\n");
+    RunResult r =
+        run("render " + scene.string() + " -W 4 -H 3 +KFI2 +KFF12 +KC +SF10 +EF12 -o " +
+            (dir / "c.png").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    // Cyclic: 11 frames share the clock range 0..1 in 11 steps; numbers padded to 2
+    // digits.
+    EXPECT_NE(r.err.find("10:0.7273:0.0909 "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("12:0.9091:0.0909 "), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "c10.png") && fs::exists(dir / "c11.png") &&
+                fs::exists(dir / "c12.png"));
+    EXPECT_FALSE(fs::exists(dir / "c09.png"));
+}
+
+TEST(Cli, InterruptedBatchResumesToAllFramesEachAsRenderedAlone) {
+    fs::path dir = scratch() / "batch";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "run");
+    fs::create_directories(dir / "alone");
+    fs::path scene = write_scene("spin.pov", kSpin);
+    const std::string frames = " +KFF50 -W 160 -H 120 -q --threads 1 -o ";
+    std::ofstream(dir / "jobs.txt")
+        << scene.string() << frames << (dir / "run" / "f.png").string() << "\n";
+    // Start the batch in its own process group, interrupt the group (as Ctrl-C does) once
+    // a few frames are written, then resume.
+    const std::string batch =
+        std::string(POVWALL_BINARY) + " batch " + (dir / "jobs.txt").string();
+    std::string cmd =
+        "setsid " + batch + " >" + (dir / "out1").string() + " 2>" +
+        (dir / "err1").string() + " & pid=$!; while [ $(ls " + (dir / "run").string() +
+        " | grep -c png) -lt 5 ]; do sleep 0.02; done; /bin/kill -s INT -- -$pid; wait $pid";
+    int status = std::system(("sh -c '" + cmd + "'").c_str());
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    EXPECT_NE(slurp_file(dir / "err1").find("povwall: batch interrupted"),
+              std::string::npos);
+    size_t before = 0;
+    for (const auto& e : fs::directory_iterator(dir / "run")) {
+        EXPECT_EQ(e.path().extension(), ".png") << e.path();  // no temporary left behind
+        ++before;
+    }
+    ASSERT_GE(before, 5u);
+    ASSERT_LT(before, 50u);
+    const auto kept_time = fs::last_write_time(dir / "run" / "f01.png");
+    RunResult r = run("batch --resume " + (dir / "jobs.txt").string());
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    EXPECT_NE(r.out.find("1 jobs: 1 ok, 0 failed"), std::string::npos) << r.out;
+    EXPECT_EQ(fs::last_write_time(dir / "run" / "f01.png"),
+              kept_time);  // kept, not redone
+    // The same 50 frames rendered in one uninterrupted run.
+    r = run("render " + scene.string() + frames + (dir / "alone" / "f.png").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (int f = 1; f <= 50; ++f) {
+        char name[16];
+        std::snprintf(name, sizeof name, "f%02d.png", f);
+        ASSERT_TRUE(fs::exists(dir / "run" / name)) << name;
+        EXPECT_EQ(slurp_file(dir / "run" / name), slurp_file(dir / "alone" / name))
+            << name;
+    }
+}
+
+TEST(Cli, BatchKeepsGoingPastAFailingJobAndExitsOne) {
+    fs::path dir = scratch() / "batch2";
+    fs::create_directories(dir);
+    fs::path scene = write_scene("ok.pov", "sphere { 0, 1 pigment { color rgb 1 } }\n");
+    std::ofstream(dir / "jobs.txt")
+        << "# two renders and a missing scene\n"
+        << scene.string() << " -W 8 -H 6 -q -o " << (dir / "a.png").string() << "\n"
+        << (dir / "missing.pov").string() << " -q\n"
+        << scene.string() << " -W 8 -H 6 -q -o " << (dir / "b.png").string() << "\n";
+    RunResult r = run("batch " + (dir / "jobs.txt").string());
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(fs::exists(dir / "a.png"));
+    EXPECT_TRUE(fs::exists(dir / "b.png"));
+    EXPECT_NE(r.out.find("failed(2)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("3 jobs: 2 ok, 1 failed"), std::string::npos) << r.out;
+}
+
+}  // namespace povwall_cli_batch

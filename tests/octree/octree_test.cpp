@@ -1,4 +1,5 @@
 #include "octree/octree.h"
+#include "octree/spatial_order.h"
 
 #include <gtest/gtest.h>
 
@@ -500,6 +501,28 @@ TEST(Mailbox, FirstVisitPerRay) {
     EXPECT_TRUE(m.first_visit(3));
     m.next_ray();
     EXPECT_TRUE(m.first_visit(2));
+}
+
+}  // namespace
+}  // namespace povwall::octree
+
+namespace povwall::octree {
+namespace {
+
+TEST(MortonOrder, CornersInZOrderTiesStableInfiniteLast) {
+    auto box = [](Real x, Real y, Real z) {
+        return Bounds3{{x - 0.1, y - 0.1, z - 0.1}, {x + 0.1, y + 0.1, z + 0.1}};
+    };
+    // Input: the 8 corners of a cube in reverse Z order, an unbounded plane, and a copy of
+    // corner (0,0,0) that must stay after the first one.
+    std::vector<Bounds3> b;
+    for (int i = 7; i >= 0; --i) b.push_back(box(i & 1, (i >> 1) & 1, (i >> 2) & 1));
+    b.push_back(Bounds3::everything());
+    b.push_back(box(0, 0, 0));
+    std::vector<uint32_t> order = morton_order(b);
+    // x is the lowest bit of the code, then y, then z: corner i comes i-th.
+    EXPECT_EQ(order, (std::vector<uint32_t>{7, 9, 6, 5, 4, 3, 2, 1, 0, 8}));
+    EXPECT_TRUE(morton_order({}).empty());
 }
 
 }  // namespace

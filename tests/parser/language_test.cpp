@@ -296,3 +296,46 @@ TEST(BadInput, LocatedErrorsInsteadOfCrashesOrHangs) {
 
 }  // namespace
 }  // namespace povwall::parser
+
+namespace povwall::parser {
+namespace {
+
+// POV-Ray 3.7's input gamma rules, with a stand-in reader giving one pixel of 0.5:
+// #version 3.7 decodes PNG as sRGB and leaves PPM linear; bump_map reads raw; an explicit
+// gamma wins; a 3.6 scene without assumed_gamma reads raw; assumed_gamma 2.2 re-encodes.
+TEST(ImageMap, InputGammaRules) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::temp_directory_path() / "povwall_parser_image_test";
+    fs::create_directories(dir);
+    for (const char* f : {"a.png", "a.ppm"}) std::ofstream(dir / f) << "x";
+    ParseOptions o;
+    o.image_reader = [](const std::string& path) {
+        StoredImage s;
+        s.pixels = Image(1, 1);
+        for (int c = 0; c < 4; ++c) s.pixels.rgba[size_t(c)] = 0.5f;
+        s.format = path.substr(path.size() - 3) == "png" ? "png" : "pnm";
+        return s;
+    };
+    auto red = [&](const std::string& head, const std::string& item) {
+        std::ofstream(dir / "s.pov") << head << "\nplane { z, 0 " << item << " }\n";
+        Scene s = parse_scene_file((dir / "s.pov").string(), o);
+        const Texture& t = s.objects.at(0).texture.at(0);
+        const PatternSpec& p = t.normal ? t.normal->pattern : t.pigment.pattern;
+        EXPECT_EQ(p.kind, PatternKind::ImageMap);
+        return p.image->pixels->rgbft[0];
+    };
+    const std::string v37 = "#version 3.7;";
+    EXPECT_FLOAT_EQ(red(v37, "pigment { image_map { png \"a.png\" } }"), 0.21404114f);
+    EXPECT_FLOAT_EQ(red(v37, "pigment { image_map { ppm \"a.ppm\" } }"), 0.5f);
+    EXPECT_FLOAT_EQ(red(v37, "normal { bump_map { png \"a.png\" } }"), 0.5f);
+    EXPECT_FLOAT_EQ(red(v37, "pigment { image_map { png \"a\" gamma 2 } }"), 0.25f);
+    EXPECT_FLOAT_EQ(red("#version 3.6;", "pigment { image_map { png \"a.png\" } }"),
+                    0.5f);
+    EXPECT_FLOAT_EQ(red(v37 + " global_settings { assumed_gamma 2.2 }",
+                        "pigment { image_map { png \"a.png\" } }"),
+                    std::pow(0.21404114f, 1 / 2.2f));
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace povwall::parser

@@ -1,12 +1,14 @@
 // Ray-primitive intersections through the prepared scene: exact distances and normals,
 // transforms, grazing rays, rays starting inside, POV-Ray's minimum depths.
+#include "trace/intersect.h"
+
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 
 #include "tests/trace/scene_builder.h"
-#include "trace/intersect.h"
 #include "trace/prepared_scene.h"
 
 namespace povwall::trace {
@@ -50,17 +52,20 @@ TEST(Intersect, SphereFrontHitDistanceAndNormal) {
 
 TEST(Intersect, SphereMissJustOutside) {
     Hit h;
-    EXPECT_FALSE(shoot(one(object(Sphere{{0, 0, 5}, 1})), {{1.000001, 0, 0}, {0, 0, 1}}, h));
+    EXPECT_FALSE(
+        shoot(one(object(Sphere{{0, 0, 5}, 1})), {{1.000001, 0, 0}, {0, 0, 1}}, h));
 }
 
 TEST(Intersect, SphereGrazingRays) {
-    // Half chord exactly 0: POV-Ray needs it above EPSILON (1e-10), so a tangent ray misses
-    // (otherwise it would enter the sphere and bounce inside; see interior/atten1.pov).
+    // Half chord exactly 0: POV-Ray needs it above EPSILON (1e-10), so a tangent ray
+    // misses (otherwise it would enter the sphere and bounce inside; see
+    // interior/atten1.pov).
     Hit h;
     EXPECT_FALSE(shoot(one(object(Sphere{{0, 0, 5}, 1})), {{1, 0, 0}, {0, 0, 1}}, h));
     Object scaled = object(Sphere{{0, 0, 0}, 1}, Transform::scale({2, 2, 2}));
     EXPECT_FALSE(shoot(one(scaled), {{0, 2, -10}, {0, 0, 1}}, h));
-    // Just inside the rim it hits, at the half-chord distance before the closest approach.
+    // Just inside the rim it hits, at the half-chord distance before the closest
+    // approach.
     ASSERT_TRUE(shoot(one(object(Sphere{{0, 0, 5}, 1})), {{0.999, 0, 0}, {0, 0, 1}}, h));
     EXPECT_NEAR(h.t, 5 - std::sqrt(1 - 0.999 * 0.999), 1e-12);
 }
@@ -75,10 +80,12 @@ TEST(Intersect, SphereFromInsideHitsFarSide) {
 TEST(Intersect, HitsCloserThanMinIsectDepthAreIgnored) {
     // Surface 5e-5 ahead (< MIN_ISECT_DEPTH 1e-4): the next crossing is returned.
     Hit h;
-    ASSERT_TRUE(shoot(one(object(Sphere{{0, 0, 5}, 1})), {{0, 0, 4 - 5e-5}, {0, 0, 1}}, h));
+    ASSERT_TRUE(
+        shoot(one(object(Sphere{{0, 0, 5}, 1})), {{0, 0, 4 - 5e-5}, {0, 0, 1}}, h));
     EXPECT_NEAR(h.t, 2 + 5e-5, 1e-12);
     // 2e-4 ahead is accepted.
-    ASSERT_TRUE(shoot(one(object(Sphere{{0, 0, 5}, 1})), {{0, 0, 4 - 2e-4}, {0, 0, 1}}, h));
+    ASSERT_TRUE(
+        shoot(one(object(Sphere{{0, 0, 5}, 1})), {{0, 0, 4 - 2e-4}, {0, 0, 1}}, h));
     EXPECT_NEAR(h.t, 2e-4, 1e-12);
 }
 
@@ -92,7 +99,8 @@ TEST(Intersect, ScaledTranslatedSphere) {
     ASSERT_TRUE(shoot(s, {{0, 10, 5}, {0, -1, 0}}, h));
     EXPECT_NEAR(h.t, 8.0, 1e-12);
     expect_vec(h.normal, {0, 1, 0});
-    // Off-axis on the ellipsoid: x = 0.6 gives y = 2 * 0.8 = 1.6, normal ~ (0.6, 0.8/2, 0).
+    // Off-axis on the ellipsoid: x = 0.6 gives y = 2 * 0.8 = 1.6, normal ~ (0.6, 0.8/2,
+    // 0).
     ASSERT_TRUE(shoot(s, {{0.6, 10, 5}, {0, -1, 0}}, h));
     EXPECT_NEAR(h.t, 10 - 1.6, 1e-12);
     expect_vec(h.normal, normalize(Vector3{0.6, 0.4, 0}), 1e-12);
@@ -119,8 +127,9 @@ TEST(Intersect, BoxFacesFromOutsideAndInside) {
 
 TEST(Intersect, RotatedBox) {
     // Unit cube rotated 45 degrees about y: the corner points at the viewer.
-    Scene s = one(object(Box{{-1, -1, -1}, {1, 1, 1}},
-                         Transform::rotate({0, 45, 0}).then(Transform::translate({0, 0, 10}))));
+    Scene s =
+        one(object(Box{{-1, -1, -1}, {1, 1, 1}},
+                   Transform::rotate({0, 45, 0}).then(Transform::translate({0, 0, 10}))));
     Hit h;
     ASSERT_TRUE(shoot(s, {{0, 0.5, 0}, {0, 0, 1}}, h));
     EXPECT_NEAR(h.t, 10 - std::sqrt(2.0), 1e-12);
@@ -141,8 +150,9 @@ TEST(Intersect, PlaneFromAboveAndParallel) {
 
 TEST(Intersect, TransformedPlane) {
     // plane { y, 0 } rotated <-90,0,0> (y goes to -z, left-handed) and moved to z = 3.
-    Scene s = one(object(Plane{{0, 1, 0}, 0},
-                         Transform::rotate({-90, 0, 0}).then(Transform::translate({0, 0, 3}))));
+    Scene s =
+        one(object(Plane{{0, 1, 0}, 0},
+                   Transform::rotate({-90, 0, 0}).then(Transform::translate({0, 0, 3}))));
     Hit h;
     ASSERT_TRUE(shoot(s, {{0, 0, 0}, {0, 0, 1}}, h));
     EXPECT_NEAR(h.t, 3.0, 1e-12);
@@ -170,7 +180,8 @@ TEST(Intersect, NoImageObjectsAreInvisibleToCameraRays) {
 
 TEST(Intersect, ClosestOfManyThroughTheOctree) {
     Scene s;
-    for (int i = 0; i < 200; ++i) s.objects.push_back(object(Sphere{{0, 0, 10.0 + i}, 0.25}));
+    for (int i = 0; i < 200; ++i)
+        s.objects.push_back(object(Sphere{{0, 0, 10.0 + i}, 0.25}));
     Hit h;
     ASSERT_TRUE(shoot(s, {{0, 0, 0}, {0, 0, 1}}, h));
     EXPECT_DOUBLE_EQ(h.t, 9.75);
@@ -189,7 +200,7 @@ TEST(Intersect, CylinderSideAndCaps) {
     expect_vec(h.normal, {0, 1, 0});
     Scene open = one(object(Cylinder{{0, 0, 0}, {0, 2, 0}, 1, true}));
     EXPECT_FALSE(shoot(open, {{0.5, 5, 0}, {0, -1, 0}}, h));  // no caps: through the tube
-    ASSERT_TRUE(shoot(open, {{0, 1, 0}, {1, 0, 0}}, h));       // from inside: the wall
+    ASSERT_TRUE(shoot(open, {{0, 1, 0}, {1, 0, 0}}, h));      // from inside: the wall
     EXPECT_NEAR(h.t, 1.0, 1e-12);
 }
 
@@ -210,8 +221,16 @@ TEST(Intersect, TorusQuartic) {
 
 TEST(Intersect, PolygonWithHoleEvenOdd) {
     Polygon poly;
-    for (auto [x, y] : {std::pair{0.0, 0.0}, {4.0, 0.0}, {4.0, 4.0}, {0.0, 4.0}, {0.0, 0.0},
-                        {1.0, 1.0}, {3.0, 1.0}, {3.0, 3.0}, {1.0, 3.0}, {1.0, 1.0}}) {
+    for (auto [x, y] : {std::pair{0.0, 0.0},
+                        {4.0, 0.0},
+                        {4.0, 4.0},
+                        {0.0, 4.0},
+                        {0.0, 0.0},
+                        {1.0, 1.0},
+                        {3.0, 1.0},
+                        {3.0, 3.0},
+                        {1.0, 3.0},
+                        {1.0, 1.0}}) {
         poly.points.push_back({x, y, 2});
     }
     Scene s = one(object(poly));
@@ -228,7 +247,7 @@ TEST(Intersect, QuarticSolverRoots) {
     // (x-1)(x-2)(x-3)(x-4) = x^4 - 10x^3 + 35x^2 - 50x + 24
     Real c[5] = {24, -50, 35, -10, 1};
     Real r[4];
-    ASSERT_EQ(solve_quartic(c, r), 4);
+    ASSERT_EQ(solve_quartic_ferrari(c, r), 4);
     for (int i = 0; i < 4; ++i) EXPECT_NEAR(r[i], i + 1, 1e-12);
 }
 
@@ -239,28 +258,32 @@ TEST(Intersect, NoSelfIntersectionUnderRandomTransforms) {
     int checked = 0;
     for (int trial = 0; trial < 400; ++trial) {
         Real k = std::pow(10.0, lscale(rng));
-        Vector3 sc{k * (1 + 0.5 * u(rng)), k * (1 + 0.5 * u(rng)), k * (1 + 0.5 * u(rng))};
-        Transform xf = Transform::scale(sc)
-                           .then(Transform::rotate({ang(rng), ang(rng), ang(rng)}))
-                           .then(Transform::translate({u(rng) * k, u(rng) * k, u(rng) * k}));
+        Vector3 sc{k * (1 + 0.5 * u(rng)), k * (1 + 0.5 * u(rng)),
+                   k * (1 + 0.5 * u(rng))};
+        Transform xf =
+            Transform::scale(sc)
+                .then(Transform::rotate({ang(rng), ang(rng), ang(rng)}))
+                .then(Transform::translate({u(rng) * k, u(rng) * k, u(rng) * k}));
         ShapeData shape = (trial % 2) ? ShapeData(Sphere{{0, 0, 0}, 1})
                                       : ShapeData(Box{{-1, -1, -1}, {1, 1, 1}});
         Scene s = one(object(shape, xf));
         Point3 centre = xf.point({0, 0, 0});
         Point3 from = centre + Vector3{u(rng), u(rng), -3} * (4 * k);
-        Vector3 dir = normalize(centre + Vector3{u(rng), u(rng), u(rng)} * (0.3 * k) - from);
+        Vector3 dir =
+            normalize(centre + Vector3{u(rng), u(rng), u(rng)} * (0.3 * k) - from);
         PreparedScene prepared(s);
         RayContext ctx;
         prepared.init_context(ctx);
         Hit h;
-        if (!prepared.closest_hit({from, dir}, 0, kInfinity, RayUse::Camera, h, ctx)) continue;
+        if (!prepared.closest_hit({from, dir}, 0, kInfinity, RayUse::Camera, h, ctx))
+            continue;
         ++checked;
         // Mirror ray off a convex solid: never hits it again.
         Vector3 n = dot(h.normal, dir) > 0 ? -h.normal : h.normal;
         Vector3 refl = normalize(dir - n * (2 * dot(dir, n)));
         Hit again;
-        EXPECT_FALSE(prepared.closest_hit({h.point, refl}, 0, kInfinity, RayUse::Camera, again,
-                                          ctx))
+        EXPECT_FALSE(prepared.closest_hit({h.point, refl}, 0, kInfinity, RayUse::Camera,
+                                          again, ctx))
             << "trial " << trial << " scale " << k << " t " << again.t;
         // Straight on: the next hit is the far side, well away from the entry point.
         Hit far;
@@ -271,6 +294,151 @@ TEST(Intersect, NoSelfIntersectionUnderRandomTransforms) {
         EXPECT_GT(dot(far.normal, dir), 0) << "trial " << trial;
     }
     EXPECT_GT(checked, 300);
+}
+
+}  // namespace
+}  // namespace povwall::trace
+
+namespace povwall::trace {
+namespace {
+
+const Real kSqrt125 = std::sqrt(1.25);
+
+TEST(IntersectAudit, ConeSideCapInsideMissAndTransformed) {
+    // Radius 1 at y = 0 down to 0 at y = 2: radius 0.5 at y = 1, side normal (0, 0.5,
+    // -1).
+    Scene s = one(object(Cone{{0, 0, 0}, {0, 2, 0}, 1, 0, false}));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0, 1, -5}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 4.5, 1e-12);
+    expect_vec(h.normal, {0, 0.5 / kSqrt125, -1 / kSqrt125}, 1e-9);
+    ASSERT_TRUE(shoot(s, {{0.5, -5, 0}, {0, 1, 0}}, h));  // base cap
+    EXPECT_NEAR(h.t, 5.0, 1e-12);
+    expect_vec(h.normal, {0, -1, 0});
+    ASSERT_TRUE(shoot(s, {{0, 0.5, 0}, {1, 0, 0}}, h));  // from inside: radius 0.75
+    EXPECT_NEAR(h.t, 0.75, 1e-12);
+    EXPECT_FALSE(
+        shoot(s, {{0.6, 1, -5}, {0, 0, 1}}, h));  // passes beside the narrow part
+    Scene moved =
+        one(object(Cone{{0, 0, 0}, {0, 2, 0}, 1, 0, false},
+                   Transform::scale({2, 2, 2}).then(Transform::translate({0, 0, 10}))));
+    ASSERT_TRUE(shoot(moved, {{0, 2, -5}, {0, 0, 1}}, h));  // world radius 1 at y = 2
+    EXPECT_NEAR(h.t, 14.0, 1e-12);
+    expect_vec(h.normal, {0, 0.5 / kSqrt125, -1 / kSqrt125}, 1e-9);
+}
+
+TEST(IntersectAudit, DiscWithHoleEdgeOnAndTransformed) {
+    Scene s = one(object(Disc{{0, 0, 0}, {0, 1, 0}, 1, 0.5}));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0.75, 5, 0}, {0, -1, 0}}, h));
+    EXPECT_NEAR(h.t, 5.0, 1e-12);
+    expect_vec(h.normal, {0, 1, 0});
+    EXPECT_FALSE(shoot(s, {{0.25, 5, 0}, {0, -1, 0}}, h));  // in the hole
+    EXPECT_FALSE(shoot(s, {{1.1, 5, 0}, {0, -1, 0}}, h));   // beyond the rim
+    EXPECT_FALSE(shoot(s, {{-5, 0, 0.75}, {1, 0, 0}}, h));  // in its plane: grazing
+    Scene moved =
+        one(object(Disc{{0, 0, 0}, {0, 1, 0}, 1, 0.5},
+                   Transform::scale({2, 2, 2}).then(Transform::translate({0, 3, 0}))));
+    ASSERT_TRUE(shoot(moved, {{1.5, 10, 0}, {0, -1, 0}}, h));
+    EXPECT_NEAR(h.t, 7.0, 1e-12);
+    EXPECT_FALSE(shoot(moved, {{0.9, 10, 0}, {0, -1, 0}}, h));  // hole radius 1 now
+}
+
+TEST(IntersectAudit, TriangleHitMissGrazingAndTransformed) {
+    Triangle tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}};
+    Scene s = one(object(tri));
+    Hit h;
+    ASSERT_TRUE(shoot(s, {{0.25, 0.25, -5}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 5.0, 1e-12);
+    EXPECT_NEAR(std::fabs(h.normal.z), 1.0, 1e-12);
+    EXPECT_FALSE(shoot(s, {{0.6, 0.6, -5}, {0, 0, 1}}, h));
+    EXPECT_FALSE(shoot(s, {{-1, 0.25, 0}, {1, 0, 0}}, h));  // in its plane
+    Scene moved = one(
+        object(tri, Transform::scale({2, 2, 2}).then(Transform::translate({0, 0, 3}))));
+    ASSERT_TRUE(shoot(moved, {{0.9, 0.9, -5}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 8.0, 1e-12);
+}
+
+TEST(IntersectAudit, SmoothTriangleInterpolatesNormals) {
+    SmoothTriangle tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+                       {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}};
+    Hit h;
+    ASSERT_TRUE(shoot(one(object(tri)), {{0.5, 0.25, -5}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 5.0, 1e-12);
+    // Weights 0.25, 0.5, 0.25 of the corners' normals.
+    Vector3 want = normalize(Vector3{0.5, 0.25, 1});
+    expect_vec(h.normal * (h.normal.z > 0 ? 1 : -1), want, 1e-12);
+}
+
+// Exporter input: never hit, never a NaN.
+TEST(IntersectAudit, DegenerateShapesAreNeverHitOrGiveFiniteNormals) {
+    Hit h;
+    EXPECT_FALSE(shoot(one(object(Triangle{{{0, 0, 0}, {0, 0, 0}, {1, 1, 0}}})),
+                       {{0.5, 0.5, -5}, {0, 0, 1}}, h));
+    EXPECT_FALSE(shoot(one(object(Triangle{{{0, 0, 0}, {0.5, 0.5, 0}, {1, 1, 0}}})),
+                       {{0.5, 0.5, -5}, {0, 0, 1}}, h));
+    EXPECT_FALSE(shoot(one(object(Cylinder{{0, 0, 0}, {0, 2, 0}, 0, false})),
+                       {{0, 1, -5}, {0, 0, 1}}, h));
+    EXPECT_FALSE(shoot(one(object(Cone{{0, 0, 0}, {0, 2, 0}, 0, 0, false})),
+                       {{0, 1, -5}, {0, 0, 1}}, h));
+    EXPECT_FALSE(shoot(one(object(Sphere{{0, 0, 0}, 0})), {{0, 0, -5}, {0, 0, 1}}, h));
+    // A flat box is hit on its face at the exact distance with a unit normal.
+    if (shoot(one(object(Box{{0, 0, 0}, {1, 1, 0}})), {{0.5, 0.5, -5}, {0, 0, 1}}, h)) {
+        EXPECT_NEAR(h.t, 5.0, 1e-12);
+        EXPECT_NEAR(length(h.normal), 1.0, 1e-12);
+    }
+}
+
+Mesh tetrahedron() {
+    Mesh m;
+    m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (auto f : {std::array<uint32_t, 3>{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}) {
+        Mesh::Face face;
+        for (int k = 0; k < 3; ++k) face.v[k] = f[k];
+        m.faces.push_back(face);
+    }
+    return m;
+}
+
+TEST(IntersectAudit, MeshHitsAndInsideVectorMakesItSolid) {
+    Mesh m = tetrahedron();
+    Hit h;
+    ASSERT_TRUE(shoot(one(object(m)), {{0.2, 0.2, -5}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 5.0, 1e-12);
+    EXPECT_NEAR(std::fabs(h.normal.z), 1.0, 1e-12);
+    EXPECT_FALSE(
+        inside_object(object(m), {0.1, 0.1, 0.1}));  // no inside_vector: a surface
+    m.inside_vector = {1, 0.01, 0.02};
+    m.has_inside_vector = true;
+    EXPECT_TRUE(inside_object(object(m), {0.1, 0.1, 0.1}));
+    EXPECT_FALSE(inside_object(object(m), {0.5, 0.5, 0.5}));   // beyond the slanted face
+    EXPECT_FALSE(inside_object(object(m), {-0.5, 0.1, 0.1}));  // crosses in and out again
+    Object moved = object(m, Transform::translate({5, 0, 0}));
+    EXPECT_TRUE(inside_object(moved, {5.1, 0.1, 0.1}));
+    EXPECT_FALSE(inside_object(moved, {0.1, 0.1, 0.1}));
+}
+
+TEST(IntersectAudit, DifferenceWithASolidMeshCutsTheSphere) {
+    Mesh m = tetrahedron();
+    m.inside_vector = {1, 0.01, 0.02};
+    m.has_inside_vector = true;
+    Csg diff;
+    diff.kind = CsgKind::Difference;
+    diff.children.push_back(object(Sphere{{0, 0, 0}, 0.5}));
+    diff.children.push_back(object(m, Transform::translate({-0.2, -0.2, -0.7})));
+    Object o;
+    o.shape = diff;
+    Hit h;
+    // Along z through x = y = 0.1 the shifted tetrahedron spans z in [-0.7, -0.3]: it
+    // swallows the sphere's front (z = -sqrt(0.23)), so the first surface is its slanted
+    // face at z = -0.3, inside the sphere, with the face's normal turned inward.
+    ASSERT_TRUE(shoot(one(o), {{0.1, 0.1, -5}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 4.7, 1e-9);
+    const Real k = 1 / std::sqrt(3.0);
+    expect_vec(h.normal, {-k, -k, -k}, 1e-9);
+    // Beside the tetrahedron the sphere is untouched.
+    ASSERT_TRUE(shoot(one(o), {{-0.3, 0, -5}, {0, 0, 1}}, h));
+    EXPECT_NEAR(h.t, 5 - 0.4, 1e-9);
 }
 
 }  // namespace

@@ -453,6 +453,7 @@ TEST(PovCompare, AntialiasMethod1NoJitter) {
     rs.antialias = true;
     rs.aa_threshold = 0.3;
     rs.aa_depth = 3;
+    rs.aa_jitter = false;
     expect_matches("antialias", R"(
 plane { y, -1 pigment { rgb 0.9 } }
 sphere { 0, 1 pigment { rgb <0.9,0.2,0.2> } }

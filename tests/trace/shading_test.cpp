@@ -184,7 +184,7 @@ TEST(Shading, SpawnCombineEqualsRecursiveDriver) {
     for (int y = 0; y < 24; ++y) {
         for (int x = 0; x < 32; ++x) {
             TraceRay ray;
-            ray.ray = camera_ray(s.camera, x + 0.5, y + 0.5, 32, 24);
+            ray.ray = *camera_ray(s.camera, x + 0.5, y + 0.5, 32, 24);
             TraceResult direct = driver.trace(ray);
             Hit hit;
             if (!prepared.closest_hit(ray.ray, 0, kInfinity, RayUse::Camera, hit, ctx)) {

@@ -1,0 +1,149 @@
+// The black boxes one process hosts: all of them (in-process render) or a subset (a TCP
+// worker). Items for boxes hosted elsewhere go to `remote`; items arriving from elsewhere
+// come in through inject(). Internal to distrib/.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "core/image.h"
+#include "core/scene.h"
+#include "distrib/parent_table.h"
+#include "distrib/space_render.h"
+#include "trace/prepared_scene.h"
+#include "trace/render_plan.h"
+#include "trace/shading.h"
+
+namespace povwall::distrib {
+
+// A ray travelling between boxes. Its origin is never re-based at a wall: searches resume
+// at `t_from` along the original ray, so POV-Ray's absolute minimum distances still hold.
+struct RayItem {
+    trace::TraceRay trace;
+    bool shadow = false;
+    bool counted = false;
+    Real t_from = 0;
+    Real light_distance = kInfinity;
+    trace::ShadowState shadow_state;
+    // Where the result goes: a waiting parent (parent tracking) or the pixel.
+    uint64_t parent = 0;
+    int32_t parent_box = -1;
+    uint16_t slot = 0;
+    int32_t pixel = 0;
+    // Forward contributions: factors from this ray's colour / transmit to the pixel.
+    Rgb contribution{1.0f};
+    float transmit_contribution = 1;
+};
+
+struct ResultItem {
+    uint64_t parent = 0;
+    uint16_t slot = 0;
+    trace::TraceResult result;
+};
+
+struct Item {
+    bool is_result = false;
+    RayItem ray;
+    ResultItem result;
+};
+
+struct WaitingParent {
+    trace::ShadingRecord record;
+    std::vector<trace::TraceResult> results;
+    RayItem origin;
+};
+
+struct Box {
+    explicit Box(QueuePolicy policy) : queue(policy) {}
+    int index = 0;
+    std::unique_ptr<trace::PreparedScene> scene;
+    trace::RayContext ctx;
+    std::mutex inbox_mutex;
+    std::vector<Item> inbox;
+    std::atomic<size_t> pending{0};
+    std::atomic<bool> busy{false};
+    WorkQueue<Item> queue;
+    ParentTable<WaitingParent> parents;
+    trace::ShadingRecord record;  // scratch for spawn_children
+    uint64_t next_id = 0;
+    BoxStats stats;
+};
+
+class BoxHost {
+  public:
+    BoxHost(const Scene& scene, const trace::RenderSettings& settings,
+            const SpaceOptions& options);
+
+    // Walls from the options (in-process render, coordinator).
+    void place_walls();
+    void set_walls(VirtualWalls walls) { walls_ = std::move(walls); }
+    const VirtualWalls& walls() const { return walls_; }
+    // Prepares the local scenes of the `hosted` boxes; the others stay unprepared here
+    // and are reached through `remote`.
+    void build_boxes(const std::vector<int>& hosted);
+    bool hosts(int box) const { return boxes_[box]->scene != nullptr; }
+    size_t primitive_count(int box) const {
+        return boxes_[box]->scene->primitive_count();
+    }
+    // Which boxes hold no primitive (rays skip them without a message); all processes use
+    // the same table. build_boxes fills it for hosted boxes.
+    void set_box_empty(std::vector<uint8_t> empty) { empty_ = std::move(empty); }
+    bool parent_tracking() const { return parents_; }
+
+    // Camera ray of pixel p and the box it starts in; -1 where the camera sees nothing.
+    int camera_item(int pixel, Item& item) const;
+    // An item that arrived from another process for hosted box `box`.
+    void inject(int box, Item&& item);
+
+    // Runs `threads` worker threads until all camera rays are traced (in-process), or
+    // until stop() (worker process: emit_camera false).
+    void run(int threads, bool emit_camera);
+    void stop() { stop_.store(true); }
+
+    std::function<void(int box, Item&& item)> remote;  // items for boxes hosted elsewhere
+    std::function<void()> flush;                       // called when a thread runs dry
+    std::function<void()> on_processed;                // test hook, after each item
+
+    // Items created here (pushed to any box) and finished here (processed): summed over
+    // all processes at one instant, equal totals mean no ray or result is left anywhere.
+    uint64_t created() const { return created_.load(); }
+    uint64_t finished() const { return finished_.load(); }
+
+    // r, g, b, transmit per pixel summed over threads (before alpha conversion).
+    std::vector<double> pixel_sums() const;
+    std::vector<BoxStats> box_stats() const;
+    int box_count() const { return int(boxes_.size()); }
+
+  private:
+    void worker(int thread, bool emit_camera);
+    void emit_camera_rays();
+    void process(Box& box, Item& item, int thread);
+    void process_ray(Box& box, RayItem& ray, int thread);
+    void deliver(Box& box, const RayItem& ray, const trace::TraceResult& result,
+                 int thread);
+    void push(Box* current, int dest, Item&& item);
+    int first_box(const Ray& ray, Real t_from, VirtualWalls::Segment& seg,
+                  int& next) const;
+    void add_pixel(int thread, int pixel, const Rgb& c, float transmit);
+
+    const Scene& scene_;
+    const trace::RenderSettings& settings_;
+    const SpaceOptions& options_;
+    trace::RenderPlan plan_;  // made once; every box's local scene follows it
+    bool parents_ = false;
+    VirtualWalls walls_;
+    std::vector<std::unique_ptr<Box>> boxes_;
+    std::vector<uint8_t> empty_;
+    std::atomic<uint64_t> created_{0}, finished_{0};
+    std::atomic<bool> stop_{false};
+    std::atomic<int> next_pixel_{0};
+    int total_pixels_ = 0;
+    // Per thread: r, g, b, transmit per pixel, in double so that the order in which
+    // contributions arrive does not show in the image.
+    std::vector<std::vector<double>> accum_;
+};
+
+}  // namespace povwall::distrib

@@ -1,0 +1,237 @@
+#include "distrib/screen_render.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <mutex>
+#include <thread>
+
+#include "distrib/child_process.h"
+#include "trace/tile_render.h"
+
+extern char** environ;
+
+namespace povwall::distrib {
+namespace {
+
+constexpr uint32_t kReplyMagic = 0x70775331;  // "pwS1": protocol version 1
+
+struct TileRequest {
+    int32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // x1 <= x0: stop
+};
+
+struct TileReply {
+    uint32_t magic = kReplyMagic;
+    int32_t x0 = 0, y0 = 0, x1 = 0,
+            y1 = 0;  // all zero: "ready" after preparing the scene
+    uint64_t camera = 0, reflected = 0, refracted = 0, shadow = 0;
+};
+
+// Moves all n bytes with ::read or ::write, retrying short transfers and EINTR; false on
+// end of file or error.
+template <class Transfer, class Byte>
+bool transfer_all(Transfer transfer, int fd, Byte* p, size_t n) {
+    while (n) {
+        ssize_t done = transfer(fd, p, n);
+        if (done < 0 && errno == EINTR) continue;
+        if (done <= 0) return false;
+        p += done;
+        n -= size_t(done);
+    }
+    return true;
+}
+
+bool write_all(int fd, const void* data, size_t n) {
+    return transfer_all(::write, fd, static_cast<const char*>(data), n);
+}
+
+bool read_all(int fd, void* data, size_t n) {
+    return transfer_all(::read, fd, static_cast<char*>(data), n);
+}
+
+struct Worker {
+    pid_t pid = -1;
+    int to = -1, from = -1;  // its stdin (we write), its stdout (we read)
+};
+
+Worker spawn_worker(const std::vector<std::string>& command) {
+    int in[2], out[2];
+    if (pipe2(in, O_CLOEXEC) != 0) throw ScreenError("cannot create a pipe for a worker");
+    if (pipe2(out, O_CLOEXEC) != 0) {
+        close(in[0]);
+        close(in[1]);
+        throw ScreenError("cannot create a pipe for a worker");
+    }
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, in[0], 0);
+    posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+    std::vector<char*> argv;
+    for (const auto& a : command) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    Worker w;
+    int rc = posix_spawn(&w.pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    close(in[0]);
+    close(out[1]);
+    if (rc != 0) {
+        close(in[1]);
+        close(out[0]);
+        throw ScreenError("cannot start worker '" + command[0] +
+                          "': " + std::strerror(rc));
+    }
+    w.to = in[1];
+    w.from = out[0];
+    return w;
+}
+
+}  // namespace
+
+Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& options,
+                    ScreenStats* stats) {
+    auto t0 = std::chrono::steady_clock::now();
+    const int W = settings.width, H = settings.height;
+    const int r0 = std::clamp(settings.first_row, 0, H);
+    const int r1 = settings.last_row < 0 ? H : std::min(settings.last_row + 1, H);
+    const int c0 = std::clamp(settings.first_col, 0, W);
+    const int c1 = settings.last_col < 0 ? W : std::min(settings.last_col + 1, W);
+    const int T = std::max(1, options.tile);
+    const int tiles_x = std::max(0, (c1 - c0 + T - 1) / T);
+    const int tiles_y = std::max(0, (r1 - r0 + T - 1) / T);
+    const int tiles = tiles_x * tiles_y;
+    const int n = std::max(1, options.workers);
+
+    // A worker that dies must not kill the coordinator with SIGPIPE: its write fails
+    // instead.
+    struct sigaction ignore {
+    }, previous{};
+    ignore.sa_handler = SIG_IGN;
+    sigaction(SIGPIPE, &ignore, &previous);
+
+    std::vector<Worker> workers;
+    std::string error;
+    try {
+        for (int i = 0; i < n; ++i)
+            workers.push_back(spawn_worker(options.worker_command));
+    } catch (const ScreenError& e) {
+        error = e.what();
+    }
+    Image image(W, H);
+    std::atomic<int> next_tile{0};
+    std::atomic<bool> failed{!error.empty()};
+    std::mutex mutex;
+    ScreenStats local;
+    local.tiles = tiles;
+    local.tiles_per_worker.assign(workers.size(), 0);
+    auto serve = [&](size_t wi) {
+        Worker& w = workers[wi];
+        std::vector<float> pixels;
+        TileReply ready;
+        bool ok = read_all(w.from, &ready, sizeof ready) && ready.magic == kReplyMagic;
+        uint64_t counts[4] = {0, 0, 0, 0};
+        while (ok && !failed.load()) {
+            int t = next_tile.fetch_add(1);
+            if (t >= tiles) break;
+            TileRequest rq;
+            rq.x0 = c0 + (t % tiles_x) * T;
+            rq.y0 = r0 + (t / tiles_x) * T;
+            rq.x1 = std::min(rq.x0 + T, c1);
+            rq.y1 = std::min(rq.y0 + T, r1);
+            TileReply reply;
+            ok = write_all(w.to, &rq, sizeof rq) &&
+                 read_all(w.from, &reply, sizeof reply) && reply.magic == kReplyMagic &&
+                 reply.x0 == rq.x0 && reply.y0 == rq.y0 && reply.x1 == rq.x1 &&
+                 reply.y1 == rq.y1;
+            if (!ok) break;
+            const int tw = rq.x1 - rq.x0;
+            pixels.resize(size_t(tw) * (rq.y1 - rq.y0) * 4);
+            ok = read_all(w.from, pixels.data(), pixels.size() * sizeof(float));
+            if (!ok) break;
+            for (int y = rq.y0; y < rq.y1; ++y) {
+                std::memcpy(image.pixel(rq.x0, y), &pixels[size_t(y - rq.y0) * tw * 4],
+                            size_t(tw) * 4 * sizeof(float));
+            }
+            counts[0] = reply.camera;  // counters are cumulative per worker
+            counts[1] = reply.reflected;
+            counts[2] = reply.refracted;
+            counts[3] = reply.shadow;
+            ++local.tiles_per_worker[wi];
+        }
+        if (ok) {
+            TileRequest stop;
+            write_all(w.to, &stop, sizeof stop);
+        }
+        close(w.to);
+        close(w.from);
+        std::lock_guard<std::mutex> lock(mutex);
+        local.camera += counts[0];
+        local.reflected += counts[1];
+        local.refracted += counts[2];
+        local.shadow += counts[3];
+        if (!ok && error.empty()) {
+            failed = true;
+            error = "screen worker " + std::to_string(wi + 1) + " (pid " +
+                    std::to_string(w.pid) + ") stopped answering";
+        }
+    };
+    std::vector<std::thread> threads;
+    for (size_t i = 0; i < workers.size(); ++i) threads.emplace_back(serve, i);
+    for (auto& t : threads) t.join();
+    for (size_t i = 0; i < workers.size(); ++i) {
+        // Every tile is in (or the job failed): a worker gets 10 s to exit on its own.
+        const int status = wait_child(workers[i].pid, 10.0);
+        const bool clean = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+        if (!clean && error.find("(pid " + std::to_string(workers[i].pid) + ")") !=
+                          std::string::npos) {
+            error += ": " + describe_exit_status(status);
+        }
+    }
+    sigaction(SIGPIPE, &previous, nullptr);
+    if (!error.empty()) throw ScreenError(error);
+    local.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (stats) *stats = local;
+    return image;
+}
+
+int serve_tiles(const Scene& scene, const trace::RenderSettings& settings, int in_fd,
+                int out_fd, int exit_after_tiles) {
+    trace::TileRenderer renderer(scene, settings);
+    TileReply ready;
+    if (!write_all(out_fd, &ready, sizeof ready)) return 1;
+    std::vector<float> pixels;
+    for (;;) {
+        TileRequest rq;
+        if (!read_all(in_fd, &rq, sizeof rq)) return 1;  // coordinator gone
+        if (rq.x1 <= rq.x0) return 0;
+        if (exit_after_tiles >= 0 && exit_after_tiles-- == 0) return 3;
+        if (rq.x0 < 0 || rq.y0 < 0 || rq.x1 > settings.width || rq.y1 > settings.height ||
+            rq.y1 < rq.y0)
+            return 1;
+        pixels.resize(size_t(rq.x1 - rq.x0) * (rq.y1 - rq.y0) * 4);
+        renderer.render(rq.x0, rq.y0, rq.x1, rq.y1, pixels.data());
+        TileReply reply;
+        reply.x0 = rq.x0;
+        reply.y0 = rq.y0;
+        reply.x1 = rq.x1;
+        reply.y1 = rq.y1;
+        const trace::TraceCounters& c = renderer.counters();
+        reply.camera = c.camera;
+        reply.reflected = c.reflected;
+        reply.refracted = c.refracted;
+        reply.shadow = c.shadow;
+        if (!write_all(out_fd, &reply, sizeof reply) ||
+            !write_all(out_fd, pixels.data(), pixels.size() * sizeof(float)))
+            return 1;
+    }
+}
+
+}  // namespace povwall::distrib

@@ -1,0 +1,71 @@
+// Black boxes in several processes, over TCP (Boost.Asio; only distrib/tcp_render.cpp
+// includes it).
+//
+// A worker process (`povwall worker --listen HOST:PORT --token T`) hosts some boxes. The
+// coordinator (`povwall render ... --procs N` or `--workers h:p,...`) sends every worker
+// the scene source and its box assignment; each worker parses the scene and prepares only
+// its boxes' local scenes. Rays and results travel worker to worker in framed, batched
+// messages (distrib/message.h); camera rays start at the coordinator and pixel sums
+// return to it.
+#pragma once
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "core/scene.h"
+#include "distrib/space_render.h"
+#include "trace/render.h"
+
+namespace povwall::distrib {
+
+// What a worker needs to parse the scene as the coordinator did.
+struct SceneSource {
+    std::string text;          // the main scene file
+    std::string display_name;  // its path: diagnostics and relative includes
+    std::vector<std::string> library_paths;
+    std::map<std::string, double> declares;
+    // Animation values the language exposes (clock, frame_number, ...).
+    double clock = 0, clock_delta = 0, initial_clock = 0, final_clock = 0;
+    int frame_number = 0, initial_frame = 1, final_frame = 1;
+};
+
+struct TcpOptions {
+    int procs = 0;                     // local worker processes to start on loopback
+    std::vector<std::string> workers;  // or running workers, "host:port"
+    std::string token;                 // job token (random when empty and procs > 0)
+    std::string worker_binary;         // the povwall binary to start (procs > 0)
+    double heartbeat_timeout =
+        4.0;  // seconds without a message: dead (checked every 0.25 s)
+};
+
+// A worker died, disconnected, went silent or refused the job; what() names it.
+struct DistribError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+Image render_tcp(const Scene& scene, const SceneSource& source,
+                 const trace::RenderSettings& settings, const SpaceOptions& options,
+                 const TcpOptions& tcp, SpaceStats* stats = nullptr);
+
+struct WorkerOptions {
+    std::string listen = "127.0.0.1:0";  // port 0: any; the chosen one is printed
+    std::string token;
+    int threads = 0;
+    ImageReader
+        image_reader;  // image_map files named by the scene (the cli's OpenImageIO)
+    // Fault injection for the tests, after this many items: the process exits (dies), or
+    // stops itself with SIGSTOP (hangs: alive, connected, silent).
+    long die_after_items = -1, hang_after_items = -1;
+};
+
+// Serves one job and returns the exit code (0 after a finished job).
+int run_worker(const WorkerOptions& options);
+
+// A control frame (JSON text) as the protocol sends it, e.g. for tests that speak to a
+// worker directly.
+std::vector<uint8_t> encode_control_frame(const std::string& json);
+
+}  // namespace povwall::distrib

@@ -1,0 +1,1030 @@
+// Black boxes over TCP: the worker process and the coordinator. The only translation unit
+// that includes Boost.Asio (compile time).
+//
+// One io_context per process, on one thread; render threads hand finished frames to it
+// with post(). Every handler holds a shared_ptr to its connection, which owns the read
+// chunk and the queue of outgoing buffers, so buffers live until their operation
+// completes.
+//
+// clang-format off
+// Protocol (all frames: distrib/message.h header, version checked, body <= kMaxBodySize):
+//   peer -> worker    Control hello {token, from: index or -1}: first frame, else closed
+//   coord -> worker   Control job (scene source, walls, box owners, worker addresses)
+//   worker -> coord   Control ready (primitive count per hosted box)
+//   coord -> worker   Control start (which boxes are empty), then Items (camera rays)
+//   worker -> worker  Items (rays and results for the receiver's boxes)
+//   worker -> coord   Control status (items created/finished) every 10 ms: heartbeat, flow
+//                     control, and the answer to probes (termination waves)
+//   coord -> worker   Control finish; worker -> coord Pixels (sums), then Control done
+// clang-format on
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+// clang-format off
+#include <utility>  // before Asio: Boost 1.74 uses std::exchange without it
+#include <boost/asio.hpp>
+// clang-format on
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <thread>
+#include <unordered_map>
+
+#include "distrib/box_host.h"
+#include "distrib/child_process.h"
+#include "distrib/message.h"
+#include "distrib/tcp.h"
+#include "parser/parser.h"
+
+namespace povwall::distrib {
+namespace {
+
+namespace asio = boost::asio;
+using asio::ip::tcp;
+using json = nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+// ---- Work items on the wire
+// -------------------------------------------------------------
+
+// Interior stacks hold Material pointers; on the wire they are numbers of leaf objects in
+// a traversal every process makes of the same parsed scene, and each process keeps one
+// Material per object (the stack only uses its object and interior).
+class ObjectNumbers {
+  public:
+    explicit ObjectNumbers(const Scene& scene) {
+        for (const Object& o : scene.objects) add(o);
+        for (const Light& l : scene.lights) {
+            for (const Object& o : l.looks_like) add(o);
+        }
+        materials_.resize(objects_.size());
+        for (size_t i = 0; i < objects_.size(); ++i) {
+            const Object& o = *objects_[i];
+            materials_[i].texture = &o.texture;
+            materials_[i].interior = o.interior ? &*o.interior : nullptr;
+            materials_[i].object = &o;
+        }
+    }
+    int32_t number(const trace::Material* m) const {
+        if (!m || !m->object) return -1;
+        auto it = index_.find(m->object);
+        return it == index_.end() ? -1 : it->second;
+    }
+    const trace::Material* material(int32_t n) const {
+        return n >= 0 && size_t(n) < materials_.size() ? &materials_[n] : nullptr;
+    }
+
+  private:
+    void add(const Object& o) {
+        index_.emplace(&o, int32_t(objects_.size()));
+        objects_.push_back(&o);
+        if (auto c = std::get_if<Csg>(&o.shape)) {
+            for (const Object& ch : c->children) add(ch);
+        }
+    }
+    std::vector<const Object*> objects_;
+    std::unordered_map<const Object*, int32_t> index_;
+    std::vector<trace::Material> materials_;
+};
+
+struct Writer {
+    std::vector<uint8_t>& out;
+    template <class T>
+    void raw(T v) {  // little-endian hosts only (checked below)
+        uint8_t b[sizeof(T)];
+        std::memcpy(b, &v, sizeof(T));
+        out.insert(out.end(), b, b + sizeof(T));
+    }
+    void vec(const Vector3& v) { raw(v.x), raw(v.y), raw(v.z); }
+    void rgb(const Rgb& c) { raw(c.r), raw(c.g), raw(c.b); }
+};
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
+              "the wire format is little-endian");
+
+struct Reader {
+    const uint8_t* p;
+    const uint8_t* end;
+    bool ok = true;
+    template <class T>
+    T raw() {
+        T v{};
+        if (end - p < ptrdiff_t(sizeof(T))) {
+            ok = false;
+            return v;
+        }
+        std::memcpy(&v, p, sizeof(T));
+        p += sizeof(T);
+        return v;
+    }
+    Vector3 vec() {
+        Vector3 v;
+        v.x = raw<Real>(), v.y = raw<Real>(), v.z = raw<Real>();
+        return v;
+    }
+    Rgb rgb() {
+        Rgb c;
+        c.r = raw<float>(), c.g = raw<float>(), c.b = raw<float>();
+        return c;
+    }
+};
+
+void write_stack(Writer& w, const trace::InteriorStack& s, const ObjectNumbers& numbers) {
+    w.raw(uint8_t(s.size));
+    for (int i = 0; i < s.size && i < trace::InteriorStack::kCapacity; ++i) {
+        w.raw(numbers.number(s.items[i]));
+    }
+}
+
+void read_stack(Reader& r, trace::InteriorStack& s, const ObjectNumbers& numbers) {
+    int n = r.raw<uint8_t>();
+    if (n > trace::InteriorStack::kCapacity) {
+        r.ok = false;
+        return;
+    }
+    s.size = n;
+    for (int i = 0; i < n; ++i) s.items[i] = numbers.material(r.raw<int32_t>());
+}
+
+void write_item(Writer& w, int box, const Item& item, const ObjectNumbers& numbers) {
+    w.raw(uint32_t(box));
+    w.raw(uint8_t(item.is_result));
+    if (item.is_result) {
+        const ResultItem& r = item.result;
+        w.raw(r.parent);
+        w.raw(r.slot);
+        w.rgb(r.result.colour);
+        w.raw(r.result.transmit);
+        return;
+    }
+    const RayItem& r = item.ray;
+    w.vec(r.trace.ray.origin);
+    w.vec(r.trace.ray.direction);
+    w.raw(int32_t(r.trace.depth));
+    w.raw(r.trace.weight);
+    w.raw(uint8_t(r.trace.use));
+    write_stack(w, r.trace.interiors, numbers);
+    w.raw(uint8_t(r.shadow));
+    w.raw(uint8_t(r.counted));
+    w.raw(r.t_from);
+    w.raw(r.light_distance);
+    w.rgb(r.shadow_state.filter);
+    w.raw(r.shadow_state.t_min);
+    w.raw(r.shadow_state.last_hit);
+    w.raw(uint8_t(r.shadow_state.blocked));
+    write_stack(w, r.shadow_state.inside, numbers);
+    w.raw(int32_t(r.shadow_state.light));
+    w.raw(r.parent);
+    w.raw(r.parent_box);
+    w.raw(r.slot);
+    w.raw(r.pixel);
+    w.rgb(r.contribution);
+    w.raw(r.transmit_contribution);
+}
+
+bool read_item(Reader& rd, int box_count, int& box, Item& item,
+               const ObjectNumbers& numbers) {
+    box = int(rd.raw<uint32_t>());
+    item.is_result = rd.raw<uint8_t>() != 0;
+    if (item.is_result) {
+        ResultItem& r = item.result;
+        r.parent = rd.raw<uint64_t>();
+        r.slot = rd.raw<uint16_t>();
+        r.result.colour = rd.rgb();
+        r.result.transmit = rd.raw<float>();
+    } else {
+        RayItem& r = item.ray;
+        r.trace.ray.origin = rd.vec();
+        r.trace.ray.direction = rd.vec();
+        r.trace.depth = rd.raw<int32_t>();
+        r.trace.weight = rd.raw<float>();
+        uint8_t use = rd.raw<uint8_t>();
+        if (use > uint8_t(trace::RayUse::Shadow)) return false;
+        r.trace.use = trace::RayUse(use);
+        read_stack(rd, r.trace.interiors, numbers);
+        r.shadow = rd.raw<uint8_t>() != 0;
+        r.counted = rd.raw<uint8_t>() != 0;
+        r.t_from = rd.raw<Real>();
+        r.light_distance = rd.raw<Real>();
+        r.shadow_state.filter = rd.rgb();
+        r.shadow_state.t_min = rd.raw<Real>();
+        r.shadow_state.last_hit = rd.raw<Real>();
+        r.shadow_state.blocked = rd.raw<uint8_t>() != 0;
+        read_stack(rd, r.shadow_state.inside, numbers);
+        r.shadow_state.light = rd.raw<int32_t>();
+        r.parent = rd.raw<uint64_t>();
+        r.parent_box = rd.raw<int32_t>();
+        r.slot = rd.raw<uint16_t>();
+        r.pixel = rd.raw<int32_t>();
+        r.contribution = rd.rgb();
+        r.transmit_contribution = rd.raw<float>();
+    }
+    return rd.ok && box >= 0 && box < box_count;
+}
+
+using Buffer = std::shared_ptr<std::vector<uint8_t>>;
+
+Buffer control_frame(const json& j) {
+    auto buf = std::make_shared<std::vector<uint8_t>>();
+    std::string text = j.dump();
+    encode_opaque(FrameType::Control, 0,
+                  {reinterpret_cast<const uint8_t*>(text.data()), text.size()}, *buf);
+    return buf;
+}
+
+// Items for one destination process, batched; frames stay well below the body cap.
+struct Outbox {
+    static constexpr size_t kFlushBytes = 256 << 10;
+    std::mutex mutex;
+    std::vector<uint8_t> records;
+    uint32_t count = 0;
+    Buffer take() {  // with mutex held
+        auto buf = std::make_shared<std::vector<uint8_t>>();
+        encode_opaque(FrameType::Items, count, records, *buf);
+        records.clear();
+        count = 0;
+        return buf;
+    }
+};
+
+// ---- Connections
+// -------------------------------------------------------------------------
+
+// A dead peer shows as end of file or as a reset, depending on unread data in its socket.
+std::string disconnected(const boost::system::error_code& ec) {
+    if (ec == asio::error::eof || ec == asio::error::connection_reset ||
+        ec == asio::error::broken_pipe)
+        return "disconnected (connection lost)";
+    return "disconnected (" + ec.message() + ")";
+}
+
+class Connection : public std::enable_shared_from_this<Connection> {
+  public:
+    Connection(tcp::socket socket, std::string name)
+        : socket_(std::move(socket)), name_(std::move(name)) {
+        boost::system::error_code ec;
+        socket_.set_option(tcp::no_delay(true), ec);
+    }
+    std::function<void(Frame&)> on_frame;
+    std::function<void(const std::string&)> on_error;
+    const std::string& name() const { return name_; }
+
+    void start() { read(); }
+    void send(Buffer buf) {  // io thread only
+        if (closed_) return;
+        queue_.push_back(std::move(buf));
+        if (queue_.size() == 1) write();
+    }
+    void close() {
+        closed_ = true;
+        boost::system::error_code ec;
+        socket_.shutdown(tcp::socket::shutdown_both, ec);
+        socket_.close(ec);
+    }
+    bool closed() const { return closed_; }
+
+  private:
+    void read() {
+        auto self = shared_from_this();
+        socket_.async_read_some(
+            asio::buffer(chunk_), [this, self](boost::system::error_code ec, size_t n) {
+                if (closed_) return;
+                if (ec) return fail(disconnected(ec));
+                pending_.insert(pending_.end(), chunk_.begin(), chunk_.begin() + n);
+                size_t used = 0;
+                for (;;) {
+                    Frame frame;
+                    DecodeStatus st =
+                        decode_frame(std::span(pending_).subspan(used), frame);
+                    if (st == DecodeStatus::NeedMore) break;
+                    if (st == DecodeStatus::Bad)
+                        return fail("malformed frame or wrong protocol version");
+                    used += frame.consumed;
+                    on_frame(frame);
+                    if (closed_) return;
+                }
+                pending_.erase(pending_.begin(), pending_.begin() + used);
+                read();
+            });
+    }
+    void write() {
+        auto self = shared_from_this();
+        asio::async_write(socket_, asio::buffer(*queue_.front()),
+                          [this, self](boost::system::error_code ec, size_t) {
+                              if (closed_) return;
+                              if (ec) return fail(disconnected(ec));
+                              queue_.pop_front();
+                              if (!queue_.empty()) write();
+                          });
+    }
+    void fail(const std::string& why) {
+        if (closed_) return;
+        close();
+        if (on_error) on_error(why);
+    }
+
+    tcp::socket socket_;
+    std::string name_;
+    std::array<uint8_t, 64 << 10> chunk_;
+    std::vector<uint8_t> pending_;
+    std::deque<Buffer> queue_;
+    bool closed_ = false;
+};
+
+json parse_control(const Frame& f) {
+    return json::parse(f.body.begin(), f.body.end(), nullptr, false);
+}
+
+tcp::endpoint resolve(asio::io_context& io, const std::string& address) {
+    auto colon = address.rfind(':');
+    if (colon == std::string::npos)
+        throw DistribError("bad address '" + address + "' (HOST:PORT)");
+    tcp::resolver resolver(io);
+    boost::system::error_code ec;
+    auto results =
+        resolver.resolve(address.substr(0, colon), address.substr(colon + 1), ec);
+    if (ec || results.empty())
+        throw DistribError("cannot resolve '" + address + "': " + ec.message());
+    return *results.begin();
+}
+
+// ---- Worker
+// ------------------------------------------------------------------------------
+
+class Worker {
+  public:
+    explicit Worker(const WorkerOptions& options)
+        : options_(options), acceptor_(io_), status_timer_(io_) {}
+
+    int run() {
+        tcp::endpoint ep = resolve(io_, options_.listen);
+        acceptor_.open(ep.protocol());
+        acceptor_.set_option(tcp::acceptor::reuse_address(true));
+        acceptor_.bind(ep);
+        acceptor_.listen();
+        auto local = acceptor_.local_endpoint();
+        std::printf("povwall worker: listening on %s:%u\n",
+                    local.address().to_string().c_str(), unsigned(local.port()));
+        std::fflush(stdout);
+        accept();
+        io_.run();
+        if (host_) host_->stop();
+        if (render_.joinable()) render_.join();
+        return exit_code_;
+    }
+
+  private:
+    void accept() {
+        acceptor_.async_accept([this](boost::system::error_code ec, tcp::socket socket) {
+            if (ec) return;
+            std::string peer = "?";
+            boost::system::error_code pe;
+            auto rep = socket.remote_endpoint(pe);
+            if (!pe) peer = rep.address().to_string() + ":" + std::to_string(rep.port());
+            auto conn = std::make_shared<Connection>(std::move(socket), peer);
+            std::weak_ptr<Connection> weak = conn;
+            conn->on_frame = [this, weak](Frame& f) { hello(weak.lock(), f); };
+            conn->on_error = [](const std::string&) {};
+            conn->start();
+            accept();
+        });
+    }
+
+    void hello(std::shared_ptr<Connection> conn, Frame& f) {
+        json j = f.type == FrameType::Control ? parse_control(f) : json();
+        if (!j.is_object() || j.value("type", "") != "hello" ||
+            j.value("token", "") != options_.token) {
+            std::fprintf(
+                stderr,
+                "povwall worker: rejected a connection from %s: no valid job token\n",
+                conn->name().c_str());
+            conn->close();
+            return;
+        }
+        int from = j.value("from", -2);
+        if (from == -1 && !coordinator_) {
+            coordinator_ = conn;
+            conn->on_frame = [this](Frame& fr) { from_coordinator(fr); };
+            conn->on_error = [this](const std::string& why) {
+                if (!done_) {
+                    std::fprintf(stderr, "povwall worker: coordinator lost: %s\n",
+                                 why.c_str());
+                    exit_code_ = 3;
+                }
+                io_.stop();
+            };
+        } else if (from >= 0) {
+            incoming_.push_back(conn);
+            conn->on_frame = [this](Frame& fr) { items(fr); };
+        } else {
+            conn->close();
+        }
+    }
+
+    void from_coordinator(Frame& f) {
+        if (f.type == FrameType::Items) return items(f);
+        json j = parse_control(f);
+        const std::string type = j.is_object() ? j.value("type", "") : "";
+        if (type == "job") {
+            job(j);
+        } else if (type == "start") {
+            host_->set_box_empty(j.at("empty").get<std::vector<uint8_t>>());
+            render_ = std::thread([this] { host_->run(threads_, false); });
+            send_status(-1);
+        } else if (type == "probe") {
+            send_status(j.at("seq").get<long>());
+        } else if (type == "finish") {
+            finish();
+        }
+    }
+
+    void job(const json& j) {
+        parser::ParseOptions popts;
+        popts.image_reader = options_.image_reader;
+        popts.library_paths = j.at("library_paths").get<std::vector<std::string>>();
+        popts.declares = j.at("declares").get<std::map<std::string, double>>();
+        const json& anim = j.at("animation");
+        popts.clock = anim.at(0), popts.clock_delta = anim.at(1);
+        popts.initial_clock = anim.at(2), popts.final_clock = anim.at(3);
+        popts.frame_number = anim.at(4), popts.initial_frame = anim.at(5);
+        popts.final_frame = anim.at(6);
+        settings_.width = popts.image_width = j.at("width").get<int>();
+        settings_.height = popts.image_height = j.at("height").get<int>();
+        settings_.alpha = j.at("alpha").get<bool>();
+        settings_.plan_everything_on = j.at("plan_everything_on").get<bool>();
+        try {
+            scene_ = parser::parse_scene_text(j.at("scene").get<std::string>(),
+                                              j.at("name").get<std::string>(), popts);
+        } catch (const parser::ParseError& e) {
+            coordinator_->send(control_frame({{"type", "error"}, {"message", e.what()}}));
+            return;
+        }
+        space_.results = SpaceOptions::Results(j.at("results").get<int>());
+        space_.queue = QueuePolicy(j.at("queue").get<int>());
+        threads_ = options_.threads > 0 ? options_.threads : j.at("threads").get<int>();
+        if (threads_ <= 0)
+            threads_ = int(std::max(1u, std::thread::hardware_concurrency()));
+        owner_ = j.at("owner").get<std::vector<int>>();
+        self_ = j.at("index").get<int>();
+        auto walls = j.at("walls").get<std::array<std::vector<Real>, 3>>();
+        numbers_ = std::make_unique<ObjectNumbers>(scene_);
+        host_ = std::make_unique<BoxHost>(scene_, settings_, space_);
+        host_->set_walls(VirtualWalls(walls));
+        std::vector<int> mine;
+        for (size_t b = 0; b < owner_.size(); ++b) {
+            if (owner_[b] == self_) mine.push_back(int(b));
+        }
+        host_->build_boxes(mine);
+        if (options_.die_after_items >= 0 || options_.hang_after_items >= 0) {
+            host_->on_processed = [this] {
+                const long n = ++processed_;
+                if (n == options_.die_after_items) _exit(9);
+                if (n == options_.hang_after_items) raise(SIGSTOP);
+            };
+        }
+        const auto addresses = j.at("workers").get<std::vector<std::string>>();
+        peers_.resize(addresses.size());
+        for (size_t i = 0; i < addresses.size(); ++i)
+            outboxes_.push_back(std::make_unique<Outbox>());
+        host_->remote = [this](int box, Item&& item) {
+            Outbox& o = *outboxes_[owner_[box]];
+            std::lock_guard<std::mutex> lock(o.mutex);
+            Writer w{o.records};
+            write_item(w, box, item, *numbers_);
+            if (++o.count, o.records.size() >= Outbox::kFlushBytes)
+                post(owner_[box], o.take());
+        };
+        host_->flush = [this] {
+            for (size_t w = 0; w < outboxes_.size(); ++w) {
+                Outbox& o = *outboxes_[w];
+                std::lock_guard<std::mutex> lock(o.mutex);
+                if (o.count) post(int(w), o.take());
+            }
+        };
+        json ready = {{"type", "ready"}, {"boxes", mine}};
+        std::vector<size_t> counts;
+        for (int b : mine) counts.push_back(host_->primitive_count(b));
+        ready["primitives"] = counts;
+        int to_connect = 0;
+        for (size_t i = 0; i < addresses.size(); ++i) to_connect += int(i) != self_;
+        auto remaining = std::make_shared<int>(to_connect);
+        if (to_connect == 0) coordinator_->send(control_frame(ready));
+        for (size_t i = 0; i < addresses.size(); ++i) {
+            if (int(i) == self_) continue;
+            auto socket = std::make_shared<tcp::socket>(io_);
+            tcp::endpoint ep;
+            try {
+                ep = resolve(io_, addresses[i]);
+            } catch (const DistribError& e) {
+                coordinator_->send(
+                    control_frame({{"type", "error"}, {"message", e.what()}}));
+                return;
+            }
+            socket->async_connect(
+                ep, [this, socket, i, remaining, ready,
+                     address = addresses[i]](boost::system::error_code ec) {
+                    if (ec) {
+                        coordinator_->send(control_frame(
+                            {{"type", "error"},
+                             {"message", "cannot connect to worker " + address + ": " +
+                                             ec.message()}}));
+                        return;
+                    }
+                    auto conn = std::make_shared<Connection>(std::move(*socket), address);
+                    conn->on_frame = [](Frame&) {};
+                    conn->on_error = [](const std::string&) {
+                    };  // the coordinator sees the death
+                    conn->start();
+                    conn->send(control_frame(
+                        {{"type", "hello"}, {"token", options_.token}, {"from", self_}}));
+                    peers_[i] = conn;
+                    if (--*remaining == 0) coordinator_->send(control_frame(ready));
+                });
+        }
+    }
+
+    void post(int worker, Buffer buf) {
+        asio::post(io_, [this, worker, buf] {
+            if (peers_[worker]) peers_[worker]->send(buf);
+        });
+    }
+
+    void items(Frame& f) {
+        if (f.type != FrameType::Items || !host_) return;
+        Reader rd{f.body.data(), f.body.data() + f.body.size()};
+        for (uint32_t i = 0; i < f.count; ++i) {
+            Item item;
+            int box;
+            if (!read_item(rd, host_->box_count(), box, item, *numbers_) ||
+                !host_->hosts(box)) {
+                std::fprintf(stderr, "povwall worker: malformed item frame\n");
+                exit_code_ = 3;
+                io_.stop();
+                return;
+            }
+            host_->inject(box, std::move(item));
+        }
+    }
+
+    void send_status(long seq) {
+        if (!coordinator_ || coordinator_->closed() || done_) return;
+        // finished before created: a snapshot then never shows fewer created than exist.
+        uint64_t finished = host_->finished();
+        uint64_t created = host_->created();
+        coordinator_->send(control_frame({{"type", "status"},
+                                          {"seq", seq},
+                                          {"created", created},
+                                          {"finished", finished}}));
+        if (seq < 0) {
+            status_timer_.expires_after(std::chrono::milliseconds(10));
+            status_timer_.async_wait([this](boost::system::error_code ec) {
+                if (!ec) send_status(-1);
+            });
+        }
+    }
+
+    void finish() {
+        host_->stop();
+        if (render_.joinable()) render_.join();
+        status_timer_.cancel();
+        // Pixel sums, non-zero pixels only, as (index u32, r g b transmit f64) records.
+        std::vector<double> sums = host_->pixel_sums();
+        constexpr size_t kRecord = 4 + 4 * 8;
+        const size_t per_frame = kMaxBodySize / kRecord;
+        std::vector<uint8_t> body;
+        uint32_t count = 0;
+        auto flush_pixels = [&] {
+            auto buf = std::make_shared<std::vector<uint8_t>>();
+            encode_opaque(FrameType::Pixels, count, body, *buf);
+            coordinator_->send(buf);
+            body.clear();
+            count = 0;
+        };
+        for (size_t p = 0; p * 4 < sums.size(); ++p) {
+            const double* s = &sums[p * 4];
+            if (s[0] == 0 && s[1] == 0 && s[2] == 0 && s[3] == 0) continue;
+            Writer w{body};
+            w.raw(uint32_t(p));
+            for (int c = 0; c < 4; ++c) w.raw(s[c]);
+            if (++count == per_frame) flush_pixels();
+        }
+        if (count) flush_pixels();
+        json boxes = json::array();
+        for (const BoxStats& b : host_->box_stats()) {
+            boxes.push_back({b.objects, b.resident_bytes, b.camera, b.reflected,
+                             b.refracted, b.shadow, b.rays_received, b.results_received,
+                             b.messages_sent, b.peak_queue, b.peak_parents,
+                             b.busy_seconds});
+        }
+        coordinator_->send(control_frame({{"type", "done"}, {"stats", boxes}}));
+        done_ = true;  // the coordinator closes the connection; then io_.run() returns
+    }
+
+    WorkerOptions options_;
+    asio::io_context io_;
+    tcp::acceptor acceptor_;
+    asio::steady_timer status_timer_;
+    std::shared_ptr<Connection> coordinator_;
+    std::vector<std::shared_ptr<Connection>> incoming_, peers_;
+    std::vector<std::unique_ptr<Outbox>> outboxes_;
+    Scene scene_;
+    trace::RenderSettings settings_;
+    SpaceOptions space_;
+    std::unique_ptr<ObjectNumbers> numbers_;
+    std::unique_ptr<BoxHost> host_;
+    std::vector<int> owner_;
+    int self_ = 0, threads_ = 1;
+    std::thread render_;
+    std::atomic<long> processed_{0};
+    bool done_ = false;
+    int exit_code_ = 0;
+};
+
+// ---- Coordinator
+// -------------------------------------------------------------------------
+
+struct LocalWorker {
+    pid_t pid = -1;
+    std::string address;
+};
+
+LocalWorker spawn_worker(const std::string& binary, const std::string& token,
+                         int threads) {
+    int fds[2];
+    if (pipe(fds) != 0) throw DistribError("cannot create a pipe for a worker process");
+    pid_t pid = fork();
+    if (pid < 0) throw DistribError("cannot start a worker process");
+    if (pid == 0) {
+        dup2(fds[1], 1);
+        close(fds[0]);
+        close(fds[1]);
+        std::string t = std::to_string(threads);
+        execl(binary.c_str(), "povwall", "worker", "--listen", "127.0.0.1:0", "--token",
+              token.c_str(), "--threads", t.c_str(), (char*)nullptr);
+        _exit(127);
+    }
+    close(fds[1]);
+    FILE* in = fdopen(fds[0], "r");
+    char line[256] = {};
+    bool got = std::fgets(line, sizeof line, in) != nullptr;
+    std::fclose(in);
+    const char* prefix = "povwall worker: listening on ";
+    if (!got || std::strncmp(line, prefix, std::strlen(prefix)) != 0) {
+        kill(pid, SIGKILL);
+        waitpid(pid, nullptr, 0);
+        throw DistribError("worker process " + binary + " did not start");
+    }
+    std::string address = line + std::strlen(prefix);
+    while (!address.empty() && (address.back() == '\n' || address.back() == '\r'))
+        address.pop_back();
+    return {pid, address};
+}
+
+class Coordinator {
+  public:
+    Coordinator(const Scene& scene, const SceneSource& source,
+                const trace::RenderSettings& settings, const SpaceOptions& options,
+                const TcpOptions& tcp_options)
+        : scene_(scene),
+          source_(source),
+          settings_(settings),
+          options_(options),
+          tcp_(tcp_options),
+          emitter_(scene, settings, options),
+          timer_(io_) {}
+
+    ~Coordinator() {
+        for (auto& w : workers_) {
+            if (w.conn) w.conn->close();
+        }
+        for (const LocalWorker& l : local_) {
+            if (!finished_all_) kill(l.pid, SIGKILL);  // failed: take the job down
+            wait_child(l.pid, 10.0);
+        }
+    }
+
+    Image run(SpaceStats* stats) {
+        auto t0 = Clock::now();
+        std::string token = tcp_.token;
+        std::vector<std::string> addresses = tcp_.workers;
+        if (tcp_.procs > 0) {
+            if (token.empty()) {
+                std::random_device rd;
+                char hex[33];
+                std::snprintf(hex, sizeof hex, "%08x%08x%08x%08x", rd(), rd(), rd(),
+                              rd());
+                token = hex;
+            }
+            unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+            int threads = settings_.threads > 0
+                              ? settings_.threads
+                              : int(std::max(1u, cores / unsigned(tcp_.procs)));
+            for (int i = 0; i < tcp_.procs; ++i) {
+                local_.push_back(spawn_worker(tcp_.worker_binary, token, threads));
+                addresses.push_back(local_.back().address);
+            }
+        }
+        if (addresses.empty()) throw DistribError("no workers");
+        emitter_.place_walls();
+        emitter_.build_boxes({});
+        const int boxes = emitter_.walls().box_count();
+        const int n = int(addresses.size());
+        // Contiguous runs of box indices per worker: neighbours along x share a process.
+        owner_.resize(boxes);
+        for (int b = 0; b < boxes; ++b) owner_[b] = int(int64_t(b) * n / boxes);
+        json job = {
+            {"type", "job"},
+            {"scene", source_.text},
+            {"name", source_.display_name},
+            {"library_paths", source_.library_paths},
+            {"declares", source_.declares},
+            {"animation",
+             {source_.clock, source_.clock_delta, source_.initial_clock,
+              source_.final_clock, source_.frame_number, source_.initial_frame,
+              source_.final_frame}},
+            {"width", settings_.width},
+            {"height", settings_.height},
+            {"alpha", settings_.alpha},
+            {"plan_everything_on", settings_.plan_everything_on},
+            {"results", int(options_.results)},
+            {"queue", int(options_.queue)},
+            {"threads", settings_.threads},
+            {"walls", std::array<std::vector<Real>, 3>{emitter_.walls().walls(0),
+                                                       emitter_.walls().walls(1),
+                                                       emitter_.walls().walls(2)}},
+            {"owner", owner_},
+            {"workers", addresses}};
+        workers_.resize(n);
+        for (int i = 0; i < n; ++i) {
+            WorkerState& w = workers_[i];
+            w.address = addresses[i];
+            tcp::socket socket(io_);
+            boost::system::error_code ec;
+            socket.connect(resolve(io_, w.address), ec);
+            if (ec) {
+                failed_ = true;
+                throw DistribError("cannot connect to worker " + std::to_string(i) +
+                                   " (" + w.address + "): " + ec.message());
+            }
+            w.conn = std::make_shared<Connection>(std::move(socket), w.address);
+            w.conn->on_frame = [this, i](Frame& f) { from_worker(i, f); };
+            w.conn->on_error = [this, i](const std::string& why) { fail(i, why); };
+            w.conn->start();
+            w.conn->send(
+                control_frame({{"type", "hello"}, {"token", token}, {"from", -1}}));
+            job["index"] = i;
+            w.conn->send(control_frame(job));
+            w.last_seen = Clock::now();
+            w.outbox = std::make_unique<Outbox>();
+        }
+        sums_.assign(size_t(settings_.width) * settings_.height * 4, 0.0);
+        empty_.assign(boxes, 1);
+        box_stats_ = emitter_.box_stats();
+        watch();
+        io_.run();
+        if (failed_) throw DistribError(error_);
+        Image image =
+            image_from_sums(sums_, settings_.width, settings_.height, settings_.alpha);
+        if (stats) {
+            stats->parent_tracking = emitter_.parent_tracking();
+            stats->boxes = box_stats_;
+            stats->seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        }
+        return image;
+    }
+
+  private:
+    struct WorkerState {
+        std::string address;
+        std::shared_ptr<Connection> conn;
+        std::unique_ptr<Outbox> outbox;
+        Clock::time_point last_seen;
+        bool ready = false, done = false;
+        uint64_t created = 0, finished = 0;  // latest status
+        long wave_seq = -1;                  // latest probe answered
+        uint64_t wave_created = 0, wave_finished = 0;
+    };
+
+    std::string describe(int i) const {
+        int first = -1, last = -1;
+        for (size_t b = 0; b < owner_.size(); ++b) {
+            if (owner_[b] != i) continue;
+            if (first < 0) first = int(b);
+            last = int(b);
+        }
+        std::string boxes =
+            first == last ? "box " + std::to_string(first)
+                          : "boxes " + std::to_string(first) + "-" + std::to_string(last);
+        return "worker " + std::to_string(i) + " (" + workers_[i].address + ", " + boxes +
+               ")";
+    }
+
+    void fail(int i, const std::string& why) {
+        if (failed_ || finished_all_) return;
+        failed_ = true;
+        error_ = describe(i) + ": " + why;
+        io_.stop();
+    }
+
+    void watch() {  // heartbeat: a worker silent for the timeout is taken as dead
+        timer_.expires_after(std::chrono::milliseconds(250));
+        timer_.async_wait([this](boost::system::error_code ec) {
+            if (ec) return;
+            for (size_t i = 0; i < workers_.size(); ++i) {
+                double silent =
+                    std::chrono::duration<double>(Clock::now() - workers_[i].last_seen)
+                        .count();
+                // Parsing and preparing may take long before the start; then 10 ms beats.
+                const double limit = started_ ? tcp_.heartbeat_timeout : 120.0;
+                if (!workers_[i].done && silent > limit) {
+                    return fail(int(i),
+                                "no message for " + std::to_string(int(silent)) + " s");
+                }
+            }
+            watch();
+        });
+    }
+
+    void from_worker(int i, Frame& f) {
+        WorkerState& w = workers_[i];
+        w.last_seen = Clock::now();
+        if (f.type == FrameType::Pixels) {
+            Reader rd{f.body.data(), f.body.data() + f.body.size()};
+            for (uint32_t k = 0; k < f.count; ++k) {
+                uint32_t p = rd.raw<uint32_t>();
+                double v[4];
+                for (double& c : v) c = rd.raw<double>();
+                if (!rd.ok || size_t(p) * 4 >= sums_.size())
+                    return fail(i, "bad pixel frame");
+                for (int c = 0; c < 4; ++c) sums_[size_t(p) * 4 + c] += v[c];
+            }
+            return;
+        }
+        if (f.type != FrameType::Control) return fail(i, "unexpected frame");
+        json j = parse_control(f);
+        const std::string type = j.is_object() ? j.value("type", "") : "";
+        if (type == "error") {
+            return fail(i, j.value("message", "error"));
+        } else if (type == "ready") {
+            auto mine = j.at("boxes").get<std::vector<int>>();
+            auto counts = j.at("primitives").get<std::vector<size_t>>();
+            for (size_t k = 0; k < mine.size() && k < counts.size(); ++k)
+                empty_[mine[k]] = counts[k] == 0;
+            w.ready = true;
+            for (const WorkerState& o : workers_) {
+                if (!o.ready) return;
+            }
+            emitter_.set_box_empty(empty_);
+            started_ = true;
+            for (WorkerState& o : workers_)
+                o.conn->send(control_frame({{"type", "start"}, {"empty", empty_}}));
+            emit();
+        } else if (type == "status") {
+            w.created = j.at("created").get<uint64_t>();
+            w.finished = j.at("finished").get<uint64_t>();
+            long seq = j.at("seq").get<long>();
+            if (seq >= 0) {
+                w.wave_seq = seq;
+                w.wave_created = w.created;
+                w.wave_finished = w.finished;
+                check_wave();
+            }
+            emit();
+        } else if (type == "done") {
+            const json& boxes = j.at("stats");
+            size_t k = 0;
+            for (size_t b = 0; b < owner_.size(); ++b) {
+                if (owner_[b] != i || k >= boxes.size()) continue;
+                const json& s = boxes[k++];
+                BoxStats& out = box_stats_[b];
+                out.objects = s[0], out.resident_bytes = s[1], out.camera = s[2];
+                out.reflected = s[3], out.refracted = s[4], out.shadow = s[5];
+                out.rays_received = s[6], out.results_received = s[7],
+                out.messages_sent = s[8];
+                out.peak_queue = s[9], out.peak_parents = s[10], out.busy_seconds = s[11];
+            }
+            w.done = true;
+            for (const WorkerState& o : workers_) {
+                if (!o.done) return;
+            }
+            finished_all_ = true;
+            timer_.cancel();
+            for (WorkerState& o : workers_) o.conn->close();
+        }
+    }
+
+    // Camera rays while the last reported traffic is below the in-flight bound.
+    void emit() {
+        const int total = settings_.width * settings_.height;
+        int64_t live = int64_t(created_);
+        for (const WorkerState& w : workers_)
+            live += int64_t(w.created) - int64_t(w.finished);
+        while (next_pixel_ < total && live < int64_t(options_.max_rays_in_flight)) {
+            int end = std::min(total, next_pixel_ + 1024);
+            for (int p = next_pixel_; p < end; ++p) {
+                Item item;
+                int box = emitter_.camera_item(p, item);
+                if (box < 0) continue;
+                Outbox& o = *workers_[owner_[box]].outbox;
+                Writer wr{o.records};
+                write_item(wr, box, item, numbers_);
+                ++o.count;
+            }
+            created_ += uint64_t(end - next_pixel_);
+            live += end - next_pixel_;
+            next_pixel_ = end;
+            for (WorkerState& w : workers_) {
+                if (w.outbox->count) w.conn->send(w.outbox->take());
+            }
+        }
+        if (next_pixel_ >= total && live == 0 && wave_pending_ < 0) probe();
+    }
+
+    // Termination: two consecutive probe waves with identical counters of every worker
+    // mean the counters held at one instant between them; created == finished then means
+    // no ray or result was queued, being traced, or on the wire anywhere.
+    void probe() {
+        wave_pending_ = ++wave_seq_;
+        for (WorkerState& w : workers_) {
+            w.conn->send(control_frame({{"type", "probe"}, {"seq", wave_seq_}}));
+        }
+    }
+
+    void check_wave() {
+        if (wave_pending_ < 0) return;
+        uint64_t created = created_, finished = 0;
+        std::vector<std::pair<uint64_t, uint64_t>> counts;
+        for (const WorkerState& w : workers_) {
+            if (w.wave_seq != wave_pending_) return;
+            created += w.wave_created;
+            finished += w.wave_finished;
+            counts.emplace_back(w.wave_created, w.wave_finished);
+        }
+        wave_pending_ = -1;
+        const bool same = counts == last_wave_;
+        last_wave_ = counts;
+        if (created != finished) return;  // traffic remains: later statuses probe again
+        if (!same) return probe();
+        for (WorkerState& w : workers_) w.conn->send(control_frame({{"type", "finish"}}));
+    }
+
+    const Scene& scene_;
+    const SceneSource& source_;
+    const trace::RenderSettings& settings_;
+    const SpaceOptions& options_;
+    const TcpOptions& tcp_;
+    asio::io_context io_;
+    BoxHost emitter_;  // walls and camera rays; hosts no box
+    ObjectNumbers numbers_{scene_};
+    asio::steady_timer timer_;
+    std::vector<LocalWorker> local_;
+    std::vector<WorkerState> workers_;
+    std::vector<int> owner_;
+    std::vector<uint8_t> empty_;
+    std::vector<BoxStats> box_stats_;
+    std::vector<double> sums_;
+    std::vector<std::pair<uint64_t, uint64_t>> last_wave_;
+    uint64_t created_ = 0;
+    int next_pixel_ = 0;
+    long wave_seq_ = 0, wave_pending_ = -1;
+    bool failed_ = false, finished_all_ = false, started_ = false;
+    std::string error_;
+};
+
+}  // namespace
+
+std::vector<uint8_t> encode_control_frame(const std::string& text) {
+    std::vector<uint8_t> out;
+    encode_opaque(FrameType::Control, 0,
+                  {reinterpret_cast<const uint8_t*>(text.data()), text.size()}, out);
+    return out;
+}
+
+Image render_tcp(const Scene& scene, const SceneSource& source,
+                 const trace::RenderSettings& settings, const SpaceOptions& options,
+                 const TcpOptions& tcp, SpaceStats* stats) {
+    Coordinator c(scene, source, settings, options, tcp);
+    try {
+        return c.run(stats);
+    } catch (const DistribError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw DistribError(e.what());
+    }
+}
+
+int run_worker(const WorkerOptions& options) {
+    try {
+        Worker w(options);
+        return w.run();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "povwall worker: error: %s\n", e.what());
+        return 2;
+    }
+}
+
+}  // namespace povwall::distrib

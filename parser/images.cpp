@@ -1,0 +1,211 @@
+// image_map { } and bump_map { }: the file reference, POV-Ray 3.7's input gamma rules and
+// the mapping attributes. Pixels come from ParseOptions::image_reader (the parser itself
+// has no image library); without one, only the reference is recorded.
+#include <cmath>
+#include <filesystem>
+
+#include "parser/interpreter.h"
+
+namespace povwall::parser {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A transfer curve an image's values are encoded with.
+struct Curve {
+    enum class Kind { Neutral, Srgb, Power } kind = Kind::Neutral;
+    float decoding_exponent = 1;  // Power: linear = encoded^exponent
+    float decode(float v) const {
+        switch (kind) {
+            case Kind::Srgb:
+                return v <= 0.04045f ? v / 12.92f
+                                     : float(std::pow((v + 0.055) / 1.055, 2.4));
+            case Kind::Power:
+                return v <= 0 ? v : float(std::pow(double(v), double(decoding_exponent)));
+            default:
+                return v;
+        }
+    }
+};
+
+Curve power(float exponent) { return {Curve::Kind::Power, exponent}; }
+
+// The file types POV-Ray names before the file name, and the extensions it tries.
+struct FileType {
+    const char* keyword;
+    const char* extension;
+};
+constexpr FileType kFileTypes[] = {{"png", ".png"},  {"tga", ".tga"}, {"ppm", ".ppm"},
+                                   {"pgm", ".pgm"},  {"gif", ".gif"}, {"jpeg", ".jpg"},
+                                   {"tiff", ".tif"}, {"bmp", ".bmp"}, {"exr", ".exr"},
+                                   {"hdr", ".hdr"},  {"iff", ".iff"}, {"sys", ""}};
+
+}  // namespace
+
+std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& keyword,
+                                                                   Normal* bump) {
+    expect_punct('{', bump ? "after 'bump_map'" : "after 'image_map'");
+    const bool is_bump = bump != nullptr;
+    const FileType* type = nullptr;
+    const Token& first = peek();
+    for (const FileType& ft : kFileTypes) {
+        if (is_word(first, ft.keyword)) type = &ft;
+    }
+    if (type) {
+        if (std::string_view(type->keyword) == "iff" ||
+            std::string_view(type->keyword) == "sys")
+            unsupported(first, std::string("image file type ") + type->keyword);
+        next();
+    } else if (first.kind == TokenKind::Word && first.text == "function") {
+        unsupported(first, std::string(keyword.text) + " function");
+    }
+    Token name_token = peek();
+    std::string name = parse_string();
+
+    // POV-Ray looks for image files where it looks for include files, also with the
+    // type's extension appended when the name has none.
+    std::string path = resolve_include(name, frames_.back().file);
+    if ((path.empty() || fs::path(path).extension() == ".inc") && type &&
+        fs::path(name).extension().empty() && *type->extension) {
+        path = resolve_include(name + type->extension, frames_.back().file);
+    }
+    if (path.empty() || fs::path(path).extension() == ".inc") {
+        error(name_token, "cannot find image file \"" + name + "\"");
+    }
+
+    // Optional decoding gamma and premultiplication right after the name.
+    std::optional<Curve> explicit_gamma;
+    for (;;) {
+        if (accept_word("gamma")) {
+            if (accept_word("srgb")) {
+                explicit_gamma = Curve{Curve::Kind::Srgb, 1};
+            } else {
+                Token at = peek();
+                float g = float(parse_float());
+                if (g <= 0) error(at, "gamma value must be positive");
+                explicit_gamma = power(g);
+            }
+        } else if (const Token& t = peek(); is_word(t, "premultiplied")) {
+            unsupported(t, "premultiplied");
+        } else {
+            break;
+        }
+    }
+
+    auto mapping = std::make_shared<ImageMapping>();
+    mapping->path = path;
+    image_files_.push_back(path);
+    if (options_.image_reader) {
+        StoredImage stored;
+        try {
+            stored = options_.image_reader(path);
+        } catch (const std::exception& e) {
+            error(name_token, e.what());
+        }
+        // POV-Ray 3.7's gamma modes: legacy scenes (#version < 3.7, no assumed_gamma)
+        // read images raw; 3.6 scenes with assumed_gamma take files to be in the working
+        // gamma; 3.7 scenes decode with the file type's gamma. bump_map reads raw unless
+        // a gamma is given (POV-Ray treats its data as heights, not colours).
+        const bool assumed = scene_.settings.assumed_gamma.has_value();
+        const float working = scene_.settings.assumed_gamma.value_or(1.0f);
+        const bool legacy = version_ < 370 && !assumed;
+        bool correct = !legacy && !is_bump;
+        std::optional<Curve> fallback;  // POV-Ray's options.defaultGamma
+        if (correct && version_ < 370) fallback = power(working);
+        if (explicit_gamma) {
+            correct = true;
+            fallback = explicit_gamma;
+        }
+        Curve file;
+        if (correct) {
+            const std::string& f = stored.format;
+            if (f == "pnm" || f == "openexr" || f == "hdr") {
+                // Netpbm files may or may not be encoded; HDR formats are linear.
+                if (fallback && (f == "pnm" || explicit_gamma)) file = *fallback;
+            } else if (f == "png" && !explicit_gamma && stored.declared_gamma > 0) {
+                file = power(stored.declared_gamma);
+            } else {
+                file = fallback ? *fallback : Curve{Curve::Kind::Srgb, 1};
+            }
+        }
+        // Decoded values are re-encoded in the working gamma (image_map only).
+        const bool encode_working = correct && !is_bump && working != 1.0f;
+        auto px = std::make_shared<ImagePixels>();
+        px->width = stored.pixels.width;
+        px->height = stored.pixels.height;
+        px->rgbft.resize(size_t(px->width) * size_t(px->height) * 5);
+        for (size_t i = 0; i < size_t(px->width) * size_t(px->height); ++i) {
+            const float* s = &stored.pixels.rgba[i * 4];
+            float* d = &px->rgbft[i * 5];
+            for (int c = 0; c < 3; ++c) {
+                float v = correct ? file.decode(s[c]) : s[c];
+                if (encode_working && v > 0)
+                    v = float(std::pow(double(v), 1.0 / working));
+                d[c] = v;
+            }
+            d[3] = 0;
+            d[4] = stored.has_alpha ? 1.0f - s[3] : 0.0f;
+        }
+        mapping->pixels = std::move(px);
+        mapping->width = mapping->pixels->width;
+        mapping->height = mapping->pixels->height;
+    }
+
+    auto uv = [&]() {
+        Numeric n = parse_express();
+        return n.size == 1 ? std::pair{n.c[0], n.c[0]} : std::pair{n.c[0], n.c[1]};
+    };
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) break;
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (w == "once") {
+            mapping->once = true;
+        } else if (w == "interpolate") {
+            Token at = peek();
+            mapping->interpolate = int(parse_float());
+            if (!is_bump && mapping->interpolate != 2 && mapping->interpolate != 3 &&
+                mapping->interpolate != 4)
+                error(at, "invalid interpolate value (2, 3 or 4)");
+        } else if (w == "map_type") {
+            Token at = peek();
+            mapping->map_type = int(parse_float());
+            // POV-Ray 3.7.0's map types: 0 planar, 1 spherical, 2 cylindrical, 5 torus
+            // (7, angular, came later).
+            int mt = mapping->map_type;
+            if (mt != 0 && mt != 1 && mt != 2 && mt != 5)
+                error(at, "invalid map_type value");
+        } else if (w == "use_color" || w == "use_colour") {
+            mapping->use_index = false;
+        } else if (w == "use_index") {
+            mapping->use_index = true;
+        } else if (w == "repeat") {
+            Token at = peek();
+            auto [ru, rv] = uv();
+            if (ru <= 0 || rv <= 0) error(at, "zero or negative image repeat vector");
+            mapping->width = mapping->width * ru;
+            mapping->height = mapping->height * rv;
+        } else if (w == "offset") {
+            auto [ou, ov] = uv();
+            mapping->offset_u = -ou * (mapping->pixels ? mapping->pixels->width : 0);
+            mapping->offset_v = -ov * (mapping->pixels ? mapping->pixels->height : 0);
+        } else if (is_bump && w == "bump_size") {
+            bump->amount = parse_float();
+        } else if (!is_bump && (w == "filter" || w == "transmit")) {
+            if (accept_word("all")) {
+                float v = float(parse_float());
+                (w == "filter" ? mapping->all_filter : mapping->all_transmit) = v;
+            } else {
+                // Per-index values need a colour-mapped (palette) image; OpenImageIO
+                // expands palettes, so every image is read as true colour here.
+                error(t, std::string(w) + " <index> needs a colour-mapped image; use " +
+                             std::string(w) + " all");
+            }
+        } else {
+            expected(is_bump ? "a bump_map item or '}'" : "an image_map item or '}'", t);
+        }
+    }
+    return mapping;
+}
+
+}  // namespace povwall::parser

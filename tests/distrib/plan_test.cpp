@@ -1,0 +1,252 @@
+// The render plan leaves out what a scene cannot use, and leaving it out changes no
+// pixel: every scene is rendered with the plan and with the plan forced on ("everything
+// on"), in one process and in black boxes, and the images must be bit-identical.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "distrib/distribution_plan.h"
+#include "distrib/space_render.h"
+#include "parser/parser.h"
+#include "trace/render.h"
+#include "trace/render_plan.h"
+
+namespace povwall::distrib {
+namespace {
+
+// Diffuse only: no reflection, no transparency, a spotlight and a point light.
+const char* kDiffuse = R"(
+camera { location <0, 3, -8> look_at <0, 0.5, 0> }
+light_source { <-4, 8, -6> color rgb 1 }
+light_source { <3, 6, -2> color rgb 0.8 spotlight point_at <1, 0, 0> radius 10 falloff 20 }
+plane { y, 0 pigment { checker color rgb 1 color rgb 0.3 } }
+#declare I = 0;
+#while (I < 40)
+  sphere { <mod(I, 8) - 3.5, 0.4, div(I, 8) - 1>, 0.35 pigment { color rgb <0.8, 0.5, 0.2> } }
+  #declare I = I + 1;
+#end
+)";
+
+// Glass, a reflection exponent (non-linear), no_shadow objects.
+const char* kGlass = R"(
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 2, -6> look_at <0, 0.8, 0> }
+light_source { <-3, 7, -5> color rgb 1 }
+plane { y, 0 pigment { color rgb 0.7 } finish { reflection { 0.3 exponent 0.7 } } }
+sphere { <0, 1, 0>, 0.9 pigment { rgbf <1, 1, 1, 0.9> } interior { ior 1.5 } }
+box { <1, 0, -1>, <2, 1, 0> pigment { color rgb <0.2, 0.4, 1> } no_shadow }
+)";
+
+// One convex object: nothing can stand between its lit points and the light.
+const char* kLoneSphere = R"(
+camera { location <0, 0, -4> look_at 0 }
+light_source { <2, 4, -3> color rgb 1 }
+light_source { <-5, 1, -1> color rgb 0.5 }
+sphere { 0, 1 pigment { color rgb <1, 0.6, 0.3> } finish { phong 0.6 } scale <1, 0.7, 1.2> }
+)";
+
+// Every object no_shadow: no shadow ray can be blocked.
+const char* kNoShadow = R"(
+camera { location <0, 2, -6> look_at 0 }
+light_source { <2, 5, -3> color rgb 1 }
+plane { y, -1 pigment { color rgb 0.8 } no_shadow }
+sphere { 0, 1 pigment { color rgb <0.3, 0.6, 1> } no_shadow }
+)";
+
+Scene parse(const char* text) { return parser::parse_scene_text(text, "plan.pov", {}); }
+
+trace::RenderSettings settings(bool everything_on) {
+    trace::RenderSettings s;
+    s.width = 64;
+    s.height = 48;
+    s.threads = 2;
+    s.plan_everything_on = everything_on;
+    return s;
+}
+
+// Forward contributions sum a pixel in another order than parents combining children.
+float max_difference(const Image& a, const Image& b) {
+    float m = 0;
+    for (size_t i = 0; i < a.rgba.size(); ++i)
+        m = std::max(m, std::fabs(a.rgba[i] - b.rgba[i]));
+    return m;
+}
+
+bool identical(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height &&
+           std::memcmp(a.rgba.data(), b.rgba.data(), a.rgba.size() * sizeof(float)) == 0;
+}
+
+TEST(RenderPlan, DiffuseSceneHasNoReflectionRefractionOrParentTable) {
+    Scene scene = parse(kDiffuse);
+    trace::RenderPlan plan = trace::make_render_plan(scene);
+    EXPECT_FALSE(plan.reflection_rays);
+    EXPECT_FALSE(plan.transmission_rays);
+    EXPECT_FALSE(plan.refraction_rays);
+    EXPECT_FALSE(plan.parent_tracking);
+    ASSERT_EQ(plan.lights.size(), 2u);
+    EXPECT_TRUE(plan.lights[0].shadow_rays);
+    EXPECT_EQ(plan.finite_primitives, 40u);
+    EXPECT_EQ(plan.infinite_primitives, 1u);
+
+    trace::RenderStats stats;
+    trace::render_scene(scene, settings(false), &stats);
+    EXPECT_EQ(stats.camera_rays, 64u * 48u);
+    EXPECT_EQ(stats.reflected_rays, 0u);
+    EXPECT_EQ(stats.refracted_rays, 0u);
+    EXPECT_GT(stats.shadow_rays, 0u);
+
+    SpaceOptions o;
+    o.boxes = {2, 2, 2};
+    SpaceStats space;
+    render_space(scene, settings(false), o, &space);
+    EXPECT_FALSE(space.parent_tracking);
+    for (const BoxStats& b : space.boxes) {
+        EXPECT_EQ(b.reflected, 0u);
+        EXPECT_EQ(b.refracted, 0u);
+        EXPECT_EQ(b.peak_parents, 0u);
+        EXPECT_EQ(b.results_received, 0u);
+    }
+}
+
+TEST(RenderPlan, GlassSceneNeedsEverything) {
+    trace::RenderPlan plan = trace::make_render_plan(parse(kGlass));
+    EXPECT_TRUE(plan.reflection_rays);
+    EXPECT_TRUE(plan.transmission_rays);
+    EXPECT_TRUE(plan.refraction_rays);
+    EXPECT_TRUE(plan.parent_tracking);  // reflection exponent
+    ASSERT_EQ(plan.lights.size(), 1u);
+    EXPECT_TRUE(plan.lights[0].shadow_rays);
+}
+
+TEST(RenderPlan, UnblockableShadowRaysAreLeftOut) {
+    for (const char* text : {kLoneSphere, kNoShadow}) {
+        Scene scene = parse(text);
+        trace::RenderPlan plan = trace::make_render_plan(scene);
+        for (const auto& l : plan.lights) {
+            EXPECT_FALSE(l.shadow_rays) << l.reason;
+            EXPECT_TRUE(l.unoccluded);
+        }
+        trace::RenderStats left_out, forced;
+        trace::render_scene(scene, settings(false), &left_out);
+        trace::render_scene(scene, settings(true), &forced);
+        EXPECT_EQ(left_out.shadow_rays, 0u);
+        EXPECT_GT(forced.shadow_rays, 0u);
+    }
+    // A second object that casts shadows brings them back.
+    std::string two = std::string(kLoneSphere) + "sphere { <1, 2, -1>, 0.3 }\n";
+    for (const auto& l : trace::make_render_plan(parse(two.c_str())).lights)
+        EXPECT_TRUE(l.shadow_rays);
+}
+
+TEST(RenderPlan, ForcedOnPlanChangesNoPixel) {
+    for (const char* text : {kDiffuse, kGlass, kLoneSphere, kNoShadow}) {
+        Scene scene = parse(text);
+        Image planned = trace::render_scene(scene, settings(false));
+        Image forced = trace::render_scene(scene, settings(true));
+        EXPECT_TRUE(identical(planned, forced)) << text;
+        // In boxes, with the same way of returning colours: bit-identical.
+        SpaceOptions o;
+        o.boxes = {2, 2, 2};
+        o.results = SpaceOptions::Results::Parents;
+        Image boxes_planned = render_space(scene, settings(false), o);
+        Image boxes_forced = render_space(scene, settings(true), o);
+        EXPECT_TRUE(identical(boxes_planned, boxes_forced)) << text;
+        // The plan's own choice (forward contributions when linear) against parents
+        // everywhere: the same sums in another order.
+        o.results = SpaceOptions::Results::Auto;
+        EXPECT_LE(max_difference(render_space(scene, settings(false), o), boxes_forced),
+                  1e-6f)
+            << text;
+    }
+}
+
+TEST(RenderPlan, ForcedOnBuildsTheOctreeEvenForFewObjects) {
+    Scene scene = parse(kGlass);
+    trace::RenderStats planned, forced;
+    trace::render_scene(scene, settings(false), &planned);
+    trace::render_scene(scene, settings(true), &forced);
+    EXPECT_TRUE(planned.octree_flat);
+    EXPECT_FALSE(forced.octree_flat);
+}
+
+TEST(RenderPlan, ExplainsInPlainWords) {
+    Scene scene = parse(kDiffuse);
+    auto lines = trace::explain_plan(trace::make_render_plan(scene), scene);
+    std::vector<std::string> expected = {
+        "no reflective materials: reflection rays off",
+        "no transparent materials: transmission and refraction rays off",
+        "light 1 (point light): shadow rays",
+        "light 2 (spotlight): shadow rays; none outside its 20-degree falloff cone",
+        "points a light does not reach (back faces, outside spot cones): no shadow ray",
+        "40 bounded primitives: octree",
+        "1 unbounded primitives (planes, unbounded CSG): tested by every ray",
+        "shading is linear: contributions go straight to the pixel, no parent table",
+    };
+    EXPECT_EQ(lines, expected);
+    Scene lone = parse(kLoneSphere);
+    auto lone_lines = trace::explain_plan(trace::make_render_plan(lone), lone);
+    EXPECT_EQ(
+        lone_lines[2],
+        "light 1 (point light): the only object is convex and cannot shadow itself: no "
+        "shadow rays");
+    EXPECT_EQ(lone_lines[5], "1 bounded primitives (< 24): no octree, a flat list");
+}
+
+TEST(DistributionPlan, FitsInOneProcessOrSplitsSpaceToTheBudget) {
+    Scene scene = parse(kDiffuse);
+    DistributionRequest request;
+    request.worker_memory = size_t(1) << 30;
+    DistributionPlan fits = plan_distribution(scene, request);
+    EXPECT_EQ(fits.mode, RenderMode::Single);
+    EXPECT_GT(fits.scene_bytes, 40u * 100);
+
+    request.worker_memory = fits.scene_bytes / 3;
+    DistributionPlan split = plan_distribution(scene, request);
+    ASSERT_EQ(split.mode, RenderMode::Space);
+    EXPECT_LE(split.largest_box_bytes, request.worker_memory);
+    EXPECT_GT(split.space.boxes[0], 1);
+    // The boxes really hold no more than the budget once prepared, and the image is the
+    // single-process one.
+    SpaceStats stats;
+    Image boxes = render_space(scene, settings(false), split.space, &stats);
+    for (const BoxStats& b : stats.boxes)
+        EXPECT_LE(b.resident_bytes, request.worker_memory);
+    EXPECT_LE(max_difference(boxes, trace::render_scene(scene, settings(false))), 1e-6f);
+}
+
+TEST(DistributionPlan, EstimateIsCloseToThePreparedSize) {
+    Scene scene = parse(kDiffuse);
+    DistributionRequest request;
+    size_t estimate = plan_distribution(scene, request).scene_bytes;
+    trace::RenderStats stats;
+    trace::render_scene(scene, settings(false), &stats);
+    EXPECT_GT(double(estimate), 0.7 * double(stats.resident_bytes));
+    EXPECT_LT(double(estimate), 1.3 * double(stats.resident_bytes));
+}
+
+TEST(DistributionPlan, ParsesMemorySizesAndBoxes) {
+    EXPECT_EQ(parse_memory_size("512M"), size_t(512) << 20);
+    EXPECT_EQ(parse_memory_size("2G"), size_t(2) << 30);
+    EXPECT_EQ(parse_memory_size("1.5G"), size_t(3) << 29);
+    EXPECT_EQ(parse_memory_size("64KB"), size_t(64) << 10);
+    EXPECT_EQ(parse_memory_size("1000"), 1000u);
+    for (const char* bad : {"", "0", "-5M", "12Q", "abc", "5MX"}) {
+        EXPECT_THROW(parse_memory_size(bad), DistributionError) << bad;
+    }
+    EXPECT_EQ(parse_boxes("3x1x5").boxes, (std::array<int, 3>{3, 1, 5}));
+    EXPECT_FALSE(parse_boxes("3x1x5").balanced);
+    EXPECT_TRUE(parse_boxes("4").balanced);
+    try {
+        parse_boxes("4x4");
+        FAIL();
+    } catch (const DistributionError& e) {
+        EXPECT_STREQ(e.what(), "bad --boxes value '4x4' (expected NxNxN, N or auto)");
+    }
+}
+
+}  // namespace
+}  // namespace povwall::distrib

@@ -1,0 +1,243 @@
+// Black boxes in worker processes over TCP, end to end through the povwall binary: images
+// equal to the single-process render, job tokens, and a worker that dies mid-render.
+#include "distrib/tcp.h"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/image.h"
+#include "output/image_io.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch() {
+    fs::path d =
+        fs::temp_directory_path() / ("povwall-tcp-test-" + std::to_string(getpid()));
+    fs::create_directories(d);
+    return d;
+}
+
+struct RunResult {
+    int code;
+    std::string err;
+};
+
+RunResult run(const std::string& args) {
+    fs::path err = scratch() / "err";
+    std::string cmd =
+        std::string(POVWALL_BINARY) + " " + args + " >/dev/null 2>" + err.string();
+    int status = std::system(cmd.c_str());
+    std::ifstream in(err);
+    return {WEXITSTATUS(status), std::string(std::istreambuf_iterator<char>(in), {})};
+}
+
+double rmse(const std::string& a, const std::string& b) {
+    povwall::Image x = povwall::output::read_image(a), y = povwall::output::read_image(b);
+    EXPECT_EQ(x.width, y.width);
+    EXPECT_EQ(x.height, y.height);
+    if (x.rgba.size() != y.rgba.size()) return 1e9;
+    double sum = 0;
+    for (size_t i = 0; i < x.rgba.size(); ++i)
+        sum += std::pow(double(x.rgba[i]) - y.rgba[i], 2);
+    return std::sqrt(sum / double(x.rgba.size()));
+}
+
+// Renders `scene` in one process and with each of `variants`; every image must equal the
+// first (float EXR, rmse <= 1e-6).
+void expect_same_images(const std::string& scene, const std::string& size,
+                        const std::vector<std::string>& variants) {
+    const std::string ref = (scratch() / "ref.exr").string();
+    ASSERT_EQ(run("render " + scene + " " + size + " -q -o " + ref).code, 0);
+    for (size_t i = 0; i < variants.size(); ++i) {
+        const std::string out = (scratch() / ("v" + std::to_string(i) + ".exr")).string();
+        fs::remove(out);
+        RunResult r =
+            run("render " + scene + " " + size + " -q -o " + out + " " + variants[i]);
+        ASSERT_EQ(r.code, 0) << variants[i] << "\n" << r.err;
+        EXPECT_LE(rmse(ref, out), 1e-6) << variants[i];
+    }
+}
+
+const char* kGlassCsgScene = R"(#version 3.7;
+global_settings { assumed_gamma 1.0 max_trace_level 8 }
+camera { location <0.3, 2.5, -6> look_at <0, 0.5, 0> angle 45 }
+light_source { <-5, 8, -4> color rgb 1 }
+light_source { <4, 3, -5> color rgb 0.5 }
+plane { y, -1 pigment { checker rgb 0.9 rgb 0.2 } finish { reflection 0.2 } }
+sphere { 0, 1 pigment { rgbf <0.9, 1, 0.9, 0.9> } finish { phong 0.8 reflection 0.1 }
+         interior { ior 1.5 } }
+sphere { <0.2, 0, 0.1>, 0.3 pigment { rgb <1, 0.2, 0.1> } }
+difference {
+  box { -0.6, 0.6 }
+  sphere { 0, 0.75 }
+  pigment { rgbt <0.3, 0.5, 1, 0.5> }
+  interior { ior 1.3 }
+  translate <1.8, 0, 0.5>
+}
+intersection {
+  sphere { <-0.3, 0, 0>, 0.6 } sphere { <0.3, 0, 0>, 0.6 }
+  pigment { rgb <0.2, 0.9, 0.3> } finish { reflection { 0.3 exponent 0.7 } }
+  translate <-1.8, 0, 0.3>
+}
+)";
+
+TEST(Tcp, DemoSceneOverTwoAndFourProcessesEqualsOneProcess) {
+    expect_same_images(POVWALL_DEMO_SCENE, "-W 48 -H 36",
+                       {"--boxes 2x2x2 --procs 2", "--boxes 2x2x2 --procs 4",
+                        "--boxes 3x1x2 --procs 4 --results parents",
+                        "--boxes 2 --procs 2 --queue fifo"});
+}
+
+TEST(Tcp, GlassAndCsgSceneOverProcessesEqualsOneProcess) {
+    fs::path scene = scratch() / "glass.pov";
+    std::ofstream(scene) << kGlassCsgScene;
+    // The reflection exponent makes `auto` use parent tracking.
+    expect_same_images(scene.string(), "-W 40 -H 30",
+                       {"--boxes 2x2x2 --procs 2", "--boxes 2x2x2 --procs 4",
+                        "--boxes 4x1x1 --procs 4 --results parents"});
+}
+
+// A worker started by the test: its process id and address.
+struct Worker {
+    pid_t pid = -1;
+    std::string address;
+    int port = 0;
+};
+
+Worker start_worker(const std::string& token, const std::string& extra = "") {
+    int fds[2];
+    EXPECT_EQ(pipe(fds), 0);
+    Worker w;
+    w.pid = fork();
+    if (w.pid == 0) {
+        dup2(fds[1], 1);
+        int null = ::open("/dev/null", O_WRONLY);
+        dup2(null, 2);
+        close(fds[0]);
+        std::string cmd = std::string("exec ") + POVWALL_BINARY +
+                          " worker --listen 127.0.0.1:0 --threads 1 --token " + token +
+                          " " + extra;
+        execl("/bin/sh", "sh", "-c", cmd.c_str(), (char*)nullptr);
+        _exit(127);
+    }
+    close(fds[1]);
+    FILE* in = fdopen(fds[0], "r");
+    char line[200] = {};
+    EXPECT_NE(std::fgets(line, sizeof line, in), nullptr);
+    std::fclose(in);
+    std::string s = line;
+    w.address = s.substr(s.rfind(' ') + 1);
+    w.address.pop_back();  // newline
+    w.port = std::stoi(w.address.substr(w.address.rfind(':') + 1));
+    return w;
+}
+
+void stop_worker(const Worker& w) {
+    kill(w.pid, SIGKILL);
+    waitpid(w.pid, nullptr, 0);
+}
+
+TEST(Tcp, ConnectionWithoutTheTokenIsRejectedAndTheRenderIsUnaffected) {
+    Worker a = start_worker("secret"), b = start_worker("secret");
+    for (const std::string& hello :
+         {std::string(R"({"type":"hello","token":"guess","from":-1})"),
+          std::string("")}) {
+        int fd = socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in addr{};
+        addr.sin_family = AF_INET;
+        addr.sin_port = htons(uint16_t(a.port));
+        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        ASSERT_EQ(connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+        std::vector<uint8_t> frame = hello.empty()
+                                         ? std::vector<uint8_t>(64, 0x41)  // no frame
+                                         : povwall::distrib::encode_control_frame(hello);
+        ASSERT_EQ(send(fd, frame.data(), frame.size(), 0), ssize_t(frame.size()));
+        char byte;
+        timeval tv{5, 0};
+        setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+        EXPECT_EQ(recv(fd, &byte, 1, 0), 0) << "the worker must close the connection";
+        close(fd);
+    }
+    RunResult wrong =
+        run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 16 -H 12 -q -o " +
+            (scratch() / "wrong.exr").string() + " --boxes 2x2x2 --workers " + a.address +
+            "," + b.address + " --token nope");
+    EXPECT_EQ(wrong.code, 3);
+    EXPECT_FALSE(fs::exists(scratch() / "wrong.exr"));
+    // The same workers still serve the job with the right token.
+    Worker c = start_worker("secret"), d = start_worker("secret");
+    expect_same_images(
+        POVWALL_DEMO_SCENE, "-W 32 -H 24",
+        {"--boxes 2x2x2 --token secret --workers " + c.address + "," + d.address});
+    stop_worker(a), stop_worker(b), stop_worker(c), stop_worker(d);
+}
+
+TEST(Tcp, RejectedTokenKeepsTheWorkerServing) {
+    Worker a = start_worker("secret"), b = start_worker("secret");
+    int fd = socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(uint16_t(a.port));
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ASSERT_EQ(connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+    auto frame = povwall::distrib::encode_control_frame(
+        R"({"type":"hello","token":"x","from":-1})");
+    ASSERT_EQ(send(fd, frame.data(), frame.size(), 0), ssize_t(frame.size()));
+    close(fd);
+    expect_same_images(
+        POVWALL_DEMO_SCENE, "-W 32 -H 24",
+        {"--boxes 2x2x2 --token secret --workers " + a.address + "," + b.address});
+    stop_worker(a), stop_worker(b);
+}
+
+TEST(Tcp, KilledWorkerIsNamedAndNoImageIsWritten) {
+    Worker a = start_worker("k", "--die-after-items 200"), b = start_worker("k");
+    const fs::path out = scratch() / "dead.png";
+    fs::remove(out);
+    RunResult r =
+        run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 64 -H 48 -q -o " +
+            out.string() + " --boxes 2x2x2 --token k --workers " + a.address + "," +
+            b.address);
+    EXPECT_EQ(r.code, 3);
+    EXPECT_EQ(r.err,
+              "povwall: error: worker 0 (" + a.address +
+                  ", boxes 0-3): disconnected (connection lost) (no image written)\n");
+    EXPECT_FALSE(fs::exists(out));
+    stop_worker(a), stop_worker(b);
+}
+
+TEST(Tcp, HungWorkerIsNamedWithinFiveSecondsAndNoImageIsWritten) {
+    Worker a = start_worker("h"), b = start_worker("h", "--hang-after-items 200");
+    const fs::path out = scratch() / "hung.png";
+    fs::remove(out);
+    auto t0 = std::chrono::steady_clock::now();
+    RunResult r =
+        run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 64 -H 48 -q -o " +
+            out.string() + " --boxes 2x2x2 --token h --workers " + a.address + "," +
+            b.address);
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_EQ(r.code, 3);
+    EXPECT_EQ(r.err, "povwall: error: worker 1 (" + b.address +
+                         ", boxes 4-7): no message for 4 s (no image written)\n");
+    EXPECT_LT(seconds, 4.0 + 1.0 + 1.0);  // the silence, its detection, the render itself
+    EXPECT_FALSE(fs::exists(out));
+    stop_worker(a), stop_worker(b);
+}
+
+}  // namespace

@@ -1,0 +1,261 @@
+#include "trace/render_plan.h"
+
+#include <cstdio>
+
+#include "octree/octree.h"
+#include "trace/prepared_scene.h"
+
+namespace povwall::trace {
+namespace {
+
+// Calls `fn` for every texture layer list an object can show (CSG children, mesh face
+// textures, interior textures), maps included.
+template <typename Fn>
+void for_each_texture(const LayeredTexture& layers, Fn&& fn) {
+    fn(layers);
+    for (const Texture& t : layers) {
+        for (const auto& m : t.map) for_each_texture(m, fn);
+    }
+}
+
+template <typename Fn>
+void for_each_object_texture(const Object& o, Fn&& fn) {
+    for_each_texture(o.texture, fn);
+    for_each_texture(o.interior_texture, fn);
+    if (auto c = std::get_if<Csg>(&o.shape)) {
+        for (const Object& ch : c->children) for_each_object_texture(ch, fn);
+    }
+    if (auto m = std::get_if<Mesh>(&o.shape)) {
+        for (const auto& t : m->textures) for_each_texture(t, fn);
+    }
+}
+
+template <typename Fn>
+void for_each_scene_texture(const Scene& scene, Fn&& fn) {
+    for (const Object& o : scene.objects) for_each_object_texture(o, fn);
+    for (const Light& l : scene.lights) {
+        for (const Object& o : l.looks_like) for_each_object_texture(o, fn);
+    }
+}
+
+// Primitives as PreparedScene makes them: plain unions are opened, meshes give triangles.
+void count_primitives(const Object& o, size_t& finite, size_t& infinite) {
+    auto c = std::get_if<Csg>(&o.shape);
+    if (c && c->kind == CsgKind::Union && !o.inverse && o.clipped_by.empty()) {
+        for (const Object& ch : c->children) count_primitives(ch, finite, infinite);
+        return;
+    }
+    bool bounded = !object_world_bounds(o).infinite();
+    size_t n = 1;
+    if (auto m = std::get_if<Mesh>(&o.shape)) n = m->faces.size();
+    (bounded ? finite : infinite) += n;
+}
+
+// Some object with a transparent texture has an interior whose ior bends rays.
+bool any_refracting(const Object& o, bool transparent_above) {
+    bool transparent = transparent_above || !texture_opaque(o.texture);
+    if (transparent && o.interior && o.interior->ior != 1.0f) return true;
+    if (auto c = std::get_if<Csg>(&o.shape)) {
+        for (const Object& ch : c->children) {
+            if (any_refracting(ch, transparent)) return true;
+        }
+    }
+    return false;
+}
+
+// A convex (or flat) surface cannot stand between one of its own lit points and a point
+// light: the segment toward the light leaves it at once. Affine transforms keep this.
+bool convex_surface(const Object& o) {
+    if (o.inverse || !o.clipped_by.empty() || o.double_illuminate) return false;
+    return std::visit(
+        [](const auto& s) {
+            using S = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<S, Sphere> || std::is_same_v<S, Box> ||
+                          std::is_same_v<S, Plane> || std::is_same_v<S, Disc> ||
+                          std::is_same_v<S, Triangle> || std::is_same_v<S, Polygon>) {
+                return true;
+            } else if constexpr (std::is_same_v<S, Cylinder> || std::is_same_v<S, Cone>) {
+                return !s.open;
+            } else {
+                return false;
+            }
+        },
+        o.shape);
+}
+
+const char* light_kind(const Light& l) {
+    if (l.area) return "area light";
+    switch (l.kind) {
+        case Light::Kind::Spot:
+            return "spotlight";
+        case Light::Kind::Cylinder:
+            return "cylinder light";
+        case Light::Kind::Parallel:
+            return "parallel light";
+        default:
+            return "point light";
+    }
+}
+
+}  // namespace
+
+size_t estimate_prepared_bytes(const Object& o) {
+    // Per primitive: kind, index, material id, bounds, mailbox stamp, ~3.5 octree
+    // references (measured on the demo scene) and its geometry; a material per non-mesh
+    // leaf.
+    constexpr size_t kPerPrimitive = 1 + 4 + 4 + sizeof(Bounds3) + 4 + 14;
+    constexpr size_t kMaterial = sizeof(Material) + 16;
+    auto c = std::get_if<Csg>(&o.shape);
+    if (c && c->kind == CsgKind::Union && !o.inverse && o.clipped_by.empty()) {
+        size_t n = 0;
+        for (const Object& ch : c->children) n += estimate_prepared_bytes(ch);
+        return n;
+    }
+    if (auto m = std::get_if<Mesh>(&o.shape)) {
+        return kMaterial * (1 + m->textures.size()) +
+               m->faces.size() * (kPerPrimitive + sizeof(TrianglePrim));
+    }
+    if (std::holds_alternative<Sphere>(o.shape))
+        return kPerPrimitive + kMaterial + 4 * sizeof(Real);
+    // Other shapes (and CSG other than union) stay one Object primitive; CSG materials
+    // per leaf.
+    auto leaves_of = [](const Object& x, auto& self) -> size_t {
+        auto cx = std::get_if<Csg>(&x.shape);
+        if (!cx) return 1;
+        size_t n = 0;
+        for (const Object& ch : cx->children) n += self(ch, self);
+        return n;
+    };
+    const size_t leaves = leaves_of(o, leaves_of);
+    return kPerPrimitive + sizeof(void*) + kMaterial * leaves;
+}
+
+bool shading_is_linear(const Scene& scene) {
+    bool linear = true;
+    for_each_scene_texture(scene, [&](const LayeredTexture& layers) {
+        for (const Texture& t : layers) {
+            if (t.finish.reflection_exponent != 1) linear = false;
+        }
+    });
+    return linear;
+}
+
+RenderPlan make_render_plan(const Scene& scene, bool everything_on) {
+    RenderPlan plan;
+    plan.everything_on = everything_on;
+    bool reflective = false, transparent = false;
+    for_each_scene_texture(scene, [&](const LayeredTexture& layers) {
+        for (const Texture& t : layers) {
+            if (!t.finish.reflection_max.is_black() ||
+                !t.finish.reflection_min.is_black())
+                reflective = true;
+        }
+        if (!texture_opaque(layers)) transparent = true;
+    });
+    bool refracting = false;
+    for (const Object& o : scene.objects)
+        refracting = refracting || any_refracting(o, false);
+    for (const Object& o : scene.objects)
+        count_primitives(o, plan.finite_primitives, plan.infinite_primitives);
+    plan.reflection_rays = everything_on || reflective;
+    plan.transmission_rays = everything_on || transparent;
+    plan.refraction_rays = everything_on || refracting;
+
+    // Who can cast a shadow: top-level objects without no_shadow (looks_like objects
+    // never do). None, or one convex surface that is the whole scene: no shadow ray can
+    // be blocked.
+    size_t casters = 0;
+    for (const Object& o : scene.objects) casters += o.no_shadow ? 0 : 1;
+    size_t looks_like = 0;
+    for (const Light& l : scene.lights) looks_like += l.looks_like.size();
+    const bool lone_convex = scene.objects.size() == 1 && looks_like == 0 &&
+                             casters == 1 && convex_surface(scene.objects[0]);
+    for (const Light& l : scene.lights) {
+        LightPlan lp;
+        if (l.shadowless) {
+            lp.shadow_rays = false;
+            lp.reason = "shadowless: no shadow rays";
+        } else if (everything_on) {
+            lp.reason = "shadow rays (plan forced on)";
+        } else if (casters == 0) {
+            lp.shadow_rays = false;
+            lp.unoccluded = true;
+            lp.reason = "no object casts shadows: no shadow rays";
+        } else if (lone_convex && !l.area) {
+            lp.shadow_rays = false;
+            lp.unoccluded = true;
+            lp.reason =
+                "the only object is convex and cannot shadow itself: no shadow rays";
+        } else if (l.area) {
+            lp.reason = "shadow rays (" + std::to_string(l.area->size1 * l.area->size2) +
+                        "-sample area grid, adaptive " +
+                        std::to_string(l.area->adaptive) + ")";
+        } else {
+            lp.reason = "shadow rays";
+        }
+        if (!everything_on &&
+            (l.kind == Light::Kind::Spot || l.kind == Light::Kind::Cylinder)) {
+            char buf[96];
+            std::snprintf(buf, sizeof buf, "; none outside its %g-degree falloff %s",
+                          l.falloff, l.kind == Light::Kind::Spot ? "cone" : "cylinder");
+            if (lp.shadow_rays) lp.reason += buf;
+        }
+        plan.lights.push_back(lp);
+    }
+    plan.skip_unlit_shadow_rays = !everything_on;
+    plan.flat_threshold = everything_on ? 0 : octree::BuildOptions{}.flat_threshold;
+    plan.parent_tracking = everything_on || !shading_is_linear(scene);
+    plan.parent_reason =
+        everything_on ? "parent tracking (plan forced on)"
+        : plan.parent_tracking
+            ? "a reflection exponent makes shading non-linear: parents wait "
+              "for their children in each box's parent table"
+            : "shading is linear: contributions go straight to the pixel, no "
+              "parent table";
+    return plan;
+}
+
+std::vector<std::string> explain_plan(const RenderPlan& plan, const Scene& scene) {
+    std::vector<std::string> out;
+    if (plan.everything_on)
+        out.push_back("plan forced on (--plan all): nothing is left out");
+    out.push_back(plan.reflection_rays ? "reflective materials: reflection rays on"
+                                       : "no reflective materials: reflection rays off");
+    if (!plan.transmission_rays) {
+        out.push_back("no transparent materials: transmission and refraction rays off");
+    } else {
+        out.push_back(
+            plan.refraction_rays
+                ? "transparent materials with ior: refraction rays on"
+                : "transparent materials, no ior change: straight transmission rays "
+                  "only");
+    }
+    if (scene.lights.empty()) out.push_back("no light sources: no shadow rays");
+    for (size_t i = 0; i < plan.lights.size(); ++i) {
+        out.push_back("light " + std::to_string(i + 1) + " (" +
+                      light_kind(scene.lights[i]) + "): " + plan.lights[i].reason);
+    }
+    if (plan.skip_unlit_shadow_rays && !scene.lights.empty())
+        out.push_back(
+            "points a light does not reach (back faces, outside spot cones): no "
+            "shadow ray");
+    char buf[160];
+    if (plan.finite_primitives < size_t(plan.flat_threshold)) {
+        std::snprintf(buf, sizeof buf,
+                      "%zu bounded primitives (< %d): no octree, a flat list",
+                      plan.finite_primitives, plan.flat_threshold);
+    } else {
+        std::snprintf(buf, sizeof buf, "%zu bounded primitives: octree",
+                      plan.finite_primitives);
+    }
+    out.push_back(buf);
+    if (plan.infinite_primitives) {
+        out.push_back(
+            std::to_string(plan.infinite_primitives) +
+            " unbounded primitives (planes, unbounded CSG): tested by every ray");
+    }
+    out.push_back(plan.parent_reason);
+    return out;
+}
+
+}  // namespace povwall::trace

@@ -1,0 +1,33 @@
+// Polynomial root solvers for ray-shape intersection: a cancellation-free quadratic and
+// quartics by two methods (closed form and Sturm isolation) behind a measured switch rule
+// (docs/numerics.md has the error/time table that sets it).
+#pragma once
+
+#include "core/math.h"
+
+namespace povwall::trace {
+
+// Roots of a x^2 + b x + c in ascending order, computed without cancellation.
+int solve_quadratic(Real a, Real b, Real c, Real roots[2]);
+// The textbook (-b ± sqrt(disc)) / 2a, kept only as the baseline of the accuracy table.
+int solve_quadratic_naive(Real a, Real b, Real c, Real roots[2]);
+
+// Quartics: c[i] is the coefficient of x^i, c[4] != 0. Real roots, ascending.
+// Ferrari's closed form through the resolvent cubic, then per root Newton steps while
+// they lower the residual: plain Horner, or compensated Horner (residual as in
+// double-double).
+enum class QuarticPolish { None, Newton, CompensatedNewton };
+int solve_quartic_ferrari(const Real c[5], Real roots[4],
+                          QuarticPolish polish = QuarticPolish::CompensatedNewton);
+// Sturm-sequence isolation of the roots in (lo, hi], then bracketed Newton.
+int solve_quartic_sturm(const Real c[5], Real lo, Real hi, Real roots[4]);
+
+// The tracer's quartic, roots in (lo, hi]: Ferrari with plain Newton polishing, falling
+// back to Sturm when the closed form's root count is odd (impossible for real
+// coefficients). Chosen by the error/time table in docs/numerics.md: on ray-torus
+// quartics it is as accurate as double-precision Sturm at every minor/major ratio, never
+// lost a root, and is ~4x faster; the torus's own distance polish makes compensated
+// polishing unnecessary there.
+int solve_quartic(const Real c[5], Real lo, Real hi, Real roots[4]);
+
+}  // namespace povwall::trace

@@ -1,0 +1,30 @@
+// Renders rectangles of the image with one prepared scene: what a screen-subdivision
+// worker does with each tile it is handed (the scene is prepared once, tiles come one by
+// one).
+#pragma once
+
+#include "core/scene.h"
+#include "trace/prepared_scene.h"
+#include "trace/render.h"
+#include "trace/render_plan.h"
+#include "trace/tracer.h"
+
+namespace povwall::trace {
+
+class TileRenderer {
+  public:
+    TileRenderer(const Scene& scene, const RenderSettings& settings);
+    // Pixels [x0, x1) x [y0, y1) into `out` (RGBA floats, row-major, (x1-x0)*(y1-y0)*4),
+    // exactly as render_scene() computes them without anti-aliasing.
+    void render(int x0, int y0, int x1, int y1, float* out);
+    const TraceCounters& counters() const { return tracer_.counters(); }
+
+  private:
+    const Scene& scene_;
+    RenderSettings settings_;
+    RenderPlan plan_;
+    PreparedScene prepared_;
+    Tracer tracer_;
+};
+
+}  // namespace povwall::trace
