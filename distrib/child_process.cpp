@@ -1,9 +1,10 @@
 #include "distrib/child_process.h"
 
+#include <sys/wait.h>
+
 #include <cerrno>
 #include <chrono>
 #include <csignal>
-#include <sys/wait.h>
 #include <thread>
 
 namespace povwall::distrib {
@@ -27,7 +28,8 @@ int wait_child(pid_t pid, double seconds) {
 
 std::string describe_exit_status(int status) {
     if (WIFEXITED(status)) return "exit code " + std::to_string(WEXITSTATUS(status));
-    if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
+    if (WIFSIGNALED(status))
+        return "killed by signal " + std::to_string(WTERMSIG(status));
     return "stopped";
 }
 

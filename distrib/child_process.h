@@ -1,13 +1,16 @@
 #pragma once
 // Waiting for worker processes that this process started. A worker that has finished its
-// work but does not exit (stuck in an exit handler, a sanitizer's leak check under ptrace)
-// must never hang the render that already has its image: wait with a deadline, then kill.
-#include <string>
+// work but does not exit (stuck in an exit handler, a sanitizer's leak check under
+// ptrace) must never hang the render that already has its image: wait with a deadline,
+// then kill.
 #include <sys/types.h>
+
+#include <string>
 
 namespace povwall::distrib {
 
-// Waits for `pid` up to `seconds`, then SIGKILLs it and reaps it. Returns the wait status.
+// Waits for `pid` up to `seconds`, then SIGKILLs it and reaps it. Returns the wait
+// status.
 int wait_child(pid_t pid, double seconds);
 
 // "exit code 3", "killed by signal 9".
