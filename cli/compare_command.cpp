@@ -17,11 +17,10 @@
 #include <thread>
 
 #include "cli/options.h"
-#include "cli/process.h"
+#include "cli/povray_reference.h"
 #include "output/diff.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
-
 
 namespace povwall::cli {
 
@@ -32,58 +31,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-uint64_t fnv1a(uint64_t h, std::string_view bytes) {
-    for (unsigned char c : bytes) {
-        h ^= c;
-        h *= 1099511628211ull;
-    }
-    return h;
-}
-
-// Hash of every file the scene reads and of the POV-Ray command line: a cached reference
-// render is reused only when none of them changed.
-std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cmd) {
-    parser::ParseOptions popts;
-    popts.library_paths = o.library_paths;
-    popts.image_width = o.width;
-    popts.image_height = o.height;
-    popts.declares = o.declares;
-    Scene scene;
-    try {
-        scene = parser::parse_scene_file(o.scene, popts);
-    } catch (const parser::ParseError& e) {
-        std::cerr << e.what() << "\n";
-        return {};
-    }
-    uint64_t h = 1469598103934665603ull;
-    for (const std::string& f : scene.files) {
-        std::ifstream in(f, std::ios::binary);
-        std::stringstream ss;
-        ss << in.rdbuf();
-        h = fnv1a(h, ss.str());
-    }
-    for (size_t i = 0; i < cmd.size(); ++i) {
-        if (i == 1 || i == 2) continue;  // input and output paths
-        h = fnv1a(h, cmd[i]);
-    }
-    // The povray binary found on PATH (a new POV-Ray build invalidates the cache).
-    const char* path_env = std::getenv("PATH");
-    std::stringstream dirs(path_env ? path_env : "");
-    for (std::string d; std::getline(dirs, d, ':');) {
-        std::error_code ec;
-        fs::path exe = fs::path(d.empty() ? "." : d) / "povray";
-        auto stamp = fs::last_write_time(exe, ec);
-        if (ec) continue;
-        h = fnv1a(h, fs::canonical(exe, ec).string());
-        h = fnv1a(h, std::to_string(stamp.time_since_epoch().count()));
-        h = fnv1a(h, std::to_string(fs::file_size(exe, ec)));
-        break;
-    }
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)h);
-    return buf;
-}
 
 }  // namespace
 
@@ -150,81 +97,32 @@ int run_compare(int argc, char** argv) {
     std::string our_png = (dir / (stem + "-povwall.png")).string();
     std::string log = (dir / (stem + "-povray.log")).string();
 
-    std::vector<std::string> cmd{"povray",
-                                 "+I" + o.scene,
-                                 "+O" + pov_png,
-                                 "+W" + std::to_string(o.width),
-                                 "+H" + std::to_string(o.height),
-                                 "-D",
-                                 "+FN"};
-    unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    cmd.push_back("+WT" + std::to_string(threads > 0 ? unsigned(threads) : cores));
-    if (o.render.antialias) {
-        std::ostringstream a;
-        a << "+A" << o.render.aa_threshold;
-        cmd.push_back(a.str());
-        cmd.push_back("+AM" + std::to_string(o.render.aa_method));
-        cmd.push_back("+R" + std::to_string(o.render.aa_depth));
-        cmd.push_back(o.render.aa_jitter ? "+J" : "-J");
-    } else {
-        cmd.push_back("-A");
-    }
-    if (o.render.alpha) cmd.push_back("+UA");
-    // Partial renders: POV-Ray writes the full-size image with the rest black, as
-    // povwall.
+    std::vector<std::string>
+        extra;  // partial renders: POV-Ray writes the full-size image
     for (const auto& sw : pov_switches) {
         std::string head = sw.substr(1, 2);
         for (char& c : head) c = char(std::toupper((unsigned char)c));
         if (head == "SR" || head == "ER" || head == "SC" || head == "EC")
-            cmd.push_back(sw);
+            extra.push_back(sw);
     }
-    std::string scene_dir = fs::path(o.scene).parent_path().string();
-    cmd.push_back("+L" + (scene_dir.empty() ? std::string(".") : scene_dir));
-    for (const auto& l : o.library_paths) cmd.push_back("+L" + l);
-    cmd.push_back("+L/usr/share/povray-3.7/include");
-    for (const auto& [k, v] : o.declares) {
-        std::ostringstream d;
-        d << "Declare=" << k << "=" << v;
-        cmd.push_back(d.str());
+    const std::vector<std::string> cmd = povray_command(o, pov_png, threads, extra);
+    const PovrayRun pov = run_povray(o, cmd, cache, log);
+    switch (pov.status) {
+        case PovrayRun::Status::Ok:
+            break;
+        case PovrayRun::Status::NotInstalled:
+            std::cerr << "povwall: povray is not installed or not on PATH: nothing to "
+                         "compare with\n";
+            return 77;  // CTest's skip code
+        case PovrayRun::Status::SceneError:
+            return 2;
+        case PovrayRun::Status::Failed:
+            std::cerr << "povwall: error: povray failed (exit " << pov.exit_code << ")\n"
+                      << pov.log;
+            return 2;
     }
-
-    std::string cached;
-    if (!cache.empty()) {
-        std::string key = cache_key(o, cmd);
-        if (key.empty())
-            return 2;  // the scene does not parse: run_render reports it below
-        fs::create_directories(cache);
-        cached = (fs::path(cache) / (stem + "-" + key + ".png")).string();
-    }
-    auto t0 = Clock::now();
-    int rc = 0;
-    const bool from_cache = !cached.empty() && fs::exists(cached);
-    if (from_cache) {
-        fs::copy_file(cached, pov_png, fs::copy_options::overwrite_existing);
-    } else {
-        rc = run_process(cmd, log);
-        if (rc == 0 && !cached.empty() && fs::exists(pov_png)) {
-            std::string tmp = cached + ".tmp";
-            fs::copy_file(pov_png, tmp, fs::copy_options::overwrite_existing);
-            fs::rename(tmp, cached);
-        }
-    }
-    auto t1 = Clock::now();
-    if (rc == -1) {
-        std::cerr
-            << "povwall: povray is not installed or not on PATH: nothing to compare "
-               "with\n";
-        return 77;  // CTest's skip code
-    }
-    if (rc != 0 || !fs::exists(pov_png)) {
-        std::ifstream in(log);
-        std::stringstream ss;
-        ss << in.rdbuf();
-        std::cerr << "povwall: error: povray failed (exit " << rc << ")"
-                  << (rc == -1 ? ": is povray installed and on PATH?" : "") << "\n"
-                  << ss.str();
-        return 2;
-    }
+    const bool from_cache = pov.cached;
+    const std::string cached = cache;
     o.output = our_png;
     o.format_given = false;  // both renders are 8-bit PNG, compared as stored
     o.bits = 8;
@@ -233,7 +131,7 @@ int run_compare(int argc, char** argv) {
     int our_rc = run_render(o);
     auto t3 = Clock::now();
     if (our_rc != 0) return our_rc;
-    double pov_s = std::chrono::duration<double>(t1 - t0).count();
+    double pov_s = pov.seconds;
     double our_s = std::chrono::duration<double>(t3 - t2).count();
     output::DiffResult r;
     try {
@@ -261,8 +159,8 @@ int run_compare(int argc, char** argv) {
     } else {
         std::printf("scene: %s (%dx%d)\n", o.scene.c_str(), o.width, o.height);
         if (from_cache) {
-            std::printf("povray: cached reference %s\npovwall: %.3f s\n", cached.c_str(),
-                        our_s);
+            std::printf("povray: cached reference in %s\npovwall: %.3f s\n",
+                        cached.c_str(), our_s);
         } else {
             std::printf("povray: %.3f s\npovwall: %.3f s (%.2fx faster)\n", pov_s, our_s,
                         our_s > 0 ? pov_s / our_s : 0.0);

@@ -1,0 +1,157 @@
+#include "cli/povray_reference.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#include "cli/process.h"
+#include "parser/parser.h"
+
+namespace povwall::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+uint64_t fnv1a(uint64_t h, std::string_view bytes) {
+    for (unsigned char c : bytes) {
+        h ^= c;
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+// Hash of every file the scene reads and of the POV-Ray command line: a cached reference
+// render is reused only when none of them changed. Empty when the scene does not parse.
+std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cmd) {
+    parser::ParseOptions popts;
+    popts.library_paths = o.library_paths;
+    popts.image_width = o.width;
+    popts.image_height = o.height;
+    popts.declares = o.declares;
+    Scene scene;
+    try {
+        scene = parser::parse_scene_file(o.scene, popts);
+    } catch (const parser::ParseError& e) {
+        std::cerr << e.what() << "\n";
+        return {};
+    }
+    uint64_t h = 1469598103934665603ull;
+    for (const std::string& f : scene.files) {
+        std::ifstream in(f, std::ios::binary);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        h = fnv1a(h, ss.str());
+    }
+    for (size_t i = 0; i < cmd.size(); ++i) {
+        if (i == 1 || i == 2) continue;  // input and output paths
+        h = fnv1a(h, cmd[i]);
+    }
+    // The povray binary found on PATH (a new POV-Ray build invalidates the cache).
+    const char* path_env = std::getenv("PATH");
+    std::stringstream dirs(path_env ? path_env : "");
+    for (std::string d; std::getline(dirs, d, ':');) {
+        std::error_code ec;
+        fs::path exe = fs::path(d.empty() ? "." : d) / "povray";
+        auto stamp = fs::last_write_time(exe, ec);
+        if (ec) continue;
+        h = fnv1a(h, fs::canonical(exe, ec).string());
+        h = fnv1a(h, std::to_string(stamp.time_since_epoch().count()));
+        h = fnv1a(h, std::to_string(fs::file_size(exe, ec)));
+        break;
+    }
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)h);
+    return buf;
+}
+
+}  // namespace
+
+std::vector<std::string> povray_command(const RenderOptions& o,
+                                        const std::string& out_png, int threads,
+                                        const std::vector<std::string>& extra) {
+    // Input and output stay at [1] and [2]: the cache key leaves them out.
+    std::vector<std::string> cmd{"povray",
+                                 "+I" + o.scene,
+                                 "+O" + out_png,
+                                 "+W" + std::to_string(o.width),
+                                 "+H" + std::to_string(o.height),
+                                 "-D",
+                                 "+FN"};
+    unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    cmd.push_back("+WT" + std::to_string(threads > 0 ? unsigned(threads) : cores));
+    if (o.render.antialias) {
+        std::ostringstream a;
+        a << "+A" << o.render.aa_threshold;
+        cmd.push_back(a.str());
+        cmd.push_back("+AM" + std::to_string(o.render.aa_method));
+        cmd.push_back("+R" + std::to_string(o.render.aa_depth));
+        cmd.push_back(o.render.aa_jitter ? "+J" : "-J");
+    } else {
+        cmd.push_back("-A");
+    }
+    if (o.render.alpha) cmd.push_back("+UA");
+    for (const auto& sw : extra) cmd.push_back(sw);
+    std::string scene_dir = fs::path(o.scene).parent_path().string();
+    cmd.push_back("+L" + (scene_dir.empty() ? std::string(".") : scene_dir));
+    for (const auto& l : o.library_paths) cmd.push_back("+L" + l);
+    cmd.push_back("+L/usr/share/povray-3.7/include");
+    for (const auto& [k, v] : o.declares) {
+        std::ostringstream d;
+        d << "Declare=" << k << "=" << v;
+        cmd.push_back(d.str());
+    }
+    return cmd;
+}
+
+PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd,
+                     const std::string& cache_dir, const std::string& log_path) {
+    PovrayRun run;
+    const std::string out_png = cmd.at(2).substr(2);
+    std::string cached;
+    if (!cache_dir.empty()) {
+        std::string key = cache_key(o, cmd);
+        if (key.empty()) {
+            run.status = PovrayRun::Status::SceneError;
+            return run;
+        }
+        fs::create_directories(cache_dir);
+        cached = (fs::path(cache_dir) /
+                  (fs::path(o.scene).stem().string() + "-" + key + ".png"))
+                     .string();
+    }
+    if (!cached.empty() && fs::exists(cached)) {
+        fs::copy_file(cached, out_png, fs::copy_options::overwrite_existing);
+        run.cached = true;
+        return run;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const int rc = run_process(cmd, log_path);
+    run.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (rc == -1) {
+        run.status = PovrayRun::Status::NotInstalled;
+        return run;
+    }
+    if (rc != 0 || !fs::exists(out_png)) {
+        std::ifstream in(log_path);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        run.status = PovrayRun::Status::Failed;
+        run.exit_code = rc;
+        run.log = ss.str();
+        return run;
+    }
+    if (!cached.empty()) {  // temp name, then rename: a cache entry is always whole
+        std::string tmp = cached + ".tmp";
+        fs::copy_file(out_png, tmp, fs::copy_options::overwrite_existing);
+        fs::rename(tmp, cached);
+    }
+    return run;
+}
+
+}  // namespace povwall::cli

@@ -1,0 +1,34 @@
+// Reference renders by POV-Ray 3.7 (the `povray` on PATH) of the scene povwall renders:
+// one command line built from povwall's options, and a cache keyed by everything the
+// image depends on, so compare, sweep and corpus render each reference once.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cli/options.h"
+
+namespace povwall::cli {
+
+// The povray command that renders `o` (size, anti-aliasing, alpha, partial render,
+// include folders, declares) into the PNG `out_png` with `threads` threads (0: all
+// cores). `extra` switches (+SR..., +MV...) are appended as given.
+std::vector<std::string> povray_command(const RenderOptions& o,
+                                        const std::string& out_png, int threads,
+                                        const std::vector<std::string>& extra = {});
+
+struct PovrayRun {
+    enum class Status { Ok, NotInstalled, SceneError, Failed } status = Status::Ok;
+    double seconds = 0;   // wall time of the render (0 when taken from the cache)
+    bool cached = false;  // the image came from the cache
+    int exit_code = 0;    // POV-Ray's, when it failed
+    std::string log;      // POV-Ray's console output when it failed
+};
+
+// Runs `cmd` (from povray_command) unless `cache_dir` holds its image already; the image
+// ends at cmd's +O path. A scene that does not parse for povwall gives SceneError (its
+// message printed) when a cache key is needed.
+PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd,
+                     const std::string& cache_dir, const std::string& log_path);
+
+}  // namespace povwall::cli
