@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,7 +32,9 @@ const char* kUsage =
     "       povwall worker --listen HOST:PORT --token T [--threads N]\n"
     "       povwall check-numerics SCENE.pov [-W N] [-H N] [-L DIR]... [--povray] "
     "[--json]\n"
-    "       povwall batch JOBS... [--resume]   (scenes, .ini files, job files)\n";
+    "       povwall batch JOBS... [--resume]   (scenes, .ini files, job files)\n"
+    "       povwall sweep SCENE.pov [-W N] [-H N] [--repeat N] [--csv F] [--plot "
+    "F.svg]\n";
 
 int render_main(const std::vector<std::string>& args) {
     RenderOptions o;
@@ -74,7 +77,23 @@ int render_main(const std::vector<std::string>& args) {
     app.add_option("--queue", o.queue, "box work order: priority or fifo")
         ->check(CLI::IsMember({"priority", "fifo"}))
         ->capture_default_str();
-    app.add_option("--workers", o.workers, "black boxes in running workers, host:port,...")
+    std::optional<int> max_trace_level;
+    std::optional<double> adc_bailout;
+    app.add_option("--max-trace-level", max_trace_level,
+                   "override the scene's max_trace_level (1..256)")
+        ->check(CLI::Range(1, 256));
+    app.add_option("--adc-bailout", adc_bailout,
+                   "override the scene's adc_bailout (0..1)")
+        ->check(CLI::Range(0.0, 1.0));
+    // Internal (screen tile workers): the frame of an animation this process renders, as
+    // number,clock,clock_delta,initial_frame,final_frame,initial_clock,final_clock.
+    std::vector<double> frame_values;
+    app.add_option("--frame-values", frame_values)
+        ->delimiter(',')
+        ->expected(7)
+        ->group("");
+    app.add_option("--workers", o.workers,
+                   "black boxes in running workers, host:port,...")
         ->delimiter(',');
     app.add_option("--token", o.token, "job token of the running --workers");
     std::vector<std::string> pov, rest{"povwall render"};
@@ -100,6 +119,16 @@ int render_main(const std::vector<std::string>& args) {
             throw UsageError("unknown switch '" + s + "'");
     }
     if (!scene.empty()) o.scene = scene;
+    if (max_trace_level) o.max_trace_level = max_trace_level;
+    if (adc_bailout) o.adc_bailout = adc_bailout;
+    if (frame_values.size() == 7) {
+        o.frame = RenderOptions::FrameValues{int(frame_values[0]), frame_values[1],
+                                             frame_values[2]};
+        o.animation.initial_frame = int(frame_values[3]);
+        o.animation.final_frame = int(frame_values[4]);
+        o.animation.initial_clock = frame_values[5];
+        o.animation.final_clock = frame_values[6];
+    }
     return run_render(o);
 }
 
@@ -137,6 +166,7 @@ int main(int argc, char** argv) {
         if (cmd == "worker") return run_worker_command(argc - 1, argv + 1);
         if (cmd == "check-numerics") return run_check_numerics(argc - 1, argv + 1);
         if (cmd == "batch") return run_batch(argc - 1, argv + 1);
+        if (cmd == "sweep") return run_sweep(argc - 1, argv + 1);
         if (cmd == "-h" || cmd == "--help" || cmd == "help") {
             std::fputs(kUsage, stdout);
             return 0;

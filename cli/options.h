@@ -28,8 +28,8 @@ struct RenderOptions {
         bool fraction = false;
     } start_row, end_row, start_col, end_col;
     std::map<std::string, double> declares;
-    // POV-Ray's animation options (+KFI +KFF +KI +KF +KC +SF +EF, Initial_Frame=...) and the
-    // clock of a still image (+K).
+    // POV-Ray's animation options (+KFI +KFF +KI +KF +KC +SF +EF, Initial_Frame=...) and
+    // the clock of a still image (+K).
     struct Animation {
         int initial_frame = 1, final_frame = 1;
         double initial_clock = 0.0, final_clock = 1.0;
@@ -43,13 +43,17 @@ struct RenderOptions {
         double clock = 0.0, clock_delta = 0.0;
     };
     std::optional<FrameValues> frame;  // set while one frame of an animation renders
+    // Overrides of the scene's global_settings (quick previews, `povwall sweep`).
+    std::optional<int> max_trace_level;
+    std::optional<double> adc_bailout;
     bool quiet = false;
     std::string stats_file;
     // Space subdivision (virtual walls): empty lets --mode decide; "1x1x1" is one box.
     std::string boxes;
     std::string mode = "auto";  // auto | single | screen | space
-    int procs = 0;  // worker processes: screen tiles, or boxes over TCP (0: as many as cores)
-    bool tile_worker = false;   // internal: serve screen tiles on stdin/stdout
+    int procs =
+        0;  // worker processes: screen tiles, or boxes over TCP (0: as many as cores)
+    bool tile_worker = false;  // internal: serve screen tiles on stdin/stdout
     std::string
         worker_memory;  // "2G": the budget auto mode fits each worker's scene into
     std::string plan = "auto";       // auto | all (leave nothing out)
@@ -98,6 +102,7 @@ int run_parse(int argc, char** argv);
 int run_worker_command(int argc, char** argv);
 int run_check_numerics(int argc, char** argv);
 int run_batch(int argc, char** argv);
+int run_sweep(int argc, char** argv);
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;

@@ -86,8 +86,11 @@ std::vector<std::string> povray_command(const RenderOptions& o,
     cmd.push_back("+WT" + std::to_string(threads > 0 ? unsigned(threads) : cores));
     if (o.render.antialias) {
         std::ostringstream a;
-        a << "+A" << o.render.aa_threshold;
-        cmd.push_back(a.str());
+        a << o.render.aa_threshold;
+        // POV-Ray refuses "+A0" and "+A1": the threshold must be written as a decimal.
+        std::string threshold = a.str();
+        if (threshold.find_first_of(".e") == std::string::npos) threshold += ".0";
+        cmd.push_back("+A" + threshold);
         cmd.push_back("+AM" + std::to_string(o.render.aa_method));
         cmd.push_back("+R" + std::to_string(o.render.aa_depth));
         cmd.push_back(o.render.aa_jitter ? "+J" : "-J");

@@ -62,26 +62,47 @@ std::vector<std::string> tile_worker_command(const RenderOptions& o) {
         cmd.push_back("Declare=" + name + "=" + buf);
     }
     if (o.render.alpha) cmd.push_back("+UA");
+    if (o.max_trace_level)
+        cmd.push_back("--max-trace-level=" + std::to_string(*o.max_trace_level));
+    if (o.adc_bailout) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "--adc-bailout=%.17g", *o.adc_bailout);
+        cmd.push_back(buf);
+    }
+    if (o.frame) {  // the frame's clock, exactly as this process has it
+        char buf[256];
+        std::snprintf(buf, sizeof buf, "--frame-values=%d,%.17g,%.17g,%d,%d,%.17g,%.17g",
+                      o.frame->number, o.frame->clock, o.frame->clock_delta,
+                      o.animation.initial_frame, o.animation.final_frame,
+                      o.animation.initial_clock, o.animation.final_clock);
+        cmd.push_back(buf);
+    } else if (o.animation.clock != 0.0) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "+K%.17g", o.animation.clock);
+        cmd.push_back(buf);
+    }
     return cmd;
 }
 
-// An animation: each frame is a still with its own clock, written to a numbered file. With
-// +C (Continue_Trace) a frame whose image exists is kept: images are only ever renamed into
-// place once complete, so an existing one is whole, and an interrupted batch resumes.
+// An animation: each frame is a still with its own clock, written to a numbered file.
+// With +C (Continue_Trace) a frame whose image exists is kept: images are only ever
+// renamed into place once complete, so an existing one is whole, and an interrupted batch
+// resumes.
 int run_animation(const RenderOptions& base, const std::vector<Frame>& frames) {
     int rendered = 0, kept = 0;
     for (const Frame& f : frames) {
         if (base.continue_trace && std::filesystem::exists(f.output)) {
             ++kept;
             if (!base.quiet)
-                std::fprintf(stderr, "povwall: frame %d: %s exists, kept (+C)\n", f.number,
-                             f.output.c_str());
+                std::fprintf(stderr, "povwall: frame %d: %s exists, kept (+C)\n",
+                             f.number, f.output.c_str());
             continue;
         }
         RenderOptions o = base;
         o.output = f.output;
         o.frame = RenderOptions::FrameValues{f.number, f.clock, f.clock_delta};
-        if (int rc = run_render(o); rc != 0) return rc;  // POV-Ray stops at a failing frame
+        if (int rc = run_render(o); rc != 0)
+            return rc;  // POV-Ray stops at a failing frame
         ++rendered;
     }
     if (!base.quiet) {
@@ -101,9 +122,11 @@ int run_render(RenderOptions o) {
     }
     if (o.continue_trace && !o.frame) {
         std::string out = o.output.empty() ? default_output_name(o) : o.output;
-        if (std::filesystem::path(out).extension().empty()) out += format_extension(o.format);
+        if (std::filesystem::path(out).extension().empty())
+            out += format_extension(o.format);
         if (std::filesystem::exists(out)) {
-            if (!o.quiet) std::fprintf(stderr, "povwall: %s exists, kept (+C)\n", out.c_str());
+            if (!o.quiet)
+                std::fprintf(stderr, "povwall: %s exists, kept (+C)\n", out.c_str());
             return 0;
         }
     }
@@ -134,6 +157,8 @@ int run_render(RenderOptions o) {
         std::cerr << e.what() << "\n";
         return 2;
     }
+    if (o.max_trace_level) scene.settings.max_trace_level = *o.max_trace_level;
+    if (o.adc_bailout) scene.settings.adc_bailout = float(*o.adc_bailout);
     auto t1 = Clock::now();
     resolve_partial_render(o);
     o.render.width = o.width;
@@ -198,9 +223,11 @@ int run_render(RenderOptions o) {
             source.library_paths = o.library_paths;
             source.declares = o.declares;
             source.clock = popts.clock, source.clock_delta = popts.clock_delta;
-            source.initial_clock = popts.initial_clock, source.final_clock = popts.final_clock;
+            source.initial_clock = popts.initial_clock,
+            source.final_clock = popts.final_clock;
             source.frame_number = popts.frame_number;
-            source.initial_frame = popts.initial_frame, source.final_frame = popts.final_frame;
+            source.initial_frame = popts.initial_frame,
+            source.final_frame = popts.final_frame;
             distrib::TcpOptions tcp;
             tcp.procs = o.workers.empty() ? o.procs : 0;
             tcp.workers = o.workers;
