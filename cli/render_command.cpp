@@ -8,9 +8,11 @@
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <thread>
 
 #include "cli/options.h"
+#include "cli/progress_bar.h"
 #include "distrib/distribution_plan.h"
 #include "distrib/screen_render.h"
 #include "distrib/space_render.h"
@@ -203,6 +205,10 @@ int run_render(RenderOptions o) {
         std::fflush(stdout);
     }
     trace::RenderStats stats;
+    trace::RenderProgress progress;
+    o.render.progress = &progress;
+    std::optional<ProgressBar> bar;
+    bar.emplace(progress, !o.quiet);
     distrib::SpaceOptions space = dplan.space;
     const bool use_boxes = dplan.mode == distrib::RenderMode::Space;
     distrib::SpaceStats space_stats;
@@ -271,6 +277,7 @@ int run_render(RenderOptions o) {
     } else {
         image = trace::render_scene(scene, o.render, &stats);
     }
+    bar.reset();
     auto t2 = Clock::now();
     try {
         std::string format;

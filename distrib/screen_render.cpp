@@ -125,6 +125,8 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
         error = e.what();
     }
     Image image(W, H);
+    if (settings.progress)
+        settings.progress->pixels_total += uint64_t(c1 - c0) * (r1 - r0);
     std::atomic<int> next_tile{0};
     std::atomic<bool> failed{!error.empty()};
     std::mutex mutex;
@@ -158,6 +160,13 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
             for (int y = rq.y0; y < rq.y1; ++y) {
                 std::memcpy(image.pixel(rq.x0, y), &pixels[size_t(y - rq.y0) * tw * 4],
                             size_t(tw) * 4 * sizeof(float));
+            }
+            if (settings.progress) {
+                const uint64_t rays =
+                    reply.camera + reply.reflected + reply.refracted + reply.shadow;
+                settings.progress->rays +=
+                    rays - (counts[0] + counts[1] + counts[2] + counts[3]);
+                settings.progress->pixels_done += uint64_t(tw) * (rq.y1 - rq.y0);
             }
             counts[0] = reply.camera;  // counters are cumulative per worker
             counts[1] = reply.reflected;

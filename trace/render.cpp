@@ -99,11 +99,27 @@ Image render_scene(const Scene& scene, const RenderSettings& settings,
     // thread.
     std::vector<TraceCounters> counters(threads);
     std::vector<uint64_t> tests(threads, 0);
+    RenderProgress* const progress = settings.progress;
+    auto rays_of = [](const TraceCounters& c) {
+        return c.camera + c.reflected + c.refracted + c.shadow;
+    };
     auto over_rows = [&](int first, int last, auto&& per_row) {
         std::atomic<int> next_row{first};
+        const uint64_t row_pixels = uint64_t(std::max(0, last_col - first_col + 1));
+        if (progress)
+            progress->pixels_total += row_pixels * std::max(0, last - first + 1);
         run_pool([&](int ti) {
             Tracer tracer(prepared);
-            for (int y; (y = next_row.fetch_add(1)) <= last;) per_row(tracer, y);
+            uint64_t reported = 0;
+            for (int y; (y = next_row.fetch_add(1)) <= last;) {
+                per_row(tracer, y);
+                if (progress) {
+                    const uint64_t rays = rays_of(tracer.counters());
+                    progress->rays += rays - reported;
+                    progress->pixels_done += row_pixels;
+                    reported = rays;
+                }
+            }
             counters[ti] += tracer.counters();
             tests[ti] += tracer.intersection_tests();
         });

@@ -9,6 +9,15 @@
 
 namespace povwall::trace {
 
+// Live counters a progress display reads while a render runs (renderers add to them from
+// any thread). Work is counted in pixel passes: every pass over the image (the first
+// samples, an anti-aliasing pass) adds its pixels to the total when it starts.
+struct RenderProgress {
+    std::atomic<uint64_t> pixels_done{0};
+    std::atomic<uint64_t> pixels_total{0};
+    std::atomic<uint64_t> rays{0};
+};
+
 struct RenderSettings {
     int width = 320, height = 240;
     int threads = 0;  // 0: all cores
@@ -23,6 +32,7 @@ struct RenderSettings {
     int first_row = 0, last_row = -1, first_col = 0, last_col = -1;
     // --plan all: leave nothing out (tests that the render plan changes no pixel).
     bool plan_everything_on = false;
+    RenderProgress* progress = nullptr;  // optional, not owned
 };
 
 struct RenderStats {
@@ -41,9 +51,9 @@ struct RenderStats {
 void aa_jitter_offset(Real px, Real py, Real& jx, Real& jy);
 
 class Tracer;
-// One camera sample at image position (px, py): RGBA into `out`, as every renderer writes it
-// (nothing seen, e.g. a fisheye's corners: black and transparent; background transmit only
-// with +UA).
+// One camera sample at image position (px, py): RGBA into `out`, as every renderer writes
+// it (nothing seen, e.g. a fisheye's corners: black and transparent; background transmit
+// only with +UA).
 void trace_camera_sample(Tracer& tracer, const Camera& camera, Real px, Real py,
                          const RenderSettings& settings, float* out);
 
