@@ -20,7 +20,6 @@
 #include "trace/numerics_check.h"
 #include "trace/render.h"
 
-
 namespace povwall::cli {
 namespace {
 

@@ -46,18 +46,31 @@ void apply_ini_file(const std::string& path, RenderOptions& o) {
 void apply_ini_stream(std::istream& in, const std::string& path, RenderOptions& o) {
     // Keys taking a value and the switch letter(s) they stand for.
     static const std::map<std::string, std::string> kValue = {
-        {"input_file_name", "I"}, {"output_file_name", "O"}, {"width", "W"},
-        {"height", "H"},          {"library_path", "L"},     {"antialias_threshold", "A"},
-        {"antialias_depth", "R"}, {"sampling_method", "AM"}, {"jitter_amount", "J"},
-        {"work_threads", "WT"},   {"start_row", "SR"},       {"end_row", "ER"},
-        {"start_column", "SC"},   {"end_column", "EC"},
-        {"initial_frame", "KFI"}, {"final_frame", "KFF"},    {"initial_clock", "KI"},
-        {"final_clock", "KF"},    {"clock", "K"},            {"subset_start_frame", "SF"},
+        {"input_file_name", "I"},
+        {"output_file_name", "O"},
+        {"width", "W"},
+        {"height", "H"},
+        {"library_path", "L"},
+        {"antialias_threshold", "A"},
+        {"antialias_depth", "R"},
+        {"sampling_method", "AM"},
+        {"jitter_amount", "J"},
+        {"work_threads", "WT"},
+        {"start_row", "SR"},
+        {"end_row", "ER"},
+        {"start_column", "SC"},
+        {"end_column", "EC"},
+        {"initial_frame", "KFI"},
+        {"final_frame", "KFF"},
+        {"initial_clock", "KI"},
+        {"final_clock", "KF"},
+        {"clock", "K"},
+        {"subset_start_frame", "SF"},
         {"subset_end_frame", "EF"},
     };
     static const std::map<std::string, std::string> kFlag = {
-        {"antialias", "A"}, {"jitter", "J"},  {"output_alpha", "UA"},
-        {"display", "D"},   {"verbose", "V"}, {"pause_when_done", "P"},
+        {"antialias", "A"},         {"jitter", "J"},         {"output_alpha", "UA"},
+        {"display", "D"},           {"verbose", "V"},        {"pause_when_done", "P"},
         {"cyclic_animation", "KC"}, {"continue_trace", "C"},
     };
     std::string line;

@@ -46,6 +46,9 @@ struct RenderOptions {
     // Overrides of the scene's global_settings (quick previews, `povwall sweep`).
     std::optional<int> max_trace_level;
     std::optional<double> adc_bailout;
+    // Parse limits (ParseOptions): a runaway scene stops with a located error.
+    uint64_t max_loop_iterations = 10'000'000;
+    double max_parse_seconds = 0;  // 0: no limit
     bool quiet = false;
     std::string stats_file;
     // Space subdivision (virtual walls): empty lets --mode decide; "1x1x1" is one box.

@@ -1,11 +1,10 @@
 // `povwall parse`: read a scene as POV-Ray would and report what it holds, or why not.
 // Exit codes: 0 parsed, 3 uses a feature povwall does not support yet, 2 error.
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <map>
-
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "cli/options.h"
@@ -16,9 +15,9 @@ namespace povwall::cli {
 namespace {
 
 const char* shape_name(const ShapeData& s) {
-    static const char* kNames[] = {"sphere", "box", "plane", "cylinder", "cone", "torus",
-                                   "disc", "triangle", "smooth_triangle", "polygon", "mesh",
-                                   "csg"};
+    static const char* kNames[] = {
+        "sphere", "box",      "plane",           "cylinder", "cone", "torus",
+        "disc",   "triangle", "smooth_triangle", "polygon",  "mesh", "csg"};
     return kNames[s.index()];
 }
 
@@ -35,20 +34,28 @@ void count_shapes(const Object& o, std::map<std::string, int>& counts) {
 }  // namespace
 
 int run_parse(int argc, char** argv) {
-    CLI::App app{"Parse a scene and report its contents (exit 0 ok, 3 unsupported, 2 error)",
-                 "povwall parse"};
+    CLI::App app{
+        "Parse a scene and report its contents (exit 0 ok, 3 unsupported, 2 error)",
+        "povwall parse"};
     std::string scene;
     std::vector<std::string> library_paths;
     bool json = false;
     app.add_option("SCENE", scene, "scene file")->required();
     app.add_option("-L", library_paths, "include folder (repeatable)");
     app.add_flag("--json", json, "print one JSON object");
+    parser::ParseOptions popts;
+    app.add_option("--max-loop-iterations", popts.max_loop_iterations,
+                   "runs of one #while/#for before it is stopped as runaway")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    app.add_option("--max-parse-seconds", popts.max_parse_seconds,
+                   "stop parsing after this many seconds (0: no limit)")
+        ->check(CLI::NonNegativeNumber);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : 2;
     }
-    parser::ParseOptions popts;
     popts.library_paths = library_paths;
     popts.image_reader = output::read_stored_image;
     nlohmann::json j;
@@ -76,12 +83,14 @@ int run_parse(int argc, char** argv) {
         }
         if (!json) std::cerr << e.what() << "\n";
     }
-    j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    j["seconds"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (json) {
         std::printf("%s\n", j.dump().c_str());
     } else if (code == 0) {
         std::printf("%s: %zu objects, %zu lights, #version %.2f\n", scene.c_str(),
-                    size_t(j["objects"]), size_t(j["lights"]), double(j["language_version"]));
+                    size_t(j["objects"]), size_t(j["lights"]),
+                    double(j["language_version"]));
         for (const auto& [name, n] : j["shapes"].items()) {
             std::printf("  %s: %d\n", name.c_str(), int(n));
         }

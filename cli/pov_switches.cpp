@@ -198,12 +198,13 @@ std::vector<Frame> animation_frames(const RenderOptions& o) {
     const double delta = (a.final_clock - a.initial_clock) / steps;
     const int digits = int(std::to_string(a.final_frame).size());
     std::filesystem::path out(o.output.empty() ? default_output_name(o) : o.output);
-    const std::string ext = out.extension().empty() ? format_extension(o.format)
-                                                    : out.extension().string();
+    const std::string ext =
+        out.extension().empty() ? format_extension(o.format) : out.extension().string();
     const std::filesystem::path stem = out.parent_path() / out.stem();
-    const int first = a.subset_start > 0 ? std::max(a.subset_start, a.initial_frame)
-                                         : a.initial_frame;
-    const int last = a.subset_end > 0 ? std::min(a.subset_end, a.final_frame) : a.final_frame;
+    const int first =
+        a.subset_start > 0 ? std::max(a.subset_start, a.initial_frame) : a.initial_frame;
+    const int last =
+        a.subset_end > 0 ? std::min(a.subset_end, a.final_frame) : a.final_frame;
     std::vector<Frame> frames;
     for (int n = first; n <= last; ++n) {
         Frame f;

@@ -71,6 +71,7 @@ std::vector<std::string> tile_worker_command(const RenderOptions& o) {
         std::snprintf(buf, sizeof buf, "--adc-bailout=%.17g", *o.adc_bailout);
         cmd.push_back(buf);
     }
+    cmd.push_back("--max-loop-iterations=" + std::to_string(o.max_loop_iterations));
     if (o.frame) {  // the frame's clock, exactly as this process has it
         char buf[256];
         std::snprintf(buf, sizeof buf, "--frame-values=%d,%.17g,%.17g,%d,%d,%.17g,%.17g",
@@ -151,6 +152,8 @@ int run_render(RenderOptions o) {
     popts.clock_delta = o.frame ? o.frame->clock_delta : 0.0;
     popts.frame_number = o.frame ? o.frame->number : 0;
     popts.messages = o.quiet ? nullptr : &std::cerr;
+    popts.max_loop_iterations = o.max_loop_iterations;
+    popts.max_parse_seconds = o.max_parse_seconds;
     auto t0 = Clock::now();
     Scene scene;
     try {
@@ -232,6 +235,9 @@ int run_render(RenderOptions o) {
             source.initial_clock = popts.initial_clock,
             source.final_clock = popts.final_clock;
             source.frame_number = popts.frame_number;
+            source.max_loop_iterations = popts.max_loop_iterations;
+            source.max_trace_level = o.max_trace_level;
+            source.adc_bailout = o.adc_bailout;
             source.initial_frame = popts.initial_frame,
             source.final_frame = popts.final_frame;
             distrib::TcpOptions tcp;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,6 +31,10 @@ struct SceneSource {
     // Animation values the language exposes (clock, frame_number, ...).
     double clock = 0, clock_delta = 0, initial_clock = 0, final_clock = 0;
     int frame_number = 0, initial_frame = 1, final_frame = 1;
+    uint64_t max_loop_iterations = 10'000'000;  // the coordinator's parse limit
+    // The coordinator's overrides of the scene's global_settings.
+    std::optional<int> max_trace_level;
+    std::optional<double> adc_bailout;
 };
 
 struct TcpOptions {

@@ -452,6 +452,7 @@ class Worker {
         popts.initial_clock = anim.at(2), popts.final_clock = anim.at(3);
         popts.frame_number = anim.at(4), popts.initial_frame = anim.at(5);
         popts.final_frame = anim.at(6);
+        popts.max_loop_iterations = j.at("max_loop_iterations").get<uint64_t>();
         settings_.width = popts.image_width = j.at("width").get<int>();
         settings_.height = popts.image_height = j.at("height").get<int>();
         settings_.alpha = j.at("alpha").get<bool>();
@@ -463,6 +464,10 @@ class Worker {
             coordinator_->send(control_frame({{"type", "error"}, {"message", e.what()}}));
             return;
         }
+        if (!j.at("max_trace_level").is_null())
+            scene_.settings.max_trace_level = j.at("max_trace_level").get<int>();
+        if (!j.at("adc_bailout").is_null())
+            scene_.settings.adc_bailout = float(j.at("adc_bailout").get<double>());
         space_.results = SpaceOptions::Results(j.at("results").get<int>());
         space_.queue = QueuePolicy(j.at("queue").get<int>());
         threads_ = options_.threads > 0 ? options_.threads : j.at("threads").get<int>();
@@ -746,6 +751,10 @@ class Coordinator {
              {source_.clock, source_.clock_delta, source_.initial_clock,
               source_.final_clock, source_.frame_number, source_.initial_frame,
               source_.final_frame}},
+            {"max_loop_iterations", source_.max_loop_iterations},
+            {"max_trace_level",
+             source_.max_trace_level ? json(*source_.max_trace_level) : json()},
+            {"adc_bailout", source_.adc_bailout ? json(*source_.adc_bailout) : json()},
             {"width", settings_.width},
             {"height", settings_.height},
             {"alpha", settings_.alpha},

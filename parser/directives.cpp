@@ -225,10 +225,10 @@ void Interpreter::directive_while(const Token& t) {
         (uint64_t(uint32_t(frames_.back().file)) << 32) | uint64_t(directive_pos);
     if (parse_condition() != 0) {
         // A loop that never ends would hang the parse: stop it with a located error.
-        if (++loop_counts_[key] > kMaxLoopIterations) {
+        if (++loop_counts_[key] > options_.max_loop_iterations) {
             loop_counts_.erase(key);
-            error(t, "#while loop ran " + std::to_string(kMaxLoopIterations) +
-                         " times: runaway loop?");
+            error(t, "#while loop ran " + std::to_string(options_.max_loop_iterations) +
+                         " times: runaway loop? (--max-loop-iterations)");
         }
         conds_.push_back({Cond::Kind::While, frames_.size(), directive_pos, {}, 0, 1, t});
     } else {
@@ -283,9 +283,10 @@ void Interpreter::directive_end(const Token& t) {
             double value = n->c[0] + c.step;
             declare(c.var, Numeric::scalar(value), false, t);
             if (c.step > 0 ? value <= c.end : value >= c.end) {
-                if (++c.iterations > kMaxLoopIterations) {
-                    error(c.at, "#for loop ran " + std::to_string(kMaxLoopIterations) +
-                                    " times: runaway loop?");
+                if (++c.iterations > options_.max_loop_iterations) {
+                    error(c.at, "#for loop ran " +
+                                    std::to_string(options_.max_loop_iterations) +
+                                    " times: runaway loop? (--max-loop-iterations)");
                 }
                 conds_.push_back(c);
                 frames_.back().pos = c.pos;

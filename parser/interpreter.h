@@ -2,6 +2,7 @@
 // them (so they may appear anywhere, as in POV-Ray) and builds the scene as it goes.
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <string>
 #include <unordered_map>
@@ -20,7 +21,6 @@ constexpr int kMaxIncludeDepth =
 constexpr int kMaxMacroDepth =
     1000;  // recursion guard (POV-Ray's symbol table limit is 100)
 constexpr size_t kMaxArrayItems = 1u << 28;
-constexpr uint64_t kMaxLoopIterations = 10'000'000;  // per #while or #for run
 
 // Composes `t` into every pattern transform of the layers (textures move with objects).
 void transform_textures(LayeredTexture& layers, const Transform& t);
@@ -57,7 +57,8 @@ class Interpreter {
     // A located `warning:` diagnostic on the messages stream; parsing goes on.
     void warn(const Token& at, const std::string& message) {
         if (options_.messages)
-            *options_.messages << format_diagnostic(sources_, at, "warning", message) << "\n";
+            *options_.messages << format_diagnostic(sources_, at, "warning", message)
+                               << "\n";
     }
     // POV-Ray's degenerate triangle: coincident or collinear corners.
     static bool degenerate_corners(const Point3 p[3]) {
@@ -116,7 +117,8 @@ class Interpreter {
     ColourMap parse_colour_map_block();  // after 'color_map'
     bool try_pattern_keyword(const Token& t, PatternSpec& spec);
     // After image_map / bump_map (`bump` receives bump_size): the mapping, pixels loaded.
-    std::shared_ptr<const ImageMapping> parse_image_block(const Token& keyword, Normal* bump);
+    std::shared_ptr<const ImageMapping> parse_image_block(const Token& keyword,
+                                                          Normal* bump);
     bool try_pattern_modifier(const Token& t, PatternSpec& spec);
     Light parse_light_block();
     CameraSpec parse_camera_block();
@@ -205,6 +207,10 @@ class Interpreter {
         loop_counts_;  // #while runs, by position  // by symbol: ever bound (keywords
                        // never are)
     std::vector<Token> pushback_;
+    // --max-parse-seconds: the clock is read once per 65,536 tokens.
+    std::chrono::steady_clock::time_point parse_deadline_;
+    uint32_t tokens_since_clock_ = 0;
+    void check_parse_time(const Token& at);
     std::vector<std::unique_ptr<RandomStream>> streams_;
     int version_ = 362;
     bool version_set_ = false;

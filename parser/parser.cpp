@@ -1,5 +1,6 @@
 #include "parser/parser.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -9,7 +10,23 @@
 namespace povwall::parser {
 
 Interpreter::Interpreter(const ParseOptions& options, SourceManager& sources)
-    : options_(options), sources_(sources) {}
+    : options_(options), sources_(sources) {
+    if (options_.max_parse_seconds > 0)
+        parse_deadline_ = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(options_.max_parse_seconds));
+}
+
+void Interpreter::check_parse_time(const Token& at) {
+    tokens_since_clock_ = 0;
+    if (options_.max_parse_seconds > 0 &&
+        std::chrono::steady_clock::now() > parse_deadline_) {
+        char limit[32];
+        std::snprintf(limit, sizeof limit, "%g", options_.max_parse_seconds);
+        error(at, std::string("parse time limit of ") + limit +
+                      " s exceeded (--max-parse-seconds)");
+    }
+}
 
 Scene Interpreter::run(int root_file) {
     scene_dir_ =

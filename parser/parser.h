@@ -31,6 +31,9 @@ struct ParseOptions {
     // Reads image_map/bump_map files. Without one the scene records the file references
     // only (enough to list the files a scene reads), and cannot be rendered.
     ImageReader image_reader;
+    // Resource limits that turn a runaway scene into a located error.
+    uint64_t max_loop_iterations = 10'000'000;  // per run of one #while or #for
+    double max_parse_seconds = 0;               // wall time of the whole parse; 0: none
 };
 
 // A located diagnostic. what() is the full text as printed: "file:line:col: error: msg",

@@ -291,7 +291,40 @@ TEST(BadInput, LocatedErrorsInsteadOfCrashesOrHangs) {
     EXPECT_EQ(first_line("#declare A = array[100000][100000][1000];"),
               "test.pov:1:28: error: array too large");
     EXPECT_EQ(first_line("#for (I, 0, 1, 1e-12) #end"),
-              "test.pov:1:1: error: #for loop ran 10000000 times: runaway loop?");
+              "test.pov:1:1: error: #for loop ran 10000000 times: runaway loop? "
+              "(--max-loop-iterations)");
+}
+
+std::string first_line_with(const std::string& text, const ParseOptions& options) {
+    try {
+        parse_scene_text(text, "test.pov", options);
+    } catch (const ParseError& e) {
+        const std::string what = e.what();
+        return what.substr(0, what.find('\n'));
+    }
+    return "(no error)";
+}
+
+TEST(BadInput, LoopAndParseTimeLimitsAreSettable) {
+    ParseOptions few;
+    few.max_loop_iterations = 100;
+    EXPECT_EQ(
+        first_line_with("#declare I = 0; #while (I < 100) #declare I = I + 1; #end", few),
+        "(no error)");
+    EXPECT_EQ(first_line_with(
+                  "#declare I = 0;\n#while (I < 101) #declare I = I + 1; #end", few),
+              "test.pov:2:1: error: #while loop ran 100 times: runaway loop? "
+              "(--max-loop-iterations)");
+    // A loop inside its iteration limit that runs longer than the time limit.
+    ParseOptions quick;
+    quick.max_parse_seconds = 0.2;
+    const std::string err = first_line_with(
+        "#declare I = 0;\n#while (I < 9000000) #declare I = I + 1; #end", quick);
+    EXPECT_EQ(err.rfind("test.pov:2:", 0), 0u) << err;
+    EXPECT_NE(
+        err.find(": error: parse time limit of 0.2 s exceeded (--max-parse-seconds)"),
+        std::string::npos)
+        << err;
 }
 
 }  // namespace
