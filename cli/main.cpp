@@ -1,4 +1,4 @@
-// The povwall command: subcommands render, diff, compare, and POV-Ray's own +X switches.
+// The povwall command: subcommands render, diff, compare, corpus, ... and POV-Ray's +X.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -31,7 +31,9 @@ const char* kUsage =
     "       povwall worker --listen HOST:PORT --token T [--threads N]\n"
     "       povwall check-numerics SCENE.pov [-W N] [-H N] [-L DIR]... [--povray] "
     "[--json]\n"
-    "       povwall batch JOBS... [--resume]   (scenes, .ini files, job files)\n";
+    "       povwall batch JOBS... [--resume]   (scenes, .ini files, job files)\n"
+    "       povwall corpus DIR|LIST [-W N] [-H N] [--html OUT/] [--root DIR]\n"
+    "                      [--threads N] [--cache DIR] [--timeout S]   (HTML report)\n";
 
 int render_main(const std::vector<std::string>& args) {
     RenderOptions o;
@@ -137,6 +139,7 @@ int main(int argc, char** argv) {
         if (cmd == "worker") return run_worker_command(argc - 1, argv + 1);
         if (cmd == "check-numerics") return run_check_numerics(argc - 1, argv + 1);
         if (cmd == "batch") return run_batch(argc - 1, argv + 1);
+        if (cmd == "corpus") return run_corpus(argc - 1, argv + 1);
         if (cmd == "-h" || cmd == "--help" || cmd == "help") {
             std::fputs(kUsage, stdout);
             return 0;
