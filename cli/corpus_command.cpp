@@ -167,6 +167,12 @@ std::string format_seconds(double s) {
     return buf;
 }
 
+std::string number_text(double v, const char* format) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+
 void remove_quietly(const fs::path& p) {
     std::error_code ignored;
     fs::remove(p, ignored);
@@ -285,8 +291,10 @@ SceneResult run_scene(const CorpusSettings& s, const CorpusScene& scene, size_t 
         st == Status::Pass || st == Status::Warn ? Outcome::Matched : Outcome::Mismatched;
     result.warning = st == Status::Warn;
     if (result.warning) {
-        result.note = "warning: " + std::to_string(result.diff.warn_pixels) +
-                      " pixels differ by more than " + format_seconds(s.thresholds.warn);
+        const long long n = result.diff.warn_pixels;
+        result.note = "warning: " + std::to_string(n) +
+                      (n == 1 ? " pixel differs" : " pixels differ") + " by more than " +
+                      number_text(s.thresholds.warn, "%g");
     }
     return result;
 }
@@ -299,12 +307,6 @@ std::string ratio_text(double povray_seconds, double povwall_seconds) {
     if (povwall_seconds <= 0 || povray_seconds <= 0) return "-";
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.2f", povray_seconds / povwall_seconds);
-    return buf;
-}
-
-std::string number_text(double v, const char* format) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, format, v);
     return buf;
 }
 
