@@ -88,6 +88,8 @@ class Corpus : public ::testing::Test {
     static void TearDownTestSuite() {
         delete run_;
         run_ = nullptr;
+        std::error_code ignored;  // each test binary run has its own folder
+        fs::remove_all(work_dir(), ignored);
     }
     void SetUp() override {
         if (!on_path("povray"))
@@ -206,6 +208,7 @@ TEST(CorpusFolder, StricterThresholdsMismatchAndCachedReferencesKeepTheirTime) {
     EXPECT_NE(slurp(dir / "report/index.html").find("(cached)"), std::string::npos);
     EXPECT_EQ(r.out.find("without a recorded time"), std::string::npos) << r.out;
     EXPECT_FALSE(std::regex_search(r.out, std::regex(R"(POV-Ray 0\.00 s)"))) << r.out;
+    fs::remove_all(dir);
 }
 
 TEST(CorpusUsage, MissingSourceOrBadOptionsExitTwo) {
