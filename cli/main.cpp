@@ -1,4 +1,4 @@
-// The povwall command: subcommands render, diff, compare, and POV-Ray's own +X switches.
+// The povwall command: subcommands render, diff, compare, corpus, ... and POV-Ray's +X.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -34,7 +34,9 @@ const char* kUsage =
     "[--json]\n"
     "       povwall batch JOBS... [--resume]   (scenes, .ini files, job files)\n"
     "       povwall sweep SCENE.pov [-W N] [-H N] [--repeat N] [--csv F] [--plot "
-    "F.svg]\n";
+    "F.svg]\n"
+    "       povwall corpus DIR|LIST [-W N] [-H N] [--html OUT/] [--root DIR]\n"
+    "                      [--threads N] [--cache DIR] [--timeout S]   (HTML report)\n";
 
 int render_main(const std::vector<std::string>& args) {
     RenderOptions o;
@@ -174,6 +176,7 @@ int main(int argc, char** argv) {
         if (cmd == "check-numerics") return run_check_numerics(argc - 1, argv + 1);
         if (cmd == "batch") return run_batch(argc - 1, argv + 1);
         if (cmd == "sweep") return run_sweep(argc - 1, argv + 1);
+        if (cmd == "corpus") return run_corpus(argc - 1, argv + 1);
         if (cmd == "-h" || cmd == "--help" || cmd == "help") {
             std::fputs(kUsage, stdout);
             return 0;

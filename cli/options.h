@@ -106,6 +106,7 @@ int run_worker_command(int argc, char** argv);
 int run_check_numerics(int argc, char** argv);
 int run_batch(int argc, char** argv);
 int run_sweep(int argc, char** argv);
+int run_corpus(int argc, char** argv);
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;

@@ -112,7 +112,8 @@ std::vector<std::string> povray_command(const RenderOptions& o,
 }
 
 PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd,
-                     const std::string& cache_dir, const std::string& log_path) {
+                     const std::string& cache_dir, const std::string& log_path,
+                     double timeout_seconds) {
     PovrayRun run;
     const std::string out_png = cmd.at(2).substr(2);
     std::string cached;
@@ -127,13 +128,17 @@ PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd
                   (fs::path(o.scene).stem().string() + "-" + key + ".png"))
                      .string();
     }
+    // The render time is kept next to the cached image, so reports made from the cache
+    // still show how long POV-Ray took.
+    const std::string seconds_file = cached + ".seconds";
     if (!cached.empty() && fs::exists(cached)) {
         fs::copy_file(cached, out_png, fs::copy_options::overwrite_existing);
         run.cached = true;
+        std::ifstream(seconds_file) >> run.seconds;
         return run;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const int rc = run_process(cmd, log_path);
+    const int rc = run_process(cmd, log_path, timeout_seconds);
     run.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (rc == -1) {
@@ -141,6 +146,9 @@ PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd
         return run;
     }
     if (rc != 0 || !fs::exists(out_png)) {
+        std::error_code ignored;  // a killed or failed POV-Ray may leave a partial image
+        fs::remove(out_png, ignored);
+        run.timed_out = rc == kProcessTimedOut;
         std::ifstream in(log_path);
         std::stringstream ss;
         ss << in.rdbuf();
@@ -151,6 +159,8 @@ PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd
     }
     if (!cached.empty()) {  // temp name, then rename: a cache entry is always whole
         std::string tmp = cached + ".tmp";
+        std::ofstream(tmp) << run.seconds << "\n";
+        fs::rename(tmp, seconds_file);
         fs::copy_file(out_png, tmp, fs::copy_options::overwrite_existing);
         fs::rename(tmp, cached);
     }

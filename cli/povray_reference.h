@@ -19,16 +19,21 @@ std::vector<std::string> povray_command(const RenderOptions& o,
 
 struct PovrayRun {
     enum class Status { Ok, NotInstalled, SceneError, Failed } status = Status::Ok;
-    double seconds = 0;   // wall time of the render (0 when taken from the cache)
-    bool cached = false;  // the image came from the cache
-    int exit_code = 0;    // POV-Ray's, when it failed
-    std::string log;      // POV-Ray's console output when it failed
+    // Wall time of the render; for a cached image the time recorded when it was made (0
+    // when the cache entry predates recording).
+    double seconds = 0;
+    bool cached = false;     // the image came from the cache
+    bool timed_out = false;  // killed after the time limit (status Failed)
+    int exit_code = 0;       // POV-Ray's, when it failed
+    std::string log;         // POV-Ray's console output when it failed
 };
 
 // Runs `cmd` (from povray_command) unless `cache_dir` holds its image already; the image
 // ends at cmd's +O path. A scene that does not parse for povwall gives SceneError (its
-// message printed) when a cache key is needed.
+// message printed) when a cache key is needed. With `timeout_seconds` > 0 a render still
+// running after that long is killed: Failed with timed_out set, no image left behind.
 PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd,
-                     const std::string& cache_dir, const std::string& log_path);
+                     const std::string& cache_dir, const std::string& log_path,
+                     double timeout_seconds = 0);
 
 }  // namespace povwall::cli

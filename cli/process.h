@@ -6,8 +6,15 @@
 
 namespace povwall::cli {
 
+// run_process's result when the program ran past its time limit and was killed.
+constexpr int kProcessTimedOut = -2;
+
 // Runs `args` (args[0] searched on PATH), stdout discarded, stderr to `log` ("" discards
-// it too); returns its exit status, 128 if it died of a signal, -1 if it cannot run.
-int run_process(const std::vector<std::string>& args, const std::string& log = "");
+// it too); returns its exit status, 128 + the signal number if it died of a signal, -1 if
+// it cannot run. With `timeout_seconds` > 0 a program still running after that long is
+// killed (SIGKILL: a hung render may ignore anything gentler) and kProcessTimedOut is
+// returned.
+int run_process(const std::vector<std::string>& args, const std::string& log = "",
+                double timeout_seconds = 0);
 
 }  // namespace povwall::cli

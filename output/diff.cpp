@@ -1,5 +1,6 @@
 #include "output/diff.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -78,6 +79,27 @@ Image difference_image(const Image& a, const Image& b) {
         d.rgba[i + 3] = 1.0f;
     }
     return d;
+}
+
+Image difference_heatmap(const Image& a, const Image& b, double full_scale) {
+    Image heat(a.width, a.height);
+    if (a.width != b.width || a.height != b.height) return heat;
+    // Equally spaced stops: a difference of a third of full scale is pure blue, two
+    // thirds yellow, full scale red.
+    static constexpr float kStops[4][3] = {{0, 0, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 0}};
+    for (size_t i = 0; i < heat.rgba.size(); i += 4) {
+        float largest = 0;
+        for (int c = 0; c < 3; ++c)
+            largest = std::max(largest, std::fabs(a.rgba[i + c] - b.rgba[i + c]));
+        const float t = float(std::clamp(largest / full_scale, 0.0, 1.0)) * 3.0f;
+        const int stop = std::min(int(t), 2);
+        const float f = t - float(stop);
+        for (int c = 0; c < 3; ++c)
+            heat.rgba[i + c] =
+                kStops[stop][c] + f * (kStops[stop + 1][c] - kStops[stop][c]);
+        heat.rgba[i + 3] = 1.0f;
+    }
+    return heat;
 }
 
 }  // namespace povwall::output

@@ -43,4 +43,10 @@ DiffResult diff_files(const std::string& a, const std::string& b,
 // |a - b| per RGB channel (alpha 1), for looking at where two same-sized images differ.
 Image difference_image(const Image& a, const Image& b);
 
+// A heatmap of where two same-sized images differ: each pixel's largest RGB channel
+// difference on a colour ramp black (equal) -> blue -> yellow -> red (at `full_scale` and
+// above; with the default, every bad pixel of DiffThresholds{} is red). Values are meant
+// to be written raw (OutputEncoding::gamma_handling off).
+Image difference_heatmap(const Image& a, const Image& b, double full_scale = 0.1);
+
 }  // namespace povwall::output

@@ -7,8 +7,10 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "output/diff.h"
+#include "output/html_report.h"
 #include "output/image_io.h"
 
 namespace povwall::output {
@@ -220,6 +222,69 @@ TEST(Diff, SizeMismatchUnreadableAndDifferenceImage) {
     EXPECT_FLOAT_EQ(d.pixel(1, 0)[1], 0.5f);
     EXPECT_FLOAT_EQ(d.pixel(1, 0)[2], 0.0f);
     EXPECT_FLOAT_EQ(d.pixel(1, 0)[3], 1.0f);
+}
+
+TEST(Diff, HeatmapRampEndsRedAtTheBadPixelThreshold) {
+    auto heat_of = [](float difference) {
+        Image h = difference_heatmap(flat(1, 1, 0.5f, 0.5f, 0.5f),
+                                     flat(1, 1, 0.5f, 0.5f - difference, 0.5f));
+        return std::vector<float>(h.rgba.begin(), h.rgba.begin() + 3);
+    };
+    EXPECT_EQ(heat_of(0.0f), (std::vector<float>{0, 0, 0}));  // equal: black
+    const std::vector<float> blue = heat_of(0.1f / 3), yellow = heat_of(0.2f / 3);
+    EXPECT_NEAR(blue[0], 0, 1e-5);
+    EXPECT_NEAR(blue[2], 1, 1e-5);
+    EXPECT_NEAR(yellow[0], 1, 1e-5);
+    EXPECT_NEAR(yellow[1], 1, 1e-5);
+    EXPECT_NEAR(yellow[2], 0, 1e-5);
+    const std::vector<float> threshold = heat_of(0.1f);  // bad from here on: red
+    EXPECT_NEAR(threshold[0], 1, 1e-5);
+    EXPECT_NEAR(threshold[1], 0, 1e-5);
+    EXPECT_NEAR(threshold[2], 0, 1e-5);
+    EXPECT_EQ(heat_of(0.4f), (std::vector<float>{1, 0, 0}));
+    const std::vector<float> small = heat_of(0.01f);  // dark blue, growing with the error
+    EXPECT_GT(small[2], 0.2f);
+    EXPECT_LT(small[2], 0.4f);
+    EXPECT_EQ(small[0], 0.0f);
+    // The largest channel decides; sizes that differ give an all-black map.
+    Image h = difference_heatmap(flat(1, 1, 0, 0, 0), flat(1, 1, 0.02f, 0.2f, 0.01f));
+    EXPECT_FLOAT_EQ(h.pixel(0, 0)[0], 1.0f);
+    EXPECT_FLOAT_EQ(difference_heatmap(flat(2, 2, 0, 0, 0), flat(1, 1, 1, 1, 1)).rgba[0],
+                    0);
+}
+
+TEST(HtmlReport, EscapesTextShowsImagesAndCountsWhatLoaded) {
+    EXPECT_EQ(html_escape("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
+    HtmlReport report;
+    report.title = "T <1>";
+    report.summary = {"1 & 2"};
+    report.columns = {"scene", "image"};
+    HtmlCell image;
+    image.image = "images/a\"b.png";
+    image.text = "alt";
+    HtmlCell logged;
+    logged.text = "failed <x>";
+    logged.link = "logs/x.log";
+    report.rows.push_back({"failed", {logged, image}});
+    const std::string page = html_report_text(report);
+    EXPECT_NE(page.find("<title>T &lt;1&gt;</title>"), std::string::npos);
+    EXPECT_NE(page.find("<p>1 &amp; 2</p>"), std::string::npos);
+    EXPECT_NE(
+        page.find(
+            "<tr class=\"failed\"><td><a href=\"logs/x.log\">failed &lt;x&gt;</a>"
+            "</td><td><a href=\"images/a&quot;b.png\"><img src=\"images/a&quot;b.png\""),
+        std::string::npos)
+        << page;
+    EXPECT_NE(page.find("document.body.dataset.imagesLoaded"), std::string::npos);
+    EXPECT_NE(page.find("document.body.dataset.rows"), std::string::npos);
+    EXPECT_EQ(page.find("http"), std::string::npos);  // nothing from the network
+    const fs::path path = scratch() / "report.html";
+    write_html_report(report, path.string());
+    std::ifstream in(path);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), page);
+    EXPECT_THROW(write_html_report(report, (scratch() / "no/such/dir/r.html").string()),
+                 HtmlWriteError);
+    EXPECT_FALSE(fs::exists(scratch() / "no"));
 }
 
 }  // namespace
