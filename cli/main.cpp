@@ -105,6 +105,10 @@ int render_main(const std::vector<std::string>& args) {
                    "black boxes in running workers, host:port,...")
         ->delimiter(',');
     app.add_option("--token", o.token, "job token of the running --workers");
+    bool no_recover = false;
+    app.add_flag("--no-recover", no_recover,
+                 "a worker process that dies stops the render (default: its work goes to "
+                 "the other workers)");
     std::vector<std::string> pov, rest{"povwall render"};
     for (const auto& a : args) {
         if (looks_like_pov_switch(a) || looks_like_ini_file(a))
@@ -128,6 +132,7 @@ int render_main(const std::vector<std::string>& args) {
             throw UsageError("unknown switch '" + s + "'");
     }
     if (!scene.empty()) o.scene = scene;
+    o.recover = !no_recover;
     if (max_trace_level) o.max_trace_level = max_trace_level;
     if (adc_bailout) o.adc_bailout = adc_bailout;
     if (frame_values.size() == 7) {

@@ -66,6 +66,9 @@ struct RenderOptions {
     // Black boxes in running workers over TCP (--procs starts local ones).
     std::vector<std::string> workers;  // "host:port"
     std::string token;                 // job token the workers were started with
+    // A lost worker process (--procs) or tile worker: its work goes to the others (true)
+    // or the render stops with it named (false, --no-recover).
+    bool recover = true;
 };
 
 // Applies one POV-Ray switch (+W320, -A, +Ldir, Declare=X=1, ...) to `o`.

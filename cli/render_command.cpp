@@ -244,6 +244,7 @@ int run_render(RenderOptions o) {
             tcp.procs = o.workers.empty() ? o.procs : 0;
             tcp.workers = o.workers;
             tcp.token = o.token;
+            tcp.recover = o.recover;
             tcp.worker_binary = std::filesystem::read_symlink("/proc/self/exe").string();
             try {
                 image = distrib::render_tcp(scene, source, o.render, space, tcp,
@@ -268,6 +269,7 @@ int run_render(RenderOptions o) {
         distrib::ScreenOptions screen;
         screen.workers = dplan.procs;
         screen.worker_command = tile_worker_command(o);
+        screen.recover = o.recover;
         distrib::ScreenStats screen_stats;
         try {
             image = distrib::render_screen(o.render, screen, &screen_stats);

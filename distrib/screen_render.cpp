@@ -10,6 +10,8 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <condition_variable>
+#include <cstdio>
 #include <cstring>
 #include <mutex>
 #include <thread>
@@ -93,6 +95,66 @@ Worker spawn_worker(const std::vector<std::string>& command) {
     return w;
 }
 
+// Tiles handed out to the worker threads. A tile whose worker died goes back to the pool
+// for another worker; a thread with nothing to take waits while tiles are still in other
+// workers' hands, since one of those may come back.
+class TilePool {
+  public:
+    explicit TilePool(int tiles) : tiles_(tiles) {}
+
+    // The next tile, or -1 when every tile is done or the render stopped.
+    int take() {
+        std::unique_lock<std::mutex> lock(mutex_);
+        for (;;) {
+            if (stopped_) return -1;
+            if (!returned_.empty()) {
+                const int t = returned_.back();
+                returned_.pop_back();
+                ++in_flight_;
+                return t;
+            }
+            if (next_ < tiles_) {
+                ++in_flight_;
+                return next_++;
+            }
+            if (in_flight_ == 0) return -1;
+            changed_.wait(lock);
+        }
+    }
+    void done() {
+        update([&] { --in_flight_; });
+    }
+    void give_back(int tile) {
+        update([&] {
+            --in_flight_;
+            returned_.push_back(tile);
+        });
+    }
+    void stop() {
+        update([&] { stopped_ = true; });
+    }
+    bool all_done() {
+        std::lock_guard<std::mutex> lock(mutex_);
+        return !stopped_ && next_ == tiles_ && returned_.empty() && in_flight_ == 0;
+    }
+
+  private:
+    template <class F>
+    void update(F&& f) {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            f();
+        }
+        changed_.notify_all();
+    }
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    const int tiles_;
+    int next_ = 0, in_flight_ = 0;
+    std::vector<int> returned_;
+    bool stopped_ = false;
+};
+
 }  // namespace
 
 Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& options,
@@ -127,8 +189,9 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
     Image image(W, H);
     if (settings.progress)
         settings.progress->pixels_total += uint64_t(c1 - c0) * (r1 - r0);
-    std::atomic<int> next_tile{0};
-    std::atomic<bool> failed{!error.empty()};
+    TilePool pool(tiles);
+    if (!error.empty()) pool.stop();
+    std::vector<std::string> lost;  // workers whose tiles went to the others
     std::mutex mutex;
     ScreenStats local;
     local.tiles = tiles;
@@ -139,9 +202,8 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
         TileReply ready;
         bool ok = read_all(w.from, &ready, sizeof ready) && ready.magic == kReplyMagic;
         uint64_t counts[4] = {0, 0, 0, 0};
-        while (ok && !failed.load()) {
-            int t = next_tile.fetch_add(1);
-            if (t >= tiles) break;
+        int t = -1;
+        while (ok && (t = pool.take()) >= 0) {
             TileRequest rq;
             rq.x0 = c0 + (t % tiles_x) * T;
             rq.y0 = r0 + (t / tiles_x) * T;
@@ -152,11 +214,18 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
                  read_all(w.from, &reply, sizeof reply) && reply.magic == kReplyMagic &&
                  reply.x0 == rq.x0 && reply.y0 == rq.y0 && reply.x1 == rq.x1 &&
                  reply.y1 == rq.y1;
-            if (!ok) break;
             const int tw = rq.x1 - rq.x0;
-            pixels.resize(size_t(tw) * (rq.y1 - rq.y0) * 4);
-            ok = read_all(w.from, pixels.data(), pixels.size() * sizeof(float));
-            if (!ok) break;
+            if (ok) {
+                pixels.resize(size_t(tw) * (rq.y1 - rq.y0) * 4);
+                ok = read_all(w.from, pixels.data(), pixels.size() * sizeof(float));
+            }
+            if (!ok) {
+                if (options.recover)
+                    pool.give_back(t);
+                else
+                    pool.stop();
+                break;
+            }
             for (int y = rq.y0; y < rq.y1; ++y) {
                 std::memcpy(image.pixel(rq.x0, y), &pixels[size_t(y - rq.y0) * tw * 4],
                             size_t(tw) * 4 * sizeof(float));
@@ -173,6 +242,7 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
             counts[2] = reply.refracted;
             counts[3] = reply.shadow;
             ++local.tiles_per_worker[wi];
+            pool.done();
         }
         if (ok) {
             TileRequest stop;
@@ -185,23 +255,37 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
         local.reflected += counts[1];
         local.refracted += counts[2];
         local.shadow += counts[3];
-        if (!ok && error.empty()) {
-            failed = true;
-            error = "screen worker " + std::to_string(wi + 1) + " (pid " +
-                    std::to_string(w.pid) + ") stopped answering";
+        if (!ok) {
+            const std::string who = "screen worker " + std::to_string(wi + 1) + " (pid " +
+                                    std::to_string(w.pid) + ") stopped answering";
+            if (options.recover)
+                lost.push_back(who);
+            else if (error.empty())
+                error = who;
         }
     };
     std::vector<std::thread> threads;
     for (size_t i = 0; i < workers.size(); ++i) threads.emplace_back(serve, i);
     for (auto& t : threads) t.join();
+    // Every worker that could still render is out of tiles: what is left had nobody.
+    if (error.empty() && !pool.all_done())
+        error = "every screen worker stopped answering";
     for (size_t i = 0; i < workers.size(); ++i) {
         // Every tile is in (or the job failed): a worker gets 10 s to exit on its own.
         const int status = wait_child(workers[i].pid, 10.0);
         const bool clean = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-        if (!clean && error.find("(pid " + std::to_string(workers[i].pid) + ")") !=
-                          std::string::npos) {
+        const std::string pid = "(pid " + std::to_string(workers[i].pid) + ")";
+        if (!clean && error.find(pid) != std::string::npos)
             error += ": " + describe_exit_status(status);
+        for (std::string& l : lost) {
+            if (!clean && l.find(pid) != std::string::npos)
+                l += " (" + describe_exit_status(status) + ")";
         }
+    }
+    if (error.empty()) {
+        for (const std::string& l : lost)
+            std::fprintf(stderr, "povwall: %s: its tiles went to the other workers\n",
+                         l.c_str());
     }
     sigaction(SIGPIPE, &previous, nullptr);
     if (!error.empty()) throw ScreenError(error);

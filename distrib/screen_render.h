@@ -22,6 +22,8 @@ struct ScreenOptions {
     std::vector<std::string> worker_command;
     int workers = 2;
     int tile = 32;  // tile side in pixels
+    // A worker that dies: its tile goes to the others (true) or the render stops (false).
+    bool recover = true;
 };
 
 struct ScreenStats {

@@ -44,11 +44,20 @@ struct TcpOptions {
     std::string worker_binary;         // the povwall binary to start (procs > 0)
     double heartbeat_timeout =
         4.0;  // seconds without a message: dead (checked every 0.25 s)
+    // A local worker (procs > 1) that dies, disconnects or goes silent: its boxes are
+    // given to the remaining worker processes and the frame is traced again, so the image
+    // is the one an undisturbed render gives. Off: the render stops with the worker
+    // named.
+    bool recover = true;
 };
 
 // A worker died, disconnected, went silent or refused the job; what() names it.
 struct DistribError : std::runtime_error {
     using std::runtime_error::runtime_error;
+};
+// A worker was lost (died, disconnected, went silent), as opposed to a job it refused.
+struct WorkerLost : DistribError {
+    using DistribError::DistribError;
 };
 
 Image render_tcp(const Scene& scene, const SceneSource& source,

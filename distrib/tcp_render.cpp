@@ -795,7 +795,10 @@ class Coordinator {
         box_stats_ = emitter_.box_stats();
         watch();
         io_.run();
-        if (failed_) throw DistribError(error_);
+        if (failed_) {
+            if (lost_) throw WorkerLost(error_);
+            throw DistribError(error_);
+        }
         Image image =
             image_from_sums(sums_, settings_.width, settings_.height, settings_.alpha);
         if (stats) {
@@ -832,9 +835,11 @@ class Coordinator {
                ")";
     }
 
-    void fail(int i, const std::string& why) {
+    // `lost`: the worker is gone (a job it refused is not a loss another try could mend).
+    void fail(int i, const std::string& why, bool lost = true) {
         if (failed_ || finished_all_) return;
         failed_ = true;
+        lost_ = lost;
         error_ = describe(i) + ": " + why;
         io_.stop();
     }
@@ -877,7 +882,7 @@ class Coordinator {
         json j = parse_control(f);
         const std::string type = j.is_object() ? j.value("type", "") : "";
         if (type == "error") {
-            return fail(i, j.value("message", "error"));
+            return fail(i, j.value("message", "error"), false);
         } else if (type == "ready") {
             auto mine = j.at("boxes").get<std::vector<int>>();
             auto counts = j.at("primitives").get<std::vector<size_t>>();
@@ -1000,7 +1005,7 @@ class Coordinator {
     uint64_t created_ = 0;
     int next_pixel_ = 0;
     long wave_seq_ = 0, wave_pending_ = -1;
-    bool failed_ = false, finished_all_ = false, started_ = false;
+    bool failed_ = false, lost_ = false, finished_all_ = false, started_ = false;
     std::string error_;
 };
 
@@ -1016,13 +1021,25 @@ std::vector<uint8_t> encode_control_frame(const std::string& text) {
 Image render_tcp(const Scene& scene, const SceneSource& source,
                  const trace::RenderSettings& settings, const SpaceOptions& options,
                  const TcpOptions& tcp, SpaceStats* stats) {
-    Coordinator c(scene, source, settings, options, tcp);
-    try {
-        return c.run(stats);
-    } catch (const DistribError&) {
-        throw;
-    } catch (const std::exception& e) {
-        throw DistribError(e.what());
+    TcpOptions attempt = tcp;
+    for (;;) {
+        try {
+            Coordinator c(scene, source, settings, options, attempt);
+            return c.run(stats);
+        } catch (const WorkerLost& e) {
+            // Only processes this render started can be replaced; running --workers are
+            // someone else's.
+            if (!attempt.recover || attempt.procs <= 1 || !attempt.workers.empty()) throw;
+            attempt.procs -= 1;
+            std::fprintf(stderr,
+                         "povwall: %s: its boxes went to the other workers; the frame is "
+                         "traced again on %d worker process%s\n",
+                         e.what(), attempt.procs, attempt.procs == 1 ? "" : "es");
+        } catch (const DistribError&) {
+            throw;
+        } catch (const std::exception& e) {
+            throw DistribError(e.what());
+        }
     }
 }
 

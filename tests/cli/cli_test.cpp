@@ -474,8 +474,9 @@ TEST(Cli, DeadScreenWorkerIsNamedAndNoImageIsWritten) {
     fs::path scene = write_scene("screen2.pov", kScreenScene);
     fs::path out = scratch() / "dead.png";
     setenv("POVWALL_FAULT_WORKER_EXIT_AFTER", "1", 1);
-    RunResult r = run("render " + scene.string() +
-                      " -W 70 -H 50 -q --mode screen --procs 2 -o " + out.string());
+    RunResult r =
+        run("render " + scene.string() +
+            " -W 70 -H 50 -q --mode screen --procs 2 --no-recover -o " + out.string());
     unsetenv("POVWALL_FAULT_WORKER_EXIT_AFTER");
     EXPECT_EQ(r.code, 2);
     std::smatch m;
@@ -589,10 +590,11 @@ TEST(Cli, InterruptedBatchResumesToAllFramesEachAsRenderedAlone) {
     // a few frames are written, then resume.
     const std::string batch =
         std::string(POVWALL_BINARY) + " batch " + (dir / "jobs.txt").string();
-    std::string cmd =
-        "setsid " + batch + " >" + (dir / "out1").string() + " 2>" +
-        (dir / "err1").string() + " & pid=$!; while [ $(ls " + (dir / "run").string() +
-        " | grep -c png) -lt 5 ]; do sleep 0.02; done; /bin/kill -s INT -- -$pid; wait $pid";
+    std::string cmd = "setsid " + batch + " >" + (dir / "out1").string() + " 2>" +
+                      (dir / "err1").string() + " & pid=$!; while [ $(ls " +
+                      (dir / "run").string() +
+                      " | grep -c png) -lt 5 ]; do sleep 0.02; done; /bin/kill -s INT -- "
+                      "-$pid; wait $pid";
     int status = std::system(("sh -c '" + cmd + "'").c_str());
     EXPECT_EQ(WEXITSTATUS(status), 130);
     EXPECT_NE(slurp_file(dir / "err1").find("povwall: batch interrupted"),
