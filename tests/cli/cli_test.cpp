@@ -13,40 +13,12 @@
 
 #include "core/image.h"
 #include "output/image_io.h"
+#include "tests/cli/run_povwall.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-struct RunResult {
-    int code;
-    std::string out, err;
-};
-
-fs::path scratch() {
-    fs::path d =
-        fs::temp_directory_path() / ("povwall-cli-test-" + std::to_string(getpid()));
-    fs::create_directories(d);
-    return d;
-}
-
-RunResult run(const std::string& args) {
-    fs::path d = scratch();
-    std::string cmd = std::string(POVWALL_BINARY) + " " + args + " >" +
-                      (d / "out").string() + " 2>" + (d / "err").string();
-    int status = std::system(cmd.c_str());
-    auto slurp = [](const fs::path& p) {
-        std::ifstream in(p);
-        return std::string(std::istreambuf_iterator<char>(in), {});
-    };
-    return {WEXITSTATUS(status), slurp(d / "out"), slurp(d / "err")};
-}
-
-fs::path write_scene(const std::string& name, const std::string& text) {
-    fs::path p = scratch() / name;
-    std::ofstream(p) << text;
-    return p;
-}
+using namespace povwall_test;
 
 TEST(Cli, SyntaxErrorIsLocatedExitsTwoAndWritesNothing) {
     fs::path scene = write_scene("bad.pov",

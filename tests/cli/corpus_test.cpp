@@ -12,18 +12,16 @@
 #include <regex>
 #include <string>
 
+#include "tests/cli/run_povwall.h"
+
 namespace {
 
 namespace fs = std::filesystem;
+using povwall_test::slurp;
 
 fs::path work_dir() {
     return fs::temp_directory_path() /
            ("povwall-corpus-test-" + std::to_string(getpid()));
-}
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 struct RunResult {
