@@ -681,7 +681,7 @@ LocalWorker spawn_worker(const std::string& binary, const std::string& token,
     if (!got || std::strncmp(line, prefix, std::strlen(prefix)) != 0) {
         kill(pid, SIGKILL);
         waitpid(pid, nullptr, 0);
-        throw DistribError("worker process " + binary + " did not start");
+        throw WorkerLost("worker process " + binary + " did not start");
     }
     std::string address = line + std::strlen(prefix);
     while (!address.empty() && (address.back() == '\n' || address.back() == '\r'))
@@ -776,8 +776,8 @@ class Coordinator {
             socket.connect(resolve(io_, w.address), ec);
             if (ec) {
                 failed_ = true;
-                throw DistribError("cannot connect to worker " + std::to_string(i) +
-                                   " (" + w.address + "): " + ec.message());
+                throw WorkerLost("cannot connect to worker " + std::to_string(i) + " (" +
+                                 w.address + "): " + ec.message());
             }
             w.conn = std::make_shared<Connection>(std::move(socket), w.address);
             w.conn->on_frame = [this, i](Frame& f) { from_worker(i, f); };
