@@ -63,7 +63,7 @@ std::vector<size_t> pareto_front(const std::vector<PlotPoint>& points) {
 
 std::string error_time_svg(const std::vector<PlotPoint>& points, const std::string& title,
                            double rmse_floor) {
-    const double W = 720, H = 480, left = 70, right = 190, top = 40, bottom = 50;
+    const double W = 760, H = 480, left = 70, right = 230, top = 40, bottom = 50;
     const double pw = W - left - right, ph = H - top - bottom;
     double tmax = 0;
     for (const auto& p : points) tmax = std::max(tmax, p.seconds);
@@ -106,6 +106,23 @@ std::string error_time_svg(const std::vector<PlotPoint>& points, const std::stri
          "points=\"";
     for (size_t i : front) o << X(points[i].seconds) << "," << Y(points[i].rmse) << " ";
     o << "\"/>\n";
+    // Each point carries its number; the key on the right names the settings (names
+    // beside the points would overlap where settings have nearly equal time and error).
+    // A number moves right while it would overlap one already placed.
+    std::vector<std::pair<double, double>> placed;
+    auto number_x = [&](double x, double y) {
+        double nx = x + 6;
+        for (int tries = 0; tries < 6; ++tries) {
+            const bool hit =
+                std::any_of(placed.begin(), placed.end(), [&](const auto& q) {
+                    return std::fabs(q.first - nx) < 13 && std::fabs(q.second - y) < 11;
+                });
+            if (!hit) break;
+            nx += 13;
+        }
+        placed.emplace_back(nx, y);
+        return nx;
+    };
     for (size_t i = 0; i < points.size(); ++i) {
         const PlotPoint& p = points[i];
         const double x = X(p.seconds), y = Y(p.rmse);
@@ -118,8 +135,8 @@ std::string error_time_svg(const std::vector<PlotPoint>& points, const std::stri
               << "\" cx=\"" << x << "\" cy=\"" << y << "\" r=\"4\" fill=\""
               << (on_front ? "#2a7" : "#36c") << "\"/>\n";
         }
-        o << "<text x=\"" << x + 7 << "\" y=\"" << y - 5 << "\" fill=\"#444\">"
-          << escape_xml(p.label) << "</text>\n";
+        o << "<text x=\"" << number_x(x, y) << "\" y=\"" << y - 4
+          << "\" font-size=\"10\" fill=\"#444\">" << i + 1 << "</text>\n";
     }
     // Legend.
     const double lx = left + pw + 16;
@@ -132,6 +149,10 @@ std::string error_time_svg(const std::vector<PlotPoint>& points, const std::stri
       << "<rect x=\"" << lx - 5 << "\" y=\"" << top + 41
       << "\" width=\"10\" height=\"10\" fill=\"#d33\"/><text x=\"" << lx + 10 << "\" y=\""
       << top + 50 << "\">POV-Ray 3.7</text>\n";
+    for (size_t i = 0; i < points.size(); ++i) {
+        o << "<text x=\"" << lx - 5 << "\" y=\"" << top + 80 + 14 * double(i) << "\">"
+          << i + 1 << "  " << escape_xml(points[i].label) << "</text>\n";
+    }
     o << "</svg>\n";
     return o.str();
 }
