@@ -2,9 +2,12 @@
 
 #include <sys/wait.h>
 
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <thread>
 
 namespace povwall::distrib {
@@ -24,6 +27,19 @@ int wait_child(pid_t pid, double seconds) {
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
     return status;
+}
+
+void maybe_inject_worker_kill(const std::vector<pid_t>& pids) {
+    static std::atomic<bool> fired{false};
+    const char* spec = std::getenv("POVWALL_FAULT_KILL_WORKER");
+    int index = -1, ms = 0;
+    if (!spec || std::sscanf(spec, "%d,%d", &index, &ms) != 2) return;
+    if (index < 0 || size_t(index) >= pids.size() || fired.exchange(true)) return;
+    const pid_t victim = pids[size_t(index)];
+    std::thread([victim, ms] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(ms));
+        kill(victim, SIGKILL);
+    }).detach();
 }
 
 std::string describe_exit_status(int status) {

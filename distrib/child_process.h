@@ -6,6 +6,7 @@
 #include <sys/types.h>
 
 #include <string>
+#include <vector>
 
 namespace povwall::distrib {
 
@@ -15,5 +16,10 @@ int wait_child(pid_t pid, double seconds);
 
 // "exit code 3", "killed by signal 9".
 std::string describe_exit_status(int status);
+
+// Fault injection for the recovery tests: with POVWALL_FAULT_KILL_WORKER="I,MS" in the
+// environment, worker I of `pids` (the worker processes just started) is SIGKILLed MS
+// milliseconds from now, once per process (a retry is not hit again).
+void maybe_inject_worker_kill(const std::vector<pid_t>& pids);
 
 }  // namespace povwall::distrib

@@ -183,6 +183,9 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
     try {
         for (int i = 0; i < n; ++i)
             workers.push_back(spawn_worker(options.worker_command));
+        std::vector<pid_t> pids;
+        for (const Worker& w : workers) pids.push_back(w.pid);
+        maybe_inject_worker_kill(pids);
     } catch (const ScreenError& e) {
         error = e.what();
     }

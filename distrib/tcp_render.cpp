@@ -732,6 +732,9 @@ class Coordinator {
                 local_.push_back(spawn_worker(tcp_.worker_binary, token, threads));
                 addresses.push_back(local_.back().address);
             }
+            std::vector<pid_t> pids;
+            for (const LocalWorker& l : local_) pids.push_back(l.pid);
+            maybe_inject_worker_kill(pids);
         }
         if (addresses.empty()) throw DistribError("no workers");
         emitter_.place_walls();
