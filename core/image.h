@@ -12,7 +12,8 @@ namespace povwall {
 
 struct Image {
     int width = 0, height = 0;
-    std::vector<float> rgba;  // row-major, top row first, 4 floats per pixel, alpha 1 = opaque
+    std::vector<float>
+        rgba;  // row-major, top row first, 4 floats per pixel, alpha 1 = opaque
 
     Image() = default;
     Image(int w, int h) : width(w), height(h), rgba(size_t(w) * size_t(h) * 4, 0.0f) {}
@@ -25,10 +26,10 @@ struct OutputEncoding {
     // false: legacy scene (#version < 3.7 and no assumed_gamma): values written raw.
     bool gamma_handling = true;
     float working_gamma = 1.0f;  // assumed_gamma
-    bool file_srgb = true;       // File_Gamma sRGB (POV-Ray's Unix default); else file_gamma
+    bool file_srgb = true;  // File_Gamma sRGB (POV-Ray's Unix default); else file_gamma
     float file_gamma = 2.2f;
-    int bits = 8;                // 8 or 16 per channel
-    bool alpha = false;          // +UA: write RGBA (non-premultiplied)
+    int bits = 8;        // 8 or 16 per channel
+    bool alpha = false;  // +UA: write RGBA (non-premultiplied)
 };
 
 // An image file's pixels as stored (encoded values scaled to 0..1, not decoded) and what
@@ -36,7 +37,8 @@ struct OutputEncoding {
 struct StoredImage {
     Image pixels;  // RGBA; files without alpha have alpha 1
     bool has_alpha = false;
-    std::string format;  // "png", "targa", "pnm", "jpeg", "gif", "bmp", "tiff", "openexr", "hdr"
+    std::string
+        format;  // "png", "targa", "pnm", "jpeg", "gif", "bmp", "tiff", "openexr", "hdr"
     // Encoding gamma the file declares (PNG gAMA chunk), as a decoding exponent; 0: none
     // (PNG without gAMA: sRGB as POV-Ray assumes).
     float declared_gamma = 0;

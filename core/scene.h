@@ -310,8 +310,15 @@ struct Light {
 
 struct Camera {
     enum class Kind : uint8_t {
-        Perspective, Orthographic, Fisheye, UltraWideAngle, Panoramic,
-        Cylinder1, Cylinder2, Cylinder3, Cylinder4  // `cylinder N`
+        Perspective,
+        Orthographic,
+        Fisheye,
+        UltraWideAngle,
+        Panoramic,
+        Cylinder1,
+        Cylinder2,
+        Cylinder3,
+        Cylinder4  // `cylinder N`
     } kind = Kind::Perspective;
     // Final vectors after look_at, angle, sky and transforms have been applied.
     Point3 location{0, 0, 0};

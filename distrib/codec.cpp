@@ -9,14 +9,36 @@ namespace {
 struct Writer {
     std::vector<uint8_t>& out;
     void u8(uint8_t v) { out.push_back(v); }
-    void u16(uint16_t v) { for (int i = 0; i < 2; ++i) out.push_back(uint8_t(v >> (8 * i))); }
-    void u32(uint32_t v) { for (int i = 0; i < 4; ++i) out.push_back(uint8_t(v >> (8 * i))); }
-    void u64(uint64_t v) { for (int i = 0; i < 8; ++i) out.push_back(uint8_t(v >> (8 * i))); }
+    void u16(uint16_t v) {
+        for (int i = 0; i < 2; ++i) out.push_back(uint8_t(v >> (8 * i)));
+    }
+    void u32(uint32_t v) {
+        for (int i = 0; i < 4; ++i) out.push_back(uint8_t(v >> (8 * i)));
+    }
+    void u64(uint64_t v) {
+        for (int i = 0; i < 8; ++i) out.push_back(uint8_t(v >> (8 * i)));
+    }
     void i32(int32_t v) { u32(uint32_t(v)); }
-    void f32(float v) { uint32_t b; std::memcpy(&b, &v, 4); u32(b); }
-    void f64(double v) { uint64_t b; std::memcpy(&b, &v, 8); u64(b); }
-    void vec(const Vector3& v) { f64(v.x); f64(v.y); f64(v.z); }
-    void rgb(const Rgb& c) { f32(c.r); f32(c.g); f32(c.b); }
+    void f32(float v) {
+        uint32_t b;
+        std::memcpy(&b, &v, 4);
+        u32(b);
+    }
+    void f64(double v) {
+        uint64_t b;
+        std::memcpy(&b, &v, 8);
+        u64(b);
+    }
+    void vec(const Vector3& v) {
+        f64(v.x);
+        f64(v.y);
+        f64(v.z);
+    }
+    void rgb(const Rgb& c) {
+        f32(c.r);
+        f32(c.g);
+        f32(c.b);
+    }
 };
 
 struct Reader {
@@ -32,10 +54,32 @@ struct Reader {
     uint32_t u32() { return uint32_t(le(4)); }
     uint64_t u64() { return le(8); }
     int32_t i32() { return int32_t(u32()); }
-    float f32() { uint32_t b = u32(); float v; std::memcpy(&v, &b, 4); return v; }
-    double f64() { uint64_t b = u64(); double v; std::memcpy(&v, &b, 8); return v; }
-    Vector3 vec() { Vector3 v; v.x = f64(); v.y = f64(); v.z = f64(); return v; }
-    Rgb rgb() { Rgb c; c.r = f32(); c.g = f32(); c.b = f32(); return c; }
+    float f32() {
+        uint32_t b = u32();
+        float v;
+        std::memcpy(&v, &b, 4);
+        return v;
+    }
+    double f64() {
+        uint64_t b = u64();
+        double v;
+        std::memcpy(&v, &b, 8);
+        return v;
+    }
+    Vector3 vec() {
+        Vector3 v;
+        v.x = f64();
+        v.y = f64();
+        v.z = f64();
+        return v;
+    }
+    Rgb rgb() {
+        Rgb c;
+        c.r = f32();
+        c.g = f32();
+        c.b = f32();
+        return c;
+    }
 };
 
 void write_ray(Writer& w, const RayMessage& r) {
@@ -162,7 +206,8 @@ DecodeStatus decode_frame(std::span<const uint8_t> bytes, Frame& frame) {
         if (bytes.size() < kHeaderSize + body) return DecodeStatus::NeedMore;
         frame.type = FrameType(type);
         frame.count = count;
-        frame.body.assign(bytes.begin() + kHeaderSize, bytes.begin() + kHeaderSize + body);
+        frame.body.assign(bytes.begin() + kHeaderSize,
+                          bytes.begin() + kHeaderSize + body);
         frame.consumed = kHeaderSize + body;
         return DecodeStatus::Complete;
     }

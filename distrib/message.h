@@ -2,7 +2,8 @@
 //
 // Pure data and a byte codec; no sockets here. A frame is a fixed 12-byte header
 //   magic u16 | type u8 | version u8 | body length u32 | count u32
-// followed by `count` fixed-size records, all little-endian. Rays are batched per destination.
+// followed by `count` fixed-size records, all little-endian. Rays are batched per
+// destination.
 #pragma once
 
 #include <cstddef>
@@ -17,7 +18,8 @@ namespace povwall::distrib {
 
 enum class RayKind : uint8_t { Camera, Reflected, Refracted, Shadow };
 
-// Enough interior nesting for real scenes (glass in water in glass); deeper stacks are refused.
+// Enough interior nesting for real scenes (glass in water in glass); deeper stacks are
+// refused.
 constexpr int kMaxInteriorDepth = 8;
 
 struct RayMessage {
@@ -25,18 +27,18 @@ struct RayMessage {
     uint64_t parent_id = 0;  // 0 for camera rays
     int32_t parent_box = -1;
     int32_t pixel_x = 0, pixel_y = 0;
-    int32_t light = -1;      // shadow rays: which light
+    int32_t light = -1;  // shadow rays: which light
     RayKind kind = RayKind::Camera;
     uint8_t depth = 0;       // trace level (1 for camera rays)
     uint8_t child_slot = 0;  // index among the parent's children
     uint8_t interior_depth = 0;
     int32_t interiors[kMaxInteriorDepth] = {};
-    // Origin as first emitted: never re-based at a wall, so POV-Ray's minimum-distance rules
-    // (distances measured from the true origin) still hold in the next box.
+    // Origin as first emitted: never re-based at a wall, so POV-Ray's minimum-distance
+    // rules (distances measured from the true origin) still hold in the next box.
     Point3 origin;
     Vector3 direction;
     Real t_min = 0, t_max = kInfinity;  // accepted hit range along the ray
-    float weight = 1;   // POV-Ray's adc weight for bailout decisions
+    float weight = 1;                   // POV-Ray's adc weight for bailout decisions
     Rgb contribution{1.0f};  // forward mode: factor from this ray's colour to the pixel
 };
 
@@ -44,14 +46,20 @@ struct ResultMessage {
     uint64_t parent_id = 0;
     int32_t parent_box = -1;
     uint8_t child_slot = 0;
-    Rgb colour;        // traced colour, or shadow transmittance
-    float alpha = 1;   // camera rays: coverage for +UA output
+    Rgb colour;       // traced colour, or shadow transmittance
+    float alpha = 1;  // camera rays: coverage for +UA output
     Real distance = kInfinity;
 };
 
-// Rays/Results: fixed records (RayMessage, ResultMessage). Pixels, Control (JSON text) and
-// Items (black-box work items, distrib/tcp_render.cpp) carry an opaque body.
-enum class FrameType : uint8_t { Rays = 1, Results = 2, Pixels = 3, Control = 4, Items = 5 };
+// Rays/Results: fixed records (RayMessage, ResultMessage). Pixels, Control (JSON text)
+// and Items (black-box work items, distrib/tcp_render.cpp) carry an opaque body.
+enum class FrameType : uint8_t {
+    Rays = 1,
+    Results = 2,
+    Pixels = 3,
+    Control = 4,
+    Items = 5
+};
 constexpr uint16_t kFrameMagic = 0x5057;  // "PW"
 constexpr uint8_t kProtocolVersion = 1;
 constexpr size_t kHeaderSize = 12;
@@ -71,7 +79,7 @@ struct Frame {
     std::vector<ResultMessage> results;
     uint32_t count = 0;
     std::vector<uint8_t> body;  // Pixels, Control, Items
-    size_t consumed = 0;  // bytes of input used by this frame
+    size_t consumed = 0;        // bytes of input used by this frame
 };
 // Decodes one frame from the start of `bytes`.
 DecodeStatus decode_frame(std::span<const uint8_t> bytes, Frame& frame);

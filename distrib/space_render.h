@@ -1,10 +1,13 @@
-// Space subdivision: virtual walls cut the scene into black boxes; each box holds only the
-// objects that overlap it, traces the rays crossing its region, and forwards rays that leave
-// it to the neighbouring box. Shading is trace/shading.h's spawn_children/combine_children.
+// Space subdivision: virtual walls cut the scene into black boxes; each box holds only
+// the objects that overlap it, traces the rays crossing its region, and forwards rays
+// that leave it to the neighbouring box. Shading is trace/shading.h's
+// spawn_children/combine_children.
 //
 // Two ways to return colours, chosen per scene (see RenderPlan):
-//  - forward contributions: each ray carries the factor from its colour to the pixel, so a
-//    hit adds its local colour straight to the pixel and no parent waits (linear shading);
+//  - forward contributions: each ray carries the factor from its colour to the pixel, so
+//  a
+//    hit adds its local colour straight to the pixel and no parent waits (linear
+//    shading);
 //  - parent tracking: a hit parks its shading record in the box's ParentTable until the
 //    children's results come back (needed for reflection exponents).
 #pragma once

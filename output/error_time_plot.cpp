@@ -6,31 +6,10 @@
 #include <numeric>
 #include <sstream>
 
+#include "output/html_report.h"
+
 namespace povwall::output {
 namespace {
-
-std::string escape_xml(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += c;
-        }
-    }
-    return out;
-}
 
 std::string fmt(const char* f, double v) {
     char buf[64];
@@ -80,7 +59,7 @@ std::string error_time_svg(const std::vector<PlotPoint>& points, const std::stri
     o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
       << "\" font-family=\"sans-serif\" font-size=\"11\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << left << "\" y=\"22\" font-size=\"14\">" << escape_xml(title)
+      << "<text x=\"" << left << "\" y=\"22\" font-size=\"14\">" << html_escape(title)
       << "</text>\n";
     // Axes, decades of rmse, five time ticks.
     o << "<g stroke=\"#888\" fill=\"none\"><rect x=\"" << left << "\" y=\"" << top
@@ -151,7 +130,7 @@ std::string error_time_svg(const std::vector<PlotPoint>& points, const std::stri
       << top + 50 << "\">POV-Ray 3.7</text>\n";
     for (size_t i = 0; i < points.size(); ++i) {
         o << "<text x=\"" << lx - 5 << "\" y=\"" << top + 80 + 14 * double(i) << "\">"
-          << i + 1 << "  " << escape_xml(points[i].label) << "</text>\n";
+          << i + 1 << "  " << html_escape(points[i].label) << "</text>\n";
     }
     o << "</svg>\n";
     return o.str();

@@ -53,7 +53,8 @@ const ImageBackend* load_backend(std::string& error) {
     ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
     if (n > 0) {
         exe[n] = 0;
-        candidates.push_back((fs::path(exe).parent_path() / POVWALL_IMAGE_BACKEND_NAME).string());
+        candidates.push_back(
+            (fs::path(exe).parent_path() / POVWALL_IMAGE_BACKEND_NAME).string());
     }
     candidates.push_back(POVWALL_IMAGE_BACKEND_PATH);
     for (const std::string& path : candidates) {
@@ -158,9 +159,10 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
                                          : PixelType::UInt8;
     // OIIO picks the format from the file name unless told: the temporary keeps the
     // extension.
-    std::string err = io.write(tmp.string(), format.empty() ? std::string() : ext.substr(1), W,
-                               H, channels, type, data, !linear_format,
-                               !linear_format && enc.gamma_handling && enc.file_srgb);
+    std::string err =
+        io.write(tmp.string(), format.empty() ? std::string() : ext.substr(1), W, H,
+                 channels, type, data, !linear_format,
+                 !linear_format && enc.gamma_handling && enc.file_srgb);
     std::error_code ec;
     if (!err.empty()) {
         fs::remove(tmp, ec);

@@ -626,8 +626,8 @@ Value ExpressionParser::word(const Token& t) {
         in_.unget(t);
         return in_.parse_colour();
     }
-    static const char* const kUnsupportedFunctions[] = {
-        "trace", "inside", "eval_pigment", "now", "datetime"};
+    static const char* const kUnsupportedFunctions[] = {"trace", "inside", "eval_pigment",
+                                                        "now", "datetime"};
     for (const char* f : kUnsupportedFunctions) {
         if (w == f) in_.unsupported(t, w);
     }

@@ -23,9 +23,11 @@ void transform_pattern(PatternSpec& p, const Transform& t) {
     p.transform = p.transform.then(t);
 }
 
-// Pigment and normal map/list entries are evaluated at the outer pattern's point (as POV-Ray
-// does), so a transform moves only the outer pattern.
-void transform_pigment(Pigment& p, const Transform& t) { transform_pattern(p.pattern, t); }
+// Pigment and normal map/list entries are evaluated at the outer pattern's point (as
+// POV-Ray does), so a transform moves only the outer pattern.
+void transform_pigment(Pigment& p, const Transform& t) {
+    transform_pattern(p.pattern, t);
+}
 
 void transform_normal(Normal& n, const Transform& t) { transform_pattern(n.pattern, t); }
 
@@ -36,7 +38,8 @@ void transform_textures(LayeredTexture& layers, const Transform& t) {
         transform_pigment(tex.pigment, t);
         if (tex.normal) transform_normal(*tex.normal, t);
         if (tex.map_pattern) transform_pattern(*tex.map_pattern, t);
-        // Texture map entries are whole textures evaluated at the world point: they move too.
+        // Texture map entries are whole textures evaluated at the world point: they move
+        // too.
         for (auto& entry : tex.map) transform_textures(entry, t);
     }
 }
@@ -74,8 +77,9 @@ bool Interpreter::try_transform(const Token& t, Transform& out) {
         Token at = peek();
         Vector3 s = parse_vector();
         for (int i = 0; i < 3; ++i) {
-            // POV-Ray warns and substitutes 1.0; a scene that scales by 0 almost surely has a
-            // bug, and any stand-in value makes a singular (or wildly stretched) inverse.
+            // POV-Ray warns and substitutes 1.0; a scene that scales by 0 almost surely
+            // has a bug, and any stand-in value makes a singular (or wildly stretched)
+            // inverse.
             if (s[i] == 0)
                 error(at, std::string("singular transform: scale by 0 in ") + "xyz"[i] +
                               " (the object would be flattened)");
@@ -89,7 +93,8 @@ bool Interpreter::try_transform(const Token& t, Transform& out) {
             m[i] = parse_numeric(true).c[0];
         }
         expect_punct('>', "after the 12 matrix values");
-        const Real det = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) +
+        const Real det = m[0] * (m[4] * m[8] - m[5] * m[7]) -
+                         m[1] * (m[3] * m[8] - m[5] * m[6]) +
                          m[2] * (m[3] * m[7] - m[4] * m[6]);
         if (det == 0) error(t, "singular transform: matrix has determinant 0");
         out = Transform::from_pov_matrix(m);
@@ -353,7 +358,8 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 if (i) accept_punct(',');
                 tri.p[i] = parse_vector();
             }
-            if (degenerate_corners(tri.p)) warn(t, "degenerate triangle, never hit; please remove");
+            if (degenerate_corners(tri.p))
+                warn(t, "degenerate triangle, never hit; please remove");
             out.shape = tri;
         }
     } else if (w == "smooth_triangle") {
@@ -366,7 +372,8 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 accept_punct(',');
                 tri.n[i] = parse_vector();
             }
-            if (degenerate_corners(tri.p)) warn(t, "degenerate triangle, never hit; please remove");
+            if (degenerate_corners(tri.p))
+                warn(t, "degenerate triangle, never hit; please remove");
             out.shape = tri;
         }
     } else if (w == "polygon") {

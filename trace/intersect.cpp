@@ -158,7 +158,8 @@ bool inside_cylinder(const Cylinder& c, const Point3& p) {
 }
 
 void intersect_cone(const Cone& c, const Point3& o, const Vector3& dir, Crossings& out) {
-    if (c.base_radius == 0 && c.cap_radius == 0) return;  // a line, as a zero-radius cylinder
+    if (c.base_radius == 0 && c.cap_radius == 0)
+        return;  // a line, as a zero-radius cylinder
     AxisFrame f = axis_of(c.base, c.cap);
     Real k = (c.cap_radius - c.base_radius) / f.len;
     Vector3 u = o - c.base;

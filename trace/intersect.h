@@ -50,8 +50,8 @@ void intersect_cone(const Cone& c, const Point3& o, const Vector3& dir, Crossing
 void intersect_disc(const Disc& d, const Point3& o, const Vector3& dir, Crossings& out);
 void intersect_triangle(const Point3 p[3], const Point3& o, const Vector3& dir,
                         Crossings& out);
-// POV-Ray's degenerate triangle: coincident or collinear corners (|edge x edge| < 1e-10). It
-// has no normal, so it is never hit.
+// POV-Ray's degenerate triangle: coincident or collinear corners (|edge x edge| < 1e-10).
+// It has no normal, so it is never hit.
 inline bool degenerate_triangle(const Point3 p[3]) {
     return length(cross(p[1] - p[0], p[2] - p[0])) < 1e-10;
 }

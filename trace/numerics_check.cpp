@@ -21,8 +21,8 @@ NumericsReport check_numerics(const Scene& scene, int width, int height) {
     rep.verdict.assign(size_t(width) * height, PixelVerdict::Agree);
     for (int py = 0; py < height; ++py) {
         for (int px = 0; px < width; ++px) {
-            const std::optional<Ray> camera = camera_ray(scene.camera, px + 0.5, py + 0.5,
-                                                         width, height);
+            const std::optional<Ray> camera =
+                camera_ray(scene.camera, px + 0.5, py + 0.5, width, height);
             if (!camera) continue;  // outside a fisheye's circle: no ray
             const Ray& ray = *camera;
             ++rep.rays;

@@ -1,8 +1,8 @@
 // Pieces shared by the pattern, pigment and normal evaluators (not a public interface).
 #pragma once
 
-#include "core/scene.h"
 #include "core/noise.h"
+#include "core/scene.h"
 #include "trace/pattern.h"
 
 namespace povwall::trace::detail {

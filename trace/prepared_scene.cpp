@@ -82,11 +82,12 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
             else if constexpr (std::is_same_v<T, Disc>)
                 intersect_disc(s, local.origin, dn, cs);
             else if constexpr (std::is_same_v<T, Triangle>) {
-                if (!degenerate_triangle(s.p)) intersect_triangle(s.p, local.origin, dn, cs);
+                if (!degenerate_triangle(s.p))
+                    intersect_triangle(s.p, local.origin, dn, cs);
             } else if constexpr (std::is_same_v<T, SmoothTriangle>) {
-                if (!degenerate_triangle(s.p)) intersect_triangle(s.p, local.origin, dn, cs);
-            }
-            else if constexpr (std::is_same_v<T, Polygon>)
+                if (!degenerate_triangle(s.p))
+                    intersect_triangle(s.p, local.origin, dn, cs);
+            } else if constexpr (std::is_same_v<T, Polygon>)
                 intersect_polygon(s, local.origin, dn, cs);
         },
         o.shape);
@@ -167,8 +168,9 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             for (size_t k = start; k < out.size(); ++k) out[k].normal = -out[k].normal;
         }
     } else if (std::holds_alternative<Mesh>(o.shape)) {
-        // Meshes are split into triangles at preparation; inside CSG they are surfaces, and
-        // solids for the other children's inside tests when they have an inside_vector.
+        // Meshes are split into triangles at preparation; inside CSG they are surfaces,
+        // and solids for the other children's inside tests when they have an
+        // inside_vector.
         const Mesh* m = std::get_if<Mesh>(&o.shape);
         if (m) {
             Ray local = o.transform.is_identity() ? ray : o.transform.inverse_ray(ray);
@@ -289,8 +291,8 @@ size_t count_leaves(const Object& o) {
     return n;
 }
 
-// A mesh is solid only with an inside_vector (as in POV-Ray): a point is inside when a ray
-// from it along that vector crosses the triangles an odd number of times.
+// A mesh is solid only with an inside_vector (as in POV-Ray): a point is inside when a
+// ray from it along that vector crosses the triangles an odd number of times.
 bool inside_mesh(const Mesh& m, const Point3& q) {
     if (!m.has_inside_vector || dot(m.inside_vector, m.inside_vector) == 0) return false;
     const Vector3 dir = normalize(m.inside_vector);
@@ -400,11 +402,11 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
             bounded_ids.push_back(id);
         }
     }
-    // Spheres first (their ids then index spheres_ directly in the hot loop), numbered along
-    // a Morton curve so that neighbours in space are neighbours in memory.
-    auto first_other = std::stable_partition(
-        bounded_ids.begin(), bounded_ids.end(),
-        [&](uint32_t id) { return kind_[id] == PrimKind::Sphere; });
+    // Spheres first (their ids then index spheres_ directly in the hot loop), numbered
+    // along a Morton curve so that neighbours in space are neighbours in memory.
+    auto first_other =
+        std::stable_partition(bounded_ids.begin(), bounded_ids.end(),
+                              [&](uint32_t id) { return kind_[id] == PrimKind::Sphere; });
     {
         std::vector<Bounds3> sphere_bounds;
         for (auto it = bounded_ids.begin(); it != first_other; ++it)

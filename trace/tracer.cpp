@@ -12,10 +12,17 @@ TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
     // A refused ray is black and opaque (POV-Ray's max_trace_level and adc_bailout rule).
     if (ray.depth > g.max_trace_level || ray.weight < g.adc_bailout) return {};
     switch (ray.use) {
-        case RayUse::Camera: ++counters_.camera; break;
-        case RayUse::Reflection: ++counters_.reflected; break;
-        case RayUse::Refraction: ++counters_.refracted; break;
-        case RayUse::Shadow: break;
+        case RayUse::Camera:
+            ++counters_.camera;
+            break;
+        case RayUse::Reflection:
+            ++counters_.reflected;
+            break;
+        case RayUse::Refraction:
+            ++counters_.refracted;
+            break;
+        case RayUse::Shadow:
+            break;
     }
     Hit hit;
     if (!scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_)) {
@@ -26,7 +33,8 @@ TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
         results_.resize(level + 1);
     }
     spawn_children(scene_, ray, hit, records_[level]);
-    // records_ may grow in the recursion below: index, don't hold references across calls.
+    // records_ may grow in the recursion below: index, don't hold references across
+    // calls.
     size_t n = records_[level].children.size();
     results_[level].resize(n);
     for (size_t i = 0; i < n; ++i) {

@@ -31,7 +31,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         Frame second;
         if (decode_frame(again, second) != DecodeStatus::Complete ||
             second.rays.size() != frame.rays.size() ||
-            second.results.size() != frame.results.size() || second.consumed != again.size())
+            second.results.size() != frame.results.size() ||
+            second.consumed != again.size())
             std::abort();
         bytes = bytes.subspan(frame.consumed);
     }

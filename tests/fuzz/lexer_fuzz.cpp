@@ -14,7 +14,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     SourceManager sm;
     int index;
     try {
-        index = sm.add("fuzz.pov", std::string(reinterpret_cast<const char*>(data), size));
+        index =
+            sm.add("fuzz.pov", std::string(reinterpret_cast<const char*>(data), size));
     } catch (const ParseError&) {
         return 0;
     }

@@ -10,7 +10,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     povwall::parser::ParseOptions options;
     // No include folders: a standard include would be re-parsed on every input, dividing
-    // the executions per second by hundreds (the seeds have their #include lines removed).
+    // the executions per second by hundreds (the seeds have their #include lines
+    // removed).
     options.messages = nullptr;  // #debug output is not under test
     try {
         povwall::parser::parse_scene_text(text, "fuzz.pov", options);

@@ -1,5 +1,4 @@
 #include "octree/octree.h"
-#include "octree/spatial_order.h"
 
 #include <gtest/gtest.h>
 
@@ -7,6 +6,7 @@
 #include <random>
 
 #include "octree/overlap.h"
+#include "octree/spatial_order.h"
 
 namespace povwall::octree {
 namespace {
@@ -513,8 +513,8 @@ TEST(MortonOrder, CornersInZOrderTiesStableInfiniteLast) {
     auto box = [](Real x, Real y, Real z) {
         return Bounds3{{x - 0.1, y - 0.1, z - 0.1}, {x + 0.1, y + 0.1, z + 0.1}};
     };
-    // Input: the 8 corners of a cube in reverse Z order, an unbounded plane, and a copy of
-    // corner (0,0,0) that must stay after the first one.
+    // Input: the 8 corners of a cube in reverse Z order, an unbounded plane, and a copy
+    // of corner (0,0,0) that must stay after the first one.
     std::vector<Bounds3> b;
     for (int i = 7; i >= 0; --i) b.push_back(box(i & 1, (i >> 1) & 1, (i >> 2) & 1));
     b.push_back(Bounds3::everything());

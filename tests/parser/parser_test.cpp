@@ -173,12 +173,14 @@ TEST(Camera, ProjectionKindsKeepTheirAngleAndCylinderNeedsATypeFrom1To4) {
     Scene f = parse("camera { fisheye angle 200 location <0, 0, -5> look_at 0 }");
     EXPECT_EQ(f.camera.kind, Camera::Kind::Fisheye);
     EXPECT_EQ(f.camera.angle, 200);
-    EXPECT_NEAR(f.camera.direction.z, 1.0, 1e-12);  // angle does not rescale direction here
+    EXPECT_NEAR(f.camera.direction.z, 1.0,
+                1e-12);  // angle does not rescale direction here
     EXPECT_EQ(parse("camera { panoramic }").camera.angle, 90);  // POV-Ray's default
     EXPECT_EQ(parse("camera { ultra_wide_angle }").camera.kind,
               Camera::Kind::UltraWideAngle);
     EXPECT_EQ(parse("camera { cylinder 1 }").camera.kind, Camera::Kind::Cylinder1);
-    EXPECT_EQ(parse("camera { cylinder 4 angle 30 }").camera.kind, Camera::Kind::Cylinder4);
+    EXPECT_EQ(parse("camera { cylinder 4 angle 30 }").camera.kind,
+              Camera::Kind::Cylinder4);
     EXPECT_EQ(error_of("camera { cylinder 5 angle 90 }"),
               "test.pov:1:19: error: cylinder camera type must be 1, 2, 3 or 4\n"
               "camera { cylinder 5 angle 90 }\n"
@@ -195,11 +197,13 @@ TEST(Degenerate, ExporterShapesAsPovRay) {
               "test.pov:1:1: error: degenerate cone, base point = cap point\n"
               "cone { 0, 0.5, 0, 0.3 }\n"
               "^~~~");
-    // Degenerate triangles are warned about (and never hit); zero radii and flat boxes parse.
+    // Degenerate triangles are warned about (and never hit); zero radii and flat boxes
+    // parse.
     std::string messages;
-    Scene s = parse("triangle { 0, 0, x }\nsmooth_triangle { 0, y, x, y, 2*x, y }\n"
-                    "cylinder { 0, y, 0 } box { 0, <1, 1, 0> } sphere { 0, 0 }",
-                    &messages);
+    Scene s = parse(
+        "triangle { 0, 0, x }\nsmooth_triangle { 0, y, x, y, 2*x, y }\n"
+        "cylinder { 0, y, 0 } box { 0, <1, 1, 0> } sphere { 0, 0 }",
+        &messages);
     EXPECT_EQ(s.objects.size(), 5u);
     EXPECT_EQ(messages,
               "test.pov:1:1: warning: degenerate triangle, never hit; please remove\n"
@@ -210,9 +214,10 @@ TEST(Degenerate, ExporterShapesAsPovRay) {
               "^~~~~~~~~~~~~~~\n");
     // In meshes they are dropped silently, as POV-Ray does.
     std::string quiet;
-    Scene m = parse("mesh { triangle { 0, 0, x } triangle { 0, x, y } }\n"
-                    "mesh2 { vertex_vectors { 3, 0, x, 2*x } face_indices { 1, <0, 1, 2> } }",
-                    &quiet);
+    Scene m = parse(
+        "mesh { triangle { 0, 0, x } triangle { 0, x, y } }\n"
+        "mesh2 { vertex_vectors { 3, 0, x, 2*x } face_indices { 1, <0, 1, 2> } }",
+        &quiet);
     EXPECT_EQ(std::get<Mesh>(m.objects[0].shape).faces.size(), 1u);
     EXPECT_EQ(std::get<Mesh>(m.objects[1].shape).faces.size(), 0u);
     EXPECT_EQ(quiet, "");
@@ -288,7 +293,8 @@ TEST(Errors, DeepMacroRecursionElidesMiddleNotes) {
         "  M()\n"
         "  ^\n";
     std::string expected =
-        "test.pov:2:3: error: macro 'M' nested too deeply (limit 1000): runaway recursion?\n"
+        "test.pov:2:3: error: macro 'M' nested too deeply (limit 1000): runaway "
+        "recursion?\n"
         "  M()\n"
         "  ^\n";
     for (int i = 0; i < 5; ++i) expected += inner;

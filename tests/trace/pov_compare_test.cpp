@@ -1,6 +1,6 @@
 // povwall's renderer against real POV-Ray 3.7 on scenes written twice: as .pov text for
-// povray and as a core::Scene built in C++ (independent of the parser). Thresholds are the
-// golden ones: rmse <= 0.01 and bad-pixel fraction <= 0.002 on the encoded values.
+// povray and as a core::Scene built in C++ (independent of the parser). Thresholds are
+// the golden ones: rmse <= 0.01 and bad-pixel fraction <= 0.002 on the encoded values.
 #include <gtest/gtest.h>
 
 #include "tests/trace/pov_image_reference.h"
@@ -40,15 +40,17 @@ Texture tex(Rgb c, Finish f = {}, float filter = 0, float transmit = 0) {
     return t;
 }
 
-void expect_matches(const std::string& name, const std::string& pov_body, const Scene& scene,
-                    const RenderSettings& settings = {}, const std::string& extra = "-A") {
+void expect_matches(const std::string& name, const std::string& pov_body,
+                    const Scene& scene, const RenderSettings& settings = {},
+                    const std::string& extra = "-A") {
     if (!test::povray_available()) GTEST_SKIP() << "povray not installed";
     RenderSettings rs = settings;
     rs.width = kW;
     rs.height = kH;
     rs.threads = 2;
     Image ours = render_scene(scene, rs);
-    test::PovImage pov = test::render_with_povray(name, kHeader + pov_body, kW, kH, extra);
+    test::PovImage pov =
+        test::render_with_povray(name, kHeader + pov_body, kW, kH, extra);
     ASSERT_EQ(pov.width, kW) << "povray failed on " << name;
     test::dump_ppm(ours, name);
     test::Diff d = test::compare(ours, pov);
@@ -72,10 +74,12 @@ TEST(PovCompare, LightingShadowsPhongSpecular) {
     sp.roughness = 0.02f;
     sp.diffuse = 0.7f;
     sp.brilliance = 2;
-    s.objects.push_back(object(Sphere{{1.8, -0.3, 1}, 0.7}, {}, {tex({0.2f, 0.4f, 0.9f}, sp)}));
-    s.objects.push_back(object(Box{{-0.5, -1, -0.5}, {0.5, 0.5, 0.5}},
-                               Transform::rotate({0, 30, 0}).then(Transform::translate({-2, 0, 1})),
-                               {tex({0.3f, 0.8f, 0.3f})}));
+    s.objects.push_back(
+        object(Sphere{{1.8, -0.3, 1}, 0.7}, {}, {tex({0.2f, 0.4f, 0.9f}, sp)}));
+    s.objects.push_back(
+        object(Box{{-0.5, -1, -0.5}, {0.5, 0.5, 0.5}},
+               Transform::rotate({0, 30, 0}).then(Transform::translate({-2, 0, 1})),
+               {tex({0.3f, 0.8f, 0.3f})}));
     s.lights.push_back(point_light({-5, 8, -6}));
     s.lights.push_back(point_light({6, 4, -3}, {0.4f, 0.4f, 0.5f}));
     expect_matches("lighting", R"(
@@ -102,12 +106,14 @@ TEST(PovCompare, ReflectionTraceLevelFalloffExponent) {
     s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {tex({0.5f, 0.5f, 0.5f}, fp)}));
     Finish f1;
     f1.reflection_min = f1.reflection_max = Rgb(0.7f);
-    s.objects.push_back(object(Sphere{{-1.1, 0, 0}, 1}, {}, {tex({0.2f, 0.2f, 0.2f}, f1)}));
+    s.objects.push_back(
+        object(Sphere{{-1.1, 0, 0}, 1}, {}, {tex({0.2f, 0.2f, 0.2f}, f1)}));
     Finish f2;
     f2.reflection_min = f2.reflection_max = Rgb(0.8f, 0.6f, 0.3f);
     f2.reflection_exponent = 0.7f;
     f2.phong = 1;
-    s.objects.push_back(object(Sphere{{1.1, 0, 0}, 1}, {}, {tex({0.9f, 0.1f, 0.1f}, f2)}));
+    s.objects.push_back(
+        object(Sphere{{1.1, 0, 0}, 1}, {}, {tex({0.9f, 0.1f, 0.1f}, f2)}));
     s.lights.push_back(point_light({-4, 6, -5}));
     expect_matches("reflection", R"(
 global_settings { max_trace_level 3 }
@@ -149,7 +155,8 @@ TEST(PovCompare, RefractionFadeFresnel) {
     Scene s = base_scene();
     s.background = Colour(Rgb(0.5f, 0.6f, 0.8f));
     s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {tex({0.8f, 0.3f, 0.2f})}));
-    s.objects.push_back(object(Box{{-3, -1, 2}, {3, 2, 2.5}}, {}, {tex({0.1f, 0.6f, 0.2f})}));
+    s.objects.push_back(
+        object(Box{{-3, -1, 2}, {3, 2, 2.5}}, {}, {tex({0.1f, 0.6f, 0.2f})}));
     Finish g;
     g.reflection_min = Rgb(0.0f);
     g.reflection_max = Rgb(1.0f);
@@ -225,37 +232,51 @@ TEST(PovCompare, ShapesAndCsg) {
     s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {tex({0.7f, 0.7f, 0.7f})}));
     s.objects.push_back(object(Cone{{-2.6, -1, 1}, {-2.6, 0.8, 1}, 0.7, 0.2, true}, {},
                                {tex({0.9f, 0.5f, 0.1f})}));
-    s.objects.push_back(object(Torus{0.6, 0.2},
-                               Transform::rotate({-60, 0, 0}).then(Transform::translate({2.4, 0.2, 1})),
-                               {tex({0.2f, 0.7f, 0.9f})}));
+    s.objects.push_back(
+        object(Torus{0.6, 0.2},
+               Transform::rotate({-60, 0, 0}).then(Transform::translate({2.4, 0.2, 1})),
+               {tex({0.2f, 0.7f, 0.9f})}));
     s.objects.push_back(object(Disc{{0, 0, 0}, {0, 0, -1}, 0.5, 0.2},
-                               Transform::translate({-1.2, 1.3, 0}), {tex({0.9f, 0.9f, 0.2f})}));
-    s.objects.push_back(object(Triangle{{{0.6, 1, 0}, {1.6, 1.6, 0.5}, {1.2, 0.7, -0.5}}}, {},
-                               {tex({0.9f, 0.2f, 0.6f})}));
+                               Transform::translate({-1.2, 1.3, 0}),
+                               {tex({0.9f, 0.9f, 0.2f})}));
+    s.objects.push_back(object(Triangle{{{0.6, 1, 0}, {1.6, 1.6, 0.5}, {1.2, 0.7, -0.5}}},
+                               {}, {tex({0.9f, 0.2f, 0.6f})}));
     Polygon poly;
-    for (auto [x, y] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}, {0.0, 0.0},
-                        {0.25, 0.25}, {0.75, 0.25}, {0.75, 0.75}, {0.25, 0.75}, {0.25, 0.25}}) {
+    for (auto [x, y] : {std::pair{0.0, 0.0},
+                        {1.0, 0.0},
+                        {1.0, 1.0},
+                        {0.0, 1.0},
+                        {0.0, 0.0},
+                        {0.25, 0.25},
+                        {0.75, 0.25},
+                        {0.75, 0.75},
+                        {0.25, 0.75},
+                        {0.25, 0.25}}) {
         poly.points.push_back({x, y, 0});
     }
-    s.objects.push_back(object(poly,
-                               Transform::rotate({0, -20, 0}).then(Transform::translate({-3, 1, 0})),
-                               {tex({0.4f, 0.9f, 0.9f})}));
+    s.objects.push_back(object(
+        poly, Transform::rotate({0, -20, 0}).then(Transform::translate({-3, 1, 0})),
+        {tex({0.4f, 0.9f, 0.9f})}));
     Finish shiny;
     shiny.phong = 0.8f;
-    s.objects.push_back(object(SmoothTriangle{{{2.0, 1.0, -0.5}, {3.0, 1.2, 0.0}, {2.4, 2.0, 0.2}},
-                                              {{-0.5, 0.2, -1}, {0.6, 0.1, -1}, {0, 0.8, -1}}},
-                               {}, {tex({0.9f, 0.9f, 0.9f}, shiny)}));
+    s.objects.push_back(
+        object(SmoothTriangle{{{2.0, 1.0, -0.5}, {3.0, 1.2, 0.0}, {2.4, 2.0, 0.2}},
+                              {{-0.5, 0.2, -1}, {0.6, 0.1, -1}, {0, 0.8, -1}}},
+               {}, {tex({0.9f, 0.9f, 0.9f}, shiny)}));
     Object diff;
     Csg d;
     d.kind = CsgKind::Difference;
-    d.children.push_back(object(Box{{-1.5, -1, -0.5}, {-0.5, 0, 0.5}}, {}, {tex({0.8f, 0.8f, 0.3f})}));
-    d.children.push_back(object(Sphere{{-1, 0, -0.5}, 0.6}, {}, {tex({0.9f, 0.2f, 0.2f})}));
+    d.children.push_back(
+        object(Box{{-1.5, -1, -0.5}, {-0.5, 0, 0.5}}, {}, {tex({0.8f, 0.8f, 0.3f})}));
+    d.children.push_back(
+        object(Sphere{{-1, 0, -0.5}, 0.6}, {}, {tex({0.9f, 0.2f, 0.2f})}));
     diff.shape = d;
     s.objects.push_back(diff);
     Object inter;
     Csg i;
     i.kind = CsgKind::Intersection;
-    i.children.push_back(object(Sphere{{0.5, -0.3, 0}, 0.7}, {}, {tex({0.3f, 0.9f, 0.3f})}));
+    i.children.push_back(
+        object(Sphere{{0.5, -0.3, 0}, 0.7}, {}, {tex({0.3f, 0.9f, 0.3f})}));
     i.children.push_back(object(Cylinder{{0.5, -1, -1}, {0.5, 1, 1}, 0.45, false}, {},
                                 {tex({0.3f, 0.3f, 0.9f})}));
     inter.shape = i;
@@ -289,7 +310,8 @@ TEST(PovCompare, AreaLightGridNoJitter) {
     Scene s = base_scene();
     s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {tex({0.9f, 0.9f, 0.9f})}));
     s.objects.push_back(object(Sphere{{0, 0, 0}, 0.8}, {}, {tex({0.9f, 0.3f, 0.3f})}));
-    s.objects.push_back(object(Box{{1.2, -1, -0.5}, {1.8, 0.8, 0.5}}, {}, {tex({0.3f, 0.9f, 0.3f})}));
+    s.objects.push_back(
+        object(Box{{1.2, -1, -0.5}, {1.8, 0.8, 0.5}}, {}, {tex({0.3f, 0.9f, 0.3f})}));
     Light a = point_light({-2, 5, -3});
     AreaLight al;
     al.axis1 = {2, 0, 0};
@@ -307,7 +329,8 @@ TEST(PovCompare, AreaLightGridNoJitter) {
     bl.adaptive = 1;
     b.area = bl;
     s.lights.push_back(b);
-    // adaptive 0 refines only where corner samples differ; circular + orient reshape the grid.
+    // adaptive 0 refines only where corner samples differ; circular + orient reshape the
+    // grid.
     Light c = point_light({0, 3, -2}, {0.4f, 0.3f, 0.2f});
     AreaLight cl;
     cl.axis1 = {3, 0, 0};
@@ -331,15 +354,17 @@ light_source { <0,3,-2> rgb <0.4,0.3,0.2> area_light <3,0,0>, <0,0,3>, 6, 6 adap
                    s);
 }
 
-// A ball hides only the centre sample of a 3x3 grid from the floor below it: with adaptive 0
-// the equal corners stop the refinement (full light), the default refines (3/4 light).
+// A ball hides only the centre sample of a 3x3 grid from the floor below it: with
+// adaptive 0 the equal corners stop the refinement (full light), the default refines (3/4
+// light).
 TEST(PovCompare, AreaLightAdaptiveRefinement) {
     for (int adaptive : {0, 100}) {
         Scene s = base_scene();
         s.camera.location = {0, 6, -3};
         s.camera.direction = {0, -1.6, 0.8};
         s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {tex({0.9f, 0.9f, 0.9f})}));
-        s.objects.push_back(object(Sphere{{0, 2, 0}, 0.3}, {}, {tex({0.9f, 0.3f, 0.3f})}));
+        s.objects.push_back(
+            object(Sphere{{0, 2, 0}, 0.3}, {}, {tex({0.9f, 0.3f, 0.3f})}));
         Light a = point_light({0, 5, 0});
         AreaLight al;
         al.axis1 = {4, 0, 0};
@@ -350,12 +375,14 @@ TEST(PovCompare, AreaLightAdaptiveRefinement) {
         a.area = al;
         s.lights.push_back(a);
         std::string adaptive_kw = adaptive == 0 ? "adaptive 0" : "";
-        expect_matches("arealight_adaptive" + std::to_string(adaptive), R"(
+        expect_matches("arealight_adaptive" + std::to_string(adaptive),
+                       R"(
 #declare Dummy = 0;
 camera { location <0,6,-3> direction <0,-1.6,0.8> right <4/3,0,0> up <0,1,0> }
 plane { y, -1 pigment { rgb 0.9 } }
 sphere { <0,2,0>, 0.3 pigment { rgb <0.9,0.3,0.3> } }
-light_source { <0,5,0> rgb 1 area_light <4,0,0>, <0,0,4>, 3, 3 )" + adaptive_kw + " }\n",
+light_source { <0,5,0> rgb 1 area_light <4,0,0>, <0,0,4>, 3, 3 )" +
+                           adaptive_kw + " }\n",
                        s);
     }
 }
@@ -390,8 +417,8 @@ fog { fog_type 2 distance 6 fog_offset -0.5 fog_alt 0.4 color rgb <0.9,0.8,0.6> 
                    s);
 }
 
-// A bright light dimmed by the fog (media_attenuation), and a solid (non-hollow) glass ball
-// whose inside has no fog while a hollow one is fogged.
+// A bright light dimmed by the fog (media_attenuation), and a solid (non-hollow) glass
+// ball whose inside has no fog while a hollow one is fogged.
 TEST(PovCompare, FogMediaAttenuationAndHollow) {
     Scene s = base_scene();
     s.background = Colour(Rgb(0.2f, 0.3f, 0.8f));
@@ -400,7 +427,8 @@ TEST(PovCompare, FogMediaAttenuationAndHollow) {
         Finish f;
         f.ambient = Rgb(0.0f);
         f.diffuse = 0;
-        Object ball = object(Sphere{{i ? 1.3 : -1.3, 0.2, 1}, 1.2}, {}, {tex({1, 1, 1}, f, 0, 0.9f)});
+        Object ball = object(Sphere{{i ? 1.3 : -1.3, 0.2, 1}, 1.2}, {},
+                             {tex({1, 1, 1}, f, 0, 0.9f)});
         ball.hollow = i == 1;
         s.objects.push_back(ball);
     }
@@ -424,7 +452,8 @@ fog { distance 12 color rgb 0.5 }
 
 TEST(PovCompare, LayeredSkySphereOverBackground) {
     Scene s = base_scene();
-    s.background = Colour(Rgb(0.9f, 0.9f, 0.1f), 0.0f, 0.6f);  // transmit darkens it, +UA or not
+    s.background =
+        Colour(Rgb(0.9f, 0.9f, 0.1f), 0.0f, 0.6f);  // transmit darkens it, +UA or not
     s.objects.push_back(object(Sphere{{0, 0, 0}, 1}, {}, {tex({0.9f, 0.9f, 0.9f})}));
     s.lights.push_back(point_light({-3, 6, -5}));
     SkySphere sky;

@@ -32,7 +32,8 @@ void expect_rgb(const Rgb& a, const Rgb& b, float tol = 1e-6f) {
 }
 
 TEST(Shading, SphereLitHeadOnByHand) {
-    // Camera, light and hit point on the z axis: N.L = 1, phong R.L = 1, specular H.N = 1.
+    // Camera, light and hit point on the z axis: N.L = 1, phong R.L = 1, specular H.N
+    // = 1.
     Scene s;
     Texture t = solid({0.8f, 0.6f, 0.4f});
     t.finish.ambient = Rgb(0.1f);
@@ -46,7 +47,8 @@ TEST(Shading, SphereLitHeadOnByHand) {
     s.lights.push_back(l);
     const float light = 0.5f * 0.4f;
     const Rgb pig{0.8f, 0.6f, 0.4f};
-    Rgb expected = pig * 0.1f + pig * (0.6f * light) + Rgb(0.5f * light) + Rgb(0.3f * light);
+    Rgb expected =
+        pig * 0.1f + pig * (0.6f * light) + Rgb(0.5f * light) + Rgb(0.3f * light);
     expect_rgb(centre_pixel(s), expected);
     // fade_power without fade_distance: distance^-power (POV-Ray's Attenuate_Light).
     s.lights[0].fade_distance = 0;
@@ -214,7 +216,8 @@ TEST(Shading, SpawnCombineEqualsRecursiveDriver) {
                 std::vector<TraceResult> bumped = results;
                 bumped[i].colour += Rgb(0.25f);
                 TraceResult b = combine_children(rec, bumped.data());
-                expect_rgb(b.colour - manual.colour, rec.children[i].coeff * 0.25f, 1e-5f);
+                expect_rgb(b.colour - manual.colour, rec.children[i].coeff * 0.25f,
+                           1e-5f);
             }
         }
     }
