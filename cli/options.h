@@ -3,11 +3,16 @@
 
 #include <istream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "trace/render.h"
+
+namespace povwall::distrib {
+class TcpSession;
+}
 
 namespace povwall::cli {
 
@@ -43,6 +48,9 @@ struct RenderOptions {
         double clock = 0.0, clock_delta = 0.0;
     };
     std::optional<FrameValues> frame;  // set while one frame of an animation renders
+    // Set by an animation for all its frames: the black-box workers (--procs, --workers)
+    // stay alive from one frame to the next.
+    std::shared_ptr<std::unique_ptr<distrib::TcpSession>> frame_workers;
     // Overrides of the scene's global_settings (quick previews, `povwall sweep`).
     std::optional<int> max_trace_level;
     std::optional<double> adc_bailout;

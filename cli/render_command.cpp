@@ -91,7 +91,9 @@ std::vector<std::string> tile_worker_command(const RenderOptions& o) {
 // With +C (Continue_Trace) a frame whose image exists is kept: images are only ever
 // renamed into place once complete, so an existing one is whole, and an interrupted batch
 // resumes.
-int run_animation(const RenderOptions& base, const std::vector<Frame>& frames) {
+int run_animation(const RenderOptions& options, const std::vector<Frame>& frames) {
+    RenderOptions base = options;
+    base.frame_workers = std::make_shared<std::unique_ptr<distrib::TcpSession>>();
     int rendered = 0, kept = 0;
     for (const Frame& f : frames) {
         if (base.continue_trace && std::filesystem::exists(f.output)) {
@@ -215,6 +217,7 @@ int run_render(RenderOptions o) {
     distrib::SpaceOptions space = dplan.space;
     const bool use_boxes = dplan.mode == distrib::RenderMode::Space;
     distrib::SpaceStats space_stats;
+    int worker_frames = 0, worker_processes = 0;  // TCP workers (--stats)
     Image image;
     if (use_boxes) {
         if (o.render.antialias)
@@ -246,9 +249,15 @@ int run_render(RenderOptions o) {
             tcp.token = o.token;
             tcp.recover = o.recover;
             tcp.worker_binary = std::filesystem::read_symlink("/proc/self/exe").string();
+            // One frame, or a frame of an animation on the previous frame's workers.
+            std::unique_ptr<distrib::TcpSession> one_frame;
+            std::unique_ptr<distrib::TcpSession>& session =
+                o.frame_workers ? *o.frame_workers : one_frame;
+            if (!session) session = std::make_unique<distrib::TcpSession>(tcp);
             try {
-                image = distrib::render_tcp(scene, source, o.render, space, tcp,
-                                            &space_stats);
+                image = session->render(scene, source, o.render, space, &space_stats);
+                worker_frames = session->frames_on_these_workers();
+                worker_processes = session->processes_started();
             } catch (const distrib::DistribError& e) {
                 std::cerr << "povwall: error: " << e.what() << " (no image written)\n";
                 return 3;
@@ -369,6 +378,10 @@ int run_render(RenderOptions o) {
                      {"busy_seconds", b.busy_seconds}});
             }
             j["boxes"] = boxes;
+            if (worker_frames > 0) {
+                j["workers"] = {{"frames_on_these_workers", worker_frames},
+                                {"processes_started", worker_processes}};
+            }
         } else {
             j["boxes"] = 1;
         }

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -60,6 +61,40 @@ struct WorkerLost : DistribError {
     using DistribError::DistribError;
 };
 
+class TcpCoordinator;
+
+// Black boxes kept alive over a sequence of frames (the "framer"). The first frame starts
+// (or connects to) the workers and sends each the job: scene source, walls, box owners,
+// peers. A later frame sends only what changed, the animation values; each worker parses
+// the scene again at its new clock and rebuilds its boxes, while processes, connections,
+// walls and box owners stay. A frame whose job differs in anything else (size, options,
+// scene text) starts new workers.
+class TcpSession {
+  public:
+    explicit TcpSession(TcpOptions tcp);
+    ~TcpSession();
+    TcpSession(const TcpSession&) = delete;
+    TcpSession& operator=(const TcpSession&) = delete;
+
+    // One frame. A lost local worker with `recover` on: the frame is traced again on new
+    // processes, one fewer (WorkerLost when none is left to lose); other failures throw
+    // DistribError and end the session's workers.
+    Image render(const Scene& scene, const SceneSource& source,
+                 const trace::RenderSettings& settings, const SpaceOptions& options,
+                 SpaceStats* stats = nullptr);
+
+    // Frames the current workers have rendered, this one included.
+    int frames_on_these_workers() const;
+    // Worker processes this session started (--procs), over all its frames.
+    int processes_started() const;
+
+  private:
+    TcpOptions tcp_;
+    std::unique_ptr<TcpCoordinator> coordinator_;
+    int processes_started_before_ = 0;  // by coordinators already replaced
+};
+
+// One frame with its own session.
 Image render_tcp(const Scene& scene, const SceneSource& source,
                  const trace::RenderSettings& settings, const SpaceOptions& options,
                  const TcpOptions& tcp, SpaceStats* stats = nullptr);
@@ -75,7 +110,8 @@ struct WorkerOptions {
     long die_after_items = -1, hang_after_items = -1;
 };
 
-// Serves one job and returns the exit code (0 after a finished job).
+// Serves one job (a sequence of frames) and returns the exit code (0 when the coordinator
+// closes the connection after a finished frame).
 int run_worker(const WorkerOptions& options);
 
 // A control frame (JSON text) as the protocol sends it, e.g. for tests that speak to a

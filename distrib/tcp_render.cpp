@@ -431,6 +431,8 @@ class Worker {
         const std::string type = j.is_object() ? j.value("type", "") : "";
         if (type == "job") {
             job(j);
+        } else if (type == "frame") {
+            frame(j);
         } else if (type == "start") {
             host_->set_box_empty(j.at("empty").get<std::vector<uint8_t>>());
             render_ = std::thread([this] { host_->run(threads_, false); });
@@ -442,7 +444,67 @@ class Worker {
         }
     }
 
+    // The first frame: the whole job. Later frames arrive as "frame" with new animation
+    // values only; processes, peer connections, walls and owners stay.
     void job(const json& j) {
+        if (job_.is_object()) return fail_job("a second job on one connection");
+        job_ = j;
+        owner_ = j.at("owner").get<std::vector<int>>();
+        self_ = j.at("index").get<int>();
+        if (!prepare()) return;
+        const auto addresses = j.at("workers").get<std::vector<std::string>>();
+        peers_.resize(addresses.size());
+        for (size_t i = 0; i < addresses.size(); ++i)
+            outboxes_.push_back(std::make_unique<Outbox>());
+        int to_connect = 0;
+        for (size_t i = 0; i < addresses.size(); ++i) to_connect += int(i) != self_;
+        auto remaining = std::make_shared<int>(to_connect);
+        if (to_connect == 0) coordinator_->send(control_frame(ready_message()));
+        for (size_t i = 0; i < addresses.size(); ++i) {
+            if (int(i) == self_) continue;
+            auto socket = std::make_shared<tcp::socket>(io_);
+            tcp::endpoint ep;
+            try {
+                ep = resolve(io_, addresses[i]);
+            } catch (const DistribError& e) {
+                return fail_job(e.what());
+            }
+            socket->async_connect(
+                ep, [this, socket, i, remaining,
+                     address = addresses[i]](boost::system::error_code ec) {
+                    if (ec) {
+                        return fail_job("cannot connect to worker " + address + ": " +
+                                        ec.message());
+                    }
+                    auto conn = std::make_shared<Connection>(std::move(*socket), address);
+                    conn->on_frame = [](Frame&) {};
+                    conn->on_error = [](const std::string&) {
+                    };  // the coordinator sees the death
+                    conn->start();
+                    conn->send(control_frame(
+                        {{"type", "hello"}, {"token", options_.token}, {"from", self_}}));
+                    peers_[i] = conn;
+                    if (--*remaining == 0)
+                        coordinator_->send(control_frame(ready_message()));
+                });
+        }
+    }
+
+    void frame(const json& j) {
+        if (!job_.is_object() || !done_)
+            return fail_job("a frame before the previous one finished");
+        job_["animation"] = j.at("animation");
+        done_ = false;
+        if (prepare()) coordinator_->send(control_frame(ready_message()));
+    }
+
+    void fail_job(const std::string& message) {
+        coordinator_->send(control_frame({{"type", "error"}, {"message", message}}));
+    }
+
+    // Parses the scene at the job's animation values and builds this worker's boxes.
+    bool prepare() {
+        const json& j = job_;
         parser::ParseOptions popts;
         popts.image_reader = options_.image_reader;
         popts.library_paths = j.at("library_paths").get<std::vector<std::string>>();
@@ -457,12 +519,15 @@ class Worker {
         settings_.height = popts.image_height = j.at("height").get<int>();
         settings_.alpha = j.at("alpha").get<bool>();
         settings_.plan_everything_on = j.at("plan_everything_on").get<bool>();
+        // The previous frame's boxes point into the previous scene: gone first.
+        host_.reset();
+        numbers_.reset();
         try {
             scene_ = parser::parse_scene_text(j.at("scene").get<std::string>(),
                                               j.at("name").get<std::string>(), popts);
         } catch (const parser::ParseError& e) {
-            coordinator_->send(control_frame({{"type", "error"}, {"message", e.what()}}));
-            return;
+            fail_job(e.what());
+            return false;
         }
         if (!j.at("max_trace_level").is_null())
             scene_.settings.max_trace_level = j.at("max_trace_level").get<int>();
@@ -473,17 +538,15 @@ class Worker {
         threads_ = options_.threads > 0 ? options_.threads : j.at("threads").get<int>();
         if (threads_ <= 0)
             threads_ = int(std::max(1u, std::thread::hardware_concurrency()));
-        owner_ = j.at("owner").get<std::vector<int>>();
-        self_ = j.at("index").get<int>();
         auto walls = j.at("walls").get<std::array<std::vector<Real>, 3>>();
         numbers_ = std::make_unique<ObjectNumbers>(scene_);
         host_ = std::make_unique<BoxHost>(scene_, settings_, space_);
         host_->set_walls(VirtualWalls(walls));
-        std::vector<int> mine;
+        mine_.clear();
         for (size_t b = 0; b < owner_.size(); ++b) {
-            if (owner_[b] == self_) mine.push_back(int(b));
+            if (owner_[b] == self_) mine_.push_back(int(b));
         }
-        host_->build_boxes(mine);
+        host_->build_boxes(mine_);
         if (options_.die_after_items >= 0 || options_.hang_after_items >= 0) {
             host_->on_processed = [this] {
                 const long n = ++processed_;
@@ -491,10 +554,6 @@ class Worker {
                 if (n == options_.hang_after_items) raise(SIGSTOP);
             };
         }
-        const auto addresses = j.at("workers").get<std::vector<std::string>>();
-        peers_.resize(addresses.size());
-        for (size_t i = 0; i < addresses.size(); ++i)
-            outboxes_.push_back(std::make_unique<Outbox>());
         host_->remote = [this](int box, Item&& item) {
             Outbox& o = *outboxes_[owner_[box]];
             std::lock_guard<std::mutex> lock(o.mutex);
@@ -510,46 +569,15 @@ class Worker {
                 if (o.count) post(int(w), o.take());
             }
         };
-        json ready = {{"type", "ready"}, {"boxes", mine}};
+        return true;
+    }
+
+    json ready_message() const {
+        json ready = {{"type", "ready"}, {"boxes", mine_}};
         std::vector<size_t> counts;
-        for (int b : mine) counts.push_back(host_->primitive_count(b));
+        for (int b : mine_) counts.push_back(host_->primitive_count(b));
         ready["primitives"] = counts;
-        int to_connect = 0;
-        for (size_t i = 0; i < addresses.size(); ++i) to_connect += int(i) != self_;
-        auto remaining = std::make_shared<int>(to_connect);
-        if (to_connect == 0) coordinator_->send(control_frame(ready));
-        for (size_t i = 0; i < addresses.size(); ++i) {
-            if (int(i) == self_) continue;
-            auto socket = std::make_shared<tcp::socket>(io_);
-            tcp::endpoint ep;
-            try {
-                ep = resolve(io_, addresses[i]);
-            } catch (const DistribError& e) {
-                coordinator_->send(
-                    control_frame({{"type", "error"}, {"message", e.what()}}));
-                return;
-            }
-            socket->async_connect(
-                ep, [this, socket, i, remaining, ready,
-                     address = addresses[i]](boost::system::error_code ec) {
-                    if (ec) {
-                        coordinator_->send(control_frame(
-                            {{"type", "error"},
-                             {"message", "cannot connect to worker " + address + ": " +
-                                             ec.message()}}));
-                        return;
-                    }
-                    auto conn = std::make_shared<Connection>(std::move(*socket), address);
-                    conn->on_frame = [](Frame&) {};
-                    conn->on_error = [](const std::string&) {
-                    };  // the coordinator sees the death
-                    conn->start();
-                    conn->send(control_frame(
-                        {{"type", "hello"}, {"token", options_.token}, {"from", self_}}));
-                    peers_[i] = conn;
-                    if (--*remaining == 0) coordinator_->send(control_frame(ready));
-                });
-        }
+        return ready;
     }
 
     void post(int worker, Buffer buf) {
@@ -641,7 +669,8 @@ class Worker {
     SpaceOptions space_;
     std::unique_ptr<ObjectNumbers> numbers_;
     std::unique_ptr<BoxHost> host_;
-    std::vector<int> owner_;
+    json job_;  // the job, with the current frame's animation values
+    std::vector<int> owner_, mine_;
     int self_ = 0, threads_ = 1;
     std::thread render_;
     std::atomic<long> processed_{0};
@@ -689,31 +718,127 @@ LocalWorker spawn_worker(const std::string& binary, const std::string& token,
     return {pid, address};
 }
 
-class Coordinator {
-  public:
-    Coordinator(const Scene& scene, const SceneSource& source,
-                const trace::RenderSettings& settings, const SpaceOptions& options,
-                const TcpOptions& tcp_options)
-        : scene_(scene),
-          source_(source),
-          settings_(settings),
-          options_(options),
-          tcp_(tcp_options),
-          emitter_(scene, settings, options),
-          timer_(io_) {}
+// Everything of a job but the animation values: a frame with the same fixed part can go
+// to the workers of the previous frame.
+json fixed_job(const SceneSource& source, const trace::RenderSettings& settings,
+               const SpaceOptions& options) {
+    return {{"type", "job"},
+            {"scene", source.text},
+            {"name", source.display_name},
+            {"library_paths", source.library_paths},
+            {"declares", source.declares},
+            {"max_loop_iterations", source.max_loop_iterations},
+            {"max_trace_level",
+             source.max_trace_level ? json(*source.max_trace_level) : json()},
+            {"adc_bailout", source.adc_bailout ? json(*source.adc_bailout) : json()},
+            {"width", settings.width},
+            {"height", settings.height},
+            {"alpha", settings.alpha},
+            {"plan_everything_on", settings.plan_everything_on},
+            {"results", int(options.results)},
+            {"queue", int(options.queue)},
+            {"threads", settings.threads},
+            {"boxes", options.boxes},
+            {"balanced", options.balanced}};
+}
 
-    ~Coordinator() {
+json animation_values(const SceneSource& source) {
+    return {source.clock,       source.clock_delta,  source.initial_clock,
+            source.final_clock, source.frame_number, source.initial_frame,
+            source.final_frame};
+}
+
+}  // namespace
+
+// The coordinator of one set of workers: starts or connects to them on the first frame,
+// then renders frames on them until a frame fails.
+class TcpCoordinator {
+  public:
+    TcpCoordinator(const TcpOptions& tcp_options, json fixed)
+        : tcp_(tcp_options), fixed_(std::move(fixed)), timer_(io_) {}
+
+    ~TcpCoordinator() {
         for (auto& w : workers_) {
-            if (w.conn) w.conn->close();
+            if (w.conn) w.conn->close();  // workers between frames exit on their own
         }
         for (const LocalWorker& l : local_) {
-            if (!finished_all_) kill(l.pid, SIGKILL);  // failed: take the job down
+            if (failed_ || in_frame_) kill(l.pid, SIGKILL);  // failed: take the job down
             wait_child(l.pid, 10.0);
         }
     }
 
-    Image run(SpaceStats* stats) {
+    const json& fixed() const { return fixed_; }
+    bool failed() const { return failed_; }
+    int frames() const { return frames_; }
+    int processes_started() const { return int(local_.size()); }
+
+    Image render(const Scene& scene, const SceneSource& source,
+                 const trace::RenderSettings& settings, const SpaceOptions& options,
+                 SpaceStats* stats) {
         auto t0 = Clock::now();
+        settings_ = &settings;
+        options_ = &options;
+        emitter_ = std::make_unique<BoxHost>(scene, settings, options);
+        numbers_ = std::make_unique<ObjectNumbers>(scene);
+        in_frame_ = true;
+        if (workers_.empty()) {
+            emitter_->place_walls();
+            start_workers(source);
+        } else {
+            emitter_->set_walls(emitter_walls_);
+            for (WorkerState& w : workers_) {
+                w.conn->send(control_frame(
+                    {{"type", "frame"}, {"animation", animation_values(source)}}));
+            }
+        }
+        emitter_->build_boxes({});
+        const int boxes = emitter_->walls().box_count();
+        sums_.assign(size_t(settings.width) * settings.height * 4, 0.0);
+        empty_.assign(boxes, 1);
+        box_stats_ = emitter_->box_stats();
+        created_ = 0;
+        next_pixel_ = 0;
+        wave_pending_ = -1;
+        last_wave_.clear();
+        started_ = false;
+        for (WorkerState& w : workers_) {
+            w.ready = w.done = false;
+            w.created = w.finished = 0;
+            w.wave_seq = -1;
+            w.last_seen = Clock::now();
+        }
+        watch();
+        io_.restart();
+        io_.run();
+        if (failed_) {
+            if (lost_) throw WorkerLost(error_);
+            throw DistribError(error_);
+        }
+        in_frame_ = false;
+        ++frames_;
+        Image image =
+            image_from_sums(sums_, settings.width, settings.height, settings.alpha);
+        if (stats) {
+            stats->parent_tracking = emitter_->parent_tracking();
+            stats->boxes = box_stats_;
+            stats->seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        }
+        return image;
+    }
+
+  private:
+    struct WorkerState {
+        std::string address;
+        std::shared_ptr<Connection> conn;
+        std::unique_ptr<Outbox> outbox;
+        Clock::time_point last_seen;
+        bool ready = false, done = false;
+        uint64_t created = 0, finished = 0;  // latest status
+        long wave_seq = -1;                  // latest probe answered
+        uint64_t wave_created = 0, wave_finished = 0;
+    };
+
+    void start_workers(const SceneSource& source) {
         std::string token = tcp_.token;
         std::vector<std::string> addresses = tcp_.workers;
         if (tcp_.procs > 0) {
@@ -725,8 +850,8 @@ class Coordinator {
                 token = hex;
             }
             unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-            int threads = settings_.threads > 0
-                              ? settings_.threads
+            int threads = settings_->threads > 0
+                              ? settings_->threads
                               : int(std::max(1u, cores / unsigned(tcp_.procs)));
             for (int i = 0; i < tcp_.procs; ++i) {
                 local_.push_back(spawn_worker(tcp_.worker_binary, token, threads));
@@ -737,39 +862,20 @@ class Coordinator {
             maybe_inject_worker_kill(pids);
         }
         if (addresses.empty()) throw DistribError("no workers");
-        emitter_.place_walls();
-        emitter_.build_boxes({});
-        const int boxes = emitter_.walls().box_count();
+        // Walls stay for the whole sequence: the outer boxes are unbounded, so any
+        // frame's objects fall in some box; only the balance may drift.
+        emitter_walls_ = emitter_->walls();
+        const int boxes = emitter_walls_.box_count();
         const int n = int(addresses.size());
         // Contiguous runs of box indices per worker: neighbours along x share a process.
         owner_.resize(boxes);
         for (int b = 0; b < boxes; ++b) owner_[b] = int(int64_t(b) * n / boxes);
-        json job = {
-            {"type", "job"},
-            {"scene", source_.text},
-            {"name", source_.display_name},
-            {"library_paths", source_.library_paths},
-            {"declares", source_.declares},
-            {"animation",
-             {source_.clock, source_.clock_delta, source_.initial_clock,
-              source_.final_clock, source_.frame_number, source_.initial_frame,
-              source_.final_frame}},
-            {"max_loop_iterations", source_.max_loop_iterations},
-            {"max_trace_level",
-             source_.max_trace_level ? json(*source_.max_trace_level) : json()},
-            {"adc_bailout", source_.adc_bailout ? json(*source_.adc_bailout) : json()},
-            {"width", settings_.width},
-            {"height", settings_.height},
-            {"alpha", settings_.alpha},
-            {"plan_everything_on", settings_.plan_everything_on},
-            {"results", int(options_.results)},
-            {"queue", int(options_.queue)},
-            {"threads", settings_.threads},
-            {"walls", std::array<std::vector<Real>, 3>{emitter_.walls().walls(0),
-                                                       emitter_.walls().walls(1),
-                                                       emitter_.walls().walls(2)}},
-            {"owner", owner_},
-            {"workers", addresses}};
+        json job = fixed_;
+        job["animation"] = animation_values(source);
+        job["walls"] = std::array<std::vector<Real>, 3>{
+            emitter_walls_.walls(0), emitter_walls_.walls(1), emitter_walls_.walls(2)};
+        job["owner"] = owner_;
+        job["workers"] = addresses;
         workers_.resize(n);
         for (int i = 0; i < n; ++i) {
             WorkerState& w = workers_[i];
@@ -790,39 +896,9 @@ class Coordinator {
                 control_frame({{"type", "hello"}, {"token", token}, {"from", -1}}));
             job["index"] = i;
             w.conn->send(control_frame(job));
-            w.last_seen = Clock::now();
             w.outbox = std::make_unique<Outbox>();
         }
-        sums_.assign(size_t(settings_.width) * settings_.height * 4, 0.0);
-        empty_.assign(boxes, 1);
-        box_stats_ = emitter_.box_stats();
-        watch();
-        io_.run();
-        if (failed_) {
-            if (lost_) throw WorkerLost(error_);
-            throw DistribError(error_);
-        }
-        Image image =
-            image_from_sums(sums_, settings_.width, settings_.height, settings_.alpha);
-        if (stats) {
-            stats->parent_tracking = emitter_.parent_tracking();
-            stats->boxes = box_stats_;
-            stats->seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-        }
-        return image;
     }
-
-  private:
-    struct WorkerState {
-        std::string address;
-        std::shared_ptr<Connection> conn;
-        std::unique_ptr<Outbox> outbox;
-        Clock::time_point last_seen;
-        bool ready = false, done = false;
-        uint64_t created = 0, finished = 0;  // latest status
-        long wave_seq = -1;                  // latest probe answered
-        uint64_t wave_created = 0, wave_finished = 0;
-    };
 
     std::string describe(int i) const {
         int first = -1, last = -1;
@@ -839,8 +915,9 @@ class Coordinator {
     }
 
     // `lost`: the worker is gone (a job it refused is not a loss another try could mend).
+    // A worker that dies between frames shows here at the next frame.
     void fail(int i, const std::string& why, bool lost = true) {
-        if (failed_ || finished_all_) return;
+        if (failed_) return;
         failed_ = true;
         lost_ = lost;
         error_ = describe(i) + ": " + why;
@@ -850,7 +927,7 @@ class Coordinator {
     void watch() {  // heartbeat: a worker silent for the timeout is taken as dead
         timer_.expires_after(std::chrono::milliseconds(250));
         timer_.async_wait([this](boost::system::error_code ec) {
-            if (ec) return;
+            if (ec || !in_frame_) return;
             for (size_t i = 0; i < workers_.size(); ++i) {
                 double silent =
                     std::chrono::duration<double>(Clock::now() - workers_[i].last_seen)
@@ -895,7 +972,7 @@ class Coordinator {
             for (const WorkerState& o : workers_) {
                 if (!o.ready) return;
             }
-            emitter_.set_box_empty(empty_);
+            emitter_->set_box_empty(empty_);
             started_ = true;
             for (WorkerState& o : workers_)
                 o.conn->send(control_frame({{"type", "start"}, {"empty", empty_}}));
@@ -928,27 +1005,29 @@ class Coordinator {
             for (const WorkerState& o : workers_) {
                 if (!o.done) return;
             }
-            finished_all_ = true;
+            // The frame is whole; the workers wait for the next one (or the close).
+            in_frame_ = false;
             timer_.cancel();
-            for (WorkerState& o : workers_) o.conn->close();
+            io_.stop();
         }
     }
 
     // Camera rays while the last reported traffic is below the in-flight bound.
     void emit() {
-        const int total = settings_.width * settings_.height;
+        if (!started_ || !in_frame_) return;
+        const int total = settings_->width * settings_->height;
         int64_t live = int64_t(created_);
         for (const WorkerState& w : workers_)
             live += int64_t(w.created) - int64_t(w.finished);
-        while (next_pixel_ < total && live < int64_t(options_.max_rays_in_flight)) {
+        while (next_pixel_ < total && live < int64_t(options_->max_rays_in_flight)) {
             int end = std::min(total, next_pixel_ + 1024);
             for (int p = next_pixel_; p < end; ++p) {
                 Item item;
-                int box = emitter_.camera_item(p, item);
+                int box = emitter_->camera_item(p, item);
                 if (box < 0) continue;
                 Outbox& o = *workers_[owner_[box]].outbox;
                 Writer wr{o.records};
-                write_item(wr, box, item, numbers_);
+                write_item(wr, box, item, *numbers_);
                 ++o.count;
             }
             created_ += uint64_t(end - next_pixel_);
@@ -989,30 +1068,80 @@ class Coordinator {
         for (WorkerState& w : workers_) w.conn->send(control_frame({{"type", "finish"}}));
     }
 
-    const Scene& scene_;
-    const SceneSource& source_;
-    const trace::RenderSettings& settings_;
-    const SpaceOptions& options_;
-    const TcpOptions& tcp_;
+    const TcpOptions tcp_;
+    const json fixed_;
     asio::io_context io_;
-    BoxHost emitter_;  // walls and camera rays; hosts no box
-    ObjectNumbers numbers_{scene_};
     asio::steady_timer timer_;
-    std::vector<LocalWorker> local_;
-    std::vector<WorkerState> workers_;
-    std::vector<int> owner_;
+    // The current frame.
+    const trace::RenderSettings* settings_ = nullptr;
+    const SpaceOptions* options_ = nullptr;
+    std::unique_ptr<BoxHost> emitter_;  // walls and camera rays; hosts no box
+    std::unique_ptr<ObjectNumbers> numbers_;
     std::vector<uint8_t> empty_;
     std::vector<BoxStats> box_stats_;
     std::vector<double> sums_;
     std::vector<std::pair<uint64_t, uint64_t>> last_wave_;
     uint64_t created_ = 0;
     int next_pixel_ = 0;
-    long wave_seq_ = 0, wave_pending_ = -1;
-    bool failed_ = false, lost_ = false, finished_all_ = false, started_ = false;
+    long wave_pending_ = -1;
+    bool started_ = false, in_frame_ = false;
+    // The whole sequence.
+    VirtualWalls emitter_walls_;
+    std::vector<LocalWorker> local_;
+    std::vector<WorkerState> workers_;
+    std::vector<int> owner_;
+    long wave_seq_ = 0;
+    int frames_ = 0;
+    bool failed_ = false, lost_ = false;
     std::string error_;
 };
 
-}  // namespace
+TcpSession::TcpSession(TcpOptions tcp) : tcp_(std::move(tcp)) {}
+TcpSession::~TcpSession() = default;
+
+int TcpSession::frames_on_these_workers() const {
+    return coordinator_ ? coordinator_->frames() : 0;
+}
+
+int TcpSession::processes_started() const {
+    return processes_started_before_ +
+           (coordinator_ ? coordinator_->processes_started() : 0);
+}
+
+Image TcpSession::render(const Scene& scene, const SceneSource& source,
+                         const trace::RenderSettings& settings,
+                         const SpaceOptions& options, SpaceStats* stats) {
+    json fixed = fixed_job(source, settings, options);
+    auto retire = [&] {
+        if (!coordinator_) return;
+        processes_started_before_ += coordinator_->processes_started();
+        coordinator_.reset();
+    };
+    if (coordinator_ && (coordinator_->failed() || coordinator_->fixed() != fixed))
+        retire();
+    for (;;) {
+        if (!coordinator_) coordinator_ = std::make_unique<TcpCoordinator>(tcp_, fixed);
+        try {
+            return coordinator_->render(scene, source, settings, options, stats);
+        } catch (const WorkerLost& e) {
+            retire();
+            // Only processes this render started can be replaced; running --workers are
+            // someone else's.
+            if (!tcp_.recover || tcp_.procs <= 1 || !tcp_.workers.empty()) throw;
+            tcp_.procs -= 1;
+            std::fprintf(stderr,
+                         "povwall: %s: its boxes went to the other workers; the frame is "
+                         "traced again on %d worker process%s\n",
+                         e.what(), tcp_.procs, tcp_.procs == 1 ? "" : "es");
+        } catch (const DistribError&) {
+            retire();
+            throw;
+        } catch (const std::exception& e) {
+            retire();
+            throw DistribError(e.what());
+        }
+    }
+}
 
 std::vector<uint8_t> encode_control_frame(const std::string& text) {
     std::vector<uint8_t> out;
@@ -1024,26 +1153,8 @@ std::vector<uint8_t> encode_control_frame(const std::string& text) {
 Image render_tcp(const Scene& scene, const SceneSource& source,
                  const trace::RenderSettings& settings, const SpaceOptions& options,
                  const TcpOptions& tcp, SpaceStats* stats) {
-    TcpOptions attempt = tcp;
-    for (;;) {
-        try {
-            Coordinator c(scene, source, settings, options, attempt);
-            return c.run(stats);
-        } catch (const WorkerLost& e) {
-            // Only processes this render started can be replaced; running --workers are
-            // someone else's.
-            if (!attempt.recover || attempt.procs <= 1 || !attempt.workers.empty()) throw;
-            attempt.procs -= 1;
-            std::fprintf(stderr,
-                         "povwall: %s: its boxes went to the other workers; the frame is "
-                         "traced again on %d worker process%s\n",
-                         e.what(), attempt.procs, attempt.procs == 1 ? "" : "es");
-        } catch (const DistribError&) {
-            throw;
-        } catch (const std::exception& e) {
-            throw DistribError(e.what());
-        }
-    }
+    TcpSession session(tcp);
+    return session.render(scene, source, settings, options, stats);
 }
 
 int run_worker(const WorkerOptions& options) {
