@@ -156,27 +156,32 @@ int run_render(RenderOptions o) {
     popts.messages = o.quiet ? nullptr : &std::cerr;
     popts.max_loop_iterations = o.max_loop_iterations;
     popts.max_parse_seconds = o.max_parse_seconds;
-    auto t0 = Clock::now();
-    Scene scene;
-    try {
-        scene = parser::parse_scene_file(o.scene, popts);
-    } catch (const parser::ParseError& e) {
-        std::cerr << e.what() << "\n";
-        return 2;
-    }
-    if (o.max_trace_level) scene.settings.max_trace_level = *o.max_trace_level;
-    if (o.adc_bailout) scene.settings.adc_bailout = float(*o.adc_bailout);
-    auto t1 = Clock::now();
+    auto load_scene = [&] {
+        Scene scene = parser::parse_scene_file(o.scene, popts);
+        if (o.max_trace_level) scene.settings.max_trace_level = *o.max_trace_level;
+        if (o.adc_bailout) scene.settings.adc_bailout = float(*o.adc_bailout);
+        return scene;
+    };
     resolve_partial_render(o);
     o.render.width = o.width;
     o.render.height = o.height;
     o.render.plan_everything_on = o.plan == "all";
-    if (o.tile_worker) {
-        // POVWALL_FAULT_WORKER_EXIT_AFTER=N: the worker dies after N tiles (for the
-        // tests).
-        const char* fault = std::getenv("POVWALL_FAULT_WORKER_EXIT_AFTER");
-        return distrib::serve_tiles(scene, o.render, 0, 1, fault ? std::atoi(fault) : -1);
+    auto t0 = Clock::now();
+    Scene scene;
+    try {
+        if (o.tile_worker) {
+            // POVWALL_FAULT_WORKER_EXIT_AFTER=N: the worker dies after N tiles (for the
+            // tests).
+            const char* fault = std::getenv("POVWALL_FAULT_WORKER_EXIT_AFTER");
+            return distrib::serve_tiles(load_scene, o.render, 0, 1,
+                                        fault ? std::atoi(fault) : -1);
+        }
+        scene = load_scene();
+    } catch (const parser::ParseError& e) {
+        std::cerr << e.what() << "\n";
+        return 2;
     }
+    auto t1 = Clock::now();
     distrib::DistributionRequest request;
     request.mode = o.mode == "single"   ? distrib::RenderMode::Single
                    : o.mode == "space"  ? distrib::RenderMode::Space

@@ -29,16 +29,21 @@ int wait_child(pid_t pid, double seconds) {
     return status;
 }
 
-void maybe_inject_worker_kill(const std::vector<pid_t>& pids) {
+void maybe_inject_worker_fault(const std::vector<pid_t>& pids) {
     static std::atomic<bool> fired{false};
+    int signal = SIGKILL;
     const char* spec = std::getenv("POVWALL_FAULT_KILL_WORKER");
+    if (!spec) {
+        spec = std::getenv("POVWALL_FAULT_STOP_WORKER");
+        signal = SIGSTOP;
+    }
     int index = -1, ms = 0;
     if (!spec || std::sscanf(spec, "%d,%d", &index, &ms) != 2) return;
     if (index < 0 || size_t(index) >= pids.size() || fired.exchange(true)) return;
     const pid_t victim = pids[size_t(index)];
-    std::thread([victim, ms] {
+    std::thread([victim, ms, signal] {
         std::this_thread::sleep_for(std::chrono::milliseconds(ms));
-        kill(victim, SIGKILL);
+        kill(victim, signal);
     }).detach();
 }
 

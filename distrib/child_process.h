@@ -19,7 +19,9 @@ std::string describe_exit_status(int status);
 
 // Fault injection for the recovery tests: with POVWALL_FAULT_KILL_WORKER="I,MS" in the
 // environment, worker I of `pids` (the worker processes just started) is SIGKILLed MS
-// milliseconds from now, once per process (a retry is not hit again).
-void maybe_inject_worker_kill(const std::vector<pid_t>& pids);
+// milliseconds from now (it dies); with POVWALL_FAULT_STOP_WORKER="I,MS" it is sent
+// SIGSTOP (it hangs: alive, pipes and sockets open, silent). Once per process: a retry
+// is not hit again.
+void maybe_inject_worker_fault(const std::vector<pid_t>& pids);
 
 }  // namespace povwall::distrib

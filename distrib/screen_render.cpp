@@ -1,6 +1,7 @@
 #include "distrib/screen_render.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -13,6 +14,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <mutex>
 #include <thread>
 
@@ -24,7 +26,9 @@ extern char** environ;
 namespace povwall::distrib {
 namespace {
 
-constexpr uint32_t kReplyMagic = 0x70775331;  // "pwS1": protocol version 1
+constexpr uint32_t kReplyMagic = 0x70775331;      // "pwS1": protocol version 1
+constexpr uint32_t kHeartbeatMagic = 0x70774831;  // "pwH1": still rendering the tile
+constexpr double kHeartbeatSeconds = 1.0;
 
 struct TileRequest {
     int32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // x1 <= x0: stop
@@ -57,6 +61,26 @@ bool write_all(int fd, const void* data, size_t n) {
 
 bool read_all(int fd, void* data, size_t n) {
     return transfer_all(::read, fd, static_cast<char*>(data), n);
+}
+
+enum class ReadStatus { Ok, Closed, Silent };
+
+// read_all, but a worker that sends nothing for `seconds` is Silent (hung or stopped).
+ReadStatus read_within(int fd, void* data, size_t n, double seconds) {
+    char* p = static_cast<char*>(data);
+    while (n) {
+        pollfd pfd{fd, POLLIN, 0};
+        const int ready = ::poll(&pfd, 1, int(seconds * 1000));
+        if (ready < 0 && errno == EINTR) continue;
+        if (ready == 0) return ReadStatus::Silent;
+        if (ready < 0) return ReadStatus::Closed;
+        ssize_t done = ::read(fd, p, n);
+        if (done < 0 && errno == EINTR) continue;
+        if (done <= 0) return ReadStatus::Closed;
+        p += done;
+        n -= size_t(done);
+    }
+    return ReadStatus::Ok;
 }
 
 struct Worker {
@@ -185,7 +209,7 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
             workers.push_back(spawn_worker(options.worker_command));
         std::vector<pid_t> pids;
         for (const Worker& w : workers) pids.push_back(w.pid);
-        maybe_inject_worker_kill(pids);
+        maybe_inject_worker_fault(pids);
     } catch (const ScreenError& e) {
         error = e.what();
     }
@@ -195,6 +219,7 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
     TilePool pool(tiles);
     if (!error.empty()) pool.stop();
     std::vector<std::string> lost;  // workers whose tiles went to the others
+    std::vector<char> hung;         // killed for silence: their exit status says nothing
     std::mutex mutex;
     ScreenStats local;
     local.tiles = tiles;
@@ -203,7 +228,16 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
         Worker& w = workers[wi];
         std::vector<float> pixels;
         TileReply ready;
-        bool ok = read_all(w.from, &ready, sizeof ready) && ready.magic == kReplyMagic;
+        ReadStatus st = ReadStatus::Ok;
+        // An answer: heartbeats (each within the timeout) until the real one.
+        auto read_reply = [&](TileReply& reply) {
+            for (;;) {
+                st = read_within(w.from, &reply, sizeof reply, options.heartbeat_timeout);
+                if (st != ReadStatus::Ok || reply.magic != kHeartbeatMagic) return;
+            }
+        };
+        read_reply(ready);  // the scene is parsed and prepared
+        bool ok = st == ReadStatus::Ok && ready.magic == kReplyMagic;
         uint64_t counts[4] = {0, 0, 0, 0};
         int t = -1;
         while (ok && (t = pool.take()) >= 0) {
@@ -213,14 +247,17 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
             rq.x1 = std::min(rq.x0 + T, c1);
             rq.y1 = std::min(rq.y0 + T, r1);
             TileReply reply;
-            ok = write_all(w.to, &rq, sizeof rq) &&
-                 read_all(w.from, &reply, sizeof reply) && reply.magic == kReplyMagic &&
+            ok = write_all(w.to, &rq, sizeof rq);
+            if (ok) read_reply(reply);
+            ok = ok && st == ReadStatus::Ok && reply.magic == kReplyMagic &&
                  reply.x0 == rq.x0 && reply.y0 == rq.y0 && reply.x1 == rq.x1 &&
                  reply.y1 == rq.y1;
             const int tw = rq.x1 - rq.x0;
             if (ok) {
                 pixels.resize(size_t(tw) * (rq.y1 - rq.y0) * 4);
-                ok = read_all(w.from, pixels.data(), pixels.size() * sizeof(float));
+                st = read_within(w.from, pixels.data(), pixels.size() * sizeof(float),
+                                 options.heartbeat_timeout);
+                ok = st == ReadStatus::Ok;
             }
             if (!ok) {
                 if (options.recover)
@@ -251,6 +288,9 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
             TileRequest stop;
             write_all(w.to, &stop, sizeof stop);
         }
+        // Hung (stopped, looping, deadlocked): it will not exit on its own.
+        const bool silent = !ok && st == ReadStatus::Silent;
+        if (silent) kill(w.pid, SIGKILL);
         close(w.to);
         close(w.from);
         std::lock_guard<std::mutex> lock(mutex);
@@ -259,8 +299,14 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
         local.refracted += counts[2];
         local.shadow += counts[3];
         if (!ok) {
-            const std::string who = "screen worker " + std::to_string(wi + 1) + " (pid " +
-                                    std::to_string(w.pid) + ") stopped answering";
+            char seconds[32];
+            std::snprintf(seconds, sizeof seconds, "%g", options.heartbeat_timeout);
+            const std::string who =
+                "screen worker " + std::to_string(wi + 1) + " (pid " +
+                std::to_string(w.pid) + ") " +
+                (silent ? std::string("sent nothing for ") + seconds + " s (hung): killed"
+                        : std::string("stopped answering"));
+            if (silent) hung[wi] = true;
             if (options.recover)
                 lost.push_back(who);
             else if (error.empty())
@@ -268,6 +314,7 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
         }
     };
     std::vector<std::thread> threads;
+    hung.assign(workers.size(), false);
     for (size_t i = 0; i < workers.size(); ++i) threads.emplace_back(serve, i);
     for (auto& t : threads) t.join();
     // Every worker that could still render is out of tiles: what is left had nobody.
@@ -276,7 +323,7 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
     for (size_t i = 0; i < workers.size(); ++i) {
         // Every tile is in (or the job failed): a worker gets 10 s to exit on its own.
         const int status = wait_child(workers[i].pid, 10.0);
-        const bool clean = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+        const bool clean = hung[i] || (WIFEXITED(status) && WEXITSTATUS(status) == 0);
         const std::string pid = "(pid " + std::to_string(workers[i].pid) + ")";
         if (!clean && error.find(pid) != std::string::npos)
             error += ": " + describe_exit_status(status);
@@ -298,11 +345,66 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
     return image;
 }
 
-int serve_tiles(const Scene& scene, const trace::RenderSettings& settings, int in_fd,
-                int out_fd, int exit_after_tiles) {
+namespace {
+
+// While a tile renders, a heartbeat every second tells the coordinator this worker is
+// alive (a tile may take long). Only then: between tiles nobody reads the pipe.
+class Heartbeat {
+  public:
+    Heartbeat(int fd, std::mutex& write_mutex)
+        : fd_(fd), write_mutex_(write_mutex), thread_([this] { run(); }) {}
+    ~Heartbeat() {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            quit_ = true;
+        }
+        wake_.notify_all();
+        thread_.join();
+    }
+    void set_rendering(bool on) {  // with write_mutex held
+        rendering_ = on;
+    }
+
+  private:
+    void run() {
+        std::unique_lock<std::mutex> lock(mutex_);
+        while (!wake_.wait_for(lock, std::chrono::duration<double>(kHeartbeatSeconds),
+                               [this] { return quit_; })) {
+            std::lock_guard<std::mutex> write(write_mutex_);
+            if (!rendering_) continue;
+            TileReply beat;
+            beat.magic = kHeartbeatMagic;
+            write_all(fd_, &beat, sizeof beat);
+        }
+    }
+    const int fd_;
+    std::mutex& write_mutex_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    bool quit_ = false;
+    bool rendering_ = false;  // guarded by write_mutex_
+    std::thread thread_;
+};
+
+}  // namespace
+
+int serve_tiles(const std::function<Scene()>& load_scene,
+                const trace::RenderSettings& settings, int in_fd, int out_fd,
+                int exit_after_tiles) {
+    std::mutex write_mutex;  // replies and heartbeats never interleave
+    Heartbeat heartbeat(out_fd, write_mutex);
+    {
+        std::lock_guard<std::mutex> lock(write_mutex);
+        heartbeat.set_rendering(true);  // parsing and preparing: busy too
+    }
+    const Scene scene = load_scene();
     trace::TileRenderer renderer(scene, settings);
-    TileReply ready;
-    if (!write_all(out_fd, &ready, sizeof ready)) return 1;
+    {
+        std::lock_guard<std::mutex> lock(write_mutex);
+        heartbeat.set_rendering(false);
+        TileReply ready;
+        if (!write_all(out_fd, &ready, sizeof ready)) return 1;
+    }
     std::vector<float> pixels;
     for (;;) {
         TileRequest rq;
@@ -313,7 +415,13 @@ int serve_tiles(const Scene& scene, const trace::RenderSettings& settings, int i
             rq.y1 < rq.y0)
             return 1;
         pixels.resize(size_t(rq.x1 - rq.x0) * (rq.y1 - rq.y0) * 4);
+        {
+            std::lock_guard<std::mutex> lock(write_mutex);
+            heartbeat.set_rendering(true);
+        }
         renderer.render(rq.x0, rq.y0, rq.x1, rq.y1, pixels.data());
+        std::lock_guard<std::mutex> lock(write_mutex);
+        heartbeat.set_rendering(false);
         TileReply reply;
         reply.x0 = rq.x0;
         reply.y0 = rq.y0;

@@ -3,10 +3,12 @@
 // tile and no core idles at the end of a frame (the way PVMPOV and MPI-POVRay work).
 //
 // Workers are local processes talking over pipes: the coordinator writes a TileRequest to
-// a worker's stdin and reads the TileReply (header + RGBA floats) from its stdout.
+// a worker's stdin and reads the TileReply (header + RGBA floats) from its stdout; a busy
+// worker sends heartbeats, so one that hangs is found within seconds.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,8 +24,12 @@ struct ScreenOptions {
     std::vector<std::string> worker_command;
     int workers = 2;
     int tile = 32;  // tile side in pixels
-    // A worker that dies: its tile goes to the others (true) or the render stops (false).
+    // A worker that dies or hangs: its tile goes to the others (true) or the render stops
+    // (false).
     bool recover = true;
+    // A busy worker (parsing, preparing, rendering a tile) sends a heartbeat every
+    // second; silent this long, it is hung and killed.
+    double heartbeat_timeout = 4.0;
 };
 
 struct ScreenStats {
@@ -43,10 +49,13 @@ struct ScreenError : std::runtime_error {
 Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& options,
                     ScreenStats* stats = nullptr);
 
-// Worker: prepares `scene` once, then answers tile requests from `in_fd` on `out_fd`
-// until told to stop. Returns the process exit code. `exit_after_tiles` >= 0 makes it
-// exit with code 3 after that many tiles (fault injection for the tests).
-int serve_tiles(const Scene& scene, const trace::RenderSettings& settings, int in_fd,
-                int out_fd, int exit_after_tiles = -1);
+// Worker: loads the scene (`load_scene`, whose exceptions pass through) and prepares it
+// once, then answers tile requests from `in_fd` on `out_fd` until told to stop, with
+// heartbeats on `out_fd` whenever it is busy. Returns the process exit code.
+// `exit_after_tiles` >= 0 makes it exit with code 3 after that many tiles (fault
+// injection for the tests).
+int serve_tiles(const std::function<Scene()>& load_scene,
+                const trace::RenderSettings& settings, int in_fd, int out_fd,
+                int exit_after_tiles = -1);
 
 }  // namespace povwall::distrib

@@ -10,12 +10,14 @@
 // Protocol (all frames: distrib/message.h header, version checked, body <= kMaxBodySize):
 //   peer -> worker    Control hello {token, from: index or -1}: first frame, else closed
 //   coord -> worker   Control job (scene source, walls, box owners, worker addresses)
+//   worker -> coord   Control busy every second while parsing and building its boxes
 //   worker -> coord   Control ready (primitive count per hosted box)
 //   coord -> worker   Control start (which boxes are empty), then Items (camera rays)
 //   worker -> worker  Items (rays and results for the receiver's boxes)
 //   worker -> coord   Control status (items created/finished) every 10 ms: heartbeat, flow
 //                     control, and the answer to probes (termination waves)
 //   coord -> worker   Control finish; worker -> coord Pixels (sums), then Control done
+//   coord -> worker   Control frame (new animation values): the next frame, from "busy"
 // clang-format on
 #include <signal.h>
 #include <sys/wait.h>
@@ -29,6 +31,7 @@
 #include <cstdio>
 #include <cstring>
 #include <deque>
+#include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <random>
@@ -358,7 +361,7 @@ tcp::endpoint resolve(asio::io_context& io, const std::string& address) {
 class Worker {
   public:
     explicit Worker(const WorkerOptions& options)
-        : options_(options), acceptor_(io_), status_timer_(io_) {}
+        : options_(options), acceptor_(io_), status_timer_(io_), busy_timer_(io_) {}
 
     int run() {
         tcp::endpoint ep = resolve(io_, options_.listen);
@@ -372,6 +375,7 @@ class Worker {
         std::fflush(stdout);
         accept();
         io_.run();
+        if (preparing_.joinable()) preparing_.join();
         if (host_) host_->stop();
         if (render_.joinable()) render_.join();
         return exit_code_;
@@ -451,8 +455,12 @@ class Worker {
         job_ = j;
         owner_ = j.at("owner").get<std::vector<int>>();
         self_ = j.at("index").get<int>();
-        if (!prepare()) return;
-        const auto addresses = j.at("workers").get<std::vector<std::string>>();
+        prepare_then([this] { connect_peers(); });
+    }
+
+    // After the first frame's preparation: connect to every other worker, then ready.
+    void connect_peers() {
+        const auto addresses = job_.at("workers").get<std::vector<std::string>>();
         peers_.resize(addresses.size());
         for (size_t i = 0; i < addresses.size(); ++i)
             outboxes_.push_back(std::make_unique<Outbox>());
@@ -495,15 +503,44 @@ class Worker {
             return fail_job("a frame before the previous one finished");
         job_["animation"] = j.at("animation");
         done_ = false;
-        if (prepare()) coordinator_->send(control_frame(ready_message()));
+        prepare_then([this] { coordinator_->send(control_frame(ready_message())); });
+    }
+
+    // Parsing and building the boxes run beside the io thread, which meanwhile tells the
+    // coordinator every second that this worker is busy, not hung; `next` runs on the io
+    // thread when they succeed.
+    void prepare_then(std::function<void()> next) {
+        busy_ = true;
+        busy_beat();
+        preparing_ = std::thread([this, next = std::move(next)] {
+            std::string error;
+            const bool ok = prepare(error);
+            asio::post(io_, [this, ok, error, next] {
+                busy_ = false;
+                busy_timer_.cancel();
+                preparing_.join();
+                if (!ok) return fail_job(error);
+                next();
+            });
+        });
+    }
+
+    void busy_beat() {
+        busy_timer_.expires_after(std::chrono::seconds(1));
+        busy_timer_.async_wait([this](boost::system::error_code ec) {
+            if (ec || !busy_ || !coordinator_) return;
+            coordinator_->send(control_frame({{"type", "busy"}}));
+            busy_beat();
+        });
     }
 
     void fail_job(const std::string& message) {
         coordinator_->send(control_frame({{"type", "error"}, {"message", message}}));
     }
 
-    // Parses the scene at the job's animation values and builds this worker's boxes.
-    bool prepare() {
+    // Parses the scene at the job's animation values and builds this worker's boxes (off
+    // the io thread: sends nothing; false with `error` set on a parse error).
+    bool prepare(std::string& error) {
         const json& j = job_;
         parser::ParseOptions popts;
         popts.image_reader = options_.image_reader;
@@ -525,8 +562,8 @@ class Worker {
         try {
             scene_ = parser::parse_scene_text(j.at("scene").get<std::string>(),
                                               j.at("name").get<std::string>(), popts);
-        } catch (const parser::ParseError& e) {
-            fail_job(e.what());
+        } catch (const std::exception& e) {
+            error = e.what();
             return false;
         }
         if (!j.at("max_trace_level").is_null())
@@ -660,7 +697,9 @@ class Worker {
     WorkerOptions options_;
     asio::io_context io_;
     tcp::acceptor acceptor_;
-    asio::steady_timer status_timer_;
+    asio::steady_timer status_timer_, busy_timer_;
+    std::thread preparing_;
+    bool busy_ = false;  // io thread only
     std::shared_ptr<Connection> coordinator_;
     std::vector<std::shared_ptr<Connection>> incoming_, peers_;
     std::vector<std::unique_ptr<Outbox>> outboxes_;
@@ -758,13 +797,14 @@ class TcpCoordinator {
         : tcp_(tcp_options), fixed_(std::move(fixed)), timer_(io_) {}
 
     ~TcpCoordinator() {
+        // Failed: take the job down (before closing, so no worker reports the close).
+        if (failed_ || in_frame_) {
+            for (const LocalWorker& l : local_) kill(l.pid, SIGKILL);
+        }
         for (auto& w : workers_) {
             if (w.conn) w.conn->close();  // workers between frames exit on their own
         }
-        for (const LocalWorker& l : local_) {
-            if (failed_ || in_frame_) kill(l.pid, SIGKILL);  // failed: take the job down
-            wait_child(l.pid, 10.0);
-        }
+        for (const LocalWorker& l : local_) wait_child(l.pid, 10.0);
     }
 
     const json& fixed() const { return fixed_; }
@@ -859,7 +899,7 @@ class TcpCoordinator {
             }
             std::vector<pid_t> pids;
             for (const LocalWorker& l : local_) pids.push_back(l.pid);
-            maybe_inject_worker_kill(pids);
+            maybe_inject_worker_fault(pids);
         }
         if (addresses.empty()) throw DistribError("no workers");
         // Walls stay for the whole sequence: the outer boxes are unbounded, so any
@@ -932,9 +972,8 @@ class TcpCoordinator {
                 double silent =
                     std::chrono::duration<double>(Clock::now() - workers_[i].last_seen)
                         .count();
-                // Parsing and preparing may take long before the start; then 10 ms beats.
-                const double limit = started_ ? tcp_.heartbeat_timeout : 120.0;
-                if (!workers_[i].done && silent > limit) {
+                // Status every 10 ms while tracing, "busy" every second while preparing.
+                if (!workers_[i].done && silent > tcp_.heartbeat_timeout) {
                     return fail(int(i),
                                 "no message for " + std::to_string(int(silent)) + " s");
                 }

@@ -115,7 +115,10 @@ class ExpressionParser {
     // POV-Ray's Parse_Float/Parse_Vector read only sums of terms (no comparisons, logic
     // or
     // ?: outside parentheses), which is what lets `box { <a> <b> }` read two vectors.
-    Value parse() { return full_ ? ternary() : additive(); }
+    Value parse() {
+        NestingGuard guard(in_, in_.peek());
+        return full_ ? ternary() : additive();
+    }
 
   private:
     static bool numeric(const Value& v) { return std::holds_alternative<Numeric>(v); }

@@ -21,6 +21,9 @@ constexpr int kMaxIncludeDepth =
 constexpr int kMaxMacroDepth =
     1000;  // recursion guard (POV-Ray's symbol table limit is 100)
 constexpr size_t kMaxArrayItems = 1u << 28;
+// Expressions, objects and patterns nested inside each other; far beyond any real scene,
+// well within the stack (sanitizer builds included).
+constexpr int kMaxNesting = 256;
 
 // Composes `t` into every pattern transform of the layers (textures move with objects).
 void transform_textures(LayeredTexture& layers, const Transform& t);
@@ -215,6 +218,11 @@ class Interpreter {
     int version_ = 362;
     bool version_set_ = false;
     int macro_depth_ = 0;
+    // Expressions, objects and patterns inside each other (parentheses, vectors, CSG,
+    // pigment maps, an object in an expression through a loop that never closes it):
+    // recursion on the C++ stack.
+    int nesting_depth_ = 0;
+    friend class NestingGuard;
     bool camera_seen_ = false;
     Texture default_texture_;
     std::string scene_dir_;
@@ -222,6 +230,25 @@ class Interpreter {
     std::vector<std::string> element_names_;  // rotating names bound to array elements
     size_t next_element_name_ = 0;
     friend class ExpressionParser;
+};
+
+// Counts one level of nesting for its lifetime; past kMaxNesting, a located error
+// instead of a stack overflow.
+class NestingGuard {
+  public:
+    NestingGuard(Interpreter& in, const Token& at) : in_(in) {
+        if (++in_.nesting_depth_ > kMaxNesting) {
+            --in_.nesting_depth_;
+            in_.error(at, "expressions, objects or patterns nested too deeply (limit " +
+                              std::to_string(kMaxNesting) + ")");
+        }
+    }
+    ~NestingGuard() { --in_.nesting_depth_; }
+    NestingGuard(const NestingGuard&) = delete;
+    NestingGuard& operator=(const NestingGuard&) = delete;
+
+  private:
+    Interpreter& in_;
 };
 
 }  // namespace povwall::parser

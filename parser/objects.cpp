@@ -246,6 +246,7 @@ void Interpreter::parse_object_modifiers(Object& obj) {
 
 bool Interpreter::try_parse_object(const Token& t, Object& out) {
     if (t.kind != TokenKind::Word) return false;
+    NestingGuard guard(*this, t);
     std::string_view w = t.text;
     if (is_unsupported_shape(w)) unsupported(t, w);
     out = Object{};

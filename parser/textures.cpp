@@ -369,6 +369,7 @@ Pigment Interpreter::parse_pigment_block() {
 // The inside of `pigment { ... }`, also the entries of a pigment_map (ending at ']').
 void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
     const Token& first = peek();
+    NestingGuard guard(*this, first);  // maps of maps of ...
     if (first.kind == TokenKind::Word) {
         const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Pigment>>(*v)) {
@@ -466,6 +467,7 @@ Normal Interpreter::parse_normal_block() {
 // The inside of `normal { ... }`, also a normal_map entry (ending at ']').
 void Interpreter::parse_normal_body(Normal& n, char terminator) {
     const Token& first = peek();
+    NestingGuard guard(*this, first);  // maps of maps of ...
     if (first.kind == TokenKind::Word) {
         const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<Normal>>(*v)) {
@@ -699,6 +701,7 @@ LayeredTexture Interpreter::parse_texture_block() {
 // The inside of `texture { ... }`; also a texture_map entry (ending at ']').
 void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
     const Token& first = peek();
+    NestingGuard guard(*this, first);  // maps of maps of ...
     if (first.kind == TokenKind::Word) {
         const Value* v = lookup(first);
         if (v && std::holds_alternative<std::shared_ptr<LayeredTexture>>(*v)) {

@@ -4,6 +4,7 @@
 // depend on finding worker processes from outside.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <random>
 
 #include "tests/cli/run_povwall.h"
@@ -45,6 +46,49 @@ TEST_P(Recovery, WorkerKilledAtARandomMomentGivesTheUndisturbedImage) {
     if (!said.empty()) {
         EXPECT_NE(said.find("went to the other workers"), std::string::npos) << what;
     }
+}
+
+// A worker that hangs (SIGSTOP: alive, pipes and sockets open, silent) at a random
+// moment, while parsing or tracing: it is found by its missing heartbeats within the 4 s
+// timeout, killed, and its work goes to the others.
+TEST_P(Recovery, WorkerHungAtARandomMomentIsFoundKilledAndGivesTheUndisturbedImage) {
+    const std::string scene = std::string(POVWALL_SOURCE_DIR) + "/scenes/demo/walls.pov";
+    const fs::path alone = scratch() / "alone-h.exr", hung = scratch() / "hung.exr";
+    ASSERT_EQ(
+        run("render " + scene + " -W 320 -H 240 -q --mode single -o " + alone.string())
+            .code,
+        0);
+    std::random_device rd;
+    const int worker = std::uniform_int_distribution<int>(0, 2)(rd);
+    const int delay_ms = std::uniform_int_distribution<int>(0, 150)(rd);
+    const std::string fault = "POVWALL_FAULT_STOP_WORKER=" + std::to_string(worker) +
+                              "," + std::to_string(delay_ms);
+    const fs::path err = scratch() / "hung.err";
+    const auto t0 = std::chrono::steady_clock::now();
+    const int status =
+        std::system((fault + " " + std::string(POVWALL_BINARY) + " render " + scene +
+                     " -W 320 -H 240 -q " + GetParam() + " -o " + hung.string() + " 2>" +
+                     err.string())
+                        .c_str());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const std::string what = "worker " + std::to_string(worker) + " stopped after " +
+                             std::to_string(delay_ms) + " ms: " + slurp(err);
+    ASSERT_EQ(WEXITSTATUS(status), 0) << what;
+    RunResult d =
+        run("diff " + alone.string() + " " + hung.string() + " --max-rmse 1e-6");
+    EXPECT_EQ(d.code, 0) << what << d.out;
+    const std::string said = slurp(err);
+    if (!said.empty()) {
+        EXPECT_TRUE(said.find("sent nothing for 4 s (hung): killed") !=
+                        std::string::npos ||
+                    said.find("no message for 4 s") != std::string::npos)
+            << what;
+        EXPECT_NE(said.find("went to the other workers"), std::string::npos) << what;
+        EXPECT_EQ(said.find("coordinator lost"), std::string::npos) << what;
+    }
+    // Not a speed bar: a hang must not wait for a parse-sized timeout (minutes).
+    EXPECT_LT(seconds, 60.0) << what;
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, Recovery,

@@ -307,6 +307,44 @@ TEST(Errors, DeepMacroRecursionElidesMiddleNotes) {
     EXPECT_EQ(error_of("#macro M()\n  M()\n#end\nM()"), expected);
 }
 
+std::string first_line(const std::string& scene) {
+    const std::string e = error_of(scene);
+    return e.substr(0, e.find('\n'));
+}
+
+std::string repeat(const std::string& s, int n) {
+    std::string out;
+    for (int i = 0; i < n; ++i) out += s;
+    return out;
+}
+
+// Deep nesting is recursion on the stack: a located error at level 257, not a crash (the
+// scene fuzzer's stack overflows: parentheses, CSG, pigment maps, and an object inside a
+// vector through a #while whose #end lands in the middle of it).
+TEST(Errors, DeepNestingIsALocatedErrorNotAStackOverflow) {
+    EXPECT_EQ(parse("#declare X = " + repeat("(", 255) + "1" + repeat(")", 255) + ";")
+                  .objects.size(),
+              0u);
+    EXPECT_EQ(
+        first_line("#declare X = " + repeat("(", 300) + "1" + repeat(")", 300) + ";"),
+        "test.pov:1:270: error: expressions, objects or patterns nested too deeply "
+        "(limit 256)");
+    EXPECT_EQ(
+        first_line(repeat("union { ", 300) + "sphere { 0, 1 }" + repeat(" }", 300)),
+        "test.pov:1:2049: error: expressions, objects or patterns nested too deeply "
+        "(limit 256)");
+    EXPECT_EQ(
+        first_line("#declare P = pigment { " +
+                   repeat("gradient x pigment_map { [0 ", 3000) + "rgb 1" +
+                   repeat(" ] }", 3000) + " };"),
+        "test.pov:1:7145: error: expressions, objects or patterns nested too deeply "
+        "(limit 256)");
+    EXPECT_EQ(first_line("mesh {\n#declare I = 0;\n#while (I < 24)\n"
+                         "  triangle { <0, 0, 0>, <1, 0, 0>, <cos(I), 1, 0 #end\n"),
+              "test.pov:4:14: error: expressions, objects or patterns nested too deeply "
+              "(limit 256)");
+}
+
 TEST(Errors, UnsupportedFeatureIsNamed) {
     try {
         parse("text { ttf \"a.ttf\" \"x\" 1, 0 }");
