@@ -15,6 +15,8 @@ int run_worker_command(int argc, char** argv) {
     app.add_option("--token", w.token, "job token a coordinator must present")
         ->required();
     app.add_option("--threads", w.threads, "render threads (0: all cores)");
+    app.add_flag("--once", w.once,
+                 "exit after one job (default: serve jobs until killed)");
     // Fault injection for the tests: the process dies or hangs after handling N work
     // items.
     app.add_option("--die-after-items", w.die_after_items)->group("");

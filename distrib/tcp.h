@@ -45,10 +45,10 @@ struct TcpOptions {
     std::string worker_binary;         // the povwall binary to start (procs > 0)
     double heartbeat_timeout =
         4.0;  // seconds without a message: dead (checked every 0.25 s)
-    // A local worker (procs > 1) that dies, disconnects or goes silent: its boxes are
-    // given to the remaining worker processes and the frame is traced again, so the image
-    // is the one an undisturbed render gives. Off: the render stops with the worker
-    // named.
+    // A worker that dies, disconnects or goes silent: its boxes are given to the
+    // remaining workers (procs - 1 new local processes, or the other running --workers)
+    // and the frame is traced again, so the image is the one an undisturbed render gives.
+    // Off: the render stops with the worker named.
     bool recover = true;
 };
 
@@ -58,7 +58,9 @@ struct DistribError : std::runtime_error {
 };
 // A worker was lost (died, disconnected, went silent), as opposed to a job it refused.
 struct WorkerLost : DistribError {
-    using DistribError::DistribError;
+    explicit WorkerLost(const std::string& what, int index = -1)
+        : DistribError(what), worker(index) {}
+    int worker;  // its index among the coordinator's workers; -1: not known
 };
 
 class TcpCoordinator;
@@ -108,10 +110,13 @@ struct WorkerOptions {
     // Fault injection for the tests, after this many items: the process exits (dies), or
     // stops itself with SIGSTOP (hangs: alive, connected, silent).
     long die_after_items = -1, hang_after_items = -1;
+    // Serve one job and exit (the processes a coordinator starts itself); otherwise the
+    // worker serves one job after another until it is killed.
+    bool once = false;
 };
 
-// Serves one job (a sequence of frames) and returns the exit code (0 when the coordinator
-// closes the connection after a finished frame).
+// Serves jobs (each a sequence of frames) and returns the exit code; with `once`, after
+// the first job: 0 when the coordinator closed the connection after a finished frame.
 int run_worker(const WorkerOptions& options);
 
 // A control frame (JSON text) as the protocol sends it, e.g. for tests that speak to a

@@ -417,9 +417,8 @@ class Worker {
                 if (!done_) {
                     std::fprintf(stderr, "povwall worker: coordinator lost: %s\n",
                                  why.c_str());
-                    exit_code_ = 3;
                 }
-                io_.stop();
+                end_job(done_);
             };
         } else if (from >= 0) {
             incoming_.push_back(conn);
@@ -512,17 +511,19 @@ class Worker {
     void prepare_then(std::function<void()> next) {
         busy_ = true;
         busy_beat();
-        preparing_ = std::thread([this, next = std::move(next)] {
-            std::string error;
-            const bool ok = prepare(error);
-            asio::post(io_, [this, ok, error, next] {
-                busy_ = false;
-                busy_timer_.cancel();
-                preparing_.join();
-                if (!ok) return fail_job(error);
-                next();
+        preparing_ =
+            std::thread([this, next = std::move(next), generation = generation_.load()] {
+                std::string error;
+                const bool ok = prepare(error);
+                asio::post(io_, [this, ok, error, next, generation] {
+                    if (generation != generation_) return;  // the job ended meanwhile
+                    busy_ = false;
+                    busy_timer_.cancel();
+                    preparing_.join();
+                    if (!ok) return fail_job(error);
+                    next();
+                });
             });
-        });
     }
 
     void busy_beat() {
@@ -618,9 +619,43 @@ class Worker {
     }
 
     void post(int worker, Buffer buf) {
-        asio::post(io_, [this, worker, buf] {
-            if (peers_[worker]) peers_[worker]->send(buf);
+        asio::post(io_, [this, worker, buf, generation = generation_.load()] {
+            if (generation == generation_ && peers_[worker]) peers_[worker]->send(buf);
         });
+    }
+
+    // The coordinator closed its connection: after a finished frame (the job is over) or
+    // in the middle (it failed, or gave this job up after losing another worker). With
+    // --once the process ends; otherwise everything of the job goes and the worker waits
+    // for the next coordinator, so a render that lost one worker can retry on the others.
+    void end_job(bool finished) {
+        if (options_.once) {
+            if (!finished) exit_code_ = 3;
+            io_.stop();
+            return;
+        }
+        ++generation_;  // handlers posted for this job do nothing now
+        if (host_) host_->stop();
+        if (render_.joinable()) render_.join();
+        if (preparing_.joinable()) preparing_.join();
+        status_timer_.cancel();
+        busy_timer_.cancel();
+        busy_ = false;
+        for (auto& c : incoming_) c->close();
+        for (auto& c : peers_) {
+            if (c) c->close();
+        }
+        incoming_.clear();
+        peers_.clear();
+        outboxes_.clear();
+        host_.reset();
+        numbers_.reset();
+        scene_ = Scene{};
+        job_ = json();
+        owner_.clear();
+        mine_.clear();
+        done_ = false;
+        coordinator_.reset();
     }
 
     void items(Frame& f) {
@@ -713,6 +748,7 @@ class Worker {
     int self_ = 0, threads_ = 1;
     std::thread render_;
     std::atomic<long> processed_{0};
+    std::atomic<uint64_t> generation_{0};  // jobs served: stale handlers check it
     bool done_ = false;
     int exit_code_ = 0;
 };
@@ -737,7 +773,7 @@ LocalWorker spawn_worker(const std::string& binary, const std::string& token,
         close(fds[1]);
         std::string t = std::to_string(threads);
         execl(binary.c_str(), "povwall", "worker", "--listen", "127.0.0.1:0", "--token",
-              token.c_str(), "--threads", t.c_str(), (char*)nullptr);
+              token.c_str(), "--threads", t.c_str(), "--once", (char*)nullptr);
         _exit(127);
     }
     close(fds[1]);
@@ -851,7 +887,7 @@ class TcpCoordinator {
         io_.restart();
         io_.run();
         if (failed_) {
-            if (lost_) throw WorkerLost(error_);
+            if (lost_) throw WorkerLost(error_, lost_worker_);
             throw DistribError(error_);
         }
         in_frame_ = false;
@@ -926,7 +962,8 @@ class TcpCoordinator {
             if (ec) {
                 failed_ = true;
                 throw WorkerLost("cannot connect to worker " + std::to_string(i) + " (" +
-                                 w.address + "): " + ec.message());
+                                     w.address + "): " + ec.message(),
+                                 i);
             }
             w.conn = std::make_shared<Connection>(std::move(socket), w.address);
             w.conn->on_frame = [this, i](Frame& f) { from_worker(i, f); };
@@ -960,6 +997,7 @@ class TcpCoordinator {
         if (failed_) return;
         failed_ = true;
         lost_ = lost;
+        lost_worker_ = i;
         error_ = describe(i) + ": " + why;
         io_.stop();
     }
@@ -1132,6 +1170,7 @@ class TcpCoordinator {
     long wave_seq_ = 0;
     int frames_ = 0;
     bool failed_ = false, lost_ = false;
+    int lost_worker_ = -1;
     std::string error_;
 };
 
@@ -1164,9 +1203,22 @@ Image TcpSession::render(const Scene& scene, const SceneSource& source,
             return coordinator_->render(scene, source, settings, options, stats);
         } catch (const WorkerLost& e) {
             retire();
-            // Only processes this render started can be replaced; running --workers are
-            // someone else's.
-            if (!tcp_.recover || tcp_.procs <= 1 || !tcp_.workers.empty()) throw;
+            if (!tcp_.recover) throw;
+            if (!tcp_.workers.empty()) {
+                // Running workers are someone else's: the lost one is left out, the
+                // others (back to waiting for a job) take its boxes.
+                if (e.worker < 0 || size_t(e.worker) >= tcp_.workers.size() ||
+                    tcp_.workers.size() <= 1)
+                    throw;
+                tcp_.workers.erase(tcp_.workers.begin() + e.worker);
+                std::fprintf(
+                    stderr,
+                    "povwall: %s: its boxes went to the other workers; the frame "
+                    "is traced again on %zu running worker%s\n",
+                    e.what(), tcp_.workers.size(), tcp_.workers.size() == 1 ? "" : "s");
+                continue;
+            }
+            if (tcp_.procs <= 1) throw;
             tcp_.procs -= 1;
             std::fprintf(stderr,
                          "povwall: %s: its boxes went to the other workers; the frame is "

@@ -211,8 +211,8 @@ TEST(Tcp, KilledWorkerIsNamedAndNoImageIsWritten) {
     fs::remove(out);
     RunResult r =
         run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 64 -H 48 -q -o " +
-            out.string() + " --boxes 2x2x2 --token k --workers " + a.address + "," +
-            b.address);
+            out.string() + " --boxes 2x2x2 --no-recover --token k --workers " +
+            a.address + "," + b.address);
     EXPECT_EQ(r.code, 3);
     EXPECT_EQ(r.err,
               "povwall: error: worker 0 (" + a.address +
@@ -228,8 +228,8 @@ TEST(Tcp, HungWorkerIsNamedWithinFiveSecondsAndNoImageIsWritten) {
     auto t0 = std::chrono::steady_clock::now();
     RunResult r =
         run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 64 -H 48 -q -o " +
-            out.string() + " --boxes 2x2x2 --token h --workers " + a.address + "," +
-            b.address);
+            out.string() + " --boxes 2x2x2 --no-recover --token h --workers " +
+            a.address + "," + b.address);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     EXPECT_EQ(r.code, 3);
@@ -238,6 +238,38 @@ TEST(Tcp, HungWorkerIsNamedWithinFiveSecondsAndNoImageIsWritten) {
     EXPECT_LT(seconds, 4.0 + 1.0 + 1.0);  // the silence, its detection, the render itself
     EXPECT_FALSE(fs::exists(out));
     stop_worker(a), stop_worker(b);
+}
+
+// Running workers (--workers) serve one job after another: when one dies, the others
+// drop the abandoned job, take the next one with its boxes, and the image is whole.
+TEST(Tcp, LostRunningWorkerIsLeftOutAndTheOthersFinishTheImage) {
+    Worker a = start_worker("r"), b = start_worker("r", "--die-after-items 300"),
+           c = start_worker("r");
+    const fs::path one = scratch() / "running-one.exr", out = scratch() / "running.exr";
+    ASSERT_EQ(run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 64 -H 48 -q -o " +
+                  one.string())
+                  .code,
+              0);
+    RunResult r =
+        run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 64 -H 48 -q -o " +
+            out.string() + " --boxes 3x1x1 --token r --workers " + a.address + "," +
+            b.address + "," + c.address);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err,
+              "povwall: worker 1 (" + b.address +
+                  ", box 1): disconnected (connection lost): its boxes went to the "
+                  "other workers; the frame is traced again on 2 running workers\n");
+    EXPECT_EQ(run("diff " + one.string() + " " + out.string() + " --max-rmse 1e-6").code,
+              0);
+    // The two that are left still serve jobs.
+    const fs::path again = scratch() / "running-again.exr";
+    r = run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 64 -H 48 -q -o " +
+            again.string() + " --boxes 2x1x1 --token r --workers " + a.address + "," +
+            c.address);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(
+        run("diff " + one.string() + " " + again.string() + " --max-rmse 1e-6").code, 0);
+    stop_worker(a), stop_worker(b), stop_worker(c);
 }
 
 }  // namespace
