@@ -141,6 +141,9 @@ class BoxHost {
     std::atomic<bool> stop_{false};
     std::atomic<int> next_pixel_{0};
     int total_pixels_ = 0;
+    // Progress (settings.progress): pixels sent, scaled by the share of items finished.
+    std::atomic<uint64_t> progress_reported_{0};
+    void report_progress();
     // Per thread: r, g, b, transmit per pixel, in double so that the order in which
     // contributions arrive does not show in the image.
     std::vector<std::vector<double>> accum_;

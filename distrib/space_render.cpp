@@ -1,5 +1,6 @@
 #include "distrib/space_render.h"
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -345,12 +346,18 @@ void BoxHost::worker(int thread, bool emit_camera) {
                 }
                 box.stats.peak_queue = std::max(box.stats.peak_queue, box.queue.size());
             }
+            uint64_t rays = 0;
             for (int budget = 0; budget < 4096 && !box.queue.empty(); ++budget) {
                 Item it = box.queue.pop();
+                rays += !it.is_result;
                 process(box, it, thread);
                 box.pending.fetch_sub(1, std::memory_order_release);
                 finished_.fetch_add(1, std::memory_order_acq_rel);
                 if (on_processed) on_processed();
+            }
+            if (settings_.progress) {
+                settings_.progress->rays += rays;
+                report_progress();
             }
             box.stats.busy_seconds +=
                 std::chrono::duration<double>(Clock::now() - t0).count();
@@ -374,6 +381,19 @@ void BoxHost::worker(int thread, bool emit_camera) {
     }
 }
 
+// A pixel is done when every ray it led to is; that is not tracked, so the pixels sent
+// count in the proportion of items finished to items created (exact at the end).
+void BoxHost::report_progress() {
+    const uint64_t created = created_.load(), finished = finished_.load();
+    if (!settings_.progress || created == 0) return;
+    const uint64_t sent = uint64_t(std::clamp(next_pixel_.load(), 0, total_pixels_));
+    const uint64_t done = uint64_t(double(sent) * double(finished) / double(created));
+    uint64_t before = progress_reported_.load();
+    while (done > before && !progress_reported_.compare_exchange_weak(before, done)) {
+    }
+    if (done > before) settings_.progress->pixels_done += done - before;
+}
+
 void BoxHost::run(int threads, bool emit_camera) {
     accum_.assign(threads, std::vector<double>(size_t(total_pixels_) * 4));
     std::vector<std::thread> pool;
@@ -381,6 +401,7 @@ void BoxHost::run(int threads, bool emit_camera) {
         pool.emplace_back(&BoxHost::worker, this, i, emit_camera);
     worker(0, emit_camera);
     for (auto& t : pool) t.join();
+    if (emit_camera) report_progress();
 }
 
 std::vector<double> BoxHost::pixel_sums() const {
@@ -416,6 +437,8 @@ Image render_space(const Scene& scene, const trace::RenderSettings& settings,
     std::vector<int> all(host.walls().box_count());
     for (size_t b = 0; b < all.size(); ++b) all[b] = int(b);
     host.build_boxes(all);
+    if (settings.progress)
+        settings.progress->pixels_total += uint64_t(settings.width) * settings.height;
     int threads = settings.threads > 0
                       ? settings.threads
                       : int(std::max(1u, std::thread::hardware_concurrency()));

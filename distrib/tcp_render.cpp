@@ -877,6 +877,9 @@ class TcpCoordinator {
         wave_pending_ = -1;
         last_wave_.clear();
         started_ = false;
+        progress_reported_ = 0;
+        if (settings.progress)
+            settings.progress->pixels_total += uint64_t(settings.width) * settings.height;
         for (WorkerState& w : workers_) {
             w.ready = w.done = false;
             w.created = w.finished = 0;
@@ -1056,7 +1059,12 @@ class TcpCoordinator {
             emit();
         } else if (type == "status") {
             w.created = j.at("created").get<uint64_t>();
-            w.finished = j.at("finished").get<uint64_t>();
+            const uint64_t finished = j.at("finished").get<uint64_t>();
+            // Progress: items (rays and results) the workers have finished.
+            if (settings_->progress && finished > w.finished)
+                settings_->progress->rays += finished - w.finished;
+            w.finished = finished;
+            report_progress();
             long seq = j.at("seq").get<long>();
             if (seq >= 0) {
                 w.wave_seq = seq;
@@ -1083,9 +1091,32 @@ class TcpCoordinator {
                 if (!o.done) return;
             }
             // The frame is whole; the workers wait for the next one (or the close).
+            if (settings_->progress) {
+                const uint64_t total = uint64_t(settings_->width) * settings_->height;
+                settings_->progress->pixels_done += total - progress_reported_;
+                progress_reported_ = total;
+            }
             in_frame_ = false;
             timer_.cancel();
             io_.stop();
+        }
+    }
+
+    // Pixels sent, in the proportion of items finished to items created (a pixel is done
+    // when every ray it led to is, which nobody tracks); exact at the end of the frame.
+    void report_progress() {
+        if (!settings_->progress) return;
+        uint64_t created = created_, finished = 0;
+        for (const WorkerState& w : workers_) {
+            created += w.created;
+            finished += w.finished;
+        }
+        if (created == 0) return;
+        const uint64_t done = uint64_t(double(next_pixel_) *
+                                       std::min(1.0, double(finished) / double(created)));
+        if (done > progress_reported_) {
+            settings_->progress->pixels_done += done - progress_reported_;
+            progress_reported_ = done;
         }
     }
 
@@ -1160,6 +1191,7 @@ class TcpCoordinator {
     std::vector<std::pair<uint64_t, uint64_t>> last_wave_;
     uint64_t created_ = 0;
     int next_pixel_ = 0;
+    uint64_t progress_reported_ = 0;
     long wave_pending_ = -1;
     bool started_ = false, in_frame_ = false;
     // The whole sequence.
