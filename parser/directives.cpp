@@ -14,6 +14,7 @@ namespace fs = std::filesystem;
 // ------------------------------------------------------------------ directives
 
 void Interpreter::run_directive(const Token& t) {
+    check_stack(t);
     const std::string_view d = t.text;
     if (d == "declare" || d == "local") return directive_declare(t, d == "local");
     if (d == "if") return directive_if(t, parse_condition() != 0);

@@ -223,6 +223,15 @@ class Interpreter {
     // recursion on the C++ stack.
     int nesting_depth_ = 0;
     friend class NestingGuard;
+
+  public:
+    // Directives inside directives and macros inside macros recurse too (a #declare whose
+    // value holds a #declare, a recursive macro with #local): past the stack this thread
+    // can spare, a located error instead of a crash.
+    void check_stack(const Token& at);
+
+  private:
+    uintptr_t stack_floor_ = 0;  // lowest frame address allowed; 0: unknown, no check
     bool camera_seen_ = false;
     Texture default_texture_;
     std::string scene_dir_;
@@ -237,6 +246,7 @@ class Interpreter {
 class NestingGuard {
   public:
     NestingGuard(Interpreter& in, const Token& at) : in_(in) {
+        in_.check_stack(at);
         if (++in_.nesting_depth_ > kMaxNesting) {
             --in_.nesting_depth_;
             in_.error(at, "expressions, objects or patterns nested too deeply (limit " +

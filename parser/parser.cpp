@@ -1,5 +1,7 @@
 #include "parser/parser.h"
 
+#include <pthread.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -28,7 +30,31 @@ void Interpreter::check_parse_time(const Token& at) {
     }
 }
 
+void Interpreter::check_stack(const Token& at) {
+    if (stack_floor_ && uintptr_t(__builtin_frame_address(0)) < stack_floor_)
+        error(at, "directives, macros and expressions nested too deeply for the stack");
+}
+
+namespace {
+
+// The lowest address this thread's stack may reach while parsing: its end plus room for
+// reporting an error (formatting the message, unwinding). 0 when unknown.
+uintptr_t stack_floor() {
+    pthread_attr_t attr;
+    if (pthread_getattr_np(pthread_self(), &attr) != 0) return 0;
+    void* low = nullptr;
+    size_t size = 0;
+    const int rc = pthread_attr_getstack(&attr, &low, &size);
+    pthread_attr_destroy(&attr);
+    constexpr size_t kReserve = 512 << 10;
+    if (rc != 0 || size < 2 * kReserve) return 0;
+    return uintptr_t(low) + kReserve;
+}
+
+}  // namespace
+
 Scene Interpreter::run(int root_file) {
+    stack_floor_ = stack_floor();
     scene_dir_ =
         std::filesystem::path(sources_.file(root_file).path).parent_path().string();
     scopes_.emplace_back();  // global #declare table

@@ -552,7 +552,12 @@ void Interpreter::parse_mesh2(Object& out) {
                     if (!value || value->kind != TokenKind::Number) break;
                     if (skip == 0 && mesh.textures.empty()) break;
                     frames_.back().pos += skip + 1;
-                    if (k == 0) f.texture = int32_t(value->number);
+                    if (k == 0) {
+                        if (!(value->number >= 0 &&
+                              value->number < double(mesh.textures.size())))
+                            error(*value, "mesh2 texture index out of range");
+                        f.texture = int32_t(value->number);
+                    }
                 }
                 mesh.faces.push_back(f);  // degenerate ones are dropped at the end
             }
@@ -563,7 +568,12 @@ void Interpreter::parse_mesh2(Object& out) {
             int n = parse_count();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
+                Token at = peek();
                 Vector3 v = parse_vector();
+                for (int k = 0; k < 3; ++k) {
+                    if (!(v[k] >= 0 && v[k] < double(mesh.normals.size())))
+                        error(at, "mesh2 normal index out of range");
+                }
                 normal_idx.push_back({int(v.x), int(v.y), int(v.z)});
             }
             accept_punct(',');  // trailing comma

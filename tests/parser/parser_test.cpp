@@ -345,6 +345,39 @@ TEST(Errors, DeepNestingIsALocatedErrorNotAStackOverflow) {
               "(limit 256)");
 }
 
+// A #declare whose value runs into the loop's #end: every turn nests another #declare on
+// the stack (found by the scene fuzzer). The stack check stops it before the stack ends.
+TEST(Errors, DirectivesNestedPastTheStackAreALocatedError) {
+    // Which token meets the limit first depends on the build's frame sizes: line 2.
+    const std::string e =
+        first_line("#declare I = 0;\n#while (I < 3) #declare I = #end\n");
+    EXPECT_EQ(e.rfind("test.pov:2:", 0), 0u) << e;
+    EXPECT_NE(
+        e.find(": error: directives, macros and expressions nested too deeply for the "
+               "stack"),
+        std::string::npos)
+        << e;
+    // Deep but legitimate recursion still parses: 400 macro levels, each with a #local.
+    Scene s = parse(
+        "#macro F(N) #local R = #if (N > 0) F(N - 1) + 1 #else 0 #end; R #end\n"
+        "sphere { 0, F(400) }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).radius, 400);
+}
+
+// Indices past the lists (and past int) are located errors, not undefined conversions.
+TEST(Errors, Mesh2IndicesOutOfRangeAreLocated) {
+    const std::string head =
+        "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } "
+        "normal_vectors { 1, <0,0,1> } texture_list { 1, texture { pigment { rgb 1 } } "
+        "} ";
+    EXPECT_EQ(first_line(head + "face_indices { 1, <0,1,2>, 2e113 } }"),
+              "test.pov:1:164: error: mesh2 texture index out of range");
+    EXPECT_EQ(first_line(head + "face_indices { 1, <0,1,2>, 0 } normal_indices { 1, "
+                                "<0,0,5e9> } }"),
+              "test.pov:1:188: error: mesh2 normal index out of range");
+}
+
 TEST(Errors, UnsupportedFeatureIsNamed) {
     try {
         parse("text { ttf \"a.ttf\" \"x\" 1, 0 }");
