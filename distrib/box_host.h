@@ -63,6 +63,7 @@ struct Box {
     trace::RayContext ctx;
     std::mutex inbox_mutex;
     std::vector<Item> inbox;
+    std::vector<Item> inbox_spare;  // the box's thread only (while busy)
     std::atomic<size_t> pending{0};
     std::atomic<bool> busy{false};
     WorkQueue<Item> queue;

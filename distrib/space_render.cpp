@@ -334,7 +334,8 @@ void BoxHost::worker(int thread, bool emit_camera) {
             if (box.busy.exchange(true, std::memory_order_acquire)) continue;
             auto t0 = Clock::now();
             {
-                std::vector<Item> incoming;
+                // Swapped with a spare that keeps its capacity: no allocation per batch.
+                std::vector<Item>& incoming = box.inbox_spare;
                 {
                     std::lock_guard<std::mutex> lock(box.inbox_mutex);
                     incoming.swap(box.inbox);
@@ -344,6 +345,7 @@ void BoxHost::worker(int thread, bool emit_camera) {
                     const int depth = is_result ? 255 : it.ray.trace.depth;
                     box.queue.push(std::move(it), is_result, depth);
                 }
+                incoming.clear();
                 box.stats.peak_queue = std::max(box.stats.peak_queue, box.queue.size());
             }
             uint64_t rays = 0;

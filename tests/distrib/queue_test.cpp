@@ -46,3 +46,29 @@ TEST(WorkQueue, FifoPolicyKeepsArrivalOrder) {
 
 }  // namespace
 }  // namespace povwall::distrib
+
+namespace povwall::distrib {
+namespace {
+
+// Pushes and pops interleaved across the ring's growth and wrap-around keep FIFO order.
+TEST(RingQueue, KeepsOrderAcrossGrowthAndWrapAround) {
+    RingQueue<int> q;
+    int next_in = 0, next_out = 0;
+    for (int round = 0; round < 200; ++round) {
+        for (int i = 0; i < round % 37 + 1; ++i) q.push_back(int(next_in++));
+        for (int i = 0; i < round % 23 && !q.empty(); ++i) {
+            ASSERT_EQ(q.front(), next_out++);
+            q.pop_front();
+        }
+        ASSERT_EQ(q.size(), size_t(next_in - next_out));
+    }
+    while (!q.empty()) {
+        ASSERT_EQ(q.front(), next_out++);
+        q.pop_front();
+    }
+    EXPECT_EQ(next_out, next_in);
+    EXPECT_GT(next_in, 1000);
+}
+
+}  // namespace
+}  // namespace povwall::distrib
