@@ -1,6 +1,7 @@
 #include "parser/parser.h"
 
 #include <pthread.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -11,8 +12,38 @@
 
 namespace povwall::parser {
 
+namespace {
+
+// This process's resident memory in bytes (0 when unknown).
+uint64_t resident_bytes() {
+    FILE* f = std::fopen("/proc/self/statm", "r");
+    if (!f) return 0;
+    unsigned long long size = 0, resident = 0;
+    const bool ok = std::fscanf(f, "%llu %llu", &size, &resident) == 2;
+    std::fclose(f);
+    return ok ? resident * uint64_t(sysconf(_SC_PAGESIZE)) : 0;
+}
+
+// MemAvailable of /proc/meminfo in bytes (0 when unknown).
+uint64_t available_bytes() {
+    std::ifstream in("/proc/meminfo");
+    std::string key;
+    unsigned long long kb = 0;
+    std::string unit;
+    while (in >> key >> kb >> unit) {
+        if (key == "MemAvailable:") return uint64_t(kb) * 1024;
+    }
+    return 0;
+}
+
+}  // namespace
+
 Interpreter::Interpreter(const ParseOptions& options, SourceManager& sources)
     : options_(options), sources_(sources) {
+    resident_at_start_ = resident_bytes();
+    memory_limit_ =
+        options_.max_parse_memory ? options_.max_parse_memory : available_bytes() / 2;
+    if (resident_at_start_ == 0) memory_limit_ = 0;  // cannot measure: no check
     if (options_.max_parse_seconds > 0)
         parse_deadline_ = std::chrono::steady_clock::now() +
                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -21,6 +52,16 @@ Interpreter::Interpreter(const ParseOptions& options, SourceManager& sources)
 
 void Interpreter::check_parse_time(const Token& at) {
     tokens_since_clock_ = 0;
+    if (memory_limit_) {
+        const uint64_t now = resident_bytes();
+        if (now > resident_at_start_ && now - resident_at_start_ > memory_limit_) {
+            error(at, "the scene outgrew the parse memory limit of " +
+                          std::to_string(memory_limit_ >> 20) + " MB (" +
+                          (options_.max_parse_memory ? "set by the caller"
+                                                     : "half the memory available") +
+                          "; a loop without end?)");
+        }
+    }
     if (options_.max_parse_seconds > 0 &&
         std::chrono::steady_clock::now() > parse_deadline_) {
         char limit[32];

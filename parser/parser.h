@@ -34,6 +34,9 @@ struct ParseOptions {
     // Resource limits that turn a runaway scene into a located error.
     uint64_t max_loop_iterations = 10'000'000;  // per run of one #while or #for
     double max_parse_seconds = 0;               // wall time of the whole parse; 0: none
+    // Growth of the process's resident memory during the parse (a loop that makes objects
+    // without end); 0: half the memory available when the parse starts.
+    uint64_t max_parse_memory = 0;
 };
 
 // A located diagnostic. what() is the full text as printed: "file:line:col: error: msg",

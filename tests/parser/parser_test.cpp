@@ -365,6 +365,27 @@ TEST(Errors, DirectivesNestedPastTheStackAreALocatedError) {
     EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).radius, 400);
 }
 
+// A loop that makes objects without end stops at the memory limit, long before its
+// iteration limit (the scene fuzzer's tori ate 15 GB in a minute).
+TEST(Errors, LoopThatMakesObjectsWithoutEndStopsAtTheMemoryLimit) {
+    ParseOptions options;
+    options.max_parse_memory = 64 << 20;
+    try {
+        parse_scene_text("#declare I = 0;\n#while (I < 1)\n  sphere { I, 1 }\n#end\n",
+                         "test.pov", options);
+        FAIL() << "no error";
+    } catch (const ParseError& e) {
+        const std::string text = e.what();
+        // The token the limit meets varies: any of the loop's lines.
+        EXPECT_NE(text.substr(0, text.find('\n'))
+                      .find(": error: the scene outgrew the parse memory limit of 64 MB "
+                            "(set by the caller; a loop without end?)"),
+                  std::string::npos)
+            << text;
+        EXPECT_EQ(text.rfind("test.pov:", 0), 0u) << text;
+    }
+}
+
 // Indices past the lists (and past int) are located errors, not undefined conversions.
 TEST(Errors, Mesh2IndicesOutOfRangeAreLocated) {
     const std::string head =
