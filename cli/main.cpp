@@ -87,13 +87,7 @@ int render_main(const std::vector<std::string>& args) {
     app.add_option("--adc-bailout", adc_bailout,
                    "override the scene's adc_bailout (0..1)")
         ->check(CLI::Range(0.0, 1.0));
-    app.add_option("--max-loop-iterations", o.max_loop_iterations,
-                   "runs of one #while/#for before it is stopped as runaway")
-        ->check(CLI::PositiveNumber)
-        ->capture_default_str();
-    app.add_option("--max-parse-seconds", o.max_parse_seconds,
-                   "stop parsing after this many seconds (0: no limit)")
-        ->check(CLI::NonNegativeNumber);
+    add_parse_limit_options(app, o.max_loop_iterations, o.max_parse_seconds);
     // Internal (screen tile workers): the frame of an animation this process renders, as
     // number,clock,clock_delta,initial_frame,final_frame,initial_clock,final_clock.
     std::vector<double> frame_values;

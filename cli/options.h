@@ -1,6 +1,7 @@
 // Command-line settings shared by the subcommands, and POV-Ray's +X switches.
 #pragma once
 
+#include <cstdint>
 #include <istream>
 #include <map>
 #include <memory>
@@ -14,7 +15,15 @@ namespace povwall::distrib {
 class TcpSession;
 }
 
+namespace CLI {
+class App;
+}
+
 namespace povwall::cli {
+
+// --max-loop-iterations and --max-parse-seconds, for every command that parses a scene.
+void add_parse_limit_options(CLI::App& app, uint64_t& max_loop_iterations,
+                             double& max_parse_seconds);
 
 struct RenderOptions {
     std::string scene;

@@ -33,6 +33,17 @@ void count_shapes(const Object& o, std::map<std::string, int>& counts) {
 
 }  // namespace
 
+void add_parse_limit_options(CLI::App& app, uint64_t& max_loop_iterations,
+                             double& max_parse_seconds) {
+    app.add_option("--max-loop-iterations", max_loop_iterations,
+                   "runs of one #while/#for before it is stopped as runaway")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    app.add_option("--max-parse-seconds", max_parse_seconds,
+                   "stop parsing after this many seconds (0: no limit)")
+        ->check(CLI::NonNegativeNumber);
+}
+
 int run_parse(int argc, char** argv) {
     CLI::App app{
         "Parse a scene and report its contents (exit 0 ok, 3 unsupported, 2 error)",
@@ -44,13 +55,7 @@ int run_parse(int argc, char** argv) {
     app.add_option("-L", library_paths, "include folder (repeatable)");
     app.add_flag("--json", json, "print one JSON object");
     parser::ParseOptions popts;
-    app.add_option("--max-loop-iterations", popts.max_loop_iterations,
-                   "runs of one #while/#for before it is stopped as runaway")
-        ->check(CLI::PositiveNumber)
-        ->capture_default_str();
-    app.add_option("--max-parse-seconds", popts.max_parse_seconds,
-                   "stop parsing after this many seconds (0: no limit)")
-        ->check(CLI::NonNegativeNumber);
+    add_parse_limit_options(app, popts.max_loop_iterations, popts.max_parse_seconds);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
