@@ -40,7 +40,7 @@ struct Task {
     int depth = 0;
     std::vector<uint32_t> ids;
     // Filled by the worker: local node 0 is the task root.
-    std::vector<Node> nodes;
+    Octree::NodeArray nodes;
     std::vector<uint32_t> leaf_ids;
     int max_depth = 0;
 };
@@ -52,7 +52,7 @@ class Builder {
 
     // Builds the subtree of nodes[index] (already allocated) over `ids`. At spawn_depth
     // the node is handed to `tasks` instead (null: never).
-    void build(std::vector<Node>& nodes, std::vector<uint32_t>& out, uint32_t index,
+    void build(Octree::NodeArray& nodes, std::vector<uint32_t>& out, uint32_t index,
                std::vector<uint32_t>& ids, const Bounds3& box, int depth, int& max_depth,
                std::vector<Task>* tasks, int spawn_depth) {
         max_depth = std::max(max_depth, depth);

@@ -503,6 +503,22 @@ TEST(Mailbox, FirstVisitPerRay) {
     EXPECT_TRUE(m.first_visit(2));
 }
 
+TEST(Mailbox, LargeScenesShareSlotsAndNeverSkip) {
+    Mailbox m;
+    m.resize(Mailbox::kSlots * 1000);
+    const uint32_t a = 5, b = a + Mailbox::kSlots;  // same slot
+    m.next_ray();
+    EXPECT_TRUE(m.first_visit(a));
+    EXPECT_FALSE(m.first_visit(a));
+    EXPECT_TRUE(m.first_visit(b));
+    EXPECT_FALSE(m.first_visit(b));
+    // The clash forgot `a`: it is tested again rather than skipped.
+    EXPECT_TRUE(m.first_visit(a));
+    EXPECT_TRUE(m.first_visit(uint32_t(Mailbox::kSlots * 1000 - 1)));
+    m.next_ray();
+    EXPECT_TRUE(m.first_visit(a));
+}
+
 }  // namespace
 }  // namespace povwall::octree
 
