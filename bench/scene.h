@@ -14,9 +14,9 @@
 
 namespace povwall::bench {
 
-/// Spheres as trace/ keeps them: one 32-byte record each (a candidate test touches one
-/// cache line), numbered along a Morton curve.
-struct SphereRecord {
+/// Spheres as trace/ keeps them: one 32-byte record each, aligned (a candidate test
+/// touches one cache line), numbered along a Morton curve.
+struct alignas(32) SphereRecord {
     Real x, y, z, r;
 };
 struct Spheres {
