@@ -348,15 +348,19 @@ void BoxHost::worker(int thread, bool emit_camera) {
                 incoming.clear();
                 box.stats.peak_queue = std::max(box.stats.peak_queue, box.queue.size());
             }
-            uint64_t rays = 0;
+            uint64_t rays = 0, done = 0;
             for (int budget = 0; budget < 4096 && !box.queue.empty(); ++budget) {
                 Item it = box.queue.pop();
                 rays += !it.is_result;
                 process(box, it, thread);
-                box.pending.fetch_sub(1, std::memory_order_release);
-                finished_.fetch_add(1, std::memory_order_acq_rel);
+                ++done;
                 if (on_processed) on_processed();
             }
+            // Counted once per batch: one atomic add per item on counters every thread
+            // shares cost more than the queue. Late counts are safe: `finished` only
+            // lags `created` (termination waits, flow control holds back a little more).
+            box.pending.fetch_sub(done, std::memory_order_release);
+            finished_.fetch_add(done, std::memory_order_acq_rel);
             if (settings_.progress) {
                 settings_.progress->rays += rays;
                 report_progress();
