@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -167,6 +168,13 @@ int main(int argc, char** argv) {
             return 2;
         }
         const std::string& cmd = args[0];
+        // Worker processes write no image: Ctrl-C (sent to the whole process group) ends
+        // them quietly, and the coordinator says what happened.
+        if (cmd == "worker" ||
+            std::find(args.begin(), args.end(), "--tile-worker") != args.end()) {
+            std::signal(SIGINT, SIG_DFL);
+            std::signal(SIGTERM, SIG_DFL);
+        }
         if (cmd == "render") return render_main({args.begin() + 1, args.end()});
         if (cmd == "diff") return run_diff(argc - 1, argv + 1);
         if (cmd == "compare") return run_compare(argc - 1, argv + 1);

@@ -101,3 +101,37 @@ INSTANTIATE_TEST_SUITE_P(Modes, Recovery,
                          });
 
 }  // namespace
+
+namespace {
+
+using namespace povwall_test;
+namespace fs = std::filesystem;
+
+// Ctrl-C reaches the whole process group: the worker processes end quietly and the
+// coordinator alone says what was kept; no worker is left behind.
+TEST(Interrupt, WorkersEndQuietlyAndOnlyTheCoordinatorSpeaks) {
+    const std::string scene = std::string(POVWALL_SOURCE_DIR) + "/scenes/demo/walls.pov";
+    for (const std::string mode :
+         {"--boxes 2x1x1 --procs 2", "--mode screen --procs 2"}) {
+        const fs::path err = scratch() / "interrupt.err",
+                       pid = scratch() / "interrupt.pid";
+        const fs::path out = scratch() / "interrupt.png";
+        const std::string start = "setsid " + std::string(POVWALL_BINARY) + " render " +
+                                  scene + " +KFF200 -W 320 -H 240 -q " + mode + " -o " +
+                                  out.string() + " 2>" + err.string() + " & echo $! >" +
+                                  pid.string() + "; wait";
+        const std::string cmd = "sh -c '(" + start +
+                                ") & sleep 1.5; /bin/kill -s INT -- -$(cat " +
+                                pid.string() + "); sleep 1.5'";
+        ASSERT_EQ(std::system(cmd.c_str()), 0) << mode;
+        const std::string said = slurp(err);
+        EXPECT_EQ(said, "\npovwall: interrupted: no image written\n") << mode;
+        // Nothing of this render still runs (the bracket keeps pgrep's own shell, whose
+        // command line holds the pattern, from matching it).
+        const std::string left =
+            "pgrep -f -- '" + scratch().string() + "/interrupt[.]png' >/dev/null";
+        EXPECT_NE(std::system(left.c_str()), 0) << mode;
+    }
+}
+
+}  // namespace
