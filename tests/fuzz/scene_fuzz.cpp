@@ -13,11 +13,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     // the executions per second by hundreds (the seeds have their #include lines
     // removed).
     options.messages = nullptr;  // #debug output is not under test
-    // Loops stop at a located error after 100,000 iterations (the option's default is
-    // 10 million) and a parse at one second (nested loops): an input that spins costs
-    // little, and the limit code runs too.
-    options.max_loop_iterations = 100'000;
-    options.max_parse_seconds = 1.0;
+    // Loops stop at a located error after 10,000 iterations (the option's default is 10
+    // million) and a parse at 0.1 s (nested loops): mutants of the example scenes loop a
+    // lot, and an input that spins must cost milliseconds for the campaign to get
+    // anywhere. The limit code runs too.
+    options.max_loop_iterations = 10'000;
+    options.max_parse_seconds = 0.1;
     try {
         povwall::parser::parse_scene_text(text, "fuzz.pov", options);
     } catch (const povwall::parser::ParseError&) {
