@@ -263,6 +263,20 @@ int run_render(RenderOptions o) {
                 image = session->render(scene, source, o.render, space, &space_stats);
                 worker_frames = session->frames_on_these_workers();
                 worker_processes = session->processes_started();
+                // The budget shapes the walls; a worker still parses the whole scene, so
+                // its process can outgrow it: said, not hidden.
+                const auto& peaks = space_stats.worker_peak_resident;
+                for (size_t w = 0;
+                     w < peaks.size() && !o.worker_memory.empty() && !o.quiet; ++w) {
+                    if (peaks[w] > dplan.worker_memory) {
+                        std::fprintf(
+                            stderr,
+                            "povwall: warning: worker %zu peaked at %.1f MB, over "
+                            "the %.1f MB --worker-memory (workers parse the whole "
+                            "scene; only their boxes are local)\n",
+                            w, peaks[w] / 1048576.0, dplan.worker_memory / 1048576.0);
+                    }
+                }
             } catch (const distrib::DistribError& e) {
                 std::cerr << "povwall: error: " << e.what() << " (no image written)\n";
                 return 3;
@@ -384,8 +398,10 @@ int run_render(RenderOptions o) {
             }
             j["boxes"] = boxes;
             if (worker_frames > 0) {
-                j["workers"] = {{"frames_on_these_workers", worker_frames},
-                                {"processes_started", worker_processes}};
+                j["workers"] = {
+                    {"frames_on_these_workers", worker_frames},
+                    {"processes_started", worker_processes},
+                    {"peak_resident_bytes", space_stats.worker_peak_resident}};
             }
         } else {
             j["boxes"] = 1;

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,9 @@ struct SpaceStats {
     bool parent_tracking = false;
     std::vector<BoxStats> boxes;
     double seconds = 0;
+    // Over TCP: each worker process's peak resident memory in bytes (its whole parse
+    // included: workers parse the whole scene).
+    std::vector<uint64_t> worker_peak_resident;
 };
 
 using trace::shading_is_linear;  // trace/render_plan.h

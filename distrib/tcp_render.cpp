@@ -358,6 +358,19 @@ tcp::endpoint resolve(asio::io_context& io, const std::string& address) {
 // ---- Worker
 // ------------------------------------------------------------------------------
 
+// The process's peak resident memory (VmHWM), in bytes; 0 when unknown.
+uint64_t peak_resident_bytes() {
+    std::FILE* f = std::fopen("/proc/self/status", "r");
+    if (!f) return 0;
+    char line[256];
+    unsigned long long kb = 0;
+    while (std::fgets(line, sizeof line, f)) {
+        if (std::sscanf(line, "VmHWM: %llu kB", &kb) == 1) break;
+    }
+    std::fclose(f);
+    return uint64_t(kb) * 1024;
+}
+
 class Worker {
   public:
     explicit Worker(const WorkerOptions& options)
@@ -725,7 +738,9 @@ class Worker {
                              b.messages_sent, b.peak_queue, b.peak_parents,
                              b.busy_seconds});
         }
-        coordinator_->send(control_frame({{"type", "done"}, {"stats", boxes}}));
+        coordinator_->send(control_frame({{"type", "done"},
+                                          {"stats", boxes},
+                                          {"peak_resident", peak_resident_bytes()}}));
         done_ = true;  // the coordinator closes the connection; then io_.run() returns
     }
 
@@ -900,6 +915,9 @@ class TcpCoordinator {
         if (stats) {
             stats->parent_tracking = emitter_->parent_tracking();
             stats->boxes = box_stats_;
+            stats->worker_peak_resident.clear();
+            for (const WorkerState& w : workers_)
+                stats->worker_peak_resident.push_back(w.peak_resident);
             stats->seconds = std::chrono::duration<double>(Clock::now() - t0).count();
         }
         return image;
@@ -913,6 +931,7 @@ class TcpCoordinator {
         Clock::time_point last_seen;
         bool ready = false, done = false;
         uint64_t created = 0, finished = 0;  // latest status
+        uint64_t peak_resident = 0;          // the process's VmHWM at its last "done"
         long wave_seq = -1;                  // latest probe answered
         uint64_t wave_created = 0, wave_finished = 0;
     };
@@ -1086,6 +1105,7 @@ class TcpCoordinator {
                 out.messages_sent = s[8];
                 out.peak_queue = s[9], out.peak_parents = s[10], out.busy_seconds = s[11];
             }
+            w.peak_resident = j.value("peak_resident", uint64_t(0));
             w.done = true;
             for (const WorkerState& o : workers_) {
                 if (!o.done) return;

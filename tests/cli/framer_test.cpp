@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <regex>
 
 #include "tests/cli/run_povwall.h"
 
@@ -48,6 +49,16 @@ TEST(Framer, AnimationKeepsItsTcpWorkersAndEachFrameEqualsItsRenderAlone) {
     const std::string s = slurp(stats);
     EXPECT_NE(s.find("\"frames_on_these_workers\": 5"), std::string::npos) << s;
     EXPECT_NE(s.find("\"processes_started\": 2"), std::string::npos) << s;
+    // Each worker's peak resident memory: a live process, not a placeholder.
+    std::smatch peaks;
+    ASSERT_TRUE(std::regex_search(
+        s, peaks,
+        std::regex("\"peak_resident_bytes\": \\[\\s*([0-9]+),\\s*([0-9]+)\\s*\\]")))
+        << s;
+    for (int k = 1; k <= 2; ++k) {
+        EXPECT_GT(std::stod(peaks[k].str()), 1e6) << s;
+        EXPECT_LT(std::stod(peaks[k].str()), 4e9) << s;
+    }
     r = run("render " + scene.string() + frames + "--mode single -o " +
             (dir / "alone.exr").string());
     ASSERT_EQ(r.code, 0) << r.err;
