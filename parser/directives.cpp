@@ -29,7 +29,7 @@ void Interpreter::run_directive(const Token& t) {
             auto arr = std::get_if<std::shared_ptr<ArrayValue>>(v);
             size_t flat = 0;
             while (accept_punct('[')) {
-                int index = int(parse_float());
+                int index = parse_int();
                 expect_punct(']');
                 flat = flat * 1 + size_t(index);  // single-dimension common case
             }
@@ -315,7 +315,7 @@ void Interpreter::directive_declare(const Token& t, bool local) {
     std::vector<int> indices;
     while (is_punct(peek(), '[')) {
         next();
-        indices.push_back(int(parse_float()));
+        indices.push_back(parse_int());
         expect_punct(']');
     }
     expect_punct('=', "after the identifier");

@@ -411,7 +411,7 @@ Value ExpressionParser::word(const Token& t) {
         Token at = in_.peek();
         double s = arg_float();
         in_.expect_punct(')');
-        return Numeric::scalar(in_.draw_random(int(s), at));
+        return Numeric::scalar(in_.draw_random(saturating_int(s), at));
     }
     auto f1 = [&](double (*f)(const double*)) { return call_float(t, 1, f); };
     if (w == "pi") return Numeric::scalar(kPi);
@@ -522,7 +522,7 @@ Value ExpressionParser::word(const Token& t) {
         in_.expect_punct('(');
         double s = arg_float();
         in_.expect_punct(')');
-        return Numeric::scalar(in_.new_random_stream(int(s)));
+        return Numeric::scalar(in_.new_random_stream(saturating_int(s)));
     }
     if (w == "vlength") {
         in_.expect_punct('(');
@@ -564,7 +564,7 @@ Value ExpressionParser::word(const Token& t) {
         in_.accept_punct(',');
         tp.omega = arg_float();
         in_.accept_punct(',');
-        tp.octaves = int(arg_float());
+        tp.octaves = saturating_int(arg_float());
         in_.accept_punct(',');
         Vector3 p = arg_vector();
         in_.expect_punct(')');
@@ -612,7 +612,7 @@ Value ExpressionParser::word(const Token& t) {
             r = double((*arr)->dims.size());
         } else {
             in_.accept_punct(',');
-            int d = int(arg_float());
+            int d = saturating_int(arg_float());
             r = (d >= 1 && d <= int((*arr)->dims.size())) ? (*arr)->dims[d - 1] : 0;
         }
         in_.expect_punct(')');
@@ -699,9 +699,10 @@ std::string Interpreter::parse_string() {
             expect_punct('(');
             double v = parse_float();
             accept_punct(',');
-            int width = int(parse_float());
+            // Past the buffer a width or precision changes nothing but the cost.
+            int width = std::clamp(parse_int(), -500, 500);
             accept_punct(',');
-            int prec = int(parse_float());
+            int prec = std::clamp(parse_int(), -1, 100);
             expect_punct(')');
             char buf[512];
             if (prec < 0) {
@@ -717,15 +718,18 @@ std::string Interpreter::parse_string() {
         }
         if (w == "vstr") {
             expect_punct('(');
+            Token dims_at = peek();
             double dims = parse_float();
+            if (!(dims >= 2 && dims < 6))
+                error(dims_at, "vstr: the number of components must be 2 to 5");
             accept_punct(',');
             Numeric v = parse_numeric();
             accept_punct(',');
             std::string sep = parse_string();
             accept_punct(',');
-            int width = int(parse_float());
+            int width = std::clamp(parse_int(), -100, 100);
             accept_punct(',');
-            int prec = int(parse_float());
+            int prec = std::clamp(parse_int(), -1, 60);
             expect_punct(')');
             std::string out;
             v = promote(v, int(dims));
@@ -739,7 +743,7 @@ std::string Interpreter::parse_string() {
         }
         if (w == "chr") {
             expect_punct('(');
-            int c = int(parse_float());
+            int c = parse_int();
             expect_punct(')');
             return std::string(1, char(c));
         }
@@ -754,11 +758,11 @@ std::string Interpreter::parse_string() {
             expect_punct('(');
             std::string s = parse_string();
             accept_punct(',');
-            int start = int(parse_float());
+            int start = parse_int();
             accept_punct(',');
-            int len = int(parse_float());
+            int len = parse_int();
             expect_punct(')');
-            if (start < 1 || start - 1 + len > int(s.size()) || len < 0) {
+            if (start < 1 || int64_t(start) - 1 + len > int64_t(s.size()) || len < 0) {
                 error(t, "substr arguments out of range");
             }
             return s.substr(size_t(start - 1), size_t(len));

@@ -163,13 +163,13 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             mapping->once = true;
         } else if (w == "interpolate") {
             Token at = peek();
-            mapping->interpolate = int(parse_float());
+            mapping->interpolate = parse_int();
             if (!is_bump && mapping->interpolate != 2 && mapping->interpolate != 3 &&
                 mapping->interpolate != 4)
                 error(at, "invalid interpolate value (2, 3 or 4)");
         } else if (w == "map_type") {
             Token at = peek();
-            mapping->map_type = int(parse_float());
+            mapping->map_type = parse_int();
             // POV-Ray 3.7.0's map types: 0 planar, 1 spherical, 2 cylindrical, 5 torus
             // (7, angular, came later).
             int mt = mapping->map_type;

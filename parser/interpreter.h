@@ -25,6 +25,14 @@ constexpr size_t kMaxArrayItems = 1u << 28;
 // well within the stack (sanitizer builds included).
 constexpr int kMaxNesting = 256;
 
+// (int)v truncated toward zero, saturating at int's range; NaN gives 0.
+inline int saturating_int(double v) {
+    if (!(v == v)) return 0;
+    if (v >= 2147483647.0) return 2147483647;
+    if (v <= -2147483648.0) return -2147483647 - 1;
+    return int(v);
+}
+
 // Composes `t` into every pattern transform of the layers (textures move with objects).
 void transform_textures(LayeredTexture& layers, const Transform& t);
 
@@ -85,6 +93,9 @@ class Interpreter {
     Numeric parse_numeric(bool no_gt = false);  // POV-Ray's Parse_Float/Vector level
     Numeric parse_express();                    // full expression (Parse_Express)
     double parse_float();
+    // A float read as POV-Ray reads counts and indices, truncated toward zero; values
+    // past int's range (or NaN) saturate instead of being undefined.
+    int parse_int() { return saturating_int(parse_float()); }
     // A directive's parenthesised condition; reads nothing past the ')' so that the
     // tokens after it are not consumed before the directive decides whether to skip them.
     double parse_condition();
@@ -213,7 +224,7 @@ class Interpreter {
     // --max-parse-seconds: the clock is read once per 65,536 tokens.
     std::chrono::steady_clock::time_point parse_deadline_;
     uint32_t tokens_since_clock_ = 0;
-    void check_parse_time(const Token& at);  // and the memory limit
+    void check_parse_time(const Token& at);              // and the memory limit
     uint64_t resident_at_start_ = 0, memory_limit_ = 0;  // bytes; limit 0: none
     std::vector<std::unique_ptr<RandomStream>> streams_;
     int version_ = 362;

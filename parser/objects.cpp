@@ -381,7 +381,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         open();
         if (!copy_identifier()) {
             Polygon poly;
-            int n = int(parse_float());
+            int n = parse_int();
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 poly.points.push_back(parse_vector());

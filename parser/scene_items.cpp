@@ -217,12 +217,12 @@ Light Interpreter::parse_light_block() {
             accept_punct(',');
             a.axis2 = parse_vector();
             accept_punct(',');
-            a.size1 = int(parse_float());
+            a.size1 = parse_int();
             accept_punct(',');
-            a.size2 = int(parse_float());
+            a.size2 = parse_int();
             l.area = a;
         } else if (w == "adaptive" && l.area)
-            l.area->adaptive = int(parse_float());
+            l.area->adaptive = parse_int();
         // These may come before area_light; kept and applied at the end.
         else if (w == "jitter")
             jitter = true;
@@ -270,18 +270,18 @@ void Interpreter::parse_global_settings() {
             if (is_word(at, "srgb")) unsupported(at, "assumed_gamma srgb");
             g.assumed_gamma = float(parse_float());
         } else if (w == "max_trace_level") {
-            int n = int(parse_float());
+            int n = parse_int();
             g.max_trace_level = std::min(256, std::max(1, n));
         } else if (w == "adc_bailout") {
             g.adc_bailout = float(parse_float());
         } else if (w == "ambient_light") {
             g.ambient_light = parse_colour_value().rgb;
         } else if (w == "noise_generator") {
-            g.noise_generator = int(parse_float());
+            g.noise_generator = parse_int();
         } else if (w == "max_intersections") {
-            g.max_intersections = int(parse_float());
+            g.max_intersections = parse_int();
         } else if (w == "number_of_waves") {
-            g.number_of_waves = int(parse_float());
+            g.number_of_waves = parse_int();
         } else if (w == "irid_wavelength") {
             g.irid_wavelength = parse_colour_value().rgb;
         } else if (w == "charset") {
@@ -348,7 +348,7 @@ Fog Interpreter::parse_fog() {
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
         if (w == "fog_type")
-            f.type = int(parse_float());
+            f.type = parse_int();
         else if (w == "distance")
             f.distance = parse_float();
         else if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" ||
@@ -368,7 +368,7 @@ Fog Interpreter::parse_fog() {
             f.turb_depth = parse_float();
         else if (w == "octaves") {
             f.turbulent = true;
-            f.octaves = std::clamp(int(parse_float()), 1, 10);
+            f.octaves = std::clamp(parse_int(), 1, 10);
         } else if (w == "omega") {
             f.turbulent = true;
             f.omega = parse_float();
@@ -673,7 +673,7 @@ Value Interpreter::parse_item_value(const Token& t) {
             size_t total = 1;
             while (accept_raw_punct('[')) {
                 Token at = peek();
-                int n = int(parse_float());
+                int n = parse_int();
                 if (n <= 0) error(at, "array size must be positive");
                 expect_punct(']');
                 a->dims.push_back(n);

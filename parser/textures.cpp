@@ -233,7 +233,7 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     if (w == "turbulence") {
         turbulence_warp().turbulence = parse_vector();
     } else if (w == "octaves") {
-        turbulence_warp().octaves = int(parse_float());
+        turbulence_warp().octaves = parse_int();
     } else if (w == "omega") {
         turbulence_warp().omega = parse_float();
     } else if (w == "lambda") {
@@ -257,7 +257,7 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
         const Token& n = peek();
         if (starts_float(n)) spec.wave_exponent = parse_float();
     } else if (w == "noise_generator") {
-        spec.noise_generator = int(parse_float());
+        spec.noise_generator = parse_int();
     } else if (w == "agate_turb") {
         spec.scalar = parse_float();
     } else if (w == "mortar") {
@@ -324,7 +324,7 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
             if (is_punct(m, '}')) break;
             std::string_view mw = m.kind == TokenKind::Word ? m.text : std::string_view();
             if (mw == "octaves")
-                wp.octaves = int(parse_float());
+                wp.octaves = parse_int();
             else if (mw == "omega")
                 wp.omega = parse_float();
             else if (mw == "lambda")
@@ -675,7 +675,7 @@ Interior Interpreter::parse_interior_block() {
         else if (w == "dispersion")
             in.dispersion = float(parse_float());
         else if (w == "dispersion_samples")
-            in.dispersion_samples = int(parse_float());
+            in.dispersion_samples = parse_int();
         else if (w == "fade_distance")
             in.fade_distance = float(parse_float());
         else if (w == "fade_power")

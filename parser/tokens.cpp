@@ -87,7 +87,7 @@ Token Interpreter::subscript_token(const Token& name, const ArrayValue& array) {
         if (!is_punct(peek(), '[')) break;
         next();
         Token at = peek();
-        int i = int(parse_float());
+        int i = parse_int();
         Token close = next();
         if (!is_punct(close, ']')) expected("']' after the subscript", close);
         if (i < 0 || i >= array.dims[d]) {

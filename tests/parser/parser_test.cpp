@@ -386,6 +386,20 @@ TEST(Errors, LoopThatMakesObjectsWithoutEndStopsAtTheMemoryLimit) {
     }
 }
 
+// Floats read as ints saturate instead of overflowing; vstr's component count is 2..5 (a
+// fuzzed vstr(9, ...) wrote past a 5-component vector).
+TEST(Errors, HugeIntegerArgumentsAreSafe) {
+    EXPECT_EQ(first_line("#declare V = vstr(9, <1,2,3>, \",\", 0, 1);"),
+              "test.pov:1:19: error: vstr: the number of components must be 2 to 5");
+    EXPECT_EQ(first_line("#declare R = rand(1e30);"),
+              "test.pov:1:19: error: illegal random number generator");
+    EXPECT_EQ(first_line("#declare S = substr(\"abc\", 2e10, 2e10);"),
+              "test.pov:1:14: error: substr arguments out of range");
+    // A width past the buffer is cut to 500 characters, zero-padded.
+    Scene s = parse("#declare S = str(1.5, -3e12, 2);\nsphere { 0, strlen(S) }");
+    EXPECT_EQ(std::get<Sphere>(s.objects.at(0).shape).radius, 500);
+}
+
 // Indices past the lists (and past int) are located errors, not undefined conversions.
 TEST(Errors, Mesh2IndicesOutOfRangeAreLocated) {
     const std::string head =
