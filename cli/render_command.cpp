@@ -87,22 +87,39 @@ std::vector<std::string> tile_worker_command(const RenderOptions& o) {
     return cmd;
 }
 
+// +C keeps an image that exists (images are only ever renamed into place once complete,
+// so an existing one is whole) and is not older than the scene file; an older one was
+// made from another version of the scene and is rendered again.
+enum class Kept { No, Yes, Stale };
+Kept keep_existing(const std::string& image, const std::string& scene) {
+    std::error_code ec;
+    if (!std::filesystem::exists(image, ec)) return Kept::No;
+    const auto made = std::filesystem::last_write_time(image, ec);
+    if (ec) return Kept::No;
+    const auto edited = std::filesystem::last_write_time(scene, ec);
+    return !ec && edited > made ? Kept::Stale : Kept::Yes;
+}
+
 // An animation: each frame is a still with its own clock, written to a numbered file.
-// With +C (Continue_Trace) a frame whose image exists is kept: images are only ever
-// renamed into place once complete, so an existing one is whole, and an interrupted batch
-// resumes.
+// With +C (Continue_Trace) frames are kept as above, so an interrupted batch resumes.
 int run_animation(const RenderOptions& options, const std::vector<Frame>& frames) {
     RenderOptions base = options;
     base.frame_workers = std::make_shared<std::unique_ptr<distrib::TcpSession>>();
     int rendered = 0, kept = 0;
     for (const Frame& f : frames) {
-        if (base.continue_trace && std::filesystem::exists(f.output)) {
+        const Kept k =
+            base.continue_trace ? keep_existing(f.output, base.scene) : Kept::No;
+        if (k == Kept::Yes) {
             ++kept;
             if (!base.quiet)
                 std::fprintf(stderr, "povwall: frame %d: %s exists, kept (+C)\n",
                              f.number, f.output.c_str());
             continue;
         }
+        if (k == Kept::Stale && !base.quiet)
+            std::fprintf(stderr,
+                         "povwall: frame %d: %s is older than %s, rendered again (+C)\n",
+                         f.number, f.output.c_str(), base.scene.c_str());
         RenderOptions o = base;
         o.output = f.output;
         o.frame = RenderOptions::FrameValues{f.number, f.clock, f.clock_delta};
@@ -129,11 +146,15 @@ int run_render(RenderOptions o) {
         std::string out = o.output.empty() ? default_output_name(o) : o.output;
         if (std::filesystem::path(out).extension().empty())
             out += format_extension(o.format);
-        if (std::filesystem::exists(out)) {
+        const Kept k = keep_existing(out, o.scene);
+        if (k == Kept::Yes) {
             if (!o.quiet)
                 std::fprintf(stderr, "povwall: %s exists, kept (+C)\n", out.c_str());
             return 0;
         }
+        if (k == Kept::Stale && !o.quiet)
+            std::fprintf(stderr, "povwall: %s is older than %s, rendered again (+C)\n",
+                         out.c_str(), o.scene.c_str());
     }
     if (o.output.empty()) o.output = default_output_name(o);
     // As POV-Ray does: an output name without an extension gets the format's.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -594,6 +595,32 @@ TEST(Cli, InterruptedBatchResumesToAllFramesEachAsRenderedAlone) {
         EXPECT_EQ(slurp_file(dir / "run" / name), slurp_file(dir / "alone" / name))
             << name;
     }
+}
+
+// +C (and batch --resume) keeps an image only when it is not older than the scene: an
+// image made from an earlier version of the scene is rendered again.
+TEST(Cli, ContinueTraceKeepsImagesNewerThanTheSceneAndRedoesStaleOnes) {
+    fs::path dir = scratch() / "stale";
+    fs::create_directories(dir);
+    fs::path scene =
+        write_scene("stale.pov", "sphere { 0, 1 pigment { color rgb 1 } }\n");
+    const fs::path image = dir / "s.png";
+    ASSERT_EQ(run("render " + scene.string() + " -W 8 -H 6 -q -o " + image.string()).code,
+              0);
+    const auto made = fs::last_write_time(image);
+    fs::last_write_time(scene, made - std::chrono::seconds(10));
+    RunResult r = run("render " + scene.string() + " -W 8 -H 6 +C -o " + image.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("s.png exists, kept (+C)"), std::string::npos) << r.err;
+    EXPECT_EQ(fs::last_write_time(image), made);
+    fs::last_write_time(scene, made + std::chrono::seconds(10));  // edited after
+    r = run("render " + scene.string() + " -W 8 -H 6 +C -o " + image.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(
+        r.err.find("s.png is older than " + scene.string() + ", rendered again (+C)"),
+        std::string::npos)
+        << r.err;
+    EXPECT_NE(fs::last_write_time(image), made);
 }
 
 TEST(Cli, BatchKeepsGoingPastAFailingJobAndExitsOne) {
