@@ -33,8 +33,8 @@ TEST(WorkQueue, ResultsFirstThenDeeperRaysThenArrivalOrder) {
     q.push("result d2", true, 2);
     std::vector<std::string> order;
     while (!q.empty()) order.push_back(q.pop());
-    EXPECT_EQ(order, (std::vector<std::string>{"result d1", "result d2", "ray d3", "ray d1 a",
-                                               "ray d1 b"}));
+    EXPECT_EQ(order, (std::vector<std::string>{"result d1", "result d2", "ray d3",
+                                               "ray d1 a", "ray d1 b"}));
 }
 
 TEST(WorkQueue, FifoPolicyKeepsArrivalOrder) {
