@@ -3,6 +3,7 @@
 // come in through inject(). Internal to distrib/.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -72,6 +73,14 @@ struct Box {
     uint64_t next_id = 0;
     BoxStats stats;
 };
+
+// Progress of a black-box render: a pixel is done when every ray it led to is, which
+// nobody tracks, so the pixels whose camera rays were sent count in the proportion of
+// items finished to items created (exact once the two meet).
+inline uint64_t pixels_done_estimate(uint64_t sent, uint64_t created, uint64_t finished) {
+    if (created == 0) return 0;
+    return uint64_t(double(sent) * std::min(1.0, double(finished) / double(created)));
+}
 
 class BoxHost {
   public:

@@ -387,13 +387,11 @@ void BoxHost::worker(int thread, bool emit_camera) {
     }
 }
 
-// A pixel is done when every ray it led to is; that is not tracked, so the pixels sent
-// count in the proportion of items finished to items created (exact at the end).
 void BoxHost::report_progress() {
-    const uint64_t created = created_.load(), finished = finished_.load();
-    if (!settings_.progress || created == 0) return;
-    const uint64_t sent = uint64_t(std::clamp(next_pixel_.load(), 0, total_pixels_));
-    const uint64_t done = uint64_t(double(sent) * double(finished) / double(created));
+    if (!settings_.progress) return;
+    const uint64_t done =
+        pixels_done_estimate(uint64_t(std::clamp(next_pixel_.load(), 0, total_pixels_)),
+                             created_.load(), finished_.load());
     uint64_t before = progress_reported_.load();
     while (done > before && !progress_reported_.compare_exchange_weak(before, done)) {
     }

@@ -1122,8 +1122,8 @@ class TcpCoordinator {
         }
     }
 
-    // Pixels sent, in the proportion of items finished to items created (a pixel is done
-    // when every ray it led to is, which nobody tracks); exact at the end of the frame.
+    // The workers' last reported counters (pixels_done_estimate); made exact when the
+    // frame is whole.
     void report_progress() {
         if (!settings_->progress) return;
         uint64_t created = created_, finished = 0;
@@ -1131,9 +1131,8 @@ class TcpCoordinator {
             created += w.created;
             finished += w.finished;
         }
-        if (created == 0) return;
-        const uint64_t done = uint64_t(double(next_pixel_) *
-                                       std::min(1.0, double(finished) / double(created)));
+        const uint64_t done =
+            pixels_done_estimate(uint64_t(next_pixel_), created, finished);
         if (done > progress_reported_) {
             settings_->progress->pixels_done += done - progress_reported_;
             progress_reported_ = done;

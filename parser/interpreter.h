@@ -224,7 +224,7 @@ class Interpreter {
     // --max-parse-seconds: the clock is read once per 65,536 tokens.
     std::chrono::steady_clock::time_point parse_deadline_;
     uint32_t tokens_since_clock_ = 0;
-    void check_parse_time(const Token& at);              // and the memory limit
+    void check_parse_limits(const Token& at);            // time and memory
     uint64_t resident_at_start_ = 0, memory_limit_ = 0;  // bytes; limit 0: none
     std::vector<std::unique_ptr<RandomStream>> streams_;
     int version_ = 362;

@@ -50,7 +50,7 @@ Interpreter::Interpreter(const ParseOptions& options, SourceManager& sources)
                               std::chrono::duration<double>(options_.max_parse_seconds));
 }
 
-void Interpreter::check_parse_time(const Token& at) {
+void Interpreter::check_parse_limits(const Token& at) {
     tokens_since_clock_ = 0;
     if (memory_limit_) {
         const uint64_t now = resident_bytes();
