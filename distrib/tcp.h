@@ -96,11 +96,6 @@ class TcpSession {
     int processes_started_before_ = 0;  // by coordinators already replaced
 };
 
-// One frame with its own session.
-Image render_tcp(const Scene& scene, const SceneSource& source,
-                 const trace::RenderSettings& settings, const SpaceOptions& options,
-                 const TcpOptions& tcp, SpaceStats* stats = nullptr);
-
 struct WorkerOptions {
     std::string listen = "127.0.0.1:0";  // port 0: any; the chosen one is printed
     std::string token;

@@ -1292,13 +1292,6 @@ std::vector<uint8_t> encode_control_frame(const std::string& text) {
     return out;
 }
 
-Image render_tcp(const Scene& scene, const SceneSource& source,
-                 const trace::RenderSettings& settings, const SpaceOptions& options,
-                 const TcpOptions& tcp, SpaceStats* stats) {
-    TcpSession session(tcp);
-    return session.render(scene, source, settings, options, stats);
-}
-
 int run_worker(const WorkerOptions& options) {
     try {
         Worker w(options);
