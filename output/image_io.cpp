@@ -12,6 +12,7 @@
 #include <random>
 
 #include "output/image_backend.h"
+#include "output/png_writer.h"
 
 namespace povwall::output {
 namespace {
@@ -147,7 +148,6 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
                 bytes.push_back(uint8_t(q));
         }
     }
-    const ImageBackend& io = backend();
     fs::path tmp = temporary_name(target);
     set_partial(tmp);
     struct ClearPartial {
@@ -159,12 +159,22 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
     const PixelType type = linear_format ? PixelType::Float
                            : sixteen     ? PixelType::UInt16
                                          : PixelType::UInt8;
-    // OIIO picks the format from the file name unless told: the temporary keeps the
-    // extension.
-    std::string err =
-        io.write(tmp.string(), format.empty() ? std::string() : ext.substr(1), W, H,
-                 channels, type, data, !linear_format,
-                 !linear_format && enc.gamma_handling && enc.file_srgb);
+    std::string err;
+    if (ext == ".png") {
+        PngEncoding declared;
+        declared.kind = !enc.gamma_handling ? PngEncoding::Kind::None
+                        : enc.file_srgb     ? PngEncoding::Kind::Srgb
+                                            : PngEncoding::Kind::Gamma;
+        declared.gamma = enc.file_gamma;
+        err = write_png(tmp.string(), W, H, channels, sixteen ? 16 : 8, data, declared);
+    } else {
+        // OIIO picks the format from the file name unless told: the temporary keeps the
+        // extension.
+        err =
+            backend().write(tmp.string(), format.empty() ? std::string() : ext.substr(1),
+                            W, H, channels, type, data, !linear_format,
+                            !linear_format && enc.gamma_handling && enc.file_srgb);
+    }
     std::error_code ec;
     if (!err.empty()) {
         fs::remove(tmp, ec);

@@ -3,8 +3,10 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -104,6 +106,90 @@ TEST(WriteImage, Png8And16BitQuantiseAsPovRay) {
     write_image(img, p16.string(), e);
     back = read_image(p16.string());
     EXPECT_NEAR(back.pixel(0, 0)[0] * 65535.0f, 48192.0f, 1e-2);  // POV-Ray's PNG16 value
+}
+
+// The chunk types of a PNG file in order, with the gAMA value (gamma x 100000) if any.
+std::vector<std::string> png_chunks(const fs::path& p, uint32_t* gama = nullptr) {
+    std::ifstream in(p, std::ios::binary);
+    std::string data((std::istreambuf_iterator<char>(in)),
+                     std::istreambuf_iterator<char>());
+    std::vector<std::string> types;
+    auto be32 = [&](size_t at) {
+        return uint32_t(uint8_t(data[at])) << 24 | uint32_t(uint8_t(data[at + 1])) << 16 |
+               uint32_t(uint8_t(data[at + 2])) << 8 | uint32_t(uint8_t(data[at + 3]));
+    };
+    for (size_t at = 8; at + 8 <= data.size();) {
+        const uint32_t length = be32(at);
+        const std::string type = data.substr(at + 4, 4);
+        if (type == "gAMA" && gama) *gama = be32(at + 8);
+        if (types.empty() || types.back() != type) types.push_back(type);
+        at += 12 + length;
+    }
+    return types;
+}
+
+TEST(WriteImage, PngDeclaresItsEncodingAsPovRayDoes) {
+    Image img = flat(2, 2, 0.5f, 0.5f, 0.5f);
+    fs::path srgb = scratch() / "srgb.png", g22 = scratch() / "g22.png",
+             legacy = scratch() / "legacy.png";
+    uint32_t gama = 0;
+    write_image(img, srgb.string(), OutputEncoding{});
+    EXPECT_EQ(png_chunks(srgb, &gama),
+              (std::vector<std::string>{"IHDR", "gAMA", "sRGB", "cHRM", "IDAT", "IEND"}));
+    EXPECT_EQ(gama, 45455u);  // the value the PNG specification pairs with sRGB
+    OutputEncoding e;
+    e.file_srgb = false;
+    e.file_gamma = 2.2f;
+    write_image(img, g22.string(), e);
+    EXPECT_EQ(png_chunks(g22, &gama),
+              (std::vector<std::string>{"IHDR", "gAMA", "IDAT", "IEND"}));
+    EXPECT_EQ(gama, 45455u);  // 1/2.2
+    EXPECT_NEAR(read_image(g22.string()).pixel(0, 0)[0] * 255.0f,
+                std::floor(std::pow(0.5f, 1 / 2.2f) * 255.0f + 0.5f), 1e-3);
+    e.gamma_handling = false;  // legacy scene: raw values, no declaration
+    write_image(img, legacy.string(), e);
+    EXPECT_EQ(png_chunks(legacy), (std::vector<std::string>{"IHDR", "IDAT", "IEND"}));
+    EXPECT_FLOAT_EQ(read_image(legacy.string()).pixel(1, 1)[2] * 255.0f, 128.0f);
+}
+
+// PNG, the format nearly every render writes, must not load the OpenImageIO module (some
+// 260 libraries, 0.2 s per process). In a fresh process: a death test re-executes the
+// binary, so modules that other tests loaded do not count.
+TEST(WriteImage, PngIsWrittenWithoutLoadingOpenImageIo) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    // The re-executed child has another pid, hence another scratch(): it inherits the
+    // parent's folder through the environment.
+    if (!std::getenv("POVWALL_OUTPUT_TEST_DIR"))
+        setenv("POVWALL_OUTPUT_TEST_DIR", scratch().c_str(), 1);
+    const fs::path dir = std::getenv("POVWALL_OUTPUT_TEST_DIR");
+    const std::string path = (dir / "light.png").string();
+    EXPECT_EXIT(
+        {
+            write_image(flat(4, 4, 0.25f, 0.5f, 1.0f), path, OutputEncoding{});
+            std::ifstream maps("/proc/self/maps");
+            std::string line;
+            bool oiio = false;
+            while (std::getline(maps, line))
+                oiio = oiio || line.find("libOpenImageIO") != std::string::npos;
+            std::_Exit(oiio ? 1 : 0);
+        },
+        testing::ExitedWithCode(0), "");
+    // And the file is a whole PNG (this process may load the module to read it).
+    EXPECT_FLOAT_EQ(read_image(path).pixel(3, 3)[1] * 255.0f, 188.0f);
+    // A .tga is written by OpenImageIO: the same check fails for it, so the test above
+    // can fail.
+    const std::string tga = (dir / "heavy.tga").string();
+    EXPECT_EXIT(
+        {
+            write_image(flat(4, 4, 0.25f, 0.5f, 1.0f), tga, OutputEncoding{});
+            std::ifstream maps("/proc/self/maps");
+            std::string line;
+            bool oiio = false;
+            while (std::getline(maps, line))
+                oiio = oiio || line.find("libOpenImageIO") != std::string::npos;
+            std::_Exit(oiio ? 1 : 0);
+        },
+        testing::ExitedWithCode(1), "");
 }
 
 TEST(WriteImage, AlphaIsWrittenStraightAsPovRayDoes) {
