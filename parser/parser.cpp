@@ -52,7 +52,7 @@ Interpreter::Interpreter(const ParseOptions& options, SourceManager& sources)
 
 void Interpreter::check_parse_limits(const Token& at) {
     tokens_since_clock_ = 0;
-    if (memory_limit_) {
+    if (memory_limit_ && ++clock_reads_ % 16 == 0) {
         const uint64_t now = resident_bytes();
         if (now > resident_at_start_ && now - resident_at_start_ > memory_limit_) {
             error(at, "the scene outgrew the parse memory limit of " +

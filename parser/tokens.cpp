@@ -12,7 +12,7 @@ Token Interpreter::next_raw() {
         Frame& f = frames_.back();
         const SourceFile& file = sources_.file(f.file);
         if (f.pos < f.end && file.tokens[f.pos].kind != TokenKind::End) {
-            if (++tokens_since_clock_ == 65536) check_parse_limits(file.tokens[f.pos]);
+            if (++tokens_since_clock_ == 4096) check_parse_limits(file.tokens[f.pos]);
             return file.tokens[f.pos++];
         }
         // The frame is exhausted: a file or a macro body ends here.
