@@ -284,8 +284,9 @@ int run_render(RenderOptions o) {
                 image = session->render(scene, source, o.render, space, &space_stats);
                 worker_frames = session->frames_on_these_workers();
                 worker_processes = session->processes_started();
-                // The budget shapes the walls; a worker still parses the whole scene, so
-                // its process can outgrow it: said, not hidden.
+                // The budget shapes the walls; a worker keeps the objects of all its
+                // boxes plus the process itself (binary, parser), so it can outgrow
+                // the budget: said, not hidden.
                 const auto& peaks = space_stats.worker_peak_resident;
                 for (size_t w = 0;
                      w < peaks.size() && !o.worker_memory.empty() && !o.quiet; ++w) {
@@ -293,9 +294,13 @@ int run_render(RenderOptions o) {
                         std::fprintf(
                             stderr,
                             "povwall: warning: worker %zu peaked at %.1f MB, over "
-                            "the %.1f MB --worker-memory (workers parse the whole "
-                            "scene; only their boxes are local)\n",
-                            w, peaks[w] / 1048576.0, dplan.worker_memory / 1048576.0);
+                            "the %.1f MB --worker-memory (it held %zu of the scene's "
+                            "objects, those of its boxes; more workers hold fewer "
+                            "each)\n",
+                            w, peaks[w] / 1048576.0, dplan.worker_memory / 1048576.0,
+                            w < space_stats.worker_objects_kept.size()
+                                ? space_stats.worker_objects_kept[w]
+                                : size_t(0));
                     }
                 }
             } catch (const distrib::DistribError& e) {
@@ -422,7 +427,9 @@ int run_render(RenderOptions o) {
                 j["workers"] = {
                     {"frames_on_these_workers", worker_frames},
                     {"processes_started", worker_processes},
-                    {"peak_resident_bytes", space_stats.worker_peak_resident}};
+                    {"peak_resident_bytes", space_stats.worker_peak_resident},
+                    {"objects_kept", space_stats.worker_objects_kept},
+                    {"objects_left_out", space_stats.worker_objects_left_out}};
             }
         } else {
             j["boxes"] = 1;

@@ -374,6 +374,18 @@ struct Scene {
     std::optional<SkySphere> sky_sphere;
     std::vector<Fog> fogs;
     GlobalSettings settings;
+    // Set when the parse left objects out (ParseOptions::keep_object: a black-box worker
+    // keeps only what overlaps its boxes). Objects and their CSG children are numbered
+    // in one pre-order walk of the whole scene's objects, then the lights' looks_like
+    // objects; processes holding different parts of a scene must agree on those numbers
+    // (interior stacks on the wire), so each kept object keeps the number of its first
+    // node in the whole scene's walk, and the walk's total is kept too.
+    std::vector<uint32_t> object_first_node;
+    uint32_t object_nodes_total = 0;
+    size_t objects_left_out = 0;
+    bool objects_filtered() const {
+        return objects_left_out > 0 || !object_first_node.empty();
+    }
     // Effective #version at the end of parsing, times 100 (e.g. 362, 370).
     int language_version = 362;
     bool version_set = false;
@@ -383,5 +395,14 @@ struct Scene {
     }
     bool assumed_gamma_given() const { return settings.assumed_gamma.has_value(); }
 };
+
+// Nodes of an object's tree: the object and, for CSG, its children's trees.
+inline size_t object_node_count(const Object& o) {
+    size_t n = 1;
+    if (auto c = std::get_if<Csg>(&o.shape)) {
+        for (const Object& ch : c->children) n += object_node_count(ch);
+    }
+    return n;
+}
 
 }  // namespace povwall

@@ -84,8 +84,12 @@ inline uint64_t pixels_done_estimate(uint64_t sent, uint64_t created, uint64_t f
 
 class BoxHost {
   public:
+    // `plan`: the coordinator's, for a worker whose scene holds only its part (a plan
+    // made from a part could leave out shadow rays that another part's objects block);
+    // null: made from `scene`.
     BoxHost(const Scene& scene, const trace::RenderSettings& settings,
-            const SpaceOptions& options);
+            const SpaceOptions& options, const trace::RenderPlan* plan = nullptr);
+    const trace::RenderPlan& plan() const { return plan_; }
 
     // Walls from the options (in-process render, coordinator).
     void place_walls();

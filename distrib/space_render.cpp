@@ -14,11 +14,11 @@ using Clock = std::chrono::steady_clock;
 using trace::TraceResult;
 
 BoxHost::BoxHost(const Scene& scene, const trace::RenderSettings& settings,
-                 const SpaceOptions& options)
+                 const SpaceOptions& options, const trace::RenderPlan* plan)
     : scene_(scene),
       settings_(settings),
       options_(options),
-      plan_(trace::make_render_plan(scene, settings.plan_everything_on)) {
+      plan_(plan ? *plan : trace::make_render_plan(scene, settings.plan_everything_on)) {
     parents_ = options.results == SpaceOptions::Results::Parents ||
                (options.results == SpaceOptions::Results::Auto && plan_.parent_tracking);
     total_pixels_ = settings.width * settings.height;

@@ -48,9 +48,11 @@ struct SpaceStats {
     bool parent_tracking = false;
     std::vector<BoxStats> boxes;
     double seconds = 0;
-    // Over TCP: each worker process's peak resident memory in bytes (its whole parse
-    // included: workers parse the whole scene).
+    // Over TCP: each worker process's peak resident memory in bytes (its parse
+    // included), and how many of the scene's objects it kept (those overlapping its
+    // boxes) and left out while parsing.
     std::vector<uint64_t> worker_peak_resident;
+    std::vector<size_t> worker_objects_kept, worker_objects_left_out;
 };
 
 using trace::shading_is_linear;  // trace/render_plan.h

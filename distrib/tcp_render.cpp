@@ -55,15 +55,22 @@ using Clock = std::chrono::steady_clock;
 // ---- Work items on the wire
 // -------------------------------------------------------------
 
-// Interior stacks hold Material pointers; on the wire they are numbers of leaf objects in
-// a traversal every process makes of the same parsed scene, and each process keeps one
-// Material per object (the stack only uses its object and interior).
+// Interior stacks hold Material pointers; on the wire they are numbers of objects (CSG
+// children included) in a walk every process makes of the same scene, and each process
+// keeps one Material per object (the stack only uses its object and interior). A worker
+// that parsed only its part of the scene numbers its objects as in the whole scene
+// (Scene::object_first_node); a number it does not hold reads as no object.
 class ObjectNumbers {
   public:
-    explicit ObjectNumbers(const Scene& scene) {
-        for (const Object& o : scene.objects) add(o);
+    explicit ObjectNumbers(const Scene& scene) : sparse_(scene.objects_filtered()) {
+        int32_t next = 0;
+        for (size_t i = 0; i < scene.objects.size(); ++i) {
+            if (sparse_) next = int32_t(scene.object_first_node[i]);
+            add(scene.objects[i], next);
+        }
+        if (sparse_) next = int32_t(scene.object_nodes_total);
         for (const Light& l : scene.lights) {
-            for (const Object& o : l.looks_like) add(o);
+            for (const Object& o : l.looks_like) add(o, next);
         }
         materials_.resize(objects_.size());
         for (size_t i = 0; i < objects_.size(); ++i) {
@@ -71,29 +78,79 @@ class ObjectNumbers {
             materials_[i].texture = &o.texture;
             materials_[i].interior = o.interior ? &*o.interior : nullptr;
             materials_[i].object = &o;
+            if (sparse_) by_number_.emplace(numbers_[i], i);
         }
     }
     int32_t number(const trace::Material* m) const {
         if (!m || !m->object) return -1;
         auto it = index_.find(m->object);
-        return it == index_.end() ? -1 : it->second;
+        return it == index_.end() ? -1 : numbers_[it->second];
     }
     const trace::Material* material(int32_t n) const {
+        if (sparse_) {
+            auto it = by_number_.find(n);
+            return it == by_number_.end() ? nullptr : &materials_[it->second];
+        }
         return n >= 0 && size_t(n) < materials_.size() ? &materials_[n] : nullptr;
     }
 
   private:
-    void add(const Object& o) {
-        index_.emplace(&o, int32_t(objects_.size()));
+    void add(const Object& o, int32_t& next) {
+        index_.emplace(&o, objects_.size());
         objects_.push_back(&o);
+        numbers_.push_back(next++);
         if (auto c = std::get_if<Csg>(&o.shape)) {
-            for (const Object& ch : c->children) add(ch);
+            for (const Object& ch : c->children) add(ch, next);
         }
     }
+    bool sparse_;
     std::vector<const Object*> objects_;
-    std::unordered_map<const Object*, int32_t> index_;
+    std::vector<int32_t> numbers_;  // per entry of objects_
+    std::unordered_map<const Object*, size_t> index_;
+    std::unordered_map<int32_t, size_t> by_number_;  // sparse numbering only
     std::vector<trace::Material> materials_;
 };
+
+// The coordinator's render plan, sent with every frame: a worker that parsed only its
+// part of the scene must not decide from that part which rays the scene needs.
+json plan_to_json(const trace::RenderPlan& p) {
+    json lights = json::array();
+    for (const trace::LightPlan& l : p.lights)
+        lights.push_back({l.shadow_rays, l.unoccluded, l.reason});
+    return {{"everything_on", p.everything_on},
+            {"reflection_rays", p.reflection_rays},
+            {"transmission_rays", p.transmission_rays},
+            {"refraction_rays", p.refraction_rays},
+            {"lights", lights},
+            {"skip_unlit_shadow_rays", p.skip_unlit_shadow_rays},
+            {"flat_threshold", p.flat_threshold},
+            {"parent_tracking", p.parent_tracking},
+            {"parent_reason", p.parent_reason},
+            {"finite_primitives", p.finite_primitives},
+            {"infinite_primitives", p.infinite_primitives}};
+}
+
+trace::RenderPlan plan_from_json(const json& j) {
+    trace::RenderPlan p;
+    p.everything_on = j.at("everything_on").get<bool>();
+    p.reflection_rays = j.at("reflection_rays").get<bool>();
+    p.transmission_rays = j.at("transmission_rays").get<bool>();
+    p.refraction_rays = j.at("refraction_rays").get<bool>();
+    for (const json& l : j.at("lights")) {
+        trace::LightPlan lp;
+        lp.shadow_rays = l.at(0).get<bool>();
+        lp.unoccluded = l.at(1).get<bool>();
+        lp.reason = l.at(2).get<std::string>();
+        p.lights.push_back(std::move(lp));
+    }
+    p.skip_unlit_shadow_rays = j.at("skip_unlit_shadow_rays").get<bool>();
+    p.flat_threshold = j.at("flat_threshold").get<int>();
+    p.parent_tracking = j.at("parent_tracking").get<bool>();
+    p.parent_reason = j.at("parent_reason").get<std::string>();
+    p.finite_primitives = j.at("finite_primitives").get<size_t>();
+    p.infinite_primitives = j.at("infinite_primitives").get<size_t>();
+    return p;
+}
 
 struct Writer {
     std::vector<uint8_t>& out;
@@ -514,6 +571,7 @@ class Worker {
         if (!job_.is_object() || !done_)
             return fail_job("a frame before the previous one finished");
         job_["animation"] = j.at("animation");
+        job_["plan"] = j.at("plan");
         done_ = false;
         prepare_then([this] { coordinator_->send(control_frame(ready_message())); });
     }
@@ -573,6 +631,20 @@ class Worker {
         // The previous frame's boxes point into the previous scene: gone first.
         host_.reset();
         numbers_.reset();
+        // Only the objects that overlap this worker's boxes are kept (the same test as
+        // BoxHost::build_boxes), so the worker never holds the whole scene.
+        VirtualWalls walls(j.at("walls").get<std::array<std::vector<Real>, 3>>());
+        mine_.clear();
+        for (size_t b = 0; b < owner_.size(); ++b) {
+            if (owner_[b] == self_) mine_.push_back(int(b));
+        }
+        std::vector<uint8_t> hosted(size_t(walls.box_count()), 0);
+        for (int b : mine_) hosted[size_t(b)] = 1;
+        popts.keep_object = [&walls, &hosted](const Object& o) {
+            for (int b : walls.boxes_overlapping(trace::object_world_bounds(o)))
+                if (hosted[size_t(b)]) return true;
+            return false;
+        };
         try {
             scene_ = parser::parse_scene_text(j.at("scene").get<std::string>(),
                                               j.at("name").get<std::string>(), popts);
@@ -589,14 +661,10 @@ class Worker {
         threads_ = options_.threads > 0 ? options_.threads : j.at("threads").get<int>();
         if (threads_ <= 0)
             threads_ = int(std::max(1u, std::thread::hardware_concurrency()));
-        auto walls = j.at("walls").get<std::array<std::vector<Real>, 3>>();
         numbers_ = std::make_unique<ObjectNumbers>(scene_);
-        host_ = std::make_unique<BoxHost>(scene_, settings_, space_);
-        host_->set_walls(VirtualWalls(walls));
-        mine_.clear();
-        for (size_t b = 0; b < owner_.size(); ++b) {
-            if (owner_[b] == self_) mine_.push_back(int(b));
-        }
+        const trace::RenderPlan plan = plan_from_json(j.at("plan"));
+        host_ = std::make_unique<BoxHost>(scene_, settings_, space_, &plan);
+        host_->set_walls(std::move(walls));
         host_->build_boxes(mine_);
         if (options_.die_after_items >= 0 || options_.hang_after_items >= 0) {
             host_->on_processed = [this] {
@@ -624,7 +692,10 @@ class Worker {
     }
 
     json ready_message() const {
-        json ready = {{"type", "ready"}, {"boxes", mine_}};
+        json ready = {{"type", "ready"},
+                      {"boxes", mine_},
+                      {"objects_kept", scene_.objects.size()},
+                      {"objects_left_out", scene_.objects_left_out}};
         std::vector<size_t> counts;
         for (int b : mine_) counts.push_back(host_->primitive_count(b));
         ready["primitives"] = counts;
@@ -878,8 +949,9 @@ class TcpCoordinator {
         } else {
             emitter_->set_walls(emitter_walls_);
             for (WorkerState& w : workers_) {
-                w.conn->send(control_frame(
-                    {{"type", "frame"}, {"animation", animation_values(source)}}));
+                w.conn->send(control_frame({{"type", "frame"},
+                                            {"animation", animation_values(source)},
+                                            {"plan", plan_to_json(emitter_->plan())}}));
             }
         }
         emitter_->build_boxes({});
@@ -916,8 +988,13 @@ class TcpCoordinator {
             stats->parent_tracking = emitter_->parent_tracking();
             stats->boxes = box_stats_;
             stats->worker_peak_resident.clear();
-            for (const WorkerState& w : workers_)
+            stats->worker_objects_kept.clear();
+            stats->worker_objects_left_out.clear();
+            for (const WorkerState& w : workers_) {
                 stats->worker_peak_resident.push_back(w.peak_resident);
+                stats->worker_objects_kept.push_back(w.objects_kept);
+                stats->worker_objects_left_out.push_back(w.objects_left_out);
+            }
             stats->seconds = std::chrono::duration<double>(Clock::now() - t0).count();
         }
         return image;
@@ -932,7 +1009,8 @@ class TcpCoordinator {
         bool ready = false, done = false;
         uint64_t created = 0, finished = 0;  // latest status
         uint64_t peak_resident = 0;          // the process's VmHWM at its last "done"
-        long wave_seq = -1;                  // latest probe answered
+        size_t objects_kept = 0, objects_left_out = 0;  // by its parse (ready)
+        long wave_seq = -1;                             // latest probe answered
         uint64_t wave_created = 0, wave_finished = 0;
     };
 
@@ -974,6 +1052,7 @@ class TcpCoordinator {
             emitter_walls_.walls(0), emitter_walls_.walls(1), emitter_walls_.walls(2)};
         job["owner"] = owner_;
         job["workers"] = addresses;
+        job["plan"] = plan_to_json(emitter_->plan());
         workers_.resize(n);
         for (int i = 0; i < n; ++i) {
             WorkerState& w = workers_[i];
@@ -1065,6 +1144,8 @@ class TcpCoordinator {
         } else if (type == "ready") {
             auto mine = j.at("boxes").get<std::vector<int>>();
             auto counts = j.at("primitives").get<std::vector<size_t>>();
+            w.objects_kept = j.at("objects_kept").get<size_t>();
+            w.objects_left_out = j.at("objects_left_out").get<size_t>();
             for (size_t k = 0; k < mine.size() && k < counts.size(); ++k)
                 empty_[mine[k]] = counts[k] == 0;
             w.ready = true;

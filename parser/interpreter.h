@@ -209,6 +209,7 @@ class Interpreter {
     void parse_top_level_item(const Token& t);
     std::string resolve_include(const std::string& name, int from_file) const;
     void finish_object(Object& obj);
+    void add_scene_object(Object&& obj);  // to Scene::objects, unless keep_object says no
 
     const ParseOptions& options_;
     SourceManager& sources_;

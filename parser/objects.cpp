@@ -487,6 +487,21 @@ void Interpreter::finish_object(Object& obj) {
     if (obj.texture.empty()) obj.texture.push_back(default_texture_);
 }
 
+void Interpreter::add_scene_object(Object&& obj) {
+    if (!options_.keep_object) {
+        scene_.objects.push_back(std::move(obj));
+        return;
+    }
+    const auto nodes = uint32_t(object_node_count(obj));
+    if (options_.keep_object(obj)) {
+        scene_.object_first_node.push_back(scene_.object_nodes_total);
+        scene_.objects.push_back(std::move(obj));
+    } else {
+        ++scene_.objects_left_out;
+    }
+    scene_.object_nodes_total += nodes;
+}
+
 void Interpreter::parse_top_level_item(const Token& t) {
     if (is_punct(t, ';')) return;
     if (t.kind == TokenKind::Word) {
@@ -532,7 +547,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
         if (try_parse_object(t, obj)) {
             finish_object(obj);
             collect_lights(obj);
-            scene_.objects.push_back(std::move(obj));
+            add_scene_object(std::move(obj));
             return;
         }
         const Value* v = lookup(t);
@@ -543,7 +558,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
             Object copy = **o;
             copy.loc = sources_.location(t);
             finish_object(copy);
-            scene_.objects.push_back(std::move(copy));
+            add_scene_object(std::move(copy));
             return;
         }
         if (auto l = std::get_if<std::shared_ptr<Light>>(v)) {

@@ -1,6 +1,7 @@
 // Entry point of the scene language: a .pov file in, a core::Scene out.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <ostream>
 #include <stdexcept>
@@ -37,6 +38,10 @@ struct ParseOptions {
     // Growth of the process's resident memory during the parse (a loop that makes objects
     // without end); 0: half the memory available when the parse starts.
     uint64_t max_parse_memory = 0;
+    // Called with each finished top-level object; false leaves it out of Scene::objects
+    // (its light sources stay). A black-box worker keeps only what overlaps its boxes,
+    // so its memory holds its part of the scene, never the whole. Null: everything.
+    std::function<bool(const Object&)> keep_object;
 };
 
 // A located diagnostic. what() is the full text as printed: "file:line:col: error: msg",

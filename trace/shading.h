@@ -48,7 +48,7 @@ struct InteriorStack {
     }
     void remove(const Object* o) {
         for (int i = 0; i < size; ++i) {
-            if (items[i]->object == o) {
+            if (items[i] && items[i]->object == o) {
                 for (int j = i; j + 1 < size && j + 1 < kCapacity; ++j)
                     items[j] = items[j + 1];
                 --size;

@@ -16,7 +16,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
+#include <vector>
 
 #include "core/image.h"
 #include "output/image_io.h"
@@ -110,6 +112,64 @@ TEST(Tcp, GlassAndCsgSceneOverProcessesEqualsOneProcess) {
     expect_same_images(scene.string(), "-W 40 -H 30",
                        {"--boxes 2x2x2 --procs 2", "--boxes 2x2x2 --procs 4",
                         "--boxes 4x1x1 --procs 4 --results parents"});
+}
+
+// Spheres only on the left (x < -3) cast shadows far over the floor, lit from the far
+// left. With --boxes 4x1x1 each worker keeps the objects of its box only, so the third
+// worker holds nothing but the floor: a render plan made from its part would call the
+// floor, a lone convex surface, unshadowed and lose the spheres' shadows there.
+const char* kLeftShadowsScene = R"(#version 3.7;
+global_settings { assumed_gamma 1.0 max_trace_level 6 }
+camera { location <0, 6, -11> look_at <0, 0, 0> angle 60 }
+light_source { <-30, 9, 0> color rgb 1 }
+plane { y, 0 pigment { rgb 0.8 } }
+#declare I = 0;
+#while (I < 40)
+  sphere { <-7 + mod(I, 5) * 0.9, 0.3 + int(I / 5) * 0.45, -2 + mod(I * 7, 5)>, 0.25
+           pigment { rgb <1, 0.3, 0.2> } }
+  #declare I = I + 1;
+#end
+sphere { <3.2, 1, 0>, 1 pigment { rgbf <1, 1, 1, 0.9> } interior { ior 1.4 } }
+box { <4, 0, -1>, <5, 2, 1> pigment { rgb <0.2, 0.4, 1> } }
+)";
+
+TEST(Tcp, WorkersKeepOnlyTheObjectsOfTheirBoxesAndTheImageIsUnchanged) {
+    fs::path scene = scratch() / "left_shadows.pov";
+    std::ofstream(scene) << kLeftShadowsScene;
+    expect_same_images(
+        scene.string(), "-W 64 -H 48",
+        {"--boxes 4x1x1 --procs 4", "--boxes 4x1x1 --procs 2 --results parents"});
+    const fs::path stats = scratch() / "left_shadows.json";
+    const std::string out = (scratch() / "left_shadows.exr").string();
+    ASSERT_EQ(run("render " + scene.string() + " -W 64 -H 48 -q -o " + out +
+                  " --boxes 4x1x1 --procs 4 --stats " + stats.string())
+                  .code,
+              0);
+    std::ifstream in(stats);
+    const std::string text{std::istreambuf_iterator<char>(in), {}};
+    auto numbers = [&](const std::string& key) {
+        std::smatch m;
+        std::vector<long> v;
+        if (!std::regex_search(text, m, std::regex("\"" + key + "\": \\[([^\\]]*)\\]")))
+            return v;
+        std::string list = m[1];
+        std::regex num("[0-9]+");
+        for (auto it = std::sregex_iterator(list.begin(), list.end(), num);
+             it != std::sregex_iterator(); ++it)
+            v.push_back(std::stol(it->str()));
+        return v;
+    };
+    const std::vector<long> kept = numbers("objects_kept"),
+                            left_out = numbers("objects_left_out");
+    ASSERT_EQ(kept.size(), 4u) << text;
+    ASSERT_EQ(left_out.size(), 4u);
+    // 43 objects; uniform walls over x in [-7.25, 5] at -4.1875, -1.125 and 1.9375. Box 0
+    // holds the sphere columns at x = -7, -6.1, -5.2 and -4.3 (which crosses the first
+    // wall) and the floor; box 1 the columns at -4.3 and -3.4 and the floor; box 2 the
+    // floor only; box 3 the floor, the glass and the box.
+    const std::vector<long> expected{33, 17, 1, 3};
+    EXPECT_EQ(kept, expected);
+    for (int w = 0; w < 4; ++w) EXPECT_EQ(kept[w] + left_out[w], 43) << "worker " << w;
 }
 
 // A worker started by the test: its process id and address.
