@@ -211,6 +211,8 @@ int run_render(RenderOptions o) {
     request.boxes = o.boxes;
     request.threads = o.render.threads;
     request.procs = o.procs;
+    request.workers = int(o.workers.size());
+    request.pixels = size_t(o.render.width) * size_t(o.render.height);
     // Running workers host black boxes: --workers means space subdivision.
     if (!o.workers.empty() && request.mode == distrib::RenderMode::Auto)
         request.mode = distrib::RenderMode::Space;
@@ -253,7 +255,9 @@ int run_render(RenderOptions o) {
                                                  : distrib::SpaceOptions::Results::Auto;
         space.queue = o.queue == "fifo" ? distrib::QueuePolicy::Fifo
                                         : distrib::QueuePolicy::Priority;
-        if (o.procs > 0 || !o.workers.empty()) {
+        // Worker processes: --procs, --workers, or as many as auto mode needs for the
+        // memory budget.
+        if (dplan.procs > 0 || !o.workers.empty()) {
             distrib::SceneSource source;
             std::ifstream in(o.scene, std::ios::binary);
             source.text.assign(std::istreambuf_iterator<char>(in), {});
@@ -270,7 +274,7 @@ int run_render(RenderOptions o) {
             source.initial_frame = popts.initial_frame,
             source.final_frame = popts.final_frame;
             distrib::TcpOptions tcp;
-            tcp.procs = o.workers.empty() ? o.procs : 0;
+            tcp.procs = o.workers.empty() ? dplan.procs : 0;
             tcp.workers = o.workers;
             tcp.token = o.token;
             tcp.recover = o.recover;
@@ -389,6 +393,9 @@ int run_render(RenderOptions o) {
                      {"lights", lights},
                      {"parent_tracking", use_boxes && space_stats.parent_tracking},
                      {"scene_bytes_estimate", dplan.scene_bytes},
+                     {"prepared_bytes_estimate", dplan.prepared_bytes},
+                     {"worker_processes", dplan.procs},
+                     {"largest_worker_bytes_estimate", dplan.largest_worker_bytes},
                      {"worker_memory", dplan.worker_memory}};
         if (!use_boxes) {
             j["plan"]["octree"] = stats.octree_flat ? "flat list" : "octree";

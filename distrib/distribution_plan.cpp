@@ -83,9 +83,7 @@ std::string format_bytes(size_t bytes) {
 
 namespace {
 
-// Largest estimated local scene over the boxes of `space`'s walls.
-size_t largest_box(const Scene& scene, const std::vector<Bounds3>& bounds,
-                   const std::vector<size_t>& bytes, const SpaceOptions& space) {
+VirtualWalls walls_for(const std::vector<Bounds3>& bounds, const SpaceOptions& space) {
     Bounds3 world;
     std::vector<Bounds3> finite;
     for (const Bounds3& b : bounds) {
@@ -94,16 +92,60 @@ size_t largest_box(const Scene& scene, const std::vector<Bounds3>& bounds,
         world.extend(b.hi);
         finite.push_back(b);
     }
-    (void)scene;
     const auto& n = space.boxes;
-    VirtualWalls walls = space.balanced ? VirtualWalls::balanced(finite, n[0], n[1], n[2])
-                                        : VirtualWalls::uniform(world, n[0], n[1], n[2]);
-    // Each box also keeps its own prepared-scene header and octree root.
-    std::vector<size_t> per_box(walls.box_count(), sizeof(trace::PreparedScene) + 256);
-    for (size_t i = 0; i < bounds.size(); ++i) {
-        for (int b : walls.boxes_overlapping(bounds[i])) per_box[b] += bytes[i];
+    return space.balanced ? VirtualWalls::balanced(finite, n[0], n[1], n[2])
+                          : VirtualWalls::uniform(world, n[0], n[1], n[2]);
+}
+
+// Each box also keeps its own prepared-scene header and octree root.
+constexpr size_t kBoxBytes = sizeof(trace::PreparedScene) + 256;
+
+struct ObjectSizes {
+    std::vector<Bounds3> bounds;
+    std::vector<size_t> model, prepared;
+};
+
+// Largest estimated local scene (objects and their prepared form) over the boxes.
+size_t largest_box(const ObjectSizes& o, const VirtualWalls& walls) {
+    std::vector<size_t> per_box(walls.box_count(), kBoxBytes);
+    for (size_t i = 0; i < o.bounds.size(); ++i) {
+        for (int b : walls.boxes_overlapping(o.bounds[i]))
+            per_box[b] += o.model[i] + o.prepared[i];
     }
     return *std::max_element(per_box.begin(), per_box.end());
+}
+
+// Largest estimated worker over `workers` processes hosting the boxes in contiguous runs
+// (box_owner): the process, each object overlapping any of its boxes once (a worker
+// keeps only those while it parses), and a prepared copy per box it overlaps.
+size_t largest_worker(const ObjectSizes& o, const VirtualWalls& walls, int workers,
+                      size_t pixels, int threads_asked) {
+    const int boxes = walls.box_count();
+    // The process, the fewest rays in flight the flow control allows, the image sums.
+    // Render threads per worker: --threads, else the cores shared out (as
+    // TcpCoordinator starts them).
+    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+    const int per_worker_threads =
+        threads_asked > 0 ? threads_asked : std::max(1, cores / workers);
+    std::vector<size_t> per_worker(
+        size_t(workers), kWorkerProcessBytes + kMinRaysInFlight * kRayInFlightBytes +
+                             pixels * (kPixelBytesPerThread * size_t(per_worker_threads) +
+                                       kPixelBytesAtEnd));
+    for (int b = 0; b < boxes; ++b)
+        per_worker[size_t(box_owner(b, boxes, workers))] += kBoxBytes;
+    std::vector<int> seen(size_t(workers), -1);
+    for (size_t i = 0; i < o.bounds.size(); ++i) {
+        for (int b : walls.boxes_overlapping(o.bounds[i])) {
+            const auto w = size_t(box_owner(b, boxes, workers));
+            per_worker[w] += o.prepared[i];
+            if (seen[w] != int(i)) per_worker[w] += o.model[i];
+            seen[w] = int(i);
+        }
+    }
+    // Measured: workers reach 1.03-1.06x this sum after parsing and building their boxes
+    // (allocator rounding, the parse's own lists) and up to 1.01x at the end of the
+    // trace; 15 % on top.
+    return *std::max_element(per_worker.begin(), per_worker.end()) * 115 / 100;
 }
 
 }  // namespace
@@ -120,12 +162,13 @@ DistributionPlan plan_distribution(const Scene& scene,
         plan.worker_memory =
             pages > 0 && page > 0 ? size_t(pages) * size_t(page) / 2 : size_t(1) << 31;
     }
-    std::vector<Bounds3> bounds;
-    std::vector<size_t> bytes;
+    ObjectSizes sizes;
     for (const Object& o : scene.objects) {
-        bounds.push_back(trace::object_world_bounds(o));
-        bytes.push_back(trace::estimate_prepared_bytes(o));
-        plan.scene_bytes += bytes.back();
+        sizes.bounds.push_back(trace::object_world_bounds(o));
+        sizes.prepared.push_back(trace::estimate_prepared_bytes(o));
+        sizes.model.push_back(trace::estimate_model_bytes(o));
+        plan.prepared_bytes += sizes.prepared.back();
+        plan.scene_bytes += sizes.prepared.back() + sizes.model.back();
     }
     const std::string budget = format_bytes(plan.worker_memory);
     const std::string size = format_bytes(plan.scene_bytes);
@@ -158,24 +201,63 @@ DistributionPlan plan_distribution(const Scene& scene,
         return plan;
     }
     plan.mode = RenderMode::Space;
+    // Worker processes: those asked for; in auto mode, as many as the budget needs (a
+    // scene over the budget cannot be in one process, this one included).
+    const int given = request.workers > 0 ? request.workers : request.procs;
+    auto over_processes = [&](const VirtualWalls& walls) {
+        std::string text;
+        if (given > 0 || request.mode == RenderMode::Auto) {
+            const int boxes = walls.box_count();
+            int k = std::max(given, 1);
+            plan.largest_worker_bytes =
+                largest_worker(sizes, walls, k, request.pixels, request.threads);
+            // Workers asked for are kept as they are; auto adds local ones until each
+            // fits (at most one box each).
+            while (given == 0 && plan.largest_worker_bytes > plan.worker_memory &&
+                   k < std::min(boxes, kMaxAutoWorkers)) {
+                plan.largest_worker_bytes =
+                    largest_worker(sizes, walls, ++k, request.pixels, request.threads);
+            }
+            plan.procs = request.workers > 0 ? 0 : k;
+            // Rays in flight may pile up in one worker: as many as its room allows.
+            const size_t room = plan.worker_memory > plan.largest_worker_bytes
+                                    ? plan.worker_memory - plan.largest_worker_bytes
+                                    : 0;
+            plan.space.max_rays_in_flight =
+                std::clamp(kMinRaysInFlight + room / kRayInFlightBytes, kMinRaysInFlight,
+                           plan.space.max_rays_in_flight);
+            text = " over " + std::to_string(k) +
+                   (request.workers > 0 ? " running" : "") + " worker process" +
+                   (k == 1 ? "" : "es") + ", largest worker " +
+                   format_bytes(plan.largest_worker_bytes);
+            if (plan.largest_worker_bytes > plan.worker_memory)
+                text += given > 0 ? " (over budget: more workers would hold less each)"
+                                  : " (still over budget)";
+        }
+        return text;
+    };
     if (!request.boxes.empty()) {
         plan.space = parse_boxes(request.boxes);
-        plan.largest_box_bytes = largest_box(scene, bounds, bytes, plan.space);
+        const VirtualWalls walls = walls_for(sizes.bounds, plan.space);
+        plan.largest_box_bytes = largest_box(sizes, walls);
         const auto& b = plan.space.boxes;
         plan.reasons.push_back(
             "--boxes " + request.boxes + ": space subdivision, " + std::to_string(b[0]) +
             "x" + std::to_string(b[1]) + "x" + std::to_string(b[2]) +
             (plan.space.balanced ? " balanced" : "") + " boxes, largest local scene " +
-            format_bytes(plan.largest_box_bytes));
+            format_bytes(plan.largest_box_bytes) +
+            (given > 0 ? over_processes(walls) : std::string()));
         return plan;
     }
     // The fewest balanced boxes whose largest local scene fits the budget.
+    VirtualWalls walls;
     for (int n = 1; n <= 16; ++n) {
         SpaceOptions s;
         s.boxes = {n, n, n};
         s.balanced = true;
         plan.space = s;
-        plan.largest_box_bytes = largest_box(scene, bounds, bytes, s);
+        walls = walls_for(sizes.bounds, s);
+        plan.largest_box_bytes = largest_box(sizes, walls);
         if (plan.largest_box_bytes <= plan.worker_memory) break;
     }
     const auto& b = plan.space.boxes;
@@ -189,7 +271,8 @@ DistributionPlan plan_distribution(const Scene& scene,
                            format_bytes(plan.largest_box_bytes) +
                            (plan.largest_box_bytes <= plan.worker_memory
                                 ? ""
-                                : " (still over budget: objects larger than a box)"));
+                                : " (still over budget: objects larger than a box)") +
+                           over_processes(walls));
     return plan;
 }
 

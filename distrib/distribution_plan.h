@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -29,17 +30,27 @@ struct DistributionRequest {
     std::string boxes;         // --boxes as given (empty: not given)
     size_t worker_memory = 0;  // bytes; 0: half of this machine's memory
     int threads = 0;           // 0: all cores
-    int procs = 0;             // screen worker processes (0: not asked for)
+    int procs = 0;             // worker processes, screen or space (0: not asked for)
+    int workers = 0;           // running workers given (--workers): their count
+    size_t pixels = 0;         // image width x height (worker accumulators)
 };
 
 struct DistributionPlan {
     RenderMode mode = RenderMode::Single;
-    SpaceOptions space;            // mode == Space
-    size_t scene_bytes = 0;        // estimated prepared size of the whole scene
+    SpaceOptions space;  // mode == Space
+    // Estimated memory of the whole scene in one process: the parsed model plus its
+    // prepared form (primitives, materials, octree).
+    size_t scene_bytes = 0;
+    size_t prepared_bytes = 0;     // the prepared part alone
     size_t largest_box_bytes = 0;  // estimated, mode == Space
+    // mode == Space over worker processes: the largest worker's estimated memory (the
+    // process itself, the objects of its boxes, their prepared scenes).
+    size_t largest_worker_bytes = 0;
     size_t worker_memory = 0;
     int threads = 1;
-    int procs = 0;                     // mode == Screen: worker processes
+    // Worker processes: mode == Screen, or mode == Space over TCP (0: boxes in this
+    // process).
+    int procs = 0;
     std::vector<std::string> reasons;  // plain words, for --explain
 };
 
@@ -59,5 +70,28 @@ DistributionPlan plan_distribution(const Scene& scene,
 
 // "12.3 MB"
 std::string format_bytes(size_t bytes);
+
+// The worker that hosts `box` of `boxes` spread over `workers`: contiguous runs of box
+// indices, so neighbours along x share a process.
+inline int box_owner(int box, int boxes, int workers) {
+    return int(int64_t(box) * workers / boxes);
+}
+
+// A worker process's own memory before any scene (binary, libraries, stacks): measured
+// 7.7 MB resident for a worker holding one sphere.
+constexpr size_t kWorkerProcessBytes = size_t(8) << 20;
+// Auto mode starts at most this many local worker processes for a memory budget.
+constexpr int kMaxAutoWorkers = 64;
+
+// Memory per ray in flight, as the worker where rays pile up holds it (the queued item,
+// its encoded copy in receive buffers, inbox and queue rings that double as they grow):
+// the worker receiving the camera rays grew by up to 2.5 KB per ray of the in-flight
+// bound while tracing (100,000 spheres, 80x60 to 320x240, bounds 13,000 and 65,536).
+constexpr size_t kRayInFlightBytes = 2560;
+constexpr size_t kMinRaysInFlight = 1024;
+
+// Per pixel of the image, a worker holds r, g, b, transmit in double per render thread,
+// their sum when the frame ends, and that sum encoded for the coordinator.
+constexpr size_t kPixelBytesPerThread = 32, kPixelBytesAtEnd = 96;
 
 }  // namespace povwall::distrib

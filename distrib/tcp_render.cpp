@@ -27,6 +27,7 @@
 #include <utility>  // before Asio: Boost 1.74 uses std::exchange without it
 #include <boost/asio.hpp>
 // clang-format on
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -40,6 +41,7 @@
 
 #include "distrib/box_host.h"
 #include "distrib/child_process.h"
+#include "distrib/distribution_plan.h"
 #include "distrib/message.h"
 #include "distrib/tcp.h"
 #include "parser/parser.h"
@@ -572,6 +574,7 @@ class Worker {
             return fail_job("a frame before the previous one finished");
         job_["animation"] = j.at("animation");
         job_["plan"] = j.at("plan");
+        job_["expected_objects"] = j.at("expected_objects");
         done_ = false;
         prepare_then([this] { coordinator_->send(control_frame(ready_message())); });
     }
@@ -640,6 +643,7 @@ class Worker {
         }
         std::vector<uint8_t> hosted(size_t(walls.box_count()), 0);
         for (int b : mine_) hosted[size_t(b)] = 1;
+        popts.expected_objects = j.at("expected_objects").at(size_t(self_)).get<size_t>();
         popts.keep_object = [&walls, &hosted](const Object& o) {
             for (int b : walls.boxes_overlapping(trace::object_world_bounds(o)))
                 if (hosted[size_t(b)]) return true;
@@ -942,6 +946,7 @@ class TcpCoordinator {
         options_ = &options;
         emitter_ = std::make_unique<BoxHost>(scene, settings, options);
         numbers_ = std::make_unique<ObjectNumbers>(scene);
+        scene_ = &scene;
         in_frame_ = true;
         if (workers_.empty()) {
             emitter_->place_walls();
@@ -951,7 +956,8 @@ class TcpCoordinator {
             for (WorkerState& w : workers_) {
                 w.conn->send(control_frame({{"type", "frame"},
                                             {"animation", animation_values(source)},
-                                            {"plan", plan_to_json(emitter_->plan())}}));
+                                            {"plan", plan_to_json(emitter_->plan())},
+                                            {"expected_objects", objects_per_worker()}}));
             }
         }
         emitter_->build_boxes({});
@@ -1001,6 +1007,25 @@ class TcpCoordinator {
     }
 
   private:
+    // How many of the scene's objects each worker will keep (those overlapping its
+    // boxes), so it can reserve its object list.
+    std::vector<size_t> objects_per_worker() const {
+        const VirtualWalls& walls = emitter_walls_;
+        const size_t workers =
+            owner_.empty() ? 0
+                           : size_t(*std::max_element(owner_.begin(), owner_.end())) + 1;
+        std::vector<size_t> count(workers, 0);
+        std::vector<size_t> seen(workers, SIZE_MAX);
+        for (size_t i = 0; i < scene_->objects.size(); ++i) {
+            for (int b : walls.boxes_overlapping(
+                     trace::object_world_bounds(scene_->objects[i]))) {
+                const auto w = size_t(owner_[size_t(b)]);
+                if (w < count.size() && seen[w] != i) ++count[w], seen[w] = i;
+            }
+        }
+        return count;
+    }
+
     struct WorkerState {
         std::string address;
         std::shared_ptr<Connection> conn;
@@ -1045,7 +1070,7 @@ class TcpCoordinator {
         const int n = int(addresses.size());
         // Contiguous runs of box indices per worker: neighbours along x share a process.
         owner_.resize(boxes);
-        for (int b = 0; b < boxes; ++b) owner_[b] = int(int64_t(b) * n / boxes);
+        for (int b = 0; b < boxes; ++b) owner_[b] = box_owner(b, boxes, n);
         json job = fixed_;
         job["animation"] = animation_values(source);
         job["walls"] = std::array<std::vector<Real>, 3>{
@@ -1053,6 +1078,7 @@ class TcpCoordinator {
         job["owner"] = owner_;
         job["workers"] = addresses;
         job["plan"] = plan_to_json(emitter_->plan());
+        job["expected_objects"] = objects_per_worker();
         workers_.resize(n);
         for (int i = 0; i < n; ++i) {
             WorkerState& w = workers_[i];
@@ -1284,6 +1310,7 @@ class TcpCoordinator {
     const trace::RenderSettings* settings_ = nullptr;
     const SpaceOptions* options_ = nullptr;
     std::unique_ptr<BoxHost> emitter_;  // walls and camera rays; hosts no box
+    const Scene* scene_ = nullptr;      // this frame's
     std::unique_ptr<ObjectNumbers> numbers_;
     std::vector<uint8_t> empty_;
     std::vector<BoxStats> box_stats_;

@@ -4,7 +4,8 @@
 
 namespace povwall::distrib {
 
-VirtualWalls::VirtualWalls(std::array<std::vector<Real>, 3> walls) : walls_(std::move(walls)) {
+VirtualWalls::VirtualWalls(std::array<std::vector<Real>, 3> walls)
+    : walls_(std::move(walls)) {
     for (int a = 0; a < 3; ++a) {
         std::sort(walls_[a].begin(), walls_[a].end());
         walls_[a].erase(std::unique(walls_[a].begin(), walls_[a].end()), walls_[a].end());
@@ -44,7 +45,8 @@ VirtualWalls VirtualWalls::balanced(std::span<const Bounds3> primitives, int nx,
 }
 
 std::array<int, 3> VirtualWalls::cell_of(int box) const {
-    return {box % slabs_[0], (box / slabs_[0]) % slabs_[1], box / (slabs_[0] * slabs_[1])};
+    return {box % slabs_[0], (box / slabs_[0]) % slabs_[1],
+            box / (slabs_[0] * slabs_[1])};
 }
 
 Bounds3 VirtualWalls::box_bounds(int box) const {

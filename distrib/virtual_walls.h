@@ -1,10 +1,11 @@
 // Virtual walls: axis-parallel planes cutting space into a grid of black boxes.
 //
-// Only interior walls are stored; the outermost boxes extend to infinity, so every point of
-// space belongs to exactly one box and infinite objects (planes) simply touch many boxes.
-// A point lying exactly on a wall belongs to the box on the wall's high side; a ray walk
-// starting on a wall starts in the box it moves into, so routing is deterministic for rays
-// on walls or along axes, and a ray forwarded at a wall never bounces back.
+// Only interior walls are stored; the outermost boxes extend to infinity, so every point
+// of space belongs to exactly one box and infinite objects (planes) simply touch many
+// boxes. A point lying exactly on a wall belongs to the box on the wall's high side; a
+// ray walk starting on a wall starts in the box it moves into, so routing is
+// deterministic for rays on walls or along axes, and a ray forwarded at a wall never
+// bounces back.
 #pragma once
 
 #include <array>
@@ -16,16 +17,17 @@
 namespace povwall::distrib {
 
 class VirtualWalls {
-public:
+  public:
     VirtualWalls() = default;
     // `walls[axis]` must be sorted ascending; each list of k walls makes k+1 slabs.
     explicit VirtualWalls(std::array<std::vector<Real>, 3> walls);
 
     // nx*ny*nz equal slabs of `scene` (the outer slabs extend to infinity).
     static VirtualWalls uniform(const Bounds3& scene, int nx, int ny, int nz);
-    // Walls at quantiles of primitive centres along each axis, so that each slab holds about
-    // the same number of primitives (the cost estimate used for adaptive walls).
-    static VirtualWalls balanced(std::span<const Bounds3> primitives, int nx, int ny, int nz);
+    // Walls at quantiles of primitive centres along each axis, so that each slab holds
+    // about the same number of primitives (the cost estimate used for adaptive walls).
+    static VirtualWalls balanced(std::span<const Bounds3> primitives, int nx, int ny,
+                                 int nz);
 
     int box_count() const { return slabs_[0] * slabs_[1] * slabs_[2]; }
     std::array<int, 3> slabs() const { return slabs_; }
@@ -44,12 +46,12 @@ public:
         int box;
         Real t_enter, t_exit;  // the ray is inside `box` for t in [t_enter, t_exit]
     };
-    // Calls visit(segment) for each box the ray crosses for t in [t_min, t_max], in order;
-    // stops early when visit returns true. NaN directions visit nothing.
+    // Calls visit(segment) for each box the ray crosses for t in [t_min, t_max], in
+    // order; stops early when visit returns true. NaN directions visit nothing.
     template <class Visit>
     void walk(const Ray& ray, Real t_min, Real t_max, Visit&& visit) const;
 
-private:
+  private:
     int slab_of(int axis, Real v) const;
     int slab_of_directed(int axis, Real v, Real direction) const;
     std::array<std::vector<Real>, 3> walls_;
@@ -63,8 +65,8 @@ void VirtualWalls::walk(const Ray& ray, Real t_min, Real t_max, Visit&& visit) c
     for (int a = 0; a < 3; ++a) {
         if (std::isnan(start[a]) || std::isnan(ray.direction[a])) return;
     }
-    // A start exactly on a wall belongs to the side the ray moves into, so a ray forwarded
-    // at a wall never bounces back to the box it left.
+    // A start exactly on a wall belongs to the side the ray moves into, so a ray
+    // forwarded at a wall never bounces back to the box it left.
     std::array<int, 3> cell{slab_of_directed(0, start.x, ray.direction.x),
                             slab_of_directed(1, start.y, ray.direction.y),
                             slab_of_directed(2, start.z, ray.direction.z)};
@@ -81,8 +83,8 @@ void VirtualWalls::walk(const Ray& ray, Real t_min, Real t_max, Visit&& visit) c
             }
         }
         Real t_exit = std::min(std::max(t_next, t), t_max);
-        // A start rounded onto the near side of a wall gives an empty segment: step over it
-        // without visiting, the same way whichever box computes the walk.
+        // A start rounded onto the near side of a wall gives an empty segment: step over
+        // it without visiting, the same way whichever box computes the walk.
         if (t_next > t || t_next >= t_max) {
             if (visit(Segment{box_index(cell), t, t_exit})) return;
         }

@@ -3,6 +3,7 @@
 #include <pthread.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -40,6 +41,8 @@ uint64_t available_bytes() {
 
 Interpreter::Interpreter(const ParseOptions& options, SourceManager& sources)
     : options_(options), sources_(sources) {
+    // A hint only: capped so that a wrong one cannot reserve absurd memory.
+    scene_.objects.reserve(std::min<size_t>(options_.expected_objects, size_t(1) << 26));
     resident_at_start_ = resident_bytes();
     memory_limit_ =
         options_.max_parse_memory ? options_.max_parse_memory : available_bytes() / 2;

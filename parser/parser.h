@@ -42,6 +42,10 @@ struct ParseOptions {
     // (its light sources stay). A black-box worker keeps only what overlaps its boxes,
     // so its memory holds its part of the scene, never the whole. Null: everything.
     std::function<bool(const Object&)> keep_object;
+    // How many top-level objects the scene will keep, when known (a black-box worker is
+    // told by the coordinator): reserved up front, so the object list never reallocates
+    // (a reallocation holds the old and the new list at once: up to 3x its size).
+    size_t expected_objects = 0;
 };
 
 // A located diagnostic. what() is the full text as printed: "file:line:col: error: msg",

@@ -130,6 +130,65 @@ size_t estimate_prepared_bytes(const Object& o) {
     return kPerPrimitive + sizeof(void*) + kMaterial * leaves;
 }
 
+namespace {
+
+// malloc's header and rounding per heap block.
+constexpr size_t kHeapBlock = 16;
+
+size_t heap_bytes(size_t bytes) { return bytes ? bytes + kHeapBlock : 0; }
+
+size_t model_bytes(const Pigment& p);
+size_t model_bytes(const Normal& n) {
+    size_t b = heap_bytes(n.map_values.size() * sizeof(float)) +
+               heap_bytes(n.slope_map.size() * sizeof(SlopeMapEntry)) +
+               heap_bytes(n.list.size() * sizeof(Normal));
+    for (const Normal& e : n.list) b += model_bytes(e);
+    return b;
+}
+size_t model_bytes(const Pigment& p) {
+    size_t b = heap_bytes(p.colour_map.size() * sizeof(ColourMapEntry)) +
+               heap_bytes(p.map_values.size() * sizeof(float)) +
+               heap_bytes(p.list.size() * sizeof(Pigment));
+    for (const Pigment& e : p.list) b += model_bytes(e);
+    return b;
+}
+size_t model_bytes(const LayeredTexture& layers) {
+    size_t b = heap_bytes(layers.size() * sizeof(Texture));
+    for (const Texture& t : layers) {
+        b += model_bytes(t.pigment) + (t.normal ? model_bytes(*t.normal) : 0);
+        b += heap_bytes(t.map_values.size() * sizeof(float)) +
+             heap_bytes(t.map.size() * sizeof(LayeredTexture));
+        for (const LayeredTexture& m : t.map) b += model_bytes(m);
+    }
+    return b;
+}
+size_t model_bytes_of_list(const std::vector<Object>& objects) {
+    size_t b = heap_bytes(objects.size() * sizeof(Object));
+    for (const Object& o : objects) b += estimate_model_bytes(o) - sizeof(Object);
+    return b;
+}
+
+}  // namespace
+
+size_t estimate_model_bytes(const Object& o) {
+    // The Object itself (held in a vector: no block of its own), then what it points to.
+    size_t b = sizeof(Object) + model_bytes(o.texture) + model_bytes(o.interior_texture) +
+               model_bytes_of_list(o.clipped_by) + model_bytes_of_list(o.bounded_by);
+    if (auto m = std::get_if<Mesh>(&o.shape)) {
+        b += heap_bytes(m->vertices.size() * sizeof(Point3)) +
+             heap_bytes(m->normals.size() * sizeof(Vector3)) +
+             heap_bytes(m->faces.size() * sizeof(Mesh::Face)) +
+             heap_bytes(m->textures.size() * sizeof(LayeredTexture));
+        for (const LayeredTexture& t : m->textures) b += model_bytes(t);
+    } else if (auto p = std::get_if<Polygon>(&o.shape)) {
+        b += heap_bytes(p->points.size() * sizeof(Point3));
+    } else if (auto c = std::get_if<Csg>(&o.shape)) {
+        b += model_bytes_of_list(c->children) +
+             heap_bytes(c->lights.size() * sizeof(Light));
+    }
+    return b;
+}
+
 bool shading_is_linear(const Scene& scene) {
     bool linear = true;
     for_each_scene_texture(scene, [&](const LayeredTexture& layers) {

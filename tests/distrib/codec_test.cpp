@@ -57,7 +57,8 @@ TEST(Codec, ResultsRoundTripAndFramesConcatenate) {
     EXPECT_EQ(f.results[0].colour, (Rgb{0.1f, 0.2f, 0.3f}));
     EXPECT_EQ(f.results[0].distance, 3.25);
     Frame g;
-    ASSERT_EQ(decode_frame(std::span(bytes).subspan(f.consumed), g), DecodeStatus::Complete);
+    ASSERT_EQ(decode_frame(std::span(bytes).subspan(f.consumed), g),
+              DecodeStatus::Complete);
     EXPECT_EQ(g.rays[0].id, sample_ray(5).id);
 }
 
@@ -66,7 +67,8 @@ TEST(Codec, TruncatedInputNeedsMoreAndCorruptInputIsBad) {
     encode_rays(std::vector<RayMessage>{sample_ray(1)}, bytes);
     Frame f;
     for (size_t n : {size_t(0), size_t(5), kHeaderSize, bytes.size() - 1}) {
-        EXPECT_EQ(decode_frame(std::span(bytes).first(n), f), DecodeStatus::NeedMore) << n;
+        EXPECT_EQ(decode_frame(std::span(bytes).first(n), f), DecodeStatus::NeedMore)
+            << n;
     }
     auto bad_magic = bytes;
     bad_magic[0] ^= 0xff;

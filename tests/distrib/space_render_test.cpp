@@ -1,10 +1,11 @@
-// The distributed back end must give the single-process image: same scene, many wall layouts,
-// both ways of returning colours.
+// The distributed back end must give the single-process image: same scene, many wall
+// layouts, both ways of returning colours.
+#include "distrib/space_render.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "distrib/space_render.h"
 #include "parser/parser.h"
 #include "trace/render.h"
 
@@ -44,7 +45,7 @@ double rmse(const Image& a, const Image& b) {
 }
 
 class SpaceRender : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         scene_ = parser::parse_scene_text(kScene, "space.pov", {});
         settings_.width = 96;
@@ -103,7 +104,8 @@ TEST_F(SpaceRender, StatsShowLocalScenesAndTraffic) {
 }
 
 TEST(SpaceRenderPlan, ReflectionExponentNeedsParents) {
-    Scene linear = parser::parse_scene_text("sphere { 0, 1 finish { reflection 0.5 } }", "a.pov", {});
+    Scene linear = parser::parse_scene_text("sphere { 0, 1 finish { reflection 0.5 } }",
+                                            "a.pov", {});
     Scene exponent = parser::parse_scene_text(
         "sphere { 0, 1 finish { reflection { 0.5 exponent 2 } } }", "b.pov", {});
     EXPECT_TRUE(shading_is_linear(linear));

@@ -40,9 +40,12 @@ TEST(VirtualWalls, OverlapCountsTouchingBoxes) {
 
 TEST(VirtualWalls, BalancedWallsSplitPrimitiveCountsEvenly) {
     std::vector<Bounds3> prims;
-    // 90 primitives crowded near x=0, 10 spread to x=100: a uniform cut would be lopsided.
-    for (int i = 0; i < 90; ++i) prims.push_back({{i * 0.01, 0, 0}, {i * 0.01 + 0.001, 1, 1}});
-    for (int i = 0; i < 10; ++i) prims.push_back({{10.0 + i * 10, 0, 0}, {10.0 + i * 10, 1, 1}});
+    // 90 primitives crowded near x=0, 10 spread to x=100: a uniform cut would be
+    // lopsided.
+    for (int i = 0; i < 90; ++i)
+        prims.push_back({{i * 0.01, 0, 0}, {i * 0.01 + 0.001, 1, 1}});
+    for (int i = 0; i < 10; ++i)
+        prims.push_back({{10.0 + i * 10, 0, 0}, {10.0 + i * 10, 1, 1}});
     VirtualWalls w = VirtualWalls::balanced(prims, 2, 1, 1);
     ASSERT_EQ(w.walls(0).size(), 1u);
     int below = 0;
@@ -79,7 +82,8 @@ TEST(VirtualWalls, WalkVisitsContiguousSegmentsInOrder) {
 TEST(VirtualWalls, NanRayVisitsNothing) {
     VirtualWalls w = VirtualWalls::uniform({{-1, -1, -1}, {1, 1, 1}}, 2, 2, 2);
     int visits = 0;
-    w.walk({{0, 0, 0}, {std::nan(""), 1, 0}}, 0, 10, [&](auto) { return ++visits, false; });
+    w.walk({{0, 0, 0}, {std::nan(""), 1, 0}}, 0, 10,
+           [&](auto) { return ++visits, false; });
     EXPECT_EQ(visits, 0);
 }
 
