@@ -105,12 +105,32 @@ struct ObjectSizes {
     std::vector<size_t> model, prepared;
 };
 
+// The boxes each object overlaps under one set of walls (flat lists: the planner tries
+// several box and worker counts over 100,000s of objects).
+struct Overlaps {
+    int boxes = 0;
+    std::vector<uint32_t> start;  // object i's boxes: box[start[i] .. start[i + 1])
+    std::vector<int> box;
+};
+
+Overlaps overlaps_of(const ObjectSizes& o, const VirtualWalls& walls) {
+    Overlaps ov;
+    ov.boxes = walls.box_count();
+    ov.start.reserve(o.bounds.size() + 1);
+    for (const Bounds3& b : o.bounds) {
+        ov.start.push_back(uint32_t(ov.box.size()));
+        for (int x : walls.boxes_overlapping(b)) ov.box.push_back(x);
+    }
+    ov.start.push_back(uint32_t(ov.box.size()));
+    return ov;
+}
+
 // Largest estimated local scene (objects and their prepared form) over the boxes.
-size_t largest_box(const ObjectSizes& o, const VirtualWalls& walls) {
-    std::vector<size_t> per_box(walls.box_count(), kBoxBytes);
+size_t largest_box(const ObjectSizes& o, const Overlaps& ov) {
+    std::vector<size_t> per_box(size_t(ov.boxes), kBoxBytes);
     for (size_t i = 0; i < o.bounds.size(); ++i) {
-        for (int b : walls.boxes_overlapping(o.bounds[i]))
-            per_box[b] += o.model[i] + o.prepared[i];
+        for (uint32_t k = ov.start[i]; k < ov.start[i + 1]; ++k)
+            per_box[size_t(ov.box[k])] += o.model[i] + o.prepared[i];
     }
     return *std::max_element(per_box.begin(), per_box.end());
 }
@@ -118,9 +138,9 @@ size_t largest_box(const ObjectSizes& o, const VirtualWalls& walls) {
 // Largest estimated worker over `workers` processes hosting the boxes in contiguous runs
 // (box_owner): the process, each object overlapping any of its boxes once (a worker
 // keeps only those while it parses), and a prepared copy per box it overlaps.
-size_t largest_worker(const ObjectSizes& o, const VirtualWalls& walls, int workers,
+size_t largest_worker(const ObjectSizes& o, const Overlaps& ov, int workers,
                       size_t pixels, int threads_asked) {
-    const int boxes = walls.box_count();
+    const int boxes = ov.boxes;
     // The process, the fewest rays in flight the flow control allows, the image sums.
     // Render threads per worker: --threads, else the cores shared out (as
     // TcpCoordinator starts them).
@@ -133,13 +153,13 @@ size_t largest_worker(const ObjectSizes& o, const VirtualWalls& walls, int worke
                                        kPixelBytesAtEnd));
     for (int b = 0; b < boxes; ++b)
         per_worker[size_t(box_owner(b, boxes, workers))] += kBoxBytes;
-    std::vector<int> seen(size_t(workers), -1);
+    std::vector<size_t> seen(size_t(workers), SIZE_MAX);
     for (size_t i = 0; i < o.bounds.size(); ++i) {
-        for (int b : walls.boxes_overlapping(o.bounds[i])) {
-            const auto w = size_t(box_owner(b, boxes, workers));
+        for (uint32_t k = ov.start[i]; k < ov.start[i + 1]; ++k) {
+            const auto w = size_t(box_owner(ov.box[k], boxes, workers));
             per_worker[w] += o.prepared[i];
-            if (seen[w] != int(i)) per_worker[w] += o.model[i];
-            seen[w] = int(i);
+            if (seen[w] != i) per_worker[w] += o.model[i];
+            seen[w] = i;
         }
     }
     // Measured: workers reach 1.03-1.06x this sum after parsing and building their boxes
@@ -204,61 +224,79 @@ DistributionPlan plan_distribution(const Scene& scene,
     // Worker processes: those asked for; in auto mode, as many as the budget needs (a
     // scene over the budget cannot be in one process, this one included).
     const int given = request.workers > 0 ? request.workers : request.procs;
-    auto over_processes = [&](const VirtualWalls& walls) {
-        std::string text;
-        if (given > 0 || request.mode == RenderMode::Auto) {
-            const int boxes = walls.box_count();
-            int k = std::max(given, 1);
+    // A budget below an empty worker (process, fewest rays in flight, image sums) cannot
+    // be met by more boxes: then the first box count whose boxes fit is taken.
+    const size_t empty_worker =
+        (kWorkerProcessBytes + kMinRaysInFlight * kRayInFlightBytes +
+         request.pixels * (kPixelBytesPerThread + kPixelBytesAtEnd)) *
+        115 / 100;
+    const bool workers_can_fit = plan.worker_memory > empty_worker;
+    // Local worker processes for these boxes: `given`, else the fewest (at most one box
+    // each, at most kMaxAutoWorkers) whose largest worker fits; false when none fits.
+    auto fit_workers = [&](const Overlaps& ov) {
+        // Below an empty worker no count fits: one per core then.
+        int k = given > 0         ? given
+                : workers_can_fit ? 1
+                                  : std::min(ov.boxes, plan.threads);
+        plan.largest_worker_bytes =
+            largest_worker(sizes, ov, k, request.pixels, request.threads);
+        while (given == 0 && workers_can_fit &&
+               plan.largest_worker_bytes > plan.worker_memory &&
+               k < std::min(ov.boxes, kMaxAutoWorkers)) {
             plan.largest_worker_bytes =
-                largest_worker(sizes, walls, k, request.pixels, request.threads);
-            // Workers asked for are kept as they are; auto adds local ones until each
-            // fits (at most one box each).
-            while (given == 0 && plan.largest_worker_bytes > plan.worker_memory &&
-                   k < std::min(boxes, kMaxAutoWorkers)) {
-                plan.largest_worker_bytes =
-                    largest_worker(sizes, walls, ++k, request.pixels, request.threads);
-            }
-            plan.procs = request.workers > 0 ? 0 : k;
-            // Rays in flight may pile up in one worker: as many as its room allows.
-            const size_t room = plan.worker_memory > plan.largest_worker_bytes
-                                    ? plan.worker_memory - plan.largest_worker_bytes
-                                    : 0;
-            plan.space.max_rays_in_flight =
-                std::clamp(kMinRaysInFlight + room / kRayInFlightBytes, kMinRaysInFlight,
-                           plan.space.max_rays_in_flight);
-            text = " over " + std::to_string(k) +
-                   (request.workers > 0 ? " running" : "") + " worker process" +
-                   (k == 1 ? "" : "es") + ", largest worker " +
-                   format_bytes(plan.largest_worker_bytes);
-            if (plan.largest_worker_bytes > plan.worker_memory)
-                text += given > 0 ? " (over budget: more workers would hold less each)"
-                                  : " (still over budget)";
+                largest_worker(sizes, ov, ++k, request.pixels, request.threads);
         }
+        plan.procs = request.workers > 0 ? 0 : k;
+        return plan.largest_worker_bytes <= plan.worker_memory;
+    };
+    auto over_processes = [&](const Overlaps& ov) {
+        fit_workers(ov);
+        // Rays in flight may pile up in one worker: as many as its room allows.
+        const size_t room = plan.worker_memory > plan.largest_worker_bytes
+                                ? plan.worker_memory - plan.largest_worker_bytes
+                                : 0;
+        plan.space.max_rays_in_flight =
+            std::clamp(kMinRaysInFlight + room / kRayInFlightBytes, kMinRaysInFlight,
+                       plan.space.max_rays_in_flight);
+        const int k = request.workers > 0 ? request.workers : plan.procs;
+        std::string text = " over " + std::to_string(k) +
+                           (request.workers > 0 ? " running" : "") + " worker process" +
+                           (k == 1 ? "" : "es") + ", largest worker " +
+                           format_bytes(plan.largest_worker_bytes);
+        if (!workers_can_fit)
+            text +=
+                " (over budget: a worker alone needs " + format_bytes(empty_worker) + ")";
+        else if (plan.largest_worker_bytes > plan.worker_memory)
+            text += given > 0 ? " (over budget: more workers would hold less each)"
+                              : " (still over budget)";
         return text;
     };
     if (!request.boxes.empty()) {
         plan.space = parse_boxes(request.boxes);
-        const VirtualWalls walls = walls_for(sizes.bounds, plan.space);
-        plan.largest_box_bytes = largest_box(sizes, walls);
+        const Overlaps ov = overlaps_of(sizes, walls_for(sizes.bounds, plan.space));
+        plan.largest_box_bytes = largest_box(sizes, ov);
         const auto& b = plan.space.boxes;
         plan.reasons.push_back(
             "--boxes " + request.boxes + ": space subdivision, " + std::to_string(b[0]) +
             "x" + std::to_string(b[1]) + "x" + std::to_string(b[2]) +
             (plan.space.balanced ? " balanced" : "") + " boxes, largest local scene " +
             format_bytes(plan.largest_box_bytes) +
-            (given > 0 ? over_processes(walls) : std::string()));
+            (given > 0 ? over_processes(ov) : std::string()));
         return plan;
     }
-    // The fewest balanced boxes whose largest local scene fits the budget.
-    VirtualWalls walls;
+    // The fewest balanced boxes whose largest local scene fits the budget and, in auto
+    // mode, whose boxes some number of workers can host within it.
+    const bool with_workers = given > 0 || request.mode == RenderMode::Auto;
+    Overlaps ov;
     for (int n = 1; n <= 16; ++n) {
         SpaceOptions s;
         s.boxes = {n, n, n};
         s.balanced = true;
         plan.space = s;
-        walls = walls_for(sizes.bounds, s);
-        plan.largest_box_bytes = largest_box(sizes, walls);
-        if (plan.largest_box_bytes <= plan.worker_memory) break;
+        ov = overlaps_of(sizes, walls_for(sizes.bounds, s));
+        plan.largest_box_bytes = largest_box(sizes, ov);
+        if (plan.largest_box_bytes > plan.worker_memory) continue;
+        if (!with_workers || given > 0 || !workers_can_fit || fit_workers(ov)) break;
     }
     const auto& b = plan.space.boxes;
     const std::string why =
@@ -272,7 +310,7 @@ DistributionPlan plan_distribution(const Scene& scene,
                            (plan.largest_box_bytes <= plan.worker_memory
                                 ? ""
                                 : " (still over budget: objects larger than a box)") +
-                           over_processes(walls));
+                           (with_workers ? over_processes(ov) : std::string()));
     return plan;
 }
 
