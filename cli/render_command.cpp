@@ -425,9 +425,13 @@ int run_render(RenderOptions o) {
                      {"rays_received", b.rays_received},
                      {"results_received", b.results_received},
                      {"messages_sent", b.messages_sent},
+                     {"messages_received", b.messages_received},
+                     {"bytes_sent", b.bytes_sent},
+                     {"bytes_received", b.bytes_received},
                      {"peak_queue", b.peak_queue},
                      {"peak_waiting_parents", b.peak_parents},
-                     {"busy_seconds", b.busy_seconds}});
+                     {"busy_seconds", b.busy_seconds},
+                     {"idle_seconds", b.idle_seconds}});
             }
             j["boxes"] = boxes;
             if (worker_frames > 0) {

@@ -64,6 +64,7 @@ struct Box {
     trace::RayContext ctx;
     std::mutex inbox_mutex;
     std::vector<Item> inbox;
+    uint64_t inbox_bytes = 0;       // with inbox_mutex: arrived since the last drain
     std::vector<Item> inbox_spare;  // the box's thread only (while busy)
     std::atomic<size_t> pending{0};
     std::atomic<bool> busy{false};
@@ -110,16 +111,18 @@ class BoxHost {
     // Camera ray of pixel p and the box it starts in; -1 where the camera sees nothing.
     int camera_item(int pixel, Item& item) const;
     // An item that arrived from another process for hosted box `box`.
-    void inject(int box, Item&& item);
+    // `bytes`: the item's size as it arrived (its encoded record), for --stats.
+    void inject(int box, Item&& item, size_t bytes);
 
     // Runs `threads` worker threads until all camera rays are traced (in-process), or
     // until stop() (worker process: emit_camera false).
     void run(int threads, bool emit_camera);
     void stop() { stop_.store(true); }
 
-    std::function<void(int box, Item&& item)> remote;  // items for boxes hosted elsewhere
-    std::function<void()> flush;                       // called when a thread runs dry
-    std::function<void()> on_processed;                // test hook, after each item
+    // Items for boxes hosted elsewhere; returns the bytes it sent (for --stats).
+    std::function<size_t(int box, Item&& item)> remote;
+    std::function<void()> flush;         // called when a thread runs dry
+    std::function<void()> on_processed;  // test hook, after each item
 
     // Items created here (pushed to any box) and finished here (processed): summed over
     // all processes at one instant, equal totals mean no ray or result is left anywhere.

@@ -107,11 +107,12 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
     }
 }
 
-void BoxHost::inject(int box, Item&& item) {
+void BoxHost::inject(int box, Item&& item, size_t bytes) {
     Box& d = *boxes_[box];
     {
         std::lock_guard<std::mutex> lock(d.inbox_mutex);
         d.inbox.push_back(std::move(item));
+        d.inbox_bytes += bytes;
     }
     d.pending.fetch_add(1, std::memory_order_release);
 }
@@ -120,8 +121,8 @@ void BoxHost::push(Box* current, int dest, Item&& item) {
     created_.fetch_add(1, std::memory_order_relaxed);
     Box& d = *boxes_[dest];
     if (!d.scene) {  // hosted by another process
-        if (current) ++current->stats.messages_sent;
-        remote(dest, std::move(item));
+        const size_t bytes = remote(dest, std::move(item));
+        if (current) ++current->stats.messages_sent, current->stats.bytes_sent += bytes;
         return;
     }
     if (current == &d) {
@@ -132,10 +133,12 @@ void BoxHost::push(Box* current, int dest, Item&& item) {
         d.pending.fetch_add(1, std::memory_order_release);
         return;
     }
-    if (current) ++current->stats.messages_sent;
+    if (current)
+        ++current->stats.messages_sent, current->stats.bytes_sent += sizeof(Item);
     {
         std::lock_guard<std::mutex> lock(d.inbox_mutex);
         d.inbox.push_back(std::move(item));
+        d.inbox_bytes += sizeof(Item);
     }
     d.pending.fetch_add(1, std::memory_order_release);
 }
@@ -339,7 +342,10 @@ void BoxHost::worker(int thread, bool emit_camera) {
                 {
                     std::lock_guard<std::mutex> lock(box.inbox_mutex);
                     incoming.swap(box.inbox);
+                    box.stats.bytes_received += box.inbox_bytes;
+                    box.inbox_bytes = 0;
                 }
+                box.stats.messages_received += incoming.size();
                 for (Item& it : incoming) {
                     const bool is_result = it.is_result;
                     const int depth = is_result ? 255 : it.ray.trace.depth;
@@ -399,6 +405,7 @@ void BoxHost::report_progress() {
 }
 
 void BoxHost::run(int threads, bool emit_camera) {
+    const auto t0 = Clock::now();
     accum_.assign(threads, std::vector<double>(size_t(total_pixels_) * 4));
     std::vector<std::thread> pool;
     for (int i = 1; i < threads; ++i)
@@ -406,6 +413,10 @@ void BoxHost::run(int threads, bool emit_camera) {
     worker(0, emit_camera);
     for (auto& t : pool) t.join();
     if (emit_camera) report_progress();
+    const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+    for (auto& b : boxes_) {
+        if (b->scene) b->stats.idle_seconds = std::max(0.0, wall - b->stats.busy_seconds);
+    }
 }
 
 std::vector<double> BoxHost::pixel_sums() const {

@@ -40,8 +40,12 @@ struct BoxStats {
     size_t resident_bytes = 0;  // estimate of the local scene
     uint64_t camera = 0, reflected = 0, refracted = 0, shadow = 0;
     uint64_t rays_received = 0, results_received = 0, messages_sent = 0;
+    // Messages are items between boxes (in this process or over TCP); bytes are
+    // sizeof(Item) in process and the encoded record over TCP.
+    uint64_t messages_received = 0, bytes_sent = 0, bytes_received = 0;
     size_t peak_queue = 0, peak_parents = 0;
-    double busy_seconds = 0;
+    // Busy: the box's items being processed; idle: the rest of the render's wall time.
+    double busy_seconds = 0, idle_seconds = 0;
 };
 
 struct SpaceStats {

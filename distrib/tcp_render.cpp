@@ -680,10 +680,13 @@ class Worker {
         host_->remote = [this](int box, Item&& item) {
             Outbox& o = *outboxes_[owner_[box]];
             std::lock_guard<std::mutex> lock(o.mutex);
+            const size_t before = o.records.size();
             Writer w{o.records};
             write_item(w, box, item, *numbers_);
+            const size_t bytes = o.records.size() - before;
             if (++o.count, o.records.size() >= Outbox::kFlushBytes)
                 post(owner_[box], o.take());
+            return bytes;
         };
         host_->flush = [this] {
             for (size_t w = 0; w < outboxes_.size(); ++w) {
@@ -752,6 +755,7 @@ class Worker {
         for (uint32_t i = 0; i < f.count; ++i) {
             Item item;
             int box;
+            const uint8_t* record = rd.p;
             if (!read_item(rd, host_->box_count(), box, item, *numbers_) ||
                 !host_->hosts(box)) {
                 std::fprintf(stderr, "povwall worker: malformed item frame\n");
@@ -759,7 +763,7 @@ class Worker {
                 io_.stop();
                 return;
             }
-            host_->inject(box, std::move(item));
+            host_->inject(box, std::move(item), size_t(rd.p - record));
         }
     }
 
@@ -806,12 +810,16 @@ class Worker {
             if (++count == per_frame) flush_pixels();
         }
         if (count) flush_pixels();
+        // Hosted boxes only, in box order: the coordinator reads them against its owners.
         json boxes = json::array();
-        for (const BoxStats& b : host_->box_stats()) {
+        const std::vector<BoxStats> all = host_->box_stats();
+        for (int index : mine_) {
+            const BoxStats& b = all[size_t(index)];
             boxes.push_back({b.objects, b.resident_bytes, b.camera, b.reflected,
                              b.refracted, b.shadow, b.rays_received, b.results_received,
                              b.messages_sent, b.peak_queue, b.peak_parents,
-                             b.busy_seconds});
+                             b.busy_seconds, b.messages_received, b.bytes_sent,
+                             b.bytes_received, b.idle_seconds});
         }
         coordinator_->send(control_frame({{"type", "done"},
                                           {"stats", boxes},
@@ -1211,6 +1219,8 @@ class TcpCoordinator {
                 out.rays_received = s[6], out.results_received = s[7],
                 out.messages_sent = s[8];
                 out.peak_queue = s[9], out.peak_parents = s[10], out.busy_seconds = s[11];
+                out.messages_received = s[12], out.bytes_sent = s[13];
+                out.bytes_received = s[14], out.idle_seconds = s[15];
             }
             w.peak_resident = j.value("peak_resident", uint64_t(0));
             w.done = true;

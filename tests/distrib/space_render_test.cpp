@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "distrib/box_host.h"
 #include "parser/parser.h"
 #include "trace/render.h"
 
@@ -96,6 +97,24 @@ TEST_F(SpaceRender, StatsShowLocalScenesAndTraffic) {
     EXPECT_LT(max_objects, scene_.objects.size());  // each box holds part of the scene
     EXPECT_EQ(camera, uint64_t(96 * 72));
     EXPECT_GT(sent, 0u);
+    // Every message a box sends, another receives, besides the camera rays the emitter
+    // hands in; in process a message is one Item. Busy plus idle is the render's wall
+    // time, the same for every box.
+    uint64_t received = 0, bytes_sent = 0, bytes_received = 0;
+    double lo = 1e300, hi = -1;
+    for (const auto& b : stats.boxes) {
+        received += b.messages_received;
+        bytes_sent += b.bytes_sent;
+        bytes_received += b.bytes_received;
+        EXPECT_GE(b.idle_seconds, 0.0);
+        lo = std::min(lo, b.busy_seconds + b.idle_seconds);
+        hi = std::max(hi, b.busy_seconds + b.idle_seconds);
+    }
+    EXPECT_EQ(received, sent + uint64_t(96 * 72));
+    EXPECT_EQ(bytes_sent, sent * sizeof(Item));
+    EXPECT_EQ(bytes_received, received * sizeof(Item));
+    EXPECT_GT(lo, 0.0);
+    EXPECT_LE(hi - lo, 1e-3 * hi);
     render({2, 2, 2}, SpaceOptions::Results::Parents, false, &stats);
     EXPECT_TRUE(stats.parent_tracking);
     size_t parents = 0;

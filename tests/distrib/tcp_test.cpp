@@ -170,6 +170,25 @@ TEST(Tcp, WorkersKeepOnlyTheObjectsOfTheirBoxesAndTheImageIsUnchanged) {
     const std::vector<long> expected{33, 17, 1, 3};
     EXPECT_EQ(kept, expected);
     for (int w = 0; w < 4; ++w) EXPECT_EQ(kept[w] + left_out[w], 43) << "worker " << w;
+    // Per-box traffic over TCP: what the boxes send, other boxes receive, plus the camera
+    // rays from the coordinator; bytes are the encoded records.
+    auto sum = [&](const std::string& key) {
+        double total = 0;
+        std::regex re("\"" + key + "\": ([0-9.e+-]+)");
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), re);
+             it != std::sregex_iterator(); ++it)
+            total += std::stod((*it)[1]);
+        return total;
+    };
+    // Each box's stats come from the worker hosting it (a worker's list once landed on
+    // the wrong boxes: boxes 1-3 read 0 objects).
+    EXPECT_EQ(sum("objects"), 33 + 17 + 1 + 3);
+    EXPECT_GT(sum("messages_sent"), 0);
+    EXPECT_GT(sum("messages_received"), sum("messages_sent"));
+    EXPECT_GT(sum("bytes_sent"),
+              40 * sum("messages_sent"));  // a ray record is > 40 bytes
+    EXPECT_GT(sum("bytes_received"), sum("bytes_sent"));
+    EXPECT_GT(sum("idle_seconds") + sum("busy_seconds"), 0);
 }
 
 // 12,000 spheres in a #while: about 26 MB in one process (parsed model and prepared).
