@@ -100,6 +100,11 @@ VirtualWalls walls_for(const std::vector<Bounds3>& bounds, const SpaceOptions& s
 // Each box also keeps its own prepared-scene header and octree root.
 constexpr size_t kBoxBytes = sizeof(trace::PreparedScene) + 256;
 
+// Measured: workers reach 1.03-1.06x their estimate after parsing and building their
+// boxes (allocator rounding, the parse's own lists) and up to 1.01x at the end of the
+// trace; estimates of worker memory get 15 % on top.
+size_t with_margin(size_t bytes) { return bytes * 115 / 100; }
+
 struct ObjectSizes {
     std::vector<Bounds3> bounds;
     std::vector<size_t> model, prepared;
@@ -162,10 +167,7 @@ size_t largest_worker(const ObjectSizes& o, const Overlaps& ov, int workers,
             seen[w] = i;
         }
     }
-    // Measured: workers reach 1.03-1.06x this sum after parsing and building their boxes
-    // (allocator rounding, the parse's own lists) and up to 1.01x at the end of the
-    // trace; 15 % on top.
-    return *std::max_element(per_worker.begin(), per_worker.end()) * 115 / 100;
+    return with_margin(*std::max_element(per_worker.begin(), per_worker.end()));
 }
 
 }  // namespace
@@ -227,9 +229,8 @@ DistributionPlan plan_distribution(const Scene& scene,
     // A budget below an empty worker (process, fewest rays in flight, image sums) cannot
     // be met by more boxes: then the first box count whose boxes fit is taken.
     const size_t empty_worker =
-        (kWorkerProcessBytes + kMinRaysInFlight * kRayInFlightBytes +
-         request.pixels * (kPixelBytesPerThread + kPixelBytesAtEnd)) *
-        115 / 100;
+        with_margin(kWorkerProcessBytes + kMinRaysInFlight * kRayInFlightBytes +
+                    request.pixels * (kPixelBytesPerThread + kPixelBytesAtEnd));
     const bool workers_can_fit = plan.worker_memory > empty_worker;
     // Local worker processes for these boxes: `given`, else the fewest (at most one box
     // each, at most kMaxAutoWorkers) whose largest worker fits; false when none fits.
