@@ -152,6 +152,15 @@ TEST(WriteImage, PngDeclaresItsEncodingAsPovRayDoes) {
     EXPECT_FLOAT_EQ(read_image(legacy.string()).pixel(1, 1)[2] * 255.0f, 128.0f);
 }
 
+// Whether this process has mapped OpenImageIO's library.
+bool open_image_io_loaded() {
+    std::ifstream maps("/proc/self/maps");
+    std::string line;
+    while (std::getline(maps, line))
+        if (line.find("libOpenImageIO") != std::string::npos) return true;
+    return false;
+}
+
 // PNG, the format nearly every render writes, must not load the OpenImageIO module (some
 // 260 libraries, 0.2 s per process). In a fresh process: a death test re-executes the
 // binary, so modules that other tests loaded do not count.
@@ -166,12 +175,7 @@ TEST(WriteImage, PngIsWrittenWithoutLoadingOpenImageIo) {
     EXPECT_EXIT(
         {
             write_image(flat(4, 4, 0.25f, 0.5f, 1.0f), path, OutputEncoding{});
-            std::ifstream maps("/proc/self/maps");
-            std::string line;
-            bool oiio = false;
-            while (std::getline(maps, line))
-                oiio = oiio || line.find("libOpenImageIO") != std::string::npos;
-            std::_Exit(oiio ? 1 : 0);
+            std::_Exit(open_image_io_loaded() ? 1 : 0);
         },
         testing::ExitedWithCode(0), "");
     // And the file is a whole PNG (this process may load the module to read it).
@@ -182,12 +186,7 @@ TEST(WriteImage, PngIsWrittenWithoutLoadingOpenImageIo) {
     EXPECT_EXIT(
         {
             write_image(flat(4, 4, 0.25f, 0.5f, 1.0f), tga, OutputEncoding{});
-            std::ifstream maps("/proc/self/maps");
-            std::string line;
-            bool oiio = false;
-            while (std::getline(maps, line))
-                oiio = oiio || line.find("libOpenImageIO") != std::string::npos;
-            std::_Exit(oiio ? 1 : 0);
+            std::_Exit(open_image_io_loaded() ? 1 : 0);
         },
         testing::ExitedWithCode(1), "");
 }
