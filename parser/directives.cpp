@@ -25,16 +25,17 @@ void Interpreter::run_directive(const Token& t) {
         bool defined = lookup(name) != nullptr;
         if (defined && is_punct(peek(), '[')) {
             // #ifdef(A[i]): defined when that element has been assigned.
-            const Value* v = lookup(name);
-            auto arr = std::get_if<std::shared_ptr<ArrayValue>>(v);
+            // A copy: the subscripts may end the frame that holds the binding.
+            std::shared_ptr<ArrayValue> arr;
+            if (auto a = std::get_if<std::shared_ptr<ArrayValue>>(lookup(name))) arr = *a;
             size_t flat = 0;
             while (accept_punct('[')) {
                 int index = parse_int();
                 expect_punct(']');
                 flat = flat * 1 + size_t(index);  // single-dimension common case
             }
-            defined = arr && flat < (*arr)->items.size() &&
-                      !std::holds_alternative<std::monostate>((*arr)->items[flat]);
+            defined = arr && flat < arr->items.size() &&
+                      !std::holds_alternative<std::monostate>(arr->items[flat]);
         }
         expect_punct(')');
         return directive_if(t, d == "ifdef" ? defined : !defined);
@@ -450,7 +451,6 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
     }
     expect_punct('(', "after macro name '" + m.name + "'");
     Scope params;
-    size_t caller_scope_count = scopes_.size();
     for (size_t i = 0; i < m.params.size(); ++i) {
         if (is_punct(peek(), ')')) {
             if (m.optional_params[i]) continue;
@@ -472,7 +472,12 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
                 !std::holds_alternative<std::shared_ptr<Macro>>(existing->value)) {
                 Token id = next();
                 const Token& after = peek();
-                if (is_punct(after, ',') || is_punct(after, ')')) {
+                bool alone = is_punct(after, ',') || is_punct(after, ')');
+                // Looking ahead may end the frame this call started in (an argument
+                // list running past its macro body's #end), which frees that frame's
+                // scope: find the binding again rather than keep a pointer into it.
+                existing = alone ? find_binding(key, &scope) : nullptr;
+                if (existing) {
                     b.value = existing->value;
                     b.ref_scope = scope;
                     b.ref_name = key;
@@ -490,7 +495,6 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
         }
     }
     expect_punct(')', "after the arguments of '" + m.name + "'");
-    (void)caller_scope_count;
     Frame f{m.file, m.body_begin, m.body_end, Frame::Kind::Macro, scopes_.size(), name};
     scopes_.push_back(std::move(params));
     frames_.push_back(f);

@@ -389,7 +389,7 @@ Value ExpressionParser::word(const Token& t) {
                 Token at = in_.peek();
                 double index = arg_float();
                 in_.expect_punct(']');
-                int i = int(index);
+                int i = saturating_int(index);
                 if (i < 0 || i >= a->dims[d]) {
                     in_.error(at, "array subscript " + std::to_string(i) +
                                       " out of range 0.." +
@@ -604,16 +604,17 @@ Value ExpressionParser::word(const Token& t) {
     if (w == "dimensions" || w == "dimension_size") {
         in_.expect_punct('(');
         Token id = in_.next();
-        const Value* v = in_.lookup(id);
-        auto arr = v ? std::get_if<std::shared_ptr<ArrayValue>>(v) : nullptr;
+        // A copy: the argument may end the frame that holds the binding.
+        std::shared_ptr<ArrayValue> arr;
+        if (auto a = std::get_if<std::shared_ptr<ArrayValue>>(in_.lookup(id))) arr = *a;
         if (!arr) in_.error(id, "'" + std::string(id.text) + "' is not an array");
         double r;
         if (w == "dimensions") {
-            r = double((*arr)->dims.size());
+            r = double(arr->dims.size());
         } else {
             in_.accept_punct(',');
             int d = saturating_int(arg_float());
-            r = (d >= 1 && d <= int((*arr)->dims.size())) ? (*arr)->dims[d - 1] : 0;
+            r = (d >= 1 && d <= int(arr->dims.size())) ? arr->dims[d - 1] : 0;
         }
         in_.expect_punct(')');
         return Numeric::scalar(r);

@@ -537,7 +537,7 @@ void Interpreter::parse_mesh2(Object& out) {
                 }
                 Mesh::Face f;
                 for (int k = 0; k < 3; ++k) {
-                    if (v[k] < 0 || v[k] >= double(mesh.vertices.size())) {
+                    if (!(v[k] >= 0 && v[k] < double(mesh.vertices.size()))) {
                         error(at, "mesh2 face index out of range");
                     }
                     f.v[k] = uint32_t(v[k]);

@@ -411,6 +411,21 @@ TEST(Errors, Mesh2IndicesOutOfRangeAreLocated) {
     EXPECT_EQ(first_line(head + "face_indices { 1, <0,1,2>, 0 } normal_indices { 1, "
                                 "<0,0,5e9> } }"),
               "test.pov:1:188: error: mesh2 normal index out of range");
+    // NaN passes `v < 0 || v >= n`; it must be out of range, not converted to an index.
+    EXPECT_EQ(first_line(head + "face_indices { 1, <0, 1, sqrt(-1)> } }"),
+              "test.pov:1:155: error: mesh2 face index out of range");
+}
+
+// A macro call whose arguments run past the end of the macro body that contains it: the
+// look-ahead after `N` ends that body and frees its scope, where `N` was bound. Found by
+// the scene fuzzer (a heap-use-after-free); now `N` is looked up again, outside the body
+// (so no "called from" note: the call has returned).
+TEST(Errors, MacroArgumentsRunningPastTheirBodysEndAreALocatedError) {
+    EXPECT_EQ(error_of("#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N #end #end\n"
+                       "#declare F = Fact(3));\n"),
+              "test.pov:1:46: error: undeclared identifier 'N'\n"
+              "#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N #end #end\n"
+              "                                             ^");
 }
 
 TEST(Errors, UnsupportedFeatureIsNamed) {
