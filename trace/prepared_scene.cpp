@@ -501,10 +501,23 @@ uint32_t PreparedScene::add_material(const Object& o) {
     m.no_reflection = o.no_reflection;
     m.double_illuminate = o.double_illuminate;
     m.opaque = texture_opaque(o.texture);
+    if (texture_is_plain(o.texture)) {
+        m.plain = true;
+        m.plain_colour = o.texture.front().pigment.colour;
+        m.plain_finish = o.texture.front().finish;
+    }
     materials_.push_back(m);
     uint32_t index = uint32_t(materials_.size()) - 1;
     leaf_materials_.push_back({&o, index});
     return index;
+}
+
+bool texture_is_plain(const LayeredTexture& layers) {
+    if (layers.size() != 1) return false;
+    const Texture& t = layers.front();
+    const Pigment& p = t.pigment;
+    return p.pattern.kind == PatternKind::Solid && p.list.empty() &&
+           p.colour_map.empty() && !t.normal && !t.map_pattern && t.map.empty();
 }
 
 const Material* PreparedScene::material_for(const Object* leaf) const {

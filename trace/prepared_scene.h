@@ -20,7 +20,16 @@ struct Material {
     bool no_shadow = false, no_image = false, no_reflection = false;
     bool double_illuminate = false;
     bool opaque = true;  // no filter or transmit anywhere in its textures
+    // The common texture (one layer, a solid pigment, no normal, no map) copied here, so
+    // that shading reads this small record instead of the object's 1.4 KB Texture: its
+    // cache misses were a third of spawn_children's time on the seed scene.
+    bool plain = false;
+    Colour plain_colour;
+    Finish plain_finish;
 };
+
+// Whether a texture is `plain` in the sense of Material::plain.
+bool texture_is_plain(const LayeredTexture& layers);
 
 enum class PrimKind : uint8_t { Sphere, Triangle, Plane, Object };
 

@@ -132,7 +132,7 @@ namespace {
 bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                        ShadingRecord& out) {
     const Material& m = *hit.material;
-    if (!m.texture || m.texture->size() != 1) return false;
+    if (m.plain || !m.texture || m.texture->size() != 1) return false;
     const Texture& t = m.texture->front();
     if (!t.map_pattern || t.map.empty()) return false;
     const int count = int(t.map.size());
@@ -204,7 +204,9 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     const Vector3 N = dot(hit.normal, D) > 0 ? -hit.normal : hit.normal;
     const bool legacy = sc.language_version < 370;
     const float adc = sc.settings.adc_bailout;
-    const LayeredTexture& layers = texture_of(m);
+    // A plain material (see Material::plain) is one layer read from the material itself.
+    const LayeredTexture* layers = m.plain ? nullptr : &texture_of(m);
+    const int nlayers = m.plain ? 1 : int(layers->size());
     const size_t nlights = sc.lights.size();
 
     thread_local std::vector<Rgb> lit;
@@ -216,19 +218,18 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
 
     Rgb fil(1.0f);
     float trans = 1;
-    const Texture* top = &layers.back();
     Vector3 top_normal = N;
-    for (int li = int(layers.size()) - 1; li >= 0 && trans > adc; --li) {
-        const Texture& tex = layers[li];
-        const Colour lay = eval_pigment(scene, tex.pigment, P);
+    for (int li = nlayers - 1; li >= 0 && trans > adc; --li) {
+        const Texture* tex = layers ? &(*layers)[size_t(li)] : nullptr;
+        const Colour lay = tex ? eval_pigment(scene, tex->pigment, P) : m.plain_colour;
         Vector3 Nl = N;
-        if (tex.normal) {
-            Nl = perturb_normal(*tex.normal, P, N, scene.pattern_env());
+        if (tex && tex->normal) {
+            Nl = perturb_normal(*tex->normal, P, N, scene.pattern_env());
         }
-        if (li == int(layers.size()) - 1) top_normal = Nl;
+        if (li == nlayers - 1) top_normal = Nl;
         const float att = legacy ? 1 - (lay.filter * max3(lay.rgb) + lay.transmit)
                                  : 1 - lay.filter - lay.transmit;
-        const Finish& f = tex.finish;
+        const Finish& f = tex ? tex->finish : m.plain_finish;
         Rgb tmp = lay.rgb * f.ambient * sc.settings.ambient_light * att +
                   lay.rgb * f.emission * att;
         out.local += tmp * fil;
@@ -414,7 +415,6 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         }
         out.children.push_back(child);
     }
-    (void)top;
 }
 
 TraceResult combine_children(const ShadingRecord& record, const TraceResult* results) {
@@ -514,9 +514,11 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
         if (!scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx)) break;
         const Material& m = *hit.material;
         bool black = m.opaque;
-        for (const Texture& t : texture_of(m)) {
-            if (black) break;
-            state.filter *= rgb_transm(eval_pigment(scene, t.pigment, hit.point));
+        if (!black && m.plain) {
+            state.filter *= rgb_transm(m.plain_colour);
+        } else if (!black) {
+            for (const Texture& t : texture_of(m))
+                state.filter *= rgb_transm(eval_pigment(scene, t.pigment, hit.point));
         }
         if (!black) {
             if (state.inside.contains(m.object)) {
