@@ -533,11 +533,10 @@ void Interpreter::directive_include(const Token& t) {
     }
     std::string path = resolve_include(name, frames_.back().file);
     if (path.empty()) error(nt, "cannot find include file \"" + name + "\"");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) error(nt, "cannot open include file \"" + path + "\"");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    int index = sources_.add(path, ss.str());
+    std::string text;
+    if (!read_file_text(path, text))
+        error(nt, "cannot open include file \"" + path + "\"");
+    int index = sources_.add(path, std::move(text));
     scopes_.emplace_back();
     frames_.push_back({index,
                        0,

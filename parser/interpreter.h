@@ -33,6 +33,9 @@ inline int saturating_int(double v) {
     return int(v);
 }
 
+// The whole file in `out`; false when it cannot be opened or read (or is a folder).
+bool read_file_text(const std::string& path, std::string& out);
+
 // Composes `t` into every pattern transform of the layers (textures move with objects).
 void transform_textures(LayeredTexture& layers, const Transform& t);
 

@@ -71,8 +71,8 @@ class ParseError : public std::runtime_error {
 // Parses `path` and everything it includes. Throws ParseError on the first error.
 Scene parse_scene_file(const std::string& path, const ParseOptions& options);
 // Same, from text in memory; `display_name` is used in diagnostics and for relative
-// includes.
-Scene parse_scene_text(const std::string& text, const std::string& display_name,
+// includes. The parse keeps the text (tokens view it): pass an rvalue to spare a copy.
+Scene parse_scene_text(std::string text, const std::string& display_name,
                        const ParseOptions& options);
 
 // POV-Ray 3.7's rand() stream: a 32-bit linear congruential generator, exactly as the
