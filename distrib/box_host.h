@@ -70,7 +70,9 @@ struct Box {
     std::atomic<bool> busy{false};
     WorkQueue<Item> queue;
     ParentTable<WaitingParent> parents;
-    trace::ShadingRecord record;  // scratch for spawn_children
+    // Scratch for spawn_children. Hand-overs never re-enter a box its thread holds, so
+    // one is enough.
+    trace::ShadingRecord record;
     uint64_t next_id = 0;
     BoxStats stats;
 };
@@ -142,6 +144,8 @@ class BoxHost {
     void deliver(Box& box, const RayItem& ray, const trace::TraceResult& result,
                  int thread);
     void push(Box* current, int dest, Item&& item);
+    // Items this thread finished by direct hand-over since the last call.
+    static uint64_t take_handoffs_finished();
     int first_box(const Ray& ray, Real t_from, VirtualWalls::Segment& seg,
                   int& next) const;
     void add_pixel(int thread, int pixel, const Rgb& c, float transmit);

@@ -13,6 +13,26 @@ namespace povwall::distrib {
 using Clock = std::chrono::steady_clock;
 using trace::TraceResult;
 
+namespace {
+// The worker thread running on this OS thread: its index (for its pixel sums), how many
+// direct hand-overs deep it is, and the items it finished by hand-over and has not yet
+// added to the shared count (added once per batch, as the queue's are).
+struct WorkerThread {
+    int index = 0;
+    int depth = 0;
+    uint64_t finished = 0;
+};
+thread_local WorkerThread tl_worker;
+// Each level holds one more box: a few are enough for rays crossing several boxes.
+constexpr int kMaxHandoffDepth = 8;
+}  // namespace
+
+uint64_t BoxHost::take_handoffs_finished() {
+    const uint64_t n = tl_worker.finished;
+    tl_worker.finished = 0;
+    return n;
+}
+
 BoxHost::BoxHost(const Scene& scene, const trace::RenderSettings& settings,
                  const SpaceOptions& options, const trace::RenderPlan* plan)
     : scene_(scene),
@@ -135,6 +155,20 @@ void BoxHost::push(Box* current, int dest, Item&& item) {
     }
     if (current)
         ++current->stats.messages_sent, current->stats.bytes_sent += sizeof(Item);
+    if (options_.direct_handoff && tl_worker.depth < kMaxHandoffDepth &&
+        !d.busy.exchange(true, std::memory_order_acquire)) {
+        // Nobody holds the destination: process the item here and now. The inbox lock
+        // and two moves of the item were half of a crossing's cost.
+        ++d.stats.messages_received;
+        d.stats.bytes_received += sizeof(Item);
+        ++tl_worker.depth;
+        process(d, item, tl_worker.index);
+        --tl_worker.depth;
+        ++tl_worker.finished;
+        d.busy.store(false, std::memory_order_release);
+        if (on_processed) on_processed();
+        return;
+    }
     {
         std::lock_guard<std::mutex> lock(d.inbox_mutex);
         d.inbox.push_back(std::move(item));
@@ -322,10 +356,12 @@ void BoxHost::emit_camera_rays() {
             int box = camera_item(p, item);
             if (box >= 0) push(nullptr, box, std::move(item));
         }
+        finished_.fetch_add(take_handoffs_finished(), std::memory_order_acq_rel);
     }
 }
 
 void BoxHost::worker(int thread, bool emit_camera) {
+    tl_worker = {thread, 0, 0};
     const size_t n = boxes_.size();
     size_t start = size_t(thread) * 7919 % std::max<size_t>(1, n);
     for (;;) {
@@ -366,7 +402,8 @@ void BoxHost::worker(int thread, bool emit_camera) {
             // shares cost more than the queue. Late counts are safe: `finished` only
             // lags `created` (termination waits, flow control holds back a little more).
             box.pending.fetch_sub(done, std::memory_order_release);
-            finished_.fetch_add(done, std::memory_order_acq_rel);
+            finished_.fetch_add(done + take_handoffs_finished(),
+                                std::memory_order_acq_rel);
             if (settings_.progress) {
                 settings_.progress->rays += rays;
                 report_progress();

@@ -32,6 +32,11 @@ struct SpaceOptions {
     enum class Results { Auto, Forward, Parents } results = Results::Auto;
     QueuePolicy queue = QueuePolicy::Priority;
     size_t max_rays_in_flight = 1 << 16;  // flow control: camera rays wait beyond this
+    // A ray or result for a box of this process that no thread is working on is
+    // processed at once by the thread that made it, instead of through the box's inbox
+    // and queue (up to 8 boxes deep). Off: every item goes through the queues, as the
+    // priority-against-FIFO measurements need.
+    bool direct_handoff = true;
 };
 
 struct BoxStats {
@@ -44,7 +49,8 @@ struct BoxStats {
     // sizeof(Item) in process and the encoded record over TCP.
     uint64_t messages_received = 0, bytes_sent = 0, bytes_received = 0;
     size_t peak_queue = 0, peak_parents = 0;
-    // Busy: the box's items being processed; idle: the rest of the render's wall time.
+    // Busy: the box's queued items being processed (an item handed over directly counts
+    // toward the box whose thread handed it over); idle: the rest of the wall time.
     double busy_seconds = 0, idle_seconds = 0;
 };
 
