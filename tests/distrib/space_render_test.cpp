@@ -81,6 +81,39 @@ TEST_F(SpaceRender, EveryLayoutAndModeGivesTheSingleProcessImage) {
     }
 }
 
+// A thread processes items for boxes nobody holds itself, skipping inbox and queue. The
+// rays still cross the same walls in the same number of messages, and the image is the
+// one the queues give; only the queues stay shorter.
+TEST_F(SpaceRender, DirectHandOverGivesTheQueuedImageAndTheSameMessages) {
+    auto run = [&](bool direct, SpaceOptions::Results results, SpaceStats& stats) {
+        SpaceOptions o;
+        o.boxes = {4, 4, 4};
+        o.results = results;
+        o.direct_handoff = direct;
+        return render_space(scene_, settings_, o, &stats);
+    };
+    for (auto results :
+         {SpaceOptions::Results::Forward, SpaceOptions::Results::Parents}) {
+        SpaceStats queued, direct;
+        const Image a = run(false, results, queued);
+        const Image b = run(true, results, direct);
+        EXPECT_LE(rmse(a, reference_), 1e-6);
+        EXPECT_LE(rmse(b, reference_), 1e-6);
+        uint64_t sent[2] = {0, 0}, rays[2] = {0, 0};
+        size_t peak[2] = {0, 0};
+        for (int k = 0; k < 2; ++k) {
+            for (const auto& box : (k == 0 ? queued : direct).boxes) {
+                sent[k] += box.messages_sent;
+                rays[k] += box.camera + box.reflected + box.refracted + box.shadow;
+                peak[k] += box.peak_queue;
+            }
+        }
+        EXPECT_EQ(sent[1], sent[0]);
+        EXPECT_EQ(rays[1], rays[0]);
+        EXPECT_LT(peak[1], peak[0]);
+    }
+}
+
 TEST_F(SpaceRender, StatsShowLocalScenesAndTraffic) {
     SpaceStats stats;
     render({2, 2, 2}, SpaceOptions::Results::Forward, false, &stats);
