@@ -300,6 +300,18 @@ void Interpreter::directive_end(const Token& t) {
     }
 }
 
+namespace {
+// A deep copy: arrays held in elements are copied too.
+std::shared_ptr<ArrayValue> copy_array(const ArrayValue& a) {
+    auto copy = std::make_shared<ArrayValue>(a);
+    for (Value& item : copy->items) {
+        if (auto inner = std::get_if<std::shared_ptr<ArrayValue>>(&item))
+            item = copy_array(**inner);
+    }
+    return copy;
+}
+}  // namespace
+
 void Interpreter::directive_declare(const Token& t, bool local) {
     Token name = next_raw();
     if (is_word(name, "deprecated")) {
@@ -344,6 +356,12 @@ void Interpreter::directive_declare(const Token& t, bool local) {
         std::string feature = e.message().substr(std::string("unsupported: ").size());
         v = std::make_shared<UnsupportedValue>(UnsupportedValue{feature});
     }
+    // POV-Ray copies an array on assignment (`#declare B = A;` then `#declare B[0] = 5;`
+    // leaves A as it was). Shared, it would also let `#declare A[0] = A;` make a cycle
+    // that is never freed. A new array (the only owner) needs no copy.
+    if (auto arr = std::get_if<std::shared_ptr<ArrayValue>>(&v);
+        arr && arr->use_count() > 1)
+        v = copy_array(**arr);
     if (!indices.empty()) {
         const Value* existing = lookup(key);
         auto arr =

@@ -79,6 +79,22 @@ TEST(Identifiers, ArrayElementsStandWhereIdentifiersDo) {
               "             ^~~~");
 }
 
+// As in POV-Ray 3.7 (its output: "1 5 7 1"): assigning an array copies it, while a
+// macro's identifier argument still refers to the caller's array. A shared array also let
+// `#declare C[0] = C;` make a cycle that was never freed (the scene fuzzer's leak; the
+// sanitizer build's leak check sees it).
+TEST(Identifiers, ArrayAssignmentCopiesAndMacroArgumentsRefer) {
+    std::string out;
+    parse(
+        "#declare A = array[2] {1, 2};\n#declare B = A;\n#declare B[0] = 5;\n"
+        "#macro Set(P) #declare P[1] = 7; #end\nSet(A)\n"
+        "#declare C = array[1];\n#declare C[0] = C;\n"
+        "#debug concat(str(A[0], 0, 0), \" \", str(B[0], 0, 0), \" \", "
+        "str(A[1], 0, 0), \" \", str(defined(C[0]), 0, 0))\n",
+        &out);
+    EXPECT_EQ(out, "1 5 7 1");
+}
+
 TEST(Identifiers, LayeredTextureDeclarationAndBareObjectStatement) {
     Scene s = parse(
         "#declare L = texture { pigment { rgb 1 } } texture { pigment { rgbt <0, 0, 0, "
