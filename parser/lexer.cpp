@@ -1,7 +1,9 @@
 // Lexer: one pass over a file's bytes into a token vector.
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cstdlib>
+#include <cstring>
 
 #include "parser/parser.h"
 #include "parser/source.h"
@@ -14,6 +16,18 @@ bool is_ident_start(char c) {
 }
 bool is_ident(char c) { return is_ident_start(c) || (c >= '0' && c <= '9'); }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// One-character punctuation, by table: a string search (memchr) per token was 4 % of a
+// mesh2 file's parse.
+constexpr std::array<bool, 256> kPunctTable = [] {
+    std::array<bool, 256> t{};
+    for (char c : std::string_view("{}()[]<>,;+-*/?:=!&|.")) t[uint8_t(c)] = true;
+    return t;
+}();
+bool is_punct_char(char c) { return kPunctTable[uint8_t(c)]; }
+
+constexpr double kPowersOfTen[16] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                     1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
 
 [[noreturn]] void lex_error(const SourceManager& sm, int file, uint32_t offset,
                             uint32_t length, const std::string& message) {
@@ -71,20 +85,39 @@ void lex(SourceManager& sm, int file_index, SourceFile& f) {
         }
         size_t start = i;
         if (is_digit(c) || (c == '.' && i + 1 < n && is_digit(s[i + 1]))) {
-            while (i < n && is_digit(s[i])) ++i;
+            // The digits as an integer, for the exact fast path below.
+            uint64_t mantissa = 0;
+            int digits = 0, fraction_digits = 0;
+            while (i < n && is_digit(s[i])) {
+                mantissa = mantissa * 10 + uint64_t(s[i++] - '0');
+                ++digits;
+            }
             if (i < n && s[i] == '.') {
                 ++i;
-                while (i < n && is_digit(s[i])) ++i;
+                while (i < n && is_digit(s[i])) {
+                    mantissa = mantissa * 10 + uint64_t(s[i++] - '0');
+                    ++digits;
+                    ++fraction_digits;
+                }
             }
+            bool exponent = false;
             if (i < n && (s[i] == 'e' || s[i] == 'E')) {
                 size_t j = i + 1;
                 if (j < n && (s[j] == '+' || s[j] == '-')) ++j;
                 if (j < n && is_digit(s[j])) {
+                    exponent = true;
                     i = j;
                     while (i < n && is_digit(s[i])) ++i;
                 }
             }
             Token* t = push(TokenKind::Number, start, i - start);
+            if (!exponent && digits <= 15) {
+                // Up to 15 digits and no exponent: the integer and 10^k are exact doubles
+                // and one correctly rounded division gives the correctly rounded value,
+                // as from_chars would (which was 13 % of a mesh2 file's parse).
+                t->number = double(mantissa) / kPowersOfTen[size_t(fraction_digits)];
+                continue;
+            }
             // from_chars: no allocation or locale; strtod only for what it does not take.
             auto [end, ec] = std::from_chars(s.data() + start, s.data() + i, t->number);
             if (ec != std::errc() || end != s.data() + i) {
@@ -176,8 +209,7 @@ void lex(SourceManager& sm, int file_index, SourceFile& f) {
             i += 2;
             continue;
         }
-        static const std::string_view kPunct = "{}()[]<>,;+-*/?:=!&|.";
-        if (kPunct.find(c) != std::string_view::npos) {
+        if (is_punct_char(c)) {
             push(TokenKind::Punct, start, 1);
             ++i;
             continue;
@@ -199,8 +231,14 @@ int SourceManager::add(std::string path, std::string text) {
     f->path = std::move(path);
     f->text = std::move(text);
     f->line_starts.push_back(0);
-    for (uint32_t i = 0; i < f->text.size(); ++i) {
-        if (f->text[i] == '\n') f->line_starts.push_back(i + 1);
+    // memchr from line to line: a byte loop was 6 % of a 48 MB mesh2 file's parse.
+    const char* begin = f->text.data();
+    const char* end = begin + f->text.size();
+    for (const char* p = begin; p < end;) {
+        const void* nl = std::memchr(p, '\n', size_t(end - p));
+        if (!nl) break;
+        p = static_cast<const char*>(nl) + 1;
+        f->line_starts.push_back(uint32_t(p - begin));
     }
     int index = int(files_.size());
     files_.push_back(std::move(f));

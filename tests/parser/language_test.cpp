@@ -2,12 +2,15 @@
 // expression levels, identifiers of every kind, tolerance of unused unsupported features.
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 #include "parser/parser.h"
+#include "parser/source.h"
 
 namespace povwall::parser {
 namespace {
@@ -234,6 +237,39 @@ TEST(Lexer, NestedCommentsAndStrayHash) {
     parse("/* a /* nested */ still comment */ #debug \"x\" // line\n#\n#debug \"y\"\n",
           &out);
     EXPECT_EQ(out, "xy");
+}
+
+// Short decimals take an integer-and-division fast path; every literal must read as the
+// correctly rounded double that from_chars gives (exact equality, 20,000 random literals
+// of 1 to 18 digits with and without fraction, exponent or leading zeros).
+TEST(Lexer, NumbersReadExactlyAsFromChars) {
+    std::mt19937_64 rng(11);
+    std::string text;
+    std::vector<std::string> literals = {"0", "0.1", "0.3", ".5", "5.", "123456789012345",
+                                         "1234567890123456", "0.000000000000001",
+                                         "9007199254740993", "1e3", "2.5E-3", "0007.250"};
+    for (int k = 0; k < 20000; ++k) {
+        std::string lit;
+        const int whole = int(rng() % 10), frac = int(rng() % 10);
+        for (int d = 0; d < whole; ++d) lit += char('0' + rng() % 10);
+        if (frac > 0 || whole == 0) {
+            lit += '.';
+            for (int d = 0; d < std::max(frac, 1); ++d) lit += char('0' + rng() % 10);
+        }
+        if (rng() % 8 == 0) lit += "e" + std::to_string(int(rng() % 40) - 20);
+        literals.push_back(lit);
+    }
+    for (const std::string& l : literals) text += l + " ";
+    SourceManager sm;
+    const SourceFile& f = sm.file(sm.add("numbers.pov", text));
+    ASSERT_EQ(f.tokens.size(), literals.size() + 1);
+    for (size_t k = 0; k < literals.size(); ++k) {
+        double expected = 0;
+        std::from_chars(literals[k].data(), literals[k].data() + literals[k].size(),
+                        expected);
+        ASSERT_EQ(f.tokens[k].kind, TokenKind::Number) << literals[k];
+        EXPECT_EQ(f.tokens[k].number, expected) << literals[k];
+    }
 }
 
 std::string first_line(const std::string& text);
