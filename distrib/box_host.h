@@ -37,6 +37,11 @@ struct RayItem {
     // Forward contributions: factors from this ray's colour / transmit to the pixel.
     Rgb contribution{1.0f};
     float transmit_contribution = 1;
+    // Where first_box() sent it from t_from, kept so that the box receiving it does not
+    // walk the walls again: its box, exit distance and the next box (-1: not known; not
+    // sent over TCP).
+    int32_t route_box = -1, route_next = -1;
+    Real route_exit = 0;
 };
 
 struct ResultItem {

@@ -209,7 +209,13 @@ void BoxHost::process_ray(Box& box, RayItem& ray, int thread) {
     const GlobalSettings& g = scene_.settings;
     VirtualWalls::Segment seg;
     int next;
-    first_box(ray.trace.ray, ray.t_from, seg, next);
+    if (ray.route_box == box.index) {
+        seg = {ray.route_box, ray.t_from, ray.route_exit};
+        next = ray.route_next;
+    } else {
+        first_box(ray.trace.ray, ray.t_from, seg, next);
+    }
+    ray.route_box = -1;          // any item made from this one is routed afresh
     if (seg.box != box.index) {  // a tie on a wall sent it here: pass it on unchanged
         Item item;
         item.ray = ray;
@@ -313,7 +319,9 @@ void BoxHost::process_ray(Box& box, RayItem& ray, int thread) {
         if (child.shadow) ++box.stats.shadow;
         VirtualWalls::Segment s;
         int nx;
-        push(&box, first_box(child.trace.ray, 0, s, nx), std::move(item));
+        const int dest = first_box(child.trace.ray, 0, s, nx);
+        child.route_box = dest, child.route_next = nx, child.route_exit = s.t_exit;
+        push(&box, dest, std::move(item));
     }
 }
 
@@ -342,7 +350,9 @@ int BoxHost::camera_item(int pixel, Item& item) const {
     r.pixel = pixel;
     VirtualWalls::Segment s;
     int nx;
-    return first_box(r.trace.ray, 0, s, nx);
+    const int box = first_box(r.trace.ray, 0, s, nx);
+    r.route_box = box, r.route_next = nx, r.route_exit = s.t_exit;
+    return box;
 }
 
 void BoxHost::emit_camera_rays() {
