@@ -309,7 +309,10 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                 reflec = f.reflection_max * F + f.reflection_min * (1 - F);
                 w = ray.weight * max3(reflec);
             } else {
-                float frac = float(std::pow(1 - cos_i, Real(f.reflection_falloff)));
+                // pow(x, 1) is x exactly: the default falloff needs no pow call.
+                float frac = f.reflection_falloff == 1
+                                 ? float(1 - cos_i)
+                                 : float(std::pow(1 - cos_i, Real(f.reflection_falloff)));
                 if (f.reflection_falloff == 1 && frac == 0) frac = 0;
                 reflec = f.reflection_max * frac + f.reflection_min * (1 - frac);
                 w = ray.weight * std::max(max3(f.reflection_max), max3(f.reflection_min));
