@@ -589,7 +589,7 @@ TEST(Cli, InterruptedBatchResumesToAllFramesEachAsRenderedAlone) {
     r = run("render " + scene.string() + frames + (dir / "alone" / "f.png").string());
     ASSERT_EQ(r.code, 0) << r.err;
     for (int f = 1; f <= 50; ++f) {
-        char name[16];
+        char name[32];
         std::snprintf(name, sizeof name, "f%02d.png", f);
         ASSERT_TRUE(fs::exists(dir / "run" / name)) << name;
         EXPECT_EQ(slurp_file(dir / "run" / name), slurp_file(dir / "alone" / name))
