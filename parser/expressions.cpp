@@ -116,40 +116,11 @@ class ExpressionParser {
     // or
     // ?: outside parentheses), which is what lets `box { <a> <b> }` read two vectors.
     Value parse() {
-        const Token& first = in_.peek();
-        // Most numbers in scenes stand alone (`phong 0.7`, `<1, 2, 3>`): when the raw
-        // token after one cannot continue an expression, it is the value, without the
-        // descent through every operator level.
-        if (first.kind == TokenKind::Number && ends_expression(in_.raw_after_peeked())) {
-            return Numeric::scalar(in_.next().number);
-        }
-        NestingGuard guard(in_, first);
+        NestingGuard guard(in_, in_.peek());
         return full_ ? ternary() : additive();
     }
 
   private:
-    // Whether a raw token (null: none or not known) certainly ends the expression before
-    // it. Directives and macro calls can expand into operators, so they do not.
-    bool ends_expression(const Token* t) const {
-        if (!t) return false;
-        if (t->kind == TokenKind::Word) {
-            const Value* v = in_.lookup(*t);
-            return !v || !std::holds_alternative<std::shared_ptr<Macro>>(*v);
-        }
-        if (t->kind != TokenKind::Punct || t->length != 1) return false;
-        switch (t->text[0]) {
-            case ',':
-            case '}':
-            case ')':
-            case ']':
-            case ';':
-                return true;
-            case '>':  // a comparison where the full grammar reads one
-                return no_gt_ || !full_;
-            default:
-                return false;
-        }
-    }
     static bool numeric(const Value& v) { return std::holds_alternative<Numeric>(v); }
     Numeric num(const Value& v, const Token& at) {
         if (auto n = std::get_if<Numeric>(&v)) return *n;

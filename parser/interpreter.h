@@ -149,9 +149,6 @@ class Interpreter {
     void parse_mesh2(Object& out);
     int parse_count();
     const Token* raw_ahead(size_t k) const;  // k-th raw token ahead, if no pushback
-    // The raw token after the one peek() holds (null when more are pushed back or the
-    // frame ends there).
-    const Token* raw_after_peeked() const;
     bool try_plain_vector(Vector3& out, Token* at);
     int new_random_stream(int seed);
     double draw_random(int stream, const Token& at);

@@ -436,14 +436,6 @@ const Token* Interpreter::raw_ahead(size_t k) const {
     return t.kind == TokenKind::End ? nullptr : &t;
 }
 
-const Token* Interpreter::raw_after_peeked() const {
-    if (pushback_.size() != 1 || frames_.empty()) return nullptr;
-    const Frame& f = frames_.back();
-    if (f.pos >= f.end) return nullptr;
-    const Token& t = sources_.file(f.file).tokens[f.pos];
-    return t.kind == TokenKind::End ? nullptr : &t;
-}
-
 // Machine-written meshes are millions of `<n, n, n>`: when the raw tokens are exactly
 // that (commas required, optional minus signs, no operator after '>'), read them directly
 // instead of through the expression parser. Anything else is left for parse_vector().
