@@ -245,9 +245,18 @@ TEST(Lexer, NestedCommentsAndStrayHash) {
 TEST(Lexer, NumbersReadExactlyAsFromChars) {
     std::mt19937_64 rng(11);
     std::string text;
-    std::vector<std::string> literals = {"0", "0.1", "0.3", ".5", "5.", "123456789012345",
-                                         "1234567890123456", "0.000000000000001",
-                                         "9007199254740993", "1e3", "2.5E-3", "0007.250"};
+    std::vector<std::string> literals = {"0",
+                                         "0.1",
+                                         "0.3",
+                                         ".5",
+                                         "5.",
+                                         "123456789012345",
+                                         "1234567890123456",
+                                         "0.000000000000001",
+                                         "9007199254740993",
+                                         "1e3",
+                                         "2.5E-3",
+                                         "0007.250"};
     for (int k = 0; k < 20000; ++k) {
         std::string lit;
         const int whole = int(rng() % 10), frac = int(rng() % 10);
