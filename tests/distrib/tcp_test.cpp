@@ -141,10 +141,9 @@ TEST(Tcp, WorkersKeepOnlyTheObjectsOfTheirBoxesAndTheImageIsUnchanged) {
         {"--boxes 4x1x1 --procs 4", "--boxes 4x1x1 --procs 2 --results parents"});
     const fs::path stats = scratch() / "left_shadows.json";
     const std::string out = (scratch() / "left_shadows.exr").string();
-    ASSERT_EQ(run("render " + scene.string() + " -W 64 -H 48 -q -o " + out +
-                  " --boxes 4x1x1 --procs 4 --stats " + stats.string())
-                  .code,
-              0);
+    const RunResult r = run("render " + scene.string() + " -W 64 -H 48 -q -o " + out +
+                            " --boxes 4x1x1 --procs 4 --stats " + stats.string());
+    ASSERT_EQ(r.code, 0) << r.err;
     std::ifstream in(stats);
     const std::string text{std::istreambuf_iterator<char>(in), {}};
     auto numbers = [&](const std::string& key) {
