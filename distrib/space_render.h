@@ -34,8 +34,8 @@ struct SpaceOptions {
     size_t max_rays_in_flight = 1 << 16;  // flow control: camera rays wait beyond this
     // A ray or result for a box of this process that no thread is working on is
     // processed at once by the thread that made it, instead of through the box's inbox
-    // and queue (up to 8 boxes deep). Off: every item goes through the queues, as the
-    // priority-against-FIFO measurements need.
+    // and queue (up to 8 boxes deep). Off (no command-line switch yet): every item goes
+    // through the queues, so that the queue order (`--queue`) decides all of the work.
     bool direct_handoff = true;
 };
 
