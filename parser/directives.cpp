@@ -2,8 +2,6 @@
 // stream (tokens.cpp) reaches them, so they may appear anywhere.
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "parser/interpreter.h"
 

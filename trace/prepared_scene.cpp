@@ -515,9 +515,7 @@ uint32_t PreparedScene::add_material(const Object& o) {
 bool texture_is_plain(const LayeredTexture& layers) {
     if (layers.size() != 1) return false;
     const Texture& t = layers.front();
-    const Pigment& p = t.pigment;
-    return p.pattern.kind == PatternKind::Solid && p.list.empty() &&
-           p.colour_map.empty() && !t.normal && !t.map_pattern && t.map.empty();
+    return pigment_is_solid(t.pigment) && !t.normal && !t.map_pattern && t.map.empty();
 }
 
 const Material* PreparedScene::material_for(const Object* leaf) const {

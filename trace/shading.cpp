@@ -93,7 +93,7 @@ bool light_at(const Light& l, const Point3& p, LightSample& s) {
 }
 
 Colour eval_pigment(const PreparedScene& scene, const Pigment& p, const Point3& at) {
-    if (p.pattern.kind == PatternKind::Solid && p.list.empty() && p.colour_map.empty()) {
+    if (pigment_is_solid(p)) {
         return p.colour;
     }
     return evaluate_pigment(p, at, scene.pattern_env());
