@@ -465,7 +465,7 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
         error(name, "macro '" + m.name + "' nested too deeply (limit " +
                         std::to_string(kMaxMacroDepth) + "): runaway recursion?");
     }
-    expect_punct('(', "after macro name '" + m.name + "'");
+    expect_punct('(', "after macro name ", m.name);
     Scope params;
     for (size_t i = 0; i < m.params.size(); ++i) {
         if (is_punct(peek(), ')')) {
@@ -510,8 +510,14 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
             accept_punct(',');
         }
     }
-    expect_punct(')', "after the arguments of '" + m.name + "'");
-    Frame f{m.file, m.body_begin, m.body_end, Frame::Kind::Macro, scopes_.size(), name};
+    expect_punct(')', "after the arguments of ", m.name);
+    Frame f{m.file,
+            m.body_begin,
+            m.body_end,
+            Frame::Kind::Macro,
+            scopes_.size(),
+            name,
+            sources_.file(m.file).tokens.data()};
     scopes_.push_back(std::move(params));
     frames_.push_back(f);
     ++macro_depth_;
@@ -559,7 +565,8 @@ void Interpreter::directive_include(const Token& t) {
                        sources_.file(index).tokens.size(),
                        Frame::Kind::File,
                        scopes_.size() - 1,
-                       {}});
+                       {},
+                       sources_.file(index).tokens.data()});
 }
 
 }  // namespace povwall::parser

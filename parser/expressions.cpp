@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "core/noise.h"
+#include "parser/expression_program.h"
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
@@ -62,6 +63,118 @@ Vector3 axis_rotate(const Vector3& v, const Vector3& axis, double degrees) {
 
 }  // namespace
 
+BinaryOp binary_op(const Token& t, bool no_gt) {
+    if (t.kind != TokenKind::Punct) return {};
+    using C = BinaryOpCode;
+    if (t.length == 1) {
+        switch (t.text[0]) {
+            case '|':
+                return {kOrLevel, C::Or};
+            case '&':
+                return {kAndLevel, C::And};
+            case '=':
+                return {kComparisonLevel, C::Eq};
+            case '<':
+                return {kComparisonLevel, C::Lt};
+            case '>':
+                if (no_gt) return {};
+                return {kComparisonLevel, C::Gt};
+            case '+':
+                return {kSumLevel, C::Add};
+            case '-':
+                return {kSumLevel, C::Sub};
+            case '*':
+                return {kProductLevel, C::Mul};
+            case '/':
+                return {kProductLevel, C::Div};
+            default:
+                return {};
+        }
+    }
+    if (t.length == 2 && t.text[1] == '=') {
+        switch (t.text[0]) {
+            case '!':
+                return {kComparisonLevel, C::Ne};
+            case '<':
+                return {kComparisonLevel, C::Le};
+            case '>':
+                return {kComparisonLevel, C::Ge};
+            default:
+                return {};
+        }
+    }
+    return {};
+}
+
+Numeric apply_binary(BinaryOpCode code, const Numeric& a, const Numeric& b) {
+    const double x = a.c[0], y = b.c[0];
+    using C = BinaryOpCode;
+    switch (code) {
+        case C::Or:
+            return Numeric::scalar((x != 0 || y != 0) ? 1 : 0);
+        case C::And:
+            return Numeric::scalar((x != 0 && y != 0) ? 1 : 0);
+        // POV-Ray compares with a tolerance for equality.
+        case C::Eq:
+            return Numeric::scalar(std::fabs(x - y) < kPovEpsilon ? 1 : 0);
+        case C::Ne:
+            return Numeric::scalar(std::fabs(x - y) >= kPovEpsilon ? 1 : 0);
+        case C::Lt:
+            return Numeric::scalar(x < y ? 1 : 0);
+        case C::Le:
+            return Numeric::scalar(x <= y ? 1 : 0);
+        case C::Gt:
+            return Numeric::scalar(x > y ? 1 : 0);
+        case C::Ge:
+            return Numeric::scalar(x >= y ? 1 : 0);
+        case C::Add:
+            return combine(a, b, '+');
+        case C::Sub:
+            return combine(a, b, '-');
+        case C::Mul:
+            return combine(a, b, '*');
+        case C::Div:
+            return combine(a, b, '/');
+    }
+    return a;
+}
+
+const FloatFunction* find_float_function(std::string_view name) {
+    using F = FloatFunction;
+    static const F kFunctions[] = {
+        {"abs", 1, [](const double* a) { return std::fabs(a[0]); }},
+        {"acos", 1, [](const double* a) { return std::acos(a[0]); }},
+        {"acosh", 1, [](const double* a) { return std::acosh(a[0]); }},
+        {"asin", 1, [](const double* a) { return std::asin(a[0]); }},
+        {"asinh", 1, [](const double* a) { return std::asinh(a[0]); }},
+        {"atan", 1, [](const double* a) { return std::atan(a[0]); }},
+        {"atanh", 1, [](const double* a) { return std::atanh(a[0]); }},
+        {"ceil", 1, [](const double* a) { return std::ceil(a[0]); }},
+        {"cos", 1, [](const double* a) { return std::cos(a[0]); }},
+        {"cosh", 1, [](const double* a) { return std::cosh(a[0]); }},
+        {"degrees", 1, [](const double* a) { return a[0] * 180 / kPi; }},
+        {"radians", 1, [](const double* a) { return a[0] * kPi / 180; }},
+        {"exp", 1, [](const double* a) { return std::exp(a[0]); }},
+        {"floor", 1, [](const double* a) { return std::floor(a[0]); }},
+        {"int", 1, [](const double* a) { return std::trunc(a[0]); }},
+        {"ln", 1, [](const double* a) { return std::log(a[0]); }},
+        {"log", 1, [](const double* a) { return std::log10(a[0]); }},
+        {"sin", 1, [](const double* a) { return std::sin(a[0]); }},
+        {"sinh", 1, [](const double* a) { return std::sinh(a[0]); }},
+        {"sqrt", 1, [](const double* a) { return std::sqrt(a[0]); }},
+        {"tan", 1, [](const double* a) { return std::tan(a[0]); }},
+        {"tanh", 1, [](const double* a) { return std::tanh(a[0]); }},
+        {"atan2", 2, [](const double* a) { return std::atan2(a[0], a[1]); }},
+        {"pow", 2, [](const double* a) { return std::pow(a[0], a[1]); }},
+        {"mod", 2, [](const double* a) { return std::fmod(a[0], a[1]); }},
+        {"div", 2, [](const double* a) { return std::trunc(a[0] / a[1]); }},
+    };
+    for (const F& f : kFunctions) {
+        if (f.name == name) return &f;
+    }
+    return nullptr;
+}
+
 const char* type_name(const Value& v) {
     switch (v.index()) {
         case 0:
@@ -117,7 +230,7 @@ class ExpressionParser {
     // ?: outside parentheses), which is what lets `box { <a> <b> }` read two vectors.
     Value parse() {
         NestingGuard guard(in_, in_.peek());
-        return full_ ? ternary() : additive();
+        return full_ ? ternary() : binary(kSumLevel);
     }
 
   private:
@@ -130,7 +243,7 @@ class ExpressionParser {
 
     Value ternary() {
         Token at = in_.peek();
-        Value c = logical_or();
+        Value c = binary(kOrLevel);
         if (!numeric(c)) return c;
         if (in_.is_punct(in_.peek(), '?')) {
             in_.next();
@@ -142,105 +255,20 @@ class ExpressionParser {
         return c;
     }
 
-    Value logical_or() {
-        Token at = in_.peek();
-        Value a = logical_and();
-        while (numeric(a) && in_.is_punct(in_.peek(), '|')) {
-            in_.next();
-            Value b = logical_and();
-            a = Numeric::scalar((num(a, at).c[0] != 0 || num(b, at).c[0] != 0) ? 1 : 0);
-        }
-        return a;
-    }
-
-    Value logical_and() {
-        Token at = in_.peek();
-        Value a = comparison();
-        while (numeric(a) && in_.is_punct(in_.peek(), '&')) {
-            in_.next();
-            Value b = comparison();
-            a = Numeric::scalar((num(a, at).c[0] != 0 && num(b, at).c[0] != 0) ? 1 : 0);
-        }
-        return a;
-    }
-
-    Value comparison() {
-        Token at = in_.peek();
-        Value a = additive();
-        for (;;) {
-            if (!numeric(a)) return a;
-            const Token& t = in_.peek();
-            std::string_view op;
-            if (in_.is_punct(t, '='))
-                op = "=";
-            else if (in_.is_punct2(t, "!="))
-                op = "!=";
-            else if (in_.is_punct(t, '<'))
-                op = "<";
-            else if (in_.is_punct2(t, "<="))
-                op = "<=";
-            else if (in_.is_punct(t, '>') && !no_gt_)
-                op = ">";
-            else if (in_.is_punct2(t, ">="))
-                op = ">=";
-            else
-                return a;
-            in_.next();
-            Value b = additive();
-            double x = num(a, at).c[0], y = num(b, at).c[0];
-            bool r = false;
-            // POV-Ray compares with a tolerance for equality.
-            if (op == "=")
-                r = std::fabs(x - y) < kPovEpsilon;
-            else if (op == "!=")
-                r = std::fabs(x - y) >= kPovEpsilon;
-            else if (op == "<")
-                r = x < y;
-            else if (op == "<=")
-                r = x <= y;
-            else if (op == ">")
-                r = x > y;
-            else
-                r = x >= y;
-            a = Numeric::scalar(r ? 1 : 0);
-        }
-    }
-
-    Value additive() {
-        Token at = in_.peek();
-        Value a = multiplicative();
-        for (;;) {
-            if (!numeric(a)) return a;
-            const Token& t = in_.peek();
-            char op;
-            if (in_.is_punct(t, '+'))
-                op = '+';
-            else if (in_.is_punct(t, '-'))
-                op = '-';
-            else
-                return a;
-            in_.next();
-            Value b = multiplicative();
-            a = combine(num(a, at), num(b, at), op);
-        }
-    }
-
-    Value multiplicative() {
+    // Binary operators by precedence climbing: one loop instead of a function per level,
+    // so an operand costs one look at the next token rather than one per level. An error
+    // names the first token of the left operand's chain. Reads the operators of
+    // `min_level` and tighter (the right operand of a looser operator).
+    Value binary(int min_level) {
         Token at = in_.peek();
         Value a = unary();
         for (;;) {
             if (!numeric(a)) return a;
-            const Token& t = in_.peek();
-            char op;
-            if (in_.is_punct(t, '*'))
-                op = '*';
-            else if (in_.is_punct(t, '/'))
-                op = '/';
-            else
-                return a;
+            const BinaryOp op = binary_op(in_.peek(), no_gt_);
+            if (op.level < min_level || op.level == kNotAnOperator) return a;
             in_.next();
-            Value b = unary();
-            a = combine(num(a, at), num(b, at), op);
+            Value b = binary(op.level + 1);
+            a = apply_binary(op.code, std::get<Numeric>(a), num(b, at));
         }
     }
 
@@ -264,14 +292,13 @@ class ExpressionParser {
     }
 
     Value postfix() {
-        Token at = in_.peek();
         Value v = primary();
         // Only numbers take operators: after an object, texture, array... nothing is read
         // ahead, so a directive following it runs in order.
         while (numeric(v) && in_.is_punct(in_.peek(), '.')) {
             in_.next();
             Token m = in_.next();
-            Numeric n = num(v, at);
+            Numeric n = std::get<Numeric>(v);
             int index = -1;
             std::string_view w = m.text;
             if (m.kind != TokenKind::Word) in_.expected("a component name after '.'", m);
@@ -332,7 +359,7 @@ class ExpressionParser {
     std::string arg_string() { return in_.parse_string(); }
 
     Value call_float(const Token& t, int arity, double (*f)(const double*)) {
-        in_.expect_punct('(', "after '" + std::string(t.text) + "'");
+        in_.expect_punct('(', "after ", t.text);
         double a[3] = {0, 0, 0};
         for (int i = 0; i < arity; ++i) {
             if (i > 0) in_.accept_punct(',');
@@ -413,7 +440,6 @@ Value ExpressionParser::word(const Token& t) {
         in_.expect_punct(')');
         return Numeric::scalar(in_.draw_random(saturating_int(s), at));
     }
-    auto f1 = [&](double (*f)(const double*)) { return call_float(t, 1, f); };
     if (w == "pi") return Numeric::scalar(kPi);
     if (w == "tau") return Numeric::scalar(2 * kPi);
     if (w == "true" || w == "yes" || w == "on") return Numeric::scalar(1);
@@ -451,36 +477,8 @@ Value ExpressionParser::word(const Token& t) {
     if (w == "initial_clock") return Numeric::scalar(o.initial_clock);
     if (w == "final_clock") return Numeric::scalar(o.final_clock);
     if (w == "version") return Numeric::scalar(in_.language_version() / 100.0);
-    if (w == "abs") return f1([](const double* a) { return std::fabs(a[0]); });
-    if (w == "acos") return f1([](const double* a) { return std::acos(a[0]); });
-    if (w == "acosh") return f1([](const double* a) { return std::acosh(a[0]); });
-    if (w == "asin") return f1([](const double* a) { return std::asin(a[0]); });
-    if (w == "asinh") return f1([](const double* a) { return std::asinh(a[0]); });
-    if (w == "atan") return f1([](const double* a) { return std::atan(a[0]); });
-    if (w == "atanh") return f1([](const double* a) { return std::atanh(a[0]); });
-    if (w == "ceil") return f1([](const double* a) { return std::ceil(a[0]); });
-    if (w == "cos") return f1([](const double* a) { return std::cos(a[0]); });
-    if (w == "cosh") return f1([](const double* a) { return std::cosh(a[0]); });
-    if (w == "degrees") return f1([](const double* a) { return a[0] * 180 / kPi; });
-    if (w == "radians") return f1([](const double* a) { return a[0] * kPi / 180; });
-    if (w == "exp") return f1([](const double* a) { return std::exp(a[0]); });
-    if (w == "floor") return f1([](const double* a) { return std::floor(a[0]); });
-    if (w == "int") return f1([](const double* a) { return std::trunc(a[0]); });
-    if (w == "ln") return f1([](const double* a) { return std::log(a[0]); });
-    if (w == "log") return f1([](const double* a) { return std::log10(a[0]); });
-    if (w == "sin") return f1([](const double* a) { return std::sin(a[0]); });
-    if (w == "sinh") return f1([](const double* a) { return std::sinh(a[0]); });
-    if (w == "sqrt") return f1([](const double* a) { return std::sqrt(a[0]); });
-    if (w == "tan") return f1([](const double* a) { return std::tan(a[0]); });
-    if (w == "tanh") return f1([](const double* a) { return std::tanh(a[0]); });
-    if (w == "atan2")
-        return call_float(t, 2, [](const double* a) { return std::atan2(a[0], a[1]); });
-    if (w == "pow")
-        return call_float(t, 2, [](const double* a) { return std::pow(a[0], a[1]); });
-    if (w == "mod")
-        return call_float(t, 2, [](const double* a) { return std::fmod(a[0], a[1]); });
-    if (w == "div")
-        return call_float(t, 2, [](const double* a) { return std::trunc(a[0] / a[1]); });
+    if (const FloatFunction* f = find_float_function(w))
+        return call_float(t, f->arity, f->fn);
     if (w == "bitwise_and" || w == "bitwise_or" || w == "bitwise_xor") {
         in_.expect_punct('(');
         long long r = (long long)arg_float();
@@ -492,7 +490,7 @@ Value ExpressionParser::word(const Token& t) {
         return Numeric::scalar(double(r));
     }
     if (w == "min" || w == "max") {
-        in_.expect_punct('(', "after '" + std::string(w) + "'");
+        in_.expect_punct('(', "after ", w);
         double r = arg_float();
         while (in_.accept_punct(',')) {
             double b = arg_float();
@@ -630,9 +628,9 @@ Value ExpressionParser::word(const Token& t) {
         in_.unget(t);
         return in_.parse_colour();
     }
-    static const char* const kUnsupportedFunctions[] = {"trace", "inside", "eval_pigment",
-                                                        "now", "datetime"};
-    for (const char* f : kUnsupportedFunctions) {
+    static constexpr std::string_view kUnsupportedFunctions[] = {
+        "trace", "inside", "eval_pigment", "now", "datetime"};
+    for (std::string_view f : kUnsupportedFunctions) {
         if (w == f) in_.unsupported(t, w);
     }
     if (w.find('[') != std::string_view::npos) {
@@ -642,6 +640,8 @@ Value ExpressionParser::word(const Token& t) {
 }
 
 Value Interpreter::parse_expression_value() {
+    peek();
+    if (Numeric n; try_compiled_expression(true, false, n)) return n;
     return ExpressionParser(*this, false).parse();
 }
 Value Interpreter::parse_value_additive() {
@@ -650,6 +650,7 @@ Value Interpreter::parse_value_additive() {
 
 Numeric Interpreter::parse_numeric(bool no_gt) {
     Token at = peek();
+    if (Numeric n; try_compiled_expression(false, no_gt, n)) return n;
     Value v = ExpressionParser(*this, no_gt, false).parse();
     if (auto n = std::get_if<Numeric>(&v)) return *n;
     error(at, std::string("expected a numeric expression but found ") + type_name(v));
@@ -657,6 +658,7 @@ Numeric Interpreter::parse_numeric(bool no_gt) {
 
 Numeric Interpreter::parse_express() {
     Token at = peek();
+    if (Numeric n; try_compiled_expression(true, false, n)) return n;
     Value v = ExpressionParser(*this, false).parse();
     if (auto n = std::get_if<Numeric>(&v)) return *n;
     error(at, std::string("expected a numeric expression but found ") + type_name(v));
@@ -674,6 +676,10 @@ double Interpreter::parse_condition() {
         return parse_float();
     }
     Token at = peek();
+    if (Numeric n; try_compiled_expression(true, false, n)) {
+        expect_punct(')', "to close the condition");
+        return n.c[0];
+    }
     Value v = ExpressionParser(*this, false).parse();
     const Numeric* np = std::get_if<Numeric>(&v);
     if (!np)

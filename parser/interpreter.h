@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "parser/expression_program.h"
 #include "parser/parser.h"
 #include "parser/source.h"
 #include "parser/value.h"
@@ -46,7 +47,8 @@ class Interpreter {
 
     // ---- token stream (tokens.cpp)
     const Token& peek() {
-        if (pushback_.empty()) pushback_.push_back(next());
+        if (pushback_.empty()) [[unlikely]]
+            fill_pushback();
         return pushback_.back();
     }
     Token next();
@@ -58,6 +60,8 @@ class Interpreter {
     bool raw_next_is_punct(char c);  // without running a directive behind it
     bool accept_semicolon();
     void expect_punct(char c, std::string_view what = {});
+    // The message "'c' <what>'<name>'" is only built when the token is wrong.
+    void expect_punct(char c, std::string_view what, std::string_view name);
     bool is_punct(const Token& t, char c) const {
         return t.kind == TokenKind::Punct && t.length == 1 && t.text[0] == c;
     }
@@ -85,9 +89,13 @@ class Interpreter {
     // ---- symbols
     const Value* lookup(std::string_view name) const;
     const Value* lookup(const Token& t) const {
-        return t.sym ? lookup_symbol(t.sym) : lookup(t.text);
+        if (!t.sym) return lookup(t.text);
+        // Most words are keywords, never bound: answered here, without a call.
+        if (t.sym >= bound_.size() || !bound_[t.sym]) return nullptr;
+        return lookup_symbol(t.sym);
     }
     const Value* lookup_symbol(uint32_t sym) const;
+    bool is_bound(uint32_t sym) const { return sym < bound_.size() && bound_[sym]; }
     void declare(const std::string& name, Value v, bool local, const Token& at);
 
     // ---- expressions (expressions.cpp)
@@ -165,6 +173,9 @@ class Interpreter {
         enum class Kind { File, Macro } kind;
         size_t scope_depth;  // scopes to restore when the frame ends
         Token call;          // macro call site (for notes)
+        // sources_.file(file).tokens.data(), fixed once lexed: next_raw() reads the next
+        // token without walking SourceManager -> SourceFile -> vector each time.
+        const Token* toks = nullptr;
     };
     struct Cond {
         enum class Kind { If, Else, While, For, Switch, SwitchDone, Macro } kind;
@@ -191,6 +202,7 @@ class Interpreter {
     }
 
     Token next_raw();
+    void fill_pushback();  // peek()'s slow path, out of line so that peek() inlines
     // `A[i][j]` read as one token standing for the element (see next()).
     Token subscript_token(const Token& name, const ArrayValue& array);
     void skip_declaration_rest();
@@ -255,6 +267,14 @@ class Interpreter {
     std::vector<std::string> element_names_;  // rotating names bound to array elements
     size_t next_element_name_ = 0;
     friend class ExpressionParser;
+
+    // Expressions inside loops and macros, compiled once per position
+    // (expression_program.h). True with `out` set when a program ran in place of the
+    // tokens; false when ExpressionParser must read them.
+    bool try_compiled_expression(bool full, bool no_gt, Numeric& out);
+    bool in_repeated_code() const;
+    std::unordered_map<uint64_t, int32_t> program_by_position_;  // -1: not compiled
+    std::vector<ExpressionProgram> programs_;
 };
 
 // Counts one level of nesting for its lifetime; past kMaxNesting, a located error

@@ -8,12 +8,12 @@ namespace {
 
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
-    static const char* kNames[] = {
+    static constexpr std::string_view kNames[] = {
         "text",           "lathe",         "sor",        "prism",       "blob",
         "superellipsoid", "quadric",       "quartic",    "poly",        "cubic",
         "height_field",   "bicubic_patch", "isosurface", "parametric",  "julia_fractal",
         "sphere_sweep",   "ovus",          "lemon",      "light_group", "polynomial"};
-    for (const char* n : kNames) {
+    for (std::string_view n : kNames) {
         if (w == n) return true;
     }
     return false;
@@ -205,7 +205,7 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (auto c = std::get_if<Cylinder>(&obj.shape)) c->open = true;
         if (auto c = std::get_if<Cone>(&obj.shape)) c->open = true;
     } else if (w == "clipped_by" || w == "bounded_by") {
-        expect_punct('{', "after '" + std::string(w) + "'");
+        expect_punct('{', "after ", w);
         std::vector<Object>& list = w == "clipped_by" ? obj.clipped_by : obj.bounded_by;
         for (;;) {
             Token o = next();
@@ -251,7 +251,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     if (is_unsupported_shape(w)) unsupported(t, w);
     out = Object{};
     out.loc = sources_.location(t);
-    auto open = [&] { expect_punct('{', "after '" + std::string(w) + "'"); };
+    auto open = [&] { expect_punct('{', "after ", w); };
     // `sphere { ID ... }`: an object identifier first in the body copies it.
     auto copy_identifier = [&]() -> bool {
         const Token& p = peek();

@@ -105,8 +105,13 @@ Scene Interpreter::run(int root_file) {
         bind(scopes_[0], sources_.intern(name)).value = Numeric::scalar(value);
     }
     scopes_.emplace_back();  // the scene file's own #local table
-    frames_.push_back(
-        {root_file, 0, sources_.file(root_file).tokens.size(), Frame::Kind::File, 1, {}});
+    frames_.push_back({root_file,
+                       0,
+                       sources_.file(root_file).tokens.size(),
+                       Frame::Kind::File,
+                       1,
+                       {},
+                       sources_.file(root_file).tokens.data()});
     for (;;) {
         Token t = next();
         if (t.kind == TokenKind::End) break;

@@ -46,6 +46,15 @@ struct ParseOptions {
     // told by the coordinator): reserved up front, so the object list never reallocates
     // (a reallocation holds the old and the new list at once: up to 3x its size).
     size_t expected_objects = 0;
+    // Expressions inside loops and macros run as compiled programs
+    // (parser/expression_program.h); false reads every one token by token, which is the
+    // definition the programs must match.
+    bool compile_expressions = true;
+    // When set, counts how the parse read its expressions.
+    struct ExpressionCounts {
+        uint64_t compiled = 0;  // positions compiled into a program
+        uint64_t runs = 0;      // expressions answered by a program
+    }* expression_counts = nullptr;
 };
 
 // A located diagnostic. what() is the full text as printed: "file:line:col: error: msg",

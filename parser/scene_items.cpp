@@ -705,7 +705,7 @@ Value Interpreter::parse_item_value(const Token& t) {
             }
             return a;
         }
-        static const char* const kUnsupportedItems[] = {
+        static constexpr std::string_view kUnsupportedItems[] = {
             "spline",         "function",      "media",         "density",
             "rainbow",        "photons",       "radiosity",     "max_extent",
             "min_extent",     "pigment_map",   "normal_map",    "texture_map",
@@ -715,7 +715,7 @@ Value Interpreter::parse_item_value(const Token& t) {
             "superellipsoid", "bicubic_patch", "quadric",       "quartic",
             "poly",           "cubic",         "sphere_sweep",  "ovus",
             "lemon"};
-        for (const char* item : kUnsupportedItems) {
+        for (std::string_view item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }
         error(t, "undeclared identifier '" + std::string(w) + "'");

@@ -49,12 +49,12 @@ constexpr PatternName kPatterns[] = {
 };
 
 bool is_unsupported_pattern(std::string_view w) {
-    static const char* kNames[] = {
+    static constexpr std::string_view kNames[] = {
         "material_map", "function",     "object",          "slope",
         "aoi",          "density_file", "facets",          "pavement",
         "tiling",       "julia",        "magnet",          "image_pattern",
         "tiles",        "proportion",   "pigment_pattern", "gradient_map"};
-    for (const char* n : kNames) {
+    for (std::string_view n : kNames) {
         if (w == n) return true;
     }
     return false;

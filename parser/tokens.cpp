@@ -10,12 +10,13 @@ namespace povwall::parser {
 Token Interpreter::next_raw() {
     while (!frames_.empty()) {
         Frame& f = frames_.back();
-        const SourceFile& file = sources_.file(f.file);
-        if (f.pos < f.end && file.tokens[f.pos].kind != TokenKind::End) {
-            if (++tokens_since_clock_ == 4096) check_parse_limits(file.tokens[f.pos]);
-            return file.tokens[f.pos++];
+        if (f.pos < f.end && f.toks[f.pos].kind != TokenKind::End) [[likely]] {
+            if (++tokens_since_clock_ == 4096) [[unlikely]]
+                check_parse_limits(f.toks[f.pos]);
+            return f.toks[f.pos++];
         }
         // The frame is exhausted: a file or a macro body ends here.
+        const SourceFile& file = sources_.file(f.file);
         const Token& end_tok = file.tokens[std::min(f.pos, file.tokens.size() - 1)];
         while (!conds_.empty() && conds_.back().frame == frames_.size()) {
             const Cond& c = conds_.back();
@@ -33,6 +34,8 @@ Token Interpreter::next_raw() {
 }
 
 void Interpreter::unget(const Token& t) { pushback_.push_back(t); }
+
+void Interpreter::fill_pushback() { pushback_.push_back(next()); }
 
 Token Interpreter::next() {
     if (!pushback_.empty()) {
@@ -191,6 +194,14 @@ void Interpreter::expect_punct(char c, std::string_view what) {
     }
 }
 
+void Interpreter::expect_punct(char c, std::string_view what, std::string_view name) {
+    if (is_punct(peek(), c)) {
+        next();
+        return;
+    }
+    expect_punct(c, std::string(what) + "'" + std::string(name) + "'");
+}
+
 std::string Interpreter::describe(const Token& t) const {
     switch (t.kind) {
         case TokenKind::End:
@@ -333,7 +344,7 @@ bool Interpreter::starts_float(const Token& t) {
         auto n = std::get_if<Numeric>(v);
         return n && n->size == 1;
     }
-    static const char* const kFloatWords[] = {
+    static constexpr std::string_view kFloatWords[] = {
         "on",           "off",         "true",        "false",
         "yes",          "no",          "pi",          "tau",
         "clock",        "abs",         "acos",        "asin",
@@ -347,7 +358,7 @@ bool Interpreter::starts_float(const Token& t) {
         "frame_number", "clock_delta", "version",     "strlen",
         "val",          "asc",         "defined",     "dimension_size",
         "seed"};
-    for (const char* w : kFloatWords) {
+    for (std::string_view w : kFloatWords) {
         if (t.text == w) return true;
     }
     return false;

@@ -1,5 +1,8 @@
 // Parses every scene listed in a corpus file and tallies ok / unsupported / error,
 // printing each failure's first line. Usage: parser_corpus LIST EXAMPLES_DIR [-v]
+// [--compare-compiled]. The last parses each scene a second time with
+// ParseOptions::compile_expressions off and reports every scene whose objects, lights,
+// camera or #debug text differ in any bit.
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -10,12 +13,69 @@
 
 #include "parser/parser.h"
 
+namespace {
+
+// The bits of a parsed scene that expressions feed: every object's transform, shape
+// numbers and first texture's colour and finish, the lights and the camera.
+struct Digest {
+    std::string bytes;
+    template <class T>
+    void add(const T& v) {
+        bytes.append(reinterpret_cast<const char*>(&v), sizeof v);
+    }
+    void add_vec(const povwall::Vector3& v) { add(v.x), add(v.y), add(v.z); }
+    void add_object(const povwall::Object& o) {
+        const auto& m = o.transform.forward().m;
+        for (const auto& row : m)
+            for (double x : row) add(x);
+        add(o.shape.index());
+        if (auto s = std::get_if<povwall::Sphere>(&o.shape)) {
+            add_vec(s->centre);
+            add(s->radius);
+        } else if (auto b = std::get_if<povwall::Box>(&o.shape)) {
+            add_vec(b->corner1);
+            add_vec(b->corner2);
+        } else if (auto c = std::get_if<povwall::Cylinder>(&o.shape)) {
+            add_vec(c->base);
+            add_vec(c->cap);
+            add(c->radius);
+        } else if (auto csg = std::get_if<povwall::Csg>(&o.shape)) {
+            for (const auto& child : csg->children) add_object(child);
+        }
+        if (!o.texture.empty()) {
+            const povwall::Texture& t = o.texture[0];
+            const povwall::Colour& c = t.pigment.colour;
+            add(c.rgb.r), add(c.rgb.g), add(c.rgb.b), add(c.filter), add(c.transmit);
+            add(t.finish.diffuse), add(t.finish.phong), add(t.finish.reflection_max.r);
+            for (const auto& e : t.pigment.colour_map) add(e.value), add(e.colour.rgb.r);
+        }
+    }
+    void add_scene(const povwall::Scene& s) {
+        add(s.objects.size());
+        for (const auto& o : s.objects) add_object(o);
+        for (const auto& l : s.lights) add_vec(l.location), add(l.colour.r);
+        add_vec(s.camera.location);
+        add_vec(s.camera.direction);
+        add_vec(s.camera.right);
+        add_vec(s.camera.up);
+    }
+};
+
+}  // namespace
+
 int main(int argc, char** argv) {
     if (argc < 3) {
         std::cerr << "usage: parser_corpus LIST EXAMPLES_DIR [-v]\n";
         return 2;
     }
-    bool verbose = argc > 3;
+    bool verbose = false, compare_compiled = false;
+    for (int i = 3; i < argc; ++i) {
+        if (std::string(argv[i]) == "--compare-compiled")
+            compare_compiled = true;
+        else
+            verbose = true;
+    }
+    int differ = 0;
     std::ifstream list(argv[1]);
     std::string rel;
     int ok = 0, unsupported = 0, errors = 0;
@@ -49,6 +109,27 @@ int main(int argc, char** argv) {
             std::ostringstream s;
             s << "ok " << scene.objects.size() << " objects";
             status = s.str();
+            if (compare_compiled) {
+                // Both parses again with #debug captured, so the text is compared too.
+                povwall::parser::ParseOptions::ExpressionCounts counts;
+                std::ostringstream compiled_text, plain_text;
+                Digest compiled, plain;
+                options.messages = &compiled_text;
+                options.expression_counts = &counts;
+                compiled.add_scene(
+                    povwall::parser::parse_scene_file(path.string(), options));
+                options.messages = &plain_text;
+                options.compile_expressions = false;
+                plain.add_scene(
+                    povwall::parser::parse_scene_file(path.string(), options));
+                s << ", " << counts.compiled << " compiled, " << counts.runs << " runs";
+                status = s.str();
+                if (compiled.bytes != plain.bytes ||
+                    compiled_text.str() != plain_text.str()) {
+                    ++differ;
+                    status = "DIFFERS " + status;
+                }
+            }
         } catch (const povwall::parser::ParseError& e) {
             std::string first = e.what();
             first = first.substr(0, first.find('\n'));
@@ -64,11 +145,13 @@ int main(int argc, char** argv) {
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
                 .count();
         double cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-        if (verbose || status.rfind("ok", 0) != 0)
+        if (verbose || status.rfind("ok", 0) != 0 ||
+            (compare_compiled && status.find(" 0 compiled") == std::string::npos))
             std::cout << rel << ": " << status << " (" << secs << " s wall, " << cpu
                       << " s cpu)\n";
     }
-    std::cout << "ok " << ok << "  unsupported " << unsupported << "  error " << errors
-              << "\n";
+    std::cout << "ok " << ok << "  unsupported " << unsupported << "  error " << errors;
+    if (compare_compiled) std::cout << "  differ " << differ;
+    std::cout << "\n";
     return 0;
 }

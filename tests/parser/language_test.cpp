@@ -431,5 +431,123 @@ TEST(ImageMap, InputGammaRules) {
     fs::remove_all(dir);
 }
 
+// ---- Expressions in loops and macros run as compiled programs (expression_program.h);
+// they must give bit for bit what reading the tokens gives.
+
+struct CompiledParse {
+    Scene scene;
+    std::string debug;
+    std::string error;  // first line, or empty
+    ParseOptions::ExpressionCounts counts;
+};
+
+CompiledParse parse_compiled(const std::string& text, bool compile) {
+    CompiledParse r;
+    std::ostringstream messages;
+    ParseOptions o;
+    o.messages = &messages;
+    o.clock = 0.375;
+    o.compile_expressions = compile;
+    o.expression_counts = &r.counts;
+    try {
+        r.scene = parse_scene_text(text, "test.pov", o);
+    } catch (const ParseError& e) {
+        r.error = std::string(e.what()).substr(0, std::string(e.what()).find('\n'));
+    }
+    r.debug = messages.str();
+    return r;
+}
+
+void expect_same_transforms(const Scene& a, const Scene& b) {
+    ASSERT_EQ(a.objects.size(), b.objects.size());
+    for (size_t i = 0; i < a.objects.size(); ++i) {
+        const auto& m = a.objects[i].transform.forward().m;
+        const auto& n = b.objects[i].transform.forward().m;
+        for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 4; ++c) {
+                // Bit for bit: EXPECT_EQ on doubles is exact.
+                EXPECT_EQ(m[r][c], n[r][c])
+                    << "object " << i << " m[" << r << "][" << c << "]";
+            }
+        }
+    }
+}
+
+TEST(CompiledExpressions, GiveBitForBitWhatReadingTheTokensGives) {
+    const char* expressions[] = {
+        "(2 * rand(R) - 1) * H",
+        "<0.2 + rand(R) * (Top - 0.2), -H, 2 * -I>",
+        "<1, 2, 3> * 2 + 1 - x / 4",
+        "<1 2 3,>",
+        "<1, -2>",
+        "<1, 2, 3, 4, 5> * I",
+        "-1 - -2 * +3 / 7",
+        "1 + 2 * 3 - 4 / 5 * 6",
+        "(I < 1) + (I <= 1) * 2 + (I > 1) * 4 + (I >= 1) * 8 + (I = 1) * 16 + (I != 1) * "
+        "32",
+        "(1 < 2 & 2 < 1 | !0) * 3 + !I",
+        "(0.1 + 0.2 = 0.3) + (0.1 + 0.2 != 0.3) * 2",
+        "<sin(I), cos(I * pi / 3), sqrt(2 + I)>",
+        "<pow(2 I), mod(7, I + 2), atan2(1, I + 1)>",
+        "<abs(-H), int(-2.5), floor(-2.5)> + ceil(2.5) + degrees(tau) + radians(90)",
+        "<clock, image_width, image_height> + y * z.y",
+        "rand(R) + rand(R) * <1, 2, 3>",
+        "(((((I + 1) * 2) - 3) / 4) + ((H)))",
+    };
+    std::string text =
+        "#declare R = seed(42);\n#declare H = 14;\n#declare Top = 9;\n"
+        "#for (I, 0, 3)\n";
+    for (const char* e : expressions) {
+        text += "  sphere { 0, 1 translate " + std::string(e) + " }\n";
+        text += "  #declare V = " + std::string(e) + ";\n";
+        text += "  sphere { 0, 1 translate V }\n";
+    }
+    text += "#end\n";
+    // A macro whose argument is a float on one call and a vector on the next.
+    text +=
+        "#macro M(A) sphere { 0, 1 translate A * 2 - A } #end\n"
+        "#for (J, 0, 1) M(1.5) M(<1, 2, 3>) M(J) #end\n";
+    // The while condition and counter as in generated scenes.
+    text +=
+        "#declare K = 0;\n#while (K < 3)\n  sphere { <K, K * K, -K>, 1 }\n"
+        "  #declare K = K + 1;\n#end\n";
+
+    CompiledParse compiled = parse_compiled(text, true);
+    CompiledParse plain = parse_compiled(text, false);
+    ASSERT_EQ(compiled.error, "");
+    ASSERT_EQ(plain.error, "");
+    EXPECT_EQ(plain.counts.runs, 0u);
+    // Every expression above compiles; `z.y` leaves its line to the token reader.
+    EXPECT_GE(compiled.counts.compiled, 2 * std::size(expressions) - 2);
+    EXPECT_GE(compiled.counts.runs, 4 * (2 * std::size(expressions) - 2));
+    expect_same_transforms(compiled.scene, plain.scene);
+    // A spot check against a hand-computed value: line 7 of the list at I = 0.
+    const auto& m = compiled.scene.objects.at(2 * 6).transform.forward().m;
+    EXPECT_EQ(m[0][3], -1 - -2 * +3 / 7.0);
+}
+
+TEST(CompiledExpressions, AnIdentifierThatStopsBeingANumberFallsBackToTheTokenReader) {
+    const std::string text =
+        "#declare Q = 1;\n#for (I, 0, 2)\n  #declare V = 1 + Q;\n"
+        "  #if (I = 1) #declare Q = \"s\"; #end\n#end\n";
+    const std::string expected =
+        "test.pov:3:16: error: expected a numeric expression but found string";
+    EXPECT_EQ(parse_compiled(text, true).error, expected);
+    EXPECT_EQ(parse_compiled(text, false).error, expected);
+    // The first turn compiled `1 + Q` and ran it; the third read the tokens.
+    EXPECT_EQ(parse_compiled(text, true).counts.compiled >= 1, true);
+}
+
+TEST(CompiledExpressions, ErrorsInsideAProgramNameTheSameToken) {
+    const std::string text =
+        "#declare R = seed(1);\n#for (I, 0, 1)\n  #declare V = 2 * rand(R + I * 5);\n"
+        "#end\n";
+    const std::string expected = "test.pov:3:25: error: illegal random number generator";
+    CompiledParse compiled = parse_compiled(text, true);
+    EXPECT_EQ(compiled.error, expected);
+    EXPECT_EQ(compiled.counts.runs, 1u);  // the turn with I = 0 ran the program
+    EXPECT_EQ(parse_compiled(text, false).error, expected);
+}
+
 }  // namespace
 }  // namespace povwall::parser
