@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/colour.h"
+#include "core/heap_optional.h"
 #include "core/math.h"
 #include "core/source_loc.h"
 
@@ -178,11 +179,11 @@ struct Finish {
 
 struct Texture {
     Pigment pigment;
-    std::optional<Normal> normal;
+    HeapOptional<Normal> normal;
     Finish finish;
     // Patterned texture (texture_map, material_map, checker of textures): when `map` is
     // non-empty the fields above are unused and the pattern selects among `map` entries.
-    std::optional<PatternSpec> map_pattern;
+    HeapOptional<PatternSpec> map_pattern;
     std::vector<float> map_values;
     std::vector<std::vector<Texture>> map;  // each entry may itself be layered
 };
