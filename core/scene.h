@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/colour.h"
+#include "core/compact_transform.h"
 #include "core/heap_optional.h"
 #include "core/math.h"
 #include "core/source_loc.h"
@@ -128,7 +129,7 @@ struct PatternSpec {
     // Classic turbulence keyword applied before the pattern (ordered after warps as
     // POV-Ray does).
     std::vector<Warp> warps;
-    Transform transform;  // pattern space -> world (inverse applied to hit points)
+    CompactTransform transform;  // pattern space -> world (inverse applied to hit points)
     std::shared_ptr<const ImageMapping> image;  // PatternKind::ImageMap only
 };
 
@@ -271,7 +272,7 @@ using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, 
 
 struct Object {
     ShapeData shape;
-    Transform transform;  // object space -> world
+    CompactTransform transform;  // object space -> world
     // Empty means "no texture given": the renderer uses the default texture.
     LayeredTexture texture;
     LayeredTexture interior_texture;
