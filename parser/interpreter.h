@@ -274,6 +274,10 @@ class Interpreter {
     bool try_compiled_expression(bool full, bool no_gt, Numeric& out);
     bool in_repeated_code() const;
     std::unordered_map<uint64_t, int32_t> program_by_position_;  // -1: not compiled
+    struct RecentProgram {
+        uint64_t key = ~uint64_t(0);  // no position has this key
+        int32_t program = -1;
+    } recent_programs_[64];
     std::vector<ExpressionProgram> programs_;
 };
 

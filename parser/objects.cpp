@@ -488,6 +488,14 @@ void Interpreter::finish_object(Object& obj) {
 }
 
 void Interpreter::add_scene_object(Object&& obj) {
+    // The first growth reserves room for 16,384 objects at once: capacity never written
+    // costs address space, not memory (its pages are never touched), and a scene made in
+    // a loop no longer moves its objects through four or five ever larger lists, each
+    // paged in afresh. Beyond that the list doubles as before.
+    if (scene_.objects.size() == scene_.objects.capacity()) {
+        constexpr size_t kFirstCapacity = 16384;
+        scene_.objects.reserve(std::max(2 * scene_.objects.capacity(), kFirstCapacity));
+    }
     if (!options_.keep_object) {
         scene_.objects.push_back(std::move(obj));
         return;

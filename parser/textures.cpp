@@ -13,7 +13,7 @@ float srgb_to_linear(double v) {
 }
 
 struct PatternName {
-    const char* name;
+    std::string_view name;
     PatternKind kind;
 };
 constexpr PatternName kPatterns[] = {
