@@ -295,30 +295,8 @@ bool Interpreter::try_compiled_expression(bool full, bool no_gt, Numeric& out) {
                 Numeric& a = stack(top - 2);
                 const Numeric& b = stack(top - 1);
                 --top;
-                // Two plain floats, the common case: what combine() gives, without its
-                // promotion loop.
-                if (a.size == 1 && b.size == 1 && !a.colour && !b.colour &&
-                    in.op >= BinaryOpCode::Add) {
-                    double& x = a.c[0];
-                    const double y = b.c[0];
-                    switch (in.op) {
-                        case BinaryOpCode::Add:
-                            x += y;
-                            break;
-                        case BinaryOpCode::Sub:
-                            x -= y;
-                            break;
-                        case BinaryOpCode::Mul:
-                            x *= y;
-                            break;
-                        default:
-                            x /= y;
-                            break;
-                    }
-                    a.c[1] = a.c[2] = a.c[3] = a.c[4] = 0;  // as combine() leaves them
-                    break;
-                }
-                copy_numeric(a, apply_binary(in.op, a, b));
+                if (!apply_to_floats(in.op, a, b))
+                    copy_numeric(a, apply_binary(in.op, a, b));
                 break;
             }
             case Code::Vector: {

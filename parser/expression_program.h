@@ -40,6 +40,31 @@ struct BinaryOp {
 BinaryOp binary_op(const Token& t, bool no_gt);
 Numeric apply_binary(BinaryOpCode code, const Numeric& a, const Numeric& b);
 
+// `a op b` in place when both are plain floats and the operator is arithmetic (the common
+// case, and what apply_binary gives, without its promotion loop); false otherwise.
+// Inline so that compiled programs skip the call.
+inline bool apply_to_floats(BinaryOpCode code, Numeric& a, const Numeric& b) {
+    if (a.size != 1 || b.size != 1 || a.colour || b.colour || code < BinaryOpCode::Add)
+        return false;
+    const double y = b.c[0];
+    switch (code) {
+        case BinaryOpCode::Add:
+            a.c[0] += y;
+            break;
+        case BinaryOpCode::Sub:
+            a.c[0] -= y;
+            break;
+        case BinaryOpCode::Mul:
+            a.c[0] *= y;
+            break;
+        default:
+            a.c[0] /= y;
+            break;
+    }
+    a.c[1] = a.c[2] = a.c[3] = a.c[4] = 0;
+    return true;
+}
+
 // The built-in functions of floats (`sin(A)`, `pow(A, B)`): arguments are full
 // expressions, commas between them optional; each contributes its first element.
 struct FloatFunction {

@@ -107,6 +107,7 @@ BinaryOp binary_op(const Token& t, bool no_gt) {
 }
 
 Numeric apply_binary(BinaryOpCode code, const Numeric& a, const Numeric& b) {
+    if (Numeric r = a; apply_to_floats(code, r, b)) return r;
     const double x = a.c[0], y = b.c[0];
     using C = BinaryOpCode;
     switch (code) {

@@ -65,9 +65,6 @@ class Interpreter {
     bool is_punct(const Token& t, char c) const {
         return t.kind == TokenKind::Punct && t.length == 1 && t.text[0] == c;
     }
-    bool is_punct2(const Token& t, std::string_view op) const {
-        return t.kind == TokenKind::Punct && t.text == op;
-    }
     bool is_word(const Token& t, std::string_view w) const {
         return t.kind == TokenKind::Word && t.text == w;
     }
