@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/options.h"
+#include "distrib/tcp.h"
 #include "output/image_io.h"
 
 namespace povwall::cli {
@@ -31,6 +32,7 @@ const char* kUsage =
     "       povwall parse SCENE.pov [-L DIR]... [--json]   (exit 0 ok, 3 unsupported, 2 "
     "error)\n"
     "       povwall worker --listen HOST:PORT --token T [--threads N]\n"
+    "       srun|mpirun ... povwall worker --rendezvous HOST:PORT --token T\n"
     "       povwall check-numerics SCENE.pov [-W N] [-H N] [-L DIR]... [--povray] "
     "[--json]\n"
     "       povwall batch JOBS... [--resume]   (scenes, .ini files, job files)\n"
@@ -100,6 +102,15 @@ int render_main(const std::vector<std::string>& args) {
                    "black boxes in running workers, host:port,...")
         ->delimiter(',');
     app.add_option("--token", o.token, "job token of the running --workers");
+    std::string rendezvous;
+    double rendezvous_timeout = 120;
+    app.add_option("--rendezvous", rendezvous,
+                   "black boxes in workers a launcher started (srun, mpirun): wait for "
+                   "them to register at HOST:PORT");
+    app.add_option("--rendezvous-timeout", rendezvous_timeout,
+                   "seconds to wait for every rank to register")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     bool no_recover = false;
     app.add_flag("--no-recover", no_recover,
                  "a worker process that dies stops the render (default: its work goes to "
@@ -137,6 +148,28 @@ int render_main(const std::vector<std::string>& args) {
         o.animation.final_frame = int(frame_values[4]);
         o.animation.initial_clock = frame_values[5];
         o.animation.final_clock = frame_values[6];
+    }
+    if (!rendezvous.empty()) {
+        if (!o.workers.empty() || o.procs > 0)
+            throw UsageError("--rendezvous finds the workers: no --workers or --procs");
+        if (o.token.empty())
+            throw UsageError("--rendezvous needs the --token the workers were given");
+        try {
+            o.workers = distrib::gather_workers(
+                rendezvous, o.token, rendezvous_timeout, [&](const std::string& at) {
+                    if (!o.quiet)
+                        std::fprintf(stderr,
+                                     "povwall: rendezvous on %s, waiting for the "
+                                     "launched workers\n",
+                                     at.c_str());
+                });
+        } catch (const distrib::DistribError& e) {
+            std::fprintf(stderr, "povwall: error: %s (no image written)\n", e.what());
+            return 3;
+        }
+        // A launched worker serves one job: a lost rank cannot be replaced, and srun or
+        // mpirun end the step with it anyway.
+        o.recover = false;
     }
     return run_render(o);
 }

@@ -1,4 +1,5 @@
-// `povwall worker`: hosts black boxes for a coordinator (`povwall render --workers`).
+// `povwall worker`: hosts black boxes for a coordinator (`povwall render --workers`, or
+// `--rendezvous` when a launcher such as srun or mpirun started the workers).
 #include <CLI/CLI.hpp>
 
 #include "cli/options.h"
@@ -17,6 +18,17 @@ int run_worker_command(int argc, char** argv) {
     app.add_option("--threads", w.threads, "render threads (0: all cores)");
     app.add_flag("--once", w.once,
                  "exit after one job (default: serve jobs until killed)");
+    app.add_option("--rendezvous", w.rendezvous,
+                   "launcher mode (srun, mpirun): register at the coordinator's "
+                   "HOST:PORT, serve one job");
+    app.add_option("--rank", w.rank, "this worker's rank (default: from srun/mpirun)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--size", w.size, "workers in the launch (default: from srun/mpirun)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--rendezvous-timeout", w.rendezvous_timeout,
+                   "seconds to wait for the rendezvous and the coordinator's job")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     // Fault injection for the tests: the process dies or hangs after handling N work
     // items.
     app.add_option("--die-after-items", w.die_after_items)->group("");

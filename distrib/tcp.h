@@ -9,6 +9,7 @@
 // return to it.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -108,7 +109,36 @@ struct WorkerOptions {
     // Serve one job and exit (the processes a coordinator starts itself); otherwise the
     // worker serves one job after another until it is killed.
     bool once = false;
+    // Launcher mode (srun, mpirun): register at the coordinator's rendezvous address
+    // with this process's rank, job size and listening address, then serve one job.
+    // rank/size: -1/0 take them from the launcher's environment (launcher_rank).
+    std::string rendezvous;
+    int rank = -1, size = 0;
+    // Seconds to wait for the rendezvous to answer and then for the coordinator's job;
+    // past it the worker ends (exit 3) rather than wait forever under a launcher.
+    double rendezvous_timeout = 120;
 };
+
+// A process started by a launcher: its rank in [0, size) and which variables told.
+struct LauncherRank {
+    int rank = 0, size = 1;
+    std::string source;  // e.g. "SLURM_PROCID/SLURM_NTASKS"
+};
+// The rank and size a launcher set in the environment: srun (SLURM_PROCID with
+// SLURM_STEP_NUM_TASKS or SLURM_NTASKS), Open MPI's mpirun (OMPI_COMM_WORLD_RANK/SIZE),
+// MPICH/Hydra and other PMI launchers (PMI_RANK/PMI_SIZE). Nothing when none is set;
+// DistribError when the values are not a rank below a size.
+std::optional<LauncherRank> launcher_rank(
+    const std::function<const char*(const char*)>& getenv);
+
+// The coordinator's side of launcher mode: listens on `address` until every worker of one
+// launch has registered, and returns their addresses in rank order (for --workers).
+// `listening` hears the bound address (port 0 picks one). DistribError on a timeout
+// (naming the missing ranks), on duplicate ranks or on disagreeing sizes; registrations
+// without the job token are refused and said on stderr.
+std::vector<std::string> gather_workers(
+    const std::string& address, const std::string& token, double timeout_seconds,
+    const std::function<void(const std::string&)>& listening = {});
 
 // Serves jobs (each a sequence of frames) and returns the exit code; with `once`, after
 // the first job: 0 when the coordinator closed the connection after a finished frame.

@@ -28,8 +28,10 @@
 #include <boost/asio.hpp>
 // clang-format on
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <deque>
 #include <functional>
@@ -433,7 +435,12 @@ uint64_t peak_resident_bytes() {
 class Worker {
   public:
     explicit Worker(const WorkerOptions& options)
-        : options_(options), acceptor_(io_), status_timer_(io_), busy_timer_(io_) {}
+        : options_(options),
+          acceptor_(io_),
+          status_timer_(io_),
+          busy_timer_(io_),
+          rendezvous_timer_(io_),
+          retry_timer_(io_) {}
 
     int run() {
         tcp::endpoint ep = resolve(io_, options_.listen);
@@ -446,6 +453,7 @@ class Worker {
                     local.address().to_string().c_str(), unsigned(local.port()));
         std::fflush(stdout);
         accept();
+        if (!options_.rendezvous.empty()) register_at_rendezvous(local);
         io_.run();
         if (preparing_.joinable()) preparing_.join();
         if (host_) host_->stop();
@@ -454,6 +462,59 @@ class Worker {
     }
 
   private:
+    // Launcher mode: tell the coordinator's rendezvous this rank's address, retrying
+    // while the coordinator is not up yet. A coordinator that never comes ends the
+    // worker, so a launch step cannot hang.
+    void register_at_rendezvous(tcp::endpoint listening) {
+        listening_ = listening;
+        rendezvous_timer_.expires_after(
+            std::chrono::milliseconds(long(options_.rendezvous_timeout * 1000)));
+        rendezvous_timer_.async_wait([this](boost::system::error_code ec) {
+            if (ec || coordinator_) return;
+            std::fprintf(
+                stderr,
+                "povwall worker: error: rank %d: no coordinator came through the "
+                "rendezvous %s within %g s\n",
+                options_.rank, options_.rendezvous.c_str(), options_.rendezvous_timeout);
+            exit_code_ = 3;
+            io_.stop();
+        });
+        try_register();
+    }
+
+    void try_register() {
+        if (coordinator_) return;
+        auto socket = std::make_shared<tcp::socket>(io_);
+        socket->async_connect(
+            resolve(io_, options_.rendezvous),
+            [this, socket](boost::system::error_code ec) {
+                if (ec) {
+                    retry_timer_.expires_after(std::chrono::milliseconds(200));
+                    retry_timer_.async_wait([this](boost::system::error_code e) {
+                        if (!e) try_register();
+                    });
+                    return;
+                }
+                // Listening on every interface: the one that reaches the coordinator is
+                // the address its peers can use.
+                boost::system::error_code le;
+                asio::ip::address host = listening_.address();
+                if (host.is_unspecified()) host = socket->local_endpoint(le).address();
+                const std::string address =
+                    host.to_string() + ":" + std::to_string(listening_.port());
+                registration_ =
+                    std::make_shared<Connection>(std::move(*socket), options_.rendezvous);
+                registration_->on_frame = [](Frame&) {};
+                registration_->on_error = [](const std::string&) {};
+                registration_->start();
+                registration_->send(control_frame({{"type", "register"},
+                                                   {"token", options_.token},
+                                                   {"rank", options_.rank},
+                                                   {"size", options_.size},
+                                                   {"address", address}}));
+            });
+    }
+
     void accept() {
         acceptor_.async_accept([this](boost::system::error_code ec, tcp::socket socket) {
             if (ec) return;
@@ -484,6 +545,7 @@ class Worker {
         int from = j.value("from", -2);
         if (from == -1 && !coordinator_) {
             coordinator_ = conn;
+            if (registration_) registration_->close();
             conn->on_frame = [this](Frame& fr) { from_coordinator(fr); };
             conn->on_error = [this](const std::string& why) {
                 if (!done_) {
@@ -831,6 +893,9 @@ class Worker {
     asio::io_context io_;
     tcp::acceptor acceptor_;
     asio::steady_timer status_timer_, busy_timer_;
+    asio::steady_timer rendezvous_timer_, retry_timer_;  // launcher mode
+    tcp::endpoint listening_;
+    std::shared_ptr<Connection> registration_;
     std::thread preparing_;
     bool busy_ = false;  // io thread only
     std::shared_ptr<Connection> coordinator_;
@@ -1410,8 +1475,156 @@ std::vector<uint8_t> encode_control_frame(const std::string& text) {
     return out;
 }
 
-int run_worker(const WorkerOptions& options) {
+std::optional<LauncherRank> launcher_rank(
+    const std::function<const char*(const char*)>& getenv) {
+    auto number = [&](const char* name, int& out) {
+        const char* v = getenv(name);
+        if (!v || !*v) return false;
+        char* end = nullptr;
+        errno = 0;
+        long n = std::strtol(v, &end, 10);
+        if (*end || errno || n < 0 || n > 1'000'000)
+            throw DistribError(std::string(name) + "='" + v +
+                               "' is not a rank or a size");
+        out = int(n);
+        return true;
+    };
+    struct Pair {
+        const char* rank;
+        const char* size;
+    };
+    // srun's step task count first: SLURM_NTASKS is the allocation's.
+    for (Pair p : {Pair{"SLURM_PROCID", "SLURM_STEP_NUM_TASKS"},
+                   Pair{"SLURM_PROCID", "SLURM_NTASKS"},
+                   Pair{"OMPI_COMM_WORLD_RANK", "OMPI_COMM_WORLD_SIZE"},
+                   Pair{"PMI_RANK", "PMI_SIZE"}}) {
+        LauncherRank r;
+        if (!number(p.rank, r.rank) || !number(p.size, r.size)) continue;
+        r.source = std::string(p.rank) + "/" + p.size;
+        if (r.size < 1 || r.rank >= r.size)
+            throw DistribError(std::string(p.rank) + "=" + std::to_string(r.rank) +
+                               " is not below " + p.size + "=" + std::to_string(r.size));
+        return r;
+    }
+    return std::nullopt;
+}
+
+std::vector<std::string> gather_workers(
+    const std::string& address, const std::string& token, double timeout_seconds,
+    const std::function<void(const std::string&)>& listening) {
+    asio::io_context io;
+    tcp::endpoint ep = resolve(io, address);
+    tcp::acceptor acceptor(io);
+    boost::system::error_code ec;
+    acceptor.open(ep.protocol(), ec);
+    if (!ec) acceptor.set_option(tcp::acceptor::reuse_address(true), ec);
+    if (!ec) acceptor.bind(ep, ec);
+    if (!ec) acceptor.listen(asio::socket_base::max_listen_connections, ec);
+    if (ec)
+        throw DistribError("cannot listen on rendezvous " + address + ": " +
+                           ec.message());
+    const tcp::endpoint bound = acceptor.local_endpoint();
+    const std::string shown =
+        bound.address().to_string() + ":" + std::to_string(bound.port());
+    if (listening) listening(shown);
+
+    std::vector<std::string> by_rank;
+    int size = 0, registered = 0;
+    std::string error;
+    std::vector<std::shared_ptr<Connection>> connections;
+    auto on_register = [&](const std::shared_ptr<Connection>& conn, Frame& f) {
+        json j = f.type == FrameType::Control ? parse_control(f) : json();
+        if (!j.is_object() || j.value("type", "") != "register" ||
+            j.value("token", "") != token || !j["rank"].is_number_integer() ||
+            !j["size"].is_number_integer() || !j["address"].is_string()) {
+            std::fprintf(stderr,
+                         "povwall: rejected a registration from %s: no valid job token\n",
+                         conn->name().c_str());
+            conn->close();
+            return;
+        }
+        const int rank = j["rank"].get<int>(), n = j["size"].get<int>();
+        const std::string where = j["address"].get<std::string>();
+        if (size == 0 && n >= 1 && n <= 4096) {
+            size = n;
+            by_rank.assign(size_t(n), std::string());
+        }
+        if (n != size) {
+            error = "workers disagree on the launch size (" + std::to_string(size) +
+                    " and " + std::to_string(n) + ")";
+        } else if (rank < 0 || rank >= size) {
+            error = "a worker registered as rank " + std::to_string(rank) + " of " +
+                    std::to_string(size);
+        } else if (!by_rank[size_t(rank)].empty()) {
+            error = "two workers registered as rank " + std::to_string(rank) + " (" +
+                    by_rank[size_t(rank)] + " and " + where + ")";
+        } else {
+            by_rank[size_t(rank)] = where;
+            if (++registered < size) return;
+        }
+        io.stop();
+    };
+    std::function<void()> accept = [&] {
+        acceptor.async_accept([&](boost::system::error_code aec, tcp::socket socket) {
+            if (aec) return;
+            boost::system::error_code pe;
+            auto rep = socket.remote_endpoint(pe);
+            std::string peer =
+                pe ? "?" : rep.address().to_string() + ":" + std::to_string(rep.port());
+            auto conn = std::make_shared<Connection>(std::move(socket), peer);
+            std::weak_ptr<Connection> weak = conn;
+            conn->on_frame = [&, weak](Frame& f) {
+                if (auto c = weak.lock()) on_register(c, f);
+            };
+            conn->on_error = [](const std::string&) {};
+            conn->start();
+            connections.push_back(conn);
+            accept();
+        });
+    };
+    accept();
+    io.run_for(std::chrono::milliseconds(long(timeout_seconds * 1000)));
+    for (auto& c : connections) c->close();
+    if (!error.empty()) throw DistribError("rendezvous " + shown + ": " + error);
+    if (size == 0 || registered < size) {
+        std::string missing;
+        for (int r = 0; r < size; ++r) {
+            if (!by_rank[size_t(r)].empty()) continue;
+            missing += (missing.empty() ? "" : ", ") + std::to_string(r);
+        }
+        char seconds[32];
+        std::snprintf(seconds, sizeof seconds, "%g", timeout_seconds);
+        throw DistribError(
+            size == 0
+                ? "rendezvous " + shown + ": no worker registered within " + seconds +
+                      " s"
+                : "rendezvous " + shown + ": only " + std::to_string(registered) +
+                      " of " + std::to_string(size) + " workers registered within " +
+                      seconds + " s (missing ranks: " + missing + ")");
+    }
+    return by_rank;
+}
+
+int run_worker(const WorkerOptions& given) {
     try {
+        WorkerOptions options = given;
+        if (!options.rendezvous.empty()) {
+            // Launched by srun/mpirun: one job, then the launch step may end.
+            options.once = true;
+            if (options.rank < 0 || options.size < 1) {
+                std::optional<LauncherRank> r = launcher_rank(std::getenv);
+                if (!r)
+                    throw DistribError(
+                        "--rendezvous needs this process's rank and size: start it "
+                        "under srun or mpirun, or give --rank and --size");
+                if (options.rank < 0) options.rank = r->rank;
+                if (options.size < 1) options.size = r->size;
+            }
+            if (options.rank >= options.size)
+                throw DistribError("--rank " + std::to_string(options.rank) +
+                                   " is not below --size " +
+                                   std::to_string(options.size));
+        }
         Worker w(options);
         return w.run();
     } catch (const std::exception& e) {

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <string>
 #include <vector>
@@ -407,3 +408,177 @@ TEST(Tcp, LostRunningWorkerIsLeftOutAndTheOthersFinishTheImage) {
 }
 
 }  // namespace
+
+// ---- Launcher mode (srun, mpirun): workers register at the coordinator's rendezvous.
+
+TEST(Launcher, RankAndSizeComeFromSrunOpenMpiOrPmiVariables) {
+    using povwall::distrib::launcher_rank;
+    auto env = [](std::map<std::string, std::string> vars) {
+        return [vars](const char* name) -> const char* {
+            auto it = vars.find(name);
+            return it == vars.end() ? nullptr : it->second.c_str();
+        };
+    };
+    auto r = launcher_rank(env(
+        {{"SLURM_PROCID", "3"}, {"SLURM_NTASKS", "16"}, {"SLURM_STEP_NUM_TASKS", "4"}}));
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->rank, 3);
+    EXPECT_EQ(r->size, 4);  // the step's tasks, not the allocation's
+    EXPECT_EQ(r->source, "SLURM_PROCID/SLURM_STEP_NUM_TASKS");
+    r = launcher_rank(
+        env({{"OMPI_COMM_WORLD_RANK", "1"}, {"OMPI_COMM_WORLD_SIZE", "2"}}));
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->rank, 1);
+    EXPECT_EQ(r->size, 2);
+    r = launcher_rank(env({{"PMI_RANK", "0"}, {"PMI_SIZE", "5"}}));
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->size, 5);
+    EXPECT_FALSE(launcher_rank(env({{"PMI_RANK", "0"}})));
+    EXPECT_FALSE(launcher_rank(env({})));
+    try {
+        launcher_rank(
+            env({{"OMPI_COMM_WORLD_RANK", "2"}, {"OMPI_COMM_WORLD_SIZE", "2"}}));
+        ADD_FAILURE() << "rank 2 of 2 accepted";
+    } catch (const povwall::distrib::DistribError& e) {
+        EXPECT_STREQ(e.what(),
+                     "OMPI_COMM_WORLD_RANK=2 is not below OMPI_COMM_WORLD_SIZE=2");
+    }
+    try {
+        launcher_rank(env({{"SLURM_PROCID", "x1"}, {"SLURM_NTASKS", "2"}}));
+        ADD_FAILURE() << "a rank 'x1' accepted";
+    } catch (const povwall::distrib::DistribError& e) {
+        EXPECT_STREQ(e.what(), "SLURM_PROCID='x1' is not a rank or a size");
+    }
+}
+
+// A port nothing listens on now (bound, read, released).
+int free_port() {
+    int fd = socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    EXPECT_EQ(bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+    socklen_t len = sizeof addr;
+    getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len);
+    close(fd);
+    return ntohs(addr.sin_port);
+}
+
+// A worker as srun starts it: rank and size only in the environment.
+pid_t launch_worker(const std::string& environment, const std::string& args) {
+    pid_t pid = fork();
+    if (pid == 0) {
+        int null = ::open("/dev/null", O_WRONLY);
+        dup2(null, 1);
+        dup2(null, 2);
+        std::string cmd = "exec env " + environment + " " + POVWALL_BINARY +
+                          " worker --threads 1 " + args;
+        execl("/bin/sh", "sh", "-c", cmd.c_str(), (char*)nullptr);
+        _exit(127);
+    }
+    return pid;
+}
+
+int exit_code(pid_t pid) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+TEST(Launcher, SrunStartedWorkersRegisterInRankOrderAndGiveTheOneProcessImage) {
+    const std::string at = "127.0.0.1:" + std::to_string(free_port());
+    // Started before the coordinator and out of order, as a launcher may: they retry.
+    std::vector<pid_t> pids;
+    for (int rank : {2, 0, 1})
+        pids.push_back(
+            launch_worker("SLURM_PROCID=" + std::to_string(rank) + " SLURM_NTASKS=3",
+                          "--rendezvous " + at + " --token launch"));
+    const fs::path one = scratch() / "launch-one.exr", out = scratch() / "launch.exr";
+    ASSERT_EQ(run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 48 -H 36 -q -o " +
+                  one.string())
+                  .code,
+              0);
+    const fs::path stats = scratch() / "launch.json";
+    RunResult r = run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 48 -H 36 -o " +
+                      out.string() + " --boxes 3x1x1 --token launch --rendezvous " + at +
+                      " --stats " + stats.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(
+        r.err.rfind(
+            "povwall: rendezvous on " + at + ", waiting for the launched workers\n", 0),
+        0u)
+        << r.err;
+    EXPECT_EQ(run("diff " + one.string() + " " + out.string() + " --max-rmse 1e-6").code,
+              0);
+    // Three workers, each keeping the objects of its box.
+    std::ifstream in(stats);
+    const std::string json((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_TRUE(std::regex_search(
+        json,
+        std::regex(R"("objects_kept":\s*\[\s*[1-9]\d*,\s*[1-9]\d*,\s*[1-9]\d*\s*\])")))
+        << json;
+    // A launched worker serves one job and ends, so the launch step ends too.
+    for (pid_t pid : pids) EXPECT_EQ(exit_code(pid), 0);
+}
+
+TEST(Launcher, ALostRankEndsTheRenderUnderItsRankAndNoImageIsWritten) {
+    const std::string at = "127.0.0.1:" + std::to_string(free_port());
+    std::vector<pid_t> pids;
+    for (int rank : {1, 0, 2})
+        pids.push_back(launch_worker("PMI_RANK=" + std::to_string(rank) + " PMI_SIZE=3",
+                                     "--rendezvous " + at + " --token lost" +
+                                         (rank == 1 ? " --die-after-items 200" : "")));
+    const fs::path out = scratch() / "lost-rank.png";
+    fs::remove(out);
+    RunResult r =
+        run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 64 -H 48 -q -o " +
+            out.string() + " --boxes 3x1x1 --token lost --rendezvous " + at);
+    EXPECT_EQ(r.code, 3);
+    // Worker index = rank: the one that died is worker 1, holding box 1.
+    EXPECT_TRUE(std::regex_search(
+        r.err, std::regex(R"(^povwall: error: worker 1 \(127\.0\.0\.1:\d+, box 1\): )")))
+        << r.err;
+    EXPECT_EQ(r.err.find("traced again"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+    for (pid_t pid : pids) {
+        kill(pid, SIGKILL);
+        exit_code(pid);
+    }
+}
+
+TEST(Launcher, MissingRanksAreNamedAndNoImageIsWritten) {
+    const std::string at = "127.0.0.1:" + std::to_string(free_port());
+    pid_t one =
+        launch_worker("OMPI_COMM_WORLD_RANK=1 OMPI_COMM_WORLD_SIZE=3",
+                      "--rendezvous " + at + " --token t --rendezvous-timeout 30");
+    const fs::path out = scratch() / "missing.png";
+    fs::remove(out);
+    RunResult r =
+        run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 16 -H 12 -q -o " +
+            out.string() + " --boxes 2x2x2 --token t --rendezvous " + at +
+            " --rendezvous-timeout 1.5");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_EQ(r.err, "povwall: error: rendezvous " + at +
+                         ": only 1 of 3 workers registered within 1.5 s (missing ranks: "
+                         "0, 2) (no image written)\n");
+    EXPECT_FALSE(fs::exists(out));
+    kill(one, SIGKILL);
+    exit_code(one);
+}
+
+TEST(Launcher, AWorkerWithoutRankOrCoordinatorEndsWithAClearError) {
+    RunResult r = run("worker --rendezvous 127.0.0.1:1 --token t");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err,
+              "povwall worker: error: --rendezvous needs this process's rank and size: "
+              "start it under srun or mpirun, or give --rank and --size\n");
+    // Nobody at the rendezvous: the worker gives up after its timeout instead of hanging.
+    const std::string at = "127.0.0.1:" + std::to_string(free_port());
+    r = run("worker --rendezvous " + at +
+            " --token t --rank 0 --size 2 --rendezvous-timeout 0.5");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_EQ(r.err,
+              "povwall worker: error: rank 0: no coordinator came through the "
+              "rendezvous " +
+                  at + " within 0.5 s\n");
+}
