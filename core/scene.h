@@ -6,6 +6,7 @@
 // never need to know the scene language.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -140,7 +141,7 @@ struct ColourMapEntry {
 using ColourMap = std::vector<ColourMapEntry>;
 
 struct Pigment {
-    PatternSpec pattern;
+    HeapValue<PatternSpec> pattern;  // solid pigments never write it
     Colour colour;         // Solid pigments; also the colour a scene gets by default
     ColourMap colour_map;  // pattern pigments
     std::vector<float> map_values;  // pigment_map values, parallel to `list`
@@ -155,7 +156,7 @@ struct SlopeMapEntry {
 };
 
 struct Normal {
-    PatternSpec pattern;
+    HeapValue<PatternSpec> pattern;
     Real amount = 0.5;  // bump_size
     std::vector<float> map_values;
     std::vector<Normal> list;  // normal_map entries
@@ -176,12 +177,13 @@ struct Finish {
     bool reflection_fresnel = false;
     bool conserve_energy = false;
     float irid = 0.0f, irid_thickness = 0.0f, irid_turbulence = 0.0f;
+    bool operator==(const Finish&) const = default;
 };
 
 struct Texture {
     Pigment pigment;
     HeapOptional<Normal> normal;
-    Finish finish;
+    SharedValue<Finish> finish;  // objects with equal finishes share one
     // Patterned texture (texture_map, material_map, checker of textures): when `map` is
     // non-empty the fields above are unused and the pattern selects among `map` entries.
     HeapOptional<PatternSpec> map_pattern;
@@ -236,7 +238,8 @@ struct Triangle {
 };
 struct SmoothTriangle {
     Point3 p[3];
-    Vector3 n[3];
+    // Vertex normals on the heap: inline they made every object's shape 152 bytes.
+    HeapValue<std::array<Vector3, 3>> n;
 };
 struct Polygon {
     std::vector<Point3> points;
@@ -252,8 +255,7 @@ struct Mesh {
     };
     std::vector<Face> faces;
     std::vector<LayeredTexture> textures;  // per-face textures (mesh2 texture_list)
-    Point3 inside_vector{0, 0, 0};
-    bool has_inside_vector = false;
+    HeapOptional<Vector3> inside_vector;   // only a mesh with one is solid
 };
 
 struct Object;
@@ -276,7 +278,7 @@ struct Object {
     // Empty means "no texture given": the renderer uses the default texture.
     LayeredTexture texture;
     LayeredTexture interior_texture;
-    std::optional<Interior> interior;
+    HeapOptional<Interior> interior;
     bool inverse = false;
     bool hollow = false;
     bool no_shadow = false, no_image = false, no_reflection = false;

@@ -586,7 +586,7 @@ void Interpreter::directive_default() {
         } else if (is_word(t, "pigment")) {
             default_texture_.pigment = parse_pigment_block();
         } else if (is_word(t, "finish")) {
-            default_texture_.finish = parse_finish_block();
+            default_texture_.finish = shared_finish(parse_finish_block());
         } else if (is_word(t, "normal")) {
             default_texture_.normal = parse_normal_block();
         } else {

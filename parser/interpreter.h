@@ -133,15 +133,18 @@ class Interpreter {
     Pigment parse_pigment_block();  // after 'pigment'
     void parse_pigment_body(Pigment& p, char terminator);
     Finish parse_finish_block();  // after 'finish'
+    SharedValue<Finish> shared_finish(const Finish& f);
     Normal parse_normal_block();  // after 'normal'
     void parse_normal_body(Normal& n, char terminator);
     Interior parse_interior_block();     // after 'interior'
     ColourMap parse_colour_map_block();  // after 'color_map'
     bool try_pattern_keyword(const Token& t, PatternSpec& spec);
+    bool try_pattern_keyword(const Token& t, HeapValue<PatternSpec>& spec);
     // After image_map / bump_map (`bump` receives bump_size): the mapping, pixels loaded.
     std::shared_ptr<const ImageMapping> parse_image_block(const Token& keyword,
                                                           Normal* bump);
     bool try_pattern_modifier(const Token& t, PatternSpec& spec);
+    bool try_pattern_modifier(const Token& t, HeapValue<PatternSpec>& spec);
     Light parse_light_block();
     CameraSpec parse_camera_block();
     void parse_global_settings();
@@ -259,6 +262,7 @@ class Interpreter {
     uintptr_t stack_floor_ = 0;  // lowest frame address allowed; 0: unknown, no check
     bool camera_seen_ = false;
     Texture default_texture_;
+    SharedValue<Finish> last_finish_;  // shared_finish()
     std::string scene_dir_;
     std::vector<std::string> image_files_;  // image_map/bump_map files, for Scene::files
     std::vector<std::string> element_names_;  // rotating names bound to array elements

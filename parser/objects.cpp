@@ -26,10 +26,12 @@ void transform_pattern(PatternSpec& p, const Transform& t) {
 // Pigment and normal map/list entries are evaluated at the outer pattern's point (as
 // POV-Ray does), so a transform moves only the outer pattern.
 void transform_pigment(Pigment& p, const Transform& t) {
-    transform_pattern(p.pattern, t);
+    transform_pattern(p.pattern.edit(), t);
 }
 
-void transform_normal(Normal& n, const Transform& t) { transform_pattern(n.pattern, t); }
+void transform_normal(Normal& n, const Transform& t) {
+    transform_pattern(n.pattern.edit(), t);
+}
 
 }  // namespace
 
@@ -155,7 +157,7 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (w == "pigment") {
             top.pigment = parse_pigment_block();
         } else if (w == "finish") {
-            top.finish = parse_finish_block();
+            top.finish = shared_finish(parse_finish_block());
         } else {
             top.normal = parse_normal_block();
         }
@@ -371,7 +373,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 if (i) accept_punct(',');
                 tri.p[i] = parse_vector();
                 accept_punct(',');
-                tri.n[i] = parse_vector();
+                tri.n.edit()[i] = parse_vector();
             }
             if (degenerate_corners(tri.p))
                 warn(t, "degenerate triangle, never hit; please remove");

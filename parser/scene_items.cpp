@@ -423,7 +423,6 @@ void Interpreter::parse_mesh(Object& out) {
     }
     if (accept_word("inside_vector")) {
         mesh.inside_vector = parse_vector();
-        mesh.has_inside_vector = true;
     }
     out.shape = std::move(mesh);
 }
@@ -589,7 +588,6 @@ void Interpreter::parse_mesh2(Object& out) {
             expect_punct('}');
         } else if (w == "inside_vector") {
             mesh.inside_vector = parse_vector();
-            mesh.has_inside_vector = true;
         } else {
             unget(t);
             break;

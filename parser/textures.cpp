@@ -213,6 +213,24 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
     return false;
 }
 
+// The pattern of a pigment or normal is allocated only when a keyword writes it (see
+// HeapValue); a word that is not one leaves it unallocated.
+bool Interpreter::try_pattern_keyword(const Token& t, HeapValue<PatternSpec>& spec) {
+    if (t.kind != TokenKind::Word) return false;
+    const bool had = spec.allocated();
+    if (try_pattern_keyword(t, spec.edit())) return true;
+    if (!had) spec.clear();
+    return false;
+}
+
+bool Interpreter::try_pattern_modifier(const Token& t, HeapValue<PatternSpec>& spec) {
+    if (t.kind != TokenKind::Word) return false;
+    const bool had = spec.allocated();
+    if (try_pattern_modifier(t, spec.edit())) return true;
+    if (!had) spec.clear();
+    return false;
+}
+
 bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     if (t.kind != TokenKind::Word) return false;
     std::string_view w = t.text;
@@ -383,10 +401,10 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
         if (try_pattern_keyword(t, p.pattern)) {
             // checker/hexagon/brick take their colours or pigments right after the
             // keyword
-            if (p.pattern.kind == PatternKind::Checker ||
-                p.pattern.kind == PatternKind::Hexagon ||
-                p.pattern.kind == PatternKind::Brick) {
-                int count = p.pattern.kind == PatternKind::Hexagon ? 3 : 2;
+            if (p.pattern->kind == PatternKind::Checker ||
+                p.pattern->kind == PatternKind::Hexagon ||
+                p.pattern->kind == PatternKind::Brick) {
+                int count = p.pattern->kind == PatternKind::Hexagon ? 3 : 2;
                 for (int i = 0; i < count; ++i) {
                     if (i) accept_punct(',');
                     const Token& n = peek();
@@ -415,7 +433,8 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
             w == "srgbft" || w == "red" || w == "green" || w == "blue" || w == "filter" ||
             w == "transmit") {
             unget(t);
-            p.pattern.kind = PatternKind::Solid;
+            if (p.pattern->kind != PatternKind::Solid)
+                p.pattern.edit().kind = PatternKind::Solid;
             p.colour = parse_colour_value();
         } else if (w == "color_map" || w == "colour_map") {
             p.colour_map = parse_colour_map_block();
@@ -425,7 +444,7 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                 Token e = next();
                 if (is_punct(e, '}')) break;
                 if (!is_punct(e, '[')) expected("'[' in a pigment_map", e);
-                float v = parse_map_value(p.pattern.kind == PatternKind::Average);
+                float v = parse_map_value(p.pattern->kind == PatternKind::Average);
                 accept_punct(',');
                 Pigment sub = default_texture_.pigment;
                 if (accept_word("pigment")) {
@@ -443,11 +462,12 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                    std::holds_alternative<Numeric>(*lookup(t))) {
             // A colour identifier alone: pigment { Red }
             unget(t);
-            p.pattern.kind = PatternKind::Solid;
+            if (p.pattern->kind != PatternKind::Solid)
+                p.pattern.edit().kind = PatternKind::Solid;
             p.colour = parse_colour_value();
         } else if (w == "image_map") {
-            p.pattern.kind = PatternKind::ImageMap;
-            p.pattern.image = parse_image_block(t, nullptr);
+            p.pattern.edit().kind = PatternKind::ImageMap;
+            p.pattern.edit().image = parse_image_block(t, nullptr);
         } else if (w == "uv_mapping" || w == "pigment_pattern") {
             unsupported(t, w);
         } else {
@@ -479,11 +499,11 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
         Token t = next();
         if (is_punct(t, terminator)) return;
         if (try_pattern_keyword(t, n.pattern)) {
-            if (n.pattern.kind == PatternKind::Checker ||
-                n.pattern.kind == PatternKind::Hexagon ||
-                n.pattern.kind == PatternKind::Brick) {
+            if (n.pattern->kind == PatternKind::Checker ||
+                n.pattern->kind == PatternKind::Hexagon ||
+                n.pattern->kind == PatternKind::Brick) {
                 // checker normal{..} normal{..}: entries follow the keyword.
-                int count = n.pattern.kind == PatternKind::Hexagon ? 3 : 2;
+                int count = n.pattern->kind == PatternKind::Hexagon ? 3 : 2;
                 for (int i = 0; i < count; ++i) {
                     if (i) accept_punct(',');
                     if (!accept_word("normal")) break;
@@ -509,7 +529,7 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
                 Token e = next();
                 if (is_punct(e, '}')) break;
                 if (!is_punct(e, '[')) expected("'[' or '}' in a normal_map", e);
-                float value = parse_map_value(n.pattern.kind == PatternKind::Average);
+                float value = parse_map_value(n.pattern->kind == PatternKind::Average);
                 accept_punct(',');
                 Normal sub;
                 if (accept_word("normal")) {
@@ -537,8 +557,8 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
                 n.slope_map.push_back(entry);
             }
         } else if (is_word(t, "bump_map")) {
-            n.pattern.kind = PatternKind::ImageMap;
-            n.pattern.image = parse_image_block(t, &n);
+            n.pattern.edit().kind = PatternKind::ImageMap;
+            n.pattern.edit().image = parse_image_block(t, &n);
         } else if (is_word(t, "uv_mapping")) {
             unsupported(t, t.text);
         } else {
@@ -547,9 +567,16 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
     }
 }
 
+// A finish equal to the last one parsed shares its object: a loop that writes the same
+// finish for each of its objects keeps one, not one per object.
+SharedValue<Finish> Interpreter::shared_finish(const Finish& f) {
+    if (!last_finish_.allocated() || !(*last_finish_ == f)) last_finish_ = f;
+    return last_finish_;
+}
+
 Finish Interpreter::parse_finish_block() {
     expect_punct('{', "after 'finish'");
-    Finish f = default_texture_.finish;
+    Finish f = *default_texture_.finish;
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
         const Value* v = lookup(first);
@@ -723,7 +750,7 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
         if (w == "pigment") {
             top.pigment = parse_pigment_block();
         } else if (w == "finish") {
-            top.finish = parse_finish_block();
+            top.finish = shared_finish(parse_finish_block());
         } else if (w == "normal") {
             top.normal = parse_normal_block();
         } else if (w == "texture_map") {

@@ -45,7 +45,7 @@ struct UnsupportedValue {
 struct CameraSpec;
 struct Material {
     LayeredTexture texture;
-    std::optional<Interior> interior;
+    HeapOptional<Interior> interior;
 };
 
 using Value = std::variant<

@@ -257,15 +257,16 @@ void intersect_triangle(const Point3 p[3], const Point3& o, const Vector3& dir,
     if (t > kTriangleTolerance) out.add(t, 0);
 }
 
-Vector3 smooth_triangle_normal(const SmoothTriangle& tri, const Point3& q) {
+Vector3 smooth_triangle_normal(const Point3 (&corner)[3], const Vector3* n,
+                               const Point3& q) {
     // Barycentric interpolation of the vertex normals.
-    Vector3 e1 = tri.p[1] - tri.p[0], e2 = tri.p[2] - tri.p[0], w = q - tri.p[0];
+    Vector3 e1 = corner[1] - corner[0], e2 = corner[2] - corner[0], w = q - corner[0];
     Real d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2);
     Real d20 = dot(w, e1), d21 = dot(w, e2);
     Real den = d00 * d11 - d01 * d01;
     if (den == 0) return cross(e1, e2);
     Real v = (d11 * d20 - d01 * d21) / den, u2 = (d00 * d21 - d01 * d20) / den;
-    return tri.n[0] * (1 - v - u2) + tri.n[1] * v + tri.n[2] * u2;
+    return n[0] * (1 - v - u2) + n[1] * v + n[2] * u2;
 }
 
 Vector3 polygon_normal(const Polygon& poly) {

@@ -75,7 +75,9 @@ Vector3 box_normal(const Box& b, int face);
 Vector3 cylinder_normal(const Cylinder& c, const Point3& p, int face);
 Vector3 cone_normal(const Cone& c, const Point3& p, int face);
 Vector3 torus_normal(const Torus& t, const Point3& p);
-Vector3 smooth_triangle_normal(const SmoothTriangle& t, const Point3& p);
+// The vertex normals `n` interpolated at p (unnormalised).
+Vector3 smooth_triangle_normal(const Point3 (&corner)[3], const Vector3* n,
+                               const Point3& p);
 
 // Inside tests (object space), used by CSG.
 bool inside_sphere(const Sphere& s, const Point3& p);

@@ -25,7 +25,7 @@ bool has_dedicated_normal(PatternKind k) {
 
 // Adds the dedicated normal pattern's displacement at pattern-space point p to n.
 void displace(const Normal& nm, const Point3& p, Vector3& n, const PatternEnv& env) {
-    const PatternSpec& s = nm.pattern;
+    const PatternSpec& s = *nm.pattern;
     switch (s.kind) {
         case PatternKind::Bumps:
             n += dnoise(p) * nm.amount;
@@ -102,7 +102,7 @@ Real slope_mapped(const Normal& nm, Real value) {
 
 Vector3 perturb_normal(const Normal& normal, const Point3& world,
                        const Vector3& geometric, const PatternEnv& env) {
-    const PatternSpec& spec = normal.pattern;
+    const PatternSpec& spec = *normal.pattern;
     if (spec.kind == PatternKind::Solid) return normalize(geometric);
 
     // normal_map: perturb by the two neighbouring normals and blend the results.

@@ -80,7 +80,7 @@ Colour blend(const Colour& prev, const Colour& cur, Real f) {
 
 Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
                         const PatternEnv& env) {
-    const PatternSpec& spec = pigment.pattern;
+    const PatternSpec& spec = *pigment.pattern;
     if (spec.kind == PatternKind::Solid) return pigment.colour;
     Point3 p = detail::warp_point(spec, world);
     if (spec.kind == PatternKind::ImageMap) {

@@ -30,11 +30,11 @@ bool image_opaque(const ImageMapping& m) {
 }
 
 bool pigment_opaque(const Pigment& p) {
-    if (p.pattern.kind == PatternKind::ImageMap && p.pattern.image &&
-        !image_opaque(*p.pattern.image))
+    if (p.pattern->kind == PatternKind::ImageMap && p.pattern->image &&
+        !image_opaque(*p.pattern->image))
         return false;
     if (p.colour.filter != 0 || p.colour.transmit != 0) {
-        if (p.pattern.kind == PatternKind::Solid) return false;
+        if (p.pattern->kind == PatternKind::Solid) return false;
     }
     for (const auto& e : p.colour_map) {
         if (e.colour.filter != 0 || e.colour.transmit != 0) return false;
@@ -114,7 +114,7 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
                 else if constexpr (std::is_same_v<T, Triangle>)
                     n = cross(s.p[1] - s.p[0], s.p[2] - s.p[0]);
                 else if constexpr (std::is_same_v<T, SmoothTriangle>)
-                    n = smooth_triangle_normal(s, p);
+                    n = smooth_triangle_normal(s.p, s.n->data(), p);
                 else if constexpr (std::is_same_v<T, Polygon>)
                     n = polygon_normal(s);
             },
@@ -294,8 +294,8 @@ size_t count_leaves(const Object& o) {
 // A mesh is solid only with an inside_vector (as in POV-Ray): a point is inside when a
 // ray from it along that vector crosses the triangles an odd number of times.
 bool inside_mesh(const Mesh& m, const Point3& q) {
-    if (!m.has_inside_vector || dot(m.inside_vector, m.inside_vector) == 0) return false;
-    const Vector3 dir = normalize(m.inside_vector);
+    if (!m.inside_vector || dot(*m.inside_vector, *m.inside_vector) == 0) return false;
+    const Vector3 dir = normalize(*m.inside_vector);
     int crossed = 0;
     for (const auto& f : m.faces) {
         Point3 p[3] = {m.vertices[f.v[0]], m.vertices[f.v[1]], m.vertices[f.v[2]]};
@@ -504,7 +504,7 @@ uint32_t PreparedScene::add_material(const Object& o) {
     if (texture_is_plain(o.texture)) {
         m.plain = true;
         m.plain_colour = o.texture.front().pigment.colour;
-        m.plain_finish = o.texture.front().finish;
+        m.plain_finish = *o.texture.front().finish;
     }
     materials_.push_back(m);
     uint32_t index = uint32_t(materials_.size()) - 1;
@@ -671,9 +671,7 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
             hit.prim = id;
             hit.point = ray.at(hit.t);
             if (tri.smooth) {
-                SmoothTriangle st{{tri.p[0], tri.p[1], tri.p[2]},
-                                  {tri.n[0], tri.n[1], tri.n[2]}};
-                hit.normal = normalize(smooth_triangle_normal(st, hit.point));
+                hit.normal = normalize(smooth_triangle_normal(tri.p, tri.n, hit.point));
             } else {
                 hit.normal = normalize(cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]));
             }

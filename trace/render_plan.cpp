@@ -137,16 +137,22 @@ constexpr size_t kHeapBlock = 16;
 
 size_t heap_bytes(size_t bytes) { return bytes ? bytes + kHeapBlock : 0; }
 
+size_t model_bytes(const HeapValue<PatternSpec>& p) {
+    return p.allocated() ? heap_bytes(sizeof(PatternSpec)) +
+                               heap_bytes(p->warps.size() * sizeof(Warp))
+                         : 0;
+}
 size_t model_bytes(const Pigment& p);
 size_t model_bytes(const Normal& n) {
-    size_t b = heap_bytes(n.map_values.size() * sizeof(float)) +
+    size_t b = model_bytes(n.pattern) + heap_bytes(n.map_values.size() * sizeof(float)) +
                heap_bytes(n.slope_map.size() * sizeof(SlopeMapEntry)) +
                heap_bytes(n.list.size() * sizeof(Normal));
     for (const Normal& e : n.list) b += model_bytes(e);
     return b;
 }
 size_t model_bytes(const Pigment& p) {
-    size_t b = heap_bytes(p.colour_map.size() * sizeof(ColourMapEntry)) +
+    size_t b = model_bytes(p.pattern) +
+               heap_bytes(p.colour_map.size() * sizeof(ColourMapEntry)) +
                heap_bytes(p.map_values.size() * sizeof(float)) +
                heap_bytes(p.list.size() * sizeof(Pigment));
     for (const Pigment& e : p.list) b += model_bytes(e);
@@ -155,7 +161,12 @@ size_t model_bytes(const Pigment& p) {
 size_t model_bytes(const LayeredTexture& layers) {
     size_t b = heap_bytes(layers.size() * sizeof(Texture));
     for (const Texture& t : layers) {
-        b += model_bytes(t.pigment) + (t.normal ? model_bytes(*t.normal) : 0);
+        b += model_bytes(t.pigment) +
+             (t.normal ? heap_bytes(sizeof(Normal)) + model_bytes(*t.normal) : 0);
+        // A finish shared by several textures counts its share in each.
+        if (t.finish.holders() > 0)
+            b += heap_bytes(sizeof(Finish)) / size_t(t.finish.holders());
+        if (t.map_pattern) b += heap_bytes(sizeof(PatternSpec));
         b += heap_bytes(t.map_values.size() * sizeof(float)) +
              heap_bytes(t.map.size() * sizeof(LayeredTexture));
         for (const LayeredTexture& m : t.map) b += model_bytes(m);
@@ -173,13 +184,16 @@ size_t model_bytes_of_list(const std::vector<Object>& objects) {
 size_t estimate_model_bytes(const Object& o) {
     // The Object itself (held in a vector: no block of its own), then what it points to.
     size_t b = sizeof(Object) + model_bytes(o.texture) + model_bytes(o.interior_texture) +
-               model_bytes_of_list(o.clipped_by) + model_bytes_of_list(o.bounded_by);
+               model_bytes_of_list(o.clipped_by) + model_bytes_of_list(o.bounded_by) +
+               (o.interior ? heap_bytes(sizeof(Interior)) : 0);
     if (auto m = std::get_if<Mesh>(&o.shape)) {
         b += heap_bytes(m->vertices.size() * sizeof(Point3)) +
              heap_bytes(m->normals.size() * sizeof(Vector3)) +
              heap_bytes(m->faces.size() * sizeof(Mesh::Face)) +
              heap_bytes(m->textures.size() * sizeof(LayeredTexture));
         for (const LayeredTexture& t : m->textures) b += model_bytes(t);
+    } else if (auto st = std::get_if<SmoothTriangle>(&o.shape)) {
+        if (st->n.allocated()) b += heap_bytes(sizeof(std::array<Vector3, 3>));
     } else if (auto p = std::get_if<Polygon>(&o.shape)) {
         b += heap_bytes(p->points.size() * sizeof(Point3));
     } else if (auto c = std::get_if<Csg>(&o.shape)) {
@@ -193,7 +207,7 @@ bool shading_is_linear(const Scene& scene) {
     bool linear = true;
     for_each_scene_texture(scene, [&](const LayeredTexture& layers) {
         for (const Texture& t : layers) {
-            if (t.finish.reflection_exponent != 1) linear = false;
+            if (t.finish->reflection_exponent != 1) linear = false;
         }
     });
     return linear;
@@ -205,8 +219,8 @@ RenderPlan make_render_plan(const Scene& scene, bool everything_on) {
     bool reflective = false, transparent = false;
     for_each_scene_texture(scene, [&](const LayeredTexture& layers) {
         for (const Texture& t : layers) {
-            if (!t.finish.reflection_max.is_black() ||
-                !t.finish.reflection_min.is_black())
+            if (!t.finish->reflection_max.is_black() ||
+                !t.finish->reflection_min.is_black())
                 reflective = true;
         }
         if (!texture_opaque(layers)) transparent = true;

@@ -229,7 +229,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         if (li == nlayers - 1) top_normal = Nl;
         const float att = legacy ? 1 - (lay.filter * max3(lay.rgb) + lay.transmit)
                                  : 1 - lay.filter - lay.transmit;
-        const Finish& f = tex ? tex->finish : m.plain_finish;
+        const Finish& f = tex ? *tex->finish : m.plain_finish;
         Rgb tmp = lay.rgb * f.ambient * sc.settings.ambient_light * att +
                   lay.rgb * f.emission * att;
         out.local += tmp * fil;

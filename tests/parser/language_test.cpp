@@ -145,11 +145,11 @@ TEST(Textures, TextureMapAndCheckerTextures) {
     EXPECT_EQ(t.map_pattern->kind, PatternKind::Gradient);
     ASSERT_EQ(t.map.size(), 2u);
     EXPECT_EQ(t.map_values[0], 0.2f);
-    EXPECT_EQ(t.map[0][0].finish.ambient.r, 0.2f);
+    EXPECT_EQ(t.map[0][0].finish->ambient.r, 0.2f);
     EXPECT_FLOAT_EQ(t.map[1][0].pigment.colour.rgb.r, 1.0f);
     // `scale 2` after the map moves the pattern and the entries' patterns alike.
     EXPECT_NEAR(t.map_pattern->transform.point({1, 1, 1}).x, 2, 1e-12);
-    EXPECT_NEAR(t.map[1][0].pigment.pattern.transform.point({1, 1, 1}).x, 2, 1e-12);
+    EXPECT_NEAR(t.map[1][0].pigment.pattern->transform.point({1, 1, 1}).x, 2, 1e-12);
     EXPECT_EQ(s.objects[1].texture[0].map.size(), 2u);
     EXPECT_EQ(s.objects[1].texture[0].map_pattern->kind, PatternKind::Checker);
 }
@@ -162,8 +162,8 @@ TEST(Textures, PigmentMapEntriesAreBodies) {
     const Pigment& p = s.objects[0].texture[0].pigment;
     ASSERT_EQ(p.list.size(), 2u);
     EXPECT_FLOAT_EQ(p.list[0].colour.rgb.r, 1.0f);
-    EXPECT_EQ(p.list[1].pattern.kind, PatternKind::Bozo);
-    EXPECT_NEAR(p.list[1].pattern.transform.point({1, 0, 0}).x, 2, 1e-12);
+    EXPECT_EQ(p.list[1].pattern->kind, PatternKind::Bozo);
+    EXPECT_NEAR(p.list[1].pattern->transform.point({1, 0, 0}).x, 2, 1e-12);
 }
 
 TEST(Textures, DefaultFinishAppliesToLaterTextures) {
@@ -172,11 +172,11 @@ TEST(Textures, DefaultFinishAppliesToLaterTextures) {
         "#default { finish { ambient 0.3 diffuse 0.5 } }\n"
         "sphere { 0, 1 pigment { rgb 1 } }\n"
         "sphere { 0, 1 texture { finish { phong 1 } } }\n");
-    EXPECT_FLOAT_EQ(s.objects[0].texture[0].finish.ambient.r, 0.1f);
-    EXPECT_FLOAT_EQ(s.objects[1].texture[0].finish.ambient.r, 0.3f);
-    EXPECT_FLOAT_EQ(s.objects[1].texture[0].finish.diffuse, 0.5f);
-    EXPECT_FLOAT_EQ(s.objects[2].texture[0].finish.diffuse, 0.5f);
-    EXPECT_FLOAT_EQ(s.objects[2].texture[0].finish.phong, 1.0f);
+    EXPECT_FLOAT_EQ(s.objects[0].texture[0].finish->ambient.r, 0.1f);
+    EXPECT_FLOAT_EQ(s.objects[1].texture[0].finish->ambient.r, 0.3f);
+    EXPECT_FLOAT_EQ(s.objects[1].texture[0].finish->diffuse, 0.5f);
+    EXPECT_FLOAT_EQ(s.objects[2].texture[0].finish->diffuse, 0.5f);
+    EXPECT_FLOAT_EQ(s.objects[2].texture[0].finish->phong, 1.0f);
 }
 
 TEST(Camera, LookAtKeepsLengthsAndHandedness) {
@@ -290,7 +290,7 @@ TEST(Textures, WarpsAndClassicTurbulence) {
         "  warp { black_hole <1, 0, 0>, 0.5 strength 2 falloff 3 inverse }\n"
         "  warp { planar z, 0.25 } warp { toroidal orientation y dist_exp 1 major_radius "
         "2 } } }\n");
-    const auto& w = s.objects[0].texture[0].pigment.pattern.warps;
+    const auto& w = s.objects[0].texture[0].pigment.pattern->warps;
     ASSERT_EQ(w.size(), 5u);
     EXPECT_TRUE(w[0].classic);
     EXPECT_EQ(w[0].octaves, 3);
@@ -414,7 +414,8 @@ TEST(ImageMap, InputGammaRules) {
         std::ofstream(dir / "s.pov") << head << "\nplane { z, 0 " << item << " }\n";
         Scene s = parse_scene_file((dir / "s.pov").string(), o);
         const Texture& t = s.objects.at(0).texture.at(0);
-        const PatternSpec& p = t.normal ? t.normal->pattern : t.pigment.pattern;
+        const PatternSpec& p =
+            t.normal ? t.normal->pattern.get() : t.pigment.pattern.get();
         EXPECT_EQ(p.kind, PatternKind::ImageMap);
         return p.image->pixels->rgbft[0];
     };

@@ -228,7 +228,7 @@ TEST(Textures, ObjectTransformsMoveTexturesAndCsgPushesTextureDown) {
 sphere { 0, 1 pigment { checker } scale 2 }
 union { sphere { 0, 1 } sphere { x, 1 pigment { rgb 1 } } pigment { rgb <1, 0, 0> } }
 )");
-    const PatternSpec& p = s.objects[0].texture[0].pigment.pattern;
+    const PatternSpec& p = s.objects[0].texture[0].pigment.pattern.get();
     EXPECT_EQ(p.kind, PatternKind::Checker);
     EXPECT_EQ(p.transform.point({1, 1, 1}), (Vector3{2, 2, 2}));
     const Csg& u = std::get<Csg>(s.objects[1].shape);

@@ -361,7 +361,7 @@ TEST(IntersectAudit, TriangleHitMissGrazingAndTransformed) {
 
 TEST(IntersectAudit, SmoothTriangleInterpolatesNormals) {
     SmoothTriangle tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
-                       {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}};
+                       std::array<Vector3, 3>{{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}}};
     Hit h;
     ASSERT_TRUE(shoot(one(object(tri)), {{0.5, 0.25, -5}, {0, 0, 1}}, h));
     EXPECT_NEAR(h.t, 5.0, 1e-12);
@@ -408,8 +408,7 @@ TEST(IntersectAudit, MeshHitsAndInsideVectorMakesItSolid) {
     EXPECT_NEAR(std::fabs(h.normal.z), 1.0, 1e-12);
     EXPECT_FALSE(
         inside_object(object(m), {0.1, 0.1, 0.1}));  // no inside_vector: a surface
-    m.inside_vector = {1, 0.01, 0.02};
-    m.has_inside_vector = true;
+    m.inside_vector = Vector3{1, 0.01, 0.02};
     EXPECT_TRUE(inside_object(object(m), {0.1, 0.1, 0.1}));
     EXPECT_FALSE(inside_object(object(m), {0.5, 0.5, 0.5}));   // beyond the slanted face
     EXPECT_FALSE(inside_object(object(m), {-0.5, 0.1, 0.1}));  // crosses in and out again
@@ -420,8 +419,7 @@ TEST(IntersectAudit, MeshHitsAndInsideVectorMakesItSolid) {
 
 TEST(IntersectAudit, DifferenceWithASolidMeshCutsTheSphere) {
     Mesh m = tetrahedron();
-    m.inside_vector = {1, 0.01, 0.02};
-    m.has_inside_vector = true;
+    m.inside_vector = Vector3{1, 0.01, 0.02};
     Csg diff;
     diff.kind = CsgKind::Difference;
     diff.children.push_back(object(Sphere{{0, 0, 0}, 0.5}));

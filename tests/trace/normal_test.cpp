@@ -45,7 +45,7 @@ constexpr double kTol = 1e-3;
 
 Normal with(PatternKind kind, double amount) {
     Normal n;
-    n.pattern.kind = kind;
+    n.pattern.edit().kind = kind;
     n.amount = amount;
     return n;
 }
@@ -60,7 +60,7 @@ TEST(NormalVsPovray, DedicatedNormals) {
 
 TEST(NormalVsPovray, ScaledBumps) {
     Normal n = with(PatternKind::Bumps, 0.5);
-    n.pattern.transform = Transform::scale({0.3, 0.6, 0.2});
+    n.pattern.edit().transform = Transform::scale({0.3, 0.6, 0.2});
     EXPECT_LE(max_normal_error("bumps 0.5 scale <0.3,0.6,0.2>", n), kTol);
 }
 
@@ -71,29 +71,29 @@ TEST(NormalVsPovray, PatternNormals) {
     a.accuracy = 0.05;
     EXPECT_LE(max_normal_error("agate 0.5 accuracy 0.05", a), kTol);
     Normal gr = with(PatternKind::Gradient, 0.5);
-    gr.pattern.vector = {1, 0, 0};
-    gr.pattern.wave = WaveType::Sine;
+    gr.pattern.edit().vector = {1, 0, 0};
+    gr.pattern.edit().wave = WaveType::Sine;
     EXPECT_LE(max_normal_error("gradient x 0.5 sine_wave", gr), kTol);
 }
 
 TEST(NormalVsPovray, QuiltedAndDiscreteNormals) {
     Normal q = with(PatternKind::Quilted, 0.7);
-    q.pattern.vector = {1, 1, 0};
-    q.pattern.transform = Transform::scale({0.6, 0.6, 0.6});
+    q.pattern.edit().vector = {1, 1, 0};
+    q.pattern.edit().transform = Transform::scale({0.6, 0.6, 0.6});
     EXPECT_LE(max_normal_error("quilted 0.7 scale 0.6", q), kTol);
-    q.pattern.vector = {0.2, 0.9, 0};
+    q.pattern.edit().vector = {0.2, 0.9, 0};
     EXPECT_LE(max_normal_error("quilted 0.7 control0 0.2 control1 0.9 scale 0.6", q),
               kTol);
     Normal c = with(PatternKind::Crackle, 0.5);
     EXPECT_LE(max_normal_error("crackle 0.5", c), kTol);
     Normal h = with(PatternKind::Hexagon, 0.5);
-    h.pattern.transform = Transform::scale({0.4, 0.4, 0.4});
+    h.pattern.edit().transform = Transform::scale({0.4, 0.4, 0.4});
     EXPECT_LE(max_normal_error("hexagon 0.5 scale 0.4", h), kTol);
 }
 
 TEST(NormalVsPovray, AverageNormals) {
     Normal avg;
-    avg.pattern.kind = PatternKind::Average;
+    avg.pattern.edit().kind = PatternKind::Average;
     avg.map_values = {1.0f, 2.0f};
     avg.list = {with(PatternKind::Bumps, 0.9), with(PatternKind::Granite, 0.4)};
     EXPECT_LE(
@@ -103,11 +103,11 @@ TEST(NormalVsPovray, AverageNormals) {
 
 TEST(NormalVsPovray, ScaledPatternNormalAndNormalMap) {
     Normal g = with(PatternKind::Granite, 0.4);
-    g.pattern.transform = Transform::scale({2, 2, 2});
+    g.pattern.edit().transform = Transform::scale({2, 2, 2});
     EXPECT_LE(max_normal_error("granite 0.4 scale 2", g), kTol);
     Normal m;
-    m.pattern.kind = PatternKind::Gradient;
-    m.pattern.vector = {1, 0, 0};
+    m.pattern.edit().kind = PatternKind::Gradient;
+    m.pattern.edit().vector = {1, 0, 0};
     m.map_values = {0.3f, 0.7f};
     m.list = {with(PatternKind::Bumps, 0.8), with(PatternKind::Wrinkles, 0.5)};
     EXPECT_LE(max_normal_error(

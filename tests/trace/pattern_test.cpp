@@ -19,7 +19,7 @@ ColourMap grey_map() { return {{0.0f, Colour{Rgb{0.0f}}}, {1.0f, Colour{Rgb{1.0f
 
 Pigment patterned(PatternKind kind) {
     Pigment p;
-    p.pattern.kind = kind;
+    p.pattern.edit().kind = kind;
     p.colour_map = grey_map();
     return p;
 }
@@ -65,7 +65,7 @@ const std::string kGrey = " colour_map { [0 rgb 0] [1 rgb 1] }";
 TEST(PatternVsPovray, BozoNoiseGenerators) {
     for (int gen : {1, 2, 3}) {
         Pigment p = patterned(PatternKind::Bozo);
-        p.pattern.noise_generator = gen;
+        p.pattern.edit().noise_generator = gen;
         std::string pov = "bozo" + kGrey + " noise_generator " + std::to_string(gen);
         double err = max_pigment_error(pov, p);
         RecordProperty("noise_generator_" + std::to_string(gen), std::to_string(err));
@@ -115,7 +115,7 @@ TEST(PatternVsPovray, SimplePatterns) {
 
 TEST(PatternVsPovray, GradientWithWaves) {
     Pigment p = patterned(PatternKind::Gradient);
-    p.pattern.vector = {1, 0, 1};
+    p.pattern.edit().vector = {1, 0, 1};
     EXPECT_LE(max_pigment_error("gradient <1,0,1>" + kGrey, p), kTol);
     struct Wave {
         const char* pov;
@@ -126,10 +126,10 @@ TEST(PatternVsPovray, GradientWithWaves) {
           Wave{"scallop_wave", WaveType::Scallop}, Wave{"cubic_wave", WaveType::Cubic},
           Wave{"poly_wave 2.5", WaveType::Poly}}) {
         Pigment q = p;
-        q.pattern.wave = w.wave;
-        q.pattern.wave_exponent = 2.5;
-        q.pattern.frequency = 1.7;
-        q.pattern.phase = 0.3;
+        q.pattern.edit().wave = w.wave;
+        q.pattern.edit().wave_exponent = 2.5;
+        q.pattern.edit().frequency = 1.7;
+        q.pattern.edit().phase = 0.3;
         std::string pov =
             "gradient <1,0,1>" + kGrey + " " + w.pov + " frequency 1.7 phase 0.3";
         EXPECT_LE(max_pigment_error(pov, q), kTol) << w.pov;
@@ -139,13 +139,13 @@ TEST(PatternVsPovray, GradientWithWaves) {
 TEST(PatternVsPovray, TurbulentPatterns) {
     // marble/wood/spiral default to triangle_wave in POV-Ray (the parser sets it).
     Pigment marble = patterned(PatternKind::Marble);
-    marble.pattern.wave = WaveType::Triangle;
-    marble.pattern.warps.push_back(classic_turb({0.8, 0.8, 0.8}));
+    marble.pattern.edit().wave = WaveType::Triangle;
+    marble.pattern.edit().warps.push_back(classic_turb({0.8, 0.8, 0.8}));
     EXPECT_LE(max_pigment_error("marble turbulence 0.8" + kGrey, marble), kTol);
 
     Pigment wood = patterned(PatternKind::Wood);
-    wood.pattern.wave = WaveType::Triangle;
-    wood.pattern.warps.push_back(classic_turb({0.3, 0.5, 0.2}, 3, 0.6, 2.5));
+    wood.pattern.edit().wave = WaveType::Triangle;
+    wood.pattern.edit().warps.push_back(classic_turb({0.3, 0.5, 0.2}, 3, 0.6, 2.5));
     EXPECT_LE(
         max_pigment_error(
             "wood turbulence <0.3,0.5,0.2> octaves 3 omega 0.6 lambda 2.5" + kGrey, wood),
@@ -153,35 +153,35 @@ TEST(PatternVsPovray, TurbulentPatterns) {
 
     Pigment agate = patterned(PatternKind::Agate);
     EXPECT_LE(max_pigment_error("agate" + kGrey, agate), kTol);
-    agate.pattern.scalar = 0.4;
+    agate.pattern.edit().scalar = 0.4;
     EXPECT_LE(max_pigment_error("agate agate_turb 0.4" + kGrey, agate), kTol);
 
     Pigment bozo = patterned(PatternKind::Bozo);
-    bozo.pattern.warps.push_back(classic_turb({0.5, 0.5, 0.5}));
+    bozo.pattern.edit().warps.push_back(classic_turb({0.5, 0.5, 0.5}));
     EXPECT_LE(max_pigment_error("bozo turbulence 0.5" + kGrey, bozo), kTol);
 
     Pigment spiral = patterned(PatternKind::Spiral1);
-    spiral.pattern.scalar = 3;
-    spiral.pattern.wave = WaveType::Triangle;
+    spiral.pattern.edit().scalar = 3;
+    spiral.pattern.edit().wave = WaveType::Triangle;
     EXPECT_LE(max_pigment_error("spiral1 3" + kGrey, spiral), kTol);
     Pigment spiral2 = spiral;
-    spiral2.pattern.kind = PatternKind::Spiral2;
+    spiral2.pattern.edit().kind = PatternKind::Spiral2;
     EXPECT_LE(max_pigment_error("spiral2 3" + kGrey, spiral2), kTol);
 }
 
 TEST(PatternVsPovray, MarbleIgnoresWarpTurbulenceButIsWarped) {
     Pigment m = patterned(PatternKind::Marble);
-    m.pattern.wave = WaveType::Triangle;
+    m.pattern.edit().wave = WaveType::Triangle;
     Warp w = classic_turb({0.7, 0.7, 0.7});
     w.classic = false;
-    m.pattern.warps.push_back(w);
+    m.pattern.edit().warps.push_back(w);
     EXPECT_LE(max_pigment_error("marble" + kGrey + " warp { turbulence 0.7 }", m), kTol);
     // Classic and warp turbulence together: the classic one is applied last.
     Pigment b = patterned(PatternKind::Bozo);
-    b.pattern.warps.push_back(classic_turb({0.3, 0.3, 0.3}));
+    b.pattern.edit().warps.push_back(classic_turb({0.3, 0.3, 0.3}));
     Warp extra = classic_turb({0.9, 0.1, 0.4});
     extra.classic = false;
-    b.pattern.warps.push_back(extra);
+    b.pattern.edit().warps.push_back(extra);
     EXPECT_LE(
         max_pigment_error(
             "bozo" + kGrey + " turbulence 0.3 warp { turbulence <0.9,0.1,0.4> }", b),
@@ -192,8 +192,8 @@ TEST(PatternVsPovray, WarpTurbulenceAndTransform) {
     Pigment p = patterned(PatternKind::Bozo);
     Warp w = classic_turb({0.6, 0.3, 0.9}, 4, 0.7, 1.9);
     w.classic = false;
-    p.pattern.warps.push_back(w);
-    p.pattern.transform =
+    p.pattern.edit().warps.push_back(w);
+    p.pattern.edit().transform =
         Transform::scale({0.5, 0.5, 0.5}).then(Transform::translate({1, 2, 3}));
     std::string pov = "bozo" + kGrey +
                       " warp { turbulence <0.6,0.3,0.9> octaves 4 omega 0.7 lambda 1.9 }"
@@ -205,7 +205,7 @@ TEST(PatternVsPovray, DiscretePatternsAndDefaultMaps) {
     test::TopView view;
     view.extent = 7.3;
     Pigment checker;
-    checker.pattern.kind = PatternKind::Checker;
+    checker.pattern.edit().kind = PatternKind::Checker;
     EXPECT_LE(max_pigment_error("checker", checker, view), kTol);  // default blue/green
     Pigment a, b;
     a.colour = Colour{Rgb{0.2f, 0.4f, 0.6f}};
@@ -215,12 +215,12 @@ TEST(PatternVsPovray, DiscretePatternsAndDefaultMaps) {
         max_pigment_error("checker rgb <0.2,0.4,0.6>, rgb <0.9,0.1,0.3>", checker, view),
         kTol);
     Pigment hex;
-    hex.pattern.kind = PatternKind::Hexagon;
+    hex.pattern.edit().kind = PatternKind::Hexagon;
     EXPECT_LE(max_pigment_error("hexagon", hex, view), kTol);
     Pigment brick;
-    brick.pattern.kind = PatternKind::Brick;
-    brick.pattern.vector2 = {1, 0.5, 0.7};
-    brick.pattern.scalar = 0.1;
+    brick.pattern.edit().kind = PatternKind::Brick;
+    brick.pattern.edit().vector2 = {1, 0.5, 0.7};
+    brick.pattern.edit().scalar = 0.1;
     test::TopView side = view;
     side.height = 0.3;
     EXPECT_LE(max_pigment_error("brick brick_size <1,0.5,0.7> mortar 0.1", brick, side),
@@ -228,9 +228,9 @@ TEST(PatternVsPovray, DiscretePatternsAndDefaultMaps) {
     for (PatternKind k : {PatternKind::Bozo, PatternKind::Marble, PatternKind::Agate,
                           PatternKind::Radial, PatternKind::Wood}) {
         Pigment d;
-        d.pattern.kind = k;
+        d.pattern.edit().kind = k;
         if (k == PatternKind::Marble || k == PatternKind::Wood)
-            d.pattern.wave = WaveType::Triangle;
+            d.pattern.edit().wave = WaveType::Triangle;
         const char* names[] = {"bozo", "marble", "agate", "radial", "wood"};
         int i = k == PatternKind::Bozo     ? 0
                 : k == PatternKind::Marble ? 1
@@ -243,11 +243,11 @@ TEST(PatternVsPovray, DiscretePatternsAndDefaultMaps) {
 
 TEST(PatternVsPovray, FrequencyPhaseOnWaveSources) {
     Pigment r = patterned(PatternKind::Ripples);
-    r.pattern.frequency = 2.3;
-    r.pattern.phase = 0.4;
+    r.pattern.edit().frequency = 2.3;
+    r.pattern.edit().phase = 0.4;
     EXPECT_LE(max_pigment_error("ripples" + kGrey + " frequency 2.3 phase 0.4", r), kTol);
     Pigment w = patterned(PatternKind::Waves);
-    w.pattern.frequency = 1.6;
+    w.pattern.edit().frequency = 1.6;
     PatternEnv env;
     env.number_of_waves = 5;
     EXPECT_LE(max_pigment_error("waves" + kGrey + " frequency 1.6", w, {},
@@ -257,22 +257,22 @@ TEST(PatternVsPovray, FrequencyPhaseOnWaveSources) {
 
 TEST(PatternVsPovray, OtherNoiseGenerators) {
     Pigment g = patterned(PatternKind::Granite);
-    g.pattern.noise_generator = 1;
+    g.pattern.edit().noise_generator = 1;
     EXPECT_LE(max_pigment_error("granite" + kGrey + " noise_generator 1", g), kTol);
     Pigment w = patterned(PatternKind::Wrinkles);
-    w.pattern.noise_generator = 3;
+    w.pattern.edit().noise_generator = 3;
     EXPECT_LE(max_pigment_error("wrinkles" + kGrey + " noise_generator 3", w), kTol);
     Pigment m = patterned(PatternKind::Marble);
-    m.pattern.wave = WaveType::Triangle;
-    m.pattern.warps.push_back(classic_turb({1.2, 1.2, 1.2}, 4));
+    m.pattern.edit().wave = WaveType::Triangle;
+    m.pattern.edit().warps.push_back(classic_turb({1.2, 1.2, 1.2}, 4));
     PatternEnv env;
     env.noise_generator = 3;
     EXPECT_LE(max_pigment_error("marble turbulence 1.2 octaves 4" + kGrey, m, {},
                                 "noise_generator 3", env),
               kTol);
     Pigment a = patterned(PatternKind::Agate);
-    a.pattern.noise_generator = 1;
-    a.pattern.warps.push_back(classic_turb({0.2, 0.2, 0.2}, 3, 0.7, 2.2));
+    a.pattern.edit().noise_generator = 1;
+    a.pattern.edit().warps.push_back(classic_turb({0.2, 0.2, 0.2}, 3, 0.7, 2.2));
     EXPECT_LE(max_pigment_error("agate turbulence 0.2 octaves 3 omega 0.7 lambda 2.2"
                                 " noise_generator 1" +
                                     kGrey,
@@ -287,7 +287,7 @@ TEST(PatternVsPovray, RepeatWarp) {
     w.repeat = {0.7, 0, 0};
     w.offset = {0.1, 0.3, 0.2};
     w.flip = {1, 0, 0};
-    p.pattern.warps.push_back(w);
+    p.pattern.edit().warps.push_back(w);
     EXPECT_LE(max_pigment_error("bozo" + kGrey +
                                     " warp { repeat x*0.7 offset <0.1,0.3,0.2> "
                                     "flip x }",
@@ -304,14 +304,14 @@ TEST(PatternVsPovray, CellsAndCrackle) {
     EXPECT_LE(max_pigment_error("crackle" + kGrey, patterned(PatternKind::Crackle), view),
               kTol);
     Pigment c = patterned(PatternKind::Crackle);
-    c.pattern.vector = {0.5, -0.3, 0.4};
-    c.pattern.scalar = 1.5;
-    c.pattern.vector2 = {0.2, 0, 0};
+    c.pattern.edit().vector = {0.5, -0.3, 0.4};
+    c.pattern.edit().scalar = 1.5;
+    c.pattern.edit().vector2 = {0.2, 0, 0};
     EXPECT_LE(max_pigment_error(
                   "crackle form <0.5,-0.3,0.4> metric 1.5 offset 0.2" + kGrey, c, view),
               kTol);
     Pigment solid = patterned(PatternKind::Crackle);
-    solid.pattern.vector2 = {0, 1, 0};
+    solid.pattern.edit().vector2 = {0, 1, 0};
     EXPECT_LE(max_pigment_error("crackle solid" + kGrey, solid, view), kTol);
 }
 
@@ -319,8 +319,8 @@ TEST(PatternVsPovray, BlackHoleAndMappingWarps) {
     test::TopView view;
     view.extent = 5;
     Pigment base = patterned(PatternKind::Gradient);
-    base.pattern.vector = {1, 0, 0.3};
-    base.pattern.frequency = 3;
+    base.pattern.edit().vector = {1, 0, 0.3};
+    base.pattern.edit().frequency = 3;
     Pigment bh = base;
     Warp w;
     w.kind = Warp::Kind::BlackHole;
@@ -328,7 +328,7 @@ TEST(PatternVsPovray, BlackHoleAndMappingWarps) {
     w.radius = 1.7;
     w.strength = 1.3;
     w.falloff = 1.5;
-    bh.pattern.warps.push_back(w);
+    bh.pattern.edit().warps.push_back(w);
     const std::string g = "gradient <1,0,0.3>" + kGrey + " frequency 3";
     EXPECT_LE(
         max_pigment_error(g + " warp { black_hole <0.4,0.37,-0.2>, 1.7 strength 1.3 "
@@ -340,7 +340,7 @@ TEST(PatternVsPovray, BlackHoleAndMappingWarps) {
     w.repeat = {1.5, 0, 1.5};
     w.turbulence = {0.3, 0, 0.3};
     w.radius = 0.6;
-    rep.pattern.warps.push_back(w);
+    rep.pattern.edit().warps.push_back(w);
     EXPECT_LE(
         max_pigment_error(g + " warp { black_hole <0.4,0.37,-0.2>, 0.6 strength 1.3 "
                               "falloff 1.5 inverse repeat <1.5,0,1.5> "
@@ -367,7 +367,7 @@ TEST(PatternVsPovray, BlackHoleAndMappingWarps) {
                                                         : 0.7;
         mw.major_radius = 1.2;
         mw.plane_offset = 0.3;
-        q.pattern.warps.push_back(mw);
+        q.pattern.edit().warps.push_back(mw);
         EXPECT_LE(max_pigment_error(g + " warp { " + m.pov + " }", q, view), kTol)
             << m.pov;
     }
@@ -378,20 +378,21 @@ TEST(PatternVsPovray, MandelAndQuilted) {
     view.extent = 3;
     view.centre = {-0.5, 0, 0};
     Pigment m = patterned(PatternKind::Mandel);
-    m.pattern.scalar = 25;
-    m.pattern.transform = Transform::rotate({90, 0, 0});  // mandel lives in the x-y plane
+    m.pattern.edit().scalar = 25;
+    m.pattern.edit().transform =
+        Transform::rotate({90, 0, 0});  // mandel lives in the x-y plane
     EXPECT_LE(max_pigment_error("mandel 25" + kGrey + " rotate x*90", m, view), kTol);
     Pigment q = patterned(PatternKind::Quilted);
-    q.pattern.vector = {1, 1, 0};
+    q.pattern.edit().vector = {1, 1, 0};
     EXPECT_LE(max_pigment_error("quilted" + kGrey, q, view), kTol);
-    q.pattern.vector = {0.3, 0.8, 0};
+    q.pattern.edit().vector = {0.3, 0.8, 0};
     EXPECT_LE(max_pigment_error("quilted control0 0.3 control1 0.8" + kGrey, q, view),
               kTol);
 }
 
 TEST(PatternVsPovray, ColourMapBlendPoints) {
     Pigment p;
-    p.pattern.kind = PatternKind::Granite;
+    p.pattern.edit().kind = PatternKind::Granite;
     p.colour_map = {{0.1f, Colour{Rgb{1, 0, 0}}},
                     {0.4f, Colour{Rgb{0, 1, 0}}},
                     {0.4f, Colour{Rgb{0, 0, 1}}},
@@ -405,10 +406,10 @@ TEST(PatternVsPovray, ColourMapBlendPoints) {
 TEST(PatternVsPovray, AveragePigments) {
     Pigment a = patterned(PatternKind::Bozo);
     Pigment b;
-    b.pattern.kind = PatternKind::Checker;
+    b.pattern.edit().kind = PatternKind::Checker;
     Pigment avg;
-    avg.pattern.kind = PatternKind::Average;
-    avg.pattern.transform = Transform::scale({0.7, 0.7, 0.7});
+    avg.pattern.edit().kind = PatternKind::Average;
+    avg.pattern.edit().transform = Transform::scale({0.7, 0.7, 0.7});
     avg.map_values = {1.0f, 3.0f};
     avg.list = {a, b};
     EXPECT_LE(max_pigment_error("average pigment_map { [1 bozo" + kGrey +
@@ -455,12 +456,12 @@ TEST(PatternMaps, PickEntriesOfCheckerTextures) {
 
 TEST(PatternVsPovray, PigmentMap) {
     Pigment inner1 = patterned(PatternKind::Bozo);
-    inner1.pattern.transform = Transform::scale({0.3, 0.3, 0.3});
+    inner1.pattern.edit().transform = Transform::scale({0.3, 0.3, 0.3});
     Pigment inner2;
-    inner2.pattern.kind = PatternKind::Checker;
+    inner2.pattern.edit().kind = PatternKind::Checker;
     Pigment p;
-    p.pattern.kind = PatternKind::Gradient;
-    p.pattern.vector = {1, 0, 0};
+    p.pattern.edit().kind = PatternKind::Gradient;
+    p.pattern.edit().vector = {1, 0, 0};
     p.map_values = {0.2f, 0.8f};
     p.list = {inner1, inner2};
     std::string pov =
@@ -469,9 +470,9 @@ TEST(PatternVsPovray, PigmentMap) {
     // Nested pigments are evaluated in the outer pattern's space (POV-Ray passes them the
     // warped point), so an outer transform reaches them without being copied into them.
     Pigment outer = p;
-    outer.pattern.transform =
+    outer.pattern.edit().transform =
         Transform::scale({2, 2, 2}).then(Transform::rotate({0, 30, 0}));
-    outer.pattern.warps.push_back(classic_turb({0.2, 0.2, 0.2}));
+    outer.pattern.edit().warps.push_back(classic_turb({0.2, 0.2, 0.2}));
     std::string pov2 = "gradient x pigment_map { [0.2 bozo" + kGrey +
                        " scale 0.3] [0.8 checker] } turbulence 0.2 scale 2 rotate y*30";
     EXPECT_LE(max_pigment_error(pov2, outer), kTol);

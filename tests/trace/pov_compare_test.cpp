@@ -259,10 +259,11 @@ TEST(PovCompare, ShapesAndCsg) {
         {tex({0.4f, 0.9f, 0.9f})}));
     Finish shiny;
     shiny.phong = 0.8f;
-    s.objects.push_back(
-        object(SmoothTriangle{{{2.0, 1.0, -0.5}, {3.0, 1.2, 0.0}, {2.4, 2.0, 0.2}},
-                              {{-0.5, 0.2, -1}, {0.6, 0.1, -1}, {0, 0.8, -1}}},
-               {}, {tex({0.9f, 0.9f, 0.9f}, shiny)}));
+    s.objects.push_back(object(
+        SmoothTriangle{
+            {{2.0, 1.0, -0.5}, {3.0, 1.2, 0.0}, {2.4, 2.0, 0.2}},
+            std::array<Vector3, 3>{{{-0.5, 0.2, -1}, {0.6, 0.1, -1}, {0, 0.8, -1}}}},
+        {}, {tex({0.9f, 0.9f, 0.9f}, shiny)}));
     Object diff;
     Csg d;
     d.kind = CsgKind::Difference;

@@ -36,10 +36,10 @@ TEST(Shading, SphereLitHeadOnByHand) {
     // = 1.
     Scene s;
     Texture t = solid({0.8f, 0.6f, 0.4f});
-    t.finish.ambient = Rgb(0.1f);
-    t.finish.diffuse = 0.6f;
-    t.finish.phong = 0.5f;
-    t.finish.specular = 0.3f;
+    t.finish.edit().ambient = Rgb(0.1f);
+    t.finish.edit().diffuse = 0.6f;
+    t.finish.edit().phong = 0.5f;
+    t.finish.edit().specular = 0.3f;
     s.objects.push_back(object(Sphere{{0, 0, 5}, 1}, {}, {t}));
     Light l = point_light({0, 0, 0}, Rgb(0.5f));
     l.fade_distance = 2;  // 2 / (1 + (4/2)^2) = 0.4 at the hit 4 units away
@@ -67,9 +67,9 @@ TEST(Shading, BrillianceAndObliqueDiffuse) {
     // Light at 60 degrees from the normal: diffuse = cos^brilliance * diffuse.
     Scene s;
     Texture t = solid({1, 1, 1});
-    t.finish.ambient = Rgb(0.0f);
-    t.finish.diffuse = 1;
-    t.finish.brilliance = 3;
+    t.finish.edit().ambient = Rgb(0.0f);
+    t.finish.edit().diffuse = 1;
+    t.finish.edit().brilliance = 3;
     s.objects.push_back(object(Plane{{0, 0, -1}, -5}, {}, {t}));
     // Plane z = 5 facing the camera; light far along (sin60, 0, -cos60) from the hit.
     Real d = 1000;
@@ -83,9 +83,9 @@ TEST(Shading, ReflectionAndMaxTraceLevel) {
     Scene s;
     s.background = Colour(Rgb(0.2f, 0.4f, 0.6f));
     Texture mirror = solid({0, 0, 0});
-    mirror.finish.ambient = Rgb(0.0f);
-    mirror.finish.diffuse = 0;
-    mirror.finish.reflection_min = mirror.finish.reflection_max = Rgb(0.5f);
+    mirror.finish.edit().ambient = Rgb(0.0f);
+    mirror.finish.edit().diffuse = 0;
+    mirror.finish.edit().reflection_min = mirror.finish.edit().reflection_max = Rgb(0.5f);
     s.objects.push_back(object(Plane{{0, 0, -1}, -5}, {}, {mirror}));
     expect_rgb(centre_pixel(s), Rgb(0.1f, 0.2f, 0.3f));
     // Level 1 only: the reflected ray is refused and contributes black.
@@ -104,7 +104,7 @@ TEST(Shading, PassThroughTransparencyUsesNoTraceLevel) {
     s.background = Colour(Rgb(1.0f));
     s.settings.max_trace_level = 1;
     Texture t = solid({1.0f, 0.5f, 0.0f}, 1.0f, 0.0f);
-    t.finish.ambient = Rgb(1.0f);
+    t.finish.edit().ambient = Rgb(1.0f);
     s.objects.push_back(object(Sphere{{0, 0, 5}, 1}, {}, {t}));
     expect_rgb(centre_pixel(s), Rgb(1.0f, 0.25f, 0.0f));
     // With an IOR change the refracted ray needs a level: black at level 1.
@@ -118,8 +118,8 @@ TEST(Shading, OpaqueBlockerAndFilteredShadow) {
     // Plane lit through a filtering pane: light * rgb * filter; an opaque pane: black.
     Scene s;
     Texture floor = solid({1, 1, 1});
-    floor.finish.ambient = Rgb(0.0f);
-    floor.finish.diffuse = 1;
+    floor.finish.edit().ambient = Rgb(0.0f);
+    floor.finish.edit().diffuse = 1;
     s.objects.push_back(object(Plane{{0, 0, -1}, -5}, {}, {floor}));
     Texture pane = solid({0.5f, 1.0f, 0.25f}, 0.8f, 0.1f);
     s.objects.push_back(object(Box{{-10, -10, 2}, {10, 10, 2.5}}, {}, {pane}));
@@ -137,8 +137,8 @@ TEST(Shading, OpaqueBlockerAndFilteredShadow) {
 TEST(Shading, LooksLikeObjectCastsNoShadow) {
     Scene s;
     Texture wall = solid({1, 1, 1});
-    wall.finish.ambient = Rgb(0.0f);
-    wall.finish.diffuse = 1;
+    wall.finish.edit().ambient = Rgb(0.0f);
+    wall.finish.edit().diffuse = 1;
     s.objects.push_back(object(Plane{{0, 0, -1}, -5}, {}, {wall}));
     Light l = point_light({0, 3, 2});
     l.looks_like.push_back(object(Sphere{{0, 3, 2}, 0.2}, {}, {solid({1, 1, 0})}));
@@ -152,13 +152,13 @@ Scene busy_scene() {
     s.background = Colour(Rgb(0.3f, 0.5f, 0.7f));
     s.camera.location = {0, 1, -6};
     Texture floor = solid({0.7f, 0.6f, 0.5f});
-    floor.finish.reflection_min = Rgb(0.1f);
-    floor.finish.reflection_max = Rgb(0.5f);
-    floor.finish.reflection_falloff = 2;
+    floor.finish.edit().reflection_min = Rgb(0.1f);
+    floor.finish.edit().reflection_max = Rgb(0.5f);
+    floor.finish.edit().reflection_falloff = 2;
     s.objects.push_back(object(Plane{{0, 1, 0}, -1}, {}, {floor}));
     Texture glass = solid({0.9f, 1.0f, 0.9f}, 0.9f, 0.0f);
-    glass.finish.phong = 0.9f;
-    glass.finish.reflection_min = glass.finish.reflection_max = Rgb(0.2f);
+    glass.finish.edit().phong = 0.9f;
+    glass.finish.edit().reflection_min = glass.finish.edit().reflection_max = Rgb(0.2f);
     Object g = object(Sphere{{-1, 0, 0}, 1}, {}, {glass});
     Interior in;
     in.ior = 1.5f;
@@ -167,9 +167,9 @@ Scene busy_scene() {
     g.interior = in;
     s.objects.push_back(g);
     Texture chrome = solid({0.8f, 0.8f, 0.9f});
-    chrome.finish.reflection_min = chrome.finish.reflection_max = Rgb(0.7f);
-    chrome.finish.reflection_exponent = 0.6f;
-    chrome.finish.specular = 0.5f;
+    chrome.finish.edit().reflection_min = chrome.finish.edit().reflection_max = Rgb(0.7f);
+    chrome.finish.edit().reflection_exponent = 0.6f;
+    chrome.finish.edit().specular = 0.5f;
     s.objects.push_back(object(Sphere{{1.2, 0, 0.5}, 1}, {}, {chrome}));
     s.lights.push_back(point_light({-4, 6, -5}));
     s.lights.push_back(point_light({4, 3, -3}, Rgb(0.4f)));
