@@ -140,13 +140,21 @@ struct ColourMapEntry {
 };
 using ColourMap = std::vector<ColourMapEntry>;
 
-struct Pigment {
-    HeapValue<PatternSpec> pattern;  // solid pigments never write it
-    Colour colour;         // Solid pigments; also the colour a scene gets by default
-    ColourMap colour_map;  // pattern pigments
+struct Pigment;
+// What a patterned pigment maps its pattern's values to; solid pigments leave it unset.
+struct PigmentMaps {
+    ColourMap colour_map;
     std::vector<float> map_values;  // pigment_map values, parallel to `list`
     std::vector<Pigment> list;  // checker/hexagon/brick entries, or pigment_map entries
     std::optional<Colour> quick_colour;
+};
+
+// A solid pigment is its colour and two unset pointers (40 bytes): scenes of many
+// solid-coloured objects page in little more than the colours.
+struct Pigment {
+    HeapValue<PatternSpec> pattern;  // solid pigments never write it
+    Colour colour;  // Solid pigments; also the colour a scene gets by default
+    HeapValue<PigmentMaps> maps;
 };
 
 // slope_map entry: at pattern value `value`, the surface height and its slope.
@@ -180,15 +188,24 @@ struct Finish {
     bool operator==(const Finish&) const = default;
 };
 
+struct Texture;
+// The entries a patterned texture selects among (texture_map, material_map, checker of
+// textures); each entry may itself be layered.
+struct TextureMap {
+    std::vector<float> values;  // map values, parallel to `entries` (empty: by index)
+    std::vector<std::vector<Texture>> entries;
+};
+
+// A texture with a solid pigment and no normal or map is 80 bytes: its colour and four
+// pointers, three of them unset.
 struct Texture {
     Pigment pigment;
     HeapOptional<Normal> normal;
     SharedValue<Finish> finish;  // objects with equal finishes share one
-    // Patterned texture (texture_map, material_map, checker of textures): when `map` is
-    // non-empty the fields above are unused and the pattern selects among `map` entries.
+    // Patterned texture: when `map` has entries the fields above are unused and the
+    // pattern selects among them.
     HeapOptional<PatternSpec> map_pattern;
-    std::vector<float> map_values;
-    std::vector<std::vector<Texture>> map;  // each entry may itself be layered
+    HeapValue<TextureMap> map;
 };
 using LayeredTexture = std::vector<Texture>;  // layers, bottom first
 
@@ -277,14 +294,15 @@ struct Object {
     CompactTransform transform;  // object space -> world
     // Empty means "no texture given": the renderer uses the default texture.
     LayeredTexture texture;
-    LayeredTexture interior_texture;
+    // Rarely given, so on the heap (8 bytes each while unset; see HeapValue).
+    HeapValue<LayeredTexture> interior_texture;
     HeapOptional<Interior> interior;
     bool inverse = false;
     bool hollow = false;
     bool no_shadow = false, no_image = false, no_reflection = false;
     bool double_illuminate = false;
-    std::vector<Object> clipped_by;
-    std::vector<Object> bounded_by;
+    HeapValue<std::vector<Object>> clipped_by;
+    HeapValue<std::vector<Object>> bounded_by;
     SourceLoc loc;
 };
 

@@ -102,8 +102,10 @@ constexpr size_t kBoxBytes = sizeof(trace::PreparedScene) + 256;
 
 // Measured: workers reach 1.03-1.06x their estimate after parsing and building their
 // boxes (allocator rounding, the parse's own lists) and up to 1.01x at the end of the
-// trace; estimates of worker memory get 15 % on top.
-size_t with_margin(size_t bytes) { return bytes * 115 / 100; }
+// trace. Since the scene model shrank (Object 200 B, Texture 80 B), what the estimate
+// leaves out weighs more: 42,000 spheres over 4 workers peaked at up to 1.25x. Estimates
+// of worker memory get 30 % on top.
+size_t with_margin(size_t bytes) { return bytes * 130 / 100; }
 
 struct ObjectSizes {
     std::vector<Bounds3> bounds;

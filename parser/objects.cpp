@@ -42,7 +42,9 @@ void transform_textures(LayeredTexture& layers, const Transform& t) {
         if (tex.map_pattern) transform_pattern(*tex.map_pattern, t);
         // Texture map entries are whole textures evaluated at the world point: they move
         // too.
-        for (auto& entry : tex.map) transform_textures(entry, t);
+        if (tex.map.allocated()) {
+            for (auto& entry : tex.map.edit().entries) transform_textures(entry, t);
+        }
     }
 }
 
@@ -59,13 +61,18 @@ void Interpreter::transform_light(Light& l, const Transform& t) {
 void Interpreter::apply_transform(Object& obj, const Transform& t) {
     obj.transform = obj.transform.then(t);
     transform_textures(obj.texture, t);
-    transform_textures(obj.interior_texture, t);
+    if (obj.interior_texture.allocated())
+        transform_textures(obj.interior_texture.edit(), t);
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
         for (Object& child : csg->children) apply_transform(child, t);
         for (Light& l : csg->lights) transform_light(l, t);
     }
-    for (Object& o : obj.clipped_by) apply_transform(o, t);
-    for (Object& o : obj.bounded_by) apply_transform(o, t);
+    if (obj.clipped_by.allocated()) {
+        for (Object& o : obj.clipped_by.edit()) apply_transform(o, t);
+    }
+    if (obj.bounded_by.allocated()) {
+        for (Object& o : obj.bounded_by.edit()) apply_transform(o, t);
+    }
 }
 
 bool Interpreter::try_transform(const Token& t, Transform& out) {
@@ -208,7 +215,8 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (auto c = std::get_if<Cone>(&obj.shape)) c->open = true;
     } else if (w == "clipped_by" || w == "bounded_by") {
         expect_punct('{', "after ", w);
-        std::vector<Object>& list = w == "clipped_by" ? obj.clipped_by : obj.bounded_by;
+        std::vector<Object>& list =
+            w == "clipped_by" ? obj.clipped_by.edit() : obj.bounded_by.edit();
         for (;;) {
             Token o = next();
             if (is_punct(o, '}')) break;

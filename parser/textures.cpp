@@ -410,7 +410,7 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                     const Token& n = peek();
                     if (is_word(n, "pigment")) {
                         next();
-                        p.list.push_back(parse_pigment_block());
+                        p.maps.edit().list.push_back(parse_pigment_block());
                     } else if (is_punct(n, '}') ||
                                (n.kind == TokenKind::Word && !lookup(n) &&
                                 !is_word(n, "color") && !is_word(n, "colour") &&
@@ -420,7 +420,7 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                     } else {
                         Pigment sub;
                         sub.colour = parse_colour_value();
-                        p.list.push_back(sub);
+                        p.maps.edit().list.push_back(sub);
                     }
                 }
             }
@@ -437,7 +437,7 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                 p.pattern.edit().kind = PatternKind::Solid;
             p.colour = parse_colour_value();
         } else if (w == "color_map" || w == "colour_map") {
-            p.colour_map = parse_colour_map_block();
+            p.maps.edit().colour_map = parse_colour_map_block();
         } else if (w == "pigment_map") {
             expect_punct('{', "after 'pigment_map'");
             for (;;) {
@@ -453,11 +453,11 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                 } else {
                     parse_pigment_body(sub, ']');
                 }
-                p.map_values.push_back(v);
-                p.list.push_back(std::move(sub));
+                p.maps.edit().map_values.push_back(v);
+                p.maps.edit().list.push_back(std::move(sub));
             }
         } else if (w == "quick_color" || w == "quick_colour") {
-            p.quick_colour = parse_colour_value();
+            p.maps.edit().quick_colour = parse_colour_value();
         } else if (t.kind == TokenKind::Word && lookup(t) &&
                    std::holds_alternative<Numeric>(*lookup(t))) {
             // A colour identifier alone: pigment { Red }
@@ -756,8 +756,8 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
         } else if (w == "texture_map") {
             if (!top.map_pattern) expected("a pattern before texture_map", t);
             expect_punct('{', "after 'texture_map'");
-            top.map.clear();
-            top.map_values.clear();
+            top.map.edit().entries.clear();
+            top.map.edit().values.clear();
             for (;;) {
                 Token e = next();
                 if (is_punct(e, '}')) break;
@@ -772,8 +772,8 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
                 } else {
                     parse_texture_body(entry, ']');
                 }
-                top.map_values.push_back(value);
-                top.map.push_back(std::move(entry));
+                top.map.edit().values.push_back(value);
+                top.map.edit().entries.push_back(std::move(entry));
             }
         } else if (w == "material_map" || w == "tiles" || w == "uv_mapping" ||
                    w == "image_pattern") {
@@ -792,8 +792,8 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
                     for (int i = 0; i < count; ++i) {
                         if (i) accept_punct(',');
                         if (!accept_word("texture")) break;
-                        top.map.push_back(parse_texture_block());
-                        top.map_values.push_back(float(i));
+                        top.map.edit().entries.push_back(parse_texture_block());
+                        top.map.edit().values.push_back(float(i));
                     }
                 }
                 continue;

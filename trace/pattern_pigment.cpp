@@ -91,10 +91,10 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
         // Weighted mean of the pigment_map entries, weights being the entry values.
         Colour sum{Rgb{0.0f}};
         float total = 0;
-        size_t n = std::min(pigment.map_values.size(), pigment.list.size());
+        size_t n = std::min(pigment.maps->map_values.size(), pigment.maps->list.size());
         for (size_t i = 0; i < n; ++i) {
-            float w = pigment.map_values[i];
-            Colour c = evaluate_pigment(pigment.list[i], p, env);
+            float w = pigment.maps->map_values[i];
+            Colour c = evaluate_pigment(pigment.maps->list[i], p, env);
             sum = sum + c * w;
             total += w;
         }
@@ -103,11 +103,11 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
     Real value = detail::value_at(spec, p, env);
 
     // checker/hexagon/brick with their own entries: the value is the entry index.
-    if (detail::is_discrete(spec.kind) && pigment.map_values.empty() &&
-        pigment.colour_map.empty()) {
+    if (detail::is_discrete(spec.kind) && pigment.maps->map_values.empty() &&
+        pigment.maps->colour_map.empty()) {
         int index = std::clamp(int(value), 0, 2);
-        if (index < int(pigment.list.size())) {
-            return evaluate_pigment(pigment.list[size_t(index)], p, env);
+        if (index < int(pigment.maps->list.size())) {
+            return evaluate_pigment(pigment.maps->list[size_t(index)], p, env);
         }
         const DefaultMap& d = default_map(spec.kind);
         return Colour{d.colours[size_t(std::min(index, d.count - 1))]};
@@ -115,17 +115,17 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
 
     // pigment_map: blend the two neighbouring pigments, each evaluated at this pattern's
     // warped point (POV-Ray nests pattern spaces this way).
-    if (!pigment.map_values.empty() && !pigment.list.empty()) {
-        int n = int(std::min(pigment.map_values.size(), pigment.list.size()));
-        MapLookup m = search_map(pigment.map_values.data(), n, value);
-        Colour cur = evaluate_pigment(pigment.list[size_t(m.cur)], p, env);
+    if (!pigment.maps->map_values.empty() && !pigment.maps->list.empty()) {
+        int n = int(std::min(pigment.maps->map_values.size(), pigment.maps->list.size()));
+        MapLookup m = search_map(pigment.maps->map_values.data(), n, value);
+        Colour cur = evaluate_pigment(pigment.maps->list[size_t(m.cur)], p, env);
         if (m.prev == m.cur) return cur;
-        Colour prev = evaluate_pigment(pigment.list[size_t(m.prev)], p, env);
+        Colour prev = evaluate_pigment(pigment.maps->list[size_t(m.prev)], p, env);
         return blend(prev, cur, m.fraction);
     }
 
-    if (!pigment.colour_map.empty()) {
-        const ColourMap& map = pigment.colour_map;
+    if (!pigment.maps->colour_map.empty()) {
+        const ColourMap& map = pigment.maps->colour_map;
         int n = int(map.size());
         // Search over the entry values (kept small; maps have a handful of entries).
         float values[256];

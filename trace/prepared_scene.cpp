@@ -36,10 +36,10 @@ bool pigment_opaque(const Pigment& p) {
     if (p.colour.filter != 0 || p.colour.transmit != 0) {
         if (p.pattern->kind == PatternKind::Solid) return false;
     }
-    for (const auto& e : p.colour_map) {
+    for (const auto& e : p.maps->colour_map) {
         if (e.colour.filter != 0 || e.colour.transmit != 0) return false;
     }
-    for (const auto& sub : p.list) {
+    for (const auto& sub : p.maps->list) {
         if (!pigment_opaque(sub)) return false;
     }
     return true;
@@ -48,7 +48,7 @@ bool pigment_opaque(const Pigment& p) {
 bool texture_opaque(const LayeredTexture& layers) {
     for (const Texture& t : layers) {
         if (!pigment_opaque(t.pigment)) return false;
-        for (const auto& e : t.map) {
+        for (const auto& e : t.map->entries) {
             if (!texture_opaque(e)) return false;
         }
     }
@@ -126,7 +126,7 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
 }
 
 bool inside_clips(const Object& o, const Point3& p) {
-    for (const Object& c : o.clipped_by) {
+    for (const Object& c : *o.clipped_by) {
         if (!inside_object(c, p)) return false;
     }
     return true;
@@ -191,7 +191,7 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
     } else {
         leaf_crossings(o, ray, out);
     }
-    if (!o.clipped_by.empty()) {
+    if (!o.clipped_by->empty()) {
         size_t w = start;
         for (size_t k = start; k < out.size(); ++k) {
             if (inside_clips(o, ray.at(out[k].t))) out[w++] = out[k];
@@ -260,7 +260,7 @@ Bounds3 object_bounds(const Object& o) {
     if (infinite || o.inverse) return Bounds3::everything();
     if (std::holds_alternative<Csg>(o.shape)) return local;
     Bounds3 world = o.transform.bounds(local);
-    for (const Object& c : o.clipped_by) {
+    for (const Object& c : *o.clipped_by) {
         Bounds3 cb = object_bounds(c);
         if (!cb.infinite()) world = intersection(world, cb);
     }
@@ -351,7 +351,7 @@ bool inside_object(const Object& o, const Point3& p) {
             },
             o.shape);
     }
-    if (in && !o.clipped_by.empty()) in = inside_clips(o, p);
+    if (in && !o.clipped_by->empty()) in = inside_clips(o, p);
     return in != o.inverse;
 }
 
@@ -515,7 +515,8 @@ uint32_t PreparedScene::add_material(const Object& o) {
 bool texture_is_plain(const LayeredTexture& layers) {
     if (layers.size() != 1) return false;
     const Texture& t = layers.front();
-    return pigment_is_solid(t.pigment) && !t.normal && !t.map_pattern && t.map.empty();
+    return pigment_is_solid(t.pigment) && !t.normal && !t.map_pattern &&
+           t.map->entries.empty();
 }
 
 const Material* PreparedScene::material_for(const Object* leaf) const {
@@ -527,7 +528,7 @@ const Material* PreparedScene::material_for(const Object* leaf) const {
 
 void PreparedScene::add_object(const Object& o, const Material*) {
     const Csg* csg = std::get_if<Csg>(&o.shape);
-    if (csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by.empty()) {
+    if (csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty()) {
         // A plain union is its children: each goes into the octree on its own.
         for (const Object& c : csg->children) add_object(c, nullptr);
         return;
@@ -540,7 +541,7 @@ void PreparedScene::add_object(const Object& o, const Material*) {
     };
     Real scale = 1;
     if (auto s = std::get_if<Sphere>(&o.shape);
-        s && !o.inverse && o.clipped_by.empty() && similarity(o.transform, scale)) {
+        s && !o.inverse && o.clipped_by->empty() && similarity(o.transform, scale)) {
         Point3 c = o.transform.point(s->centre);
         Real r = s->radius * scale;
         uint32_t index = uint32_t(spheres_.size());
@@ -549,7 +550,7 @@ void PreparedScene::add_object(const Object& o, const Material*) {
         return;
     }
     if (auto pl = std::get_if<Plane>(&o.shape);
-        pl && !o.inverse && o.clipped_by.empty() && similarity(o.transform, scale)) {
+        pl && !o.inverse && o.clipped_by->empty() && similarity(o.transform, scale)) {
         // Ground planes are tested by every ray: keep them out of the general object
         // path.
         Vector3 n = normalize(o.transform.normal(pl->normal));
@@ -560,7 +561,7 @@ void PreparedScene::add_object(const Object& o, const Material*) {
              Bounds3::everything());
         return;
     }
-    if (auto m = std::get_if<Mesh>(&o.shape); m && !o.inverse && o.clipped_by.empty()) {
+    if (auto m = std::get_if<Mesh>(&o.shape); m && !o.inverse && o.clipped_by->empty()) {
         uint32_t base = add_material(o);
         std::vector<uint32_t> face_materials;
         for (const LayeredTexture& t : m->textures) {

@@ -30,7 +30,8 @@ struct Material {
 
 // A single colour everywhere: no pattern, list or colour map.
 inline bool pigment_is_solid(const Pigment& p) {
-    return p.pattern->kind == PatternKind::Solid && p.list.empty() && p.colour_map.empty();
+    return p.pattern->kind == PatternKind::Solid && p.maps->list.empty() &&
+           p.maps->colour_map.empty();
 }
 // Whether a texture is `plain` in the sense of Material::plain.
 bool texture_is_plain(const LayeredTexture& layers);

@@ -14,14 +14,14 @@ template <typename Fn>
 void for_each_texture(const LayeredTexture& layers, Fn&& fn) {
     fn(layers);
     for (const Texture& t : layers) {
-        for (const auto& m : t.map) for_each_texture(m, fn);
+        for (const auto& m : t.map->entries) for_each_texture(m, fn);
     }
 }
 
 template <typename Fn>
 void for_each_object_texture(const Object& o, Fn&& fn) {
     for_each_texture(o.texture, fn);
-    for_each_texture(o.interior_texture, fn);
+    for_each_texture(*o.interior_texture, fn);
     if (auto c = std::get_if<Csg>(&o.shape)) {
         for (const Object& ch : c->children) for_each_object_texture(ch, fn);
     }
@@ -41,7 +41,7 @@ void for_each_scene_texture(const Scene& scene, Fn&& fn) {
 // Primitives as PreparedScene makes them: plain unions are opened, meshes give triangles.
 void count_primitives(const Object& o, size_t& finite, size_t& infinite) {
     auto c = std::get_if<Csg>(&o.shape);
-    if (c && c->kind == CsgKind::Union && !o.inverse && o.clipped_by.empty()) {
+    if (c && c->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty()) {
         for (const Object& ch : c->children) count_primitives(ch, finite, infinite);
         return;
     }
@@ -66,7 +66,7 @@ bool any_refracting(const Object& o, bool transparent_above) {
 // A convex (or flat) surface cannot stand between one of its own lit points and a point
 // light: the segment toward the light leaves it at once. Affine transforms keep this.
 bool convex_surface(const Object& o) {
-    if (o.inverse || !o.clipped_by.empty() || o.double_illuminate) return false;
+    if (o.inverse || !o.clipped_by->empty() || o.double_illuminate) return false;
     return std::visit(
         [](const auto& s) {
             using S = std::decay_t<decltype(s)>;
@@ -106,7 +106,7 @@ size_t estimate_prepared_bytes(const Object& o) {
     constexpr size_t kPerPrimitive = 1 + 4 + 4 + sizeof(Bounds3) + 4 + 14;
     constexpr size_t kMaterial = sizeof(Material) + 16;
     auto c = std::get_if<Csg>(&o.shape);
-    if (c && c->kind == CsgKind::Union && !o.inverse && o.clipped_by.empty()) {
+    if (c && c->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty()) {
         size_t n = 0;
         for (const Object& ch : c->children) n += estimate_prepared_bytes(ch);
         return n;
@@ -152,10 +152,11 @@ size_t model_bytes(const Normal& n) {
 }
 size_t model_bytes(const Pigment& p) {
     size_t b = model_bytes(p.pattern) +
-               heap_bytes(p.colour_map.size() * sizeof(ColourMapEntry)) +
-               heap_bytes(p.map_values.size() * sizeof(float)) +
-               heap_bytes(p.list.size() * sizeof(Pigment));
-    for (const Pigment& e : p.list) b += model_bytes(e);
+               (p.maps.allocated() ? heap_bytes(sizeof(PigmentMaps)) : 0) +
+               heap_bytes(p.maps->colour_map.size() * sizeof(ColourMapEntry)) +
+               heap_bytes(p.maps->map_values.size() * sizeof(float)) +
+               heap_bytes(p.maps->list.size() * sizeof(Pigment));
+    for (const Pigment& e : p.maps->list) b += model_bytes(e);
     return b;
 }
 size_t model_bytes(const LayeredTexture& layers) {
@@ -167,9 +168,10 @@ size_t model_bytes(const LayeredTexture& layers) {
         if (t.finish.holders() > 0)
             b += heap_bytes(sizeof(Finish)) / size_t(t.finish.holders());
         if (t.map_pattern) b += heap_bytes(sizeof(PatternSpec));
-        b += heap_bytes(t.map_values.size() * sizeof(float)) +
-             heap_bytes(t.map.size() * sizeof(LayeredTexture));
-        for (const LayeredTexture& m : t.map) b += model_bytes(m);
+        if (t.map.allocated()) b += heap_bytes(sizeof(TextureMap));
+        b += heap_bytes(t.map->values.size() * sizeof(float)) +
+             heap_bytes(t.map->entries.size() * sizeof(LayeredTexture));
+        for (const LayeredTexture& m : t.map->entries) b += model_bytes(m);
     }
     return b;
 }
@@ -183,9 +185,13 @@ size_t model_bytes_of_list(const std::vector<Object>& objects) {
 
 size_t estimate_model_bytes(const Object& o) {
     // The Object itself (held in a vector: no block of its own), then what it points to.
-    size_t b = sizeof(Object) + model_bytes(o.texture) + model_bytes(o.interior_texture) +
-               model_bytes_of_list(o.clipped_by) + model_bytes_of_list(o.bounded_by) +
+    size_t b = sizeof(Object) + model_bytes(o.texture) +
+               model_bytes(*o.interior_texture) + model_bytes_of_list(*o.clipped_by) +
+               model_bytes_of_list(*o.bounded_by) +
                (o.interior ? heap_bytes(sizeof(Interior)) : 0);
+    if (o.interior_texture.allocated()) b += heap_bytes(sizeof(LayeredTexture));
+    if (o.clipped_by.allocated()) b += heap_bytes(sizeof(std::vector<Object>));
+    if (o.bounded_by.allocated()) b += heap_bytes(sizeof(std::vector<Object>));
     if (auto m = std::get_if<Mesh>(&o.shape)) {
         b += heap_bytes(m->vertices.size() * sizeof(Point3)) +
              heap_bytes(m->normals.size() * sizeof(Vector3)) +

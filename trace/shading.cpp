@@ -134,11 +134,11 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
     const Material& m = *hit.material;
     if (m.plain || !m.texture || m.texture->size() != 1) return false;
     const Texture& t = m.texture->front();
-    if (!t.map_pattern || t.map.empty()) return false;
-    const int count = int(t.map.size());
-    const bool has_values = int(t.map_values.size()) == count;
+    if (!t.map_pattern || t.map->entries.empty()) return false;
+    const int count = int(t.map->entries.size());
+    const bool has_values = int(t.map->values.size()) == count;
     MapPick pick =
-        pick_map_entries(*t.map_pattern, has_values ? t.map_values.data() : nullptr,
+        pick_map_entries(*t.map_pattern, has_values ? t.map->values.data() : nullptr,
                          count, hit.point, scene.pattern_env());
     const int entries[2] = {pick.lookup.prev, pick.lookup.cur};
     const float weights[2] = {float(1 - pick.lookup.fraction),
@@ -156,7 +156,7 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
         int index = std::clamp(entries[e], 0, count - 1);
         float w = (entries[1] == entries[0]) ? 1.0f : weights[e];
         Material sub = m;
-        sub.texture = &t.map[size_t(index)];
+        sub.texture = &t.map->entries[size_t(index)];
         Hit h = hit;
         h.material = &sub;
         ++depth;

@@ -47,7 +47,8 @@ struct Digest {
             const povwall::Colour& c = t.pigment.colour;
             add(c.rgb.r), add(c.rgb.g), add(c.rgb.b), add(c.filter), add(c.transmit);
             add(t.finish->diffuse), add(t.finish->phong), add(t.finish->reflection_max.r);
-            for (const auto& e : t.pigment.colour_map) add(e.value), add(e.colour.rgb.r);
+            for (const auto& e : t.pigment.maps->colour_map)
+                add(e.value), add(e.colour.rgb.r);
         }
     }
     void add_scene(const povwall::Scene& s) {

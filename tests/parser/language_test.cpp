@@ -143,14 +143,15 @@ TEST(Textures, TextureMapAndCheckerTextures) {
     const Texture& t = s.objects[0].texture[0];
     ASSERT_TRUE(t.map_pattern.has_value());
     EXPECT_EQ(t.map_pattern->kind, PatternKind::Gradient);
-    ASSERT_EQ(t.map.size(), 2u);
-    EXPECT_EQ(t.map_values[0], 0.2f);
-    EXPECT_EQ(t.map[0][0].finish->ambient.r, 0.2f);
-    EXPECT_FLOAT_EQ(t.map[1][0].pigment.colour.rgb.r, 1.0f);
+    ASSERT_EQ(t.map->entries.size(), 2u);
+    EXPECT_EQ(t.map->values[0], 0.2f);
+    EXPECT_EQ(t.map->entries[0][0].finish->ambient.r, 0.2f);
+    EXPECT_FLOAT_EQ(t.map->entries[1][0].pigment.colour.rgb.r, 1.0f);
     // `scale 2` after the map moves the pattern and the entries' patterns alike.
     EXPECT_NEAR(t.map_pattern->transform.point({1, 1, 1}).x, 2, 1e-12);
-    EXPECT_NEAR(t.map[1][0].pigment.pattern->transform.point({1, 1, 1}).x, 2, 1e-12);
-    EXPECT_EQ(s.objects[1].texture[0].map.size(), 2u);
+    EXPECT_NEAR(t.map->entries[1][0].pigment.pattern->transform.point({1, 1, 1}).x, 2,
+                1e-12);
+    EXPECT_EQ(s.objects[1].texture[0].map->entries.size(), 2u);
     EXPECT_EQ(s.objects[1].texture[0].map_pattern->kind, PatternKind::Checker);
 }
 
@@ -160,10 +161,10 @@ TEST(Textures, PigmentMapEntriesAreBodies) {
         "sphere { 0, 1 pigment { gradient y pigment_map { [0.01 rgb <1, 0, 0>] [0.5 P "
         "scale 2] } } }\n");
     const Pigment& p = s.objects[0].texture[0].pigment;
-    ASSERT_EQ(p.list.size(), 2u);
-    EXPECT_FLOAT_EQ(p.list[0].colour.rgb.r, 1.0f);
-    EXPECT_EQ(p.list[1].pattern->kind, PatternKind::Bozo);
-    EXPECT_NEAR(p.list[1].pattern->transform.point({1, 0, 0}).x, 2, 1e-12);
+    ASSERT_EQ(p.maps->list.size(), 2u);
+    EXPECT_FLOAT_EQ(p.maps->list[0].colour.rgb.r, 1.0f);
+    EXPECT_EQ(p.maps->list[1].pattern->kind, PatternKind::Bozo);
+    EXPECT_NEAR(p.maps->list[1].pattern->transform.point({1, 0, 0}).x, 2, 1e-12);
 }
 
 TEST(Textures, DefaultFinishAppliesToLaterTextures) {

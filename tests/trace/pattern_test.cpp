@@ -20,7 +20,7 @@ ColourMap grey_map() { return {{0.0f, Colour{Rgb{0.0f}}}, {1.0f, Colour{Rgb{1.0f
 Pigment patterned(PatternKind kind) {
     Pigment p;
     p.pattern.edit().kind = kind;
-    p.colour_map = grey_map();
+    p.maps.edit().colour_map = grey_map();
     return p;
 }
 
@@ -210,7 +210,7 @@ TEST(PatternVsPovray, DiscretePatternsAndDefaultMaps) {
     Pigment a, b;
     a.colour = Colour{Rgb{0.2f, 0.4f, 0.6f}};
     b.colour = Colour{Rgb{0.9f, 0.1f, 0.3f}};
-    checker.list = {a, b};
+    checker.maps.edit().list = {a, b};
     EXPECT_LE(
         max_pigment_error("checker rgb <0.2,0.4,0.6>, rgb <0.9,0.1,0.3>", checker, view),
         kTol);
@@ -393,10 +393,10 @@ TEST(PatternVsPovray, MandelAndQuilted) {
 TEST(PatternVsPovray, ColourMapBlendPoints) {
     Pigment p;
     p.pattern.edit().kind = PatternKind::Granite;
-    p.colour_map = {{0.1f, Colour{Rgb{1, 0, 0}}},
-                    {0.4f, Colour{Rgb{0, 1, 0}}},
-                    {0.4f, Colour{Rgb{0, 0, 1}}},
-                    {0.8f, Colour{Rgb{1, 1, 0.5f}}}};
+    p.maps.edit().colour_map = {{0.1f, Colour{Rgb{1, 0, 0}}},
+                                {0.4f, Colour{Rgb{0, 1, 0}}},
+                                {0.4f, Colour{Rgb{0, 0, 1}}},
+                                {0.8f, Colour{Rgb{1, 1, 0.5f}}}};
     std::string pov =
         "granite colour_map { [0.1 rgb <1,0,0>] [0.4 rgb <0,1,0>] [0.4 rgb <0,0,1>]"
         " [0.8 rgb <1,1,0.5>] }";
@@ -410,8 +410,8 @@ TEST(PatternVsPovray, AveragePigments) {
     Pigment avg;
     avg.pattern.edit().kind = PatternKind::Average;
     avg.pattern.edit().transform = Transform::scale({0.7, 0.7, 0.7});
-    avg.map_values = {1.0f, 3.0f};
-    avg.list = {a, b};
+    avg.maps.edit().map_values = {1.0f, 3.0f};
+    avg.maps.edit().list = {a, b};
     EXPECT_LE(max_pigment_error("average pigment_map { [1 bozo" + kGrey +
                                     "] [3 checker] }"
                                     " scale 0.7",
@@ -462,8 +462,8 @@ TEST(PatternVsPovray, PigmentMap) {
     Pigment p;
     p.pattern.edit().kind = PatternKind::Gradient;
     p.pattern.edit().vector = {1, 0, 0};
-    p.map_values = {0.2f, 0.8f};
-    p.list = {inner1, inner2};
+    p.maps.edit().map_values = {0.2f, 0.8f};
+    p.maps.edit().list = {inner1, inner2};
     std::string pov =
         "gradient x pigment_map { [0.2 bozo" + kGrey + " scale 0.3] [0.8 checker] }";
     EXPECT_LE(max_pigment_error(pov, p), kTol);
