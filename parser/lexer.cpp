@@ -1,4 +1,6 @@
 // Lexer: one pass over a file's bytes into a token vector.
+#include <sys/mman.h>
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -9,6 +11,15 @@
 #include "parser/source.h"
 
 namespace povwall::parser {
+
+void advise_huge_pages(void* data, size_t bytes) {
+    constexpr uintptr_t kHuge = uintptr_t(2) << 20;
+    if (bytes < 4 * kHuge) return;
+    const uintptr_t begin = (reinterpret_cast<uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
+    const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) & ~(kHuge - 1);
+    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+}
+
 namespace {
 
 bool is_ident_start(char c) {
@@ -36,6 +47,7 @@ constexpr double kPowersOfTen[16] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7
                      message, sm.location(file, offset));
 }
 
+
 void lex(SourceManager& sm, int file_index, SourceFile& f) {
     const std::string& s = f.text;
     const size_t n = s.size();
@@ -43,6 +55,7 @@ void lex(SourceManager& sm, int file_index, SourceFile& f) {
     // Dense machine-written files average about 3.5 bytes per token; reserving up front
     // avoids copying a large token vector as it grows (untouched pages cost nothing).
     f.tokens.reserve(n / 3 + 16);
+    advise_huge_pages(f.tokens.data(), f.tokens.capacity() * sizeof(Token));
     auto push = [&](TokenKind kind, size_t start, size_t len) {
         Token t;
         t.kind = kind;

@@ -145,6 +145,8 @@ bool read_file_text(const std::string& path, std::string& out) {
         out.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
         return !in.bad();
     }
+    out.reserve(size_t(size));
+    advise_huge_pages(out.data(), size_t(size));
     out.resize(size_t(size));
     in.read(out.data(), size);
     out.resize(size_t(in.gcount()));
