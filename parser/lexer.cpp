@@ -15,7 +15,8 @@ namespace povwall::parser {
 void advise_huge_pages(void* data, size_t bytes) {
     constexpr uintptr_t kHuge = uintptr_t(2) << 20;
     if (bytes < 4 * kHuge) return;
-    const uintptr_t begin = (reinterpret_cast<uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
+    const uintptr_t begin =
+        (reinterpret_cast<uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
     const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) & ~(kHuge - 1);
     if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
 }
@@ -46,7 +47,6 @@ constexpr double kPowersOfTen[16] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7
                      format_diagnostic_at(sm, file, offset, length, "error", message),
                      message, sm.location(file, offset));
 }
-
 
 void lex(SourceManager& sm, int file_index, SourceFile& f) {
     const std::string& s = f.text;
