@@ -156,6 +156,8 @@ class Interpreter {
     void parse_mesh(Object& out);
     void parse_mesh2(Object& out);
     int parse_count();
+    template <class T>
+    void reserve_list(std::vector<T>& list, int count);
     const Token* raw_ahead(size_t k) const;  // k-th raw token ahead, if no pushback
     bool try_plain_vector(Vector3& out, Token* at);
     int new_random_stream(int seed);

@@ -475,11 +475,26 @@ int Interpreter::parse_count() {
     return int(n);
 }
 
+// Room for a list that says it holds `count` entries, each taking at least one token:
+// reserved once instead of grown by doubling (each growth copies and pages in the list
+// again), and capped by the tokens left, so a file that claims 10^9 entries reserves
+// no more than it could hold. Large lists get huge pages, as token arrays do.
+template <class T>
+void Interpreter::reserve_list(std::vector<T>& list, int count) {
+    const Frame& f = frames_.back();
+    const size_t room =
+        std::min(size_t(count), f.end > f.pos ? f.end - f.pos : size_t(0));
+    if (room <= list.capacity()) return;
+    list.reserve(room);
+    advise_huge_pages(list.data(), list.capacity() * sizeof(T));
+}
+
 void Interpreter::parse_mesh2(Object& out) {
     Mesh mesh;
     auto read_vectors = [&](std::vector<Vector3>& into) {
         expect_punct('{');
         int n = parse_count();
+        reserve_list(into, n);
         for (int i = 0; i < n; ++i) {
             accept_punct(',');
             Vector3 v;
@@ -526,6 +541,7 @@ void Interpreter::parse_mesh2(Object& out) {
         } else if (w == "face_indices") {
             expect_punct('{');
             int n = parse_count();
+            reserve_list(mesh.faces, n);
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 Token at;

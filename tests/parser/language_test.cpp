@@ -350,6 +350,13 @@ TEST(BadInput, LocatedErrorsInsteadOfCrashesOrHangs) {
               "recursion?");
     EXPECT_EQ(first_line("mesh2 { vertex_vectors { 1e12, <0, 0, 0> } }"),
               "test.pov:1:26: error: list length 1000000000000.000000 out of range");
+    // Counts within range that the file cannot hold: the lists reserve only what the
+    // tokens left could fill (900,000,000 vertices would be 21.6 GB).
+    EXPECT_EQ(first_line("mesh2 { vertex_vectors { 900000000, <0, 0, 0> } }"),
+              "test.pov:1:47: error: expected an expression but found '}'");
+    EXPECT_EQ(first_line("mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } "
+                         "face_indices { 900000000, <0, 1, 2> } }"),
+              "test.pov:1:93: error: expected an expression but found '}'");
     EXPECT_EQ(first_line("#declare A = array[100000][100000][1000];"),
               "test.pov:1:28: error: array too large");
     EXPECT_EQ(first_line("#for (I, 0, 1, 1e-12) #end"),
