@@ -113,8 +113,6 @@ class SharedValue {
         return *p_;
     }
     bool allocated() const { return p_ != nullptr; }
-    // Whether this holder and `o` hold the same object (not merely equal values).
-    bool shares_with(const SharedValue& o) const { return p_ && p_ == o.p_; }
     // How many holders share the value (0: unset); for memory estimates.
     long holders() const { return p_.use_count(); }
 

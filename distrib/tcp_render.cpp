@@ -1549,7 +1549,10 @@ std::vector<std::string> gather_workers(
             size = n;
             by_rank.assign(size_t(n), std::string());
         }
-        if (n != size) {
+        if (size == 0) {
+            error = "a worker registered a launch size of " + std::to_string(n) +
+                    " (1 to 4096)";
+        } else if (n != size) {
             error = "workers disagree on the launch size (" + std::to_string(size) +
                     " and " + std::to_string(n) + ")";
         } else if (rank < 0 || rank >= size) {

@@ -566,6 +566,23 @@ TEST(Launcher, MissingRanksAreNamedAndNoImageIsWritten) {
     exit_code(one);
 }
 
+TEST(Launcher, ALaunchSizeOutOfRangeIsNamed) {
+    const std::string at = "127.0.0.1:" + std::to_string(free_port());
+    pid_t one = launch_worker("", "--rendezvous " + at +
+                                      " --token t --rank 0 --size 5000 "
+                                      "--rendezvous-timeout 30");
+    RunResult r =
+        run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 16 -H 12 -q -o " +
+            (scratch() / "size.png").string() + " --boxes 2x2x2 --token t --rendezvous " +
+            at + " --rendezvous-timeout 20");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_EQ(r.err, "povwall: error: rendezvous " + at +
+                         ": a worker registered a launch size of 5000 (1 to 4096) (no "
+                         "image written)\n");
+    kill(one, SIGKILL);
+    exit_code(one);
+}
+
 TEST(Launcher, AWorkerWithoutRankOrCoordinatorEndsWithAClearError) {
     RunResult r = run("worker --rendezvous 127.0.0.1:1 --token t");
     EXPECT_EQ(r.code, 2);
