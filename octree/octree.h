@@ -129,7 +129,7 @@ class Octree {
     void traverse_with_entry(const Ray& ray, Real t_min, Real& t_max,
                              Visit&& visit) const;
 
-    /// Compact node: a leaf holds ids_[first, first + count); an inner node (count ==
+    /// Compact node: a leaf holds ids_[first, first + count), in ascending order; an inner node (count ==
     /// kInner) has its 8 children at nodes_[first .. first + 7], child index = x | y<<1 |
     /// z<<2.
     struct Node {

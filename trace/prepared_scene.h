@@ -113,6 +113,8 @@ class PreparedScene {
     uint32_t add_material(const Object& obj);
     bool test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max,
                         Hit& hit) const;
+    // The hit on sphere `id` at distance `t`.
+    void fill_sphere_hit(uint32_t id, const Ray& ray, Real t, Hit& hit) const;
     const Material* material_for(const Object* leaf) const;
     std::vector<std::pair<const Object*, uint32_t>> leaf_materials_;  // sorted by pointer
 
@@ -131,6 +133,11 @@ class PreparedScene {
     // index_ for them.
     std::vector<SpherePrim> spheres_;
     uint32_t sphere_count_ = 0;
+    // The spheres again in octree order: entry p of each array is the sphere of the
+    // octree's p-th leaf reference (NaN for other primitives), so a leaf's spheres (its
+    // ids are sorted, spheres first) are side by side and tested four at a time. Three
+    // entries of padding at the end.
+    std::vector<Real> lane_x_, lane_y_, lane_z_, lane_r_;
     std::vector<TrianglePrim> triangles_;
     // Planes in world space: dot(normal, p) = distance; `tolerance` is POV-Ray's 1e-6
     // object-space depth tolerance in world units.

@@ -1,0 +1,47 @@
+// Sphere distances for runs of spheres kept as structure of arrays: an octree leaf's
+// spheres side by side, so that they are tested four at a time.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+#include "core/math.h"
+#include "trace/intersect.h"
+
+namespace povwall::trace {
+
+// POV-Ray's sphere test for a unit-length direction: the nearer root beyond the
+// tolerances, else the farther one; tangent rays miss. kInfinity when there is no hit at
+// or beyond `lo`.
+inline Real sphere_distance(Real cx, Real cy, Real cz, Real r, const Ray& ray, Real lo) {
+    const Real ocx = cx - ray.origin.x, ocy = cy - ray.origin.y, ocz = cz - ray.origin.z;
+    const Real tca =
+        ocx * ray.direction.x + ocy * ray.direction.y + ocz * ray.direction.z;
+    const Real t2hc = r * r - (ocx * ocx + ocy * ocy + ocz * ocz) + tca * tca;
+    if (!(t2hc > kPovEpsilon)) return kInfinity;
+    const Real th = std::sqrt(t2hc);
+    Real t = tca - th;
+    if (!(t > kSphereTolerance && t >= lo)) {
+        t = tca + th;
+        if (!(t > kSphereTolerance && t >= lo)) return kInfinity;
+    }
+    return t;
+}
+
+// A run of spheres as four parallel arrays. Reading up to three entries past a run's end
+// must be allowed (the arrays are padded), since lanes are read four at a time.
+struct SphereRun {
+    const Real *x, *y, *z, *r;
+};
+
+// Up to 64 spheres at a time: t[i] = sphere_distance(sphere i of `run`, ray, lo) for
+// i < n <= 64, and bit i of the result set when t[i] < below. `t` needs room for n
+// rounded up to a multiple of 4 (the extra entries are scratch). With AVX the four lanes
+// do the scalar function's exact operations in its order (no fused multiply-add), so both
+// give the same bits.
+constexpr size_t kMaxSphereRun = 64;
+uint64_t sphere_distances(const SphereRun& run, size_t n, const Ray& ray, Real lo,
+                          Real below, Real* t);
+
+}  // namespace povwall::trace
