@@ -483,7 +483,7 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     unbounded_ = std::move(unbounded);
     const std::vector<uint32_t>& refs = tree_.ids();
     for (auto* lane : {&lane_x_, &lane_y_, &lane_z_, &lane_r_}) {
-        lane->assign(sphere_count_ ? refs.size() + 3 : 0,
+        lane->assign(sphere_count_ ? refs.size() + 7 : 0,
                      std::numeric_limits<Real>::quiet_NaN());
     }
     for (size_t p = 0; sphere_count_ && p < refs.size(); ++p) {

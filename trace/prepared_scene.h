@@ -135,8 +135,8 @@ class PreparedScene {
     uint32_t sphere_count_ = 0;
     // The spheres again in octree order: entry p of each array is the sphere of the
     // octree's p-th leaf reference (NaN for other primitives), so a leaf's spheres (its
-    // ids are sorted, spheres first) are side by side and tested four at a time. Three
-    // entries of padding at the end.
+    // ids are sorted, spheres first) are side by side and tested four or eight at a
+    // time. Seven entries of padding at the end.
     std::vector<Real> lane_x_, lane_y_, lane_z_, lane_r_;
     std::vector<TrianglePrim> triangles_;
     // Planes in world space: dot(normal, p) = distance; `tolerance` is POV-Ray's 1e-6

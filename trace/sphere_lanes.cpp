@@ -2,7 +2,7 @@
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
-#define POVWALL_LANES_AVX 1
+#define POVWALL_LANES_AVX 1  // chosen at run time by what the CPU has
 #endif
 
 namespace povwall::trace {
@@ -68,20 +68,82 @@ __attribute__((target("avx"))) uint64_t distances_avx(const SphereRun& s, size_t
     return n < 64 ? mask & ((uint64_t(1) << n) - 1) : mask;
 }
 
-const bool kHasAvx = [] {
-    __builtin_cpu_init();  // static initialisers may run before libgcc's
-    return __builtin_cpu_supports("avx") != 0;
-}();
+// Eight lanes, the same operations; compares give mask registers, so no selects by bits.
+__attribute__((target("avx512f"))) uint64_t distances_avx512(const SphereRun& s, size_t n,
+                                                             const Ray& ray, Real lo,
+                                                             Real below, Real* t) {
+    const __m512d ox = _mm512_set1_pd(ray.origin.x), oy = _mm512_set1_pd(ray.origin.y),
+                  oz = _mm512_set1_pd(ray.origin.z);
+    const __m512d dx = _mm512_set1_pd(ray.direction.x),
+                  dy = _mm512_set1_pd(ray.direction.y),
+                  dz = _mm512_set1_pd(ray.direction.z);
+    const __m512d eps = _mm512_set1_pd(kPovEpsilon),
+                  tol = _mm512_set1_pd(kSphereTolerance), vlo = _mm512_set1_pd(lo),
+                  inf = _mm512_set1_pd(kInfinity), vbelow = _mm512_set1_pd(below);
+    uint64_t mask = 0;
+    for (size_t i = 0; i < n; i += 8) {
+        const __m512d ocx = _mm512_sub_pd(_mm512_loadu_pd(s.x + i), ox);
+        const __m512d ocy = _mm512_sub_pd(_mm512_loadu_pd(s.y + i), oy);
+        const __m512d ocz = _mm512_sub_pd(_mm512_loadu_pd(s.z + i), oz);
+        const __m512d r = _mm512_loadu_pd(s.r + i);
+        const __m512d tca =
+            _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ocx, dx), _mm512_mul_pd(ocy, dy)),
+                          _mm512_mul_pd(ocz, dz));
+        const __m512d oc2 =
+            _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ocx, ocx), _mm512_mul_pd(ocy, ocy)),
+                          _mm512_mul_pd(ocz, ocz));
+        const __m512d t2hc = _mm512_add_pd(_mm512_sub_pd(_mm512_mul_pd(r, r), oc2),
+                                           _mm512_mul_pd(tca, tca));
+        const __mmask8 hit = _mm512_cmp_pd_mask(t2hc, eps, _CMP_GT_OQ);
+        // Lanes that miss keep inf (and GCC 12 warns on the unmasked form's undefined
+        // source).
+        const __m512d th = _mm512_mask_sqrt_pd(inf, hit, t2hc);
+        const __m512d near = _mm512_sub_pd(tca, th), far = _mm512_add_pd(tca, th);
+        const __mmask8 near_ok = _mm512_cmp_pd_mask(near, tol, _CMP_GT_OQ) &
+                                 _mm512_cmp_pd_mask(near, vlo, _CMP_GE_OQ);
+        const __mmask8 far_ok = _mm512_cmp_pd_mask(far, tol, _CMP_GT_OQ) &
+                                _mm512_cmp_pd_mask(far, vlo, _CMP_GE_OQ);
+        __m512d dist = _mm512_mask_blend_pd(far_ok, inf, far);
+        dist = _mm512_mask_blend_pd(near_ok, dist, near);
+        dist = _mm512_mask_blend_pd(hit, inf, dist);
+        _mm512_storeu_pd(t + i, dist);
+        mask |= uint64_t(_mm512_cmp_pd_mask(dist, vbelow, _CMP_LT_OQ)) << i;
+    }
+    return n < 64 ? mask & ((uint64_t(1) << n) - 1) : mask;
+}
+
 #endif
+
+const LaneWidth kWidest = [] {
+#ifdef POVWALL_LANES_AVX
+    __builtin_cpu_init();  // static initialisers may run before libgcc's
+    if (__builtin_cpu_supports("avx512f")) return LaneWidth::Eight;
+    if (__builtin_cpu_supports("avx")) return LaneWidth::Four;
+#endif
+    return LaneWidth::One;
+}();
 
 }  // namespace
 
+LaneWidth widest_lanes() { return kWidest; }
+
+uint64_t sphere_distances(LaneWidth width, const SphereRun& run, size_t n, const Ray& ray,
+                          Real lo, Real below, Real* t) {
+    switch (width) {
+#ifdef POVWALL_LANES_AVX
+        case LaneWidth::Eight:
+            return distances_avx512(run, n, ray, lo, below, t);
+        case LaneWidth::Four:
+            return distances_avx(run, n, ray, lo, below, t);
+#endif
+        default:
+            return distances_scalar(run, n, ray, lo, below, t);
+    }
+}
+
 uint64_t sphere_distances(const SphereRun& run, size_t n, const Ray& ray, Real lo,
                           Real below, Real* t) {
-#ifdef POVWALL_LANES_AVX
-    if (kHasAvx) return distances_avx(run, n, ray, lo, below, t);
-#endif
-    return distances_scalar(run, n, ray, lo, below, t);
+    return sphere_distances(kWidest, run, n, ray, lo, below, t);
 }
 
 }  // namespace povwall::trace

@@ -29,19 +29,26 @@ inline Real sphere_distance(Real cx, Real cy, Real cz, Real r, const Ray& ray, R
     return t;
 }
 
-// A run of spheres as four parallel arrays. Reading up to three entries past a run's end
-// must be allowed (the arrays are padded), since lanes are read four at a time.
+// A run of spheres as four parallel arrays. Reading up to seven entries past a run's end
+// must be allowed (the arrays are padded), since lanes are read eight at a time.
 struct SphereRun {
     const Real *x, *y, *z, *r;
 };
 
 // Up to 64 spheres at a time: t[i] = sphere_distance(sphere i of `run`, ray, lo) for
 // i < n <= 64, and bit i of the result set when t[i] < below. `t` needs room for n
-// rounded up to a multiple of 4 (the extra entries are scratch). With AVX the four lanes
-// do the scalar function's exact operations in its order (no fused multiply-add), so both
-// give the same bits.
+// rounded up to a multiple of 8 (the extra entries are scratch). Four lanes (AVX) or
+// eight (AVX-512) do the scalar function's exact operations in its order (no fused
+// multiply-add), so every width gives the same bits.
 constexpr size_t kMaxSphereRun = 64;
 uint64_t sphere_distances(const SphereRun& run, size_t n, const Ray& ray, Real lo,
                           Real below, Real* t);
+
+enum class LaneWidth { One, Four, Eight };
+// The widest this CPU runs; sphere_distances() uses it.
+LaneWidth widest_lanes();
+// With a given width, at most widest_lanes() (for tests).
+uint64_t sphere_distances(LaneWidth width, const SphereRun& run, size_t n, const Ray& ray,
+                          Real lo, Real below, Real* t);
 
 }  // namespace povwall::trace
