@@ -124,14 +124,30 @@ class Octree {
                                 return visit(ids, n, t);
                             });
     }
+    /// As traverse(); in trees too large for the caches, `prefetch_leaf(first)` is called
+    /// ahead of time for a leaf that will likely be visited next, with the position of
+    /// its first id in ids(), so that the caller fetches its own per-reference data.
+    template <class Visit, class PrefetchLeaf>
+    void traverse(const Ray& ray, Real t_min, Real& t_max, Visit&& visit,
+                  PrefetchLeaf&& prefetch_leaf) const {
+        traverse_with_entry(
+            ray, t_min, t_max,
+            [&](const uint32_t* ids, size_t n, Real& t, Real) {
+                return visit(ids, n, t);
+            },
+            prefetch_leaf);
+    }
     /// As traverse(), with the leaf's entry distance along the ray as fourth argument.
-    template <class Visit>
-    void traverse_with_entry(const Ray& ray, Real t_min, Real& t_max,
-                             Visit&& visit) const;
+    struct NoPrefetch {
+        void operator()(uint32_t) const {}
+    };
+    template <class Visit, class PrefetchLeaf = NoPrefetch>
+    void traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&& visit,
+                             PrefetchLeaf&& prefetch_leaf = NoPrefetch{}) const;
 
-    /// Compact node: a leaf holds ids_[first, first + count), in ascending order; an inner node (count ==
-    /// kInner) has its 8 children at nodes_[first .. first + 7], child index = x | y<<1 |
-    /// z<<2.
+    /// Compact node: a leaf holds ids_[first, first + count), in ascending order; an
+    /// inner node (count == kInner) has its 8 children at nodes_[first .. first + 7],
+    /// child index = x | y<<1 | z<<2.
     struct Node {
         uint32_t first = 0;
         uint32_t count = 0;
@@ -174,10 +190,10 @@ class Octree {
     // exit parameters, which needs no geometry. kPrefetch: the tree is larger than
     // kPrefetchNodes, so the walk fetches ahead (below that it sits in L2 and the extra
     // instructions only cost).
-    template <bool kParallel, bool kPrefetch, class Visit>
+    template <bool kParallel, bool kPrefetch, class Visit, class PrefetchLeaf>
     void walk(const Point3& o, const Vector3& inv, const bool* parallel, unsigned mirror,
-              const Vector3& t0, const Vector3& t1, Real t_min, Real& t_max,
-              Visit& visit) const;
+              const Vector3& t0, const Vector3& t1, Real t_min, Real& t_max, Visit& visit,
+              PrefetchLeaf& prefetch_leaf) const;
 
     NodeArray nodes_;
     std::vector<uint32_t> ids_;
@@ -194,9 +210,9 @@ class Octree {
 // neighbouring cells agree exactly. Child boxes are never intersected; the next child
 // follows from the exit plane. Zero direction components get t = -inf/+inf, never 0 *
 // inf.
-template <class Visit>
-void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max,
-                                 Visit&& visit) const {
+template <class Visit, class PrefetchLeaf>
+void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&& visit,
+                                 PrefetchLeaf&& prefetch_leaf) const {
     if (nodes_.empty()) return;
     const Point3 o = ray.origin;
     const Vector3& dir = ray.direction;
@@ -240,21 +256,26 @@ void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max,
     const bool large = nodes_.size() > kPrefetchNodes;
     if (any_parallel) {
         if (large) {
-            walk<true, true>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit);
+            walk<true, true>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit,
+                             prefetch_leaf);
         } else {
-            walk<true, false>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit);
+            walk<true, false>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit,
+                              prefetch_leaf);
         }
     } else if (large) {
-        walk<false, true>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit);
+        walk<false, true>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit,
+                          prefetch_leaf);
     } else {
-        walk<false, false>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit);
+        walk<false, false>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit,
+                           prefetch_leaf);
     }
 }
 
-template <bool kParallel, bool kPrefetch, class Visit>
+template <bool kParallel, bool kPrefetch, class Visit, class PrefetchLeaf>
 void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel,
                   unsigned mirror, const Vector3& root_t0, const Vector3& root_t1,
-                  Real t_min, Real& t_max, Visit& visit) const {
+                  Real t_min, Real& t_max, Visit& visit,
+                  PrefetchLeaf& prefetch_leaf) const {
     // Plain arrays, not Vector3: its default member initialisers would zero the whole
     // stack on every ray.
     struct Cell {
@@ -328,9 +349,12 @@ void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel,
         // fetches a sibling in vain.
         if constexpr (kPrefetch) {
             const Node& s = nodes_[f.first + ((f.child & 7) ^ mirror)];
-            __builtin_prefetch(s.count == kInner
-                                   ? static_cast<const void*>(nodes_.data() + s.first)
-                                   : static_cast<const void*>(ids_.data() + s.first));
+            if (s.count == kInner) {
+                __builtin_prefetch(nodes_.data() + s.first);
+            } else {
+                __builtin_prefetch(ids_.data() + s.first);
+                prefetch_leaf(s.first);
+            }
         }
         if (n.count != kInner) {
             if (n.count && visit(&ids_[n.first], size_t(n.count), t_max, enter)) return;

@@ -138,6 +138,15 @@ class PreparedScene {
     // ids are sorted, spheres first) are side by side and tested four or eight at a
     // time. Seven entries of padding at the end.
     std::vector<Real> lane_x_, lane_y_, lane_z_, lane_r_;
+    // Large trees: the octree asks for a leaf's lanes ahead of its visit.
+    void prefetch_lanes(uint32_t first) const {
+        if (first < lane_x_.size()) {
+            __builtin_prefetch(&lane_x_[first]);
+            __builtin_prefetch(&lane_y_[first]);
+            __builtin_prefetch(&lane_z_[first]);
+            __builtin_prefetch(&lane_r_[first]);
+        }
+    }
     std::vector<TrianglePrim> triangles_;
     // Planes in world space: dot(normal, p) = distance; `tolerance` is POV-Ray's 1e-6
     // object-space depth tolerance in world units.
