@@ -660,6 +660,17 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
         }
         case PrimKind::Plane: {
             const PlanePrim& pl = planes_[index_[id]];
+            // A ray pointing away from the plane misses it: the object-space depth below
+            // would be negative. Decided without the square root and the three divisions
+            // only where the direction's sign cannot change when it is normalised.
+            const Real away = pl.distance - dot(pl.normal, ray.origin);
+            const Real toward = dot(pl.normal, ray.direction);
+            const Real scale = std::fabs(pl.normal.x * ray.direction.x) +
+                               std::fabs(pl.normal.y * ray.direction.y) +
+                               std::fabs(pl.normal.z * ray.direction.z);
+            if (std::fabs(toward) > 1e-9 * scale && (away < 0) == (toward > 0) &&
+                away != 0)
+                return false;
             // Same arithmetic as POV-Ray's (and the general path's): re-normalised
             // direction, object-space depth, then back to world distance. Coincident
             // faces depend on it.

@@ -148,6 +148,56 @@ TEST(Intersect, PlaneFromAboveAndParallel) {
     EXPECT_FALSE(shoot(s, {{0, 0, 0}, {0, 1, 1}}, h));
 }
 
+// A ray pointing away from a plane is rejected before POV-Ray's arithmetic (normalised
+// direction, object-space depth); near-parallel rays on either side, and rays starting on
+// the plane, must still get exactly that arithmetic's answer.
+TEST(Intersect, PlaneAwayRejectionKeepsPovRaysAnswer) {
+    const Vector3 n = normalize(Vector3{0.3, 1, -0.2});
+    const Real d = 0.7;
+    Scene s = one(object(Plane{n, d}));
+    PreparedScene prepared(s);
+    RayContext ctx;
+    prepared.init_context(ctx);
+    // The prepared plane (identity transform): its normal normalised again, its distance
+    // as the dot product with a point on it.
+    const Vector3 pn = normalize(n);
+    const Real pd = dot(pn, n * d);
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<Real> u(-1, 1);
+    std::uniform_int_distribution<int> tiny(0, 40);
+    int hits = 0, misses = 0;
+    for (int i = 0; i < 20000; ++i) {
+        Ray ray;
+        ray.origin = Point3{u(rng), u(rng), u(rng)} * 5;
+        if (i % 7 == 0) ray.origin = ray.origin + n * (d - dot(n, ray.origin));  // on it
+        // Directions nearly along the plane: the normal component from 1 down to 1e-40.
+        Vector3 along = normalize(cross(n, Vector3{u(rng), u(rng), u(rng)}));
+        ray.direction = normalize(along + n * (u(rng) * std::pow(10.0, -tiny(rng))));
+        // POV-Ray's arithmetic, as the general object path does it.
+        const Real len = length(ray.direction);
+        const Vector3 dn = ray.direction / len;
+        const Real nd = dot(pn, dn);
+        bool want = false;
+        Real want_t = 0;
+        if (!(std::fabs(nd) < kPovEpsilon)) {
+            const Real t_obj = (pd - dot(pn, ray.origin)) / nd;
+            if (t_obj > 1e-6 && t_obj < 1e7) {
+                want_t = t_obj / len;
+                want = want_t >= kMinIsectDepth;
+            }
+        }
+        Hit h;
+        const bool got = prepared.closest_hit(ray, 0, kInfinity, RayUse::Camera, h, ctx);
+        ASSERT_EQ(got, want) << "ray " << i;
+        if (want) {
+            ASSERT_EQ(h.t, want_t) << "ray " << i;
+        }
+        (want ? hits : misses) += 1;
+    }
+    EXPECT_GT(hits, 1000);
+    EXPECT_GT(misses, 5000);
+}
+
 TEST(Intersect, TransformedPlane) {
     // plane { y, 0 } rotated <-90,0,0> (y goes to -z, left-handed) and moved to z = 3.
     Scene s =
