@@ -13,7 +13,6 @@
 
 #include "bench/scene.h"
 #include "octree/overlap.h"
-#include "trace/sphere_lanes.h"
 
 namespace povwall::bench {
 namespace {
@@ -181,61 +180,15 @@ void BM_Small(benchmark::State& state) {
     });
 }
 
-// What trace/ does: a node step worth 12 tests, each leaf's spheres copied side by side
-// (four parallel arrays over the tree's references) and tested 4 or 8 at a time by
-// trace::sphere_distances, POV-Ray's sphere test. Checked against brute force with the
-// same test first.
-struct LaneOctree {
-    octree::Octree tree;
-    std::vector<Real> x, y, z, r;
-    void build(const Spheres& s) {
-        octree::BuildOptions opt = options();
-        if (!std::getenv("POVWALL_BENCH_TRAV")) opt.traversal_cost = 12;
-        tree.build(input_for(s, true), opt);
-        const std::vector<uint32_t>& refs = tree.ids();
-        for (auto* v : {&x, &y, &z, &r}) v->assign(refs.size() + 7, std::nan(""));
-        for (size_t p = 0; p < refs.size(); ++p) {
-            x[p] = s[refs[p]].x;
-            y[p] = s[refs[p]].y;
-            z[p] = s[refs[p]].z;
-            r[p] = s[refs[p]].r;
-        }
-    }
-    Real closest(const Ray& ray, uint64_t& tests) const {
-        Real best = kInfinity;
-        const uint32_t* refs = tree.ids().data();
-        tree.traverse(
-            ray, 0, best,
-            [&](const uint32_t* ids, size_t n, Real& t_max) {
-                Real t[trace::kMaxSphereRun];
-                for (size_t done = 0; done < n; done += trace::kMaxSphereRun) {
-                    const size_t m = std::min(trace::kMaxSphereRun, n - done);
-                    const size_t p = size_t(ids - refs) + done;
-                    uint64_t nearer = trace::sphere_distances(
-                        {&x[p], &y[p], &z[p], &r[p]}, m, ray, 0, t_max, t);
-                    tests += m;
-                    for (; nearer; nearer &= nearer - 1) {
-                        const size_t i = size_t(__builtin_ctzll(nearer));
-                        t_max = std::min(t_max, t[i]);
-                    }
-                }
-                return false;
-            },
-            [&](uint32_t first) {
-                for (const Real* v : {&x[first], &y[first], &z[first], &r[first]})
-                    __builtin_prefetch(v);
-            });
-        return best;
-    }
-};
-
 void BM_OctreeLanes(benchmark::State& state) {
     Fixture& f = fixture(size_t(state.range(0)));
     static std::map<size_t, std::unique_ptr<LaneOctree>> cache;
     auto& lanes = cache[f.spheres.size()];
     if (!lanes) {
         lanes = std::make_unique<LaneOctree>();
-        lanes->build(f.spheres);
+        octree::BuildOptions opt = options();
+        if (!std::getenv("POVWALL_BENCH_TRAV")) opt.traversal_cost = 12;
+        lanes->build(f.spheres, input_for(f.spheres, true), opt);
         for (size_t i = 0; i < 256; ++i) {
             const Ray& ray = f.rays[i];
             Real want = kInfinity;
