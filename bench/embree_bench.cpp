@@ -86,53 +86,51 @@ bool octree_any_hit(const Scene& s, const Ray& ray, Real t_max, octree::Mailbox&
     return hit;
 }
 
-void BM_PrimaryAndShadow_Octree(benchmark::State& state) {
-    Scene& s = scene();
-    octree::Mailbox mb;
-    mb.resize(s.spheres.size());
-    uint64_t rays = 0, tests = 0, shadowed = 0, shadow_rays = 0;
+// Camera rays, and one shadow ray toward the light from each hit: closest(ray) gives the
+// hit distance (kInfinity: none), shadowed(ray, distance) whether anything blocks it.
+template <class Closest, class Shadowed>
+void primary_and_shadow(benchmark::State& state, const Scene& s, Closest closest,
+                        Shadowed shadowed_by) {
+    uint64_t rays = 0, shadowed = 0, shadow_rays = 0;
     size_t i = 0;
     for (auto _ : state) {
         const Ray& ray = s.camera[i];
         i = (i + 1) % s.camera.size();
         ++rays;
-        Real t = octree_closest(s.tree, s.spheres, ray, mb, tests);
+        Real t = closest(ray);
         if (t == kInfinity) continue;
         Point3 p = ray.at(t);
         Vector3 to = s.light - p;
         Real d = length(to);
         ++rays;
         ++shadow_rays;
-        shadowed += octree_any_hit(s, {p, to / d}, d, mb);
+        shadowed += shadowed_by(Ray{p, to / d}, d);
     }
     state.SetItemsProcessed(int64_t(rays));
-    // Same rays, so both engines must agree on these fractions (a correctness check).
+    // Same rays, so the engines must agree on these fractions (a correctness check).
     state.counters["hit_fraction"] = double(shadow_rays) / double(rays - shadow_rays);
     state.counters["shadowed_fraction"] = double(shadowed) / double(shadow_rays);
+}
+
+void BM_PrimaryAndShadow_Octree(benchmark::State& state) {
+    Scene& s = scene();
+    octree::Mailbox mb;
+    mb.resize(s.spheres.size());
+    uint64_t tests = 0;
+    primary_and_shadow(
+        state, s,
+        [&](const Ray& ray) { return octree_closest(s.tree, s.spheres, ray, mb, tests); },
+        [&](const Ray& ray, Real d) { return octree_any_hit(s, ray, d, mb); });
 }
 
 // The same rays through trace/'s engine: the leaves' spheres tested 4 or 8 at a time
 // with POV-Ray's sphere test (tangent rays miss, 1e-6 tolerance).
 void BM_PrimaryAndShadow_Lanes(benchmark::State& state) {
     Scene& s = scene();
-    uint64_t rays = 0, tests = 0, shadowed = 0, shadow_rays = 0;
-    size_t i = 0;
-    for (auto _ : state) {
-        const Ray& ray = s.camera[i];
-        i = (i + 1) % s.camera.size();
-        ++rays;
-        Real t = s.lanes.closest(ray, tests);
-        if (t == kInfinity) continue;
-        Point3 p = ray.at(t);
-        Vector3 to = s.light - p;
-        Real d = length(to);
-        ++rays;
-        ++shadow_rays;
-        shadowed += s.lanes.any_hit({p, to / d}, d);
-    }
-    state.SetItemsProcessed(int64_t(rays));
-    state.counters["hit_fraction"] = double(shadow_rays) / double(rays - shadow_rays);
-    state.counters["shadowed_fraction"] = double(shadowed) / double(shadow_rays);
+    uint64_t tests = 0;
+    primary_and_shadow(
+        state, s, [&](const Ray& ray) { return s.lanes.closest(ray, tests); },
+        [&](const Ray& ray, Real d) { return s.lanes.any_hit(ray, d); });
 }
 
 void BM_PrimaryAndShadow_Embree(benchmark::State& state) {

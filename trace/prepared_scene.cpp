@@ -735,6 +735,27 @@ void PreparedScene::fill_sphere_hit(uint32_t id, const Ray& ray, Real t, Hit& hi
     hit.material = &materials_[material_[id]];
 }
 
+template <class OnHit>
+bool PreparedScene::for_sphere_hits(const uint32_t* ids, size_t spheres, const Ray& ray,
+                                    Real lo, const Real& below, RayContext& ctx,
+                                    OnHit&& on_hit) const {
+    const size_t at = size_t(ids - tree_.ids().data());
+    Real t[kMaxSphereRun];
+    for (size_t done = 0; done < spheres; done += kMaxSphereRun) {
+        const size_t m = std::min(kMaxSphereRun, spheres - done);
+        const size_t p = at + done;
+        uint64_t hits = sphere_distances(
+            {&lane_x_[p], &lane_y_[p], &lane_z_[p], &lane_r_[p]}, m, ray, lo, below, t);
+        ctx.tests += m;
+        for (; hits; hits &= hits - 1) {
+            const size_t i = size_t(__builtin_ctzll(hits));
+            if (!(t[i] < below)) continue;  // `below` shrank since
+            if (on_hit(ids[done + i], t[i])) return true;
+        }
+    }
+    return false;
+}
+
 bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use,
                                 Hit& hit, RayContext& ctx) const {
     bool found = false;
@@ -768,31 +789,19 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
     Real limit = t_max;
     for (uint32_t id : unbounded_) consider(id, limit);
     ctx.mailbox.next_ray();
-    const uint32_t* refs = tree_.ids().data();
     tree_.traverse(
         ray, t_min, limit,
         [&](const uint32_t* ids, size_t n, Real& tmax) {
-            // The leaf's spheres, four at a time; a sphere spanning several leaves is
-            // simply tested again (cheaper than its mailbox check).
+            // A sphere spanning several leaves is simply tested again (cheaper than its
+            // mailbox check).
             const size_t spheres = leading_spheres(ids, n, sphere_count_);
-            Real t[kMaxSphereRun];
-            for (size_t done = 0; done < spheres; done += kMaxSphereRun) {
-                const size_t m = std::min(kMaxSphereRun, spheres - done);
-                const size_t p = size_t(ids - refs) + done;
-                uint64_t nearer =
-                    sphere_distances({&lane_x_[p], &lane_y_[p], &lane_z_[p], &lane_r_[p]},
-                                     m, ray, lo, tmax, t);
-                ctx.tests += m;
-                for (; nearer; nearer &= nearer - 1) {
-                    const size_t i = size_t(__builtin_ctzll(nearer));
-                    if (!(t[i] < tmax)) continue;
-                    const uint32_t id = ids[done + i];
-                    if (hidden(materials_[material_[id]])) continue;
-                    tmax = nearest_t = t[i];
-                    nearest_sphere = id;
-                    found = true;
-                }
-            }
+            for_sphere_hits(ids, spheres, ray, lo, tmax, ctx, [&](uint32_t id, Real t) {
+                if (hidden(materials_[material_[id]])) return false;
+                tmax = nearest_t = t;
+                nearest_sphere = id;
+                found = true;
+                return false;
+            });
             for (size_t i = spheres; i < n; ++i) {
                 // Objects hidden from this ray kind can have a hit beyond a visible one:
                 // a primitive seen in an earlier leaf was fully tested there.
@@ -839,26 +848,15 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
     ctx.mailbox.next_ray();
     Real limit = t_max;
     bool blocked = false;
-    const uint32_t* refs = tree_.ids().data();
     tree_.traverse(
         ray, t_min, limit,
         [&](const uint32_t* ids, size_t n, Real&) {
             const size_t spheres = leading_spheres(ids, n, sphere_count_);
-            Real t[kMaxSphereRun];
-            for (size_t done = 0; done < spheres; done += kMaxSphereRun) {
-                const size_t m = std::min(kMaxSphereRun, spheres - done);
-                const size_t p = size_t(ids - refs) + done;
-                uint64_t within =
-                    sphere_distances({&lane_x_[p], &lane_y_[p], &lane_z_[p], &lane_r_[p]},
-                                     m, ray, lo, t_max, t);
-                ctx.tests += m;
-                for (; within; within &= within - 1) {
-                    const size_t i = size_t(__builtin_ctzll(within));
-                    const uint32_t id = ids[done + i];
-                    if (blocks(id, caster(materials_[material_[id]])))
-                        return blocked = true;
-                }
-            }
+            if (for_sphere_hits(ids, spheres, ray, lo, t_max, ctx,
+                                [&](uint32_t id, Real) {
+                                    return blocks(id, caster(materials_[material_[id]]));
+                                }))
+                return blocked = true;
             for (size_t i = spheres; i < n; ++i) {
                 if (ctx.mailbox.first_visit(ids[i]) && blocks(ids[i], meets(ids[i])))
                     return blocked = true;

@@ -113,6 +113,12 @@ class PreparedScene {
     uint32_t add_material(const Object& obj);
     bool test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max,
                         Hit& hit) const;
+    // Calls on_hit(id, t), in leaf order, for each of the first `spheres` ids of a leaf
+    // whose sphere is hit at t < below (`below` is read again before each call: it may
+    // shrink) until on_hit returns true; returns whether it did.
+    template <class OnHit>
+    bool for_sphere_hits(const uint32_t* ids, size_t spheres, const Ray& ray, Real lo,
+                         const Real& below, RayContext& ctx, OnHit&& on_hit) const;
     // The hit on sphere `id` at distance `t`.
     void fill_sphere_hit(uint32_t id, const Ray& ray, Real t, Hit& hit) const;
     const Material* material_for(const Object* leaf) const;
