@@ -13,8 +13,8 @@ namespace povwall::parser {
 // leaves this position to ExpressionParser for good.
 class ExpressionCompiler {
   public:
-    ExpressionCompiler(const Interpreter& in, const Token* toks, size_t end, size_t start,
-                       ExpressionProgram& out)
+    ExpressionCompiler(const Interpreter& in, const TokenArray& toks, size_t end,
+                       size_t start, ExpressionProgram& out)
         : in_(in), toks_(toks), end_(end), pos_(start), out_(out) {}
 
     bool compile(bool full, bool no_gt) {
@@ -187,7 +187,7 @@ class ExpressionCompiler {
     }
 
     const Interpreter& in_;
-    const Token* toks_;
+    const TokenArray& toks_;
     size_t end_, pos_;
     ExpressionProgram& out_;
     int depth_ = 0, stack_ = 0;
@@ -221,7 +221,7 @@ bool Interpreter::try_compiled_expression(bool full, bool no_gt, Numeric& out) {
     if (f.pos == 0 || f.pos > f.end) return false;
     const size_t start = f.pos - 1;
     const Token& first = pushback_[0];
-    const Token& raw = f.toks[start];
+    const Token raw = (*f.toks)[start];
     if (first.kind != raw.kind || first.file != f.file || first.offset != raw.offset ||
         first.length != raw.length || first.sym != raw.sym) {
         return false;
@@ -237,7 +237,7 @@ bool Interpreter::try_compiled_expression(bool full, bool no_gt, Numeric& out) {
         auto [it, inserted] = program_by_position_.try_emplace(key, -1);
         if (inserted) {
             ExpressionProgram program;
-            if (ExpressionCompiler(*this, f.toks, f.end, start, program)
+            if (ExpressionCompiler(*this, *f.toks, f.end, start, program)
                     .compile(full, no_gt)) {
                 it->second = int32_t(programs_.size());
                 programs_.push_back(std::move(program));
@@ -317,7 +317,7 @@ bool Interpreter::try_compiled_expression(bool full, bool no_gt, Numeric& out) {
             }
             case Code::Rand:
                 stack(top - 1) = Numeric::scalar(
-                    draw_random(saturating_int(stack(top - 1).c[0]), f.toks[in.arg]));
+                    draw_random(saturating_int(stack(top - 1).c[0]), (*f.toks)[in.arg]));
                 break;
         }
     }

@@ -517,7 +517,7 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
             Frame::Kind::Macro,
             scopes_.size(),
             name,
-            sources_.file(m.file).tokens.data()};
+            &sources_.file(m.file).tokens};
     scopes_.push_back(std::move(params));
     frames_.push_back(f);
     ++macro_depth_;
@@ -566,7 +566,7 @@ void Interpreter::directive_include(const Token& t) {
                        Frame::Kind::File,
                        scopes_.size() - 1,
                        {},
-                       sources_.file(index).tokens.data()});
+                       &sources_.file(index).tokens});
 }
 
 }  // namespace povwall::parser

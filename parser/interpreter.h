@@ -158,7 +158,8 @@ class Interpreter {
     int parse_count();
     template <class T>
     void reserve_list(std::vector<T>& list, int count);
-    const Token* raw_ahead(size_t k) const;  // k-th raw token ahead, if no pushback
+    // k-th raw token ahead (End when there is pushback or the frame ends first).
+    Token raw_ahead(size_t k) const;
     bool try_plain_vector(Vector3& out, Token* at);
     int new_random_stream(int seed);
     double draw_random(int stream, const Token& at);
@@ -175,9 +176,9 @@ class Interpreter {
         enum class Kind { File, Macro } kind;
         size_t scope_depth;  // scopes to restore when the frame ends
         Token call;          // macro call site (for notes)
-        // sources_.file(file).tokens.data(), fixed once lexed: next_raw() reads the next
-        // token without walking SourceManager -> SourceFile -> vector each time.
-        const Token* toks = nullptr;
+        // &sources_.file(file).tokens, fixed once lexed: next_raw() reads the next token
+        // without walking SourceManager -> SourceFile each time.
+        const TokenArray* toks = nullptr;
     };
     struct Cond {
         enum class Kind { If, Else, While, For, Switch, SwitchDone, Macro } kind;

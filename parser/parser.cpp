@@ -111,7 +111,7 @@ Scene Interpreter::run(int root_file) {
                        Frame::Kind::File,
                        1,
                        {},
-                       sources_.file(root_file).tokens.data()});
+                       &sources_.file(root_file).tokens});
     for (;;) {
         Token t = next();
         if (t.kind == TokenKind::End) break;

@@ -427,38 +427,49 @@ void Interpreter::parse_mesh(Object& out) {
     out.shape = std::move(mesh);
 }
 
-const Token* Interpreter::raw_ahead(size_t k) const {
-    if (!pushback_.empty() || frames_.empty()) return nullptr;
+Token Interpreter::raw_ahead(size_t k) const {
+    if (!pushback_.empty() || frames_.empty()) return Token{};
     const Frame& f = frames_.back();
-    if (f.pos + k >= f.end) return nullptr;
-    const Token& t = sources_.file(f.file).tokens[f.pos + k];
-    return t.kind == TokenKind::End ? nullptr : &t;
+    if (f.pos + k >= f.end) return Token{};
+    return (*f.toks)[f.pos + k];
 }
 
 // Machine-written meshes are millions of `<n, n, n>`: when the raw tokens are exactly
 // that (commas required, optional minus signs, no operator after '>'), read them directly
 // instead of through the expression parser. Anything else is left for parse_vector().
 bool Interpreter::try_plain_vector(Vector3& out, Token* at) {
-    const Token* open = raw_ahead(0);
-    if (!open || !is_punct(*open, '<')) return false;
+    // On the packed tokens: building a Token for each of a vector's 7 to 10 tokens was
+    // the bulk of this path.
+    if (!pushback_.empty() || frames_.empty()) return false;
+    const Frame& f = frames_.back();
+    const TokenArray& toks = *f.toks;
+    const char* text = toks.text();
+    auto punct = [&](size_t k, char c) {
+        if (f.pos + k >= f.end) return false;
+        const PackedToken& p = toks.packed[f.pos + k];
+        return p.kind == TokenKind::Punct && p.length == 1 && text[p.offset] == c;
+    };
+    if (!punct(0, '<')) return false;
     size_t k = 1;
     double v[3];
     for (int c = 0; c < 3; ++c) {
-        const Token* t = raw_ahead(k);
-        bool negative = t && is_punct(*t, '-');
-        if (negative) t = raw_ahead(++k);
-        if (!t || t->kind != TokenKind::Number) return false;
-        v[c] = negative ? -t->number : t->number;
-        const Token* sep = raw_ahead(++k);
-        if (!sep || !is_punct(*sep, c < 2 ? ',' : '>')) return false;
+        const bool negative = punct(k, '-');
+        if (negative) ++k;
+        if (f.pos + k >= f.end) return false;
+        const PackedToken& n = toks.packed[f.pos + k];
+        if (n.kind != TokenKind::Number) return false;
+        v[c] = negative ? -toks.numbers[n.aux] : toks.numbers[n.aux];
+        if (!punct(++k, c < 2 ? ',' : '>')) return false;
         ++k;
     }
-    const Token* after = raw_ahead(k);
-    if (after && after->kind == TokenKind::Punct && !is_punct(*after, ',') &&
-        !is_punct(*after, '}') && !is_punct(*after, '<')) {
-        return false;
+    if (f.pos + k < f.end) {
+        const PackedToken& after = toks.packed[f.pos + k];
+        if (after.kind == TokenKind::Punct && !punct(k, ',') && !punct(k, '}') &&
+            !punct(k, '<')) {
+            return false;
+        }
     }
-    if (at) *at = *open;
+    if (at) *at = toks[f.pos];
     frames_.back().pos += k;
     out = {v[0], v[1], v[2]};
     return true;
@@ -560,18 +571,18 @@ void Interpreter::parse_mesh2(Object& out) {
                 // Up to three texture indices may follow (`<a,b,c>, t0, t1, t2`); read on
                 // the raw stream so that the fast path for the next face stays available.
                 for (int k = 0; k < 3; ++k) {
-                    const Token* first = raw_ahead(0);
-                    if (!first) break;
-                    size_t skip = is_punct(*first, ',') ? 1 : 0;  // the comma is optional
-                    const Token* value = raw_ahead(skip);
-                    if (!value || value->kind != TokenKind::Number) break;
+                    const Token first = raw_ahead(0);
+                    if (first.kind == TokenKind::End) break;
+                    size_t skip = is_punct(first, ',') ? 1 : 0;  // the comma is optional
+                    const Token value = raw_ahead(skip);
+                    if (value.kind != TokenKind::Number) break;
                     if (skip == 0 && mesh.textures.empty()) break;
                     frames_.back().pos += skip + 1;
                     if (k == 0) {
-                        if (!(value->number >= 0 &&
-                              value->number < double(mesh.textures.size())))
-                            error(*value, "mesh2 texture index out of range");
-                        f.texture = int32_t(value->number);
+                        if (!(value.number >= 0 &&
+                              value.number < double(mesh.textures.size())))
+                            error(value, "mesh2 texture index out of range");
+                        f.texture = int32_t(value.number);
                     }
                 }
                 mesh.faces.push_back(f);  // degenerate ones are dropped at the end

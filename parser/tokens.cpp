@@ -10,14 +10,14 @@ namespace povwall::parser {
 Token Interpreter::next_raw() {
     while (!frames_.empty()) {
         Frame& f = frames_.back();
-        if (f.pos < f.end && f.toks[f.pos].kind != TokenKind::End) [[likely]] {
+        if (f.pos < f.end && f.toks->packed[f.pos].kind != TokenKind::End) [[likely]] {
             if (++tokens_since_clock_ == 4096) [[unlikely]]
-                check_parse_limits(f.toks[f.pos]);
-            return f.toks[f.pos++];
+                check_parse_limits((*f.toks)[f.pos]);
+            return (*f.toks)[f.pos++];
         }
         // The frame is exhausted: a file or a macro body ends here.
         const SourceFile& file = sources_.file(f.file);
-        const Token& end_tok = file.tokens[std::min(f.pos, file.tokens.size() - 1)];
+        const Token end_tok = file.tokens[std::min(f.pos, file.tokens.size() - 1)];
         while (!conds_.empty() && conds_.back().frame == frames_.size()) {
             const Cond& c = conds_.back();
             if (f.kind == Frame::Kind::Macro) break;
