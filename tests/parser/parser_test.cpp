@@ -465,6 +465,31 @@ union {
     EXPECT_NEAR(s.lights[1].location.z, -11, 1e-12);
 }
 
+// POV-Ray's own qtvr/qtvrpanorama.pov writes `looks_like { LightShape }`.
+TEST(Lights, LooksLikeTakesAnObjectIdentifier) {
+    Scene s = parse(R"(
+#declare LightShape = sphere { 0, 6 pigment { rgb <1, 0.8, 0.2> } }
+light_source {
+  0*x color rgb 1
+  looks_like { LightShape }
+  translate <-100, 50, -50>
+}
+)");
+    ASSERT_EQ(s.lights.size(), 1u);
+    ASSERT_EQ(s.lights[0].looks_like.size(), 1u);
+    const Object& o = s.lights[0].looks_like[0];
+    const Sphere* sp = std::get_if<Sphere>(&o.shape);
+    ASSERT_NE(sp, nullptr);
+    EXPECT_EQ(sp->radius, 6);
+    EXPECT_TRUE(o.no_shadow);
+    const Point3 c = o.transform.point(sp->centre);
+    EXPECT_NEAR(c.x, -100, 1e-12);
+    EXPECT_NEAR(c.y, 50, 1e-12);
+    EXPECT_NEAR(c.z, -50, 1e-12);
+    ASSERT_EQ(o.texture.size(), 1u);
+    EXPECT_NEAR(o.texture[0].pigment.colour.rgb.g, 0.8, 1e-6);
+}
+
 }  // namespace
 }  // namespace povwall::parser
 
