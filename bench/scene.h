@@ -18,9 +18,7 @@ namespace povwall::bench {
 
 /// Spheres as trace/ keeps them: one 32-byte record each, aligned (a candidate test
 /// touches one cache line), numbered along a Morton curve.
-struct alignas(32) SphereRecord {
-    Real x, y, z, r;
-};
+using trace::SphereRecord;
 struct Spheres {
     std::vector<SphereRecord> records;
     size_t size() const { return records.size(); }
@@ -120,19 +118,12 @@ inline Real octree_closest(const octree::Octree& tree, const Spheres& s, const R
 // same test first.
 struct LaneOctree {
     octree::Octree tree;
-    std::vector<Real> x, y, z, r;
+    trace::SphereLanes lanes;
     // `in`: the spheres' bounds and exact overlap test; `opt`: as trace/ sets it for
     // sphere scenes (traversal_cost 12) unless a tuning run says otherwise.
     void build(const Spheres& s, const octree::BuildInput& in, octree::BuildOptions opt) {
         tree.build(in, opt);
-        const std::vector<uint32_t>& refs = tree.ids();
-        for (auto* v : {&x, &y, &z, &r}) v->assign(refs.size() + 7, std::nan(""));
-        for (size_t p = 0; p < refs.size(); ++p) {
-            x[p] = s[refs[p]].x;
-            y[p] = s[refs[p]].y;
-            z[p] = s[refs[p]].z;
-            r[p] = s[refs[p]].r;
-        }
+        lanes.build(tree.ids(), s.records.data(), uint32_t(s.size()));
     }
     Real closest(const Ray& ray, uint64_t& tests) const {
         Real best = kInfinity;
@@ -144,8 +135,8 @@ struct LaneOctree {
                 for (size_t done = 0; done < n; done += trace::kMaxSphereRun) {
                     const size_t m = std::min(trace::kMaxSphereRun, n - done);
                     const size_t p = size_t(ids - refs) + done;
-                    uint64_t nearer = trace::sphere_distances(
-                        {&x[p], &y[p], &z[p], &r[p]}, m, ray, 0, t_max, t);
+                    uint64_t nearer =
+                        trace::sphere_distances(lanes.run(p), m, ray, 0, t_max, t);
                     tests += m;
                     for (; nearer; nearer &= nearer - 1) {
                         const size_t i = size_t(__builtin_ctzll(nearer));
@@ -154,10 +145,7 @@ struct LaneOctree {
                 }
                 return false;
             },
-            [&](uint32_t first) {
-                for (const Real* v : {&x[first], &y[first], &z[first], &r[first]})
-                    __builtin_prefetch(v);
-            });
+            [&](uint32_t first) { lanes.prefetch(first); });
         return best;
     }
     // Any sphere hit in [1e-6, t_max) (shadow rays).
@@ -165,17 +153,19 @@ struct LaneOctree {
         bool hit = false;
         Real limit = t_max;
         const uint32_t* refs = tree.ids().data();
-        tree.traverse(ray, 0, limit, [&](const uint32_t* ids, size_t n, Real&) {
-            Real t[trace::kMaxSphereRun];
-            for (size_t done = 0; done < n; done += trace::kMaxSphereRun) {
-                const size_t m = std::min(trace::kMaxSphereRun, n - done);
-                const size_t p = size_t(ids - refs) + done;
-                if (trace::sphere_distances({&x[p], &y[p], &z[p], &r[p]}, m, ray, 0,
-                                            t_max, t))
-                    return hit = true;
-            }
-            return false;
-        });
+        tree.traverse(
+            ray, 0, limit,
+            [&](const uint32_t* ids, size_t n, Real&) {
+                Real t[trace::kMaxSphereRun];
+                for (size_t done = 0; done < n; done += trace::kMaxSphereRun) {
+                    const size_t m = std::min(trace::kMaxSphereRun, n - done);
+                    const size_t p = size_t(ids - refs) + done;
+                    if (trace::sphere_distances(lanes.run(p), m, ray, 0, t_max, t))
+                        return hit = true;
+                }
+                return false;
+            },
+            [&](uint32_t first) { lanes.prefetch(first); });
         return hit;
     }
 };

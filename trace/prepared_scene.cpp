@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "octree/overlap.h"
 #include "octree/spatial_order.h"
@@ -437,10 +436,10 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     };
     octree::BuildOptions build_options;
     build_options.flat_threshold = plan_.flat_threshold;
-    // Spheres are tested four at a time (sphere_lanes.h), about three times cheaper than
-    // one by one, so a node step is worth more tests: on the seed scene 12 and 16 were
-    // both about 7% faster than the default 8 (docs/performance.md). Triangles and other
-    // shapes are still tested one by one and keep the default.
+    // Spheres are tested four or eight at a time (sphere_lanes.h), about three times
+    // cheaper than one by one, so a node step is worth more tests: on the seed scene 12
+    // and 16 were both about 7% faster than the default 8 (docs/performance.md).
+    // Triangles and other shapes are still tested one by one and keep the default.
     const size_t sphere_refs = size_t(first_other - bounded_ids.begin());
     if (sphere_refs * 2 > bounded_ids.size()) build_options.traversal_cost = 12;
     tree_.build(input, build_options);
@@ -481,19 +480,7 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     material_ = std::move(material);
     bounds_ = std::move(bounds);
     unbounded_ = std::move(unbounded);
-    const std::vector<uint32_t>& refs = tree_.ids();
-    for (auto* lane : {&lane_x_, &lane_y_, &lane_z_, &lane_r_}) {
-        lane->assign(sphere_count_ ? refs.size() + 7 : 0,
-                     std::numeric_limits<Real>::quiet_NaN());
-    }
-    for (size_t p = 0; sphere_count_ && p < refs.size(); ++p) {
-        if (refs[p] >= sphere_count_) continue;
-        const SpherePrim& sp = spheres_[refs[p]];
-        lane_x_[p] = sp.x;
-        lane_y_[p] = sp.y;
-        lane_z_[p] = sp.z;
-        lane_r_[p] = sp.r;
-    }
+    lanes_.build(tree_.ids(), spheres_.data(), sphere_count_);
     // A box's resident scene is what it keeps: drop the growth slack of push_back.
     spheres_.shrink_to_fit();
     triangles_.shrink_to_fit();
@@ -508,7 +495,7 @@ size_t PreparedScene::resident_bytes() const {
     return sizeof(*this) + bytes(materials_) + bytes(kind_) + bytes(index_) +
            bytes(material_) + bytes(bounds_) + bytes(spheres_) + bytes(triangles_) +
            bytes(planes_) + bytes(objects_) + bytes(unbounded_) + bytes(leaf_materials_) +
-           4 * bytes(lane_x_) + size_t(ts.nodes) * sizeof(octree::Octree::Node) +
+           lanes_.bytes() + size_t(ts.nodes) * sizeof(octree::Octree::Node) +
            ts.references * sizeof(uint32_t);
 }
 
@@ -648,14 +635,10 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
     const Real lo = std::max(t_min, kMinIsectDepth);
     switch (kind_[id]) {
         case PrimKind::Sphere: {
-            const SpherePrim& sp = spheres_[index_[id]];
-            const Real t = sphere_distance(sp, ray, lo);
+            // Spheres are primitives 0 .. sphere_count_ - 1: spheres_[id] is this one.
+            const Real t = sphere_distance(spheres_[id], ray, lo);
             if (!(t < t_max)) return false;
-            hit.t = t;
-            hit.prim = id;
-            hit.point = ray.at(t);
-            hit.normal = (hit.point - Point3{sp.x, sp.y, sp.z}) / sp.r;
-            hit.material = &materials_[material_[id]];
+            fill_sphere_hit(id, ray, t, hit);
             return true;
         }
         case PrimKind::Plane: {
@@ -744,8 +727,7 @@ bool PreparedScene::for_sphere_hits(const uint32_t* ids, size_t spheres, const R
     for (size_t done = 0; done < spheres; done += kMaxSphereRun) {
         const size_t m = std::min(kMaxSphereRun, spheres - done);
         const size_t p = at + done;
-        uint64_t hits = sphere_distances(
-            {&lane_x_[p], &lane_y_[p], &lane_z_[p], &lane_r_[p]}, m, ray, lo, below, t);
+        uint64_t hits = sphere_distances(lanes_.run(p), m, ray, lo, below, t);
         ctx.tests += m;
         for (; hits; hits &= hits - 1) {
             const size_t i = size_t(__builtin_ctzll(hits));
@@ -810,7 +792,7 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
             }
             return false;
         },
-        [this](uint32_t first) { prefetch_lanes(first); });
+        [this](uint32_t first) { lanes_.prefetch(first); });
     if (nearest_sphere != ~0u) fill_sphere_hit(nearest_sphere, ray, nearest_t, hit);
     return found;
 }
@@ -863,7 +845,7 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
             }
             return false;
         },
-        [this](uint32_t first) { prefetch_lanes(first); });
+        [this](uint32_t first) { lanes_.prefetch(first); });
     return blocked;
 }
 

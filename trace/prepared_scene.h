@@ -9,6 +9,7 @@
 #include "octree/octree.h"
 #include "trace/pattern.h"
 #include "trace/render_plan.h"
+#include "trace/sphere_lanes.h"
 
 namespace povwall::trace {
 
@@ -101,11 +102,7 @@ class PreparedScene {
     bool opaque_blocker(const Ray& ray, Real t_min, Real t_max, bool& transparent,
                         RayContext& ctx, int light = -1) const;
 
-    // 32 bytes, aligned so that a record never straddles two cache lines (unaligned,
-    // half of them did: most of the cache misses of large sphere scenes).
-    struct alignas(32) SpherePrim {
-        Real x, y, z, r;
-    };
+    using SpherePrim = SphereRecord;
 
   private:
     void build(const std::vector<const Object*>& objects);
@@ -139,20 +136,9 @@ class PreparedScene {
     // index_ for them.
     std::vector<SpherePrim> spheres_;
     uint32_t sphere_count_ = 0;
-    // The spheres again in octree order: entry p of each array is the sphere of the
-    // octree's p-th leaf reference (NaN for other primitives), so a leaf's spheres (its
-    // ids are sorted, spheres first) are side by side and tested four or eight at a
-    // time. Seven entries of padding at the end.
-    std::vector<Real> lane_x_, lane_y_, lane_z_, lane_r_;
-    // Large trees: the octree asks for a leaf's lanes ahead of its visit.
-    void prefetch_lanes(uint32_t first) const {
-        if (first < lane_x_.size()) {
-            __builtin_prefetch(&lane_x_[first]);
-            __builtin_prefetch(&lane_y_[first]);
-            __builtin_prefetch(&lane_z_[first]);
-            __builtin_prefetch(&lane_r_[first]);
-        }
-    }
+    // The spheres again in the order of the octree's references: a leaf's spheres (its
+    // ids are sorted, spheres first) are side by side and tested four or eight at a time.
+    SphereLanes lanes_;
     std::vector<TrianglePrim> triangles_;
     // Planes in world space: dot(normal, p) = distance; `tolerance` is POV-Ray's 1e-6
     // object-space depth tolerance in world units.

@@ -115,8 +115,8 @@ size_t estimate_prepared_bytes(const Object& o) {
         return kMaterial * (1 + m->textures.size()) +
                m->faces.size() * (kPerPrimitive + sizeof(TrianglePrim));
     }
-    // A sphere's record, and its copy per octree reference in the leaves' four-wide
-    // lanes (about 3 references a sphere on 100,000 spheres).
+    // A sphere's record, and its copy per octree reference in the leaves' lanes (about
+    // 3 references a sphere on 100,000 spheres).
     if (std::holds_alternative<Sphere>(o.shape))
         return kPerPrimitive + kMaterial + 4 * sizeof(Real) + 3 * 4 * sizeof(Real);
     // Other shapes (and CSG other than union) stay one Object primitive; CSG materials

@@ -1,10 +1,12 @@
 // Sphere distances for runs of spheres kept as structure of arrays: an octree leaf's
-// spheres side by side, so that they are tested four at a time.
+// spheres side by side, so that they are tested four or eight at a time.
 #pragma once
 
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <vector>
 
 #include "core/math.h"
 #include "trace/intersect.h"
@@ -29,6 +31,12 @@ inline Real sphere_distance(Real cx, Real cy, Real cz, Real r, const Ray& ray, R
     return t;
 }
 
+// A sphere in world space: 32 bytes, aligned so that a record never straddles two cache
+// lines (unaligned, half of them did: most of the cache misses of large sphere scenes).
+struct alignas(32) SphereRecord {
+    Real x, y, z, r;
+};
+
 // A run of spheres as four parallel arrays. Reading up to seven entries past a run's end
 // must be allowed (the arrays are padded), since lanes are read eight at a time.
 struct SphereRun {
@@ -43,6 +51,38 @@ struct SphereRun {
 constexpr size_t kMaxSphereRun = 64;
 uint64_t sphere_distances(const SphereRun& run, size_t n, const Ray& ray, Real lo,
                           Real below, Real* t);
+
+// The spheres of a list of octree references as four parallel arrays: entry p is the
+// sphere of refs[p] (NaN where refs[p] >= sphere_count: another primitive), so a leaf's
+// spheres are side by side. Seven entries of padding at the end.
+struct SphereLanes {
+    std::vector<Real> x, y, z, r;
+    void build(const std::vector<uint32_t>& refs, const SphereRecord* records,
+               uint32_t sphere_count) {
+        for (auto* lane : {&x, &y, &z, &r})
+            lane->assign(sphere_count ? refs.size() + 7 : 0,
+                         std::numeric_limits<Real>::quiet_NaN());
+        for (size_t p = 0; sphere_count && p < refs.size(); ++p) {
+            if (refs[p] >= sphere_count) continue;
+            const SphereRecord& s = records[refs[p]];
+            x[p] = s.x;
+            y[p] = s.y;
+            z[p] = s.z;
+            r[p] = s.r;
+        }
+    }
+    SphereRun run(size_t p) const { return {&x[p], &y[p], &z[p], &r[p]}; }
+    size_t bytes() const { return 4 * x.capacity() * sizeof(Real); }
+    // Large trees: the octree asks for a leaf's lanes ahead of its visit.
+    void prefetch(size_t p) const {
+        if (p < x.size()) {
+            __builtin_prefetch(&x[p]);
+            __builtin_prefetch(&y[p]);
+            __builtin_prefetch(&z[p]);
+            __builtin_prefetch(&r[p]);
+        }
+    }
+};
 
 enum class LaneWidth { One, Four, Eight };
 // The widest this CPU runs; sphere_distances() uses it.
