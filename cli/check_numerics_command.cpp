@@ -49,6 +49,7 @@ int run_check_numerics(int argc, char** argv) {
     if (width <= 0 || height <= 0) throw UsageError("image size must be positive");
     parser::ParseOptions popts;
     popts.library_paths = library_paths;
+    popts.write_user_files = false;
     popts.image_width = width;
     popts.image_height = height;
     Scene scene;

@@ -63,6 +63,7 @@ int run_parse(int argc, char** argv) {
     }
     popts.library_paths = library_paths;
     popts.image_reader = output::read_stored_image;
+    popts.messages = &std::cerr;  // #debug, #warning: POV-Ray's console streams
     nlohmann::json j;
     j["scene"] = scene;
     auto t0 = std::chrono::steady_clock::now();

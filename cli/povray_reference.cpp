@@ -33,6 +33,7 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
     popts.image_width = o.width;
     popts.image_height = o.height;
     popts.declares = o.declares;
+    popts.write_user_files = false;  // only reads which files the scene uses
     Scene scene;
     try {
         scene = parser::parse_scene_file(o.scene, popts);

@@ -177,6 +177,8 @@ int run_render(RenderOptions o) {
     popts.messages = o.quiet ? nullptr : &std::cerr;
     popts.max_loop_iterations = o.max_loop_iterations;
     popts.max_parse_seconds = o.max_parse_seconds;
+    // #fopen ... write puts relative names beside the image.
+    popts.output_dir = std::filesystem::path(o.output).parent_path().string();
     auto load_scene = [&] {
         Scene scene = parser::parse_scene_file(o.scene, popts);
         if (o.max_trace_level) scene.settings.max_trace_level = *o.max_trace_level;

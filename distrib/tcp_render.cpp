@@ -681,6 +681,7 @@ class Worker {
         const json& j = job_;
         parser::ParseOptions popts;
         popts.image_reader = options_.image_reader;
+        popts.write_user_files = false;  // the coordinator's parse writes them
         popts.library_paths = j.at("library_paths").get<std::vector<std::string>>();
         popts.declares = j.at("declares").get<std::map<std::string, double>>();
         const json& anim = j.at("animation");

@@ -111,9 +111,10 @@ void Interpreter::run_directive(const Token& t) {
         std::string s = parse_string();
         error(t, "#error: " + s);
     }
-    if (d == "fopen" || d == "fclose" || d == "read" || d == "write") {
-        unsupported(t, "#" + std::string(d));
-    }
+    if (d == "fopen") return directive_fopen(t);
+    if (d == "fclose") return directive_fclose();
+    if (d == "read") return directive_read(t);
+    if (d == "write") return directive_write(t);
     error(t, "unknown directive '#" + std::string(d) + "'");
 }
 

@@ -216,6 +216,8 @@ const char* type_name(const Value& v) {
             return "fog";
         case 18:
             return "unsupported feature";
+        case 19:
+            return "file";
     }
     return "value";
 }

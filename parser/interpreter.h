@@ -221,6 +221,14 @@ class Interpreter {
     void directive_macro(const Token& t);
     void directive_include(const Token& t);
     void directive_default();
+    // #fopen, #fclose, #read, #write (file_io.cpp).
+    void directive_fopen(const Token& t);
+    void directive_fclose();
+    void directive_read(const Token& t);
+    void directive_write(const Token& t);
+    std::string user_file_path(const std::string& name, bool write, const Token& at);
+    // "(F" of #read/#write: the open file F names (and F's token in `id`).
+    std::shared_ptr<UserFile> user_file_argument(const Token& directive, Token& id);
     void invoke_macro(const Token& name, const Macro& m);
     size_t find_matching_end(const Token& at);
     Binding* find_binding(uint32_t sym, int* scope_index = nullptr);

@@ -29,6 +29,14 @@ struct ParseOptions {
     // Where #debug/#warning/#render text goes (POV-Ray's console streams); null:
     // discarded.
     std::ostream* messages = nullptr;
+    // #fopen: a relative name opened for writing or appending lands in this folder, and a
+    // relative name opened for reading is looked for here first (then the scene's folder
+    // and the library paths). Writes are allowed only under this folder and the scene's;
+    // reads also under the library paths. Empty: the working directory.
+    std::string output_dir;
+    // False: #fopen ... write/append opens nothing and #write discards its text (a
+    // black-box worker re-parses the coordinator's scene; the coordinator writes).
+    bool write_user_files = true;
     // Reads image_map/bump_map files. Without one the scene records the file references
     // only (enough to list the files a scene reads), and cannot be rendered.
     ImageReader image_reader;

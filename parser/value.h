@@ -43,6 +43,7 @@ struct UnsupportedValue {
     std::string feature;
 };
 struct CameraSpec;
+struct UserFile;
 struct Material {
     LayeredTexture texture;
     HeapOptional<Interior> interior;
@@ -54,7 +55,8 @@ using Value = std::variant<
     std::shared_ptr<Normal>, std::shared_ptr<Interior>, std::shared_ptr<CameraSpec>,
     std::shared_ptr<Light>, std::shared_ptr<ArrayValue>, std::shared_ptr<Transform>,
     std::shared_ptr<Macro>, std::shared_ptr<Material>, std::shared_ptr<ColourMap>,
-    std::shared_ptr<SkySphere>, std::shared_ptr<Fog>, std::shared_ptr<UnsupportedValue>>;
+    std::shared_ptr<SkySphere>, std::shared_ptr<Fog>, std::shared_ptr<UnsupportedValue>,
+    std::shared_ptr<UserFile>>;
 
 struct ArrayValue {
     std::vector<int> dims;
@@ -67,6 +69,18 @@ struct Macro {
     size_t body_begin, body_end;  // token indices in that file; body_end is the #end
     std::vector<std::string> params;
     std::vector<bool> optional_params;
+};
+
+// A file opened by #fopen (file_io.cpp). A file read is lexed like a scene file, so its
+// values come from tokens and an error in it is located in it; POV-Ray reads data files
+// with its scene tokenizer too.
+struct UserFile {
+    std::string name;  // as the scene wrote it
+    bool reading = false;
+    int file = -1;        // reading: the SourceManager index of its tokens
+    size_t pos = 0;       // reading: the next token
+    bool at_end = false;  // reading: the last token asked for was the end of the file
+    std::unique_ptr<std::ostream> out;  // writing; null: the writes are discarded
 };
 
 // Camera as written: kept raw so that `camera { ID modifiers }` can be re-evaluated.

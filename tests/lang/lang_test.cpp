@@ -4,6 +4,7 @@
 // NAME.out`).
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -23,7 +24,13 @@ std::string debug_output(const std::string& name) {
     std::ostringstream messages;
     ParseOptions o;
     o.messages = &messages;
+    // Files the fixtures write (#fopen) go to a scratch folder.
+    const auto scratch =
+        std::filesystem::temp_directory_path() / ("povwall_lang_" + name);
+    std::filesystem::create_directories(scratch);
+    o.output_dir = scratch.string();
     parse_scene_file(std::string(POVWALL_LANG_DIR) + "/" + name + ".pov", o);
+    std::filesystem::remove_all(scratch);
     std::string all = messages.str();
     size_t b = all.find("BEGIN\n"), e = all.find("END\n");
     if (b == std::string::npos || e == std::string::npos) return all;
@@ -40,7 +47,8 @@ TEST_P(LangFixture, DebugOutputMatchesPovRay) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
-                         ::testing::Values("expressions", "directives", "colours"));
+                         ::testing::Values("expressions", "directives", "colours",
+                                           "fileio"));
 
 }  // namespace
 }  // namespace povwall::parser

@@ -3,6 +3,8 @@
 // [--compare-compiled]. The last parses each scene a second time with
 // ParseOptions::compile_expressions off and reports every scene whose objects, lights,
 // camera or #debug text differ in any bit.
+#include <unistd.h>
+
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -77,6 +79,11 @@ int main(int argc, char** argv) {
             verbose = true;
     }
     int differ = 0;
+    // Files the scenes write go to a scratch folder, removed at the end.
+    const std::string output_dir = (std::filesystem::temp_directory_path() /
+                                    ("povwall-corpus-" + std::to_string(::getpid())))
+                                       .string();
+    std::filesystem::create_directories(output_dir);
     std::ifstream list(argv[1]);
     std::string rel;
     int ok = 0, unsupported = 0, errors = 0;
@@ -85,6 +92,7 @@ int main(int argc, char** argv) {
         std::filesystem::path path = std::filesystem::path(argv[2]) / rel;
         povwall::parser::ParseOptions options;
         options.library_paths.push_back(path.parent_path().string());
+        options.output_dir = output_dir;  // files the scenes write (#fopen)
         if (verbose) options.messages = &std::cerr;
         // Scenes with an .ini (the portfolio) render frame 1 of an animation.
         std::filesystem::path ini = path;
@@ -154,5 +162,7 @@ int main(int argc, char** argv) {
     std::cout << "ok " << ok << "  unsupported " << unsupported << "  error " << errors;
     if (compare_compiled) std::cout << "  differ " << differ;
     std::cout << "\n";
+    std::error_code ec;
+    std::filesystem::remove_all(output_dir, ec);
     return 0;
 }

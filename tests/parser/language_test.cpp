@@ -233,6 +233,71 @@ TEST(Includes, SearchOrderAndLocationsInsideIncludes) {
     fs::remove_all(dir);
 }
 
+// #fopen stays inside the output folder and the scene's folder; data-file errors point
+// into the data file; a worker's parse (write_user_files off) writes nothing.
+TEST(FileIo, FoldersErrorsAndWorkerParses) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "povwall_parser_fileio_test";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "out");
+    fs::create_directories(dir / "scene");
+    ParseOptions o;
+    o.output_dir = (dir / "out").string();
+    auto first_line_of_error = [&](const std::string& text) -> std::string {
+        std::ofstream(dir / "scene" / "s.pov") << text;
+        try {
+            parse_scene_file((dir / "scene" / "s.pov").string(), o);
+        } catch (const ParseError& e) {
+            const std::string w = e.what();
+            return w.substr(0, w.find('\n'));
+        }
+        return "(no error)";
+    };
+    const std::string s = (dir / "scene" / "s.pov").string();
+    EXPECT_EQ(first_line_of_error("#fopen F \"../escape.txt\" write"),
+              s + ":1:10: error: #fopen: '../escape.txt' is outside the folders a scene "
+                  "may write (the output folder and the scene's folder)");
+    EXPECT_FALSE(fs::exists(dir / "escape.txt"));
+    EXPECT_EQ(
+        first_line_of_error("#fopen F \"/etc/passwd\" read"),
+        s + ":1:10: error: #fopen: '/etc/passwd' is outside the folders a scene may "
+            "read (the output folder, the scene's folder and the library paths)");
+    EXPECT_EQ(first_line_of_error("#fopen F \"nope.txt\" read"),
+              s + ":1:10: error: cannot open user file \"nope.txt\" for reading");
+    EXPECT_EQ(first_line_of_error("#fopen F \"x.txt\" reed"),
+              s + ":1:18: error: expected read, write or append but found 'reed'");
+    EXPECT_EQ(first_line_of_error("#read (F, A)"),
+              s + ":1:8: error: 'F' is not an open file");
+    EXPECT_EQ(
+        first_line_of_error("#fopen F \"w.txt\" write #read (F, A)"),
+        s + ":1:24: error: cannot read from file \"w.txt\": it is open for writing");
+    // A relative name is written to the output folder and read back from there first.
+    std::ofstream(dir / "scene" / "w.txt") << "\"from the scene folder\"";
+    EXPECT_EQ(first_line_of_error("#fopen F \"w.txt\" write #write (F, \"1, \", <2, 3>) "
+                                  "#fclose F #fopen F \"w.txt\" read #read (F, A, B) "
+                                  "#if (A != 1 | B.y != 3) #error \"wrong\" #end"),
+              "(no error)");
+    std::ifstream written(dir / "out" / "w.txt");
+    std::string line;
+    std::getline(written, line);
+    EXPECT_EQ(line, "1, <2,3> ");
+    // Bad data is located in the data file.
+    std::ofstream(dir / "out" / "bad.txt") << "1,\n  2, foo";
+    EXPECT_EQ(first_line_of_error("#fopen F \"bad.txt\" read #read (F, A, B, C)"),
+              (dir / "out" / "bad.txt").string() +
+                  ":2:6: error: expected a float, vector or string literal");
+    EXPECT_EQ(first_line_of_error("#declare V = <1, 2>; #fopen F \"bad.txt\" read "
+                                  "#read (F, V)"),
+              s + ":1:56: error: cannot #read into 'V': it holds a 2-component vector");
+    // A worker's parse: the writes go nowhere, the parse goes on.
+    o.write_user_files = false;
+    EXPECT_EQ(first_line_of_error("#fopen F \"worker.txt\" write #write (F, \"x\") "
+                                  "#fclose F"),
+              "(no error)");
+    EXPECT_FALSE(fs::exists(dir / "out" / "worker.txt"));
+    fs::remove_all(dir);
+}
+
 TEST(Lexer, NestedCommentsAndStrayHash) {
     std::string out;
     parse("/* a /* nested */ still comment */ #debug \"x\" // line\n#\n#debug \"y\"\n",
