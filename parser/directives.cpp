@@ -378,6 +378,12 @@ void Interpreter::directive_declare(const Token& t, bool local) {
             flat = flat * dims[i] + size_t(indices[i]);
         }
         (*arr)->items[flat] = std::move(v);
+    } else if (local && scopes_.size() > scope_count) {
+        // The right-hand side was a macro call whose frame (and scope) ends only when the
+        // next token is read: the #local belongs to the scope the directive began in.
+        Binding& b = bind(scopes_[scope_count - 1], sources_.intern(key));
+        b.value = std::move(v);
+        b.ref_scope = -1;
     } else {
         declare(key, std::move(v), local, name);
     }

@@ -218,6 +218,8 @@ const char* type_name(const Value& v) {
             return "unsupported feature";
         case 19:
             return "file";
+        case 20:
+            return "spline";
     }
     return "value";
 }
@@ -405,6 +407,11 @@ Value ExpressionParser::word(const Token& t) {
     const std::string_view w = t.text;
     // User identifiers shadow nothing built in: POV-Ray reserves keywords.
     if (const Value* v = in_.lookup(t)) {
+        if (auto sp = std::get_if<std::shared_ptr<const Spline>>(v);
+            sp && in_.raw_next_is_punct('(')) {
+            std::shared_ptr<const Spline> keep = *sp;
+            return in_.call_spline(*keep);
+        }
         Value value = *v;
         while (auto arr = std::get_if<std::shared_ptr<ArrayValue>>(&value)) {
             // Checked on the raw stream: `#declare D = Array` followed by a directive

@@ -150,6 +150,9 @@ class Interpreter {
     void parse_global_settings();
     Value parse_declared_value(const Token& first);
     Value parse_item_value(const Token& t);
+    // `spline { ... }` after the keyword, and a call `S(p [, kind])` after `S`.
+    std::shared_ptr<const Spline> parse_spline_block();
+    Numeric call_spline(const Spline& s);
     Camera finish_camera(const CameraSpec& spec);
     SkySphere parse_sky_sphere();
     Fog parse_fog();

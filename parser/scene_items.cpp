@@ -675,6 +675,7 @@ Value Interpreter::parse_item_value(const Token& t) {
             }
             return std::make_shared<LayeredTexture>(std::move(layers));
         }
+        if (w == "spline") return parse_spline_block();
         if (w == "sky_sphere") return std::make_shared<SkySphere>(parse_sky_sphere());
         if (w == "fog") return std::make_shared<Fog>(parse_fog());
         if (w == "pigment") return std::make_shared<Pigment>(parse_pigment_block());
@@ -739,21 +740,92 @@ Value Interpreter::parse_item_value(const Token& t) {
             return a;
         }
         static constexpr std::string_view kUnsupportedItems[] = {
-            "spline",         "function",      "media",         "density",
-            "rainbow",        "photons",       "radiosity",     "max_extent",
-            "min_extent",     "pigment_map",   "normal_map",    "texture_map",
-            "density_map",    "slope_map",     "material_map",  "text",
-            "lathe",          "sor",           "prism",         "blob",
-            "isosurface",     "parametric",    "julia_fractal", "height_field",
-            "superellipsoid", "bicubic_patch", "quadric",       "quartic",
-            "poly",           "cubic",         "sphere_sweep",  "ovus",
-            "lemon"};
+            "function",      "media",         "density",      "rainbow",
+            "photons",       "radiosity",     "max_extent",   "min_extent",
+            "pigment_map",   "normal_map",    "texture_map",  "density_map",
+            "slope_map",     "material_map",  "text",         "lathe",
+            "sor",           "prism",         "blob",         "isosurface",
+            "parametric",    "julia_fractal", "height_field", "superellipsoid",
+            "bicubic_patch", "quadric",       "quartic",      "poly",
+            "cubic",         "sphere_sweep",  "ovus",         "lemon"};
         for (std::string_view item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }
         error(t, "undeclared identifier '" + std::string(w) + "'");
     }
     expected("an expression", t);
+}
+
+namespace {
+
+bool spline_kind(const Token& t, Spline::Kind& kind) {
+    if (t.kind != TokenKind::Word) return false;
+    if (t.text == "linear_spline")
+        kind = Spline::Kind::Linear;
+    else if (t.text == "quadratic_spline")
+        kind = Spline::Kind::Quadratic;
+    else if (t.text == "cubic_spline")
+        kind = Spline::Kind::Cubic;
+    else if (t.text == "natural_spline")
+        kind = Spline::Kind::Natural;
+    else
+        return false;
+    return true;
+}
+
+}  // namespace
+
+// spline { [SPLINE_ID] [kind...] { t [,] value [,] } }, as POV-Ray 3.7 reads it: t is a
+// sum-level float, the value a full expression of 2 to 5 components (a float f is
+// <f, f>); entries go on while the next token can start a float. A value with fewer
+// components than an earlier one keeps that one's higher components (3.7 fills one
+// buffer), so the spline has as many components as its widest point.
+std::shared_ptr<const Spline> Interpreter::parse_spline_block() {
+    expect_punct('{', "after spline");
+    auto s = std::make_shared<Spline>();
+    if (Token t = peek(); t.kind == TokenKind::Word) {
+        if (const Value* v = lookup(t)) {
+            if (auto from = std::get_if<std::shared_ptr<const Spline>>(v)) {
+                *s = **from;
+                next();
+            }
+        }
+    }
+    while (spline_kind(peek(), s->kind)) next();
+    std::array<double, 5> buffer{};
+    while (starts_float(peek())) {
+        const double t = parse_float();
+        accept_punct(',');
+        Numeric n = parse_express();
+        if (n.size == 1) n.size = 2, n.c[1] = n.c[0];
+        for (int i = 0; i < n.size; ++i) buffer[size_t(i)] = n.c[i];
+        s->terms = std::max(s->terms, n.size);
+        spline_insert(*s, t, buffer);
+        accept_punct(',');
+    }
+    if (s->points.empty()) error(peek(), "a spline needs at least one point");
+    expect_punct('}', "to close the spline");
+    return s;
+}
+
+// S(p) or S(p, kind): the spline's `terms` components (5: a colour).
+Numeric Interpreter::call_spline(const Spline& s) {
+    expect_punct('(');
+    const double p = parse_float();
+    Spline::Kind kind = s.kind;
+    if (accept_punct(',')) {
+        const Token k = next();
+        if (!spline_kind(k, kind))
+            expected("linear_spline, quadratic_spline, cubic_spline or natural_spline",
+                     k);
+    }
+    expect_punct(')', "to close the spline call");
+    const std::array<double, 5> v = spline_evaluate(s, p, kind);
+    Numeric n;
+    n.size = s.terms;
+    n.colour = s.terms == 5;
+    for (int i = 0; i < 5; ++i) n.c[i] = v[size_t(i)];
+    return n;
 }
 
 Value Interpreter::parse_declared_value(const Token& first) {

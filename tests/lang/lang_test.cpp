@@ -47,7 +47,7 @@ TEST_P(LangFixture, DebugOutputMatchesPovRay) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
-                         ::testing::Values("expressions", "directives", "colours",
+                         ::testing::Values("expressions", "directives", "colours", "splines",
                                            "fileio"));
 
 }  // namespace

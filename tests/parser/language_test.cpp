@@ -298,6 +298,20 @@ TEST(FileIo, FoldersErrorsAndWorkerParses) {
     fs::remove_all(dir);
 }
 
+// `#local S = Macro()` whose body ends with '}': the macro's frame is still open when the
+// value is bound, yet S belongs to the scope of the macro that holds the #local
+// (transforms.inc's Spline_Trans does `#local Matrix = Matrix_Trans(...)`).
+TEST(Directives, LocalFromAMacroCallBelongsToTheCallersScope) {
+    Scene s = parse(R"(
+#macro MakeS() sphere { 0, 1 } #end
+#macro Use() #local S = MakeS() object { S translate 2*x } #end
+Use()
+#ifdef (S) #error "S leaked" #end
+)");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.objects[0].transform.point({0, 0, 0}), (Vector3{2, 0, 0}));
+}
+
 TEST(Lexer, NestedCommentsAndStrayHash) {
     std::string out;
     parse("/* a /* nested */ still comment */ #debug \"x\" // line\n#\n#debug \"y\"\n",
