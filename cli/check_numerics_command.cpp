@@ -18,6 +18,7 @@
 #include "output/image_io.h"
 #include "parser/parser.h"
 #include "trace/numerics_check.h"
+#include "trace/pattern.h"
 #include "trace/render.h"
 
 namespace povwall::cli {
@@ -50,6 +51,7 @@ int run_check_numerics(int argc, char** argv) {
     parser::ParseOptions popts;
     popts.library_paths = library_paths;
     popts.write_user_files = false;
+    popts.function_hooks = trace::parse_time_function_hooks();
     popts.image_width = width;
     popts.image_height = height;
     Scene scene;

@@ -11,6 +11,7 @@
 
 #include "cli/process.h"
 #include "parser/parser.h"
+#include "trace/pattern.h"
 
 namespace povwall::cli {
 namespace {
@@ -34,6 +35,7 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
     popts.image_height = o.height;
     popts.declares = o.declares;
     popts.write_user_files = false;  // only reads which files the scene uses
+    popts.function_hooks = trace::parse_time_function_hooks();
     Scene scene;
     try {
         scene = parser::parse_scene_file(o.scene, popts);

@@ -19,6 +19,7 @@
 #include "distrib/tcp.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
+#include "trace/pattern.h"
 #include "trace/render_plan.h"
 
 namespace povwall::cli {
@@ -167,6 +168,7 @@ int run_render(RenderOptions o) {
     popts.image_height = o.height;
     popts.declares = o.declares;
     popts.image_reader = output::read_stored_image;
+    popts.function_hooks = trace::parse_time_function_hooks();
     popts.initial_frame = o.animation.initial_frame;
     popts.final_frame = o.frame ? o.animation.final_frame : o.animation.initial_frame;
     popts.initial_clock = o.animation.initial_clock;

@@ -16,6 +16,7 @@
 
 #include "core/colour.h"
 #include "core/compact_transform.h"
+#include "core/function.h"
 #include "core/heap_optional.h"
 #include "core/math.h"
 #include "core/source_loc.h"
@@ -56,6 +57,7 @@ enum class PatternKind : uint8_t {
     Average,
     ImageMap,
     Cells,
+    Function,  // a user function of x, y, z (PatternSpec::function)
 };
 
 enum class WaveType : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
@@ -132,6 +134,7 @@ struct PatternSpec {
     std::vector<Warp> warps;
     CompactTransform transform;  // pattern space -> world (inverse applied to hit points)
     std::shared_ptr<const ImageMapping> image;  // PatternKind::ImageMap only
+    std::shared_ptr<const FunctionProgram> function;  // PatternKind::Function only
 };
 
 struct ColourMapEntry {

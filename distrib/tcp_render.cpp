@@ -47,6 +47,7 @@
 #include "distrib/message.h"
 #include "distrib/tcp.h"
 #include "parser/parser.h"
+#include "trace/pattern.h"
 
 namespace povwall::distrib {
 namespace {
@@ -681,6 +682,7 @@ class Worker {
         const json& j = job_;
         parser::ParseOptions popts;
         popts.image_reader = options_.image_reader;
+        popts.function_hooks = trace::parse_time_function_hooks();
         popts.write_user_files = false;  // the coordinator's parse writes them
         popts.library_paths = j.at("library_paths").get<std::vector<std::string>>();
         popts.declares = j.at("declares").get<std::map<std::string, double>>();

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/function.h"
 #include "parser/source.h"
 #include "parser/value.h"
 
@@ -67,11 +68,7 @@ inline bool apply_to_floats(BinaryOpCode code, Numeric& a, const Numeric& b) {
 
 // The built-in functions of floats (`sin(A)`, `pow(A, B)`): arguments are full
 // expressions, commas between them optional; each contributes its first element.
-struct FloatFunction {
-    std::string_view name;
-    int arity;
-    double (*fn)(const double*);
-};
+using FloatFunction = FloatBuiltin;
 const FloatFunction* find_float_function(std::string_view name);  // null: not one
 
 struct ExpressionProgram {

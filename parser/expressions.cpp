@@ -141,39 +141,7 @@ Numeric apply_binary(BinaryOpCode code, const Numeric& a, const Numeric& b) {
 }
 
 const FloatFunction* find_float_function(std::string_view name) {
-    using F = FloatFunction;
-    static const F kFunctions[] = {
-        {"abs", 1, [](const double* a) { return std::fabs(a[0]); }},
-        {"acos", 1, [](const double* a) { return std::acos(a[0]); }},
-        {"acosh", 1, [](const double* a) { return std::acosh(a[0]); }},
-        {"asin", 1, [](const double* a) { return std::asin(a[0]); }},
-        {"asinh", 1, [](const double* a) { return std::asinh(a[0]); }},
-        {"atan", 1, [](const double* a) { return std::atan(a[0]); }},
-        {"atanh", 1, [](const double* a) { return std::atanh(a[0]); }},
-        {"ceil", 1, [](const double* a) { return std::ceil(a[0]); }},
-        {"cos", 1, [](const double* a) { return std::cos(a[0]); }},
-        {"cosh", 1, [](const double* a) { return std::cosh(a[0]); }},
-        {"degrees", 1, [](const double* a) { return a[0] * 180 / kPi; }},
-        {"radians", 1, [](const double* a) { return a[0] * kPi / 180; }},
-        {"exp", 1, [](const double* a) { return std::exp(a[0]); }},
-        {"floor", 1, [](const double* a) { return std::floor(a[0]); }},
-        {"int", 1, [](const double* a) { return std::trunc(a[0]); }},
-        {"ln", 1, [](const double* a) { return std::log(a[0]); }},
-        {"log", 1, [](const double* a) { return std::log10(a[0]); }},
-        {"sin", 1, [](const double* a) { return std::sin(a[0]); }},
-        {"sinh", 1, [](const double* a) { return std::sinh(a[0]); }},
-        {"sqrt", 1, [](const double* a) { return std::sqrt(a[0]); }},
-        {"tan", 1, [](const double* a) { return std::tan(a[0]); }},
-        {"tanh", 1, [](const double* a) { return std::tanh(a[0]); }},
-        {"atan2", 2, [](const double* a) { return std::atan2(a[0], a[1]); }},
-        {"pow", 2, [](const double* a) { return std::pow(a[0], a[1]); }},
-        {"mod", 2, [](const double* a) { return std::fmod(a[0], a[1]); }},
-        {"div", 2, [](const double* a) { return std::trunc(a[0] / a[1]); }},
-    };
-    for (const F& f : kFunctions) {
-        if (f.name == name) return &f;
-    }
-    return nullptr;
+    return find_float_builtin(name);
 }
 
 const char* type_name(const Value& v) {
@@ -220,6 +188,8 @@ const char* type_name(const Value& v) {
             return "file";
         case 20:
             return "spline";
+        case 21:
+            return "function";
     }
     return "value";
 }
@@ -411,6 +381,11 @@ Value ExpressionParser::word(const Token& t) {
             sp && in_.raw_next_is_punct('(')) {
             std::shared_ptr<const Spline> keep = *sp;
             return in_.call_spline(*keep);
+        }
+        if (auto fn = std::get_if<std::shared_ptr<const FunctionProgram>>(v);
+            fn && in_.raw_next_is_punct('(')) {
+            std::shared_ptr<const FunctionProgram> keep = *fn;
+            return in_.call_function(t, *keep);
         }
         Value value = *v;
         while (auto arr = std::get_if<std::shared_ptr<ArrayValue>>(&value)) {

@@ -153,6 +153,10 @@ class Interpreter {
     // `spline { ... }` after the keyword, and a call `S(p [, kind])` after `S`.
     std::shared_ptr<const Spline> parse_spline_block();
     Numeric call_spline(const Spline& s);
+    // `function [(params)] { ... }` after the keyword, and a call `F(a, ...)` after `F`
+    // (functions.cpp).
+    std::shared_ptr<const FunctionProgram> parse_function_block(bool inline_form = false);
+    Numeric call_function(const Token& name, const FunctionProgram& f);
     Camera finish_camera(const CameraSpec& spec);
     SkySphere parse_sky_sphere();
     Fog parse_fog();
@@ -282,6 +286,7 @@ class Interpreter {
     std::vector<std::string> element_names_;  // rotating names bound to array elements
     size_t next_element_name_ = 0;
     friend class ExpressionParser;
+    friend class FunctionCompiler;
 
     // Expressions inside loops and macros, compiled once per position
     // (expression_program.h). True with `out` set when a program ran in place of the

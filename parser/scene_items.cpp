@@ -676,6 +676,7 @@ Value Interpreter::parse_item_value(const Token& t) {
             return std::make_shared<LayeredTexture>(std::move(layers));
         }
         if (w == "spline") return parse_spline_block();
+        if (w == "function") return parse_function_block();
         if (w == "sky_sphere") return std::make_shared<SkySphere>(parse_sky_sphere());
         if (w == "fog") return std::make_shared<Fog>(parse_fog());
         if (w == "pigment") return std::make_shared<Pigment>(parse_pigment_block());
@@ -740,14 +741,14 @@ Value Interpreter::parse_item_value(const Token& t) {
             return a;
         }
         static constexpr std::string_view kUnsupportedItems[] = {
-            "function",      "media",         "density",      "rainbow",
-            "photons",       "radiosity",     "max_extent",   "min_extent",
-            "pigment_map",   "normal_map",    "texture_map",  "density_map",
-            "slope_map",     "material_map",  "text",         "lathe",
-            "sor",           "prism",         "blob",         "isosurface",
-            "parametric",    "julia_fractal", "height_field", "superellipsoid",
-            "bicubic_patch", "quadric",       "quartic",      "poly",
-            "cubic",         "sphere_sweep",  "ovus",         "lemon"};
+            "media",         "density",      "rainbow",        "photons",
+            "radiosity",     "max_extent",   "min_extent",     "pigment_map",
+            "normal_map",    "texture_map",  "density_map",    "slope_map",
+            "material_map",  "text",         "lathe",          "sor",
+            "prism",         "blob",         "isosurface",     "parametric",
+            "julia_fractal", "height_field", "superellipsoid", "bicubic_patch",
+            "quadric",       "quartic",      "poly",           "cubic",
+            "sphere_sweep",  "ovus",         "lemon"};
         for (std::string_view item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }

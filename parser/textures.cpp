@@ -50,10 +50,10 @@ constexpr PatternName kPatterns[] = {
 
 bool is_unsupported_pattern(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "material_map", "function",     "object",          "slope",
-        "aoi",          "density_file", "facets",          "pavement",
-        "tiling",       "julia",        "magnet",          "image_pattern",
-        "tiles",        "proportion",   "pigment_pattern", "gradient_map"};
+        "material_map", "object",          "slope",         "aoi",
+        "density_file", "facets",          "pavement",      "tiling",
+        "julia",        "magnet",          "image_pattern", "tiles",
+        "proportion",   "pigment_pattern", "gradient_map"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -175,6 +175,13 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
     if (t.kind != TokenKind::Word) return false;
     std::string_view w = t.text;
     if (is_unsupported_pattern(w)) unsupported(t, w);
+    if (w == "function") {
+        // `function { EXPR }` of x, y, z (a declared function is called inside it:
+        // `function { F(x, y, z) }`).
+        spec.kind = PatternKind::Function;
+        spec.function = parse_function_block(true);
+        return true;
+    }
     for (const auto& p : kPatterns) {
         if (w != p.name) continue;
         spec.kind = p.kind;

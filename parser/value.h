@@ -57,7 +57,8 @@ using Value = std::variant<
     std::shared_ptr<Light>, std::shared_ptr<ArrayValue>, std::shared_ptr<Transform>,
     std::shared_ptr<Macro>, std::shared_ptr<Material>, std::shared_ptr<ColourMap>,
     std::shared_ptr<SkySphere>, std::shared_ptr<Fog>, std::shared_ptr<UnsupportedValue>,
-    std::shared_ptr<UserFile>, std::shared_ptr<const Spline>>;
+    std::shared_ptr<UserFile>, std::shared_ptr<const Spline>,
+    std::shared_ptr<const FunctionProgram>>;
 
 struct ArrayValue {
     std::vector<int> dims;

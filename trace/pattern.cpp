@@ -382,6 +382,11 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
             return checker(p);
         case PatternKind::Crackle:
             return crackle(s, p, gen);
+        case PatternKind::Function: {
+            const double args[3] = {p.x, p.y, p.z};
+            const Real r = evaluate_function(*s.function, args, function_hooks(env));
+            return r > 1.0 ? std::fmod(r, 1.0) : r;  // POV-Ray wraps only above 1
+        }
         case PatternKind::Cells:
             return std::min(
                 pattern_random(size_t(hash3d(int(std::floor(p.x + kEpsilon)),
@@ -585,6 +590,36 @@ Real value_at(const PatternSpec& spec, const Point3& p, const PatternEnv& env) {
 }
 
 }  // namespace detail
+
+namespace {
+
+Real pattern_hook(const PatternSpec& spec, const Point3& p, const void* context) {
+    return evaluate_pattern(spec, p, *static_cast<const PatternEnv*>(context));
+}
+
+void pigment_hook(const Pigment& pigment, const Point3& p, const void* context,
+                  float out[5]) {
+    const Colour c =
+        evaluate_pigment(pigment, p, *static_cast<const PatternEnv*>(context));
+    out[0] = c.rgb.r, out[1] = c.rgb.g, out[2] = c.rgb.b;
+    out[3] = c.filter, out[4] = c.transmit;
+}
+
+}  // namespace
+
+FunctionHooks function_hooks(const PatternEnv& env) {
+    FunctionHooks h;
+    h.pattern = pattern_hook;
+    h.pigment = pigment_hook;
+    h.context = &env;
+    h.noise_generator = env.noise_generator;
+    return h;
+}
+
+FunctionHooks parse_time_function_hooks() {
+    static const PatternEnv kDefaults;
+    return function_hooks(kDefaults);
+}
 
 Real evaluate_pattern(const PatternSpec& spec, const Point3& world,
                       const PatternEnv& env) {

@@ -27,6 +27,12 @@ struct PatternEnv {
     int number_of_waves = 10;
 };
 
+// What user functions (core/function.h) call to evaluate `pattern { }` and `pigment { }`
+// functions with `env`'s settings; `env` must outlive their use.
+FunctionHooks function_hooks(const PatternEnv& env);
+// The same with the default settings (noise_generator 2), for SDL calls while parsing.
+FunctionHooks parse_time_function_hooks();
+
 // The pattern's value at `world` (after warps, wave type, frequency and phase).
 // Continuous patterns give [0,1]; checker/brick give 0 or 1, hexagon 0, 1 or 2.
 Real evaluate_pattern(const PatternSpec& spec, const Point3& world,

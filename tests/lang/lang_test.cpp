@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "parser/parser.h"
+#include "trace/pattern.h"
 
 namespace povwall::parser {
 namespace {
@@ -24,6 +25,8 @@ std::string debug_output(const std::string& name) {
     std::ostringstream messages;
     ParseOptions o;
     o.messages = &messages;
+    o.function_hooks =
+        trace::parse_time_function_hooks();  // pattern and pigment functions
     // Files the fixtures write (#fopen) go to a scratch folder.
     const auto scratch =
         std::filesystem::temp_directory_path() / ("povwall_lang_" + name);
@@ -47,8 +50,8 @@ TEST_P(LangFixture, DebugOutputMatchesPovRay) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
-                         ::testing::Values("expressions", "directives", "colours", "splines",
-                                           "fileio"));
+                         ::testing::Values("expressions", "directives", "colours",
+                                           "splines", "functions", "fileio"));
 
 }  // namespace
 }  // namespace povwall::parser

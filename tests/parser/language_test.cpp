@@ -312,6 +312,43 @@ Use()
     EXPECT_EQ(s.objects[0].transform.point({0, 0, 0}), (Vector3{2, 0, 0}));
 }
 
+// Function-language errors are located; an internal function povwall lacks stops only a
+// scene that uses it (functions.inc declares all of them).
+TEST(Functions, LocatedErrorsAndTolerance) {
+    auto first_line = [](const std::string& text) {
+        const std::string e = error_of(text);
+        return e.substr(0, e.find('\n'));
+    };
+    EXPECT_EQ(first_line("#declare F = function(a) { a }\n#declare B = F(1, 2);"),
+              "test.pov:2:14: error: 'F' takes 1 argument, not 2");
+    EXPECT_EQ(first_line("#declare P = function { pigment { rgb 1 } }\n"
+                         "#declare G = function { P(x, y, z) + 1 }"),
+              "test.pov:2:25: error: 'P' returns a vector: follow the call with a "
+              "component, such as .x");
+    EXPECT_EQ(first_line("#declare G = function { foo + 1 }"),
+              "test.pov:1:25: error: 'foo' is not a parameter, float or function here");
+    EXPECT_EQ(first_line("#declare V = <1, 2, 3>;\n#declare G = function { V * x }"),
+              "test.pov:2:25: error: a function works on floats: 'V' is a vector");
+    EXPECT_EQ(first_line("#declare G = function { min(x) }"),
+              "test.pov:1:25: error: 'min' takes two or more arguments");
+    std::string deep = "#declare G = function { ";
+    for (int i = 0; i < 150; ++i) deep += "1 + (";
+    deep += "x" + std::string(150, ')') + " }";
+    EXPECT_EQ(first_line(deep).substr(0, 45),
+              "test.pov:1:667: error: function too deeply ne");
+    // Declared but unused: no error; used: unsupported, at the use.
+    EXPECT_EQ(first_line("#declare F = function { internal(3) }\nsphere { 0, 1 }"),
+              "(no error)");
+    EXPECT_EQ(
+        first_line("#declare F = function { internal(3) }\nsphere { 0, F(1, 2, 3) }"),
+        "test.pov:2:13: error: unsupported: function { internal(3) }");
+    // A scene including functions.inc and math.inc parses, and their functions work.
+    std::string out;
+    parse("#include \"math.inc\"\n#debug str(f_r(1, 2, 2) + sind(30) + f_sqr(3), 0, 6)",
+          &out);
+    EXPECT_EQ(out, "12.500000");
+}
+
 TEST(Lexer, NestedCommentsAndStrayHash) {
     std::string out;
     parse("/* a /* nested */ still comment */ #debug \"x\" // line\n#\n#debug \"y\"\n",

@@ -1,0 +1,107 @@
+// User functions (`function { ... }`), compiled by the parser into a small stack program
+// over doubles and run wherever they are needed: SDL calls while parsing, the function
+// pattern while rendering. Plain data; no allocation and no virtual call per evaluation.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/math.h"
+#include "core/spline.h"
+
+namespace povwall {
+
+struct PatternSpec;
+struct Pigment;
+struct Colour;
+
+// Patterns and pigments are evaluated in trace/, which core cannot call: the caller
+// passes these hooks (null: such a function gives 0).
+struct FunctionHooks {
+    Real (*pattern)(const PatternSpec& spec, const Point3& p,
+                    const void* context) = nullptr;
+    // The pigment's rgbft at `p`, written to `out`.
+    void (*pigment)(const Pigment& pigment, const Point3& p, const void* context,
+                    float out[5]) = nullptr;
+    const void* context = nullptr;
+    int noise_generator = 2;  // global_settings noise_generator, for f_noise3d
+};
+
+// The float built-ins shared by SDL expressions and the function language (`sin(A)`,
+// `pow(A, B)`).
+struct FloatBuiltin {
+    std::string_view name;
+    int arity;
+    double (*fn)(const double*);
+};
+const FloatBuiltin* find_float_builtin(std::string_view name);  // null: not one
+
+struct FunctionProgram {
+    enum class Op : uint8_t {
+        Constant,   // push constants[index]
+        Parameter,  // push args[index]
+        Add,
+        Subtract,
+        Multiply,
+        Divide,
+        Negate,
+        // POV-Ray's three-way comparison: an unordered pair (NaN) compares as greater.
+        Less,
+        LessEqual,
+        Equal,
+        NotEqual,
+        GreaterEqual,
+        Greater,
+        And,
+        Or,
+        Builtin,  // builtins[index], with its arity of operands
+        Int,
+        Div,  // C's cast to a 32-bit int (of the operand, of a / b)
+        Min,
+        Max,               // two operands; min takes a NaN, max keeps the running value
+        Select3,           // select(a, b, c): a < 0 ? b : c
+        Select4,           // select(a, b, c, d): a < 0 ? b : a == 0 ? c : d
+        Call,              // callees[index] with its parameter count of operands
+        SplineComponent,   // splines[index] at the operand, component `component`
+        Pattern,           // patterns[index] at the three operands
+        PigmentComponent,  // pigments[index] at the three operands; component 5: gray
+        Internal,          // functions.inc's internal(index), 3 + internal_extra(index)
+    };
+    struct Instruction {
+        Op op;
+        uint8_t component = 0;
+        uint32_t index = 0;
+    };
+    std::vector<Instruction> code;
+    std::vector<double> constants;
+    std::vector<const FloatBuiltin*> builtins;
+    std::vector<std::string> parameter_names;  // x, y, z unless the scene names them
+    std::vector<std::shared_ptr<const FunctionProgram>> callees;
+    std::vector<std::shared_ptr<const Spline>> splines;
+    std::vector<std::shared_ptr<const PatternSpec>> patterns;
+    std::vector<std::shared_ptr<const Pigment>> pigments;
+    int stack_size = 0;  // deepest operand stack the code reaches
+    // Vector functions (their code is empty): `function { spline { ... } }` of one
+    // parameter, `function { pigment { ... } }` of x, y, z (rgbft).
+    std::shared_ptr<const Spline> spline;
+    std::shared_ptr<const Pigment> pigment;
+
+    int parameter_count() const { return int(parameter_names.size()); }
+};
+
+// Deeper programs are refused when compiled, so evaluation needs no allocation.
+constexpr int kMaxFunctionStack = 128;
+constexpr int kMaxFunctionParameters = 56;  // POV-Ray's limit
+
+// functions.inc's internal(n) that povwall has: how many parameters after x, y, z;
+// -1 for the others.
+int internal_extra(int n);
+
+// Runs `f` (a float function) on parameter_count() arguments.
+double evaluate_function(const FunctionProgram& f, const double* args,
+                         const FunctionHooks& hooks);
+
+}  // namespace povwall
