@@ -179,6 +179,30 @@ double evaluate_function(const FunctionProgram& f, const double* args,
                 ++top;
                 break;
             }
+            case Op::TransformComponent: {
+                top -= 3;
+                const Point3 p = f.transforms[in.index]->point(
+                    Point3(stack[top], stack[top + 1], stack[top + 2]));
+                stack[top] = in.component == 0 ? p.x : in.component == 1 ? p.y : p.z;
+                ++top;
+                break;
+            }
+            case Op::Sum:
+            case Op::Product: {
+                const FunctionProgram& body = *f.callees[in.index];
+                const int n = f.parameter_count();
+                double a[kMaxFunctionParameters + 1];
+                for (int i = 0; i < n; ++i) a[i] = args[i];
+                top -= 2;
+                const double hi = stack[top + 1];
+                double acc = in.op == Op::Sum ? 0.0 : 1.0;
+                for (a[n] = stack[top]; a[n] <= hi; a[n] += 1) {
+                    const double v = evaluate_function(body, a, hooks);
+                    acc = in.op == Op::Sum ? acc + v : acc * v;
+                }
+                stack[top++] = acc;
+                break;
+            }
             default: {
                 const double b = stack[--top];
                 double& a = stack[top - 1];

@@ -61,14 +61,19 @@ struct FunctionProgram {
         Int,
         Div,  // C's cast to a 32-bit int (of the operand, of a / b)
         Min,
-        Max,               // two operands; min takes a NaN, max keeps the running value
-        Select3,           // select(a, b, c): a < 0 ? b : c
-        Select4,           // select(a, b, c, d): a < 0 ? b : a == 0 ? c : d
-        Call,              // callees[index] with its parameter count of operands
-        SplineComponent,   // splines[index] at the operand, component `component`
-        Pattern,           // patterns[index] at the three operands
-        PigmentComponent,  // pigments[index] at the three operands; component 5: gray
-        Internal,          // functions.inc's internal(index), 3 + internal_extra(index)
+        Max,                 // two operands; min takes a NaN, max keeps the running value
+        Select3,             // select(a, b, c): a < 0 ? b : c
+        Select4,             // select(a, b, c, d): a < 0 ? b : a == 0 ? c : d
+        Call,                // callees[index] with its parameter count of operands
+        SplineComponent,     // splines[index] at the operand, component `component`
+        Pattern,             // patterns[index] at the three operands
+        PigmentComponent,    // pigments[index] at the three operands; component 5: gray
+        Internal,            // functions.inc's internal(index), 3 + internal_extra(index)
+        TransformComponent,  // transforms[index] of the three operands, `component`
+        // sum/prod(i, lo, hi, body): callees[index] (this function's parameters and i)
+        // for i = lo, lo + 1, ... while i <= hi; pops lo and hi
+        Sum,
+        Product,
     };
     struct Instruction {
         Op op;
@@ -83,11 +88,14 @@ struct FunctionProgram {
     std::vector<std::shared_ptr<const Spline>> splines;
     std::vector<std::shared_ptr<const PatternSpec>> patterns;
     std::vector<std::shared_ptr<const Pigment>> pigments;
+    std::vector<std::shared_ptr<const Transform>> transforms;
     int stack_size = 0;  // deepest operand stack the code reaches
     // Vector functions (their code is empty): `function { spline { ... } }` of one
-    // parameter, `function { pigment { ... } }` of x, y, z (rgbft).
+    // parameter, `function { pigment { ... } }` of x, y, z (rgbft), `function {
+    // transform { ... } }` of x, y, z (the transformed point).
     std::shared_ptr<const Spline> spline;
     std::shared_ptr<const Pigment> pigment;
+    std::shared_ptr<const Transform> transform;
 
     int parameter_count() const { return int(parameter_names.size()); }
 };

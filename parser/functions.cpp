@@ -6,7 +6,8 @@
 // identifiers (their value when the function is declared), pi and the frame values, the
 // float built-ins (int and div cast to a 32-bit int), min/max of two or more arguments,
 // select with 3 or 4, other user functions (a vector function needs a member:
-// `F(x).y`), functions.inc's internal(N) that povwall has, and POV-Ray's operators with
+// `F(x).y`), sum and prod, functions.inc's internal(N) that povwall has, and POV-Ray's
+// operators with
 // its precedence: |, &, comparisons, + -, * /, one unary sign. No ?: and no !.
 #include <cmath>
 
@@ -173,6 +174,30 @@ class FunctionCompiler {
         emit(Op::SplineComponent, uint32_t(f_.splines.size() - 1), uint8_t(c), 1);
     }
 
+    // sum(i, lo, hi, EXPR) / prod(...): EXPR is its own program of this function's
+    // parameters and i.
+    void sum_or_product(const Token& t) {
+        in_.expect_punct('(', "after ", t.text);
+        const Token var = in_.next_raw();
+        if (var.kind != TokenKind::Word) in_.expected("the name of the counter", var);
+        in_.expect_punct(',', "after the counter");
+        conditional();
+        in_.expect_punct(',', "after the first value");
+        conditional();
+        in_.expect_punct(',', "after the last value");
+        auto body = std::make_shared<FunctionProgram>();
+        body->parameter_names = f_.parameter_names;
+        body->parameter_names.emplace_back(var.text);
+        if (body->parameter_count() > kMaxFunctionParameters)
+            in_.error(var, "too many parameters and counters (limit " +
+                               std::to_string(kMaxFunctionParameters) + ")");
+        FunctionCompiler(in_, *body).expression();
+        in_.expect_punct(')', "to close ", t.text);
+        f_.callees.push_back(std::move(body));
+        emit(t.text == "sum" ? Op::Sum : Op::Product, uint32_t(f_.callees.size() - 1), 0,
+             2);
+    }
+
     void primary() {
         const Token t = in_.next();
         if (t.kind == TokenKind::Number) return constant(t.number);
@@ -209,6 +234,14 @@ class FunctionCompiler {
             if (auto fn = std::get_if<std::shared_ptr<const FunctionProgram>>(v)) {
                 const std::shared_ptr<const FunctionProgram> callee = *fn;
                 if (callee->spline) return spline_call(t, callee->spline);
+                if (callee->transform) {
+                    argument_count(t, arguments(t), 3);
+                    const int c = member(t);
+                    if (c > 2) in_.error(t, "a transform function has x, y and z only");
+                    f_.transforms.push_back(callee->transform);
+                    return emit(Op::TransformComponent,
+                                uint32_t(f_.transforms.size() - 1), uint8_t(c), 3);
+                }
                 if (callee->pigment) {
                     argument_count(t, arguments(t), 3);
                     const int c = member(t);
@@ -270,7 +303,7 @@ class FunctionCompiler {
             f_.builtins.push_back(b);
             return emit(Op::Builtin, uint32_t(f_.builtins.size() - 1), 0, b->arity);
         }
-        if (w == "sum" || w == "prod") in_.unsupported(t, "function " + std::string(w));
+        if (w == "sum" || w == "prod") return sum_or_product(t);
         in_.error(t,
                   "'" + std::string(w) + "' is not a parameter, float or function here");
     }
@@ -354,7 +387,10 @@ std::shared_ptr<const FunctionProgram> Interpreter::parse_function_block(
         f->code.push_back({Op::Internal, 0, uint32_t(n)});
         f->stack_size = 3 + extra;
     } else if (!inline_form && is_word(first, "transform")) {
-        unsupported(first, "transform function");
+        next();
+        no_parameters("transform");
+        expect_punct('{', "after transform");
+        f->transform = std::make_shared<Transform>(parse_transform_block());
     } else {
         FunctionCompiler(*this, *f).expression();
     }
@@ -387,6 +423,10 @@ Numeric Interpreter::call_function(const Token& name, const FunctionProgram& f) 
         r.colour = r.size == 5;
         for (int i = 0; i < 5; ++i) r.c[i] = v[size_t(i)];
         return r;
+    }
+    if (f.transform) {
+        return Numeric::vector(
+            Vector3(f.transform->point(Point3(args[0], args[1], args[2]))));
     }
     if (f.pigment) {
         const FunctionHooks& h = options_.function_hooks;

@@ -53,4 +53,14 @@ Show("pigment", PigUse(0.3, 0, 0))
 #declare SU = function { S(x).y + S(x).z * 10 }
 Show("spline", SU(0.25, 0, 0))
 #debug concat("spline call ", vstr(3, S(0.5), " ", 0, 9), "\n")
+#declare Tr = function { transform { scale 2 translate x rotate 30 * z } }
+#declare TrUse = function { Tr(x, y, z).x + Tr(x, y, z).y * 10 + Tr(x, y, z).z * 100 }
+Show("transform", TrUse(1, 2, 3))
+#debug concat("transform call ", vstr(3, Tr(1, 2, 3), " ", 0, 12), "\n")
+#declare Sums = function(a) { sum(i, 1, a, i * i) + prod(k, 0.5, 3, k) * 1000 + sum(j, 3, 1, 9) }
+Show("sum prod", Sums(4))
+#declare Nested = function { sum(i, 1, 3, sum(j, 1, i, i * 10 + j + x)) }
+Show("nested sum", Nested(0.5, 0, 0))
+#declare Shadow = function { sum(x, 1, 2, x) }
+Show("shadowed counter", Shadow(7, 0, 0))
 #debug "END\n"
