@@ -1,7 +1,9 @@
 // Expressions: precedence climbing over floats, vectors, colours and strings, with
 // POV-Ray's built-in functions and constants.
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 
 #include "core/noise.h"
@@ -602,8 +604,15 @@ Value ExpressionParser::word(const Token& t) {
         in_.expect_punct(')');
         return Numeric::scalar(r);
     }
+    if (w == "now") {
+        // Days since 2000-01-01 00:00 UTC, as POV-Ray's `now`.
+        const double seconds = std::chrono::duration<double>(
+                                   std::chrono::system_clock::now().time_since_epoch())
+                                   .count();
+        return Numeric::scalar((seconds - 946684800.0) / 86400.0);
+    }
     if (w == "str" || w == "chr" || w == "concat" || w == "substr" || w == "strupr" ||
-        w == "strlwr" || w == "vstr") {
+        w == "strlwr" || w == "vstr" || w == "datetime") {
         in_.unget(t);
         return in_.parse_string();
     }
@@ -613,8 +622,8 @@ Value ExpressionParser::word(const Token& t) {
         in_.unget(t);
         return in_.parse_colour();
     }
-    static constexpr std::string_view kUnsupportedFunctions[] = {
-        "trace", "inside", "eval_pigment", "now", "datetime"};
+    static constexpr std::string_view kUnsupportedFunctions[] = {"trace", "inside",
+                                                                 "eval_pigment"};
     for (std::string_view f : kUnsupportedFunctions) {
         if (w == f) in_.unsupported(t, w);
     }
@@ -707,6 +716,26 @@ std::string Interpreter::parse_string() {
                               std::abs(width), prec, v);
             }
             return buf;
+        }
+        if (w == "datetime") {
+            // datetime(DAYS [, FORMAT]): DAYS since 2000-01-01 00:00 UTC through
+            // strftime, in UTC.
+            expect_punct('(');
+            const Token at = peek();
+            const double days = parse_float();
+            std::string format = "%Y-%m-%d %H:%M:%SZ";
+            if (accept_punct(',')) format = parse_string();
+            expect_punct(')');
+            const double secs = std::floor(days * 86400.0 + 946684800.0);
+            if (!(std::fabs(secs) < 1e15))
+                error(at, "datetime: the time is out of range");
+            const std::time_t when = std::time_t(secs);
+            std::tm tm{};
+            gmtime_r(&when, &tm);
+            char buf[512];
+            const size_t n =
+                format.empty() ? 0 : std::strftime(buf, sizeof buf, format.c_str(), &tm);
+            return std::string(buf, n);
         }
         if (w == "vstr") {
             expect_punct('(');

@@ -357,7 +357,7 @@ bool Interpreter::starts_float(const Token& t) {
         "vdot",         "vlength",     "image_width", "image_height",
         "frame_number", "clock_delta", "version",     "strlen",
         "val",          "asc",         "defined",     "dimension_size",
-        "seed"};
+        "now",          "seed"};
     for (std::string_view w : kFloatWords) {
         if (t.text == w) return true;
     }

@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -347,6 +348,20 @@ TEST(Functions, LocatedErrorsAndTolerance) {
     parse("#include \"math.inc\"\n#debug str(f_r(1, 2, 2) + sind(30) + f_sqr(3), 0, 6)",
           &out);
     EXPECT_EQ(out, "12.500000");
+}
+
+// `now` and datetime(): days since 2000-01-01 UTC (the strings are what povray 3.7.0.10
+// printed for the same calls).
+TEST(Expressions, NowAndDatetime) {
+    std::string out;
+    parse(
+        "#debug concat(datetime(0), \"|\", datetime(1.5, \"%Y/%m/%d %H:%M\"), \"|\", "
+        "datetime(9832.25))",
+        &out);
+    EXPECT_EQ(out, "2000-01-01 00:00:00Z|2000/01/02 12:00|2026-12-02 06:00:00Z");
+    parse("#debug str(now, 0, 6)", &out);
+    const double days = (double(std::time(nullptr)) - 946684800.0) / 86400.0;
+    EXPECT_NEAR(std::stod(out), days, 0.01);
 }
 
 TEST(Lexer, NestedCommentsAndStrayHash) {
