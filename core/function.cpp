@@ -197,6 +197,10 @@ double evaluate_function(const FunctionProgram& f, const double* args,
                 const double hi = stack[top + 1];
                 double acc = in.op == Op::Sum ? 0.0 : 1.0;
                 for (a[n] = stack[top]; a[n] <= hi; a[n] += 1) {
+                    if (hooks.iterations_left && (*hooks.iterations_left)-- == 0) {
+                        *hooks.iterations_left = 0;
+                        break;
+                    }
                     const double v = evaluate_function(body, a, hooks);
                     acc = in.op == Op::Sum ? acc + v : acc * v;
                 }

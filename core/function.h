@@ -28,6 +28,9 @@ struct FunctionHooks {
                     float out[5]) = nullptr;
     const void* context = nullptr;
     int noise_generator = 2;  // global_settings noise_generator, for f_noise3d
+    // When set, sum/prod iterations left; at 0 every loop stops (a parse-time call
+    // reports it instead of hanging on `sum(i, 0, 1e18, i)`).
+    uint64_t* iterations_left = nullptr;
 };
 
 // The float built-ins shared by SDL expressions and the function language (`sin(A)`,
@@ -90,6 +93,7 @@ struct FunctionProgram {
     std::vector<std::shared_ptr<const Pigment>> pigments;
     std::vector<std::shared_ptr<const Transform>> transforms;
     int stack_size = 0;  // deepest operand stack the code reaches
+    int call_depth = 1;  // nested evaluate_function calls one evaluation makes
     // Vector functions (their code is empty): `function { spline { ... } }` of one
     // parameter, `function { pigment { ... } }` of x, y, z (rgbft), `function {
     // transform { ... } }` of x, y, z (the transformed point).
@@ -103,6 +107,8 @@ struct FunctionProgram {
 // Deeper programs are refused when compiled, so evaluation needs no allocation.
 constexpr int kMaxFunctionStack = 128;
 constexpr int kMaxFunctionParameters = 56;  // POV-Ray's limit
+// Functions calling functions: each level is a C++ frame of about 1.2 KB.
+constexpr int kMaxFunctionCallDepth = 1000;
 
 // functions.inc's internal(n) that povwall has: how many parameters after x, y, z;
 // -1 for the others.

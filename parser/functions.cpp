@@ -9,6 +9,7 @@
 // `F(x).y`), sum and prod, functions.inc's internal(N) that povwall has, and POV-Ray's
 // operators with
 // its precedence: |, &, comparisons, + -, * /, one unary sign. No ?: and no !.
+#include <algorithm>
 #include <cmath>
 
 #include "parser/interpreter.h"
@@ -37,6 +38,13 @@ class FunctionCompiler {
     void expression() { conditional(); }
 
   private:
+    // A call of `callee` from this function.
+    void calls(const FunctionProgram& callee) {
+        f_.call_depth = std::max(f_.call_depth, callee.call_depth + 1);
+        if (f_.call_depth > kMaxFunctionCallDepth)
+            in_.error(in_.peek(), "functions call each other too deeply (limit " +
+                                      std::to_string(kMaxFunctionCallDepth) + ")");
+    }
     void emit(Op op, uint32_t index = 0, uint8_t component = 0, int pops = 0,
               int pushes = 1) {
         f_.code.push_back({op, component, index});
@@ -193,6 +201,7 @@ class FunctionCompiler {
                                std::to_string(kMaxFunctionParameters) + ")");
         FunctionCompiler(in_, *body).expression();
         in_.expect_punct(')', "to close ", t.text);
+        calls(*body);
         f_.callees.push_back(std::move(body));
         emit(t.text == "sum" ? Op::Sum : Op::Product, uint32_t(f_.callees.size() - 1), 0,
              2);
@@ -251,6 +260,7 @@ class FunctionCompiler {
                 }
                 const int got = arguments(t);
                 argument_count(t, got, callee->parameter_count());
+                calls(*callee);
                 f_.callees.push_back(callee);
                 emit(Op::Call, uint32_t(f_.callees.size() - 1), 0, got);
                 return;
@@ -440,7 +450,15 @@ Numeric Interpreter::call_function(const Token& name, const FunctionProgram& f) 
         for (int i = 0; i < 5; ++i) r.c[i] = double(c[i]);
         return r;
     }
-    return Numeric::scalar(evaluate_function(f, args, options_.function_hooks));
+    FunctionHooks hooks = options_.function_hooks;
+    uint64_t left = options_.max_loop_iterations;
+    hooks.iterations_left = &left;
+    const double v = evaluate_function(f, args, hooks);
+    if (left == 0)
+        error(name, "sum/prod in '" + std::string(name.text) + "' ran more than " +
+                        std::to_string(options_.max_loop_iterations) +
+                        " iterations (--max-loop-iterations)");
+    return Numeric::scalar(v);
 }
 
 }  // namespace povwall::parser

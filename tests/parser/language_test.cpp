@@ -337,6 +337,18 @@ TEST(Functions, LocatedErrorsAndTolerance) {
     deep += "x" + std::string(150, ')') + " }";
     EXPECT_EQ(first_line(deep).substr(0, 45),
               "test.pov:1:667: error: function too deeply ne");
+    // Runaway loops and call chains are located errors, not hangs or stack overflows.
+    EXPECT_EQ(first_line("#declare F = function { sum(i, 0, 1e18, i) }\n"
+                         "#declare A = F(0, 0, 0);"),
+              "test.pov:2:14: error: sum/prod in 'F' ran more than 10000000 iterations "
+              "(--max-loop-iterations)");
+    std::string chain = "#declare F0 = function { x }\n";
+    for (int i = 1; i < 1100; ++i)
+        chain += "#declare F" + std::to_string(i) + " = function { F" +
+                 std::to_string(i - 1) + "(x, y, z) + 1 }\n";
+    EXPECT_EQ(
+        first_line(chain),
+        "test.pov:1001:43: error: functions call each other too deeply (limit 1000)");
     // Declared but unused: no error; used: unsupported, at the use.
     EXPECT_EQ(first_line("#declare F = function { internal(3) }\nsphere { 0, 1 }"),
               "(no error)");
