@@ -75,9 +75,9 @@ struct Box {
     std::atomic<bool> busy{false};
     WorkQueue<Item> queue;
     ParentTable<WaitingParent> parents;
-    // Scratch for spawn_children. Hand-overs never re-enter a box its thread holds, so
-    // one is enough.
-    trace::ShadingRecord record;
+    // Scratch for spawn_children, one per nesting level of direct hand-overs (a child
+    // traced at once in the same box must not overwrite its parent's record).
+    std::vector<trace::ShadingRecord> records;
     uint64_t next_id = 0;
     BoxStats stats;
 };

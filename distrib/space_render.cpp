@@ -23,8 +23,10 @@ struct WorkerThread {
     uint64_t finished = 0;
 };
 thread_local WorkerThread tl_worker;
-// Each level holds one more box: a few are enough for rays crossing several boxes.
-constexpr int kMaxHandoffDepth = 8;
+// Each level is one item traced inside another's processing (a child in its parent's
+// box, or a ray crossing into a free box): enough for a ray tree of POV-Ray's default
+// depth crossing several boxes; deeper items go through the queues.
+constexpr int kMaxHandoffDepth = 24;
 }  // namespace
 
 uint64_t BoxHost::take_handoffs_finished() {
@@ -146,6 +148,16 @@ void BoxHost::push(Box* current, int dest, Item&& item) {
         return;
     }
     if (current == &d) {
+        if (options_.direct_handoff && tl_worker.depth < kMaxHandoffDepth) {
+            // This thread holds the box: trace the item now, depth first, instead of a
+            // trip through the queue (most children stay in the box that made them).
+            ++tl_worker.depth;
+            process(d, item, tl_worker.index);
+            --tl_worker.depth;
+            ++tl_worker.finished;
+            if (on_processed) on_processed();
+            return;
+        }
         const bool is_result = item.is_result;
         const int depth = is_result ? 255 : item.ray.trace.depth;
         d.queue.push(std::move(item), is_result, depth);
@@ -270,7 +282,10 @@ void BoxHost::process_ray(Box& box, RayItem& ray, int thread) {
         }
         return;
     }
-    trace::ShadingRecord& rec = box.record;
+    // One record per nesting level: a child traced at once reuses the box. Sized once,
+    // before any level holds a reference into it.
+    if (box.records.empty()) box.records.resize(kMaxHandoffDepth + 1);
+    trace::ShadingRecord& rec = box.records[size_t(tl_worker.depth)];
     trace::spawn_children(*box.scene, ray.trace, hit, rec);
     const size_t n = rec.children.size();
     uint64_t id = 0;
@@ -453,6 +468,12 @@ void BoxHost::report_progress() {
 
 void BoxHost::run(int threads, bool emit_camera) {
     const auto t0 = Clock::now();
+    // A box is worked on by one thread at a time: threads beyond the boxes that hold
+    // something only fill inboxes and spin (one box on two threads took twice as long).
+    int busy_boxes = 0;
+    for (size_t b = 0; b < boxes_.size(); ++b)
+        busy_boxes += boxes_[b]->scene && !(b < empty_.size() && empty_[b]);
+    threads = std::clamp(threads, 1, std::max(1, busy_boxes));
     accum_.assign(threads, std::vector<double>(size_t(total_pixels_) * 4));
     std::vector<std::thread> pool;
     for (int i = 1; i < threads; ++i)
