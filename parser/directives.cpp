@@ -385,7 +385,9 @@ void Interpreter::directive_declare(const Token& t, bool local) {
         b.value = std::move(v);
         b.ref_scope = -1;
     } else {
-        declare(key, std::move(v), local, name);
+        // The lexer interned the name already.
+        declare_symbol(name.sym ? name.sym : sources_.intern(key), std::move(v), local,
+                       name);
     }
     accept_semicolon();
 }

@@ -93,7 +93,10 @@ class Interpreter {
     }
     const Value* lookup_symbol(uint32_t sym) const;
     bool is_bound(uint32_t sym) const { return sym < bound_.size() && bound_[sym]; }
-    void declare(const std::string& name, Value v, bool local, const Token& at);
+    void declare(const std::string& name, Value v, bool local, const Token& at) {
+        declare_symbol(sources_.intern(name), std::move(v), local, at);
+    }
+    void declare_symbol(uint32_t sym, Value v, bool local, const Token& at);
 
     // ---- expressions (expressions.cpp)
     Value parse_expression_value();             // float, vector, colour or string

@@ -402,10 +402,19 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
             p = *std::get<std::shared_ptr<Pigment>>(*v);
         }
     }
+    auto is_colour_word = [](std::string_view w) {
+        return w == "color" || w == "colour" || w == "rgb" || w == "rgbf" ||
+               w == "rgbt" || w == "rgbft" || w == "srgb" || w == "srgbf" ||
+               w == "srgbt" || w == "srgbft" || w == "red" || w == "green" ||
+               w == "blue" || w == "filter" || w == "transmit";
+    };
     for (;;) {
         Token t = next();
         if (is_punct(t, terminator)) return;
-        if (try_pattern_keyword(t, p.pattern)) {
+        // Colours first: no pattern keyword or modifier is one, and solid pigments are
+        // the common case (the pattern tables are long).
+        const bool colour = t.kind == TokenKind::Word && is_colour_word(t.text);
+        if (!colour && try_pattern_keyword(t, p.pattern)) {
             // checker/hexagon/brick take their colours or pigments right after the
             // keyword
             if (p.pattern->kind == PatternKind::Checker ||
@@ -433,12 +442,9 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
             }
             continue;
         }
-        if (try_pattern_modifier(t, p.pattern)) continue;
+        if (!colour && try_pattern_modifier(t, p.pattern)) continue;
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
-        if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" ||
-            w == "rgbft" || w == "srgb" || w == "srgbf" || w == "srgbt" ||
-            w == "srgbft" || w == "red" || w == "green" || w == "blue" || w == "filter" ||
-            w == "transmit") {
+        if (colour) {
             unget(t);
             if (p.pattern->kind != PatternKind::Solid)
                 p.pattern.edit().kind = PatternKind::Solid;

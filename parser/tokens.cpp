@@ -282,9 +282,8 @@ const Value* Interpreter::lookup(std::string_view name) const {
     return lookup_symbol(sources_.find_symbol(name));
 }
 
-void Interpreter::declare(const std::string& name, Value v, bool local, const Token& at) {
+void Interpreter::declare_symbol(uint32_t sym, Value v, bool local, const Token& at) {
     (void)at;
-    uint32_t sym = sources_.intern(name);
     if (local) {
         Binding& b = bind(scopes_.back(), sym);
         b.value = std::move(v);
