@@ -258,7 +258,6 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     if (t.kind != TokenKind::Word) return false;
     NestingGuard guard(*this, t);
     std::string_view w = t.text;
-    if (is_unsupported_shape(w)) unsupported(t, w);
     out = Object{};
     out.loc = sources_.location(t);
     auto open = [&] { expect_punct('{', "after ", w); };
@@ -467,6 +466,8 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             out.loc = loc;
         }
     } else {
+        // Checked last: the shapes povwall has are the common case.
+        if (is_unsupported_shape(w)) unsupported(t, w);
         return false;
     }
     parse_object_modifiers(out);
