@@ -133,7 +133,7 @@ struct PatternSpec {
     // POV-Ray does).
     std::vector<Warp> warps;
     CompactTransform transform;  // pattern space -> world (inverse applied to hit points)
-    std::shared_ptr<const ImageMapping> image;  // PatternKind::ImageMap only
+    std::shared_ptr<const ImageMapping> image;        // PatternKind::ImageMap only
     std::shared_ptr<const FunctionProgram> function;  // PatternKind::Function only
 };
 

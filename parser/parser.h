@@ -37,9 +37,10 @@ struct ParseOptions {
     // False: #fopen ... write/append opens nothing and #write discards its text (a
     // black-box worker re-parses the coordinator's scene; the coordinator writes).
     bool write_user_files = true;
-    // Evaluates the patterns of `function { pattern { ... } }` when the scene calls such a
-    // function while parsing (trace/ has the patterns; the commands pass
-    // trace::function_hooks()). Without it they give 0.
+    // Evaluates the patterns of `function { pattern { ... } }` when the scene calls such
+    // a function while parsing (trace/ has the patterns; the commands pass
+    // trace::parse_time_function_hooks()). Without it they give 0; a pigment function
+    // called while parsing is an error.
     FunctionHooks function_hooks;
     // Reads image_map/bump_map files. Without one the scene records the file references
     // only (enough to list the files a scene reads), and cannot be rendered.
