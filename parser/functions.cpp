@@ -35,7 +35,7 @@ class FunctionCompiler {
   public:
     FunctionCompiler(Interpreter& in, FunctionProgram& f) : in_(in), f_(f) {}
 
-    void expression() { conditional(); }
+    void expression() { expression_level(); }
 
   private:
     // A call of `callee` from this function.
@@ -59,7 +59,8 @@ class FunctionCompiler {
         emit(Op::Constant, uint32_t(f_.constants.size() - 1));
     }
 
-    void conditional() {
+    // A whole expression (the lowest level, |), counted against the nesting limit.
+    void expression_level() {
         NestingGuard guard(in_, in_.peek());
         logical_or();
     }
@@ -146,7 +147,7 @@ class FunctionCompiler {
         int n = 0;
         if (in_.accept_punct(')')) return 0;
         for (;;) {
-            conditional();
+            expression_level();
             ++n;
             if (in_.accept_punct(')')) return n;
             in_.expect_punct(',', "between the arguments of ", name.text);
@@ -189,9 +190,9 @@ class FunctionCompiler {
         const Token var = in_.next_raw();
         if (var.kind != TokenKind::Word) in_.expected("the name of the counter", var);
         in_.expect_punct(',', "after the counter");
-        conditional();
+        expression_level();
         in_.expect_punct(',', "after the first value");
-        conditional();
+        expression_level();
         in_.expect_punct(',', "after the last value");
         auto body = std::make_shared<FunctionProgram>();
         body->parameter_names = f_.parameter_names;
@@ -211,7 +212,7 @@ class FunctionCompiler {
         const Token t = in_.next();
         if (t.kind == TokenKind::Number) return constant(t.number);
         if (in_.is_punct(t, '(')) {
-            conditional();
+            expression_level();
             in_.expect_punct(')', "to close '('");
             return;
         }
@@ -289,7 +290,7 @@ class FunctionCompiler {
             in_.expect_punct('(', "after ", w);
             int n = 0;
             for (;;) {
-                conditional();
+                expression_level();
                 if (++n > 1) emit(w == "min" ? Op::Min : Op::Max, 0, 0, 2);
                 if (in_.accept_punct(')')) break;
                 in_.expect_punct(',', "between the arguments of ", w);
