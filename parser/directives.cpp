@@ -564,9 +564,8 @@ void Interpreter::directive_include(const Token& t) {
     }
     std::string path = resolve_include(name, frames_.back().file);
     if (path.empty()) error(nt, "cannot find include file \"" + name + "\"");
-    std::string text;
-    if (!read_file_text(path, text))
-        error(nt, "cannot open include file \"" + path + "\"");
+    SourceText text;
+    if (!text.read_file(path)) error(nt, "cannot open include file \"" + path + "\"");
     int index = sources_.add(path, std::move(text));
     scopes_.emplace_back();
     frames_.push_back({index,

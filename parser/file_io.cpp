@@ -101,13 +101,22 @@ void Interpreter::directive_fopen(const Token& t) {
     file->name = file_name;
     if (is_word(mode, "read")) {
         const std::string path = user_file_path(file_name, false, name_at);
-        std::string text;
-        if (path.empty() || !read_file_text(path, text))
+        SourceText text;
+        if (path.empty() || !text.read_file(path))
             error(name_at, "cannot open user file \"" + file_name + "\" for reading");
         file->reading = true;
         file->file = sources_.add(path, std::move(text));
     } else if (is_word(mode, "write") || is_word(mode, "append")) {
         const std::string path = user_file_path(file_name, true, name_at);
+        for (int i = 0; i < sources_.count(); ++i) {
+            std::error_code ec;
+            if (sources_.file(i).text.mapped() &&
+                fs::equivalent(path, sources_.file(i).path, ec)) {
+                error(name_at, "#fopen: \"" + file_name +
+                                   "\" is a source file being parsed; it cannot be "
+                                   "written");
+            }
+        }
         if (options_.write_user_files) {
             auto out = std::make_unique<std::ofstream>(
                 path, is_word(mode, "append") ? std::ios::binary | std::ios::app

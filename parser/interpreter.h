@@ -34,9 +34,6 @@ inline int saturating_int(double v) {
     return int(v);
 }
 
-// The whole file in `out`; false when it cannot be opened or read (or is a folder).
-bool read_file_text(const std::string& path, std::string& out);
-
 // Composes `t` into every pattern transform of the layers (textures move with objects).
 void transform_textures(LayeredTexture& layers, const Transform& t);
 
@@ -246,6 +243,7 @@ class Interpreter {
     std::string resolve_include(const std::string& name, int from_file) const;
     void finish_object(Object& obj);
     void add_scene_object(Object&& obj);  // to Scene::objects, unless keep_object says no
+    size_t objects_populated_ = 0;        // Scene::objects' pages mapped up to this index
 
     const ParseOptions& options_;
     SourceManager& sources_;

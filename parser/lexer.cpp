@@ -21,6 +21,20 @@ void advise_huge_pages(void* data, size_t bytes) {
     if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
 }
 
+void populate_for_write(void* data, size_t bytes) {
+#ifdef MADV_POPULATE_WRITE
+    constexpr uintptr_t kPage = 4096;
+    const uintptr_t begin =
+        (reinterpret_cast<uintptr_t>(data) + kPage - 1) & ~(kPage - 1);
+    const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) & ~(kPage - 1);
+    if (end > begin)
+        madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);
+#else
+    (void)data;
+    (void)bytes;
+#endif
+}
+
 namespace {
 
 bool is_ident_start(char c) {
@@ -49,7 +63,7 @@ constexpr double kPowersOfTen[16] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7
 }
 
 void lex(SourceManager& sm, int file_index, SourceFile& f) {
-    const std::string& s = f.text;
+    const std::string_view s = f.text.view();
     const size_t n = s.size();
     size_t i = 0;
     // Dense machine-written files average about 3.5 bytes per token; reserving up front
@@ -62,7 +76,11 @@ void lex(SourceManager& sm, int file_index, SourceFile& f) {
     numbers.reserve(n / 8 + 16);
     advise_huge_pages(numbers.data(), numbers.capacity() * sizeof(double));
     auto push = [&](TokenKind kind, size_t start, size_t len, uint32_t aux = 0) {
-        tokens.push_back({uint32_t(start), uint32_t(len), aux, kind});
+        if (len > kMaxTokenLength) {
+            lex_error(sm, file_index, uint32_t(start), 1,
+                      "token longer than " + std::to_string(kMaxTokenLength) + " bytes");
+        }
+        tokens.emplace_back(uint32_t(start), uint32_t(len), aux, kind);
     };
     while (i < n) {
         char c = s[i];
@@ -215,12 +233,12 @@ void lex(SourceManager& sm, int file_index, SourceFile& f) {
             continue;
         }
         if ((c == '<' || c == '>' || c == '!') && i + 1 < n && s[i + 1] == '=') {
-            push(TokenKind::Punct, start, 2);
+            push(TokenKind::Punct, start, 2, uint8_t(c) | uint32_t('=') << 8);
             i += 2;
             continue;
         }
         if (is_punct_char(c)) {
-            push(TokenKind::Punct, start, 1);
+            push(TokenKind::Punct, start, 1, uint8_t(c));
             ++i;
             continue;
         }
@@ -232,7 +250,11 @@ void lex(SourceManager& sm, int file_index, SourceFile& f) {
 
 }  // namespace
 
-int SourceManager::add(std::string path, std::string text) {
+int SourceManager::add(std::string path, SourceText text) {
+    if (text.size() >= size_t(UINT32_MAX)) {
+        const std::string msg = "'" + path + "' is larger than 4 GiB";
+        throw ParseError(ParseError::Kind::Io, "povwall: error: " + msg, msg, {});
+    }
     auto f = std::make_unique<SourceFile>();
     f->path = std::move(path);
     f->text = std::move(text);

@@ -130,42 +130,22 @@ Scene Interpreter::run(int root_file) {
     return std::move(scene_);
 }
 
-bool read_file_text(const std::string& path, std::string& out) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) return false;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
-    // Sized once and read in one go: a stringstream grows by doubling and then copies
-    // again (four copies of a 48 MB mesh2 file, a quarter of its parse's page faults).
-    in.seekg(0, std::ios::end);
-    const std::streamoff size = in.tellg();
-    in.seekg(0, std::ios::beg);
-    if (size < 0 || !in) {  // not seekable (a pipe): read it as it comes
-        in.clear();
-        out.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-        return !in.bad();
-    }
-    out.reserve(size_t(size));
-    advise_huge_pages(out.data(), size_t(size));
-    out.resize(size_t(size));
-    in.read(out.data(), size);
-    out.resize(size_t(in.gcount()));
-    return !in.bad();
-}
-
 Scene parse_scene_file(const std::string& path, const ParseOptions& options) {
-    std::string text;
-    if (!read_file_text(path, text)) {
+    SourceText text;
+    if (!text.read_file(path)) {
         std::string msg = "cannot open scene file '" + path + "'";
         throw ParseError(ParseError::Kind::Io, "povwall: error: " + msg, msg, {});
     }
-    return parse_scene_text(std::move(text), path, options);
+    SourceManager sources;
+    const int root = sources.add(path, std::move(text));
+    Interpreter interpreter(options, sources);
+    return interpreter.run(root);
 }
 
 Scene parse_scene_text(std::string text, const std::string& display_name,
                        const ParseOptions& options) {
     SourceManager sources;
-    int root = sources.add(display_name, std::move(text));
+    const int root = sources.add(display_name, std::move(text));
     Interpreter interpreter(options, sources);
     return interpreter.run(root);
 }

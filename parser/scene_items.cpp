@@ -451,11 +451,8 @@ bool Interpreter::try_plain_vector(Vector3& out, Token* at) {
     if (!pushback_.empty() || frames_.empty()) return false;
     const Frame& f = frames_.back();
     const TokenArray& toks = *f.toks;
-    const char* text = toks.text();
     auto punct = [&](size_t k, char c) {
-        if (f.pos + k >= f.end) return false;
-        const PackedToken& p = toks.packed[f.pos + k];
-        return p.kind == TokenKind::Punct && p.length == 1 && text[p.offset] == c;
+        return f.pos + k < f.end && toks.packed[f.pos + k].is_punct(c);
     };
     if (!punct(0, '<')) return false;
     size_t k = 1;
@@ -465,14 +462,14 @@ bool Interpreter::try_plain_vector(Vector3& out, Token* at) {
         if (negative) ++k;
         if (f.pos + k >= f.end) return false;
         const PackedToken& n = toks.packed[f.pos + k];
-        if (n.kind != TokenKind::Number) return false;
+        if (n.kind() != TokenKind::Number) return false;
         v[c] = negative ? -toks.numbers[n.aux] : toks.numbers[n.aux];
         if (!punct(++k, c < 2 ? ',' : '>')) return false;
         ++k;
     }
     if (f.pos + k < f.end) {
         const PackedToken& after = toks.packed[f.pos + k];
-        if (after.kind == TokenKind::Punct && !punct(k, ',') && !punct(k, '}') &&
+        if (after.kind() == TokenKind::Punct && !punct(k, ',') && !punct(k, '}') &&
             !punct(k, '<')) {
             return false;
         }

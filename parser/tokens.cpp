@@ -10,7 +10,7 @@ namespace povwall::parser {
 Token Interpreter::next_raw() {
     while (!frames_.empty()) {
         Frame& f = frames_.back();
-        if (f.pos < f.end && f.toks->packed[f.pos].kind != TokenKind::End) [[likely]] {
+        if (f.pos < f.end && f.toks->packed[f.pos].kind() != TokenKind::End) [[likely]] {
             if (++tokens_since_clock_ == 4096) [[unlikely]]
                 check_parse_limits((*f.toks)[f.pos]);
             return (*f.toks)[f.pos++];

@@ -299,6 +299,57 @@ TEST(FileIo, FoldersErrorsAndWorkerParses) {
     fs::remove_all(dir);
 }
 
+// A file of 16 MB or more is mapped instead of copied: it parses like any other, errors
+// in it are located, and a scene cannot #fopen it for writing while it is being read.
+TEST(SourceText, LargeFilesAreMappedAndProtected) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "povwall_parser_mapped_test";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string big = (dir / "big.pov").string();
+    std::string padding;
+    for (int i = 0; i < 280000; ++i)
+        padding += "// 64 bytes a line, 17 MB in all ..........................\n";
+    auto write_big = [&](const std::string& tail) {
+        std::ofstream(big, std::ios::binary) << "sphere { <1, 2, 3>, 0.5 }\n"
+                                             << padding << tail;
+    };
+    write_big("box { 0, 1 }\n");
+    SourceText text;
+    ASSERT_TRUE(text.read_file(big));
+    EXPECT_TRUE(text.mapped());
+    EXPECT_EQ(text.size(), 26 + padding.size() + 13);
+    EXPECT_EQ(text.view().substr(0, 8), "sphere {");
+    SourceText small("sphere { 0, 1 }");
+    EXPECT_FALSE(small.mapped());
+
+    ParseOptions o;
+    o.output_dir = dir.string();
+    Scene s = parse_scene_file(big, o);
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).centre, (Point3{1, 2, 3}));
+    auto first_line_of_error = [&] {
+        try {
+            parse_scene_file(big, o);
+        } catch (const ParseError& e) {
+            const std::string w = e.what();
+            return w.substr(0, w.find('\n'));
+        }
+        return std::string("(no error)");
+    };
+    write_big("box { 0, 1 ");
+    EXPECT_EQ(first_line_of_error(), big +
+                                         ":280002:12: error: expected an object modifier "
+                                         "or '}' but found end of file");
+    write_big("#fopen F \"big.pov\" write");
+    EXPECT_EQ(first_line_of_error(),
+              big +
+                  ":280002:10: error: #fopen: \"big.pov\" is a source "
+                  "file being parsed; it cannot be written");
+    EXPECT_EQ(fs::file_size(big), 26 + padding.size() + 24);
+    fs::remove_all(dir);
+}
+
 // `#local S = Macro()` whose body ends with '}': the macro's frame is still open when the
 // value is bound, yet S belongs to the scope of the macro that holds the #local
 // (transforms.inc's Spline_Trans does `#local Matrix = Matrix_Trans(...)`).
