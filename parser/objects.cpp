@@ -1,5 +1,6 @@
 // Objects: shapes, CSG, object modifiers and transforms, and the top-level scene items.
 #include <cmath>
+#include <iterator>
 
 #include "parser/interpreter.h"
 
@@ -500,22 +501,27 @@ void Interpreter::finish_object(Object& obj) {
 
 void Interpreter::add_scene_object(Object&& obj) {
     // The first growth reserves room for 16,384 objects at once: capacity never written
-    // costs address space, not memory (its pages are never touched), and a scene made in
-    // a loop no longer moves its objects through four or five ever larger lists, each
-    // paged in afresh. Beyond that the list doubles as before.
-    if (scene_.objects.size() == scene_.objects.capacity()) {
+    // costs address space, not memory, and a scene made in a loop no longer moves its
+    // objects through four or five ever larger lists. Beyond that the list doubles. The
+    // list's pages are written in order, each first touch a fault (microseconds on a VM):
+    // they are mapped 256 KB ahead at once, and a grown list is mapped (in 2 MB pages
+    // where it is large) before the objects move into it.
+    constexpr size_t kAhead = (size_t(256) << 10) / sizeof(Object);
+    std::vector<Object>& list = scene_.objects;
+    if (list.size() == list.capacity()) {
         constexpr size_t kFirstCapacity = 16384;
-        scene_.objects.reserve(std::max(2 * scene_.objects.capacity(), kFirstCapacity));
-        objects_populated_ = 0;
+        std::vector<Object> grown;
+        grown.reserve(std::max(2 * list.capacity(), kFirstCapacity));
+        advise_huge_pages(grown.data(), grown.capacity() * sizeof(Object));
+        objects_populated_ = std::min(list.size() + kAhead, grown.capacity());
+        populate_for_write(grown.data(), objects_populated_ * sizeof(Object));
+        std::move(list.begin(), list.end(), std::back_inserter(grown));
+        list.swap(grown);
     }
-    // The list's pages are written in order, each first touch a fault (microseconds on a
-    // VM): map the next 256 KB at once.
-    if (scene_.objects.size() >= objects_populated_) {
-        constexpr size_t kAhead = (size_t(256) << 10) / sizeof(Object);
-        const size_t upto =
-            std::min(scene_.objects.size() + kAhead, scene_.objects.capacity());
-        populate_for_write(scene_.objects.data() + scene_.objects.size(),
-                           (upto - scene_.objects.size()) * sizeof(Object));
+    if (list.size() >= objects_populated_) {
+        const size_t upto = std::min(list.size() + kAhead, list.capacity());
+        populate_for_write(list.data() + list.size(),
+                           (upto - list.size()) * sizeof(Object));
         objects_populated_ = upto;
     }
     if (!options_.keep_object) {
