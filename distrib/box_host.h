@@ -66,20 +66,30 @@ struct Box {
     explicit Box(QueuePolicy policy) : queue(policy) {}
     int index = 0;
     std::unique_ptr<trace::PreparedScene> scene;
-    trace::RayContext ctx;
+    // What tracing in the box changes, one lane per worker thread: when rays return
+    // colours forward (no parent waits in the box) threads trace in the same box at
+    // once, each in its lane; with parent tracking one thread holds the box at a time.
+    struct alignas(64) Lane {
+        trace::RayContext ctx;
+        // Scratch for spawn_children, one per nesting level of direct hand-overs (a
+        // child traced at once in the same box must not overwrite its parent's record).
+        std::vector<trace::ShadingRecord> records;
+        BoxStats stats;  // counters; summed into the box's by box_stats()
+    };
+    std::vector<Lane> lanes;
     std::mutex inbox_mutex;
     std::vector<Item> inbox;
     uint64_t inbox_bytes = 0;       // with inbox_mutex: arrived since the last drain
     std::vector<Item> inbox_spare;  // the box's thread only (while busy)
     std::atomic<size_t> pending{0};
     std::atomic<bool> busy{false};
+    // The worker thread that set `busy` (-1: none). Only that thread writes its own
+    // index, so a thread that reads its own index holds the box.
+    std::atomic<int> holder{-1};
     WorkQueue<Item> queue;
     ParentTable<WaitingParent> parents;
-    // Scratch for spawn_children, one per nesting level of direct hand-overs (a child
-    // traced at once in the same box must not overwrite its parent's record).
-    std::vector<trace::ShadingRecord> records;
     uint64_t next_id = 0;
-    BoxStats stats;
+    BoxStats stats;  // what the thread holding the box counts (queue, busy time)
 };
 
 // Progress of a black-box render: a pixel is done when every ray it led to is, which
@@ -145,12 +155,10 @@ class BoxHost {
     void worker(int thread, bool emit_camera);
     void emit_camera_rays();
     void process(Box& box, Item& item, int thread);
-    void process_ray(Box& box, RayItem& ray, int thread);
+    void process_ray(Box& box, Item& item, int thread);
     void deliver(Box& box, const RayItem& ray, const trace::TraceResult& result,
                  int thread);
     void push(Box* current, int dest, Item&& item);
-    // Items this thread finished by direct hand-over since the last call.
-    static uint64_t take_handoffs_finished();
     int first_box(const Ray& ray, Real t_from, VirtualWalls::Segment& seg,
                   int& next) const;
     void add_pixel(int thread, int pixel, const Rgb& c, float transmit);
@@ -160,12 +168,20 @@ class BoxHost {
     const SpaceOptions& options_;
     trace::RenderPlan plan_;  // made once; every box's local scene follows it
     bool parents_ = false;
+    // Threads trace in a box at once (forward contributions, direct hand-over on).
+    bool shared_boxes_ = false;
     VirtualWalls walls_;
     std::vector<std::unique_ptr<Box>> boxes_;
     std::vector<uint8_t> empty_;
     std::atomic<uint64_t> created_{0}, finished_{0};
     std::atomic<bool> stop_{false};
-    std::atomic<int> next_pixel_{0};
+    // Camera rays still to send, per band of the image; a thread starts on its own band.
+    struct alignas(64) PixelBand {
+        std::atomic<int> next{0};
+        int begin = 0, end = 0;
+    };
+    std::vector<PixelBand> bands_;
+    int pixels_sent() const;
     int total_pixels_ = 0;
     // Progress (settings.progress): pixels sent, scaled by the share of items finished.
     std::atomic<uint64_t> progress_reported_{0};

@@ -14,26 +14,23 @@ using Clock = std::chrono::steady_clock;
 using trace::TraceResult;
 
 namespace {
-// The worker thread running on this OS thread: its index (for its pixel sums), how many
-// direct hand-overs deep it is, and the items it finished by hand-over and has not yet
-// added to the shared count (added once per batch, as the queue's are).
+// The worker thread running on this OS thread: its index (for its pixel sums and box
+// lanes), how many direct hand-overs deep it is, and the rays it traced since it last
+// added them to the progress line.
 struct WorkerThread {
     int index = 0;
     int depth = 0;
-    uint64_t finished = 0;
+    uint64_t rays = 0;
 };
 thread_local WorkerThread tl_worker;
 // Each level is one item traced inside another's processing (a child in its parent's
 // box, or a ray crossing into a free box): enough for a ray tree of POV-Ray's default
 // depth crossing several boxes; deeper items go through the queues.
 constexpr int kMaxHandoffDepth = 24;
-}  // namespace
 
-uint64_t BoxHost::take_handoffs_finished() {
-    const uint64_t n = tl_worker.finished;
-    tl_worker.finished = 0;
-    return n;
-}
+// The calling worker thread's lane of `box`.
+Box::Lane& lane(Box& box) { return box.lanes[size_t(tl_worker.index)]; }
+}  // namespace
 
 BoxHost::BoxHost(const Scene& scene, const trace::RenderSettings& settings,
                  const SpaceOptions& options, const trace::RenderPlan* plan)
@@ -43,6 +40,7 @@ BoxHost::BoxHost(const Scene& scene, const trace::RenderSettings& settings,
       plan_(plan ? *plan : trace::make_render_plan(scene, settings.plan_everything_on)) {
     parents_ = options.results == SpaceOptions::Results::Parents ||
                (options.results == SpaceOptions::Results::Auto && plan_.parent_tracking);
+    shared_boxes_ = !parents_ && options.direct_handoff;
     total_pixels_ = settings.width * settings.height;
 }
 
@@ -120,7 +118,6 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
         box->stats.region = walls_.box_bounds(b);
         if (host[b]) {
             box->scene = std::make_unique<trace::PreparedScene>(scene_, local[b], &plan_);
-            box->scene->init_context(box->ctx);
             box->stats.objects = local[b].size();
             box->stats.resident_bytes = box->scene->resident_bytes();
             empty_[b] = box->scene->primitive_count() == 0;
@@ -140,47 +137,61 @@ void BoxHost::inject(int box, Item&& item, size_t bytes) {
 }
 
 void BoxHost::push(Box* current, int dest, Item&& item) {
-    created_.fetch_add(1, std::memory_order_relaxed);
     Box& d = *boxes_[dest];
+    // `created_` counts the items that go through a queue, an inbox or another process
+    // (and `finished_` those processed from a queue): an item traced at once is made
+    // and finished in one call, and one shared counter for every item kept the two
+    // threads' caches busy passing its line back and forth.
     if (!d.scene) {  // hosted by another process
+        created_.fetch_add(1, std::memory_order_relaxed);
         const size_t bytes = remote(dest, std::move(item));
-        if (current) ++current->stats.messages_sent, current->stats.bytes_sent += bytes;
+        if (current) {
+            BoxStats& st = lane(*current).stats;
+            ++st.messages_sent, st.bytes_sent += bytes;
+        }
         return;
     }
-    if (current == &d) {
-        if (options_.direct_handoff && tl_worker.depth < kMaxHandoffDepth) {
-            // This thread holds the box: trace the item now, depth first, instead of a
-            // trip through the queue (most children stay in the box that made them).
-            ++tl_worker.depth;
-            process(d, item, tl_worker.index);
-            --tl_worker.depth;
-            ++tl_worker.finished;
-            if (on_processed) on_processed();
-            return;
+    const bool stays = current == &d;
+    if (current && !stays) {
+        BoxStats& st = lane(*current).stats;
+        ++st.messages_sent, st.bytes_sent += sizeof(Item);
+    }
+    const bool nest = options_.direct_handoff && tl_worker.depth < kMaxHandoffDepth;
+    // Trace the item now, depth first, in this thread: no trip through a queue (most
+    // children stay in the box that made them), no inbox lock, no copies of the item.
+    auto trace_here = [&] {
+        if (!stays) {
+            BoxStats& st = lane(d).stats;
+            ++st.messages_received, st.bytes_received += sizeof(Item);
         }
+        ++tl_worker.depth;
+        process(d, item, tl_worker.index);
+        --tl_worker.depth;
+        if (on_processed) on_processed();
+    };
+    if (shared_boxes_) {
+        // Nothing waits in a box: any thread traces in any box, each in its own lane.
+        if (nest) return trace_here();
+    } else if (stays || d.holder.load(std::memory_order_relaxed) == tl_worker.index) {
+        // This thread holds the box (the current one, or one that an item further up
+        // this thread's stack is traced in; a ray that crosses back comes home).
+        if (nest) return trace_here();
+        created_.fetch_add(1, std::memory_order_relaxed);
         const bool is_result = item.is_result;
         const int depth = is_result ? 255 : item.ray.trace.depth;
         d.queue.push(std::move(item), is_result, depth);
         d.stats.peak_queue = std::max(d.stats.peak_queue, d.queue.size());
         d.pending.fetch_add(1, std::memory_order_release);
         return;
-    }
-    if (current)
-        ++current->stats.messages_sent, current->stats.bytes_sent += sizeof(Item);
-    if (options_.direct_handoff && tl_worker.depth < kMaxHandoffDepth &&
-        !d.busy.exchange(true, std::memory_order_acquire)) {
-        // Nobody holds the destination: process the item here and now. The inbox lock
-        // and two moves of the item were half of a crossing's cost.
-        ++d.stats.messages_received;
-        d.stats.bytes_received += sizeof(Item);
-        ++tl_worker.depth;
-        process(d, item, tl_worker.index);
-        --tl_worker.depth;
-        ++tl_worker.finished;
+    } else if (nest && !d.busy.exchange(true, std::memory_order_acquire)) {
+        // Nobody holds the destination: hold it while the item is traced.
+        d.holder.store(tl_worker.index, std::memory_order_relaxed);
+        trace_here();
+        d.holder.store(-1, std::memory_order_relaxed);
         d.busy.store(false, std::memory_order_release);
-        if (on_processed) on_processed();
         return;
     }
+    created_.fetch_add(1, std::memory_order_relaxed);
     {
         std::lock_guard<std::mutex> lock(d.inbox_mutex);
         d.inbox.push_back(std::move(item));
@@ -217,7 +228,9 @@ void BoxHost::deliver(Box& box, const RayItem& ray, const TraceResult& result,
     push(&box, ray.parent_box, std::move(item));
 }
 
-void BoxHost::process_ray(Box& box, RayItem& ray, int thread) {
+void BoxHost::process_ray(Box& box, Item& item, int thread) {
+    // A ray that leaves the box goes on as this same item (no copy of its 300-odd bytes).
+    RayItem& ray = item.ray;
     const GlobalSettings& g = scene_.settings;
     VirtualWalls::Segment seg;
     int next;
@@ -229,22 +242,18 @@ void BoxHost::process_ray(Box& box, RayItem& ray, int thread) {
     }
     ray.route_box = -1;          // any item made from this one is routed afresh
     if (seg.box != box.index) {  // a tie on a wall sent it here: pass it on unchanged
-        Item item;
-        item.ray = ray;
         push(&box, seg.box, std::move(item));
         return;
     }
     if (ray.shadow) {
         bool blocked =
             trace::shadow_segment(*box.scene, ray.trace.ray, seg.t_exit,
-                                  ray.light_distance, ray.shadow_state, box.ctx);
+                                  ray.light_distance, ray.shadow_state, lane(box).ctx);
         if (blocked || next < 0 || seg.t_exit >= ray.light_distance - 1e-3) {
             deliver(box, ray, {ray.shadow_state.filter, 0}, thread);
             return;
         }
         ray.t_from = seg.t_exit;
-        Item item;
-        item.ray = ray;
         push(&box, next, std::move(item));
         return;
     }
@@ -253,17 +262,18 @@ void BoxHost::process_ray(Box& box, RayItem& ray, int thread) {
         deliver(box, ray, {}, thread);
         return;
     }
+    Box::Lane& here = lane(box);
     if (!ray.counted) {
         ray.counted = true;
         switch (ray.trace.use) {
             case trace::RayUse::Camera:
-                ++box.stats.camera;
+                ++here.stats.camera;
                 break;
             case trace::RayUse::Reflection:
-                ++box.stats.reflected;
+                ++here.stats.reflected;
                 break;
             case trace::RayUse::Refraction:
-                ++box.stats.refracted;
+                ++here.stats.refracted;
                 break;
             case trace::RayUse::Shadow:
                 break;
@@ -271,21 +281,19 @@ void BoxHost::process_ray(Box& box, RayItem& ray, int thread) {
     }
     trace::Hit hit;
     if (!box.scene->closest_hit(ray.trace.ray, ray.t_from, seg.t_exit, ray.trace.use, hit,
-                                box.ctx)) {
+                                here.ctx)) {
         if (next < 0) {
             deliver(box, ray, trace::miss_colour(*box.scene, ray.trace.ray), thread);
         } else {
             ray.t_from = seg.t_exit;
-            Item item;
-            item.ray = ray;
             push(&box, next, std::move(item));
         }
         return;
     }
     // One record per nesting level: a child traced at once reuses the box. Sized once,
     // before any level holds a reference into it.
-    if (box.records.empty()) box.records.resize(kMaxHandoffDepth + 1);
-    trace::ShadingRecord& rec = box.records[size_t(tl_worker.depth)];
+    if (here.records.empty()) here.records.resize(kMaxHandoffDepth + 1);
+    trace::ShadingRecord& rec = here.records[size_t(tl_worker.depth)];
     trace::spawn_children(*box.scene, ray.trace, hit, rec);
     const size_t n = rec.children.size();
     uint64_t id = 0;
@@ -306,8 +314,8 @@ void BoxHost::process_ray(Box& box, RayItem& ray, int thread) {
     }
     for (size_t i = 0; i < n; ++i) {
         const trace::ChildRay& c = rec.children[i];
-        Item item;
-        RayItem& child = item.ray;
+        Item child_item;
+        RayItem& child = child_item.ray;
         child.trace = c.trace;
         child.shadow = c.kind == trace::ChildRay::Kind::Shadow;
         child.light_distance = c.t_max;
@@ -331,22 +339,23 @@ void BoxHost::process_ray(Box& box, RayItem& ray, int thread) {
             deliver(box, child, {Rgb(1.0f), 0}, thread);
             continue;
         }
-        if (child.shadow) ++box.stats.shadow;
+        if (child.shadow) ++here.stats.shadow;
         VirtualWalls::Segment s;
         int nx;
         const int dest = first_box(child.trace.ray, 0, s, nx);
         child.route_box = dest, child.route_next = nx, child.route_exit = s.t_exit;
-        push(&box, dest, std::move(item));
+        push(&box, dest, std::move(child_item));
     }
 }
 
 void BoxHost::process(Box& box, Item& item, int thread) {
     if (!item.is_result) {
-        ++box.stats.rays_received;
-        process_ray(box, item.ray, thread);
+        ++lane(box).stats.rays_received;
+        ++tl_worker.rays;
+        process_ray(box, item, thread);
         return;
     }
-    ++box.stats.results_received;
+    ++lane(box).stats.results_received;
     const ResultItem& r = item.result;
     auto done = box.parents.deliver(
         r.parent, [&](WaitingParent& w) { w.results[r.slot] = r.result; });
@@ -370,18 +379,31 @@ int BoxHost::camera_item(int pixel, Item& item) const {
     return box;
 }
 
+int BoxHost::pixels_sent() const {
+    int sent = 0;
+    for (const PixelBand& b : bands_)
+        sent += std::min(b.next.load(std::memory_order_relaxed), b.end) - b.begin;
+    return sent;
+}
+
 void BoxHost::emit_camera_rays() {
     constexpr int kBatch = 256;
     while (created() - finished() < options_.max_rays_in_flight) {
-        int start = next_pixel_.fetch_add(kBatch);
-        if (start >= total_pixels_) return;
-        int end = std::min(total_pixels_, start + kBatch);
+        // The thread's own band first, then whatever is left of the others.
+        int start = -1, end = 0;
+        for (size_t k = 0; k < bands_.size() && start < 0; ++k) {
+            PixelBand& band = bands_[(size_t(tl_worker.index) + k) % bands_.size()];
+            if (band.next.load(std::memory_order_relaxed) >= band.end) continue;
+            const int s = band.next.fetch_add(kBatch);
+            if (s < band.end) start = s, end = std::min(band.end, s + kBatch);
+        }
+        if (start < 0) return;
         for (int p = start; p < end; ++p) {
             Item item;
             int box = camera_item(p, item);
             if (box >= 0) push(nullptr, box, std::move(item));
         }
-        finished_.fetch_add(take_handoffs_finished(), std::memory_order_acq_rel);
+        report_progress();
     }
 }
 
@@ -396,6 +418,7 @@ void BoxHost::worker(int thread, bool emit_camera) {
             Box& box = *boxes_[(start + k) % n];
             if (box.pending.load(std::memory_order_acquire) == 0) continue;
             if (box.busy.exchange(true, std::memory_order_acquire)) continue;
+            box.holder.store(thread, std::memory_order_relaxed);
             auto t0 = Clock::now();
             {
                 // Swapped with a spare that keeps its capacity: no allocation per batch.
@@ -415,10 +438,9 @@ void BoxHost::worker(int thread, bool emit_camera) {
                 incoming.clear();
                 box.stats.peak_queue = std::max(box.stats.peak_queue, box.queue.size());
             }
-            uint64_t rays = 0, done = 0;
+            uint64_t done = 0;
             for (int budget = 0; budget < 4096 && !box.queue.empty(); ++budget) {
                 Item it = box.queue.pop();
-                rays += !it.is_result;
                 process(box, it, thread);
                 ++done;
                 if (on_processed) on_processed();
@@ -427,14 +449,11 @@ void BoxHost::worker(int thread, bool emit_camera) {
             // shares cost more than the queue. Late counts are safe: `finished` only
             // lags `created` (termination waits, flow control holds back a little more).
             box.pending.fetch_sub(done, std::memory_order_release);
-            finished_.fetch_add(done + take_handoffs_finished(),
-                                std::memory_order_acq_rel);
-            if (settings_.progress) {
-                settings_.progress->rays += rays;
-                report_progress();
-            }
+            finished_.fetch_add(done, std::memory_order_acq_rel);
+            report_progress();
             box.stats.busy_seconds +=
                 std::chrono::duration<double>(Clock::now() - t0).count();
+            box.holder.store(-1, std::memory_order_relaxed);
             box.busy.store(false, std::memory_order_release);
             if (!emit_camera && flush) flush();
             worked = true;
@@ -443,8 +462,7 @@ void BoxHost::worker(int thread, bool emit_camera) {
         }
         if (!worked) {
             if (emit_camera) {
-                if (next_pixel_.load() >= total_pixels_ && created() == finished())
-                    return;
+                if (pixels_sent() >= total_pixels_ && created() == finished()) return;
                 std::this_thread::yield();
             } else {
                 if (flush) flush();
@@ -457,8 +475,10 @@ void BoxHost::worker(int thread, bool emit_camera) {
 
 void BoxHost::report_progress() {
     if (!settings_.progress) return;
+    settings_.progress->rays += tl_worker.rays;
+    tl_worker.rays = 0;
     const uint64_t done =
-        pixels_done_estimate(uint64_t(std::clamp(next_pixel_.load(), 0, total_pixels_)),
+        pixels_done_estimate(uint64_t(std::clamp(pixels_sent(), 0, total_pixels_)),
                              created_.load(), finished_.load());
     uint64_t before = progress_reported_.load();
     while (done > before && !progress_reported_.compare_exchange_weak(before, done)) {
@@ -473,8 +493,23 @@ void BoxHost::run(int threads, bool emit_camera) {
     int busy_boxes = 0;
     for (size_t b = 0; b < boxes_.size(); ++b)
         busy_boxes += boxes_[b]->scene && !(b < empty_.size() && empty_[b]);
-    threads = std::clamp(threads, 1, std::max(1, busy_boxes));
+    if (!shared_boxes_) threads = std::clamp(threads, 1, std::max(1, busy_boxes));
+    threads = std::max(threads, 1);
+    for (auto& b : boxes_) {
+        if (!b->scene) continue;
+        b->lanes = std::vector<Box::Lane>(size_t(threads));
+        for (Box::Lane& l : b->lanes) b->scene->init_context(l.ctx);
+    }
     accum_.assign(threads, std::vector<double>(size_t(total_pixels_) * 4));
+    // One band of the image per thread: threads tracing neighbouring pixels need the
+    // same boxes and wait on each other (two threads on one band of 600x600 took longer
+    // than one thread).
+    bands_ = std::vector<PixelBand>(size_t(threads));
+    for (int b = 0; b < threads; ++b) {
+        bands_[b].begin = int(int64_t(total_pixels_) * b / threads);
+        bands_[b].end = int(int64_t(total_pixels_) * (b + 1) / threads);
+        bands_[b].next.store(bands_[b].begin);
+    }
     std::vector<std::thread> pool;
     for (int i = 1; i < threads; ++i)
         pool.emplace_back(&BoxHost::worker, this, i, emit_camera);
@@ -497,7 +532,20 @@ std::vector<double> BoxHost::pixel_sums() const {
 
 std::vector<BoxStats> BoxHost::box_stats() const {
     std::vector<BoxStats> out;
-    for (const auto& b : boxes_) out.push_back(b->stats);
+    for (const auto& b : boxes_) {
+        BoxStats st = b->stats;
+        for (const Box::Lane& l : b->lanes) {
+            const BoxStats& x = l.stats;
+            st.camera += x.camera, st.reflected += x.reflected;
+            st.refracted += x.refracted, st.shadow += x.shadow;
+            st.rays_received += x.rays_received,
+                st.results_received += x.results_received;
+            st.messages_sent += x.messages_sent,
+                st.messages_received += x.messages_received;
+            st.bytes_sent += x.bytes_sent, st.bytes_received += x.bytes_received;
+        }
+        out.push_back(st);
+    }
     return out;
 }
 

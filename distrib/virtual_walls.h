@@ -70,18 +70,20 @@ void VirtualWalls::walk(const Ray& ray, Real t_min, Real t_max, Visit&& visit) c
     std::array<int, 3> cell{slab_of_directed(0, start.x, ray.direction.x),
                             slab_of_directed(1, start.y, ray.direction.y),
                             slab_of_directed(2, start.z, ray.direction.z)};
+    // Distance to the next wall along each axis in the direction of travel, kept per
+    // axis and recomputed only for the axes that step (the same expression every time,
+    // so every box that walks this ray gets the same distances).
+    auto next_wall = [&](int a) {
+        const Real d = ray.direction[a];
+        if (d > 0 && cell[a] < slabs_[a] - 1)
+            return (walls_[a][cell[a]] - ray.origin[a]) / d;
+        if (d < 0 && cell[a] > 0) return (walls_[a][cell[a] - 1] - ray.origin[a]) / d;
+        return kInfinity;
+    };
+    Real wall_t[3] = {next_wall(0), next_wall(1), next_wall(2)};
     Real t = t_min;
     for (;;) {
-        // Distance to the next wall along each axis in the direction of travel.
-        Real t_next = kInfinity;
-        for (int a = 0; a < 3; ++a) {
-            Real d = ray.direction[a];
-            if (d > 0 && cell[a] < slabs_[a] - 1) {
-                t_next = std::min(t_next, (walls_[a][cell[a]] - ray.origin[a]) / d);
-            } else if (d < 0 && cell[a] > 0) {
-                t_next = std::min(t_next, (walls_[a][cell[a] - 1] - ray.origin[a]) / d);
-            }
-        }
+        const Real t_next = std::min(std::min(wall_t[0], wall_t[1]), wall_t[2]);
         Real t_exit = std::min(std::max(t_next, t), t_max);
         // A start rounded onto the near side of a wall gives an empty segment: step over
         // it without visiting, the same way whichever box computes the walk.
@@ -91,14 +93,9 @@ void VirtualWalls::walk(const Ray& ray, Real t_min, Real t_max, Visit&& visit) c
         if (t_next >= t_max) return;
         // Step every axis whose wall lies at t_next (corners and edges cross at once).
         for (int a = 0; a < 3; ++a) {
-            Real d = ray.direction[a];
-            if (d > 0 && cell[a] < slabs_[a] - 1 &&
-                (walls_[a][cell[a]] - ray.origin[a]) / d == t_next) {
-                ++cell[a];
-            } else if (d < 0 && cell[a] > 0 &&
-                       (walls_[a][cell[a] - 1] - ray.origin[a]) / d == t_next) {
-                --cell[a];
-            }
+            if (wall_t[a] != t_next) continue;
+            cell[a] += ray.direction[a] > 0 ? 1 : -1;
+            wall_t[a] = next_wall(a);
         }
         t = std::max(t_next, t);
     }
