@@ -67,6 +67,17 @@ int VirtualWalls::slab_of(int axis, Real v) const {
 
 int VirtualWalls::slab_of_directed(int axis, Real v, Real direction) const {
     const auto& w = walls_[axis];
+    // Every walk starts here, three times: for the few walls of an axis a count beats a
+    // binary search (it was 7 % of a 4x4x4 render).
+    if (w.size() <= 16) {
+        int n = 0;
+        if (direction < 0) {
+            for (Real x : w) n += x < v;
+        } else {
+            for (Real x : w) n += x <= v;
+        }
+        return n;
+    }
     if (direction < 0) return int(std::lower_bound(w.begin(), w.end(), v) - w.begin());
     return int(std::upper_bound(w.begin(), w.end(), v) - w.begin());
 }

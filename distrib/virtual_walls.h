@@ -51,54 +51,83 @@ class VirtualWalls {
     template <class Visit>
     void walk(const Ray& ray, Real t_min, Real t_max, Visit&& visit) const;
 
+    // Where a walk stands: at the start of the segment in `cell`, with the distance to
+    // the next wall along each axis. A walk stopped by its visitor can be continued
+    // later (in another box) from here, with no new search of the walls.
+    struct WalkState {
+        std::array<int, 3> cell{};
+        Real wall_t[3] = {};
+        Real t = 0;
+    };
+    // False for a ray that visits nothing (NaN, or t_min > t_max).
+    bool start_walk(const Ray& ray, Real t_min, Real t_max, WalkState& at) const;
+    // As walk() from `at`; when visit returns true, `at` stays at the visited segment.
+    template <class Visit>
+    void continue_walk(const Ray& ray, WalkState& at, Real t_max, Visit&& visit) const;
+
   private:
     int slab_of(int axis, Real v) const;
     int slab_of_directed(int axis, Real v, Real direction) const;
+    Real next_wall(const Ray& ray, const std::array<int, 3>& cell, int axis) const;
     std::array<std::vector<Real>, 3> walls_;
     std::array<int, 3> slabs_{1, 1, 1};
 };
 
-template <class Visit>
-void VirtualWalls::walk(const Ray& ray, Real t_min, Real t_max, Visit&& visit) const {
-    if (!(t_min <= t_max)) return;
+inline bool VirtualWalls::start_walk(const Ray& ray, Real t_min, Real t_max,
+                                     WalkState& at) const {
+    if (!(t_min <= t_max)) return false;
     const Point3 start = ray.at(t_min);
     for (int a = 0; a < 3; ++a) {
-        if (std::isnan(start[a]) || std::isnan(ray.direction[a])) return;
+        if (std::isnan(start[a]) || std::isnan(ray.direction[a])) return false;
     }
     // A start exactly on a wall belongs to the side the ray moves into, so a ray
     // forwarded at a wall never bounces back to the box it left.
-    std::array<int, 3> cell{slab_of_directed(0, start.x, ray.direction.x),
-                            slab_of_directed(1, start.y, ray.direction.y),
-                            slab_of_directed(2, start.z, ray.direction.z)};
-    // Distance to the next wall along each axis in the direction of travel, kept per
-    // axis and recomputed only for the axes that step (the same expression every time,
-    // so every box that walks this ray gets the same distances).
-    auto next_wall = [&](int a) {
-        const Real d = ray.direction[a];
-        if (d > 0 && cell[a] < slabs_[a] - 1)
-            return (walls_[a][cell[a]] - ray.origin[a]) / d;
-        if (d < 0 && cell[a] > 0) return (walls_[a][cell[a] - 1] - ray.origin[a]) / d;
-        return kInfinity;
-    };
-    Real wall_t[3] = {next_wall(0), next_wall(1), next_wall(2)};
-    Real t = t_min;
+    at.cell = {slab_of_directed(0, start.x, ray.direction.x),
+               slab_of_directed(1, start.y, ray.direction.y),
+               slab_of_directed(2, start.z, ray.direction.z)};
+    for (int a = 0; a < 3; ++a) at.wall_t[a] = next_wall(ray, at.cell, a);
+    at.t = t_min;
+    return true;
+}
+
+// Distance to the next wall along `axis` in the direction of travel from `cell` (the
+// same expression every time, so every box that walks this ray gets the same distances).
+inline Real VirtualWalls::next_wall(const Ray& ray, const std::array<int, 3>& cell,
+                                    int axis) const {
+    const Real d = ray.direction[axis];
+    if (d > 0 && cell[axis] < slabs_[axis] - 1)
+        return (walls_[axis][cell[axis]] - ray.origin[axis]) / d;
+    if (d < 0 && cell[axis] > 0)
+        return (walls_[axis][cell[axis] - 1] - ray.origin[axis]) / d;
+    return kInfinity;
+}
+
+template <class Visit>
+void VirtualWalls::continue_walk(const Ray& ray, WalkState& at, Real t_max,
+                                 Visit&& visit) const {
     for (;;) {
-        const Real t_next = std::min(std::min(wall_t[0], wall_t[1]), wall_t[2]);
-        Real t_exit = std::min(std::max(t_next, t), t_max);
+        const Real t_next = std::min(std::min(at.wall_t[0], at.wall_t[1]), at.wall_t[2]);
+        Real t_exit = std::min(std::max(t_next, at.t), t_max);
         // A start rounded onto the near side of a wall gives an empty segment: step over
         // it without visiting, the same way whichever box computes the walk.
-        if (t_next > t || t_next >= t_max) {
-            if (visit(Segment{box_index(cell), t, t_exit})) return;
+        if (t_next > at.t || t_next >= t_max) {
+            if (visit(Segment{box_index(at.cell), at.t, t_exit})) return;
         }
         if (t_next >= t_max) return;
         // Step every axis whose wall lies at t_next (corners and edges cross at once).
         for (int a = 0; a < 3; ++a) {
-            if (wall_t[a] != t_next) continue;
-            cell[a] += ray.direction[a] > 0 ? 1 : -1;
-            wall_t[a] = next_wall(a);
+            if (at.wall_t[a] != t_next) continue;
+            at.cell[a] += ray.direction[a] > 0 ? 1 : -1;
+            at.wall_t[a] = next_wall(ray, at.cell, a);
         }
-        t = std::max(t_next, t);
+        at.t = std::max(t_next, at.t);
     }
+}
+
+template <class Visit>
+void VirtualWalls::walk(const Ray& ray, Real t_min, Real t_max, Visit&& visit) const {
+    WalkState at;
+    if (start_walk(ray, t_min, t_max, at)) continue_walk(ray, at, t_max, visit);
 }
 
 }  // namespace povwall::distrib
