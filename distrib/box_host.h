@@ -158,7 +158,8 @@ class BoxHost {
     void worker(int thread, bool emit_camera);
     void emit_camera_rays();
     void process(Box& box, Item& item, int thread);
-    void process_ray(Box& box, Item& item, int thread);
+    void process_ray(Box& entry, Item& item, int thread);
+    Box* go_on_in(Box& current, int dest);
     void deliver(Box& box, const RayItem& ray, const trace::TraceResult& result,
                  int thread);
     void push(Box* current, int dest, Item&& item);

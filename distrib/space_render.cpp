@@ -216,6 +216,25 @@ void BoxHost::push(Box* current, int dest, Item&& item) {
     d.pending.fetch_add(1, std::memory_order_release);
 }
 
+// The box a ray leaving `current` for `dest` goes on in at once, in this thread, with the
+// crossing counted as a message: with forward contributions any thread traces in any box
+// it hosts. Null when the ray must go through push() (parent tracking, another process).
+Box* BoxHost::go_on_in(Box& current, int dest) {
+    if (!shared_boxes_) return nullptr;
+    Box& d = *boxes_[size_t(dest)];
+    if (!d.scene) return nullptr;
+    if (&d != &current) {
+        BoxStats& out = lane(current).stats;
+        ++out.messages_sent, out.bytes_sent += sizeof(Item);
+        BoxStats& in = lane(d).stats;
+        ++in.messages_received, in.bytes_received += sizeof(Item);
+        ++in.rays_received;
+    }
+    ++tl_worker.rays;
+    if (on_processed) on_processed();
+    return &d;
+}
+
 void BoxHost::add_pixel(int thread, int pixel, const Rgb& c, float transmit) {
     PixelSums& sums = accum_[size_t(thread)];
     sums.written[size_t(pixel) >> kSumRunShift] = 1;
@@ -246,125 +265,141 @@ void BoxHost::deliver(Box& box, const RayItem& ray, const TraceResult& result,
     push(&box, ray.parent_box, std::move(item));
 }
 
-void BoxHost::process_ray(Box& box, Item& item, int thread) {
-    // A ray that leaves the box goes on as this same item (no copy of its 300-odd bytes).
+void BoxHost::process_ray(Box& entry, Item& item, int thread) {
     RayItem& ray = item.ray;
     const GlobalSettings& g = scene_.settings;
-    // The walk along the walls goes on from where the box that sent the ray left it; a
-    // ray without one (new over TCP) walks from t_from.
-    VirtualWalls::Segment seg;
-    int next;
-    VirtualWalls::WalkState& at = ray.route_walk;
-    if (ray.route_box == box.index) {
-        route(ray.trace.ray, at, seg, next);
-    } else {
-        first_box(ray.trace.ray, ray.t_from, seg, next, at);
-    }
-    // `at` is at the next box's segment now: the ray goes there with it.
-    ray.route_box = next;
-    if (seg.box != box.index) {  // a tie on a wall sent it here: pass it on unchanged
-        ray.route_box = -1;
-        push(&box, seg.box, std::move(item));
-        return;
-    }
-    if (ray.shadow) {
-        bool blocked =
-            trace::shadow_segment(*box.scene, ray.trace.ray, seg.t_exit,
-                                  ray.light_distance, ray.shadow_state, lane(box).ctx);
-        if (blocked || next < 0 || seg.t_exit >= ray.light_distance - 1e-3) {
-            deliver(box, ray, {ray.shadow_state.filter, 0}, thread);
+    // A ray that leaves a box goes on as this same item (no copy of its 300-odd bytes):
+    // into a box this thread may trace in at once by going round this loop again (no
+    // recursion: a ray crossing many boxes does not deepen the stack), else by push().
+    Box* in = &entry;
+    auto leave = [&](int dest) {
+        if (Box* d = go_on_in(*in, dest)) {
+            in = d;
+            return true;
+        }
+        push(in, dest, std::move(item));
+        return false;
+    };
+    for (;;) {
+        Box& box = *in;
+        // The walk along the walls goes on from where the box that sent the ray left it;
+        // a ray without one (new over TCP) walks from t_from.
+        VirtualWalls::Segment seg;
+        int next;
+        VirtualWalls::WalkState& at = ray.route_walk;
+        if (ray.route_box == box.index) {
+            route(ray.trace.ray, at, seg, next);
+        } else {
+            first_box(ray.trace.ray, ray.t_from, seg, next, at);
+        }
+        // `at` is at the next box's segment now: the ray goes there with it.
+        ray.route_box = next;
+        if (seg.box != box.index) {  // a tie on a wall sent it here: pass it on unchanged
+            ray.route_box = -1;
+            if (leave(seg.box)) continue;
             return;
         }
-        ray.t_from = seg.t_exit;
-        push(&box, next, std::move(item));
-        return;
-    }
-    // A refused ray is black and opaque (max_trace_level, adc_bailout).
-    if (ray.trace.depth > g.max_trace_level || ray.trace.weight < g.adc_bailout) {
-        deliver(box, ray, {}, thread);
-        return;
-    }
-    Box::Lane& here = lane(box);
-    if (!ray.counted) {
-        ray.counted = true;
-        switch (ray.trace.use) {
-            case trace::RayUse::Camera:
-                ++here.stats.camera;
-                break;
-            case trace::RayUse::Reflection:
-                ++here.stats.reflected;
-                break;
-            case trace::RayUse::Refraction:
-                ++here.stats.refracted;
-                break;
-            case trace::RayUse::Shadow:
-                break;
-        }
-    }
-    trace::Hit hit;
-    if (!box.scene->closest_hit(ray.trace.ray, ray.t_from, seg.t_exit, ray.trace.use, hit,
-                                here.ctx)) {
-        if (next < 0) {
-            deliver(box, ray, trace::miss_colour(*box.scene, ray.trace.ray), thread);
-        } else {
+        if (ray.shadow) {
+            bool blocked = trace::shadow_segment(*box.scene, ray.trace.ray, seg.t_exit,
+                                                 ray.light_distance, ray.shadow_state,
+                                                 lane(box).ctx);
+            if (blocked || next < 0 || seg.t_exit >= ray.light_distance - 1e-3) {
+                deliver(box, ray, {ray.shadow_state.filter, 0}, thread);
+                return;
+            }
             ray.t_from = seg.t_exit;
-            push(&box, next, std::move(item));
-        }
-        return;
-    }
-    // One record per nesting level: a child traced at once reuses the box. Sized once,
-    // before any level holds a reference into it.
-    if (here.records.empty()) here.records.resize(kMaxHandoffDepth + 1);
-    trace::ShadingRecord& rec = here.records[size_t(tl_worker.depth)];
-    trace::spawn_children(*box.scene, ray.trace, hit, rec);
-    const size_t n = rec.children.size();
-    uint64_t id = 0;
-    if (parents_) {
-        if (n == 0) {
-            deliver(box, ray, trace::combine_children(rec, nullptr), thread);
+            if (leave(next)) continue;
             return;
         }
-        id = ++box.next_id;
-        WaitingParent w;
-        w.record = rec;
-        w.results.resize(n);
-        w.origin = ray;
-        box.parents.park(id, std::move(w), int(n));
-        box.stats.peak_parents = std::max(box.stats.peak_parents, box.parents.size());
-    } else {
-        add_pixel(thread, ray.pixel, ray.contribution * rec.local, 0);
-    }
-    for (size_t i = 0; i < n; ++i) {
-        const trace::ChildRay& c = rec.children[i];
-        Item child_item;
-        RayItem& child = child_item.ray;
-        child.trace = c.trace;
-        child.shadow = c.kind == trace::ChildRay::Kind::Shadow;
-        child.light_distance = c.t_max;
-        if (child.shadow) {  // as point_shadow() starts it in the single-process tracer
-            child.shadow_state.inside = c.trace.interiors;
-            child.shadow_state.light = c.light;
+        // A refused ray is black and opaque (max_trace_level, adc_bailout).
+        if (ray.trace.depth > g.max_trace_level || ray.trace.weight < g.adc_bailout) {
+            deliver(box, ray, {}, thread);
+            return;
         }
-        child.pixel = ray.pixel;
+        Box::Lane& here = lane(box);
+        if (!ray.counted) {
+            ray.counted = true;
+            switch (ray.trace.use) {
+                case trace::RayUse::Camera:
+                    ++here.stats.camera;
+                    break;
+                case trace::RayUse::Reflection:
+                    ++here.stats.reflected;
+                    break;
+                case trace::RayUse::Refraction:
+                    ++here.stats.refracted;
+                    break;
+                case trace::RayUse::Shadow:
+                    break;
+            }
+        }
+        trace::Hit hit;
+        if (!box.scene->closest_hit(ray.trace.ray, ray.t_from, seg.t_exit, ray.trace.use,
+                                    hit, here.ctx)) {
+            if (next < 0) {
+                deliver(box, ray, trace::miss_colour(*box.scene, ray.trace.ray), thread);
+            } else {
+                ray.t_from = seg.t_exit;
+                if (leave(next)) continue;
+            }
+            return;
+        }
+        // One record per nesting level: a child traced at once reuses the box. Sized
+        // once, before any level holds a reference into it.
+        if (here.records.empty()) here.records.resize(kMaxHandoffDepth + 1);
+        trace::ShadingRecord& rec = here.records[size_t(tl_worker.depth)];
+        trace::spawn_children(*box.scene, ray.trace, hit, rec);
+        const size_t n = rec.children.size();
+        uint64_t id = 0;
         if (parents_) {
-            child.parent = id;
-            child.parent_box = box.index;
-            child.slot = uint16_t(i);
+            if (n == 0) {
+                deliver(box, ray, trace::combine_children(rec, nullptr), thread);
+                return;
+            }
+            id = ++box.next_id;
+            WaitingParent w;
+            w.record = rec;
+            w.results.resize(n);
+            w.origin = ray;
+            box.parents.park(id, std::move(w), int(n));
+            box.stats.peak_parents = std::max(box.stats.peak_parents, box.parents.size());
         } else {
-            child.contribution = ray.contribution * c.coeff;
-            child.transmit_contribution =
-                c.kind == trace::ChildRay::Kind::Transmission
-                    ? ray.transmit_contribution * c.transmit_factor
-                    : 0.0f;
+            add_pixel(thread, ray.pixel, ray.contribution * rec.local, 0);
         }
-        if (c.unoccluded) {  // the plan proved nothing can block it: no message
-            deliver(box, child, {Rgb(1.0f), 0}, thread);
-            continue;
+        for (size_t i = 0; i < n; ++i) {
+            const trace::ChildRay& c = rec.children[i];
+            Item child_item;
+            RayItem& child = child_item.ray;
+            child.trace = c.trace;
+            child.shadow = c.kind == trace::ChildRay::Kind::Shadow;
+            child.light_distance = c.t_max;
+            if (child.shadow) {  // as point_shadow() starts it in the single-process
+                                 // tracer
+                child.shadow_state.inside = c.trace.interiors;
+                child.shadow_state.light = c.light;
+            }
+            child.pixel = ray.pixel;
+            if (parents_) {
+                child.parent = id;
+                child.parent_box = box.index;
+                child.slot = uint16_t(i);
+            } else {
+                child.contribution = ray.contribution * c.coeff;
+                child.transmit_contribution =
+                    c.kind == trace::ChildRay::Kind::Transmission
+                        ? ray.transmit_contribution * c.transmit_factor
+                        : 0.0f;
+            }
+            if (c.unoccluded) {  // the plan proved nothing can block it: no message
+                deliver(box, child, {Rgb(1.0f), 0}, thread);
+                continue;
+            }
+            if (child.shadow) ++here.stats.shadow;
+            const int dest = enter(child.trace.ray, 0, child.route_walk);
+            child.route_box = dest;
+            push(&box, std::max(dest, 0), std::move(child_item));
         }
-        if (child.shadow) ++here.stats.shadow;
-        const int dest = enter(child.trace.ray, 0, child.route_walk);
-        child.route_box = dest;
-        push(&box, std::max(dest, 0), std::move(child_item));
+        return;
     }
 }
 
