@@ -654,8 +654,8 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
             if (std::fabs(toward) > 1e-9 * scale && (away < 0) == (toward > 0) &&
                 away != 0)
                 return false;
-            // Far outside [lo, t_max] (a black box's stretch of the ray, which an infinite
-            // plane is tested on in every box it reaches): out without the exact
+            // Far outside [lo, t_max] (a black box's stretch of the ray, which an
+            // infinite plane is tested on in every box it reaches): out without the exact
             // arithmetic. The margins dwarf the rounding between the two quotients.
             if (std::fabs(toward) > 1e-9 * scale) {
                 const Real rough = away / toward;
