@@ -9,6 +9,8 @@
 #include <chrono>
 #include <thread>
 
+#include "core/memory.h"
+
 namespace povwall::octree {
 namespace {
 
@@ -252,6 +254,9 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
             stats_.references += n.count;
         }
     }
+    // Large trees are walked at random: their nodes and references on 2 MB pages.
+    move_to_huge_pages(nodes_);
+    move_to_huge_pages(ids_);
     stats_.nodes = int(nodes_.size());
     stats_.depth = max_depth;
     stats_.exact_tests = builder.exact_tests();

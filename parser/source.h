@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/memory.h"
 #include "core/source_loc.h"
 
 namespace povwall::parser {
@@ -31,17 +32,10 @@ struct Token {
     uint32_t sym = 0;       // Word: interned name (SourceManager::intern), 0 otherwise
 };
 
-// Large buffers written once from start to end (a big file's text and its token array)
-// take one page fault per 4 KB, which cost 1.1 s of system time for a 1,000,000-triangle
-// mesh2 on a VM where a fault takes ~6 us. This asks for transparent huge pages on the
-// whole 2 MB pages inside [data, data + bytes) (THP "madvise" mode, the kernel's
-// default), so they are mapped 2 MB at a time; buffers under 8 MB are left alone.
-void advise_huge_pages(void* data, size_t bytes);
-
-// Maps the pages of [data, data + bytes) for writing in one call (MADV_POPULATE_WRITE):
-// for a list written from start to end, one call per few hundred KB costs a fraction of
-// a fault per page. A no-op where the kernel lacks it.
-void populate_for_write(void* data, size_t bytes);
+// Large buffers written once from start to end (a big file's token array, the object
+// list) ask for huge pages or are mapped ahead: core/memory.h.
+using povwall::advise_huge_pages;
+using povwall::populate_for_write;
 
 // A token as a file stores it: 12 bytes instead of a Token's 48, because machine-written
 // files have tens of millions (a 1,000,000-triangle mesh2: 14 million, 690 MB as Tokens)
