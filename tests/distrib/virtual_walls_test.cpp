@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <random>
+#include <vector>
 
 namespace povwall::distrib {
 namespace {
@@ -76,6 +78,54 @@ TEST(VirtualWalls, WalkVisitsContiguousSegmentsInOrder) {
         });
         EXPECT_EQ(t, 10);
         EXPECT_LE(segments, 3 + 4 + 5);
+    }
+}
+
+// A walk stopped by its visitor and continued later (as a box does with the walk a ray
+// carries in) visits exactly the segments of one uninterrupted walk, with the same
+// distances. Many walls on an axis (a binary search) and few (a count) start alike.
+TEST(VirtualWalls, ContinuedWalkEqualsOneWalk) {
+    std::array<std::vector<Real>, 3> many;
+    for (int a = 0; a < 3; ++a)
+        for (int k = 0; k < 20; ++k) many[size_t(a)].push_back(-1 + 0.1 * k);
+    for (const VirtualWalls& w :
+         {VirtualWalls::uniform({{-1, -1, -1}, {1, 1, 1}}, 3, 4, 5),
+          VirtualWalls(many)}) {
+        std::mt19937 rng(11);
+        std::uniform_real_distribution<Real> u(-2, 2);
+        for (int n = 0; n < 1000; ++n) {
+            Ray ray{{u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}};
+            if (n % 7 == 0) ray.direction.z = 0;
+            if (n % 13 == 0) ray.origin.y = w.walls(1)[1];  // starting on a wall
+            std::vector<VirtualWalls::Segment> whole, pieces;
+            w.walk(ray, 0, kInfinity, [&](const VirtualWalls::Segment& s) {
+                whole.push_back(s);
+                return false;
+            });
+            VirtualWalls::WalkState at;
+            ASSERT_TRUE(w.start_walk(ray, 0, kInfinity, at));
+            for (int stops = 0; stops < 100; ++stops) {
+                // Take one segment, stop at the next; go on from there.
+                bool took = false, stopped = false;
+                w.continue_walk(ray, at, kInfinity, [&](const VirtualWalls::Segment& s) {
+                    if (took) return stopped = true;
+                    pieces.push_back(s);
+                    took = true;
+                    return false;
+                });
+                if (!stopped) break;
+            }
+            ASSERT_EQ(pieces.size(), whole.size()) << n;
+            for (size_t i = 0; i < whole.size(); ++i) {
+                EXPECT_EQ(pieces[i].box, whole[i].box);
+                EXPECT_EQ(pieces[i].t_enter, whole[i].t_enter);
+                EXPECT_EQ(pieces[i].t_exit, whole[i].t_exit);
+            }
+            // The first box is the box of the start point, on a wall the side the ray
+            // moves into.
+            const Point3 p = ray.at(1e-9);
+            EXPECT_EQ(whole.front().box, w.locate(p)) << n;
+        }
     }
 }
 
