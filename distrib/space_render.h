@@ -32,8 +32,9 @@ struct SpaceOptions {
     enum class Results { Auto, Forward, Parents } results = Results::Auto;
     QueuePolicy queue = QueuePolicy::Priority;
     // Flow control: camera rays wait while this many queued items are in flight. 8,192
-    // rather than 65,536: over TCP with 8 local workers the longer queues cost 30 % of the
-    // render (7.3-8.2 s against 5.0-5.6 s, walls.pov 600x600 --boxes 4x4x4 --procs 8).
+    // rather than 65,536: over TCP with 8 local workers the longer queues cost 30 % of
+    // the render (7.3-8.2 s against 5.0-5.6 s, walls.pov 600x600 --boxes 4x4x4 --procs
+    // 8).
     size_t max_rays_in_flight = 1 << 13;
     // A ray or result for a box of this process that no thread is working on is
     // processed at once by the thread that made it, instead of through the box's inbox
