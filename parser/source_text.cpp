@@ -4,8 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <fstream>
-#include <iterator>
+#include <cerrno>
 
 #include "parser/source.h"
 
@@ -43,7 +42,8 @@ bool SourceText::read_file(const std::string& path) {
         close(fd);
         return false;
     }
-    if (S_ISREG(st.st_mode) && size_t(st.st_size) >= kMapFromBytes) {
+    const bool regular = S_ISREG(st.st_mode);
+    if (regular && size_t(st.st_size) >= kMapFromBytes) {
         // MAP_POPULATE maps the cached pages in one call instead of a fault per page.
         void* p = mmap(nullptr, size_t(st.st_size), PROT_READ, MAP_PRIVATE | MAP_POPULATE,
                        fd, 0);
@@ -54,20 +54,28 @@ bool SourceText::read_file(const std::string& path) {
             return true;
         }
     }
-    close(fd);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
-    if (S_ISREG(st.st_mode)) {
-        // Sized once and read in one go: a stringstream grows by doubling and copies
-        // again.
-        owned_.resize(size_t(st.st_size));
-        in.read(owned_.data(), st.st_size);
-        owned_.resize(size_t(in.gcount()));
-        return !in.bad();
+    // Sized once from the file's size, one byte over so that the read meeting the end
+    // needs no growth (a pipe's buffer doubles as it comes).
+    const size_t first = regular ? size_t(st.st_size) + 1 : 65536;
+    owned_.reserve(first);
+    advise_huge_pages(owned_.data(), first);
+    owned_.resize(first);
+    size_t used = 0;
+    bool ok = true;
+    for (;;) {
+        if (used == owned_.size()) owned_.resize(2 * owned_.size());
+        const ssize_t got = ::read(fd, owned_.data() + used, owned_.size() - used);
+        if (got > 0) {
+            used += size_t(got);
+            continue;
+        }
+        if (got < 0 && errno == EINTR) continue;
+        ok = got == 0;
+        break;
     }
-    // Not a regular file (a pipe): read it as it comes.
-    owned_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    return !in.bad();
+    close(fd);
+    owned_.resize(used);
+    return ok;
 }
 
 }  // namespace povwall::parser
