@@ -25,12 +25,20 @@ struct WorkerThread {
 };
 thread_local WorkerThread tl_worker;
 // Each level is one item traced inside another's processing (a child in its parent's
-// box, or a ray crossing into a free box): enough for a ray tree of POV-Ray's default
-// depth crossing several boxes; deeper items go through the queues.
+// box; with parent tracking also a ray crossing into a free box): enough for a ray tree
+// of POV-Ray's default depth; deeper items go through the queues.
 constexpr int kMaxHandoffDepth = 24;
 
 // The calling worker thread's lane of `box`.
 Box::Lane& lane(Box& box) { return box.lanes[size_t(tl_worker.index)]; }
+
+// An item passed from box `from` to box `to` in this process, in both boxes' counters.
+void count_message(Box& from, Box& to) {
+    BoxStats& out = lane(from).stats;
+    ++out.messages_sent, out.bytes_sent += sizeof(Item);
+    BoxStats& in = lane(to).stats;
+    ++in.messages_received, in.bytes_received += sizeof(Item);
+}
 }  // namespace
 
 BoxHost::BoxHost(const Scene& scene, const trace::RenderSettings& settings,
@@ -168,15 +176,13 @@ void BoxHost::push(Box* current, int dest, Item&& item) {
         return;
     }
     const bool stays = current == &d;
-    if (current && !stays) {
-        BoxStats& st = lane(*current).stats;
-        ++st.messages_sent, st.bytes_sent += sizeof(Item);
-    }
     const bool nest = options_.direct_handoff && tl_worker.depth < kMaxHandoffDepth;
     // Trace the item now, depth first, in this thread: no trip through a queue (most
     // children stay in the box that made them), no inbox lock, no copies of the item.
     auto trace_here = [&] {
-        if (!stays) {
+        if (current && !stays) {
+            count_message(*current, d);
+        } else if (!current) {  // a camera ray from the emitter
             BoxStats& st = lane(d).stats;
             ++st.messages_received, st.bytes_received += sizeof(Item);
         }
@@ -192,6 +198,7 @@ void BoxHost::push(Box* current, int dest, Item&& item) {
         // This thread holds the box (the current one, or one that an item further up
         // this thread's stack is traced in; a ray that crosses back comes home).
         if (nest) return trace_here();
+        if (current && !stays) count_message(*current, d);
         created_.fetch_add(1, std::memory_order_relaxed);
         const bool is_result = item.is_result;
         const int depth = is_result ? 255 : item.ray.trace.depth;
@@ -206,6 +213,10 @@ void BoxHost::push(Box* current, int dest, Item&& item) {
         d.holder.store(-1, std::memory_order_relaxed);
         d.busy.store(false, std::memory_order_release);
         return;
+    }
+    if (current) {  // received when the box drains its inbox
+        BoxStats& st = lane(*current).stats;
+        ++st.messages_sent, st.bytes_sent += sizeof(Item);
     }
     created_.fetch_add(1, std::memory_order_relaxed);
     {
@@ -223,13 +234,8 @@ Box* BoxHost::go_on_in(Box& current, int dest) {
     if (!shared_boxes_) return nullptr;
     Box& d = *boxes_[size_t(dest)];
     if (!d.scene) return nullptr;
-    if (&d != &current) {
-        BoxStats& out = lane(current).stats;
-        ++out.messages_sent, out.bytes_sent += sizeof(Item);
-        BoxStats& in = lane(d).stats;
-        ++in.messages_received, in.bytes_received += sizeof(Item);
-        ++in.rays_received;
-    }
+    count_message(current, d);  // a crossing: never into the box it leaves
+    ++lane(d).stats.rays_received;
     ++tl_worker.rays;
     if (on_processed) on_processed();
     return &d;
@@ -373,8 +379,8 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
             child.trace = c.trace;
             child.shadow = c.kind == trace::ChildRay::Kind::Shadow;
             child.light_distance = c.t_max;
-            if (child.shadow) {  // as point_shadow() starts it in the single-process
-                                 // tracer
+            if (child.shadow) {
+                // As point_shadow() starts it in the single-process tracer.
                 child.shadow_state.inside = c.trace.interiors;
                 child.shadow_state.light = c.light;
             }
@@ -541,8 +547,9 @@ void BoxHost::report_progress() {
 
 void BoxHost::run(int threads, bool emit_camera) {
     const auto t0 = Clock::now();
-    // A box is worked on by one thread at a time: threads beyond the boxes that hold
-    // something only fill inboxes and spin (one box on two threads took twice as long).
+    // With parent tracking a box is worked on by one thread at a time: threads beyond
+    // the boxes that hold something only fill inboxes and spin (one box on two threads
+    // took twice as long).
     int busy_boxes = 0;
     for (size_t b = 0; b < boxes_.size(); ++b)
         busy_boxes += boxes_[b]->scene && !(b < empty_.size() && empty_[b]);
@@ -615,14 +622,20 @@ std::vector<BoxStats> BoxHost::box_stats() const {
     return out;
 }
 
+namespace {
+// Pixel p of the image from its r, g, b and background-transmit sums.
+void set_pixel(Image& image, size_t p, const double* s, bool alpha) {
+    for (int c = 0; c < 3; ++c) image.rgba[p * 4 + size_t(c)] = float(s[c]);
+    const float t = float(s[3]);
+    image.rgba[p * 4 + 3] = alpha ? 1.0f - std::min(1.0f, std::max(0.0f, t)) : 1.0f;
+}
+}  // namespace
+
 Image image_from_sums(const std::vector<double>& sums, int width, int height,
                       bool alpha) {
     Image image(width, height);
-    for (size_t p = 0; p < size_t(width) * height; ++p) {
-        for (int c = 0; c < 3; ++c) image.rgba[p * 4 + c] = float(sums[p * 4 + c]);
-        float a = float(sums[p * 4 + 3]);
-        image.rgba[p * 4 + 3] = alpha ? 1.0f - std::min(1.0f, std::max(0.0f, a)) : 1.0f;
-    }
+    for (size_t p = 0; p < size_t(width) * height; ++p)
+        set_pixel(image, p, &sums[p * 4], alpha);
     return image;
 }
 
@@ -637,9 +650,7 @@ Image BoxHost::image(int width, int height, bool alpha) const {
             if (!a.written[p >> kSumRunShift]) continue;
             for (int c = 0; c < 4; ++c) s[c] += a.values[p * 4 + size_t(c)];
         }
-        for (int c = 0; c < 3; ++c) image.rgba[p * 4 + size_t(c)] = float(s[c]);
-        const float t = float(s[3]);
-        image.rgba[p * 4 + 3] = alpha ? 1.0f - std::min(1.0f, std::max(0.0f, t)) : 1.0f;
+        set_pixel(image, p, s, alpha);
     }
     return image;
 }
