@@ -206,8 +206,7 @@ DecodeStatus decode_frame(std::span<const uint8_t> bytes, Frame& frame) {
         if (bytes.size() < kHeaderSize + body) return DecodeStatus::NeedMore;
         frame.type = FrameType(type);
         frame.count = count;
-        frame.body.assign(bytes.begin() + kHeaderSize,
-                          bytes.begin() + kHeaderSize + body);
+        frame.body = bytes.subspan(kHeaderSize, body);
         frame.consumed = kHeaderSize + body;
         return DecodeStatus::Complete;
     }

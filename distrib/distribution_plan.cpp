@@ -116,13 +116,18 @@ struct ObjectSizes {
 // several box and worker counts over 100,000s of objects).
 struct Overlaps {
     int boxes = 0;
+    std::array<int, 3> slabs{1, 1, 1};
+    Vector3 view{0, 0, 1};        // the camera's direction (box_owners)
     std::vector<uint32_t> start;  // object i's boxes: box[start[i] .. start[i + 1])
     std::vector<int> box;
 };
 
-Overlaps overlaps_of(const ObjectSizes& o, const VirtualWalls& walls) {
+Overlaps overlaps_of(const ObjectSizes& o, const VirtualWalls& walls,
+                     const Vector3& view) {
     Overlaps ov;
     ov.boxes = walls.box_count();
+    ov.slabs = walls.slabs();
+    ov.view = view;
     ov.start.reserve(o.bounds.size() + 1);
     for (const Bounds3& b : o.bounds) {
         ov.start.push_back(uint32_t(ov.box.size()));
@@ -142,9 +147,10 @@ size_t largest_box(const ObjectSizes& o, const Overlaps& ov) {
     return *std::max_element(per_box.begin(), per_box.end());
 }
 
-// Largest estimated worker over `workers` processes hosting the boxes in contiguous runs
-// (box_owner): the process, each object overlapping any of its boxes once (a worker
-// keeps only those while it parses), and a prepared copy per box it overlaps.
+// Largest estimated worker over `workers` processes hosting the boxes as the coordinator
+// shares them out (box_owners): the process, each object overlapping any of its boxes
+// once (a worker keeps only those while it parses), and a prepared copy per box it
+// overlaps.
 size_t largest_worker(const ObjectSizes& o, const Overlaps& ov, int workers,
                       size_t pixels, int threads_asked) {
     const int boxes = ov.boxes;
@@ -158,12 +164,12 @@ size_t largest_worker(const ObjectSizes& o, const Overlaps& ov, int workers,
         size_t(workers), kWorkerProcessBytes + kMinRaysInFlight * kRayInFlightBytes +
                              pixels * (kPixelBytesPerThread * size_t(per_worker_threads) +
                                        kPixelBytesAtEnd));
-    for (int b = 0; b < boxes; ++b)
-        per_worker[size_t(box_owner(b, boxes, workers))] += kBoxBytes;
+    const std::vector<int> owner = box_owners(ov.slabs, workers, ov.view);
+    for (int b = 0; b < boxes; ++b) per_worker[size_t(owner[size_t(b)])] += kBoxBytes;
     std::vector<size_t> seen(size_t(workers), SIZE_MAX);
     for (size_t i = 0; i < o.bounds.size(); ++i) {
         for (uint32_t k = ov.start[i]; k < ov.start[i + 1]; ++k) {
-            const auto w = size_t(box_owner(ov.box[k], boxes, workers));
+            const auto w = size_t(owner[size_t(ov.box[k])]);
             per_worker[w] += o.prepared[i];
             if (seen[w] != i) per_worker[w] += o.model[i];
             seen[w] = i;
@@ -173,6 +179,46 @@ size_t largest_worker(const ObjectSizes& o, const Overlaps& ov, int workers,
 }
 
 }  // namespace
+
+std::vector<int> box_owners(std::array<int, 3> slabs, int workers, const Vector3& view) {
+    struct Block {
+        std::array<int, 3> lo, hi;  // boxes [lo, hi) per axis
+        int first, count;           // workers [first, first + count)
+    };
+    const size_t boxes = size_t(slabs[0]) * size_t(slabs[1]) * size_t(slabs[2]);
+    std::vector<int> owner(boxes, 0);
+    std::vector<Block> todo{{{0, 0, 0}, slabs, 0, std::max(1, workers)}};
+    while (!todo.empty()) {
+        const Block b = todo.back();
+        todo.pop_back();
+        int axis = -1;
+        for (int a = 0; a < 3; ++a) {
+            const int side = b.hi[a] - b.lo[a];
+            if (side < 2) continue;
+            const int best = axis < 0 ? 0 : b.hi[axis] - b.lo[axis];
+            if (side > best ||
+                (side == best && std::fabs(view[a]) < std::fabs(view[axis])))
+                axis = a;
+        }
+        if (b.count == 1 || axis < 0) {
+            for (int z = b.lo[2]; z < b.hi[2]; ++z)
+                for (int y = b.lo[1]; y < b.hi[1]; ++y)
+                    for (int x = b.lo[0]; x < b.hi[0]; ++x)
+                        owner[size_t((z * slabs[1] + y) * slabs[0] + x)] = b.first;
+            continue;
+        }
+        const int left = b.count / 2, side = b.hi[axis] - b.lo[axis];
+        const int cut =
+            b.lo[axis] +
+            std::clamp(int(std::lround(double(side) * left / b.count)), 1, side - 1);
+        Block low = b, high = b;
+        low.hi[axis] = cut, low.count = left;
+        high.lo[axis] = cut, high.first = b.first + left, high.count = b.count - left;
+        todo.push_back(low);
+        todo.push_back(high);
+    }
+    return owner;
+}
 
 DistributionPlan plan_distribution(const Scene& scene,
                                    const DistributionRequest& request) {
@@ -276,7 +322,8 @@ DistributionPlan plan_distribution(const Scene& scene,
     };
     if (!request.boxes.empty()) {
         plan.space = parse_boxes(request.boxes);
-        const Overlaps ov = overlaps_of(sizes, walls_for(sizes.bounds, plan.space));
+        const Overlaps ov = overlaps_of(sizes, walls_for(sizes.bounds, plan.space),
+                                        scene.camera.direction);
         plan.largest_box_bytes = largest_box(sizes, ov);
         const auto& b = plan.space.boxes;
         plan.reasons.push_back(
@@ -296,7 +343,7 @@ DistributionPlan plan_distribution(const Scene& scene,
         s.boxes = {n, n, n};
         s.balanced = true;
         plan.space = s;
-        ov = overlaps_of(sizes, walls_for(sizes.bounds, s));
+        ov = overlaps_of(sizes, walls_for(sizes.bounds, s), scene.camera.direction);
         plan.largest_box_bytes = largest_box(sizes, ov);
         if (plan.largest_box_bytes > plan.worker_memory) continue;
         if (!with_workers || given > 0 || !workers_can_fit || fit_workers(ov)) break;

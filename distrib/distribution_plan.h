@@ -71,11 +71,14 @@ DistributionPlan plan_distribution(const Scene& scene,
 // "12.3 MB"
 std::string format_bytes(size_t bytes);
 
-// The worker that hosts `box` of `boxes` spread over `workers`: contiguous runs of box
-// indices, so neighbours along x share a process.
-inline int box_owner(int box, int boxes, int workers) {
-    return int(int64_t(box) * workers / boxes);
-}
+// Which of `workers` processes hosts each box of a grid of `slabs` boxes (box_index
+// order). The grid is cut in two again and again, the workers shared in proportion, into
+// compact blocks: few walls lie between processes, so few crossings go over the network.
+// The longest side is cut first; among equal sides, the one most across the `view`
+// direction, so each process gets a part of the picture (cutting along the view puts
+// the front boxes, which most rays reach, on one process). More workers than boxes:
+// some host none.
+std::vector<int> box_owners(std::array<int, 3> slabs, int workers, const Vector3& view);
 
 // A worker process's own memory before any scene (binary, libraries, stacks): measured
 // 7.7 MB resident for a worker holding one sphere.

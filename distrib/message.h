@@ -78,8 +78,10 @@ struct Frame {
     std::vector<RayMessage> rays;
     std::vector<ResultMessage> results;
     uint32_t count = 0;
-    std::vector<uint8_t> body;  // Pixels, Control, Items
-    size_t consumed = 0;        // bytes of input used by this frame
+    // Pixels, Control, Items: the body within the decoded bytes (no copy; valid while
+    // they are).
+    std::span<const uint8_t> body;
+    size_t consumed = 0;  // bytes of input used by this frame
 };
 // Decodes one frame from the start of `bytes`.
 DecodeStatus decode_frame(std::span<const uint8_t> bytes, Frame& frame);

@@ -150,14 +150,15 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
     }
 }
 
-void BoxHost::inject(int box, Item&& item, size_t bytes) {
-    Box& d = *boxes_[box];
-    {
-        std::lock_guard<std::mutex> lock(d.inbox_mutex);
-        d.inbox.push_back(std::move(item));
-        d.inbox_bytes += bytes;
-    }
-    d.pending.fetch_add(1, std::memory_order_release);
+void BoxHost::sleep_until_work() {
+    std::unique_lock<std::mutex> lock(idle_mutex_);
+    sleepers_.fetch_add(1);
+    bool work = stop_.load();
+    for (size_t b = 0; b < boxes_.size() && !work; ++b)
+        work = boxes_[b]->pending.load() > 0;
+    // The timeout only bounds a wake-up lost to a future change; none is expected.
+    if (!work) idle_cv_.wait_for(lock, std::chrono::milliseconds(20));
+    sleepers_.fetch_sub(1);
 }
 
 void BoxHost::push(Box* current, int dest, Item&& item) {
@@ -224,7 +225,8 @@ void BoxHost::push(Box* current, int dest, Item&& item) {
         d.inbox.push_back(std::move(item));
         d.inbox_bytes += sizeof(Item);
     }
-    d.pending.fetch_add(1, std::memory_order_release);
+    d.pending.fetch_add(1);
+    wake_idle();
 }
 
 // The box a ray leaving `current` for `dest` goes on in at once, in this thread, with the
@@ -466,6 +468,33 @@ void BoxHost::emit_camera_rays() {
     }
 }
 
+void BoxHost::emit_pixels(int begin, int end) {
+    uint64_t made = 0;
+    for (int p = begin; p < end; ++p) {
+        Item item;
+        const int box = camera_item(p, item);
+        if (box < 0) continue;
+        ++made;
+        Box& d = *boxes_[size_t(box)];
+        if (!d.scene) {
+            remote(box, std::move(item));
+            continue;
+        }
+        {
+            std::lock_guard<std::mutex> lock(d.inbox_mutex);
+            d.inbox.push_back(std::move(item));
+            d.inbox_bytes += sizeof(Item);
+        }
+        d.pending.fetch_add(1);
+    }
+    // Created before the range is finished: a status never shows the items missing.
+    created_.fetch_add(made);
+    pixels_emitted_.fetch_add(uint64_t(end - begin));
+    finished_.fetch_add(1);
+    wake_idle();
+    if (flush) flush();
+}
+
 void BoxHost::worker(int thread, bool emit_camera) {
     tl_worker = {thread, 0, 0};
     const size_t n = boxes_.size();
@@ -479,6 +508,7 @@ void BoxHost::worker(int thread, bool emit_camera) {
             if (box.busy.exchange(true, std::memory_order_acquire)) continue;
             box.holder.store(thread, std::memory_order_relaxed);
             auto t0 = Clock::now();
+            uint64_t done = 0;
             {
                 // Swapped with a spare that keeps its capacity: no allocation per batch.
                 std::vector<Item>& incoming = box.inbox_spare;
@@ -489,15 +519,27 @@ void BoxHost::worker(int thread, bool emit_camera) {
                     box.inbox_bytes = 0;
                 }
                 box.stats.messages_received += incoming.size();
-                for (Item& it : incoming) {
-                    const bool is_result = it.is_result;
-                    const int depth = is_result ? 255 : it.ray.trace.depth;
-                    box.queue.push(std::move(it), is_result, depth);
+                if (shared_boxes_) {
+                    // Nothing waits in a box, so the order does not matter: traced
+                    // straight from the inbox, not copied through the queue.
+                    box.stats.peak_queue =
+                        std::max(box.stats.peak_queue, incoming.size());
+                    for (Item& it : incoming) {
+                        process(box, it, thread);
+                        ++done;
+                        if (on_processed) on_processed();
+                    }
+                } else {
+                    for (Item& it : incoming) {
+                        const bool is_result = it.is_result;
+                        const int depth = is_result ? 255 : it.ray.trace.depth;
+                        box.queue.push(std::move(it), is_result, depth);
+                    }
+                    box.stats.peak_queue =
+                        std::max(box.stats.peak_queue, box.queue.size());
                 }
                 incoming.clear();
-                box.stats.peak_queue = std::max(box.stats.peak_queue, box.queue.size());
             }
-            uint64_t done = 0;
             for (int budget = 0; budget < 4096 && !box.queue.empty(); ++budget) {
                 Item it = box.queue.pop();
                 process(box, it, thread);
@@ -526,7 +568,7 @@ void BoxHost::worker(int thread, bool emit_camera) {
             } else {
                 if (flush) flush();
                 if (stop_.load()) return;
-                std::this_thread::sleep_for(std::chrono::microseconds(200));
+                sleep_until_work();
             }
         }
     }
@@ -588,19 +630,6 @@ void BoxHost::run(int threads, bool emit_camera) {
     for (auto& b : boxes_) {
         if (b->scene) b->stats.idle_seconds = std::max(0.0, wall - b->stats.busy_seconds);
     }
-}
-
-std::vector<double> BoxHost::pixel_sums() const {
-    std::vector<double> sum(size_t(total_pixels_) * 4, 0.0);
-    for (const PixelSums& a : accum_) {
-        for (size_t run = 0; run < a.written.size(); ++run) {
-            if (!a.written[run]) continue;
-            const size_t begin = (run << kSumRunShift) * 4;
-            const size_t end = std::min(sum.size(), ((run + 1) << kSumRunShift) * 4);
-            for (size_t i = begin; i < end; ++i) sum[i] += a.values[i];
-        }
-    }
-    return sum;
 }
 
 std::vector<BoxStats> BoxHost::box_stats() const {

@@ -19,6 +19,7 @@
 //   coord -> worker   Control finish; worker -> coord Pixels (sums), then Control done
 //   coord -> worker   Control frame (new animation values): the next frame, from "busy"
 // clang-format on
+#include <malloc.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -165,8 +166,24 @@ struct Writer {
         std::memcpy(b, &v, sizeof(T));
         out.insert(out.end(), b, b + sizeof(T));
     }
+};
+// One record built in place, appended to its frame once: a vector insert per field was
+// a tenth of a worker's time.
+struct RecordWriter {
+    static constexpr size_t kCapacity = 256;  // an item record is at most 215 bytes
+    uint8_t bytes[kCapacity];
+    uint8_t* p = bytes;
+    template <class T>
+    void raw(T v) {
+        std::memcpy(p, &v, sizeof(T));
+        p += sizeof(T);
+    }
     void vec(const Vector3& v) { raw(v.x), raw(v.y), raw(v.z); }
     void rgb(const Rgb& c) { raw(c.r), raw(c.g), raw(c.b); }
+    void append_to(std::vector<uint8_t>& out) const {
+        out.insert(out.end(), static_cast<const uint8_t*>(bytes),
+                   static_cast<const uint8_t*>(p));
+    }
 };
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
               "the wire format is little-endian");
@@ -198,7 +215,8 @@ struct Reader {
     }
 };
 
-void write_stack(Writer& w, const trace::InteriorStack& s, const ObjectNumbers& numbers) {
+void write_stack(RecordWriter& w, const trace::InteriorStack& s,
+                 const ObjectNumbers& numbers) {
     w.raw(uint8_t(s.size));
     for (int i = 0; i < s.size && i < trace::InteriorStack::kCapacity; ++i) {
         w.raw(numbers.number(s.items[i]));
@@ -215,7 +233,8 @@ void read_stack(Reader& r, trace::InteriorStack& s, const ObjectNumbers& numbers
     for (int i = 0; i < n; ++i) s.items[i] = numbers.material(r.raw<int32_t>());
 }
 
-void write_item(Writer& w, int box, const Item& item, const ObjectNumbers& numbers) {
+void write_fields(RecordWriter& w, int box, const Item& item,
+                  const ObjectNumbers& numbers) {
     w.raw(uint32_t(box));
     w.raw(uint8_t(item.is_result));
     if (item.is_result) {
@@ -249,6 +268,13 @@ void write_item(Writer& w, int box, const Item& item, const ObjectNumbers& numbe
     w.raw(r.pixel);
     w.rgb(r.contribution);
     w.raw(r.transmit_contribution);
+}
+
+void write_item(std::vector<uint8_t>& out, int box, const Item& item,
+                const ObjectNumbers& numbers) {
+    RecordWriter w;
+    write_fields(w, box, item, numbers);
+    w.append_to(out);
 }
 
 bool read_item(Reader& rd, int box_count, int& box, Item& item,
@@ -355,24 +381,31 @@ class Connection : public std::enable_shared_from_this<Connection> {
   private:
     void read() {
         auto self = shared_from_this();
+        // Received bytes land after the unparsed ones in `pending_` (kept at its largest
+        // size, so no fresh pages per frame); parsed frames are dropped by moving only
+        // the partial frame that follows them to the front.
+        if (pending_.size() < filled_ + kChunk) pending_.resize(filled_ + kChunk);
         socket_.async_read_some(
-            asio::buffer(chunk_), [this, self](boost::system::error_code ec, size_t n) {
+            asio::buffer(pending_.data() + filled_, kChunk),
+            [this, self](boost::system::error_code ec, size_t n) {
                 if (closed_) return;
                 if (ec) return fail(disconnected(ec));
-                pending_.insert(pending_.end(), chunk_.begin(), chunk_.begin() + n);
+                filled_ += n;
                 size_t used = 0;
                 for (;;) {
-                    Frame frame;
-                    DecodeStatus st =
-                        decode_frame(std::span(pending_).subspan(used), frame);
+                    DecodeStatus st = decode_frame(
+                        std::span(pending_.data() + used, filled_ - used), frame_);
                     if (st == DecodeStatus::NeedMore) break;
                     if (st == DecodeStatus::Bad)
                         return fail("malformed frame or wrong protocol version");
-                    used += frame.consumed;
-                    on_frame(frame);
+                    used += frame_.consumed;
+                    on_frame(frame_);
                     if (closed_) return;
                 }
-                pending_.erase(pending_.begin(), pending_.begin() + used);
+                if (used) {
+                    std::memmove(pending_.data(), pending_.data() + used, filled_ - used);
+                    filled_ -= used;
+                }
                 read();
             });
     }
@@ -394,8 +427,10 @@ class Connection : public std::enable_shared_from_this<Connection> {
 
     tcp::socket socket_;
     std::string name_;
-    std::array<uint8_t, 64 << 10> chunk_;
+    static constexpr size_t kChunk = 64 << 10;
     std::vector<uint8_t> pending_;
+    size_t filled_ = 0;  // bytes of pending_ received and not yet parsed
+    Frame frame_;        // reused: its body keeps its capacity
     std::deque<Buffer> queue_;
     bool closed_ = false;
 };
@@ -575,6 +610,12 @@ class Worker {
             host_->set_box_empty(j.at("empty").get<std::vector<uint8_t>>());
             render_ = std::thread([this] { host_->run(threads_, false); });
             send_status(-1);
+        } else if (type == "pixels") {
+            const int total = settings_.width * settings_.height;
+            const int begin = j.at("begin").get<int>(), end = j.at("end").get<int>();
+            if (!host_ || begin < 0 || begin > end || end > total)
+                return fail_job("bad pixel range");
+            host_->emit_pixels(begin, end);
         } else if (type == "probe") {
             send_status(j.at("seq").get<long>());
         } else if (type == "finish") {
@@ -746,8 +787,7 @@ class Worker {
             Outbox& o = *outboxes_[owner_[box]];
             std::lock_guard<std::mutex> lock(o.mutex);
             const size_t before = o.records.size();
-            Writer w{o.records};
-            write_item(w, box, item, *numbers_);
+            write_item(o.records, box, item, *numbers_);
             const size_t bytes = o.records.size() - before;
             if (++o.count, o.records.size() >= Outbox::kFlushBytes)
                 post(owner_[box], o.take());
@@ -817,18 +857,37 @@ class Worker {
     void items(Frame& f) {
         if (f.type != FrameType::Items || !host_) return;
         Reader rd{f.body.data(), f.body.data() + f.body.size()};
-        for (uint32_t i = 0; i < f.count; ++i) {
-            Item item;
-            int box;
-            const uint8_t* record = rd.p;
-            if (!read_item(rd, host_->box_count(), box, item, *numbers_) ||
-                !host_->hosts(box)) {
-                std::fprintf(stderr, "povwall worker: malformed item frame\n");
-                exit_code_ = 3;
-                io_.stop();
-                return;
+        // Records for one box in a row go into its inbox together.
+        uint32_t done = 0;
+        bool bad = false;
+        auto next_box = [&]() -> int64_t {
+            uint32_t box;
+            if (rd.end - rd.p < ptrdiff_t(sizeof box)) return -1;
+            std::memcpy(&box, rd.p, sizeof box);
+            return box;
+        };
+        while (done < f.count && !bad) {
+            const int64_t box = next_box();
+            if (box < 0 || box >= host_->box_count() || !host_->hosts(int(box))) {
+                bad = true;
+                break;
             }
-            host_->inject(box, std::move(item), size_t(rd.p - record));
+            host_->inject_many(int(box), [&](Item& item) -> size_t {
+                if (done == f.count || next_box() != box) return 0;
+                const uint8_t* record = rd.p;
+                int read_box;
+                if (!read_item(rd, host_->box_count(), read_box, item, *numbers_)) {
+                    bad = true;
+                    return 0;
+                }
+                ++done;
+                return size_t(rd.p - record);
+            });
+        }
+        if (bad) {
+            std::fprintf(stderr, "povwall worker: malformed item frame\n");
+            exit_code_ = 3;
+            io_.stop();
         }
     }
 
@@ -840,7 +899,8 @@ class Worker {
         coordinator_->send(control_frame({{"type", "status"},
                                           {"seq", seq},
                                           {"created", created},
-                                          {"finished", finished}}));
+                                          {"finished", finished},
+                                          {"pixels", host_->pixels_emitted()}}));
         if (seq < 0) {
             status_timer_.expires_after(std::chrono::milliseconds(10));
             status_timer_.async_wait([this](boost::system::error_code ec) {
@@ -854,10 +914,10 @@ class Worker {
         if (render_.joinable()) render_.join();
         status_timer_.cancel();
         // Pixel sums, non-zero pixels only, as (index u32, r g b transmit f64) records.
-        std::vector<double> sums = host_->pixel_sums();
         constexpr size_t kRecord = 4 + 4 * 8;
         const size_t per_frame = kMaxBodySize / kRecord;
         std::vector<uint8_t> body;
+        body.reserve(per_frame * kRecord);
         uint32_t count = 0;
         auto flush_pixels = [&] {
             auto buf = std::make_shared<std::vector<uint8_t>>();
@@ -866,14 +926,13 @@ class Worker {
             body.clear();
             count = 0;
         };
-        for (size_t p = 0; p * 4 < sums.size(); ++p) {
-            const double* s = &sums[p * 4];
-            if (s[0] == 0 && s[1] == 0 && s[2] == 0 && s[3] == 0) continue;
+        host_->for_each_pixel_sum([&](size_t p, const double* s) {
+            if (s[0] == 0 && s[1] == 0 && s[2] == 0 && s[3] == 0) return;
             Writer w{body};
             w.raw(uint32_t(p));
             for (int c = 0; c < 4; ++c) w.raw(s[c]);
             if (++count == per_frame) flush_pixels();
-        }
+        });
         if (count) flush_pixels();
         // Hosted boxes only, in box order: the coordinator reads them against its owners.
         json boxes = json::array();
@@ -1052,6 +1111,7 @@ class TcpCoordinator {
         for (WorkerState& w : workers_) {
             w.ready = w.done = false;
             w.created = w.finished = 0;
+            w.pixels_sent = w.pixels_done = 0;
             w.wave_seq = -1;
             w.last_seen = Clock::now();
         }
@@ -1109,7 +1169,9 @@ class TcpCoordinator {
         Clock::time_point last_seen;
         bool ready = false, done = false;
         uint64_t created = 0, finished = 0;  // latest status
-        uint64_t peak_resident = 0;          // the process's VmHWM at its last "done"
+        // Pixels of the ranges sent to this worker, and handled by it (latest status).
+        uint64_t pixels_sent = 0, pixels_done = 0;
+        uint64_t peak_resident = 0;  // the process's VmHWM at its last "done"
         size_t objects_kept = 0, objects_left_out = 0;  // by its parse (ready)
         long wave_seq = -1;                             // latest probe answered
         uint64_t wave_created = 0, wave_finished = 0;
@@ -1142,11 +1204,8 @@ class TcpCoordinator {
         // Walls stay for the whole sequence: the outer boxes are unbounded, so any
         // frame's objects fall in some box; only the balance may drift.
         emitter_walls_ = emitter_->walls();
-        const int boxes = emitter_walls_.box_count();
         const int n = int(addresses.size());
-        // Contiguous runs of box indices per worker: neighbours along x share a process.
-        owner_.resize(boxes);
-        for (int b = 0; b < boxes; ++b) owner_[b] = box_owner(b, boxes, n);
+        owner_ = box_owners(emitter_walls_.slabs(), n, scene_->camera.direction);
         json job = fixed_;
         job["animation"] = animation_values(source);
         job["walls"] = std::array<std::vector<Real>, 3>{
@@ -1180,18 +1239,21 @@ class TcpCoordinator {
         }
     }
 
+    // "worker 1 (host:port, boxes 1, 3, 5-7)": its boxes, runs of neighbours joined.
     std::string describe(int i) const {
-        int first = -1, last = -1;
+        std::string list;
+        int count = 0;
         for (size_t b = 0; b < owner_.size(); ++b) {
-            if (owner_[b] != i) continue;
-            if (first < 0) first = int(b);
-            last = int(b);
+            if (owner_[b] != i || (b > 0 && owner_[b - 1] == i)) continue;
+            size_t last = b;
+            while (last + 1 < owner_.size() && owner_[last + 1] == i) ++last;
+            if (!list.empty()) list += ", ";
+            list += std::to_string(b);
+            if (last > b) list += "-" + std::to_string(last);
+            count += int(last - b) + 1;
         }
-        std::string boxes =
-            first == last ? "box " + std::to_string(first)
-                          : "boxes " + std::to_string(first) + "-" + std::to_string(last);
-        return "worker " + std::to_string(i) + " (" + workers_[i].address + ", " + boxes +
-               ")";
+        return "worker " + std::to_string(i) + " (" + workers_[i].address + ", " +
+               (count == 1 ? "box " : "boxes ") + list + ")";
     }
 
     // `lost`: the worker is gone (a job it refused is not a loss another try could mend).
@@ -1266,6 +1328,7 @@ class TcpCoordinator {
             if (settings_->progress && finished > w.finished)
                 settings_->progress->rays += finished - w.finished;
             w.finished = finished;
+            w.pixels_done = j.value("pixels", uint64_t(0));
             report_progress();
             long seq = j.at("seq").get<long>();
             if (seq >= 0) {
@@ -1324,30 +1387,32 @@ class TcpCoordinator {
         }
     }
 
-    // Camera rays while the last reported traffic is below the in-flight bound.
+    // Camera rays while the last reported traffic is below the in-flight bound. The
+    // workers make them: each range of pixels goes to the worker hosting the box where
+    // the range's middle camera ray starts (camera rays of one range mostly start in one
+    // box), which queues those starting in its boxes and forwards the others. A range
+    // counts as one created item until a worker finishes it, and as its pixels for the
+    // flow control until the worker has handled it.
     void emit() {
         if (!started_ || !in_frame_) return;
+        constexpr int kRange = 512;
         const int total = settings_->width * settings_->height;
         int64_t live = int64_t(created_);
-        for (const WorkerState& w : workers_)
+        for (const WorkerState& w : workers_) {
             live += int64_t(w.created) - int64_t(w.finished);
+            live += int64_t(w.pixels_sent) - int64_t(w.pixels_done);
+        }
         while (next_pixel_ < total && live < int64_t(options_->max_rays_in_flight)) {
-            int end = std::min(total, next_pixel_ + 1024);
-            for (int p = next_pixel_; p < end; ++p) {
-                Item item;
-                int box = emitter_->camera_item(p, item);
-                if (box < 0) continue;
-                Outbox& o = *workers_[owner_[box]].outbox;
-                Writer wr{o.records};
-                write_item(wr, box, item, *numbers_);
-                ++o.count;
-            }
-            created_ += uint64_t(end - next_pixel_);
-            live += end - next_pixel_;
+            const int end = std::min(total, next_pixel_ + kRange);
+            Item item;
+            const int box = emitter_->camera_item((next_pixel_ + end) / 2, item);
+            WorkerState& w = workers_[size_t(box >= 0 ? owner_[size_t(box)] : 0)];
+            w.conn->send(control_frame(
+                {{"type", "pixels"}, {"begin", next_pixel_}, {"end", end}}));
+            w.pixels_sent += uint64_t(end - next_pixel_);
+            ++created_;
+            live += 1 + (end - next_pixel_);
             next_pixel_ = end;
-            for (WorkerState& w : workers_) {
-                if (w.outbox->count) w.conn->send(w.outbox->take());
-            }
         }
         if (next_pixel_ >= total && live == 0 && wave_pending_ < 0) probe();
     }
@@ -1612,6 +1677,12 @@ std::vector<std::string> gather_workers(
 }
 
 int run_worker(const WorkerOptions& given) {
+    // A worker's buffers (frames, inboxes, queues) grow and shrink with the traffic; by
+    // default glibc hands large blocks back to the kernel and the next growth faults
+    // fresh pages in again (a quarter of a worker's kernel time). Kept instead: a
+    // worker's peak is bounded by the rays in flight.
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
     try {
         WorkerOptions options = given;
         if (!options.rendezvous.empty()) {

@@ -232,6 +232,36 @@ TEST(DistributionPlan, EstimateIsCloseToThePreparedSize) {
     EXPECT_LT(double(estimate), 1.3 * double(stats.resident_bytes));
 }
 
+// Workers get compact blocks of boxes, cut across the view first.
+TEST(DistributionPlan, BoxOwnersAreCompactBlocksCutAcrossTheView) {
+    // 4x4x4 over 8: each worker a 2x2x2 block.
+    const std::vector<int> owner = box_owners({4, 4, 4}, 8, {0.1, 0.2, 1});
+    ASSERT_EQ(owner.size(), 64u);
+    for (int w = 0; w < 8; ++w) {
+        int lo[3] = {4, 4, 4}, hi[3] = {-1, -1, -1}, count = 0;
+        for (int b = 0; b < 64; ++b) {
+            if (owner[size_t(b)] != w) continue;
+            const int cell[3] = {b % 4, b / 4 % 4, b / 16};
+            for (int a = 0; a < 3; ++a)
+                lo[a] = std::min(lo[a], cell[a]), hi[a] = std::max(hi[a], cell[a]);
+            ++count;
+        }
+        EXPECT_EQ(count, 8) << "worker " << w;
+        for (int a = 0; a < 3; ++a) EXPECT_EQ(hi[a] - lo[a], 1) << "worker " << w;
+    }
+    // 2x2x2 over 2, camera along z: cut at the x wall (x is more across the view than
+    // y here), so each worker has front and back boxes.
+    EXPECT_EQ(box_owners({2, 2, 2}, 2, {0.1, 0.3, 1}),
+              (std::vector<int>{0, 1, 0, 1, 0, 1, 0, 1}));
+    // Camera along x: the cut is at the y wall.
+    EXPECT_EQ(box_owners({2, 2, 2}, 2, {1, 0.1, 0.3}),
+              (std::vector<int>{0, 0, 1, 1, 0, 0, 1, 1}));
+    // Uneven shares and more workers than boxes.
+    EXPECT_EQ(box_owners({3, 1, 1}, 3, {0, 0, 1}), (std::vector<int>{0, 1, 2}));
+    EXPECT_EQ(box_owners({5, 1, 1}, 2, {0, 0, 1}), (std::vector<int>{0, 0, 0, 1, 1}));
+    EXPECT_EQ(box_owners({2, 1, 1}, 4, {0, 0, 1}), (std::vector<int>{0, 2}));
+}
+
 TEST(DistributionPlan, ParsesMemorySizesAndBoxes) {
     EXPECT_EQ(parse_memory_size("512M"), size_t(512) << 20);
     EXPECT_EQ(parse_memory_size("2G"), size_t(2) << 30);
