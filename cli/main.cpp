@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <optional>
@@ -17,6 +18,26 @@
 
 namespace povwall::cli {
 namespace {
+
+// A worker's buffers (frames, inboxes) grow and shrink with the traffic of rays, and
+// glibc's malloc takes fresh 4 KB pages from the kernel one fault at a time: 70,000
+// faults for 8 workers at 600x600, a sixth of their time on a virtual machine. With
+// glibc's huge-page tunable its heap is advised into 2 MB pages (18,000 faults). The
+// tunable is read at start only, so a worker executes itself again once with it set
+// (a launcher's or the user's own GLIBC_TUNABLES are kept, and extended).
+void restart_with_huge_page_heap(char** argv) {
+    constexpr const char* kTunable = "glibc.malloc.hugetlb=1";
+    const char* tunables = std::getenv("GLIBC_TUNABLES");
+    if (std::getenv("POVWALL_HEAP_SET") ||
+        (tunables && std::strstr(tunables, "glibc.malloc.hugetlb")))
+        return;
+    std::string value = tunables && *tunables ? std::string(tunables) + ":" + kTunable
+                                              : std::string(kTunable);
+    setenv("GLIBC_TUNABLES", value.c_str(), 1);
+    setenv("POVWALL_HEAP_SET", "1", 1);  // not twice, whatever the loader did with it
+    execv("/proc/self/exe", argv);
+    // Could not: go on with the ordinary heap.
+}
 
 const char* kUsage =
     "usage: povwall render SCENE.pov [-o OUT.png] [-W N] [-H N] [-L DIR]... [--threads "
@@ -203,6 +224,7 @@ int main(int argc, char** argv) {
         const std::string& cmd = args[0];
         // Worker processes write no image: Ctrl-C (sent to the whole process group) ends
         // them quietly, and the coordinator says what happened.
+        if (cmd == "worker") restart_with_huge_page_heap(argv);
         if (cmd == "worker" ||
             std::find(args.begin(), args.end(), "--tile-worker") != args.end()) {
             std::signal(SIGINT, SIG_DFL);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdlib>
 #include <functional>
@@ -146,6 +147,13 @@ class BoxHost {
     // Runs `threads` worker threads until all camera rays are traced (in-process), or
     // until stop() (worker process: emit_camera false).
     void run(int threads, bool emit_camera);
+    // A worker process with one render thread traces on the thread that receives the
+    // items instead, between its network events (no second thread to wake, no
+    // hand-over): begin_run(1) once, drain() whenever items arrived (traces until no
+    // hosted box has any, then sends what goes elsewhere), end_run() at the end.
+    int begin_run(int threads);
+    void drain();
+    void end_run();
     void stop() {
         stop_.store(true);
         wake_idle();
@@ -173,6 +181,10 @@ class BoxHost {
 
   private:
     void worker(int thread, bool emit_camera);
+    // One batch of one box that has items, on this thread, then `send` what goes to
+    // other processes; false when no box had any.
+    bool work_on_a_box(int thread, bool emit_camera, size_t& start, bool send);
+    std::chrono::steady_clock::time_point run_start_;
     void emit_camera_rays();
     void process(Box& box, Item& item, int thread);
     void process_ray(Box& entry, Item& item, int thread);

@@ -5,6 +5,7 @@
 #include <new>
 #include <thread>
 
+#include "core/memory.h"
 #include "distrib/box_host.h"
 #include "trace/camera.h"
 #include "trace/shading.h"
@@ -495,83 +496,90 @@ void BoxHost::emit_pixels(int begin, int end) {
     if (flush) flush();
 }
 
+bool BoxHost::work_on_a_box(int thread, bool emit_camera, size_t& start, bool send) {
+    const size_t n = boxes_.size();
+    for (size_t k = 0; k < n; ++k) {
+        Box& box = *boxes_[(start + k) % n];
+        if (box.pending.load(std::memory_order_acquire) == 0) continue;
+        if (box.busy.exchange(true, std::memory_order_acquire)) continue;
+        box.holder.store(thread, std::memory_order_relaxed);
+        auto t0 = Clock::now();
+        uint64_t done = 0;
+        {
+            // Swapped with a spare that keeps its capacity: no allocation per batch.
+            std::vector<Item>& incoming = box.inbox_spare;
+            {
+                std::lock_guard<std::mutex> lock(box.inbox_mutex);
+                incoming.swap(box.inbox);
+                box.stats.bytes_received += box.inbox_bytes;
+                box.inbox_bytes = 0;
+            }
+            box.stats.messages_received += incoming.size();
+            if (shared_boxes_) {
+                // Nothing waits in a box, so the order does not matter: traced
+                // straight from the inbox, not copied through the queue.
+                box.stats.peak_queue = std::max(box.stats.peak_queue, incoming.size());
+                for (Item& it : incoming) {
+                    process(box, it, thread);
+                    ++done;
+                    if (on_processed) on_processed();
+                }
+            } else {
+                for (Item& it : incoming) {
+                    const bool is_result = it.is_result;
+                    const int depth = is_result ? 255 : it.ray.trace.depth;
+                    box.queue.push(std::move(it), is_result, depth);
+                }
+                box.stats.peak_queue = std::max(box.stats.peak_queue, box.queue.size());
+            }
+            incoming.clear();
+        }
+        for (int budget = 0; budget < 4096 && !box.queue.empty(); ++budget) {
+            Item it = box.queue.pop();
+            process(box, it, thread);
+            ++done;
+            if (on_processed) on_processed();
+        }
+        // Counted once per batch: one atomic add per item on counters every thread
+        // shares cost more than the queue. Late counts are safe: `finished` only
+        // lags `created` (termination waits, flow control holds back a little more).
+        box.pending.fetch_sub(done, std::memory_order_release);
+        finished_.fetch_add(done, std::memory_order_acq_rel);
+        report_progress();
+        box.stats.busy_seconds +=
+            std::chrono::duration<double>(Clock::now() - t0).count();
+        box.holder.store(-1, std::memory_order_relaxed);
+        box.busy.store(false, std::memory_order_release);
+        if (send && flush) flush();
+        start = (start + k + 1) % n;
+        return true;
+    }
+    return false;
+}
+
 void BoxHost::worker(int thread, bool emit_camera) {
     tl_worker = {thread, 0, 0};
-    const size_t n = boxes_.size();
-    size_t start = size_t(thread) * 7919 % std::max<size_t>(1, n);
+    size_t start = size_t(thread) * 7919 % std::max<size_t>(1, boxes_.size());
     for (;;) {
         if (emit_camera) emit_camera_rays();
-        bool worked = false;
-        for (size_t k = 0; k < n; ++k) {
-            Box& box = *boxes_[(start + k) % n];
-            if (box.pending.load(std::memory_order_acquire) == 0) continue;
-            if (box.busy.exchange(true, std::memory_order_acquire)) continue;
-            box.holder.store(thread, std::memory_order_relaxed);
-            auto t0 = Clock::now();
-            uint64_t done = 0;
-            {
-                // Swapped with a spare that keeps its capacity: no allocation per batch.
-                std::vector<Item>& incoming = box.inbox_spare;
-                {
-                    std::lock_guard<std::mutex> lock(box.inbox_mutex);
-                    incoming.swap(box.inbox);
-                    box.stats.bytes_received += box.inbox_bytes;
-                    box.inbox_bytes = 0;
-                }
-                box.stats.messages_received += incoming.size();
-                if (shared_boxes_) {
-                    // Nothing waits in a box, so the order does not matter: traced
-                    // straight from the inbox, not copied through the queue.
-                    box.stats.peak_queue =
-                        std::max(box.stats.peak_queue, incoming.size());
-                    for (Item& it : incoming) {
-                        process(box, it, thread);
-                        ++done;
-                        if (on_processed) on_processed();
-                    }
-                } else {
-                    for (Item& it : incoming) {
-                        const bool is_result = it.is_result;
-                        const int depth = is_result ? 255 : it.ray.trace.depth;
-                        box.queue.push(std::move(it), is_result, depth);
-                    }
-                    box.stats.peak_queue =
-                        std::max(box.stats.peak_queue, box.queue.size());
-                }
-                incoming.clear();
-            }
-            for (int budget = 0; budget < 4096 && !box.queue.empty(); ++budget) {
-                Item it = box.queue.pop();
-                process(box, it, thread);
-                ++done;
-                if (on_processed) on_processed();
-            }
-            // Counted once per batch: one atomic add per item on counters every thread
-            // shares cost more than the queue. Late counts are safe: `finished` only
-            // lags `created` (termination waits, flow control holds back a little more).
-            box.pending.fetch_sub(done, std::memory_order_release);
-            finished_.fetch_add(done, std::memory_order_acq_rel);
-            report_progress();
-            box.stats.busy_seconds +=
-                std::chrono::duration<double>(Clock::now() - t0).count();
-            box.holder.store(-1, std::memory_order_relaxed);
-            box.busy.store(false, std::memory_order_release);
-            if (!emit_camera && flush) flush();
-            worked = true;
-            start = (start + k + 1) % n;
-            break;
-        }
-        if (!worked) {
-            if (emit_camera) {
-                if (pixels_sent() >= total_pixels_ && created() == finished()) return;
-                std::this_thread::yield();
-            } else {
-                if (flush) flush();
-                if (stop_.load()) return;
-                sleep_until_work();
-            }
+        if (work_on_a_box(thread, emit_camera, start, !emit_camera)) continue;
+        if (emit_camera) {
+            if (pixels_sent() >= total_pixels_ && created() == finished()) return;
+            std::this_thread::yield();
+        } else {
+            if (flush) flush();
+            if (stop_.load()) return;
+            sleep_until_work();
         }
     }
+}
+
+void BoxHost::drain() {
+    tl_worker = {0, 0, 0};
+    size_t start = 0;
+    while (work_on_a_box(0, false, start, false)) {
+    }
+    if (flush) flush();
 }
 
 void BoxHost::report_progress() {
@@ -587,8 +595,8 @@ void BoxHost::report_progress() {
     if (done > before) settings_.progress->pixels_done += done - before;
 }
 
-void BoxHost::run(int threads, bool emit_camera) {
-    const auto t0 = Clock::now();
+int BoxHost::begin_run(int threads) {
+    run_start_ = Clock::now();
     // With parent tracking a box is worked on by one thread at a time: threads beyond
     // the boxes that hold something only fill inboxes and spin (one box on two threads
     // took twice as long).
@@ -609,6 +617,9 @@ void BoxHost::run(int threads, bool emit_camera) {
         sums.values.reset(
             static_cast<double*>(std::calloc(std::max<size_t>(n, 1), sizeof(double))));
         if (!sums.values) throw std::bad_alloc();
+        // Pixels anywhere in the image get light (reflections): 2 MB pages, not
+        // thousands of 4 KB faults.
+        advise_huge_pages(sums.values.get(), n * sizeof(double));
         sums.written.assign((size_t(total_pixels_) >> kSumRunShift) + 1, 0);
     }
     // One band of the image per thread: threads tracing neighbouring pixels need the
@@ -620,16 +631,25 @@ void BoxHost::run(int threads, bool emit_camera) {
         bands_[b].end = int(int64_t(total_pixels_) * (b + 1) / threads);
         bands_[b].next.store(bands_[b].begin);
     }
+    return threads;
+}
+
+void BoxHost::end_run() {
+    const double wall = std::chrono::duration<double>(Clock::now() - run_start_).count();
+    for (auto& b : boxes_) {
+        if (b->scene) b->stats.idle_seconds = std::max(0.0, wall - b->stats.busy_seconds);
+    }
+}
+
+void BoxHost::run(int threads, bool emit_camera) {
+    threads = begin_run(threads);
     std::vector<std::thread> pool;
     for (int i = 1; i < threads; ++i)
         pool.emplace_back(&BoxHost::worker, this, i, emit_camera);
     worker(0, emit_camera);
     for (auto& t : pool) t.join();
     if (emit_camera) report_progress();
-    const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
-    for (auto& b : boxes_) {
-        if (b->scene) b->stats.idle_seconds = std::max(0.0, wall - b->stats.busy_seconds);
-    }
+    end_run();
 }
 
 std::vector<BoxStats> BoxHost::box_stats() const {

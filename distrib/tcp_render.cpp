@@ -42,6 +42,7 @@
 #include <thread>
 #include <unordered_map>
 
+#include "core/memory.h"
 #include "distrib/box_host.h"
 #include "distrib/child_process.h"
 #include "distrib/distribution_plan.h"
@@ -368,7 +369,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
     void send(Buffer buf) {  // io thread only
         if (closed_) return;
         queue_.push_back(std::move(buf));
-        if (queue_.size() == 1) write();
+        if (writing_ == 0) write();
     }
     void close() {
         closed_ = true;
@@ -409,15 +410,20 @@ class Connection : public std::enable_shared_from_this<Connection> {
                 read();
             });
     }
+    // Everything queued goes out in one write (one system call for many small frames).
     void write() {
         auto self = shared_from_this();
-        asio::async_write(socket_, asio::buffer(*queue_.front()),
-                          [this, self](boost::system::error_code ec, size_t) {
-                              if (closed_) return;
-                              if (ec) return fail(disconnected(ec));
-                              queue_.pop_front();
-                              if (!queue_.empty()) write();
-                          });
+        writing_ = queue_.size();
+        gather_.clear();
+        for (const Buffer& b : queue_) gather_.push_back(asio::buffer(*b));
+        asio::async_write(
+            socket_, gather_, [this, self](boost::system::error_code ec, size_t) {
+                if (closed_) return;
+                if (ec) return fail(disconnected(ec));
+                queue_.erase(queue_.begin(), queue_.begin() + ptrdiff_t(writing_));
+                writing_ = 0;
+                if (!queue_.empty()) write();
+            });
     }
     void fail(const std::string& why) {
         if (closed_) return;
@@ -432,6 +438,8 @@ class Connection : public std::enable_shared_from_this<Connection> {
     size_t filled_ = 0;  // bytes of pending_ received and not yet parsed
     Frame frame_;        // reused: its body keeps its capacity
     std::deque<Buffer> queue_;
+    size_t writing_ = 0;  // buffers at the front of queue_ being written
+    std::vector<asio::const_buffer> gather_;
     bool closed_ = false;
 };
 
@@ -608,7 +616,13 @@ class Worker {
             frame(j);
         } else if (type == "start") {
             host_->set_box_empty(j.at("empty").get<std::vector<uint8_t>>());
-            render_ = std::thread([this] { host_->run(threads_, false); });
+            // One render thread: the io thread traces itself, between network events.
+            inline_ = threads_ == 1;
+            if (inline_) {
+                host_->begin_run(1);
+            } else {
+                render_ = std::thread([this] { host_->run(threads_, false); });
+            }
             send_status(-1);
         } else if (type == "pixels") {
             const int total = settings_.width * settings_.height;
@@ -616,6 +630,7 @@ class Worker {
             if (!host_ || begin < 0 || begin > end || end > total)
                 return fail_job("bad pixel range");
             host_->emit_pixels(begin, end);
+            if (inline_) schedule_drain();
         } else if (type == "probe") {
             send_status(j.at("seq").get<long>());
         } else if (type == "finish") {
@@ -833,6 +848,7 @@ class Worker {
         ++generation_;  // handlers posted for this job do nothing now
         if (host_) host_->stop();
         if (render_.joinable()) render_.join();
+        inline_ = false;
         if (preparing_.joinable()) preparing_.join();
         status_timer_.cancel();
         busy_timer_.cancel();
@@ -884,11 +900,23 @@ class Worker {
                 return size_t(rd.p - record);
             });
         }
+        if (!bad && inline_) schedule_drain();
         if (bad) {
             std::fprintf(stderr, "povwall worker: malformed item frame\n");
             exit_code_ = 3;
             io_.stop();
         }
+    }
+
+    // Inline tracing waits until the frames already received are in: one drain (and one
+    // round of sends) for all of them, not one per frame.
+    void schedule_drain() {
+        if (drain_posted_) return;
+        drain_posted_ = true;
+        asio::post(io_, [this, generation = generation_.load()] {
+            drain_posted_ = false;
+            if (generation == generation_ && host_ && inline_) host_->drain();
+        });
     }
 
     void send_status(long seq) {
@@ -912,10 +940,13 @@ class Worker {
     void finish() {
         host_->stop();
         if (render_.joinable()) render_.join();
+        if (inline_) host_->end_run();
+        inline_ = false;
         status_timer_.cancel();
         // Pixel sums, non-zero pixels only, as (index u32, r g b transmit f64) records.
         constexpr size_t kRecord = 4 + 4 * 8;
-        const size_t per_frame = kMaxBodySize / kRecord;
+        // Frames of 256 KB: the coordinator's receive buffers stay that size.
+        const size_t per_frame = (size_t(256) << 10) / kRecord;
         std::vector<uint8_t> body;
         body.reserve(per_frame * kRecord);
         uint32_t count = 0;
@@ -972,6 +1003,8 @@ class Worker {
     std::vector<int> owner_, mine_;
     int self_ = 0, threads_ = 1;
     std::thread render_;
+    bool inline_ = false;  // this frame is traced on the io thread (one render thread)
+    bool drain_posted_ = false;
     std::atomic<long> processed_{0};
     std::atomic<uint64_t> generation_{0};  // jobs served: stale handlers check it
     bool done_ = false;
@@ -1097,7 +1130,14 @@ class TcpCoordinator {
         }
         emitter_->build_boxes({});
         const int boxes = emitter_->walls().box_count();
-        sums_.assign(size_t(settings.width) * settings.height * 4, 0.0);
+        // Sums of the whole image, on 2 MB pages (thousands of 4 KB faults otherwise).
+        const size_t sum_count = size_t(settings.width) * size_t(settings.height) * 4;
+        if (sums_.capacity() < sum_count) {
+            sums_ = std::vector<double>();
+            sums_.reserve(sum_count);
+            advise_huge_pages(sums_.data(), sum_count * sizeof(double));
+        }
+        sums_.assign(sum_count, 0.0);
         empty_.assign(boxes, 1);
         box_stats_ = emitter_->box_stats();
         created_ = 0;
