@@ -24,6 +24,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+extern char** environ;
+
 // clang-format off
 #include <utility>  // before Asio: Boost 1.74 uses std::exchange without it
 #include <boost/asio.hpp>
@@ -1019,36 +1021,68 @@ struct LocalWorker {
     std::string address;
 };
 
-LocalWorker spawn_worker(const std::string& binary, const std::string& token,
-                         int threads) {
-    int fds[2];
-    if (pipe(fds) != 0) throw DistribError("cannot create a pipe for a worker process");
-    pid_t pid = fork();
-    if (pid < 0) throw DistribError("cannot start a worker process");
-    if (pid == 0) {
-        dup2(fds[1], 1);
-        close(fds[0]);
+// Starts `count` local workers at once (each one's start-up overlaps the others') and
+// appends them to `started` as they are forked, so that a failure leaves every started
+// process where its owner can end it; then reads each one's address. The workers get
+// glibc's huge-page heap in their environment (see the cli's worker start), so they do
+// not have to execute themselves again to get it.
+void spawn_workers(const std::string& binary, const std::string& token, int threads,
+                   int count, std::vector<LocalWorker>& started) {
+    std::vector<std::string> env_text;
+    for (char** e = environ; *e; ++e) {
+        if (std::strncmp(*e, "GLIBC_TUNABLES=", 15) != 0) env_text.push_back(*e);
+    }
+    const char* tunables = std::getenv("GLIBC_TUNABLES");
+    std::string t = "GLIBC_TUNABLES=";
+    if (tunables && *tunables) t += std::string(tunables) + ":";
+    env_text.push_back(t + "glibc.malloc.hugetlb=1");
+    env_text.push_back("POVWALL_HEAP_SET=1");
+    std::vector<char*> envp;
+    for (std::string& e : env_text) envp.push_back(e.data());
+    envp.push_back(nullptr);
+    const std::string thread_text = std::to_string(threads);
+    const char* argv[] = {"povwall", "worker",      "--listen",  "127.0.0.1:0",
+                          "--token", token.c_str(), "--threads", thread_text.c_str(),
+                          "--once",  nullptr};
+    std::vector<int> reads;
+    for (int i = 0; i < count; ++i) {
+        int fds[2];
+        if (pipe(fds) != 0)
+            throw DistribError("cannot create a pipe for a worker process");
+        pid_t pid = fork();
+        if (pid < 0) {
+            close(fds[0]), close(fds[1]);
+            throw DistribError("cannot start a worker process");
+        }
+        if (pid == 0) {
+            dup2(fds[1], 1);
+            close(fds[0]);
+            close(fds[1]);
+            execve(binary.c_str(), const_cast<char* const*>(argv), envp.data());
+            _exit(127);
+        }
         close(fds[1]);
-        std::string t = std::to_string(threads);
-        execl(binary.c_str(), "povwall", "worker", "--listen", "127.0.0.1:0", "--token",
-              token.c_str(), "--threads", t.c_str(), "--once", (char*)nullptr);
-        _exit(127);
+        started.push_back({pid, ""});
+        reads.push_back(fds[0]);
     }
-    close(fds[1]);
-    FILE* in = fdopen(fds[0], "r");
-    char line[256] = {};
-    bool got = std::fgets(line, sizeof line, in) != nullptr;
-    std::fclose(in);
-    const char* prefix = "povwall worker: listening on ";
-    if (!got || std::strncmp(line, prefix, std::strlen(prefix)) != 0) {
-        kill(pid, SIGKILL);
-        waitpid(pid, nullptr, 0);
-        throw WorkerLost("worker process " + binary + " did not start");
+    const size_t first = started.size() - size_t(count);
+    bool failed = false;
+    for (int i = 0; i < count; ++i) {
+        FILE* in = fdopen(reads[size_t(i)], "r");
+        char line[256] = {};
+        const bool got = !failed && std::fgets(line, sizeof line, in) != nullptr;
+        std::fclose(in);
+        const char* prefix = "povwall worker: listening on ";
+        if (failed || !got || std::strncmp(line, prefix, std::strlen(prefix)) != 0) {
+            failed = true;
+            continue;
+        }
+        std::string address = line + std::strlen(prefix);
+        while (!address.empty() && (address.back() == '\n' || address.back() == '\r'))
+            address.pop_back();
+        started[first + size_t(i)].address = address;
     }
-    std::string address = line + std::strlen(prefix);
-    while (!address.empty() && (address.back() == '\n' || address.back() == '\r'))
-        address.pop_back();
-    return {pid, address};
+    if (failed) throw WorkerLost("worker process " + binary + " did not start");
 }
 
 // Everything of a job but the animation values: a frame with the same fixed part can go
@@ -1232,10 +1266,10 @@ class TcpCoordinator {
             int threads = settings_->threads > 0
                               ? settings_->threads
                               : int(std::max(1u, cores / unsigned(tcp_.procs)));
-            for (int i = 0; i < tcp_.procs; ++i) {
-                local_.push_back(spawn_worker(tcp_.worker_binary, token, threads));
-                addresses.push_back(local_.back().address);
-            }
+            const size_t before = local_.size();
+            spawn_workers(tcp_.worker_binary, token, threads, tcp_.procs, local_);
+            for (size_t i = before; i < local_.size(); ++i)
+                addresses.push_back(local_[i].address);
             std::vector<pid_t> pids;
             for (const LocalWorker& l : local_) pids.push_back(l.pid);
             maybe_inject_worker_fault(pids);
