@@ -115,6 +115,22 @@ TEST(Tcp, GlassAndCsgSceneOverProcessesEqualsOneProcess) {
                         "--boxes 4x1x1 --procs 4 --results parents"});
 }
 
+// A fisheye camera sees nothing in the image's corners (no camera ray there): the workers
+// skip those pixels and the frame still ends (it used to wait for them for ever).
+TEST(Tcp, FisheyeCornersWithoutCameraRaysEndTheFrame) {
+    fs::path scene = scratch() / "fisheye.pov";
+    std::ofstream(scene)
+        << R"(camera { fisheye location <0, 1, -3> look_at <0, 0.5, 0> angle 200 }
+light_source { <3, 5, -4> color rgb 1 }
+plane { y, 0 pigment { checker color rgb 1 color rgb 0.2 } }
+sphere { <0, 0.6, 0>, 0.6 pigment { color rgb <0.9, 0.3, 0.2> } finish { reflection 0.3 } }
+sphere { <1.2, 0.4, 0.5>, 0.4 pigment { color rgb <0.2, 0.5, 0.9> } }
+)";
+    expect_same_images(
+        scene.string(), "-W 40 -H 30",
+        {"--boxes 2x2x2 --procs 3", "--boxes 2x1x1 --procs 2 --results parents"});
+}
+
 // Spheres only on the left (x < -3) cast shadows far over the floor, lit from the far
 // left. With --boxes 4x1x1 each worker keeps the objects of its box only, so the third
 // worker holds nothing but the floor: a render plan made from its part would call the
