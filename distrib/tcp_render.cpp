@@ -173,7 +173,7 @@ struct Writer {
 // One record built in place, appended to its frame once: a vector insert per field was
 // a tenth of a worker's time.
 struct RecordWriter {
-    static constexpr size_t kCapacity = 256;  // an item record is at most 215 bytes
+    static constexpr size_t kCapacity = 256;  // an item record is at most 213 bytes
     uint8_t bytes[kCapacity];
     uint8_t* p = bytes;
     template <class T>
