@@ -1239,7 +1239,6 @@ class TcpCoordinator {
     struct WorkerState {
         std::string address;
         std::shared_ptr<Connection> conn;
-        std::unique_ptr<Outbox> outbox;
         Clock::time_point last_seen;
         bool ready = false, done = false;
         uint64_t created = 0, finished = 0;  // latest status
@@ -1309,7 +1308,6 @@ class TcpCoordinator {
                 control_frame({{"type", "hello"}, {"token", token}, {"from", -1}}));
             job["index"] = i;
             w.conn->send(control_frame(job));
-            w.outbox = std::make_unique<Outbox>();
         }
     }
 
