@@ -180,8 +180,8 @@ void BM_Small(benchmark::State& state) {
     });
 }
 
-void BM_OctreeLanes(benchmark::State& state) {
-    Fixture& f = fixture(size_t(state.range(0)));
+// The lane engine over fixture `f`, built once and checked against brute force.
+LaneOctree& lane_octree(Fixture& f) {
     static std::map<size_t, std::unique_ptr<LaneOctree>> cache;
     auto& lanes = cache[f.spheres.size()];
     if (!lanes) {
@@ -203,15 +203,77 @@ void BM_OctreeLanes(benchmark::State& state) {
             }
         }
     }
+    return *lanes;
+}
+
+void BM_OctreeLanes(benchmark::State& state) {
+    Fixture& f = fixture(size_t(state.range(0)));
+    LaneOctree& lanes = lane_octree(f);
     run_rays(state, f,
-             [&](const Ray& r, uint64_t& tests) { return lanes->closest(r, tests); });
-    state.counters["leaves"] = lanes->tree.stats().leaves;
+             [&](const Ray& r, uint64_t& tests) { return lanes.closest(r, tests); });
+    state.counters["leaves"] = lanes.tree.stats().leaves;
     state.counters["refs_per_prim"] =
-        double(lanes->tree.stats().references) / double(f.spheres.size());
+        double(lanes.tree.stats().references) / double(f.spheres.size());
+}
+
+// The rays a render traces, in the order it traces them: a 256x256 image's camera rays
+// scanline by scanline (the pinhole and view of make_rays), and from each hit a shadow ray
+// toward a light; with the second argument 2, also the mirror ray, which gets its own
+// shadow ray. Argument 1 is issue 6's "primary + shadow rays". BM_OctreeLanes' random
+// rays from anywhere in the volume are the worst case for the caches; these are the case
+// a render meets, where neighbouring pixels walk the same nodes.
+void BM_ImageLanes(benchmark::State& state) {
+    Fixture& f = fixture(size_t(state.range(0)));
+    const LaneOctree& lanes = lane_octree(f);
+    constexpr int kSide = 256;
+    const Point3 eye{0, 0, -2.2 * f.half};
+    const Point3 light{-2 * f.half, 3 * f.half, -3 * f.half};
+    const Real tan_half = std::tan(24 * kPi / 180);
+    uint64_t tests = 0, rays = 0, camera_hits = 0, shadowed = 0, shadow_rays = 0;
+    // The shadow ray from the hit at distance t along `ray` on sphere `id`; returns the
+    // mirror ray from there.
+    auto shade = [&](const Ray& ray, Real t, uint32_t id) {
+        const Point3 p = ray.at(t);
+        const SphereRecord& sp = f.spheres[id];
+        const Vector3 n = normalize(p - Point3{sp.x, sp.y, sp.z});
+        const Vector3 to = light - p;
+        const Real d = length(to);
+        ++rays;
+        ++shadow_rays;
+        shadowed += lanes.any_hit(Ray{p, to / d}, d);
+        return Ray{p, ray.direction - 2 * dot(ray.direction, n) * n};
+    };
+    const bool mirrors = state.range(1) == 2;
+    int pixel = 0;
+    for (auto _ : state) {
+        const int x = pixel % kSide, y = pixel / kSide;
+        pixel = (pixel + 1) % (kSide * kSide);
+        const Ray camera{eye, normalize(Vector3{(2 * (x + 0.5) / kSide - 1) * tan_half,
+                                                (1 - 2 * (y + 0.5) / kSide) * tan_half, 1})};
+        ++rays;
+        uint32_t id = 0;
+        const Real t = lanes.closest(camera, tests, &id);
+        if (t == kInfinity) continue;
+        ++camera_hits;
+        const Ray mirror = shade(camera, t, id);
+        if (!mirrors) continue;
+        ++rays;
+        const Real t2 = lanes.closest(mirror, tests, &id);
+        if (t2 != kInfinity) shade(mirror, t2, id);
+    }
+    state.SetItemsProcessed(int64_t(rays));
+    state.counters["rays_per_pixel"] =
+        double(rays) / double(std::max<size_t>(state.iterations(), 1));
+    state.counters["camera_hit_fraction"] =
+        double(camera_hits) / double(std::max<size_t>(state.iterations(), 1));
+    state.counters["shadowed_fraction"] =
+        double(shadowed) / double(std::max<uint64_t>(shadow_rays, 1));
+    state.counters["tests_per_ray"] = double(tests) / double(std::max<uint64_t>(rays, 1));
 }
 
 BENCHMARK(BM_Octree)->RangeMultiplier(10)->Range(1000, 1000000);
 BENCHMARK(BM_OctreeLanes)->RangeMultiplier(10)->Range(1000, 1000000);
+BENCHMARK(BM_ImageLanes)->ArgsProduct({{1000, 10000, 100000, 1000000}, {1, 2}});
 BENCHMARK(BM_OctreeBoundsOnly)->RangeMultiplier(10)->Range(1000, 100000);
 BENCHMARK(BM_Grid)->RangeMultiplier(10)->Range(1000, 1000000);
 BENCHMARK(BM_Brute)->RangeMultiplier(10)->Range(1000, 100000);

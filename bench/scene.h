@@ -125,7 +125,8 @@ struct LaneOctree {
         tree.build(in, opt);
         lanes.build(tree.ids(), s.records.data(), uint32_t(s.size()));
     }
-    Real closest(const Ray& ray, uint64_t& tests) const {
+    // `hit`, when given, receives the nearest sphere's number (left alone on a miss).
+    Real closest(const Ray& ray, uint64_t& tests, uint32_t* hit = nullptr) const {
         Real best = kInfinity;
         const uint32_t* refs = tree.ids().data();
         tree.traverse(
@@ -140,7 +141,10 @@ struct LaneOctree {
                     tests += m;
                     for (; nearer; nearer &= nearer - 1) {
                         const size_t i = size_t(__builtin_ctzll(nearer));
-                        t_max = std::min(t_max, t[i]);
+                        if (t[i] < t_max) {
+                            t_max = t[i];
+                            if (hit) *hit = ids[done + i];
+                        }
                     }
                 }
                 return false;
