@@ -217,8 +217,8 @@ void BM_OctreeLanes(benchmark::State& state) {
 }
 
 // The rays a render traces, in the order it traces them: a 256x256 image's camera rays
-// scanline by scanline (the pinhole and view of make_rays), and from each hit a shadow ray
-// toward a light; with the second argument 2, also the mirror ray, which gets its own
+// scanline by scanline (the pinhole and view of make_rays), and from each hit a shadow
+// ray toward a light; with the second argument 2, also the mirror ray, which gets its own
 // shadow ray. Argument 1 is issue 6's "primary + shadow rays". BM_OctreeLanes' random
 // rays from anywhere in the volume are the worst case for the caches; these are the case
 // a render meets, where neighbouring pixels walk the same nodes.
@@ -248,8 +248,9 @@ void BM_ImageLanes(benchmark::State& state) {
     for (auto _ : state) {
         const int x = pixel % kSide, y = pixel / kSide;
         pixel = (pixel + 1) % (kSide * kSide);
-        const Ray camera{eye, normalize(Vector3{(2 * (x + 0.5) / kSide - 1) * tan_half,
-                                                (1 - 2 * (y + 0.5) / kSide) * tan_half, 1})};
+        const Ray camera{eye,
+                         normalize(Vector3{(2 * (x + 0.5) / kSide - 1) * tan_half,
+                                           (1 - 2 * (y + 0.5) / kSide) * tan_half, 1})};
         ++rays;
         uint32_t id = 0;
         const Real t = lanes.closest(camera, tests, &id);

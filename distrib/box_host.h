@@ -123,9 +123,13 @@ class BoxHost {
     size_t primitive_count(int box) const {
         return boxes_[box]->scene->primitive_count();
     }
-    // Which boxes hold no primitive (rays skip them without a message); all processes use
-    // the same table. build_boxes fills it for hosted boxes.
-    void set_box_empty(std::vector<uint8_t> empty) { empty_ = std::move(empty); }
+    // Per box, the bounds of what it holds within its region, padded (its reach): a ray
+    // goes to a box only if its segment there meets the box's reach, and a box holding
+    // no primitive has an empty reach. All processes route with the same table.
+    // build_boxes() computes it from this host's scene (the whole scene in-process and on
+    // the coordinator, which sends it to the workers).
+    const std::vector<Bounds3>& box_reach() const { return reach_; }
+    void set_box_reach(std::vector<Bounds3> reach) { reach_ = std::move(reach); }
     bool parent_tracking() const { return parents_; }
 
     // Camera ray of pixel p and the box it starts in; -1 where the camera sees nothing.
@@ -197,6 +201,7 @@ class BoxHost {
                int& next) const;
     int first_box(const Ray& ray, Real t_from, VirtualWalls::Segment& seg, int& next,
                   VirtualWalls::WalkState& at) const;
+    bool reaches(const Ray& ray, const VirtualWalls::Segment& s) const;
     void add_pixel(int thread, int pixel, const Rgb& c, float transmit);
 
     const Scene& scene_;
@@ -208,7 +213,7 @@ class BoxHost {
     bool shared_boxes_ = false;
     VirtualWalls walls_;
     std::vector<std::unique_ptr<Box>> boxes_;
-    std::vector<uint8_t> empty_;
+    std::vector<Bounds3> reach_;
     std::atomic<uint64_t> created_{0}, finished_{0};
     std::atomic<uint64_t> pixels_emitted_{0};
     std::atomic<bool> stop_{false};

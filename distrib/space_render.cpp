@@ -54,22 +54,54 @@ BoxHost::BoxHost(const Scene& scene, const trace::RenderSettings& settings,
     total_pixels_ = settings.width * settings.height;
 }
 
-// The first box along the ray from t_from that holds any object (empty boxes cannot stop
-// or shade a ray, so rays skip them without a message), or the last box when none does,
-// with `at` at its segment; -1 for a ray that visits nothing (NaN).
-int BoxHost::enter(const Ray& ray, Real t_from, VirtualWalls::WalkState& at) const {
-    if (!walls_.start_walk(ray, t_from, kInfinity, at)) return -1;
-    int box = -1;
-    walls_.continue_walk(ray, at, kInfinity, [&](const VirtualWalls::Segment& s) {
-        box = s.box;
-        return !empty_[s.box];
-    });
-    return box;
+// Whether the ray goes to box `s.box` for its segment there. A box holding nothing is
+// always skipped. A box hosted elsewhere is skipped when the segment cannot meet its
+// reach, which is exact (a hit point lies in its object's bounds and in the region of the
+// box that finds it, so in that box's reach) and saves a message; a hosted box is entered
+// anyway, as a search there costs about what the test would.
+bool BoxHost::reaches(const Ray& ray, const VirtualWalls::Segment& s) const {
+    const Bounds3& b = reach_[size_t(s.box)];
+    if (b.empty()) return false;
+    if (boxes_[size_t(s.box)]->scene) return true;
+    // The segment's own bounds against the reach: no division, and enough (a segment
+    // whose bounds miss the reach misses it).
+    for (int a = 0; a < 3; ++a) {
+        const Real o = ray.origin[a], d = ray.direction[a];
+        const Real p0 = o + d * s.t_enter;
+        const Real p1 = std::isinf(s.t_exit) ? (d > 0   ? kInfinity
+                                                : d < 0 ? -kInfinity
+                                                        : o)
+                                             : o + d * s.t_exit;
+        if (std::max(p0, p1) < b.lo[a] || std::min(p0, p1) > b.hi[a]) return false;
+    }
+    return true;
 }
 
-// From `at` (the start of the segment of a box that holds objects, or of the last box):
-// that segment, extended over the empty boxes after it, and the next box that holds
-// objects (-1: none, and the segment reaches infinity); `at` moves to that box's segment.
+// The first box along the ray from t_from whose reach the ray meets (the boxes before
+// it cannot stop or shade the ray, so it skips them without a message), or the box it
+// starts in when it meets none, with `at` at its segment; -1 for a ray that visits
+// nothing (NaN).
+int BoxHost::enter(const Ray& ray, Real t_from, VirtualWalls::WalkState& at) const {
+    if (!walls_.start_walk(ray, t_from, kInfinity, at)) return -1;
+    const VirtualWalls::WalkState start = at;
+    const bool one_box = reach_.size() == 1;  // nowhere else to go
+    int box = -1, first = -1;
+    walls_.continue_walk(ray, at, kInfinity, [&](const VirtualWalls::Segment& s) {
+        if (first < 0) first = s.box;
+        if (!one_box && !reaches(ray, s)) return false;
+        box = s.box;
+        return true;
+    });
+    if (box >= 0 || first < 0) return box;
+    at = start;  // nothing ahead: the starting box finds the miss
+    walls_.continue_walk(ray, at, kInfinity,
+                         [](const VirtualWalls::Segment&) { return true; });
+    return first;
+}
+
+// From `at` (the start of a box's segment): that segment, extended over the segments
+// after it that meet no reach, and the next box whose reach the ray meets (-1: none, and
+// the segment reaches infinity); `at` moves to that box's segment.
 void BoxHost::route(const Ray& ray, VirtualWalls::WalkState& at,
                     VirtualWalls::Segment& seg, int& next) const {
     bool first = true;
@@ -80,8 +112,8 @@ void BoxHost::route(const Ray& ray, VirtualWalls::WalkState& at,
             first = false;
             return false;
         }
-        if (empty_[s.box]) {
-            seg.t_exit = s.t_exit;  // empty boxes extend the current segment's reach
+        if (!reaches(ray, s)) {
+            seg.t_exit = s.t_exit;  // nothing to meet there: the current box goes on
             return false;
         }
         next = s.box;
@@ -129,12 +161,31 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
     std::vector<uint8_t> host(count, 0);
     for (int b : hosted) host[b] = 1;
     std::vector<std::vector<uint32_t>> local(count);
+    // Reach: what each box holds, within its region padded by a millionth of the
+    // coordinates' size (hit points computed in a box stray from its region and from
+    // their objects' bounds by rounding only).
+    // A box's reach holds only where its objects can be hit (a plane: its surface).
+    reach_.assign(count, Bounds3{});
     for (uint32_t i = 0; i < bounds.size(); ++i) {
+        const Bounds3 hit = trace::object_hit_bounds(scene_.objects[i]);
         for (int b : walls_.boxes_overlapping(bounds[i])) {
             if (host[b]) local[b].push_back(i);
+            reach_[b].extend(hit);
         }
     }
-    empty_.assign(count, 0);
+    for (int b = 0; b < count; ++b) {
+        Bounds3& r = reach_[b];
+        const Bounds3 region = walls_.box_bounds(b);
+        for (int a = 0; a < 3; ++a) {
+            auto pad = [](Real v) {
+                return std::isinf(v) ? 0 : 1e-6 * (1 + std::fabs(v));
+            };
+            r.lo[a] = std::max(r.lo[a], region.lo[a]);
+            r.hi[a] = std::min(r.hi[a], region.hi[a]);
+            r.lo[a] -= pad(r.lo[a]);
+            r.hi[a] += pad(r.hi[a]);
+        }
+    }
     boxes_.clear();
     for (int b = 0; b < count; ++b) {
         auto box = std::make_unique<Box>(options_.queue);
@@ -145,7 +196,7 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
             box->scene = std::make_unique<trace::PreparedScene>(scene_, local[b], &plan_);
             box->stats.objects = local[b].size();
             box->stats.resident_bytes = box->scene->resident_bytes();
-            empty_[b] = box->scene->primitive_count() == 0;
+            if (box->scene->primitive_count() == 0) reach_[b] = Bounds3{};
         }
         boxes_.push_back(std::move(box));
     }
@@ -602,7 +653,7 @@ int BoxHost::begin_run(int threads) {
     // took twice as long).
     int busy_boxes = 0;
     for (size_t b = 0; b < boxes_.size(); ++b)
-        busy_boxes += boxes_[b]->scene && !(b < empty_.size() && empty_[b]);
+        busy_boxes += boxes_[b]->scene && !reach_[b].empty();
     if (!shared_boxes_) threads = std::clamp(threads, 1, std::max(1, busy_boxes));
     threads = std::max(threads, 1);
     for (auto& b : boxes_) {

@@ -12,7 +12,7 @@
 //   coord -> worker   Control job (scene source, walls, box owners, worker addresses)
 //   worker -> coord   Control busy every second while parsing and building its boxes
 //   worker -> coord   Control ready (primitive count per hosted box)
-//   coord -> worker   Control start (which boxes are empty), then Items (camera rays)
+//   coord -> worker   Control start (each box's reach), then Items (camera rays)
 //   worker -> worker  Items (rays and results for the receiver's boxes)
 //   worker -> coord   Control status (items created/finished) every 10 ms: heartbeat, flow
 //                     control, and the answer to probes (termination waves)
@@ -31,6 +31,7 @@ extern char** environ;
 #include <boost/asio.hpp>
 // clang-format on
 #include <algorithm>
+#include <bit>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -321,6 +322,33 @@ bool read_item(Reader& rd, int box_count, int& box, Item& item,
 }
 
 using Buffer = std::shared_ptr<std::vector<uint8_t>>;
+
+// The boxes' reach as sent to the workers: six bit patterns per box, so that every
+// process routes with exactly the same doubles (infinities included, which JSON lacks).
+json reach_to_json(const std::vector<Bounds3>& reach) {
+    json out = json::array();
+    for (const Bounds3& b : reach) {
+        out.push_back({std::bit_cast<uint64_t>(b.lo.x), std::bit_cast<uint64_t>(b.lo.y),
+                       std::bit_cast<uint64_t>(b.lo.z), std::bit_cast<uint64_t>(b.hi.x),
+                       std::bit_cast<uint64_t>(b.hi.y), std::bit_cast<uint64_t>(b.hi.z)});
+    }
+    return out;
+}
+
+bool reach_from_json(const json& j, int boxes, std::vector<Bounds3>& reach) {
+    if (!j.is_array() || j.size() != size_t(boxes)) return false;
+    for (const json& b : j) {
+        if (!b.is_array() || b.size() != 6) return false;
+        Real v[6];
+        for (int k = 0; k < 6; ++k) {
+            if (!b[size_t(k)].is_number_unsigned()) return false;
+            v[k] = std::bit_cast<Real>(b[size_t(k)].get<uint64_t>());
+            if (std::isnan(v[k])) return false;
+        }
+        reach.push_back({{v[0], v[1], v[2]}, {v[3], v[4], v[5]}});
+    }
+    return true;
+}
 
 Buffer control_frame(const json& j) {
     auto buf = std::make_shared<std::vector<uint8_t>>();
@@ -617,7 +645,10 @@ class Worker {
         } else if (type == "frame") {
             frame(j);
         } else if (type == "start") {
-            host_->set_box_empty(j.at("empty").get<std::vector<uint8_t>>());
+            std::vector<Bounds3> reach;
+            if (!reach_from_json(j.at("reach"), host_->box_count(), reach))
+                return fail_job("bad box reach table");
+            host_->set_box_reach(std::move(reach));
             // One render thread: the io thread traces itself, between network events.
             inline_ = threads_ == 1;
             if (inline_) {
@@ -1035,7 +1066,7 @@ void spawn_workers(const std::string& binary, const std::string& token, int thre
     const char* tunables = std::getenv("GLIBC_TUNABLES");
     std::string t = "GLIBC_TUNABLES=";
     if (tunables && *tunables) t += std::string(tunables) + ":";
-    env_text.push_back(t + "glibc.malloc.hugetlb=1");
+    if (!std::getenv("POVWALL_NO_HUGE")) env_text.push_back(t + "glibc.malloc.hugetlb=1");
     env_text.push_back("POVWALL_HEAP_SET=1");
     std::vector<char*> envp;
     for (std::string& e : env_text) envp.push_back(e.data());
@@ -1388,10 +1419,14 @@ class TcpCoordinator {
             for (const WorkerState& o : workers_) {
                 if (!o.ready) return;
             }
-            emitter_->set_box_empty(empty_);
+            std::vector<Bounds3> reach = emitter_->box_reach();
+            for (size_t b = 0; b < reach.size(); ++b) {
+                if (empty_[b]) reach[b] = Bounds3{};
+            }
+            emitter_->set_box_reach(reach);
             started_ = true;
-            for (WorkerState& o : workers_)
-                o.conn->send(control_frame({{"type", "start"}, {"empty", empty_}}));
+            const json start = {{"type", "start"}, {"reach", reach_to_json(reach)}};
+            for (WorkerState& o : workers_) o.conn->send(control_frame(start));
             emit();
         } else if (type == "status") {
             w.created = j.at("created").get<uint64_t>();

@@ -358,6 +358,27 @@ bool inside_object(const Object& o, const Point3& p) {
 
 Bounds3 object_world_bounds(const Object& obj) { return object_bounds(obj); }
 
+Bounds3 object_hit_bounds(const Object& obj) {
+    Bounds3 b = object_bounds(obj);
+    const Plane* plane = std::get_if<Plane>(&obj.shape);
+    if (!plane || dot(plane->normal, plane->normal) == 0) return b;
+    // The surface in world space: normal through the inverse transpose, and a point on
+    // it through the transform.
+    const Vector3 n = obj.transform.normal(plane->normal);
+    const Point3 on = obj.transform.point(
+        Point3{} + plane->normal * (plane->distance / dot(plane->normal, plane->normal)));
+    int axis = -1;
+    for (int a = 0; a < 3; ++a) {
+        if (n[a] == 0) continue;
+        if (axis >= 0) return b;  // oblique: its surface reaches every box it crosses
+        axis = a;
+    }
+    if (axis < 0 || !std::isfinite(on[axis])) return b;
+    b.lo[axis] = std::max(b.lo[axis], on[axis]);
+    b.hi[axis] = std::min(b.hi[axis], on[axis]);
+    return b;
+}
+
 PreparedScene::PreparedScene(const Scene& scene, const RenderPlan* plan)
     : scene_(scene), plan_(plan ? *plan : make_render_plan(scene)) {
     std::vector<const Object*> all;

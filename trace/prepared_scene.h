@@ -154,6 +154,10 @@ class PreparedScene {
 
 // World-space bounds of an object (everything() when unbounded).
 Bounds3 object_world_bounds(const Object& obj);
+// Bounds of the points where a ray can hit the object: its world bounds, narrowed for a
+// plane whose normal is parallel to an axis to its surface (a slab of zero width; its
+// inside is a half-space, but rays meet it only on the surface).
+Bounds3 object_hit_bounds(const Object& obj);
 
 // True when no pigment of the layers (maps included) has filter or transmit.
 bool pigment_opaque(const Pigment& p);

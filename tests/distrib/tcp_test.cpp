@@ -207,6 +207,41 @@ TEST(Tcp, WorkersKeepOnlyTheObjectsOfTheirBoxesAndTheImageIsUnchanged) {
     EXPECT_GT(sum("idle_seconds") + sum("busy_seconds"), 0);
 }
 
+// Two boxes split at x = 0; the camera stands in the left one (x < 0) and looks across
+// the wall at the right sphere only. The left box holds a sphere high up (y in 2..4), out
+// of every camera ray's way: each camera ray's segment in the left box misses what that
+// box holds, so the ray starts in the right box and no ray crosses between the workers.
+// Before boxes had a reach, all 48 x 36 camera rays went from the left box to the right.
+TEST(Tcp, RaysSkipARemoteBoxWhereTheyCannotMeetAnythingAndTheImageIsUnchanged) {
+    fs::path scene = scratch() / "reach.pov";
+    std::ofstream(scene) << R"(#version 3.7;
+camera { location <-4, 0, -10> look_at <4, 0, 0> angle 12 }
+light_source { <4, 10, -10> color rgb 1 }
+sphere { <-4, 3, 0>, 1 pigment { rgb <0.2, 0.9, 0.3> } }
+sphere { <4, 0, 0>, 1 pigment { rgb <1, 0.3, 0.2> } finish { phong 0.5 } }
+)";
+    expect_same_images(scene.string(), "-W 48 -H 36",
+                       {"--boxes 2x1x1 --procs 2", "--boxes 2x1x1"});
+    const fs::path stats = scratch() / "reach.json";
+    const std::string out = (scratch() / "reach.exr").string();
+    const RunResult r = run("render " + scene.string() + " -W 48 -H 36 -q -o " + out +
+                            " --boxes 2x1x1 --procs 2 --stats " + stats.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::ifstream in(stats);
+    const std::string text{std::istreambuf_iterator<char>(in), {}};
+    std::vector<long> sent, camera;
+    for (auto [re, list] : {std::pair{std::regex("\"messages_sent\": ([0-9]+)"), &sent},
+                            std::pair{std::regex("\"camera\": ([0-9]+)"), &camera}}) {
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), re);
+             it != std::sregex_iterator(); ++it)
+            list->push_back(std::stol((*it)[1]));
+    }
+    ASSERT_EQ(sent.size(), 2u) << text;
+    EXPECT_EQ(sent, (std::vector<long>{0, 0})) << text;
+    // Every camera ray starts in the right box (box 1); the third count is the total.
+    EXPECT_EQ(camera, (std::vector<long>{0, 48 * 36, 48 * 36})) << text;
+}
+
 // 42,000 spheres in a #while: an estimated 24 MB in one process (parsed model and
 // prepared).
 const char* kBudgetScene = R"(#version 3.7;

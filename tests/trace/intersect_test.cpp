@@ -209,6 +209,34 @@ TEST(Intersect, TransformedPlane) {
     expect_vec(h.normal, {0, 0, -1}, 1e-12);
 }
 
+// Where rays can hit an object (black boxes skip a box whose objects a ray cannot meet):
+// an axis-parallel plane only on its surface, anything else within its bounds.
+TEST(Intersect, HitBoundsOfAnAxisParallelPlaneAreItsSurface) {
+    // plane { y, -1 } moved by <5, 3, 0>: the surface y = 2, unbounded in x and z.
+    Bounds3 b =
+        object_hit_bounds(object(Plane{{0, 1, 0}, -1}, Transform::translate({5, 3, 0})));
+    EXPECT_EQ(b.lo.y, 2);
+    EXPECT_EQ(b.hi.y, 2);
+    EXPECT_EQ(b.lo.x, -kInfinity);
+    EXPECT_EQ(b.hi.z, kInfinity);
+    // A normal that is not unit length: dot(n, p) = 3 is z = 1.5.
+    b = object_hit_bounds(object(Plane{{0, 0, 2}, 3}));
+    EXPECT_EQ(b.lo.z, 1.5);
+    EXPECT_EQ(b.hi.z, 1.5);
+    EXPECT_EQ(b.lo.y, -kInfinity);
+    // Oblique, or turned by a rotation that leaves rounding in the normal: unbounded.
+    b = object_hit_bounds(object(Plane{{1, 1, 0}, 0}));
+    EXPECT_EQ(b.lo.y, -kInfinity);
+    EXPECT_EQ(b.hi.x, kInfinity);
+    b = object_hit_bounds(object(Plane{{0, 1, 0}, 0}, Transform::rotate({-90, 0, 0})));
+    EXPECT_EQ(b.lo.z, -kInfinity);
+    EXPECT_EQ(b.hi.z, kInfinity);
+    // Other shapes: their world bounds.
+    b = object_hit_bounds(object(Sphere{{1, 2, 3}, 0.5}));
+    EXPECT_EQ(b.lo.x, 0.5);
+    EXPECT_EQ(b.hi.z, 3.5);
+}
+
 TEST(Intersect, InverseSphereNormalPointsInward) {
     Object o = object(Sphere{{0, 0, 5}, 1});
     o.inverse = true;
