@@ -54,15 +54,11 @@ BoxHost::BoxHost(const Scene& scene, const trace::RenderSettings& settings,
     total_pixels_ = settings.width * settings.height;
 }
 
-// Whether the ray goes to box `s.box` for its segment there. A box holding nothing is
-// always skipped. A box hosted elsewhere is skipped when the segment cannot meet its
-// reach, which is exact (a hit point lies in its object's bounds and in the region of the
-// box that finds it, so in that box's reach) and saves a message; a hosted box is entered
-// anyway, as a search there costs about what the test would.
+// Whether the ray's segment in box `s.box` can meet the box's reach. Skipping a box
+// where it cannot is exact: a hit point lies in its object's bounds and in the region of
+// the box that finds it, so in that box's reach.
 bool BoxHost::reaches(const Ray& ray, const VirtualWalls::Segment& s) const {
     const Bounds3& b = reach_[size_t(s.box)];
-    if (b.empty()) return false;
-    if (boxes_[size_t(s.box)]->scene) return true;
     // The segment's own bounds against the reach: no division, and enough (a segment
     // whose bounds miss the reach misses it).
     for (int a = 0; a < 3; ++a) {
@@ -77,6 +73,15 @@ bool BoxHost::reaches(const Ray& ray, const VirtualWalls::Segment& s) const {
     return true;
 }
 
+void BoxHost::classify_boxes() {
+    visit_.assign(reach_.size(), BoxVisit::Never);
+    for (size_t b = 0; b < reach_.size(); ++b) {
+        if (reach_[b].empty()) continue;
+        visit_[b] = b < boxes_.size() && boxes_[b]->scene ? BoxVisit::Always
+                                                          : BoxVisit::IfReached;
+    }
+}
+
 // The first box along the ray from t_from whose reach the ray meets (the boxes before
 // it cannot stop or shade the ray, so it skips them without a message), or the box it
 // starts in when it meets none, with `at` at its segment; -1 for a ray that visits
@@ -88,7 +93,7 @@ int BoxHost::enter(const Ray& ray, Real t_from, VirtualWalls::WalkState& at) con
     int box = -1, first = -1;
     walls_.continue_walk(ray, at, kInfinity, [&](const VirtualWalls::Segment& s) {
         if (first < 0) first = s.box;
-        if (!one_box && !reaches(ray, s)) return false;
+        if (!one_box && !visits(ray, s)) return false;
         box = s.box;
         return true;
     });
@@ -112,7 +117,7 @@ void BoxHost::route(const Ray& ray, VirtualWalls::WalkState& at,
             first = false;
             return false;
         }
-        if (!reaches(ray, s)) {
+        if (!visits(ray, s)) {
             seg.t_exit = s.t_exit;  // nothing to meet there: the current box goes on
             return false;
         }
@@ -200,6 +205,7 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
         }
         boxes_.push_back(std::move(box));
     }
+    classify_boxes();
 }
 
 void BoxHost::sleep_until_work() {
