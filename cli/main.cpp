@@ -213,8 +213,17 @@ extern "C" void on_interrupt(int sig) {
 
 int main(int argc, char** argv) {
     using namespace povwall::cli;
-    std::signal(SIGINT, on_interrupt);
-    std::signal(SIGTERM, on_interrupt);
+    // Worker processes write no image: Ctrl-C (sent to the whole process group) ends
+    // them quietly, and the coordinator says what happened. Their handler stays the
+    // default from the start (set after a check, a Ctrl-C in between made a worker
+    // print the coordinator's line).
+    bool worker = argc > 1 && std::strcmp(argv[1], "worker") == 0;
+    for (int i = 1; i < argc && !worker; ++i)
+        worker = std::strcmp(argv[i], "--tile-worker") == 0;
+    if (!worker) {
+        std::signal(SIGINT, on_interrupt);
+        std::signal(SIGTERM, on_interrupt);
+    }
     std::vector<std::string> args(argv + 1, argv + argc);
     try {
         if (args.empty()) {
@@ -222,14 +231,7 @@ int main(int argc, char** argv) {
             return 2;
         }
         const std::string& cmd = args[0];
-        // Worker processes write no image: Ctrl-C (sent to the whole process group) ends
-        // them quietly, and the coordinator says what happened.
         if (cmd == "worker") restart_with_huge_page_heap(argv);
-        if (cmd == "worker" ||
-            std::find(args.begin(), args.end(), "--tile-worker") != args.end()) {
-            std::signal(SIGINT, SIG_DFL);
-            std::signal(SIGTERM, SIG_DFL);
-        }
         if (cmd == "render") return render_main({args.begin() + 1, args.end()});
         if (cmd == "diff") return run_diff(argc - 1, argv + 1);
         if (cmd == "compare") return run_compare(argc - 1, argv + 1);

@@ -19,8 +19,10 @@
 //   coord -> worker   Control finish; worker -> coord Pixels (sums), then Control done
 //   coord -> worker   Control frame (new animation values): the next frame, from "busy"
 // clang-format on
+#include <fcntl.h>
 #include <malloc.h>
 #include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -1077,22 +1079,29 @@ void spawn_workers(const std::string& binary, const std::string& token, int thre
                           "--once",  nullptr};
     std::vector<int> reads;
     for (int i = 0; i < count; ++i) {
+        // Close-on-exec: a worker inherits no other worker's pipe; its stdout (the dup)
+        // stays open.
         int fds[2];
-        if (pipe(fds) != 0)
+        if (pipe2(fds, O_CLOEXEC) != 0)
             throw DistribError("cannot create a pipe for a worker process");
-        pid_t pid = fork();
-        if (pid < 0) {
-            close(fds[0]), close(fds[1]);
-            throw DistribError("cannot start a worker process");
-        }
-        if (pid == 0) {
-            dup2(fds[1], 1);
-            close(fds[0]);
-            close(fds[1]);
-            execve(binary.c_str(), const_cast<char* const*>(argv), envp.data());
-            _exit(127);
-        }
+        // posix_spawn, not fork: the child runs no handler of ours (glibc sets caught
+        // signals back to their default in it before it unblocks them), so a Ctrl-C
+        // between the two cannot make a worker print the coordinator's message, and no
+        // copy of the coordinator's page tables is made.
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_adddup2(&actions, fds[1], 1);
+        pid_t pid = -1;
+        const int rc = posix_spawn(&pid, binary.c_str(), &actions, nullptr,
+                                   const_cast<char* const*>(argv), envp.data());
+        posix_spawn_file_actions_destroy(&actions);
         close(fds[1]);
+        if (rc != 0) {
+            close(fds[0]);
+            for (int fd : reads) close(fd);
+            throw DistribError("cannot start a worker process " + binary + ": " +
+                               std::strerror(rc));
+        }
         started.push_back({pid, ""});
         reads.push_back(fds[0]);
     }
