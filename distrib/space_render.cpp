@@ -172,10 +172,9 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
     std::vector<uint8_t> host(count, 0);
     for (int b : hosted) host[b] = 1;
     std::vector<std::vector<uint32_t>> local(count);
-    // Reach: what each box holds, within its region padded by a millionth of the
-    // coordinates' size (hit points computed in a box stray from its region and from
-    // their objects' bounds by rounding only).
-    // A box's reach holds only where its objects can be hit (a plane: its surface).
+    // Reach: where a box's objects can be hit (a plane: its surface), within the box's
+    // region, padded by a millionth of the coordinates' size (hit points computed in a
+    // box stray from its region and from their objects' bounds by rounding only).
     reach_.assign(count, Bounds3{});
     for (uint32_t i = 0; i < bounds.size(); ++i) {
         const Bounds3 hit = trace::object_hit_bounds(scene_.objects[i]);
