@@ -1068,7 +1068,7 @@ void spawn_workers(const std::string& binary, const std::string& token, int thre
     const char* tunables = std::getenv("GLIBC_TUNABLES");
     std::string t = "GLIBC_TUNABLES=";
     if (tunables && *tunables) t += std::string(tunables) + ":";
-    if (!std::getenv("POVWALL_NO_HUGE")) env_text.push_back(t + "glibc.malloc.hugetlb=1");
+    env_text.push_back(t + "glibc.malloc.hugetlb=1");
     env_text.push_back("POVWALL_HEAP_SET=1");
     std::vector<char*> envp;
     for (std::string& e : env_text) envp.push_back(e.data());
