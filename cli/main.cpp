@@ -24,7 +24,8 @@ namespace {
 // faults for 8 workers at 600x600, a sixth of their time on a virtual machine. With
 // glibc's huge-page tunable its heap is advised into 2 MB pages (18,000 faults). The
 // tunable is read at start only, so a worker executes itself again once with it set
-// (a launcher's or the user's own GLIBC_TUNABLES are kept, and extended).
+// (a launcher's or the user's own GLIBC_TUNABLES are kept, and extended); so does a
+// render that forks its workers (--procs), as they inherit its heap.
 void restart_with_huge_page_heap(char** argv) {
     constexpr const char* kTunable = "glibc.malloc.hugetlb=1";
     const char* tunables = std::getenv("GLIBC_TUNABLES");
@@ -123,6 +124,11 @@ int render_main(const std::vector<std::string>& args) {
                    "black boxes in running workers, host:port,...")
         ->delimiter(',');
     app.add_option("--token", o.token, "job token of the running --workers");
+    app.add_option("--worker-start", o.worker_start,
+                   "how --procs starts black-box workers: fork (they inherit the parsed "
+                   "scene) or exec (each parses it)")
+        ->check(CLI::IsMember({"fork", "exec"}))
+        ->capture_default_str();
     std::string rendezvous;
     double rendezvous_timeout = 120;
     app.add_option("--rendezvous", rendezvous,
@@ -231,7 +237,10 @@ int main(int argc, char** argv) {
             return 2;
         }
         const std::string& cmd = args[0];
-        if (cmd == "worker") restart_with_huge_page_heap(argv);
+        // Black-box workers forked by a render (--procs) inherit its heap settings.
+        const bool forks_workers = cmd == "render" && std::find(args.begin(), args.end(),
+                                                                "--procs") != args.end();
+        if (cmd == "worker" || forks_workers) restart_with_huge_page_heap(argv);
         if (cmd == "render") return render_main({args.begin() + 1, args.end()});
         if (cmd == "diff") return run_diff(argc - 1, argv + 1);
         if (cmd == "compare") return run_compare(argc - 1, argv + 1);

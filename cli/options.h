@@ -83,6 +83,9 @@ struct RenderOptions {
     // Black boxes in running workers over TCP (--procs starts local ones).
     std::vector<std::string> workers;  // "host:port"
     std::string token;                 // job token the workers were started with
+    // How --procs starts its black-box workers: fork (after the parse, inheriting the
+    // scene) or exec (a fresh `povwall worker`, which parses the scene itself).
+    std::string worker_start = "fork";
     // A lost worker process (--procs) or tile worker: its work goes to the others (true)
     // or the render stops with it named (false, --no-recover).
     bool recover = true;

@@ -250,6 +250,7 @@ int run_render(RenderOptions o) {
     const bool use_boxes = dplan.mode == distrib::RenderMode::Space;
     distrib::SpaceStats space_stats;
     int worker_frames = 0, worker_processes = 0;  // TCP workers (--stats)
+    bool workers_forked = false;
     Image image;
     if (use_boxes) {
         if (o.render.antialias)
@@ -283,6 +284,12 @@ int run_render(RenderOptions o) {
             tcp.token = o.token;
             tcp.recover = o.recover;
             tcp.worker_binary = std::filesystem::read_symlink("/proc/self/exe").string();
+            // Forked workers share the coordinator's whole scene, which a memory budget
+            // (--worker-memory, or auto mode spreading a scene too big for one worker)
+            // is there to avoid: each of those parses only its part.
+            tcp.fork_workers =
+                o.worker_start == "fork" && o.procs > 0 && o.worker_memory.empty();
+            tcp.image_reader = output::read_stored_image;
             // One frame, or a frame of an animation on the previous frame's workers.
             std::unique_ptr<distrib::TcpSession> one_frame;
             std::unique_ptr<distrib::TcpSession>& session =
@@ -292,6 +299,7 @@ int run_render(RenderOptions o) {
                 image = session->render(scene, source, o.render, space, &space_stats);
                 worker_frames = session->frames_on_these_workers();
                 worker_processes = session->processes_started();
+                workers_forked = session->workers_forked();
                 // The budget shapes the walls; a worker keeps the objects of all its
                 // boxes plus the process itself (binary, parser), so it can outgrow
                 // the budget: said, not hidden.
@@ -442,6 +450,7 @@ int run_render(RenderOptions o) {
                 j["workers"] = {
                     {"frames_on_these_workers", worker_frames},
                     {"processes_started", worker_processes},
+                    {"processes_forked", workers_forked},
                     {"peak_resident_bytes", space_stats.worker_peak_resident},
                     {"objects_kept", space_stats.worker_objects_kept},
                     {"objects_left_out", space_stats.worker_objects_left_out}};

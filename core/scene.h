@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -429,5 +430,13 @@ inline size_t object_node_count(const Object& o) {
     }
     return n;
 }
+
+// A copy of `whole` with only the objects `keep` accepts, numbered as the parser numbers
+// a parse that left the others out (ParseOptions::keep_object), so a process that got
+// the whole parsed scene (a forked black-box worker) agrees with one that parsed only its
+// part. `whole` must not be filtered already. Its objects are only read (a forked
+// process's pages stay shared with its parent); its object list is moved aside for the
+// copy of the rest and put back.
+Scene copy_scene_keeping(Scene& whole, const std::function<bool(const Object&)>& keep);
 
 }  // namespace povwall

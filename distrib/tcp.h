@@ -44,6 +44,13 @@ struct TcpOptions {
     std::vector<std::string> workers;  // or running workers, "host:port"
     std::string token;                 // job token (random when empty and procs > 0)
     std::string worker_binary;         // the povwall binary to start (procs > 0)
+    // Local workers are forked from this process after its parse: they inherit the
+    // parsed scene, so the first frame costs them no exec, no dynamic linking and no
+    // parse. Only while this process runs one thread (a fork copies only the calling
+    // thread, and a lock another thread held would stay taken in the child); otherwise,
+    // or when false, `worker_binary` is executed.
+    bool fork_workers = true;
+    ImageReader image_reader;  // forked workers' image_map files (later frames' parses)
     double heartbeat_timeout =
         4.0;  // seconds without a message: dead (checked every 0.25 s)
     // A worker that dies, disconnects or goes silent: its boxes are given to the
@@ -90,6 +97,9 @@ class TcpSession {
     int frames_on_these_workers() const;
     // Worker processes this session started (--procs), over all its frames.
     int processes_started() const;
+    // Whether the current workers were forked from this process
+    // (TcpOptions::fork_workers).
+    bool workers_forked() const;
 
   private:
     TcpOptions tcp_;
@@ -114,6 +124,10 @@ struct WorkerOptions {
     // rank/size: -1/0 take them from the launcher's environment (launcher_rank).
     std::string rendezvous;
     int rank = -1, size = 0;
+    // A forked local worker's copy of the coordinator's parsed scene (its own memory
+    // after the fork): the first job, which says so, takes from it the objects of this
+    // worker's boxes instead of parsing.
+    Scene* inherited_scene = nullptr;
     // Seconds to wait for the rendezvous to answer and then for the coordinator's job;
     // past it the worker ends (exit 3) rather than wait forever under a launcher.
     double rendezvous_timeout = 120;

@@ -728,6 +728,7 @@ class Worker {
             return fail_job("a frame before the previous one finished");
         job_["animation"] = j.at("animation");
         job_["plan"] = j.at("plan");
+        job_["inherited"] = false;
         job_["expected_objects"] = j.at("expected_objects");
         done_ = false;
         prepare_then([this] { coordinator_->send(control_frame(ready_message())); });
@@ -806,8 +807,14 @@ class Worker {
             return false;
         };
         try {
-            scene_ = parser::parse_scene_text(j.at("scene").get<std::string>(),
-                                              j.at("name").get<std::string>(), popts);
+            if (j.value("inherited", false) && options_.inherited_scene) {
+                // Forked after the coordinator's parse of this frame: no parse here.
+                scene_ = copy_scene_keeping(*options_.inherited_scene, popts.keep_object);
+                options_.inherited_scene = nullptr;  // later frames parse
+            } else {
+                scene_ = parser::parse_scene_text(j.at("scene").get<std::string>(),
+                                                  j.at("name").get<std::string>(), popts);
+            }
         } catch (const std::exception& e) {
             error = e.what();
             return false;
@@ -1054,6 +1061,30 @@ struct LocalWorker {
     std::string address;
 };
 
+// Reads the address each started worker prints on its pipe (the last `reads.size()`
+// entries of `started`) and closes the pipes.
+void read_worker_addresses(const std::vector<int>& reads,
+                           std::vector<LocalWorker>& started, const std::string& what) {
+    const size_t first = started.size() - reads.size();
+    bool failed = false;
+    for (size_t i = 0; i < reads.size(); ++i) {
+        FILE* in = fdopen(reads[i], "r");
+        char line[256] = {};
+        const bool got = !failed && std::fgets(line, sizeof line, in) != nullptr;
+        std::fclose(in);
+        const char* prefix = "povwall worker: listening on ";
+        if (failed || !got || std::strncmp(line, prefix, std::strlen(prefix)) != 0) {
+            failed = true;
+            continue;
+        }
+        std::string address = line + std::strlen(prefix);
+        while (!address.empty() && (address.back() == '\n' || address.back() == '\r'))
+            address.pop_back();
+        started[first + i].address = address;
+    }
+    if (failed) throw WorkerLost(what + " did not start");
+}
+
 // Starts `count` local workers at once (each one's start-up overlaps the others') and
 // appends them to `started` as they are forked, so that a failure leaves every started
 // process where its owner can end it; then reads each one's address. The workers get
@@ -1105,24 +1136,70 @@ void spawn_workers(const std::string& binary, const std::string& token, int thre
         started.push_back({pid, ""});
         reads.push_back(fds[0]);
     }
-    const size_t first = started.size() - size_t(count);
-    bool failed = false;
-    for (int i = 0; i < count; ++i) {
-        FILE* in = fdopen(reads[size_t(i)], "r");
-        char line[256] = {};
-        const bool got = !failed && std::fgets(line, sizeof line, in) != nullptr;
-        std::fclose(in);
-        const char* prefix = "povwall worker: listening on ";
-        if (failed || !got || std::strncmp(line, prefix, std::strlen(prefix)) != 0) {
-            failed = true;
-            continue;
-        }
-        std::string address = line + std::strlen(prefix);
-        while (!address.empty() && (address.back() == '\n' || address.back() == '\r'))
-            address.pop_back();
-        started[first + size_t(i)].address = address;
+    read_worker_addresses(reads, started, "worker process " + binary);
+}
+
+// Whether this process runs only the calling thread (/proc/self/status says).
+bool single_threaded() {
+    std::FILE* f = std::fopen("/proc/self/status", "r");
+    if (!f) return false;
+    char line[256];
+    long threads = -1;
+    while (std::fgets(line, sizeof line, f)) {
+        if (std::strncmp(line, "Threads:", 8) == 0)
+            threads = std::strtol(line + 8, nullptr, 10);
     }
-    if (failed) throw WorkerLost("worker process " + binary + " did not start");
+    std::fclose(f);
+    return threads == 1;
+}
+
+// The fork counterpart of spawn_workers: each child is a worker at once, holding the
+// coordinator's parsed scene (`scene`, its own copy after the fork), and ends with
+// _exit: it never returns into the coordinator's frames, runs none of its destructors
+// and flushes none of its buffers. The caller has checked that no other thread runs.
+void fork_workers(const std::string& token, int threads, const ImageReader& image_reader,
+                  Scene* scene, int count, std::vector<LocalWorker>& started) {
+    std::vector<int> reads;
+    std::fflush(nullptr);  // nothing buffered is written twice
+    for (int i = 0; i < count; ++i) {
+        int fds[2];
+        if (pipe2(fds, O_CLOEXEC) != 0)
+            throw DistribError("cannot create a pipe for a worker process");
+        // Signals blocked across the fork: a Ctrl-C cannot reach the child before it has
+        // the default handlers (the coordinator's would print its message).
+        sigset_t all, before;
+        sigfillset(&all);
+        pthread_sigmask(SIG_SETMASK, &all, &before);
+        const pid_t pid = fork();
+        if (pid == 0) {
+            std::signal(SIGINT, SIG_DFL);
+            std::signal(SIGTERM, SIG_DFL);
+            pthread_sigmask(SIG_SETMASK, &before, nullptr);
+            if (dup2(fds[1], 1) < 0) _exit(127);
+            // The coordinator's sockets and the other workers' pipes are not this
+            // process's: a copy kept open would hide their closing from the peer.
+            close_range(3, ~0U, 0);
+            WorkerOptions w;
+            w.token = token;
+            w.threads = threads;
+            w.once = true;
+            w.image_reader = image_reader;
+            w.inherited_scene = scene;
+            _exit(run_worker(w));
+        }
+        const int fork_errno = errno;
+        pthread_sigmask(SIG_SETMASK, &before, nullptr);
+        close(fds[1]);
+        if (pid < 0) {
+            close(fds[0]);
+            for (int fd : reads) close(fd);
+            throw DistribError(std::string("cannot start a worker process: ") +
+                               std::strerror(fork_errno));
+        }
+        started.push_back({pid, ""});
+        reads.push_back(fds[0]);
+    }
+    read_worker_addresses(reads, started, "a forked worker process");
 }
 
 // Everything of a job but the animation values: a frame with the same fixed part can go
@@ -1179,6 +1256,7 @@ class TcpCoordinator {
     bool failed() const { return failed_; }
     int frames() const { return frames_; }
     int processes_started() const { return int(local_.size()); }
+    bool forked() const { return forked_; }
 
     Image render(const Scene& scene, const SceneSource& source,
                  const trace::RenderSettings& settings, const SpaceOptions& options,
@@ -1292,6 +1370,7 @@ class TcpCoordinator {
 
     void start_workers(const SceneSource& source) {
         std::string token = tcp_.token;
+        bool& forked = forked_;
         std::vector<std::string> addresses = tcp_.workers;
         if (tcp_.procs > 0) {
             if (token.empty()) {
@@ -1306,7 +1385,14 @@ class TcpCoordinator {
                               ? settings_->threads
                               : int(std::max(1u, cores / unsigned(tcp_.procs)));
             const size_t before = local_.size();
-            spawn_workers(tcp_.worker_binary, token, threads, tcp_.procs, local_);
+            forked = tcp_.fork_workers && single_threaded();
+            if (forked) {
+                // The child's copy of the scene is its own to take objects from.
+                fork_workers(token, threads, tcp_.image_reader,
+                             const_cast<Scene*>(scene_), tcp_.procs, local_);
+            } else {
+                spawn_workers(tcp_.worker_binary, token, threads, tcp_.procs, local_);
+            }
             for (size_t i = before; i < local_.size(); ++i)
                 addresses.push_back(local_[i].address);
             std::vector<pid_t> pids;
@@ -1327,6 +1413,7 @@ class TcpCoordinator {
         job["workers"] = addresses;
         job["plan"] = plan_to_json(emitter_->plan());
         job["expected_objects"] = objects_per_worker();
+        job["inherited"] = forked;  // this frame's scene is in the workers already
         workers_.resize(n);
         for (int i = 0; i < n; ++i) {
             WorkerState& w = workers_[i];
@@ -1587,6 +1674,7 @@ class TcpCoordinator {
     std::vector<int> owner_;
     long wave_seq_ = 0;
     int frames_ = 0;
+    bool forked_ = false;  // the local workers were forked (else executed, or none)
     bool failed_ = false, lost_ = false;
     int lost_worker_ = -1;
     std::string error_;
@@ -1598,6 +1686,8 @@ TcpSession::~TcpSession() = default;
 int TcpSession::frames_on_these_workers() const {
     return coordinator_ ? coordinator_->frames() : 0;
 }
+
+bool TcpSession::workers_forked() const { return coordinator_ && coordinator_->forked(); }
 
 int TcpSession::processes_started() const {
     return processes_started_before_ +

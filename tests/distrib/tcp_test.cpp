@@ -112,7 +112,8 @@ TEST(Tcp, GlassAndCsgSceneOverProcessesEqualsOneProcess) {
     // The reflection exponent makes `auto` use parent tracking.
     expect_same_images(scene.string(), "-W 40 -H 30",
                        {"--boxes 2x2x2 --procs 2", "--boxes 2x2x2 --procs 4",
-                        "--boxes 4x1x1 --procs 4 --results parents"});
+                        "--boxes 4x1x1 --procs 4 --results parents",
+                        "--boxes 4x1x1 --procs 4 --results parents --worker-start exec"});
 }
 
 // A fisheye camera sees nothing in the image's corners (no camera ray there): the workers
@@ -155,56 +156,69 @@ TEST(Tcp, WorkersKeepOnlyTheObjectsOfTheirBoxesAndTheImageIsUnchanged) {
     std::ofstream(scene) << kLeftShadowsScene;
     expect_same_images(
         scene.string(), "-W 64 -H 48",
-        {"--boxes 4x1x1 --procs 4", "--boxes 4x1x1 --procs 2 --results parents"});
-    const fs::path stats = scratch() / "left_shadows.json";
-    const std::string out = (scratch() / "left_shadows.exr").string();
-    const RunResult r = run("render " + scene.string() + " -W 64 -H 48 -q -o " + out +
-                            " --boxes 4x1x1 --procs 4 --stats " + stats.string());
-    ASSERT_EQ(r.code, 0) << r.err;
-    std::ifstream in(stats);
-    const std::string text{std::istreambuf_iterator<char>(in), {}};
-    auto numbers = [&](const std::string& key) {
-        std::smatch m;
-        std::vector<long> v;
-        if (!std::regex_search(text, m, std::regex("\"" + key + "\": \\[([^\\]]*)\\]")))
+        {"--boxes 4x1x1 --procs 4", "--boxes 4x1x1 --procs 2 --results parents",
+         "--boxes 4x1x1 --procs 4 --worker-start exec"});
+    // Forked workers take their objects from the coordinator's parse; executed ones
+    // parse only theirs. Both keep the same.
+    for (const std::string start : {"fork", "exec"}) {
+        SCOPED_TRACE(start);
+        const fs::path stats = scratch() / "left_shadows.json";
+        const std::string out = (scratch() / "left_shadows.exr").string();
+        const RunResult r = run("render " + scene.string() + " -W 64 -H 48 -q -o " + out +
+                                " --boxes 4x1x1 --procs 4 --worker-start " + start +
+                                " --stats " + stats.string());
+        ASSERT_EQ(r.code, 0) << r.err;
+        std::ifstream in(stats);
+        const std::string text{std::istreambuf_iterator<char>(in), {}};
+        auto numbers = [&](const std::string& key) {
+            std::smatch m;
+            std::vector<long> v;
+            if (!std::regex_search(text, m,
+                                   std::regex("\"" + key + "\": \\[([^\\]]*)\\]")))
+                return v;
+            std::string list = m[1];
+            std::regex num("[0-9]+");
+            for (auto it = std::sregex_iterator(list.begin(), list.end(), num);
+                 it != std::sregex_iterator(); ++it)
+                v.push_back(std::stol(it->str()));
             return v;
-        std::string list = m[1];
-        std::regex num("[0-9]+");
-        for (auto it = std::sregex_iterator(list.begin(), list.end(), num);
-             it != std::sregex_iterator(); ++it)
-            v.push_back(std::stol(it->str()));
-        return v;
-    };
-    const std::vector<long> kept = numbers("objects_kept"),
-                            left_out = numbers("objects_left_out");
-    ASSERT_EQ(kept.size(), 4u) << text;
-    ASSERT_EQ(left_out.size(), 4u);
-    // 43 objects; uniform walls over x in [-7.25, 5] at -4.1875, -1.125 and 1.9375. Box 0
-    // holds the sphere columns at x = -7, -6.1, -5.2 and -4.3 (which crosses the first
-    // wall) and the floor; box 1 the columns at -4.3 and -3.4 and the floor; box 2 the
-    // floor only; box 3 the floor, the glass and the box.
-    const std::vector<long> expected{33, 17, 1, 3};
-    EXPECT_EQ(kept, expected);
-    for (int w = 0; w < 4; ++w) EXPECT_EQ(kept[w] + left_out[w], 43) << "worker " << w;
-    // Per-box traffic over TCP: what the boxes send, other boxes receive, plus the camera
-    // rays from the coordinator; bytes are the encoded records.
-    auto sum = [&](const std::string& key) {
-        double total = 0;
-        std::regex re("\"" + key + "\": ([0-9.e+-]+)");
-        for (auto it = std::sregex_iterator(text.begin(), text.end(), re);
-             it != std::sregex_iterator(); ++it)
-            total += std::stod((*it)[1]);
-        return total;
-    };
-    // Each box's stats come from the worker hosting it (a worker's list once landed on
-    // the wrong boxes: boxes 1-3 read 0 objects).
-    EXPECT_EQ(sum("objects"), 33 + 17 + 1 + 3);
-    EXPECT_GT(sum("messages_sent"), 0);
-    EXPECT_GT(sum("messages_received"), sum("messages_sent"));
-    EXPECT_GT(sum("bytes_sent"),
-              40 * sum("messages_sent"));  // a ray record is > 40 bytes
-    EXPECT_GT(sum("bytes_received"), sum("bytes_sent"));
-    EXPECT_GT(sum("idle_seconds") + sum("busy_seconds"), 0);
+        };
+        EXPECT_NE(text.find(std::string("\"processes_forked\": ") +
+                            (start == "fork" ? "true" : "false")),
+                  std::string::npos)
+            << text;
+        const std::vector<long> kept = numbers("objects_kept"),
+                                left_out = numbers("objects_left_out");
+        ASSERT_EQ(kept.size(), 4u) << text;
+        ASSERT_EQ(left_out.size(), 4u);
+        // 43 objects; uniform walls over x in [-7.25, 5] at -4.1875, -1.125 and 1.9375.
+        // Box 0 holds the sphere columns at x = -7, -6.1, -5.2 and -4.3 (which crosses
+        // the first wall) and the floor; box 1 the columns at -4.3 and -3.4 and the
+        // floor; box 2 the floor only; box 3 the floor, the glass and the box.
+        const std::vector<long> expected{33, 17, 1, 3};
+        EXPECT_EQ(kept, expected);
+        for (int w = 0; w < 4; ++w)
+            EXPECT_EQ(kept[w] + left_out[w], 43) << "worker " << w;
+        // Per-box traffic over TCP: what the boxes send, other boxes receive, plus the
+        // camera rays from the coordinator; bytes are the encoded records.
+        auto sum = [&](const std::string& key) {
+            double total = 0;
+            std::regex re("\"" + key + "\": ([0-9.e+-]+)");
+            for (auto it = std::sregex_iterator(text.begin(), text.end(), re);
+                 it != std::sregex_iterator(); ++it)
+                total += std::stod((*it)[1]);
+            return total;
+        };
+        // Each box's stats come from the worker hosting it (a worker's list once landed
+        // on the wrong boxes: boxes 1-3 read 0 objects).
+        EXPECT_EQ(sum("objects"), 33 + 17 + 1 + 3);
+        EXPECT_GT(sum("messages_sent"), 0);
+        EXPECT_GT(sum("messages_received"), sum("messages_sent"));
+        EXPECT_GT(sum("bytes_sent"),
+                  40 * sum("messages_sent"));  // a ray record is > 40 bytes
+        EXPECT_GT(sum("bytes_received"), sum("bytes_sent"));
+        EXPECT_GT(sum("idle_seconds") + sum("busy_seconds"), 0);
+    }
 }
 
 // Two boxes split at x = 0; the camera stands in the left one (x < 0) and looks across

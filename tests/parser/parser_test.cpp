@@ -507,5 +507,45 @@ TEST(Expressions, VturbulenceMatchesPovRay) {
     EXPECT_EQ(out, "0.344564,-0.261187,-0.078804\n-0.116862,-0.399384,0.198307\n");
 }
 
+// A forked black-box worker takes its objects from the coordinator's whole parse; it must
+// number them as a worker whose parse left the others out (interior stacks cross the
+// wire as those numbers).
+TEST(KeepObjects, CopyOfAWholeParseNumbersObjectsAsAFilteredParse) {
+    const std::string text = R"(
+sphere { <-3, 0, 0>, 1 }
+union { sphere { <3, 0, 0>, 1 } box { <2, -1, -1>, <4, 1, 1> } }
+difference { box { -1, 1 } sphere { 0, 1.2 } translate <-3, 2, 0> }
+sphere { <3, 2, 0>, 0.5 }
+light_source { <0, 10, 0> rgb 1 looks_like { sphere { 0, 0.1 } } }
+)";
+    // Keeps what lies right of the origin: the union and the last sphere.
+    auto right = [](const Object& o) {
+        if (auto s = std::get_if<Sphere>(&o.shape)) return s->centre.x > 0;
+        return std::holds_alternative<Csg>(o.shape) &&
+               std::get<Csg>(o.shape).children.size() == 2 &&
+               std::holds_alternative<Sphere>(std::get<Csg>(o.shape).children[0].shape) &&
+               std::get<Sphere>(std::get<Csg>(o.shape).children[0].shape).centre.x > 0;
+    };
+    ParseOptions o;
+    o.keep_object = right;
+    const Scene filtered = parse_scene_text(text, "test.pov", o);
+    Scene whole = parse_scene_text(text, "test.pov", ParseOptions{});
+    const Scene copy = copy_scene_keeping(whole, right);
+    // Nodes: sphere 0; union 1 (children 2, 3); difference 4 (5, 6); sphere 7.
+    EXPECT_EQ(filtered.object_first_node, (std::vector<uint32_t>{1, 7}));
+    EXPECT_EQ(copy.object_first_node, filtered.object_first_node);
+    EXPECT_EQ(copy.object_nodes_total, 8u);
+    EXPECT_EQ(copy.object_nodes_total, filtered.object_nodes_total);
+    EXPECT_EQ(copy.objects_left_out, 2u);
+    EXPECT_EQ(copy.objects_left_out, filtered.objects_left_out);
+    ASSERT_EQ(copy.objects.size(), 2u);
+    EXPECT_TRUE(std::holds_alternative<Csg>(copy.objects[0].shape));
+    EXPECT_EQ(std::get<Sphere>(copy.objects[1].shape).radius, 0.5);
+    EXPECT_EQ(copy.lights.size(), 1u);
+    // The whole scene is left as it was.
+    EXPECT_EQ(whole.objects.size(), 4u);
+    EXPECT_FALSE(whole.objects_filtered());
+}
+
 }  // namespace
 }  // namespace povwall::parser
