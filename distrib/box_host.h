@@ -177,12 +177,15 @@ class BoxHost {
     uint64_t finished() const { return finished_.load(); }
 
     // r, g, b, transmit per pixel summed over threads (before alpha conversion), for
-    // the pixels in the runs some thread wrote, in pixel order: visit(pixel, sums[4]).
+    // the pixels in the runs some thread wrote, in pixel order: visit(pixel, sums[4]);
+    // transmit is 0 unless the output has alpha (sum_channels() 4).
     // No image-sized array: a worker holding a few boxes touched a few runs.
     template <class Visit>
     void for_each_pixel_sum(Visit&& visit) const;
     // The image of this process's sums (in-process render: the whole image).
     Image image(int width, int height, bool alpha) const;
+    // Values summed per pixel: r, g, b, and transmit when the output has alpha.
+    int sum_channels() const { return sum_channels_; }
     std::vector<BoxStats> box_stats() const;
     int box_count() const { return int(boxes_.size()); }
 
@@ -261,12 +264,14 @@ class BoxHost {
     // Progress (settings.progress): pixels sent, scaled by the share of items finished.
     std::atomic<uint64_t> progress_reported_{0};
     void report_progress();
-    // Per thread: r, g, b, transmit per pixel, in double so that the order in which
+    // Per thread: r, g, b (and transmit, only for alpha output: a quarter less fresh
+    // memory to fault in otherwise) per pixel, in double so that the order in which
     // contributions arrive does not show in the image. Zeroed by calloc (fresh pages, not
     // written) with a flag per run of kSumRun pixels a thread wrote: a thread touches
     // only the pixels it traced, and the sum reads only those (two 11.5 MB arrays written
     // and copied at 600x600 were 11,000 page faults, a fifth of a one-box render).
-    static constexpr int kSumRunShift = 7;  // 128 pixels: one 4 KB page of sums
+    static constexpr int kSumRunShift = 7;  // 128 pixels: 3 or 4 KB of sums
+    int sum_channels_ = 4;
     struct PixelSums {
         struct Free {
             void operator()(double* p) const { std::free(p); }
@@ -291,7 +296,8 @@ void BoxHost::for_each_pixel_sum(Visit&& visit) const {
             double sum[4] = {0, 0, 0, 0};
             for (const PixelSums& a : accum_) {
                 if (!a.written[run]) continue;
-                for (int c = 0; c < 4; ++c) sum[c] += a.values[p * 4 + c];
+                for (int c = 0; c < sum_channels_; ++c)
+                    sum[c] += a.values[p * size_t(sum_channels_) + size_t(c)];
             }
             visit(p, static_cast<const double*>(sum));
         }

@@ -52,6 +52,7 @@ BoxHost::BoxHost(const Scene& scene, const trace::RenderSettings& settings,
                (options.results == SpaceOptions::Results::Auto && plan_.parent_tracking);
     shared_boxes_ = !parents_ && options.direct_handoff;
     total_pixels_ = settings.width * settings.height;
+    sum_channels_ = settings.alpha ? 4 : 3;
 }
 
 // Whether the ray's segment in box `s.box` can meet the box's reach. Skipping a box
@@ -309,11 +310,11 @@ Box* BoxHost::go_on_in(Box& current, int dest) {
 void BoxHost::add_pixel(int thread, int pixel, const Rgb& c, float transmit) {
     PixelSums& sums = accum_[size_t(thread)];
     sums.written[size_t(pixel) >> kSumRunShift] = 1;
-    double* a = &sums.values[size_t(pixel) * 4];
+    double* a = &sums.values[size_t(pixel) * size_t(sum_channels_)];
     a[0] += c.r;
     a[1] += c.g;
     a[2] += c.b;
-    a[3] += transmit;
+    if (sum_channels_ == 4) a[3] += transmit;
 }
 
 void BoxHost::deliver(Box& box, const RayItem& ray, const TraceResult& result,
@@ -675,7 +676,7 @@ int BoxHost::begin_run(int threads) {
     accum_.clear();
     accum_.resize(size_t(threads));
     for (PixelSums& sums : accum_) {
-        const size_t n = size_t(total_pixels_) * 4;
+        const size_t n = size_t(total_pixels_) * size_t(sum_channels_);
         sums.values.reset(
             static_cast<double*>(std::calloc(std::max<size_t>(n, 1), sizeof(double))));
         if (!sums.values) throw std::bad_alloc();
@@ -745,8 +746,12 @@ void set_pixel(Image& image, size_t p, const double* s, bool alpha) {
 Image image_from_sums(const std::vector<double>& sums, int width, int height,
                       bool alpha) {
     Image image(width, height);
-    for (size_t p = 0; p < size_t(width) * height; ++p)
-        set_pixel(image, p, &sums[p * 4], alpha);
+    const size_t channels = alpha ? 4 : 3;
+    for (size_t p = 0; p < size_t(width) * height; ++p) {
+        double s[4] = {0, 0, 0, 0};
+        for (size_t c = 0; c < channels; ++c) s[c] = sums[p * channels + c];
+        set_pixel(image, p, s, alpha);
+    }
     return image;
 }
 
@@ -759,7 +764,8 @@ Image BoxHost::image(int width, int height, bool alpha) const {
         double s[4] = {0, 0, 0, 0};
         for (const PixelSums& a : accum_) {
             if (!a.written[p >> kSumRunShift]) continue;
-            for (int c = 0; c < 4; ++c) s[c] += a.values[p * 4 + size_t(c)];
+            for (int c = 0; c < sum_channels_; ++c)
+                s[c] += a.values[p * size_t(sum_channels_) + size_t(c)];
         }
         set_pixel(image, p, s, alpha);
     }

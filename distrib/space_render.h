@@ -71,7 +71,8 @@ struct SpaceStats {
 
 using trace::shading_is_linear;  // trace/render_plan.h
 
-// The image from per-pixel sums of r, g, b and background transmit (+UA: alpha from it).
+// The image from per-pixel sums of r, g, b, and with `alpha` (+UA) background transmit,
+// from which alpha comes: 3 or 4 values per pixel.
 Image image_from_sums(const std::vector<double>& sums, int width, int height, bool alpha);
 
 Image render_space(const Scene& scene, const trace::RenderSettings& settings,

@@ -985,8 +985,10 @@ class Worker {
         if (inline_) host_->end_run();
         inline_ = false;
         status_timer_.cancel();
-        // Pixel sums, non-zero pixels only, as (index u32, r g b transmit f64) records.
-        constexpr size_t kRecord = 4 + 4 * 8;
+        // Pixel sums, non-zero pixels only, as (index u32, r g b [transmit] f64) records
+        // (transmit with alpha output only).
+        const int channels = host_->sum_channels();
+        const size_t kRecord = 4 + size_t(channels) * 8;
         // Frames of 256 KB: the coordinator's receive buffers stay that size.
         const size_t per_frame = (size_t(256) << 10) / kRecord;
         std::vector<uint8_t> body;
@@ -1003,7 +1005,7 @@ class Worker {
             if (s[0] == 0 && s[1] == 0 && s[2] == 0 && s[3] == 0) return;
             Writer w{body};
             w.raw(uint32_t(p));
-            for (int c = 0; c < 4; ++c) w.raw(s[c]);
+            for (int c = 0; c < channels; ++c) w.raw(s[c]);
             if (++count == per_frame) flush_pixels();
         });
         if (count) flush_pixels();
@@ -1283,7 +1285,8 @@ class TcpCoordinator {
         emitter_->build_boxes({});
         const int boxes = emitter_->walls().box_count();
         // Sums of the whole image, on 2 MB pages (thousands of 4 KB faults otherwise).
-        const size_t sum_count = size_t(settings.width) * size_t(settings.height) * 4;
+        const size_t sum_count =
+            size_t(settings.width) * size_t(settings.height) * (settings.alpha ? 4 : 3);
         if (sums_.capacity() < sum_count) {
             sums_ = std::vector<double>();
             sums_.reserve(sum_count);
@@ -1489,13 +1492,15 @@ class TcpCoordinator {
         w.last_seen = Clock::now();
         if (f.type == FrameType::Pixels) {
             Reader rd{f.body.data(), f.body.data() + f.body.size()};
+            const size_t channels = settings_->alpha ? 4 : 3;
             for (uint32_t k = 0; k < f.count; ++k) {
                 uint32_t p = rd.raw<uint32_t>();
                 double v[4];
-                for (double& c : v) c = rd.raw<double>();
-                if (!rd.ok || size_t(p) * 4 >= sums_.size())
+                for (size_t c = 0; c < channels; ++c) v[c] = rd.raw<double>();
+                if (!rd.ok || size_t(p) * channels >= sums_.size())
                     return fail(i, "bad pixel frame");
-                for (int c = 0; c < 4; ++c) sums_[size_t(p) * 4 + c] += v[c];
+                for (size_t c = 0; c < channels; ++c)
+                    sums_[size_t(p) * channels + c] += v[c];
             }
             return;
         }

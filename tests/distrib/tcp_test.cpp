@@ -116,6 +116,24 @@ TEST(Tcp, GlassAndCsgSceneOverProcessesEqualsOneProcess) {
                         "--boxes 4x1x1 --procs 4 --results parents --worker-start exec"});
 }
 
+// With alpha output (+UA) the boxes sum the background's transmit as a fourth value per
+// pixel (without it, three); the alpha channel must come out as in one process.
+TEST(Tcp, AlphaOutputOverProcessesEqualsOneProcess) {
+    fs::path scene = scratch() / "glass_alpha.pov";
+    std::ofstream(scene) << kGlassCsgScene;
+    expect_same_images(scene.string(), "-W 40 -H 30 +UA",
+                       {"--boxes 2x2x2", "--boxes 2x2x2 --procs 2",
+                        "--boxes 4x1x1 --procs 4 --results parents"});
+    // The glass lets the transparent background through, in part: alpha is not all 1.
+    const povwall::Image ref =
+        povwall::output::read_image((scratch() / "ref.exr").string());
+    int opaque = 0, see_through = 0;
+    for (size_t p = 3; p < ref.rgba.size(); p += 4)
+        (ref.rgba[p] == 1.0f ? opaque : see_through) += 1;
+    EXPECT_GT(opaque, 0);
+    EXPECT_GT(see_through, 0);
+}
+
 // A fisheye camera sees nothing in the image's corners (no camera ray there): the workers
 // skip those pixels and the frame still ends (it used to wait for them for ever).
 TEST(Tcp, FisheyeCornersWithoutCameraRaysEndTheFrame) {
