@@ -217,6 +217,8 @@ int run_render(RenderOptions o) {
     request.procs = o.procs;
     request.workers = int(o.workers.size());
     request.pixels = size_t(o.render.width) * size_t(o.render.height);
+    request.width = o.render.width;
+    request.height = o.render.height;
     // Running workers host black boxes: --workers means space subdivision.
     if (!o.workers.empty() && request.mode == distrib::RenderMode::Auto)
         request.mode = distrib::RenderMode::Space;

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "distrib/traffic_estimate.h"
 #include "trace/prepared_scene.h"
 #include "trace/render_plan.h"
 
@@ -220,6 +221,44 @@ std::vector<int> box_owners(std::array<int, 3> slabs, int workers, const Vector3
     return owner;
 }
 
+namespace {
+
+// --boxes auto over `workers` processes: one balanced box per worker, cut along the axes
+// whose walls the pilot's rays cross least (ray traffic between processes is what costs;
+// BoxHost's in-process hand-over is cheap, so without workers the walls stay as they
+// are). Sets `space` and returns the words for --explain; leaves `space` for scenes too
+// big to trace a pilot through here, or an image size not given.
+std::string walls_by_traffic(const Scene& scene, const std::vector<Bounds3>& bounds,
+                             const DistributionRequest& request, int workers,
+                             SpaceOptions& space) {
+    if (request.width <= 0 || request.height <= 0 ||
+        scene.objects.size() > kTrafficPilotMaxObjects)
+        return "";
+    const std::vector<PilotSegment> segments =
+        pilot_segments(scene, request.width, request.height, kTrafficPilotRays);
+    if (segments.empty()) return "";
+    uint64_t best = UINT64_MAX, cube = 0;
+    std::array<int, 3> chosen{};
+    for (const std::array<int, 3>& grid : box_grids(workers)) {
+        SpaceOptions s;
+        s.boxes = grid;
+        s.balanced = true;
+        const uint64_t n = estimated_crossings(segments, walls_for(bounds, s), scene);
+        if (grid[0] == grid[1] && grid[1] == grid[2]) cube = n;
+        if (n < best) best = n, chosen = grid;
+    }
+    space.boxes = chosen;
+    space.balanced = true;
+    std::string why =
+        "; walls cut across the least ray traffic: " + std::to_string(best) +
+        " crossings for " + std::to_string(segments.size()) + " pilot ray segments";
+    if (cube > 0 && chosen[0] != chosen[1])
+        why += " (" + std::to_string(cube) + " with equal cuts)";
+    return why;
+}
+
+}  // namespace
+
 DistributionPlan plan_distribution(const Scene& scene,
                                    const DistributionRequest& request) {
     DistributionPlan plan;
@@ -322,6 +361,9 @@ DistributionPlan plan_distribution(const Scene& scene,
     };
     if (!request.boxes.empty()) {
         plan.space = parse_boxes(request.boxes);
+        std::string traffic;
+        if (request.boxes == "auto" && given > 1)
+            traffic = walls_by_traffic(scene, sizes.bounds, request, given, plan.space);
         const Overlaps ov = overlaps_of(sizes, walls_for(sizes.bounds, plan.space),
                                         scene.camera.direction);
         plan.largest_box_bytes = largest_box(sizes, ov);
@@ -331,7 +373,7 @@ DistributionPlan plan_distribution(const Scene& scene,
             "x" + std::to_string(b[1]) + "x" + std::to_string(b[2]) +
             (plan.space.balanced ? " balanced" : "") + " boxes, largest local scene " +
             format_bytes(plan.largest_box_bytes) +
-            (given > 0 ? over_processes(ov) : std::string()));
+            (given > 0 ? over_processes(ov) : std::string()) + traffic);
         return plan;
     }
     // The fewest balanced boxes whose largest local scene fits the budget and, in auto

@@ -27,12 +27,13 @@ enum class RenderMode { Auto, Single, Screen, Space };
 
 struct DistributionRequest {
     RenderMode mode = RenderMode::Auto;
-    std::string boxes;         // --boxes as given (empty: not given)
-    size_t worker_memory = 0;  // bytes; 0: half of this machine's memory
-    int threads = 0;           // 0: all cores
-    int procs = 0;             // worker processes, screen or space (0: not asked for)
-    int workers = 0;           // running workers given (--workers): their count
-    size_t pixels = 0;         // image width x height (worker accumulators)
+    std::string boxes;          // --boxes as given (empty: not given)
+    size_t worker_memory = 0;   // bytes; 0: half of this machine's memory
+    int threads = 0;            // 0: all cores
+    int procs = 0;              // worker processes, screen or space (0: not asked for)
+    int workers = 0;            // running workers given (--workers): their count
+    size_t pixels = 0;          // image width x height (worker accumulators)
+    int width = 0, height = 0;  // the image (the pilot of --boxes auto over workers)
 };
 
 struct DistributionPlan {
@@ -92,6 +93,12 @@ constexpr int kMaxAutoWorkers = 64;
 // bound while tracing (100,000 spheres, 80x60 to 320x240, bounds 13,000 and 65,536).
 constexpr size_t kRayInFlightBytes = 2560;
 constexpr size_t kMinRaysInFlight = 1024;
+
+// --boxes auto over several workers chooses its cuts with a pilot of about this many
+// camera rays (distrib/traffic_estimate.h), for scenes of at most this many objects
+// (the pilot prepares the whole scene in the coordinator).
+constexpr int kTrafficPilotRays = 4096;
+constexpr size_t kTrafficPilotMaxObjects = 200000;
 
 // Per pixel of the image, a worker holds r, g, b, transmit in double per render thread,
 // their sum when the frame ends, and that sum encoded for the coordinator.

@@ -103,7 +103,7 @@ TEST(Tcp, DemoSceneOverTwoAndFourProcessesEqualsOneProcess) {
     expect_same_images(POVWALL_DEMO_SCENE, "-W 48 -H 36",
                        {"--boxes 2x2x2 --procs 2", "--boxes 2x2x2 --procs 4",
                         "--boxes 3x1x2 --procs 4 --results parents",
-                        "--boxes 2 --procs 2 --queue fifo"});
+                        "--boxes 2 --procs 2 --queue fifo", "--boxes auto --procs 4"});
 }
 
 TEST(Tcp, GlassAndCsgSceneOverProcessesEqualsOneProcess) {
