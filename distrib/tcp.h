@@ -158,6 +158,14 @@ std::vector<std::string> gather_workers(
 // the first job: 0 when the coordinator closed the connection after a finished frame.
 int run_worker(const WorkerOptions& options);
 
+// The order in which the coordinator sends the image's camera-ray ranges: 0 .. count-1
+// bit-reversed (those past the end skipped), so the ranges in flight at once lie all over
+// the image and every worker whose boxes some part of the picture starts in has camera
+// rays from the start. In scanline order the first ranges all went to the one or two
+// workers hosting the boxes of the top rows while the others waited (2x2x2 over 8
+// processes: 1.27 s -> 1.17 s at 600x600).
+std::vector<int> spread_order(int count);
+
 // A control frame (JSON text) as the protocol sends it, e.g. for tests that speak to a
 // worker directly.
 std::vector<uint8_t> encode_control_frame(const std::string& json);

@@ -1297,6 +1297,7 @@ class TcpCoordinator {
         box_stats_ = emitter_->box_stats();
         created_ = 0;
         next_pixel_ = 0;
+        next_range_ = 0;
         wave_pending_ = -1;
         last_wave_.clear();
         started_ = false;
@@ -1610,19 +1611,22 @@ class TcpCoordinator {
             live += int64_t(w.created) - int64_t(w.finished);
             live += int64_t(w.pixels_sent) - int64_t(w.pixels_done);
         }
-        while (next_pixel_ < total && live < int64_t(options_->max_rays_in_flight)) {
-            const int end = std::min(total, next_pixel_ + kRange);
+        const int ranges = (total + kRange - 1) / kRange;
+        if (range_order_.size() != size_t(ranges)) range_order_ = spread_order(ranges);
+        while (next_range_ < ranges && live < int64_t(options_->max_rays_in_flight)) {
+            const int begin = range_order_[size_t(next_range_++)] * kRange;
+            const int end = std::min(total, begin + kRange);
             Item item;
-            const int box = emitter_->camera_item((next_pixel_ + end) / 2, item);
+            const int box = emitter_->camera_item((begin + end) / 2, item);
             WorkerState& w = workers_[size_t(box >= 0 ? owner_[size_t(box)] : 0)];
-            w.conn->send(control_frame(
-                {{"type", "pixels"}, {"begin", next_pixel_}, {"end", end}}));
-            w.pixels_sent += uint64_t(end - next_pixel_);
+            w.conn->send(
+                control_frame({{"type", "pixels"}, {"begin", begin}, {"end", end}}));
+            w.pixels_sent += uint64_t(end - begin);
             ++created_;
-            live += 1 + (end - next_pixel_);
-            next_pixel_ = end;
+            live += 1 + (end - begin);
+            next_pixel_ += end - begin;
         }
-        if (next_pixel_ >= total && live == 0 && wave_pending_ < 0) probe();
+        if (next_range_ >= ranges && live == 0 && wave_pending_ < 0) probe();
     }
 
     // Termination: two consecutive probe waves with identical counters of every worker
@@ -1668,7 +1672,9 @@ class TcpCoordinator {
     std::vector<double> sums_;
     std::vector<std::pair<uint64_t, uint64_t>> last_wave_;
     uint64_t created_ = 0;
-    int next_pixel_ = 0;
+    int next_pixel_ = 0;  // pixels sent so far (progress)
+    int next_range_ = 0;  // into range_order_
+    std::vector<int> range_order_;
     uint64_t progress_reported_ = 0;
     long wave_pending_ = -1;
     bool started_ = false, in_frame_ = false;
@@ -1684,6 +1690,19 @@ class TcpCoordinator {
     int lost_worker_ = -1;
     std::string error_;
 };
+
+std::vector<int> spread_order(int count) {
+    int bits = 0;
+    while ((1 << bits) < count) ++bits;
+    std::vector<int> order;
+    order.reserve(size_t(count));
+    for (int k = 0; k < (1 << bits); ++k) {
+        int r = 0;
+        for (int b = 0; b < bits; ++b) r |= ((k >> b) & 1) << (bits - 1 - b);
+        if (r < count) order.push_back(r);
+    }
+    return order;
+}
 
 TcpSession::TcpSession(TcpOptions tcp) : tcp_(std::move(tcp)) {}
 TcpSession::~TcpSession() = default;

@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -18,6 +19,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -98,6 +100,21 @@ intersection {
   translate <-1.8, 0, 0.3>
 }
 )";
+
+TEST(Tcp, CameraRayRangesGoOutSpreadOverTheImage) {
+    EXPECT_EQ(povwall::distrib::spread_order(8),
+              (std::vector<int>{0, 4, 2, 6, 1, 5, 3, 7}));
+    EXPECT_EQ(povwall::distrib::spread_order(5), (std::vector<int>{0, 4, 2, 1, 3}));
+    EXPECT_EQ(povwall::distrib::spread_order(1), (std::vector<int>{0}));
+    // Every range once; the first quarter of them touches every quarter of the image.
+    std::vector<int> order = povwall::distrib::spread_order(704);  // 600x600 / 512
+    std::vector<int> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    for (int i = 0; i < 704; ++i) ASSERT_EQ(sorted[size_t(i)], i);
+    std::set<int> quarters;
+    for (size_t i = 0; i < order.size() / 4; ++i) quarters.insert(order[i] * 4 / 704);
+    EXPECT_EQ(quarters.size(), 4u);
+}
 
 TEST(Tcp, DemoSceneOverTwoAndFourProcessesEqualsOneProcess) {
     expect_same_images(POVWALL_DEMO_SCENE, "-W 48 -H 36",
