@@ -237,13 +237,14 @@ std::string walls_by_traffic(const Scene& scene, const std::vector<Bounds3>& bou
     const std::vector<PilotSegment> segments =
         pilot_segments(scene, request.width, request.height, kTrafficPilotRays);
     if (segments.empty()) return "";
+    const std::vector<ObjectExtent> extents = object_extents(scene);
+    const std::array<std::vector<Real>, 3> centres = VirtualWalls::sorted_centres(bounds);
     uint64_t best = UINT64_MAX, cube = 0;
     std::array<int, 3> chosen{};
     for (const std::array<int, 3>& grid : box_grids(workers)) {
-        SpaceOptions s;
-        s.boxes = grid;
-        s.balanced = true;
-        const uint64_t n = estimated_crossings(segments, walls_for(bounds, s), scene);
+        const uint64_t n = estimated_crossings(
+            segments, VirtualWalls::balanced(centres, grid[0], grid[1], grid[2]),
+            extents);
         if (grid[0] == grid[1] && grid[1] == grid[2]) cube = n;
         if (n < best) best = n, chosen = grid;
     }

@@ -97,7 +97,7 @@ constexpr size_t kMinRaysInFlight = 1024;
 // --boxes auto over several workers chooses its cuts with a pilot of about this many
 // camera rays (distrib/traffic_estimate.h), for scenes of at most this many objects
 // (the pilot prepares the whole scene in the coordinator).
-constexpr int kTrafficPilotRays = 4096;
+constexpr int kTrafficPilotRays = 1024;
 constexpr size_t kTrafficPilotMaxObjects = 200000;
 
 // Per pixel of the image, a worker holds r, g, b, transmit in double per render thread,

@@ -95,14 +95,21 @@ std::vector<PilotSegment> pilot_segments(const Scene& scene, int width, int heig
     return out;
 }
 
+std::vector<ObjectExtent> object_extents(const Scene& scene) {
+    std::vector<ObjectExtent> out;
+    out.reserve(scene.objects.size());
+    for (const Object& o : scene.objects)
+        out.push_back({trace::object_world_bounds(o), trace::object_hit_bounds(o)});
+    return out;
+}
+
 uint64_t estimated_crossings(const std::vector<PilotSegment>& segments,
-                             const VirtualWalls& walls, const Scene& scene) {
+                             const VirtualWalls& walls,
+                             const std::vector<ObjectExtent>& objects) {
     // Each box's reach, as BoxHost computes it.
     std::vector<Bounds3> reach(size_t(walls.box_count()));
-    for (const Object& o : scene.objects) {
-        const Bounds3 hit = trace::object_hit_bounds(o);
-        for (int b : walls.boxes_overlapping(trace::object_world_bounds(o)))
-            reach[size_t(b)].extend(hit);
+    for (const ObjectExtent& o : objects) {
+        for (int b : walls.boxes_overlapping(o.world)) reach[size_t(b)].extend(o.hit);
     }
     for (size_t b = 0; b < reach.size(); ++b)
         reach[b] = intersection(reach[b], walls.box_bounds(int(b)));

@@ -26,11 +26,19 @@ struct PilotSegment {
 std::vector<PilotSegment> pilot_segments(const Scene& scene, int width, int height,
                                          int samples);
 
+// An object's world bounds (the boxes it is in) and the bounds of where a ray can hit
+// it (what it adds to their reach), computed once for all the walls scored.
+struct ObjectExtent {
+    Bounds3 world, hit;
+};
+std::vector<ObjectExtent> object_extents(const Scene& scene);
+
 // Crossings between boxes the segments make under `walls`: for each segment, the boxes
 // after the first that its path meets where they hold something (a box whose objects'
 // bounds the segment misses is skipped without a message, as BoxHost routes).
 uint64_t estimated_crossings(const std::vector<PilotSegment>& segments,
-                             const VirtualWalls& walls, const Scene& scene);
+                             const VirtualWalls& walls,
+                             const std::vector<ObjectExtent>& objects);
 
 // Every way to cut `boxes` boxes into nx x ny x nz slabs.
 std::vector<std::array<int, 3>> box_grids(int boxes);

@@ -27,18 +27,31 @@ VirtualWalls VirtualWalls::uniform(const Bounds3& scene, int nx, int ny, int nz)
 
 VirtualWalls VirtualWalls::balanced(std::span<const Bounds3> primitives, int nx, int ny,
                                     int nz) {
+    return balanced(sorted_centres(primitives), nx, ny, nz);
+}
+
+std::array<std::vector<Real>, 3> VirtualWalls::sorted_centres(
+    std::span<const Bounds3> primitives) {
+    std::array<std::vector<Real>, 3> centres;
+    for (int a = 0; a < 3; ++a) {
+        for (const Bounds3& b : primitives) {
+            if (!b.empty() && !b.infinite())
+                centres[a].push_back((b.lo[a] + b.hi[a]) * 0.5);
+        }
+        std::sort(centres[a].begin(), centres[a].end());
+    }
+    return centres;
+}
+
+VirtualWalls VirtualWalls::balanced(
+    const std::array<std::vector<Real>, 3>& sorted_centres, int nx, int ny, int nz) {
     std::array<std::vector<Real>, 3> walls;
     const int n[3] = {nx, ny, nz};
-    std::vector<Real> centres;
     for (int a = 0; a < 3; ++a) {
-        centres.clear();
-        for (const Bounds3& b : primitives) {
-            if (!b.empty() && !b.infinite()) centres.push_back((b.lo[a] + b.hi[a]) * 0.5);
-        }
+        const std::vector<Real>& centres = sorted_centres[a];
         if (centres.empty()) continue;
-        std::sort(centres.begin(), centres.end());
         for (int i = 1; i < n[a]; ++i) {
-            walls[a].push_back(centres[centres.size() * i / n[a]]);
+            walls[a].push_back(centres[centres.size() * size_t(i) / size_t(n[a])]);
         }
     }
     return VirtualWalls(std::move(walls));

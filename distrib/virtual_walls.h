@@ -28,6 +28,12 @@ class VirtualWalls {
     // about the same number of primitives (the cost estimate used for adaptive walls).
     static VirtualWalls balanced(std::span<const Bounds3> primitives, int nx, int ny,
                                  int nz);
+    // The same from the primitives' centres per axis, sorted (sorted_centres): sorted
+    // once for several sets of walls.
+    static std::array<std::vector<Real>, 3> sorted_centres(
+        std::span<const Bounds3> primitives);
+    static VirtualWalls balanced(const std::array<std::vector<Real>, 3>& sorted_centres,
+                                 int nx, int ny, int nz);
 
     int box_count() const { return slabs_[0] * slabs_[1] * slabs_[2]; }
     std::array<int, 3> slabs() const { return slabs_; }

@@ -30,19 +30,20 @@ TEST(TrafficEstimate, EveryGridOfEightBoxes) {
 // one: only where the segment can meet what the next box holds.
 TEST(TrafficEstimate, CrossingsCountOnlyBoxesWhoseObjectsTheSegmentCanMeet) {
     const Scene scene = parse("sphere { <-2, 0, 0>, 0.5 } sphere { <2, 0, 0>, 0.5 }");
+    const std::vector<ObjectExtent> extents = object_extents(scene);
     const VirtualWalls two({std::vector<Real>{0}, {}, {}});
     const std::vector<PilotSegment> across{{{-2, 0, 0}, {2, 0, 0}, false}};
     const std::vector<PilotSegment> up_and_over{{{-2, 0, 0}, {2, 5, 0}, false}};
     const std::vector<PilotSegment> above{{{-1, 3, 0}, {1, 3, 0}, true}};
-    EXPECT_EQ(estimated_crossings(across, two, scene), 1u);
+    EXPECT_EQ(estimated_crossings(across, two, extents), 1u);
     // Past the wall (x >= 0) it runs at y >= 2.5, above the right sphere's bounds.
-    EXPECT_EQ(estimated_crossings(up_and_over, two, scene), 0u);
-    EXPECT_EQ(estimated_crossings(above, two, scene), 0u);
+    EXPECT_EQ(estimated_crossings(up_and_over, two, extents), 0u);
+    EXPECT_EQ(estimated_crossings(above, two, extents), 0u);
     const VirtualWalls one({std::vector<Real>{}, {}, {}});
-    EXPECT_EQ(estimated_crossings(across, one, scene), 0u);
+    EXPECT_EQ(estimated_crossings(across, one, extents), 0u);
     // Three boxes: the middle one (x in [-1, 1]) holds nothing and costs nothing.
     const VirtualWalls three({std::vector<Real>{-1, 1}, {}, {}});
-    EXPECT_EQ(estimated_crossings(across, three, scene), 1u);
+    EXPECT_EQ(estimated_crossings(across, three, extents), 1u);
 }
 
 // 16 camera rays on a 4 x 4 grid of an 8 x 8 image; those that hit the sphere end on its
@@ -95,7 +96,9 @@ TEST(TrafficEstimate, AutoWallsOverWorkersAvoidTheMostCrossedCuts) {
     EXPECT_EQ(plan.space.boxes[0] * plan.space.boxes[1] * plan.space.boxes[2], 8);
     EXPECT_TRUE(plan.space.balanced);
     // The chosen grid has the fewest estimated crossings of all, and fewer than 1x8x1.
-    const std::vector<PilotSegment> segments = pilot_segments(scene, 120, 120, 4096);
+    const std::vector<PilotSegment> segments =
+        pilot_segments(scene, 120, 120, kTrafficPilotRays);
+    const std::vector<ObjectExtent> extents = object_extents(scene);
     std::vector<Bounds3> finite;
     for (const Object& o : scene.objects) {
         const Bounds3 b = trace::object_world_bounds(o);
@@ -103,7 +106,7 @@ TEST(TrafficEstimate, AutoWallsOverWorkersAvoidTheMostCrossedCuts) {
     }
     auto crossings = [&](std::array<int, 3> g) {
         return estimated_crossings(
-            segments, VirtualWalls::balanced(finite, g[0], g[1], g[2]), scene);
+            segments, VirtualWalls::balanced(finite, g[0], g[1], g[2]), extents);
     };
     const uint64_t chosen = crossings(plan.space.boxes);
     for (const auto& g : box_grids(8)) EXPECT_LE(chosen, crossings(g));
