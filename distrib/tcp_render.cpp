@@ -840,9 +840,13 @@ class Worker {
                 if (n == options_.hang_after_items) raise(SIGSTOP);
             };
         }
+        // Render threads share the outboxes; a worker that traces on its io thread
+        // (inline_) has no other thread to exclude, and skips the lock (two atomic
+        // operations per item sent).
         host_->remote = [this](int box, Item&& item) {
             Outbox& o = *outboxes_[owner_[box]];
-            std::lock_guard<std::mutex> lock(o.mutex);
+            std::unique_lock<std::mutex> lock(o.mutex, std::defer_lock);
+            if (!inline_) lock.lock();
             const size_t before = o.records.size();
             write_item(o.records, box, item, *numbers_);
             const size_t bytes = o.records.size() - before;
@@ -853,7 +857,8 @@ class Worker {
         host_->flush = [this] {
             for (size_t w = 0; w < outboxes_.size(); ++w) {
                 Outbox& o = *outboxes_[w];
-                std::lock_guard<std::mutex> lock(o.mutex);
+                std::unique_lock<std::mutex> lock(o.mutex, std::defer_lock);
+                if (!inline_) lock.lock();
                 if (o.count) post(int(w), o.take());
             }
         };
