@@ -36,7 +36,13 @@ void restart_with_huge_page_heap(char** argv) {
                                               : std::string(kTunable);
     setenv("GLIBC_TUNABLES", value.c_str(), 1);
     setenv("POVWALL_HEAP_SET", "1", 1);  // not twice, whatever the loader did with it
-    execv("/proc/self/exe", argv);
+    // The binary's own path, not /proc/self/exe: the process's name (ps, top) is the
+    // file name executed, and would read "exe".
+    char self[4096];
+    const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n <= 0) return;
+    self[n] = '\0';
+    execv(self, argv);
     // Could not: go on with the ordinary heap.
 }
 
