@@ -61,7 +61,7 @@ enum class FrameType : uint8_t {
     Items = 5
 };
 constexpr uint16_t kFrameMagic = 0x5057;  // "PW"
-constexpr uint8_t kProtocolVersion = 1;
+constexpr uint8_t kProtocolVersion = 2;   // 2: ray records leave out defaults
 constexpr size_t kHeaderSize = 12;
 // Bounds memory per frame; senders split larger batches.
 constexpr size_t kMaxBodySize = size_t(4) << 20;

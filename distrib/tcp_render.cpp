@@ -240,11 +240,41 @@ void read_stack(Reader& r, trace::InteriorStack& s, const ObjectNumbers& numbers
     for (int i = 0; i < n; ++i) s.items[i] = numbers.material(r.raw<int32_t>());
 }
 
+// A ray record leaves out what holds its default value, and says so in its flags: the
+// shadow-ray state (and light distance) of rays that are not shadow rays, the parent of
+// rays whose colour goes to the pixel, a transmit factor of 0 or 1. Defaults are compared
+// bit for bit, so the receiver rebuilds exactly the item that was sent. 149 -> about 110
+// bytes per item on the demo scene.
+enum RecordFlags : uint8_t {
+    kIsResult = 1,
+    kShadow = 2,
+    kCounted = 4,
+    kShadowState = 8,    // light distance and shadow state follow
+    kParent = 16,        // parent, parent box, slot follow
+    kTransmitOne = 32,   // transmit contribution 1 (not sent)
+    kTransmitZero = 64,  // transmit contribution 0 (not sent)
+};
+
+template <class T>
+bool same_bits(T a, T b) {
+    return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+bool default_shadow_state(const RayItem& r) {
+    const trace::ShadowState d;
+    const trace::ShadowState& s = r.shadow_state;
+    return same_bits(r.light_distance, Real(kInfinity)) &&
+           same_bits(s.filter.r, d.filter.r) && same_bits(s.filter.g, d.filter.g) &&
+           same_bits(s.filter.b, d.filter.b) && same_bits(s.t_min, d.t_min) &&
+           same_bits(s.last_hit, d.last_hit) && s.blocked == d.blocked &&
+           s.inside.size == 0 && s.light == d.light;
+}
+
 void write_fields(RecordWriter& w, int box, const Item& item,
                   const ObjectNumbers& numbers) {
     w.raw(uint32_t(box));
-    w.raw(uint8_t(item.is_result));
     if (item.is_result) {
+        w.raw(uint8_t(kIsResult));
         const ResultItem& r = item.result;
         w.raw(r.parent);
         w.raw(r.slot);
@@ -253,28 +283,39 @@ void write_fields(RecordWriter& w, int box, const Item& item,
         return;
     }
     const RayItem& r = item.ray;
+    const bool shadow_state = !default_shadow_state(r);
+    const bool parent = r.parent != 0 || r.parent_box != -1 || r.slot != 0;
+    uint8_t flags = (r.shadow ? kShadow : 0) | (r.counted ? kCounted : 0) |
+                    (shadow_state ? kShadowState : 0) | (parent ? kParent : 0);
+    if (same_bits(r.transmit_contribution, 1.0f))
+        flags |= kTransmitOne;
+    else if (same_bits(r.transmit_contribution, 0.0f))
+        flags |= kTransmitZero;
+    w.raw(flags);
     w.vec(r.trace.ray.origin);
     w.vec(r.trace.ray.direction);
     w.raw(int32_t(r.trace.depth));
     w.raw(r.trace.weight);
     w.raw(uint8_t(r.trace.use));
     write_stack(w, r.trace.interiors, numbers);
-    w.raw(uint8_t(r.shadow));
-    w.raw(uint8_t(r.counted));
     w.raw(r.t_from);
-    w.raw(r.light_distance);
-    w.rgb(r.shadow_state.filter);
-    w.raw(r.shadow_state.t_min);
-    w.raw(r.shadow_state.last_hit);
-    w.raw(uint8_t(r.shadow_state.blocked));
-    write_stack(w, r.shadow_state.inside, numbers);
-    w.raw(int32_t(r.shadow_state.light));
-    w.raw(r.parent);
-    w.raw(r.parent_box);
-    w.raw(r.slot);
+    if (shadow_state) {
+        w.raw(r.light_distance);
+        w.rgb(r.shadow_state.filter);
+        w.raw(r.shadow_state.t_min);
+        w.raw(r.shadow_state.last_hit);
+        w.raw(uint8_t(r.shadow_state.blocked));
+        write_stack(w, r.shadow_state.inside, numbers);
+        w.raw(int32_t(r.shadow_state.light));
+    }
+    if (parent) {
+        w.raw(r.parent);
+        w.raw(r.parent_box);
+        w.raw(r.slot);
+    }
     w.raw(r.pixel);
     w.rgb(r.contribution);
-    w.raw(r.transmit_contribution);
+    if (!(flags & (kTransmitOne | kTransmitZero))) w.raw(r.transmit_contribution);
 }
 
 void write_item(std::vector<uint8_t>& out, int box, const Item& item,
@@ -287,7 +328,8 @@ void write_item(std::vector<uint8_t>& out, int box, const Item& item,
 bool read_item(Reader& rd, int box_count, int& box, Item& item,
                const ObjectNumbers& numbers) {
     box = int(rd.raw<uint32_t>());
-    item.is_result = rd.raw<uint8_t>() != 0;
+    const uint8_t flags = rd.raw<uint8_t>();
+    item.is_result = flags & kIsResult;
     if (item.is_result) {
         ResultItem& r = item.result;
         r.parent = rd.raw<uint64_t>();
@@ -296,6 +338,8 @@ bool read_item(Reader& rd, int box_count, int& box, Item& item,
         r.result.transmit = rd.raw<float>();
     } else {
         RayItem& r = item.ray;
+        r.shadow = flags & kShadow;
+        r.counted = flags & kCounted;
         r.trace.ray.origin = rd.vec();
         r.trace.ray.direction = rd.vec();
         r.trace.depth = rd.raw<int32_t>();
@@ -304,22 +348,31 @@ bool read_item(Reader& rd, int box_count, int& box, Item& item,
         if (use > uint8_t(trace::RayUse::Shadow)) return false;
         r.trace.use = trace::RayUse(use);
         read_stack(rd, r.trace.interiors, numbers);
-        r.shadow = rd.raw<uint8_t>() != 0;
-        r.counted = rd.raw<uint8_t>() != 0;
         r.t_from = rd.raw<Real>();
-        r.light_distance = rd.raw<Real>();
-        r.shadow_state.filter = rd.rgb();
-        r.shadow_state.t_min = rd.raw<Real>();
-        r.shadow_state.last_hit = rd.raw<Real>();
-        r.shadow_state.blocked = rd.raw<uint8_t>() != 0;
-        read_stack(rd, r.shadow_state.inside, numbers);
-        r.shadow_state.light = rd.raw<int32_t>();
-        r.parent = rd.raw<uint64_t>();
-        r.parent_box = rd.raw<int32_t>();
-        r.slot = rd.raw<uint16_t>();
+        if (flags & kShadowState) {
+            r.light_distance = rd.raw<Real>();
+            r.shadow_state.filter = rd.rgb();
+            r.shadow_state.t_min = rd.raw<Real>();
+            r.shadow_state.last_hit = rd.raw<Real>();
+            r.shadow_state.blocked = rd.raw<uint8_t>() != 0;
+            read_stack(rd, r.shadow_state.inside, numbers);
+            r.shadow_state.light = rd.raw<int32_t>();
+        } else {
+            r.light_distance = kInfinity;
+            r.shadow_state = trace::ShadowState{};
+        }
+        if (flags & kParent) {
+            r.parent = rd.raw<uint64_t>();
+            r.parent_box = rd.raw<int32_t>();
+            r.slot = rd.raw<uint16_t>();
+        } else {
+            r.parent = 0, r.parent_box = -1, r.slot = 0;
+        }
         r.pixel = rd.raw<int32_t>();
         r.contribution = rd.rgb();
-        r.transmit_contribution = rd.raw<float>();
+        r.transmit_contribution = (flags & kTransmitOne)    ? 1.0f
+                                  : (flags & kTransmitZero) ? 0.0f
+                                                            : rd.raw<float>();
     }
     return rd.ok && box >= 0 && box < box_count;
 }
@@ -1439,8 +1492,8 @@ class TcpCoordinator {
                 const Buffer hello =
                     control_frame({{"type", "hello"}, {"token", token}, {"from", -1}});
                 const Buffer work = control_frame(job);
-                asio::write(socket,
-                            std::array{asio::buffer(*hello), asio::buffer(*work)}, ec);
+                asio::write(socket, std::array{asio::buffer(*hello), asio::buffer(*work)},
+                            ec);
             }
             if (ec) {
                 failed_ = true;
