@@ -760,8 +760,11 @@ class Worker {
                 ep, [this, socket, i, remaining,
                      address = addresses[i]](boost::system::error_code ec) {
                     if (ec) {
-                        return fail_job("cannot connect to worker " + address + ": " +
-                                        ec.message());
+                        // Most likely that worker died: said as its loss, which the
+                        // coordinator can recover from, not as this worker's refusal.
+                        return fail_job(
+                            "cannot connect to worker " + address + ": " + ec.message(),
+                            int(i));
                     }
                     auto conn = std::make_shared<Connection>(std::move(*socket), address);
                     conn->on_frame = [](Frame&) {};
@@ -818,8 +821,11 @@ class Worker {
         });
     }
 
-    void fail_job(const std::string& message) {
-        coordinator_->send(control_frame({{"type", "error"}, {"message", message}}));
+    // `unreachable`: the index of a peer this worker could not reach (-1: none).
+    void fail_job(const std::string& message, int unreachable = -1) {
+        json error = {{"type", "error"}, {"message", message}};
+        if (unreachable >= 0) error["unreachable"] = unreachable;
+        coordinator_->send(control_frame(error));
     }
 
     // Parses the scene at the job's animation values and builds this worker's boxes (off
@@ -1575,6 +1581,14 @@ class TcpCoordinator {
         json j = parse_control(f);
         const std::string type = j.is_object() ? j.value("type", "") : "";
         if (type == "error") {
+            // A peer it cannot reach is taken as lost (a worker killed while the others
+            // connect to it shows here first), so recovery can leave it out.
+            const int unreachable = j.value("unreachable", -1);
+            if (unreachable >= 0 && unreachable < int(workers_.size()) &&
+                unreachable != i)
+                return fail(unreachable, "not reachable from worker " +
+                                             std::to_string(i) + " (" +
+                                             j.value("message", "error") + ")");
             return fail(i, j.value("message", "error"), false);
         } else if (type == "ready") {
             auto mine = j.at("boxes").get<std::vector<int>>();
