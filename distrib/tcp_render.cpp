@@ -1361,7 +1361,7 @@ class TcpCoordinator {
         empty_.assign(boxes, 1);
         box_stats_ = emitter_->box_stats();
         created_ = 0;
-        next_pixel_ = 0;
+        pixels_emitted_ = 0;
         next_range_ = 0;
         wave_pending_ = -1;
         last_wave_.clear();
@@ -1439,7 +1439,6 @@ class TcpCoordinator {
 
     void start_workers(const SceneSource& source) {
         std::string token = tcp_.token;
-        bool& forked = forked_;
         std::vector<std::string> addresses = tcp_.workers;
         if (tcp_.procs > 0) {
             if (token.empty()) {
@@ -1454,8 +1453,8 @@ class TcpCoordinator {
                               ? settings_->threads
                               : int(std::max(1u, cores / unsigned(tcp_.procs)));
             const size_t before = local_.size();
-            forked = tcp_.fork_workers && single_threaded();
-            if (forked) {
+            forked_ = tcp_.fork_workers && single_threaded();
+            if (forked_) {
                 // The child's copy of the scene is its own to take objects from.
                 fork_workers(token, threads, tcp_.image_reader,
                              const_cast<Scene*>(scene_), tcp_.procs, local_);
@@ -1482,7 +1481,7 @@ class TcpCoordinator {
         job["workers"] = addresses;
         job["plan"] = plan_to_json(emitter_->plan());
         job["expected_objects"] = objects_per_worker();
-        job["inherited"] = forked;  // this frame's scene is in the workers already
+        job["inherited"] = forked_;  // this frame's scene is in the workers already
         workers_.resize(n);
         for (int i = 0; i < n; ++i) {
             WorkerState& w = workers_[i];
@@ -1669,7 +1668,7 @@ class TcpCoordinator {
             finished += w.finished;
         }
         const uint64_t done =
-            pixels_done_estimate(uint64_t(next_pixel_), created, finished);
+            pixels_done_estimate(uint64_t(pixels_emitted_), created, finished);
         if (done > progress_reported_) {
             settings_->progress->pixels_done += done - progress_reported_;
             progress_reported_ = done;
@@ -1704,7 +1703,7 @@ class TcpCoordinator {
             w.pixels_sent += uint64_t(end - begin);
             ++created_;
             live += 1 + (end - begin);
-            next_pixel_ += end - begin;
+            pixels_emitted_ += end - begin;
         }
         if (next_range_ >= ranges && live == 0 && wave_pending_ < 0) probe();
     }
@@ -1752,8 +1751,8 @@ class TcpCoordinator {
     std::vector<double> sums_;
     std::vector<std::pair<uint64_t, uint64_t>> last_wave_;
     uint64_t created_ = 0;
-    int next_pixel_ = 0;  // pixels sent so far (progress)
-    int next_range_ = 0;  // into range_order_
+    int pixels_emitted_ = 0;  // pixels of the ranges sent so far (progress)
+    int next_range_ = 0;      // into range_order_
     std::vector<int> range_order_;
     uint64_t progress_reported_ = 0;
     long wave_pending_ = -1;
