@@ -132,8 +132,9 @@ TEST(Recovery, WorkerKilledWhileThePeersConnectIsReplaced) {
                 .code,
             0)
             << fault;
-        if (!said.empty())
+        if (!said.empty()) {
             EXPECT_NE(said.find("went to the other workers"), std::string::npos) << said;
+        }
     }
 }
 
