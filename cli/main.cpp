@@ -244,8 +244,11 @@ int main(int argc, char** argv) {
         }
         const std::string& cmd = args[0];
         // Black-box workers forked by a render (--procs) inherit its heap settings.
-        const bool forks_workers = cmd == "render" && std::find(args.begin(), args.end(),
-                                                                "--procs") != args.end();
+        const bool forks_workers =
+            cmd == "render" &&
+            std::any_of(args.begin(), args.end(), [](const std::string& a) {
+                return a == "--procs" || a.rfind("--procs=", 0) == 0;
+            });
         if (cmd == "worker" || forks_workers) restart_with_huge_page_heap(argv);
         if (cmd == "render") return render_main({args.begin() + 1, args.end()});
         if (cmd == "diff") return run_diff(argc - 1, argv + 1);
