@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <thread>
 
 #include "distrib/traffic_estimate.h"
@@ -239,7 +240,8 @@ std::string walls_by_traffic(const Scene& scene, const std::vector<Bounds3>& bou
     if (segments.empty()) return "";
     const std::vector<ObjectExtent> extents = object_extents(scene);
     const std::array<std::vector<Real>, 3> centres = VirtualWalls::sorted_centres(bounds);
-    uint64_t best = UINT64_MAX, cube = 0;
+    uint64_t best = UINT64_MAX;
+    std::optional<uint64_t> cube;  // the equal cuts' count, when the workers make a cube
     std::array<int, 3> chosen{};
     for (const std::array<int, 3>& grid : box_grids(workers)) {
         const uint64_t n = estimated_crossings(
@@ -248,13 +250,13 @@ std::string walls_by_traffic(const Scene& scene, const std::vector<Bounds3>& bou
         if (grid[0] == grid[1] && grid[1] == grid[2]) cube = n;
         if (n < best) best = n, chosen = grid;
     }
+    const bool cube_chosen = chosen[0] == chosen[1] && chosen[1] == chosen[2];
     space.boxes = chosen;
     space.balanced = true;
     std::string why =
         "; walls cut across the least ray traffic: " + std::to_string(best) +
         " crossings for " + std::to_string(segments.size()) + " pilot ray segments";
-    if (cube > 0 && chosen[0] != chosen[1])
-        why += " (" + std::to_string(cube) + " with equal cuts)";
+    if (cube && !cube_chosen) why += " (" + std::to_string(*cube) + " with equal cuts)";
     return why;
 }
 

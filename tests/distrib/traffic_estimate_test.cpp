@@ -94,6 +94,9 @@ TEST(TrafficEstimate, AutoWallsOverWorkersAvoidTheMostCrossedCuts) {
               std::string::npos)
         << plan.reasons.back();
     EXPECT_EQ(plan.space.boxes[0] * plan.space.boxes[1] * plan.space.boxes[2], 8);
+    // Not 2x2x2 here, so the reason gives the equal cuts' count for comparison.
+    EXPECT_NE(plan.space.boxes, (std::array<int, 3>{2, 2, 2}));
+    EXPECT_NE(plan.reasons.back().find("with equal cuts)"), std::string::npos);
     EXPECT_TRUE(plan.space.balanced);
     // The chosen grid has the fewest estimated crossings of all, and fewer than 1x8x1.
     const std::vector<PilotSegment> segments =
