@@ -42,8 +42,18 @@ void restart_with_huge_page_heap(char** argv) {
     const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
     if (n <= 0) return;
     self[n] = '\0';
+    // Between the exec and main() installing the handler again the disposition is the
+    // default: a Ctrl-C there would end the render without a word (under ASan that
+    // start takes most of a second). Blocked, it waits for main() to unblock it. The
+    // mask outlives the exec.
+    sigset_t interrupts, before;
+    sigemptyset(&interrupts);
+    sigaddset(&interrupts, SIGINT);
+    sigaddset(&interrupts, SIGTERM);
+    sigprocmask(SIG_BLOCK, &interrupts, &before);
     execv(self, argv);
     // Could not: go on with the ordinary heap.
+    sigprocmask(SIG_SETMASK, &before, nullptr);
 }
 
 const char* kUsage =
@@ -232,10 +242,21 @@ int main(int argc, char** argv) {
     bool worker = argc > 1 && std::strcmp(argv[1], "worker") == 0;
     for (int i = 1; i < argc && !worker; ++i)
         worker = std::strcmp(argv[i], "--tile-worker") == 0;
+    // Test hook: a Ctrl-C that lands after the restart's exec, before the handler is set.
+    if (std::getenv("POVWALL_HEAP_SET") &&
+        std::getenv("POVWALL_FAULT_INTERRUPT_AT_RESTART"))
+        raise(SIGINT);
     if (!worker) {
         std::signal(SIGINT, on_interrupt);
         std::signal(SIGTERM, on_interrupt);
     }
+    // A restart with the huge-page heap (below) execs with the two blocked; one that
+    // came meanwhile is delivered here, to the disposition just set.
+    sigset_t interrupts;
+    sigemptyset(&interrupts);
+    sigaddset(&interrupts, SIGINT);
+    sigaddset(&interrupts, SIGTERM);
+    sigprocmask(SIG_UNBLOCK, &interrupts, nullptr);
     std::vector<std::string> args(argv + 1, argv + argc);
     try {
         if (args.empty()) {

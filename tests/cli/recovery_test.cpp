@@ -139,7 +139,9 @@ TEST(Recovery, WorkerKilledWhileThePeersConnectIsReplaced) {
 }
 
 // Ctrl-C reaches the whole process group: the worker processes end quietly and the
-// coordinator alone says what was kept; no worker is left behind.
+// coordinator alone says what was kept; no worker is left behind. The render with --procs
+// restarts itself (huge-page heap) first: a Ctrl-C during that exec must not end it
+// silently (Interrupt.ArrivingDuringTheRestartIsStillReported).
 TEST(Interrupt, WorkersEndQuietlyAndOnlyTheCoordinatorSpeaks) {
     const std::string scene = std::string(POVWALL_SOURCE_DIR) + "/scenes/demo/walls.pov";
     for (const std::string mode :
@@ -151,9 +153,14 @@ TEST(Interrupt, WorkersEndQuietlyAndOnlyTheCoordinatorSpeaks) {
                                   scene + " +KFF200 -W 320 -H 240 -q " + mode + " -o " +
                                   out.string() + " 2>" + err.string() + " & echo $! >" +
                                   pid.string() + "; wait";
-        const std::string cmd = "sh -c '(" + start +
-                                ") & sleep 1.5; /bin/kill -s INT -- -$(cat " +
-                                pid.string() + "); sleep 1.5'";
+        // Ctrl-C once the workers run (a fixed wait was too short for two starts under
+        // ASan on a busy machine), and some frames into the render.
+        fs::remove(pid);
+        const std::string p = pid.string();
+        const std::string cmd =
+            "sh -c '(" + start + ") & i=0; until [ -s " + p + " ] && pgrep -P $(cat " +
+            p + ") >/dev/null || [ $i -ge 600 ]; do sleep 0.05; i=$((i+1)); done; " +
+            "sleep 0.5; /bin/kill -s INT -- -$(cat " + p + "); sleep 1.5'";
         ASSERT_EQ(std::system(cmd.c_str()), 0) << mode;
         const std::string said = slurp(err);
         // One line, the coordinator's (it may have been writing a frame's image).
@@ -169,6 +176,25 @@ TEST(Interrupt, WorkersEndQuietlyAndOnlyTheCoordinatorSpeaks) {
             "pgrep -f -- '" + scratch().string() + "/interrupt[.]png' >/dev/null";
         EXPECT_NE(std::system(left.c_str()), 0) << mode;
     }
+}
+
+// A render that forks its workers first executes itself again with the huge-page heap.
+// Between that exec and main() setting the handler, a Ctrl-C used to find the default
+// disposition and end the render without a word; now it waits, blocked, and is reported.
+TEST(Interrupt, ArrivingDuringTheRestartIsStillReported) {
+    const std::string scene = std::string(POVWALL_SOURCE_DIR) + "/scenes/demo/walls.pov";
+    const fs::path err = scratch() / "restart_interrupt.err",
+                   out = scratch() / "restart_interrupt.png";
+    fs::remove(out);
+    const std::string cmd = std::string("POVWALL_FAULT_INTERRUPT_AT_RESTART=1 ") +
+                            POVWALL_BINARY + " render " + scene +
+                            " -W 16 -H 16 -q --boxes 2x1x1 --procs 2 -o " + out.string() +
+                            " 2>" + err.string();
+    const int status = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << "ended by a signal, silently";
+    EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
+    EXPECT_EQ(slurp(err), "\npovwall: interrupted: no image written\n");
+    EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace
