@@ -67,6 +67,9 @@ const char* kUsage =
     "                      [--warn T] [--warnpercent P] [--max-rmse R]\n"
     "       povwall compare SCENE.pov [-W N] [-H N] [--json] [--keep DIR] [--threads N]\n"
     "                      [-L DIR]... [+POV-Ray switches]\n"
+    "       povwall bench SCENE.pov [-W N] [-H N] [--runs N] [--threads N] [--json]\n"
+    "                      [+POV-Ray switches]   (against POV-Ray, alternating, "
+    "medians)\n"
     "       povwall parse SCENE.pov [-L DIR]... [--json]   (exit 0 ok, 3 unsupported, 2 "
     "error)\n"
     "       povwall worker --listen HOST:PORT --token T [--threads N]\n"
@@ -274,6 +277,7 @@ int main(int argc, char** argv) {
         if (cmd == "render") return render_main({args.begin() + 1, args.end()});
         if (cmd == "diff") return run_diff(argc - 1, argv + 1);
         if (cmd == "compare") return run_compare(argc - 1, argv + 1);
+        if (cmd == "bench") return run_bench(argc - 1, argv + 1);
         if (cmd == "parse") return run_parse(argc - 1, argv + 1);
         if (cmd == "worker") return run_worker_command(argc - 1, argv + 1);
         if (cmd == "check-numerics") return run_check_numerics(argc - 1, argv + 1);

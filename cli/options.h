@@ -124,6 +124,7 @@ void resolve_partial_render(RenderOptions& o);
 int run_render(RenderOptions o);
 int run_diff(int argc, char** argv);
 int run_compare(int argc, char** argv);
+int run_bench(int argc, char** argv);
 int run_parse(int argc, char** argv);
 int run_worker_command(int argc, char** argv);
 int run_check_numerics(int argc, char** argv);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -324,6 +325,40 @@ TEST(Cli, CompareReportsBothRendersAsJson) {
     for (const char* f : {"cmp-povray.png", "cmp-povwall.png", "cmp-diff.png"}) {
         EXPECT_EQ(povwall::output::read_image((keep / f).string()).width, 32) << f;
     }
+}
+
+// Speed bars are measured with `povwall bench`: both renderers as whole processes,
+// alternating, and the medians of the times it lists.
+TEST(Cli, BenchAlternatesRendersAndComparesMedians) {
+    if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
+    fs::path scene = write_scene("bench.pov",
+                                 "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+                                 "camera { location <0, 0, -3> look_at 0 }\n"
+                                 "light_source { <2, 3, -4> color rgb 1 }\n"
+                                 "sphere { 0, 1 pigment { color rgb <1, 0.5, 0.2> } }\n");
+    RunResult r =
+        run("bench " + scene.string() + " -W 32 -H 24 --threads 1 --runs 4 --json");
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    nlohmann::json j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["runs"], 4);
+    auto pov = j["povray_seconds"].get<std::vector<double>>();
+    auto ours = j["povwall_seconds"].get<std::vector<double>>();
+    ASSERT_EQ(pov.size(), 4u);
+    ASSERT_EQ(ours.size(), 4u);
+    // The median of an even count is the lower middle time: one that was measured.
+    std::sort(pov.begin(), pov.end());
+    std::sort(ours.begin(), ours.end());
+    EXPECT_EQ(j["povray_median_seconds"].get<double>(), pov[1]);
+    EXPECT_EQ(j["povwall_median_seconds"].get<double>(), ours[1]);
+    EXPECT_DOUBLE_EQ(j["speed_up"].get<double>(), pov[1] / ours[1]);
+    EXPECT_GT(ours[0], 0.0);
+    EXPECT_EQ(j["status"], "pass");
+    EXPECT_EQ(j["width"], 32);
+    EXPECT_LE(j["rmse"].get<double>(), 0.01);
+    r = run("bench " + scene.string() + " --runs 0");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--runs: Value 0 not in range 1 to 1000"), std::string::npos)
+        << r.err;
 }
 
 TEST(Cli, CompareWithoutPovRaySaysWhyAndExitsWithCTestSkipCode) {

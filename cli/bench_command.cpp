@@ -1,0 +1,203 @@
+// `povwall bench`: povwall against POV-Ray 3.7 on one scene, wall time of whole
+// processes, alternating (POV-Ray, then povwall, RUNS times) so that a machine's slow
+// minutes hit both, medians compared; then the two images diffed. This is how speed bars
+// are measured (docs/performance.md): timed tests would only measure the machine.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli/options.h"
+#include "cli/povray_reference.h"
+#include "cli/process.h"
+#include "output/diff.h"
+#include "output/image_io.h"
+
+namespace povwall::cli {
+
+nlohmann::json diff_json(const output::DiffResult& r);
+void print_diff(const output::DiffResult& r);
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// The middle value; for an even count the lower of the two middle ones (a time that was
+// measured, not an average of two).
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[(v.size() - 1) / 2];
+}
+
+std::string self_binary() {
+    char self[4096];
+    const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n <= 0) return "povwall";
+    self[n] = '\0';
+    return self;
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+}  // namespace
+
+int run_bench(int argc, char** argv) {
+    CLI::App app{
+        "Time povwall against POV-Ray 3.7 on a scene: whole processes, alternating, "
+        "medians; then diff the images",
+        "povwall bench"};
+    RenderOptions o;
+    o.width = 600;  // the size of the speed bars
+    o.height = 600;
+    int threads = 0, runs = 5;
+    bool json = false;
+    std::string boxes;
+    app.add_option("SCENE", o.scene, "scene file")->required();
+    app.add_option("-W", o.width, "image width")->capture_default_str();
+    app.add_option("-H", o.height, "image height")->capture_default_str();
+    app.add_option("-L", o.library_paths, "include folder (repeatable)");
+    app.add_option("--threads", threads, "threads for both renderers (0: all cores)");
+    app.add_option("--runs", runs, "renders by each, alternating")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000));
+    app.add_option("--boxes", boxes, "povwall's black boxes (see render --boxes)");
+    app.add_flag("--json", json, "print one JSON object");
+    output::DiffThresholds t;
+    app.add_option("--max-rmse", t.max_rmse, "largest RMSE that passes")
+        ->capture_default_str();
+    app.add_option("--max-bad-fraction", t.max_bad_fraction,
+                   "largest fraction of bad pixels that passes")
+        ->capture_default_str();
+    app.add_option("--fail", t.fail, "per-channel difference making a pixel bad")
+        ->capture_default_str();
+    std::vector<std::string> pov_switches, rest;
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        if (looks_like_pov_switch(a))
+            pov_switches.push_back(a);
+        else
+            rest.push_back(a);
+    }
+    std::vector<char*> args{argv[0]};
+    for (auto& r : rest) args.push_back(r.data());
+    try {
+        app.parse(int(args.size()), args.data());
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    for (const auto& s : pov_switches) {
+        if (!apply_pov_switch(s, o)) throw UsageError("unknown switch '" + s + "'");
+    }
+    o.render.threads = threads;
+    const fs::path dir =
+        fs::temp_directory_path() / ("povwall-bench-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    struct Cleanup {
+        fs::path dir;
+        ~Cleanup() {
+            std::error_code ec;
+            fs::remove_all(dir, ec);
+        }
+    } cleanup{dir};
+    const std::string stem = fs::path(o.scene).stem().string();
+    const std::string pov_png = (dir / (stem + "-povray.png")).string();
+    const std::string our_png = (dir / (stem + "-povwall.png")).string();
+    const std::string pov_log = (dir / "povray.log").string();
+    const std::string our_log = (dir / "povwall.log").string();
+    const std::vector<std::string> pov_cmd = povray_command(o, pov_png, threads);
+    // povwall as POV-Ray runs: a process of its own, from start to exit.
+    std::vector<std::string> our_cmd{self_binary(),
+                                     "render",
+                                     o.scene,
+                                     "-o",
+                                     our_png,
+                                     "-W",
+                                     std::to_string(o.width),
+                                     "-H",
+                                     std::to_string(o.height),
+                                     "--threads",
+                                     std::to_string(threads),
+                                     "-q"};
+    for (const auto& l : o.library_paths) our_cmd.insert(our_cmd.end(), {"-L", l});
+    if (!boxes.empty()) our_cmd.insert(our_cmd.end(), {"--boxes", boxes});
+    our_cmd.insert(our_cmd.end(), pov_switches.begin(), pov_switches.end());
+
+    std::vector<double> pov_s, our_s;
+    for (int i = 0; i < runs; ++i) {
+        const PovrayRun pov = run_povray(o, pov_cmd, "", pov_log);
+        switch (pov.status) {
+            case PovrayRun::Status::Ok:
+                break;
+            case PovrayRun::Status::NotInstalled:
+                std::cerr
+                    << "povwall: povray is not installed or not on PATH: nothing to "
+                       "measure against\n";
+                return 77;  // CTest's skip code
+            case PovrayRun::Status::SceneError:
+                return 2;
+            case PovrayRun::Status::Failed:
+                std::cerr << "povwall: error: povray failed (exit " << pov.exit_code
+                          << ")\n"
+                          << pov.log;
+                return 2;
+        }
+        pov_s.push_back(pov.seconds);
+        const auto start = Clock::now();
+        const int rc = run_process(our_cmd, our_log);
+        our_s.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+        if (rc != 0) {
+            std::cerr << slurp(our_log);
+            return rc > 0 && rc < 128 ? rc : 1;
+        }
+        if (!json) {
+            std::fprintf(stderr, "run %d/%d: povray %.3f s, povwall %.3f s\n", i + 1,
+                         runs, pov_s.back(), our_s.back());
+        }
+    }
+    output::DiffResult r;
+    try {
+        r = output::diff_images(output::read_image(our_png), output::read_image(pov_png),
+                                t);
+    } catch (const output::ImageIoError& e) {
+        r.status = output::DiffResult::Status::Unreadable;
+        r.error = e.what();
+    }
+    const double pov_median = median(pov_s), our_median = median(our_s);
+    const double speed_up = pov_median / our_median;
+    if (json) {
+        nlohmann::json j = diff_json(r);
+        j["scene"] = o.scene;
+        j["threads"] = threads;
+        j["runs"] = runs;
+        j["povray_seconds"] = pov_s;
+        j["povwall_seconds"] = our_s;
+        j["povray_median_seconds"] = pov_median;
+        j["povwall_median_seconds"] = our_median;
+        j["speed_up"] = speed_up;
+        std::printf("%s\n", j.dump().c_str());
+    } else {
+        const std::string cores = threads == 1  ? std::string("1 thread")
+                                  : threads > 0 ? std::to_string(threads) + " threads"
+                                                : std::string("all cores");
+        std::printf("scene: %s (%dx%d, %s, %d runs each, alternating)\n", o.scene.c_str(),
+                    o.width, o.height, cores.c_str(), runs);
+        std::printf("povray:  %.3f s (median)\npovwall: %.3f s (median)\n", pov_median,
+                    our_median);
+        std::printf("speed-up: %.2fx\n", speed_up);
+        print_diff(r);
+    }
+    return int(r.status);
+}
+
+}  // namespace povwall::cli
