@@ -28,13 +28,16 @@ struct Fixture {
     bool has_loose = false, has_grid = false;
 };
 
-// POVWALL_BENCH_LEAF / POVWALL_BENCH_TRAV override the build options (tuning runs).
+// POVWALL_BENCH_LEAF / POVWALL_BENCH_TRAV / POVWALL_BENCH_TOP override the build options
+// (tuning runs).
 octree::BuildOptions options() {
     octree::BuildOptions opt;
     if (const char* v = std::getenv("POVWALL_BENCH_LEAF"))
         opt.leaf_primitives = std::atoi(v);
     if (const char* v = std::getenv("POVWALL_BENCH_TRAV"))
         opt.traversal_cost = std::atof(v);
+    if (const char* v = std::getenv("POVWALL_BENCH_TOP"))
+        opt.dense_top_max = std::atoi(v);
     return opt;
 }
 
@@ -270,6 +273,8 @@ void BM_ImageLanes(benchmark::State& state) {
     state.counters["shadowed_fraction"] =
         double(shadowed) / double(std::max<uint64_t>(shadow_rays, 1));
     state.counters["tests_per_ray"] = double(tests) / double(std::max<uint64_t>(rays, 1));
+    state.counters["dense_top"] = lanes.tree.top_level();
+    state.counters["depth"] = lanes.tree.stats().depth;
 }
 
 BENCHMARK(BM_Octree)->RangeMultiplier(10)->Range(1000, 1000000);

@@ -414,6 +414,7 @@ int run_render(RenderOptions o) {
         if (!use_boxes) {
             j["plan"]["octree"] = stats.octree_flat ? "flat list" : "octree";
             j["plan"]["octree_nodes"] = stats.octree_nodes;
+            j["plan"]["octree_dense_top_levels"] = stats.octree_dense_top;
             j["plan"]["resident_bytes"] = stats.resident_bytes;
         }
         if (use_boxes) {

@@ -167,6 +167,8 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
     nodes_.clear();
     ids_.clear();
     stats_ = {};
+    top_.clear();
+    top_level_ = 0;
     primitive_count_ = input.bounds.size();
     bounds_ = Bounds3{};
     std::vector<uint32_t> all;
@@ -254,15 +256,57 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
             stats_.references += n.count;
         }
     }
+    build_dense_top(opt.dense_top_max);
     // Large trees are walked at random: their nodes and references on 2 MB pages.
     move_to_huge_pages(nodes_);
     move_to_huge_pages(ids_);
     stats_.nodes = int(nodes_.size());
     stats_.depth = max_depth;
+    stats_.dense_top = top_level_;
     stats_.exact_tests = builder.exact_tests();
     stats_.exact_rejected = builder.exact_rejected();
     stats_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void Octree::build_dense_top(int max_level) {
+    // The deepest level, up to max_level, above which every node is inner: each of its
+    // 8^K cells is then one node. Below two levels the descent it saves costs less than
+    // the stepping.
+    std::vector<uint32_t> level{0};
+    int k = 0;
+    while (k < max_level) {
+        std::vector<uint32_t> next;
+        next.reserve(level.size() * 8);
+        bool complete = true;
+        for (uint32_t i : level) {
+            if (nodes_[i].count != kInner) {
+                complete = false;
+                break;
+            }
+            for (uint32_t c = 0; c < 8; ++c) next.push_back(nodes_[i].first + c);
+        }
+        if (!complete) break;
+        level.swap(next);
+        ++k;
+    }
+    if (k < 2) return;
+    // `level` lists the cells of level k in the order of descent (child index
+    // x | y<<1 | z<<2 per level, root first); the cell's coordinates interleave those
+    // bits.
+    const uint32_t side = 1u << k;
+    top_.assign(size_t(side) * side * side, Node{});
+    for (size_t i = 0; i < level.size(); ++i) {
+        uint32_t x = 0, y = 0, z = 0;
+        for (int l = 0; l < k; ++l) {
+            const uint32_t c = uint32_t(i >> (3 * (k - 1 - l))) & 7u;
+            x = x << 1 | (c & 1u);
+            y = y << 1 | (c >> 1 & 1u);
+            z = z << 1 | (c >> 2 & 1u);
+        }
+        top_[x | y << k | z << (2 * k)] = nodes_[level[i]];
+    }
+    top_level_ = k;
 }
 
 }  // namespace povwall::octree

@@ -30,6 +30,9 @@
 
 namespace povwall::octree {
 
+/// Up to 64^3 cells (1 MB of node indices) in the dense top.
+constexpr int kDenseTopMax = 6;
+
 struct BuildOptions {
     /// Deepest level (root = 0); also bounded by kMaxDepth.
     int max_depth = 16;
@@ -43,6 +46,10 @@ struct BuildOptions {
     Real traversal_cost = 8;
     /// Build threads; 0 = hardware concurrency.
     int threads = 0;
+    /// Deepest level kept as a dense array of cells, walked by stepping from cell to
+    /// cell (0 = off). Used where the tree is complete down to that level; see
+    /// Octree::top_level().
+    int dense_top_max = kDenseTopMax;
 };
 
 struct BuildInput {
@@ -61,6 +68,7 @@ struct BuildStats {
     uint64_t exact_rejected =
         0;              // cell references the exact test removed (bounds overlapped)
     bool flat = false;  // below flat_threshold: a single leaf, no tree
+    int dense_top = 0;  // levels walked as a dense array of cells (0: none)
     double seconds = 0;
 };
 
@@ -111,6 +119,10 @@ constexpr int kMaxDepth = 24;
 
 class Octree {
   public:
+    /// A cell's real-space bounds (plain arrays: Bounds3's initialisers cost per ray).
+    struct Cell {
+        Real lo[3], hi[3];
+    };
     void build(const BuildInput& input, const BuildOptions& options = {});
     /// Root cell (the primitives' bounds, padded so every axis has extent).
     const Bounds3& bounds() const { return bounds_; }
@@ -183,6 +195,8 @@ class Octree {
     using NodeArray = std::vector<Node, GroupAllocator<Node>>;
     const NodeArray& nodes() const { return nodes_; }
     const std::vector<uint32_t>& ids() const { return ids_; }
+    /// Level K whose 8^K cells are walked directly (0: the walk starts at the root).
+    int top_level() const { return top_level_; }
 
   private:
     // kParallel: some direction component is zero, so mid-plane parameters come from the
@@ -190,12 +204,24 @@ class Octree {
     // exit parameters, which needs no geometry. kPrefetch: the tree is larger than
     // kPrefetchNodes, so the walk fetches ahead (below that it sits in L2 and the extra
     // instructions only cost).
+    // Walks the subtree below inner node `first` (its first child) whose cell the ray
+    // crosses between t0 and t1 (mirrored); true: stop the whole traversal.
     template <bool kParallel, bool kPrefetch, class Visit, class PrefetchLeaf>
-    void walk(const Point3& o, const Vector3& inv, const bool* parallel, unsigned mirror,
-              const Vector3& t0, const Vector3& t1, Real t_min, Real& t_max, Visit& visit,
-              PrefetchLeaf& prefetch_leaf) const;
+    bool walk(const Point3& o, const Vector3& inv, const bool* parallel, unsigned mirror,
+              uint32_t first, const Real* t0, const Real* t1, const Cell* cell,
+              Real t_min, Real& t_max, Visit& visit, PrefetchLeaf& prefetch_leaf) const;
+    // Steps through the cells of level top_level_ (no zero direction component).
+    template <bool kPrefetch, class Visit, class PrefetchLeaf>
+    void walk_top(const Point3& o, const Vector3& inv, unsigned mirror, const Vector3& t0,
+                  const Vector3& t1, Real t_min, Real& t_max, Visit& visit,
+                  PrefetchLeaf& prefetch_leaf) const;
+
+    void build_dense_top(int max_level);
 
     NodeArray nodes_;
+    // The dense top: a copy of each cell's node at level top_level_, x | y<<K | z<<2K.
+    std::vector<Node> top_;
+    int top_level_ = 0;
     std::vector<uint32_t> ids_;
     Bounds3 bounds_;
     size_t primitive_count_ = 0;
@@ -254,33 +280,108 @@ void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&
         return;
     }
     const bool large = nodes_.size() > kPrefetchNodes;
+    // Mid-plane parameters of the whole tree, computed below from t0/t1 alone; an
+    // infinite one (a component just above the parallel cut) takes the geometric walk.
+    const bool finite = std::fabs(t0.x) + std::fabs(t0.y) + std::fabs(t0.z) +
+                            std::fabs(t1.x) + std::fabs(t1.y) + std::fabs(t1.z) <
+                        kInfinity;
+    if (top_level_ > 0 && !any_parallel && finite) {
+        if (large) {
+            walk_top<true>(o, inv, mirror, t0, t1, t_min, t_max, visit, prefetch_leaf);
+        } else {
+            walk_top<false>(o, inv, mirror, t0, t1, t_min, t_max, visit, prefetch_leaf);
+        }
+        return;
+    }
+    const Real rt0[3] = {t0.x, t0.y, t0.z}, rt1[3] = {t1.x, t1.y, t1.z};
+    const Cell root{{bounds_.lo.x, bounds_.lo.y, bounds_.lo.z},
+                    {bounds_.hi.x, bounds_.hi.y, bounds_.hi.z}};
+    const uint32_t first = nodes_[0].first;
     if (any_parallel) {
         if (large) {
-            walk<true, true>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit,
-                             prefetch_leaf);
+            walk<true, true>(o, inv, parallel, mirror, first, rt0, rt1, &root, t_min,
+                             t_max, visit, prefetch_leaf);
         } else {
-            walk<true, false>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit,
-                              prefetch_leaf);
+            walk<true, false>(o, inv, parallel, mirror, first, rt0, rt1, &root, t_min,
+                              t_max, visit, prefetch_leaf);
         }
     } else if (large) {
-        walk<false, true>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit,
-                          prefetch_leaf);
+        walk<false, true>(o, inv, parallel, mirror, first, rt0, rt1, &root, t_min, t_max,
+                          visit, prefetch_leaf);
     } else {
-        walk<false, false>(o, inv, parallel, mirror, t0, t1, t_min, t_max, visit,
-                           prefetch_leaf);
+        walk<false, false>(o, inv, parallel, mirror, first, rt0, rt1, &root, t_min, t_max,
+                           visit, prefetch_leaf);
+    }
+}
+
+// The top levels of a tree that is complete there, walked as the grid they are
+// (Amanatides and Woo's stepping): a ray's first cell follows from its entry parameter in
+// O(1) instead of a descent through K levels, which is what grows with the scene. The
+// planes of level K are t0 + (t1 - t0) * j / 2^K per (mirrored) axis, each computed once
+// per ray and shared by the two cells it separates, so no ray slips between cells; below
+// level K the walk splits those cells at their parameters' midpoints as usual.
+template <bool kPrefetch, class Visit, class PrefetchLeaf>
+void Octree::walk_top(const Point3& o, const Vector3& inv, unsigned mirror,
+                      const Vector3& t0v, const Vector3& t1v, Real t_min, Real& t_max,
+                      Visit& visit, PrefetchLeaf& prefetch_leaf) const {
+    const int k = top_level_;
+    const int side = 1 << k;
+    const Real step = Real(1) / Real(side);  // exact: a power of two
+    const Real t0[3] = {t0v.x, t0v.y, t0v.z}, t1[3] = {t1v.x, t1v.y, t1v.z};
+    const Real span[3] = {t1[0] - t0[0], t1[1] - t0[1], t1[2] - t0[2]};
+    auto plane = [&](int a, int j) {
+        return j >= side ? t1[a] : t0[a] + span[a] * (Real(j) * step);
+    };
+    // The entry-plane rule of the walk below, at max(entry, t_min): the cell left of the
+    // first plane that is not before the start.
+    const Real start = std::max({t0[0], t0[1], t0[2], t_min});
+    int j[3];
+    Real c0[3], c1[3];
+    for (int a = 0; a < 3; ++a) {
+        const Real r = (start - t0[a]) / span[a] * Real(side);
+        int ja = r > 0 ? int(std::min(r, Real(side - 1))) : 0;
+        while (ja > 0 && !(plane(a, ja) < start)) --ja;
+        while (ja < side - 1 && plane(a, ja + 1) < start) ++ja;
+        j[a] = ja;
+        c0[a] = plane(a, ja);
+        c1[a] = plane(a, ja + 1);
+    }
+    // Real cell index from mirrored ones: a mirrored axis counts from the far side.
+    const int flip[3] = {(mirror & 1u) ? side - 1 : 0, (mirror & 2u) ? side - 1 : 0,
+                         (mirror & 4u) ? side - 1 : 0};
+    for (;;) {
+        const Real enter = std::max({c0[0], c0[1], c0[2]});
+        const Real exit = std::min({c1[0], c1[1], c1[2]});
+        if (enter > t_max) return;
+        const int axis =
+            (c1[0] <= c1[1] && c1[0] <= c1[2]) ? 0 : (c1[1] <= c1[2] ? 1 : 2);
+        if (!(exit < t_min) && enter <= exit) {
+            const uint32_t cell = uint32_t(j[0] ^ flip[0]) |
+                                  uint32_t(j[1] ^ flip[1]) << k |
+                                  uint32_t(j[2] ^ flip[2]) << (2 * k);
+            const Node n = top_[cell];
+            if (n.count != kInner) {
+                if (n.count && visit(&ids_[n.first], size_t(n.count), t_max, enter))
+                    return;
+            } else if (walk<false, kPrefetch>(o, inv, nullptr, mirror, n.first, c0, c1,
+                                              nullptr, t_min, t_max, visit,
+                                              prefetch_leaf)) {
+                return;
+            }
+        }
+        if (++j[axis] == side) return;
+        c0[axis] = c1[axis];
+        c1[axis] = plane(axis, j[axis] + 1);
     }
 }
 
 template <bool kParallel, bool kPrefetch, class Visit, class PrefetchLeaf>
-void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel,
-                  unsigned mirror, const Vector3& root_t0, const Vector3& root_t1,
-                  Real t_min, Real& t_max, Visit& visit,
-                  PrefetchLeaf& prefetch_leaf) const {
+bool Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel,
+                  unsigned mirror, uint32_t first, const Real* root_t0,
+                  const Real* root_t1, const Cell* root_cell, Real t_min, Real& t_max,
+                  Visit& visit, PrefetchLeaf& prefetch_leaf) const {
     // Plain arrays, not Vector3: its default member initialisers would zero the whole
     // stack on every ray.
-    struct Cell {
-        Real lo[3], hi[3];  // real space
-    };
     struct Frame {
         Real t0[3], tm[3], t1[3];
         uint32_t first;  // the node's first child
@@ -312,10 +413,9 @@ void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel,
     for (int a = 0; a < 3; ++a) {
         stack[0].t0[a] = root_t0[a];
         stack[0].t1[a] = root_t1[a];
-        cells[0].lo[a] = bounds_.lo[a];
-        cells[0].hi[a] = bounds_.hi[a];
     }
-    stack[0].first = nodes_[0].first;
+    if constexpr (kParallel) cells[0] = *root_cell;
+    stack[0].first = first;
     open(stack[0], cells[0]);
     int top = 0;
     while (top >= 0) {
@@ -339,7 +439,7 @@ void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel,
         const Real enter = std::max({c0[0], c0[1], c0[2]});
         const Real exit = std::min({c1[0], c1[1], c1[2]});
         // Front to back: every later cell starts at or after this one.
-        if (enter > t_max) return;
+        if (enter > t_max) return true;
         if (exit < t_min || !(enter <= exit)) continue;
         const unsigned real = c ^ mirror;
         const Node n = nodes_[f.first + real];
@@ -357,7 +457,8 @@ void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel,
             }
         }
         if (n.count != kInner) {
-            if (n.count && visit(&ids_[n.first], size_t(n.count), t_max, enter)) return;
+            if (n.count && visit(&ids_[n.first], size_t(n.count), t_max, enter))
+                return true;
             continue;
         }
         Frame& g = stack[top + 1];
@@ -381,6 +482,7 @@ void Octree::walk(const Point3& o, const Vector3& inv, const bool* parallel,
         }
         ++top;
     }
+    return false;
 }
 
 }  // namespace povwall::octree

@@ -275,6 +275,7 @@ Image render_scene(const Scene& scene, const RenderSettings& settings,
         stats->prepare_seconds = std::chrono::duration<double>(t1 - t0).count();
         stats->octree_flat = prepared.tree().stats().flat;
         stats->octree_nodes = prepared.tree().stats().nodes;
+        stats->octree_dense_top = prepared.tree().stats().dense_top;
         stats->resident_bytes = prepared.resident_bytes();
         stats->trace_seconds = std::chrono::duration<double>(t2 - t1).count();
     }

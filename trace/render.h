@@ -42,6 +42,7 @@ struct RenderStats {
     // What the prepared scene holds: octree or flat list, and its size.
     bool octree_flat = false;
     int octree_nodes = 0;
+    int octree_dense_top = 0;  // levels walked as a dense array of cells
     size_t resident_bytes = 0;
 };
 

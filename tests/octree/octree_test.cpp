@@ -112,6 +112,7 @@ TEST(Octree, ClosestHitEqualsBruteForceOnRandomSpheres) {
     Octree tree = build_spheres(spheres);
     EXPECT_FALSE(tree.stats().flat);
     EXPECT_GT(tree.stats().leaves, 500);
+    EXPECT_GE(tree.top_level(), 2);  // most rays step through the dense top
     Mailbox mb;
     mb.resize(spheres.size());
     int hits = 0, tests = 0;
@@ -339,6 +340,7 @@ TEST(Octree, ClosestHitBeyondTMinEqualsBruteForce) {
     std::mt19937 rng(17);
     std::vector<Sphere> spheres = random_spheres(3000, 10, rng);
     Octree tree = build_spheres(spheres);
+    EXPECT_GE(tree.top_level(), 2);
     std::uniform_real_distribution<Real> tm(0, 20);
     auto hit_after = [&](const Sphere& s, const Ray& ray, Real t_min) {
         Vector3 oc = s.c - ray.origin;
@@ -376,6 +378,51 @@ TEST(Octree, ClosestHitBeyondTMinEqualsBruteForce) {
         hits += best < kInfinity;
     }
     EXPECT_GT(hits, 1000);
+}
+
+// The dense top only changes how the first levels are walked: every ray visits the same
+// leaves in the same order as the walk from the root, from outside and from inside
+// (t_min > 0), and a tree that is not complete two levels down keeps the plain walk.
+TEST(Octree, DenseTopVisitsTheLeavesOfTheWalkFromTheRoot) {
+    std::mt19937 rng(23);
+    std::vector<Sphere> spheres = random_spheres(30000, 20, rng);
+    BuildOptions plain_options;
+    plain_options.dense_top_max = 0;
+    const Octree dense = build_spheres(spheres),
+                 plain = build_spheres(spheres, plain_options);
+    ASSERT_EQ(dense.top_level(), 4);  // complete down to 4,096 cells
+    EXPECT_EQ(dense.stats().dense_top, 4);
+    EXPECT_EQ(plain.top_level(), 0);
+    ASSERT_EQ(dense.nodes().size(), plain.nodes().size());
+    auto leaves = [](const Octree& tree, const Ray& ray, Real t_min) {
+        std::vector<const uint32_t*> seen;
+        Real t_max = kInfinity;
+        tree.traverse(ray, t_min, t_max, [&](const uint32_t* ids, size_t, Real&) {
+            seen.push_back(ids);
+            return false;
+        });
+        return seen;
+    };
+    std::uniform_real_distribution<Real> u(-1, 1), p(-40, 40), tm(0, 30);
+    size_t visited = 0;
+    for (int n = 0; n < 5000; ++n) {
+        const Ray ray{{p(rng), p(rng), p(rng)}, {u(rng), u(rng), u(rng)}};
+        const Real t_min = n % 2 ? tm(rng) : 0;
+        const auto a = leaves(dense, ray, t_min);
+        const auto b = leaves(plain, ray, t_min);
+        // Same leaves: pointers into the same ids (the two trees are built alike).
+        ASSERT_EQ(a.size(), b.size()) << "ray " << n;
+        for (size_t i = 0; i < a.size(); ++i) {
+            ASSERT_EQ(a[i] - dense.ids().data(), b[i] - plain.ids().data())
+                << "ray " << n << " leaf " << i;
+        }
+        visited += a.size();
+    }
+    EXPECT_GT(visited, 5000u * 3);
+    // A cluster and one far sphere leave six of the root's children empty leaves.
+    std::vector<Sphere> cluster = random_spheres(2000, 5, rng);
+    cluster.push_back({{1000, 1000, 1000}, 1});
+    EXPECT_EQ(build_spheres(cluster).top_level(), 0);
 }
 
 TEST(Octree, NanAndInfiniteRaysVisitNothing) {
