@@ -355,6 +355,22 @@ void Octree::walk_top(const Point3& o, const Vector3& inv, unsigned mirror,
         if (enter > t_max) return;
         const int axis =
             (c1[0] <= c1[1] && c1[0] <= c1[2]) ? 0 : (c1[1] <= c1[2] ? 1 : 2);
+        // The next cell's children or ids, fetched while this cell is walked.
+        if constexpr (kPrefetch) {
+            if (j[axis] + 1 < side) {
+                int jn[3] = {j[0], j[1], j[2]};
+                ++jn[axis];
+                const Node& s =
+                    top_[uint32_t(jn[0] ^ flip[0]) | uint32_t(jn[1] ^ flip[1]) << k |
+                         uint32_t(jn[2] ^ flip[2]) << (2 * k)];
+                if (s.count == kInner) {
+                    __builtin_prefetch(nodes_.data() + s.first);
+                } else {
+                    __builtin_prefetch(ids_.data() + s.first);
+                    prefetch_leaf(s.first);
+                }
+            }
+        }
         if (!(exit < t_min) && enter <= exit) {
             const uint32_t cell = uint32_t(j[0] ^ flip[0]) |
                                   uint32_t(j[1] ^ flip[1]) << k |
