@@ -30,7 +30,7 @@
 
 namespace povwall::octree {
 
-/// Up to 64^3 cells (1 MB of node indices) in the dense top.
+/// Up to 64^3 cells (2 MB of 8-byte node copies) in the dense top.
 constexpr int kDenseTopMax = 6;
 
 struct BuildOptions {

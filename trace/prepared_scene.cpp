@@ -517,7 +517,9 @@ size_t PreparedScene::resident_bytes() const {
            bytes(material_) + bytes(bounds_) + bytes(spheres_) + bytes(triangles_) +
            bytes(planes_) + bytes(objects_) + bytes(unbounded_) + bytes(leaf_materials_) +
            lanes_.bytes() + size_t(ts.nodes) * sizeof(octree::Octree::Node) +
-           ts.references * sizeof(uint32_t);
+           ts.references * sizeof(uint32_t) +
+           (ts.dense_top > 0 ? (size_t(1) << (3 * ts.dense_top)) : 0) *
+               sizeof(octree::Octree::Node);
 }
 
 uint32_t PreparedScene::add_material(const Object& o) {
