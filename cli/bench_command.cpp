@@ -74,31 +74,10 @@ int run_bench(int argc, char** argv) {
     app.add_option("--boxes", boxes, "povwall's black boxes (see render --boxes)");
     app.add_flag("--json", json, "print one JSON object");
     output::DiffThresholds t;
-    app.add_option("--max-rmse", t.max_rmse, "largest RMSE that passes")
-        ->capture_default_str();
-    app.add_option("--max-bad-fraction", t.max_bad_fraction,
-                   "largest fraction of bad pixels that passes")
-        ->capture_default_str();
-    app.add_option("--fail", t.fail, "per-channel difference making a pixel bad")
-        ->capture_default_str();
-    std::vector<std::string> pov_switches, rest;
-    for (int i = 1; i < argc; ++i) {
-        std::string a = argv[i];
-        if (looks_like_pov_switch(a))
-            pov_switches.push_back(a);
-        else
-            rest.push_back(a);
-    }
-    std::vector<char*> args{argv[0]};
-    for (auto& r : rest) args.push_back(r.data());
-    try {
-        app.parse(int(args.size()), args.data());
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
-    for (const auto& s : pov_switches) {
-        if (!apply_pov_switch(s, o)) throw UsageError("unknown switch '" + s + "'");
-    }
+    add_diff_threshold_options(app, t);
+    std::vector<std::string> pov_switches;
+    if (int code = parse_with_pov_switches(app, argc, argv, o, pov_switches); code >= 0)
+        return code;
     o.render.threads = threads;
     const fs::path dir =
         fs::temp_directory_path() / ("povwall-bench-" + std::to_string(getpid()));

@@ -34,6 +34,39 @@ using Clock = std::chrono::steady_clock;
 
 }  // namespace
 
+void add_diff_threshold_options(CLI::App& app, output::DiffThresholds& t) {
+    app.add_option("--max-rmse", t.max_rmse, "largest RMSE that passes")
+        ->capture_default_str();
+    app.add_option("--max-bad-fraction", t.max_bad_fraction,
+                   "largest fraction of bad pixels that passes")
+        ->capture_default_str();
+    app.add_option("--fail", t.fail, "per-channel difference making a pixel bad")
+        ->capture_default_str();
+}
+
+int parse_with_pov_switches(CLI::App& app, int argc, char** argv, RenderOptions& o,
+                            std::vector<std::string>& switches) {
+    std::vector<std::string> rest;
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        if (looks_like_pov_switch(a))
+            switches.push_back(a);
+        else
+            rest.push_back(a);
+    }
+    std::vector<char*> args{argv[0]};
+    for (auto& r : rest) args.push_back(r.data());
+    try {
+        app.parse(int(args.size()), args.data());
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    for (const auto& s : switches) {
+        if (!apply_pov_switch(s, o)) throw UsageError("unknown switch '" + s + "'");
+    }
+    return -1;
+}
+
 int run_compare(int argc, char** argv) {
     CLI::App app{
         "Render a scene with POV-Ray and with povwall, time both, diff the images",
@@ -62,31 +95,10 @@ int run_compare(int argc, char** argv) {
         "includes and the render settings");
     app.add_flag("--warn-ok", warn_ok, "exit 0 on a warning (tests)");
     output::DiffThresholds t;
-    app.add_option("--max-rmse", t.max_rmse, "largest RMSE that passes")
-        ->capture_default_str();
-    app.add_option("--max-bad-fraction", t.max_bad_fraction,
-                   "largest fraction of bad pixels that passes")
-        ->capture_default_str();
-    app.add_option("--fail", t.fail, "per-channel difference making a pixel bad")
-        ->capture_default_str();
-    std::vector<std::string> pov_switches, rest;
-    for (int i = 1; i < argc; ++i) {
-        std::string a = argv[i];
-        if (looks_like_pov_switch(a))
-            pov_switches.push_back(a);
-        else
-            rest.push_back(a);
-    }
-    std::vector<char*> args{argv[0]};
-    for (auto& r : rest) args.push_back(r.data());
-    try {
-        app.parse(int(args.size()), args.data());
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
-    for (const auto& s : pov_switches) {
-        if (!apply_pov_switch(s, o)) throw UsageError("unknown switch '" + s + "'");
-    }
+    add_diff_threshold_options(app, t);
+    std::vector<std::string> pov_switches;
+    if (int code = parse_with_pov_switches(app, argc, argv, o, pov_switches); code >= 0)
+        return code;
     o.render.threads = threads;
     fs::path dir = keep.empty() ? fs::temp_directory_path() /
                                       ("povwall-compare-" + std::to_string(getpid()))

@@ -19,6 +19,10 @@ namespace CLI {
 class App;
 }
 
+namespace povwall::output {
+struct DiffThresholds;
+}
+
 namespace povwall::cli {
 
 // --max-loop-iterations and --max-parse-seconds, for every command that parses a scene.
@@ -120,6 +124,15 @@ std::string format_extension(char format);
 
 // Fills o.render's 0-based partial-render bounds from the +SR/+ER/+SC/+EC values.
 void resolve_partial_render(RenderOptions& o);
+
+// compare and bench: --max-rmse, --max-bad-fraction and --fail for the diff against
+// POV-Ray's image.
+void add_diff_threshold_options(CLI::App& app, output::DiffThresholds& t);
+// compare and bench: parses the arguments with `app` after taking out the POV-Ray +X
+// switches, which then apply to `o` and are kept in `switches` (to pass on). Returns -1
+// when the command goes on, else its exit code (0 after --help, 2 on a usage error).
+int parse_with_pov_switches(CLI::App& app, int argc, char** argv, RenderOptions& o,
+                            std::vector<std::string>& switches);
 
 int run_render(RenderOptions o);
 int run_diff(int argc, char** argv);
