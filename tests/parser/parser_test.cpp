@@ -545,6 +545,16 @@ light_source { <0, 10, 0> rgb 1 looks_like { sphere { 0, 0.1 } } }
     // The whole scene is left as it was.
     EXPECT_EQ(whole.objects.size(), 4u);
     EXPECT_FALSE(whole.objects_filtered());
+    // Taken rather than copied: the same scene; `whole` keeps only its object list.
+    const Scene taken = take_scene_keeping(std::move(whole), right);
+    EXPECT_EQ(taken.object_first_node, filtered.object_first_node);
+    EXPECT_EQ(taken.object_nodes_total, filtered.object_nodes_total);
+    EXPECT_EQ(taken.objects_left_out, filtered.objects_left_out);
+    ASSERT_EQ(taken.objects.size(), 2u);
+    EXPECT_EQ(std::get<Sphere>(taken.objects[1].shape).radius, 0.5);
+    EXPECT_EQ(taken.lights.size(), 1u);
+    EXPECT_EQ(whole.objects.size(), 4u);
+    EXPECT_TRUE(whole.lights.empty());
 }
 
 }  // namespace
