@@ -186,6 +186,10 @@ class BoxHost {
     Image image(int width, int height, bool alpha) const;
     // Values summed per pixel: r, g, b, and transmit when the output has alpha.
     int sum_channels() const { return sum_channels_; }
+    // Contributions go into `sums` (total pixels x sum_channels(), shared with other
+    // processes, added to atomically) instead of this process's own per-thread sums;
+    // for_each_pixel_sum() then visits nothing. Call before begin_run() or run().
+    void use_shared_sums(double* sums) { shared_sums_ = sums; }
     std::vector<BoxStats> box_stats() const;
     int box_count() const { return int(boxes_.size()); }
 
@@ -280,6 +284,7 @@ class BoxHost {
         std::vector<uint8_t> written;  // per run of 128 pixels
     };
     std::vector<PixelSums> accum_;
+    double* shared_sums_ = nullptr;  // use_shared_sums()
 };
 
 template <class Visit>

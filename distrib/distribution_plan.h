@@ -32,6 +32,7 @@ struct DistributionRequest {
     int threads = 0;            // 0: all cores
     int procs = 0;              // worker processes, screen or space (0: not asked for)
     int workers = 0;            // running workers given (--workers): their count
+    int cores = 0;              // this machine's cores (0: as the system says)
     size_t pixels = 0;          // image width x height (worker accumulators)
     int width = 0, height = 0;  // the image (the pilot of --boxes auto over workers)
 };
@@ -79,7 +80,11 @@ std::string format_bytes(size_t bytes);
 // direction, so each process gets a part of the picture (cutting along the view puts
 // the front boxes, which most rays reach, on one process). More workers than boxes:
 // some host none.
-std::vector<int> box_owners(std::array<int, 3> slabs, int workers, const Vector3& view);
+// With `grid` (px x py x pz = workers, each at most the slabs on its axis) the blocks are
+// that grid's instead: blocks chosen by the pilot's ray traffic (SpaceOptions::
+// process_grid). Any other `grid` is ignored.
+std::vector<int> box_owners(std::array<int, 3> slabs, int workers, const Vector3& view,
+                            std::array<int, 3> grid = {0, 0, 0});
 
 // A worker process's own memory before any scene (binary, libraries, stacks): measured
 // 7.7 MB resident for a worker holding one sphere.

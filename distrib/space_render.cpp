@@ -1,6 +1,7 @@
 #include "distrib/space_render.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <new>
 #include <thread>
@@ -308,6 +309,17 @@ Box* BoxHost::go_on_in(Box& current, int dest) {
 }
 
 void BoxHost::add_pixel(int thread, int pixel, const Rgb& c, float transmit) {
+    if (shared_sums_) {
+        // Other processes add to the same pixels; the sums stay in double, so the order
+        // of the additions does not show in the image.
+        double* a = shared_sums_ + size_t(pixel) * size_t(sum_channels_);
+        std::atomic_ref<double>(a[0]).fetch_add(c.r, std::memory_order_relaxed);
+        std::atomic_ref<double>(a[1]).fetch_add(c.g, std::memory_order_relaxed);
+        std::atomic_ref<double>(a[2]).fetch_add(c.b, std::memory_order_relaxed);
+        if (sum_channels_ == 4)
+            std::atomic_ref<double>(a[3]).fetch_add(transmit, std::memory_order_relaxed);
+        return;
+    }
     PixelSums& sums = accum_[size_t(thread)];
     sums.written[size_t(pixel) >> kSumRunShift] = 1;
     double* a = &sums.values[size_t(pixel) * size_t(sum_channels_)];
@@ -340,6 +352,11 @@ void BoxHost::deliver(Box& box, const RayItem& ray, const TraceResult& result,
 void BoxHost::process_ray(Box& entry, Item& item, int thread) {
     RayItem& ray = item.ray;
     const GlobalSettings& g = scene_.settings;
+    // Other processes write the shared sums too: the pixel's line is fetched (for
+    // writing) while the ray is traced, not when its contribution arrives.
+    if (shared_sums_)
+        __builtin_prefetch(shared_sums_ + size_t(ray.pixel) * size_t(sum_channels_), 1,
+                           3);
     // A ray that leaves a box goes on as this same item (no copy of its 300-odd bytes):
     // into a box this thread may trace in at once by going round this loop again (no
     // recursion: a ray crossing many boxes does not deepen the stack), else by push().
@@ -674,7 +691,7 @@ int BoxHost::begin_run(int threads) {
         for (Box::Lane& l : b->lanes) b->scene->init_context(l.ctx);
     }
     accum_.clear();
-    accum_.resize(size_t(threads));
+    if (!shared_sums_) accum_.resize(size_t(threads));
     for (PixelSums& sums : accum_) {
         const size_t n = size_t(total_pixels_) * size_t(sum_channels_);
         sums.values.reset(
@@ -743,8 +760,7 @@ void set_pixel(Image& image, size_t p, const double* s, bool alpha) {
 }
 }  // namespace
 
-Image image_from_sums(const std::vector<double>& sums, int width, int height,
-                      bool alpha) {
+Image image_from_sums(std::span<const double> sums, int width, int height, bool alpha) {
     Image image(width, height);
     const size_t channels = alpha ? 4 : 3;
     for (size_t p = 0; p < size_t(width) * height; ++p) {

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,10 @@ struct SpaceOptions {
     // and queue (up to 8 boxes deep). Off (no command-line switch yet): every item goes
     // through the queues, so that the queue order (`--queue`) decides all of the work.
     bool direct_handoff = true;
+    // How worker processes share the boxes: blocks of this grid of processes (x, y, z),
+    // chosen for the least ray traffic between processes (plan_distribution); zeros:
+    // box_owners' own cuts.
+    std::array<int, 3> process_grid{0, 0, 0};
 };
 
 struct BoxStats {
@@ -73,7 +78,7 @@ using trace::shading_is_linear;  // trace/render_plan.h
 
 // The image from per-pixel sums of r, g, b, and with `alpha` (+UA) background transmit,
 // from which alpha comes: 3 or 4 values per pixel.
-Image image_from_sums(const std::vector<double>& sums, int width, int height, bool alpha);
+Image image_from_sums(std::span<const double> sums, int width, int height, bool alpha);
 
 Image render_space(const Scene& scene, const trace::RenderSettings& settings,
                    const SpaceOptions& options, SpaceStats* stats = nullptr);

@@ -128,6 +128,11 @@ struct WorkerOptions {
     // after the fork): the first job, which says so, takes from it the objects of this
     // worker's boxes instead of parsing.
     Scene* inherited_scene = nullptr;
+    // A forked local worker's view of the coordinator's pixel sums (SharedPixelSums):
+    // it adds its contributions there instead of sending them. Used when the count
+    // matches the job's image (width x height x channels).
+    double* shared_sums = nullptr;
+    size_t shared_sums_count = 0;
     // Seconds to wait for the rendezvous to answer and then for the coordinator's job;
     // past it the worker ends (exit 3) rather than wait forever under a launcher.
     double rendezvous_timeout = 120;

@@ -178,6 +178,32 @@ TEST(Interrupt, WorkersEndQuietlyAndOnlyTheCoordinatorSpeaks) {
     }
 }
 
+// Local worker processes share the cores: they run as batch tasks (policy 3 in
+// /proc/PID/stat), so a worker that sends rays is not preempted by the one it wakes.
+TEST(Procs, LocalWorkersRunAsBatchTasks) {
+    const std::string scene = std::string(POVWALL_SOURCE_DIR) + "/scenes/demo/walls.pov";
+    for (const std::string start_mode : {"", " --worker-start exec"}) {
+        const fs::path pid = scratch() / "batch.pid", policies = scratch() / "batch.txt";
+        fs::remove(pid);
+        fs::remove(policies);
+        const std::string start =
+            "setsid " + std::string(POVWALL_BINARY) + " render " + scene +
+            " +KFF100 -W 320 -H 240 -q --boxes 2x1x1 --procs 2" + start_mode + " -o " +
+            (scratch() / "batch.png").string() + " 2>/dev/null & echo $! >" +
+            pid.string() + "; wait";
+        const std::string p = pid.string();
+        const std::string cmd =
+            "sh -c '(" + start + ") & i=0; until [ -s " + p +
+            " ] && [ $(pgrep -P $(cat " + p +
+            ") | wc -l) -ge 2 ] || [ $i -ge 600 ]; do sleep 0.05; i=$((i+1)); done; " +
+            "sleep 0.3; for c in $(pgrep -P $(cat " + p +
+            ")); do cut -d\\  -f41 /proc/$c/stat; done >" + policies.string() +
+            "; /bin/kill -s INT -- -$(cat " + p + "); wait'";
+        ASSERT_EQ(std::system(cmd.c_str()), 0) << start_mode;
+        EXPECT_EQ(slurp(policies), "3\n3\n") << start_mode;
+    }
+}
+
 // A render that forks its workers first executes itself again with the huge-page heap.
 // Between that exec and main() setting the handler, a Ctrl-C used to find the default
 // disposition and end the render without a word; now it waits, blocked, and is reported.

@@ -260,6 +260,17 @@ TEST(DistributionPlan, BoxOwnersAreCompactBlocksCutAcrossTheView) {
     EXPECT_EQ(box_owners({3, 1, 1}, 3, {0, 0, 1}), (std::vector<int>{0, 1, 2}));
     EXPECT_EQ(box_owners({5, 1, 1}, 2, {0, 0, 1}), (std::vector<int>{0, 0, 0, 1, 1}));
     EXPECT_EQ(box_owners({2, 1, 1}, 4, {0, 0, 1}), (std::vector<int>{0, 2}));
+    // A grid of processes: its blocks, numbered x first.
+    EXPECT_EQ(box_owners({4, 1, 2}, 4, {0, 0, 1}, {2, 1, 2}),
+              (std::vector<int>{0, 0, 1, 1, 2, 2, 3, 3}));
+    EXPECT_EQ(box_owners({3, 1, 1}, 2, {0, 0, 1}, {2, 1, 1}),
+              (std::vector<int>{0, 0, 1}));
+    // A grid that does not fit (too many processes on an axis, or another count): the
+    // cuts above.
+    EXPECT_EQ(box_owners({2, 2, 2}, 2, {0.1, 0.3, 1}, {1, 1, 3}),
+              box_owners({2, 2, 2}, 2, {0.1, 0.3, 1}));
+    EXPECT_EQ(box_owners({2, 2, 2}, 2, {0.1, 0.3, 1}, {4, 1, 1}),
+              box_owners({2, 2, 2}, 2, {0.1, 0.3, 1}));
 }
 
 TEST(DistributionPlan, ParsesMemorySizesAndBoxes) {

@@ -3,10 +3,14 @@
 #include "distrib/space_render.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "distrib/box_host.h"
+#include "distrib/shared_pixel_sums.h"
 #include "parser/parser.h"
 #include "trace/render.h"
 
@@ -111,6 +115,42 @@ TEST_F(SpaceRender, DirectHandOverGivesTheQueuedImageAndTheSameMessages) {
         EXPECT_EQ(sent[1], sent[0]);
         EXPECT_EQ(rays[1], rays[0]);
         EXPECT_LT(peak[1], peak[0]);
+    }
+}
+
+// Forked workers add into one mapping the coordinator reads (SharedPixelSums): what
+// another process adds shows here, and a host adding there leaves its own sums empty
+// and the image whole, in either way of returning colours.
+TEST_F(SpaceRender, SharedSumsTakeEveryContributionFromAnyProcess) {
+    const size_t count = size_t(settings_.width) * size_t(settings_.height) * 3;
+    SharedPixelSums sums(count);
+    ASSERT_EQ(sums.size(), count);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        sums.data()[count - 1] = 0.25;
+        _exit(0);
+    }
+    ASSERT_GT(pid, 0);
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, 0), pid);
+    EXPECT_EQ(sums.data()[count - 1], 0.25);
+    for (auto results :
+         {SpaceOptions::Results::Forward, SpaceOptions::Results::Parents}) {
+        std::fill(sums.values().begin(), sums.values().end(), 0.0);
+        SpaceOptions o;
+        o.boxes = {2, 2, 2};
+        o.results = results;
+        BoxHost host(scene_, settings_, o);
+        host.place_walls();
+        host.build_boxes({0, 1, 2, 3, 4, 5, 6, 7});
+        host.use_shared_sums(sums.data());
+        host.run(2, true);
+        int visited = 0;
+        host.for_each_pixel_sum([&](size_t, const double*) { ++visited; });
+        EXPECT_EQ(visited, 0);
+        const Image image =
+            image_from_sums(sums.values(), settings_.width, settings_.height, false);
+        EXPECT_LE(rmse(image, reference_), 1e-6) << int(results);
     }
 }
 

@@ -121,5 +121,78 @@ TEST(TrafficEstimate, AutoWallsOverWorkersAvoidTheMostCrossedCuts) {
     EXPECT_EQ(in_process.space.boxes[1], in_process.space.boxes[2]);
 }
 
+// With the boxes given (4x4x4 over 8 processes on 2 cores) the walls stay; the planner
+// chooses which blocks of boxes each process hosts, by the crossings between processes.
+// On the demo scene the blocks keep all of y (its cuts carry every shadow ray). 2x2x2
+// over 8 has no choice and runs no pilot; processes that each have a core keep the cuts
+// across the view.
+TEST(TrafficEstimate, GivenBoxesGoToProcessesInBlocksCrossedLeast) {
+    const Scene scene =
+        parser::parse_scene_file(POVWALL_DEMO_SCENE, parser::ParseOptions{});
+    DistributionRequest r;
+    r.mode = RenderMode::Space;
+    r.boxes = "4x4x4";
+    r.procs = 8;
+    r.cores = 2;
+    r.width = 120;
+    r.height = 120;
+    r.pixels = 120 * 120;
+    const DistributionPlan plan = plan_distribution(scene, r);
+    const std::array<int, 3> grid = plan.space.process_grid;
+    EXPECT_EQ(grid[0] * grid[1] * grid[2], 8);
+    EXPECT_EQ(grid[1], 1) << plan.reasons.back();
+    EXPECT_EQ(plan.space.boxes, (std::array<int, 3>{4, 4, 4}));
+    EXPECT_NE(plan.reasons.back().find("processes), cut across the least ray traffic"),
+              std::string::npos)
+        << plan.reasons.back();
+    // The chosen grid's walls between processes are crossed least of all the grids.
+    const std::vector<PilotSegment> segments =
+        pilot_segments(scene, 120, 120, kTrafficPilotRays);
+    const std::vector<ObjectExtent> extents = object_extents(scene);
+    Bounds3 world;
+    for (const Object& o : scene.objects) {
+        const Bounds3 b = trace::object_world_bounds(o);
+        if (!b.infinite()) world.extend(b);
+    }
+    const VirtualWalls boxes = VirtualWalls::uniform(world, 4, 4, 4);
+    auto crossings = [&](std::array<int, 3> g) {
+        std::array<std::vector<Real>, 3> w;
+        for (int a = 0; a < 3; ++a) {
+            for (int i = 1; i < g[a]; ++i)
+                w[a].push_back(boxes.walls(a)[4 / g[a] * i - 1]);
+        }
+        return estimated_crossings(segments, VirtualWalls(w), extents);
+    };
+    for (const auto& g : box_grids(8)) {
+        if (g[0] <= 4 && g[1] <= 4 && g[2] <= 4) {
+            EXPECT_LE(crossings(grid), crossings(g));
+        }
+    }
+    EXPECT_LT(crossings(grid), crossings({2, 2, 2}));
+    // The owners follow the grid: process (x, y, z) of the grid hosts its block.
+    const std::vector<int> owner =
+        box_owners(plan.space.boxes, 8, scene.camera.direction, grid);
+    for (int b = 0; b < 64; ++b) {
+        const int x = b % 4, y = b / 4 % 4, z = b / 16;
+        EXPECT_EQ(
+            owner[size_t(b)],
+            ((z * grid[2] / 4) * grid[1] + y * grid[1] / 4) * grid[0] + x * grid[0] / 4);
+    }
+    // One candidate: no pilot, no grid.
+    r.boxes = "2x2x2";
+    EXPECT_EQ(plan_distribution(scene, r).space.process_grid,
+              (std::array<int, 3>{0, 0, 0}));
+    // As many cores as processes, or running workers: no grid.
+    r.boxes = "4x4x4";
+    r.cores = 8;
+    EXPECT_EQ(plan_distribution(scene, r).space.process_grid,
+              (std::array<int, 3>{0, 0, 0}));
+    r.cores = 2;
+    r.procs = 0;
+    r.workers = 8;
+    EXPECT_EQ(plan_distribution(scene, r).space.process_grid,
+              (std::array<int, 3>{0, 0, 0}));
+}
+
 }  // namespace
 }  // namespace povwall::distrib
