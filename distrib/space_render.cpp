@@ -352,11 +352,6 @@ void BoxHost::deliver(Box& box, const RayItem& ray, const TraceResult& result,
 void BoxHost::process_ray(Box& entry, Item& item, int thread) {
     RayItem& ray = item.ray;
     const GlobalSettings& g = scene_.settings;
-    // Other processes write the shared sums too: the pixel's line is fetched (for
-    // writing) while the ray is traced, not when its contribution arrives.
-    if (shared_sums_)
-        __builtin_prefetch(shared_sums_ + size_t(ray.pixel) * size_t(sum_channels_), 1,
-                           3);
     // A ray that leaves a box goes on as this same item (no copy of its 300-odd bytes):
     // into a box this thread may trace in at once by going round this loop again (no
     // recursion: a ray crossing many boxes does not deepen the stack), else by push().
