@@ -240,6 +240,25 @@ std::vector<int> box_owners(std::array<int, 3> slabs, int workers, const Vector3
 
 namespace {
 
+// The pilot's segments and the objects' extents that score walls by ray traffic; none
+// for scenes too big to trace a pilot through here, or an image size not given.
+struct Pilot {
+    std::vector<PilotSegment> segments;
+    std::vector<ObjectExtent> extents;
+};
+std::optional<Pilot> traffic_pilot(const Scene& scene,
+                                   const DistributionRequest& request) {
+    if (request.width <= 0 || request.height <= 0 ||
+        scene.objects.size() > kTrafficPilotMaxObjects)
+        return std::nullopt;
+    Pilot pilot;
+    pilot.segments =
+        pilot_segments(scene, request.width, request.height, kTrafficPilotRays);
+    if (pilot.segments.empty()) return std::nullopt;
+    pilot.extents = object_extents(scene);
+    return pilot;
+}
+
 // --boxes auto over `workers` processes: one balanced box per worker, cut along the axes
 // whose walls the pilot's rays cross least (ray traffic between processes is what costs;
 // BoxHost's in-process hand-over is cheap, so without workers the walls stay as they
@@ -248,13 +267,10 @@ namespace {
 std::string walls_by_traffic(const Scene& scene, const std::vector<Bounds3>& bounds,
                              const DistributionRequest& request, int workers,
                              SpaceOptions& space) {
-    if (request.width <= 0 || request.height <= 0 ||
-        scene.objects.size() > kTrafficPilotMaxObjects)
-        return "";
-    const std::vector<PilotSegment> segments =
-        pilot_segments(scene, request.width, request.height, kTrafficPilotRays);
-    if (segments.empty()) return "";
-    const std::vector<ObjectExtent> extents = object_extents(scene);
+    const std::optional<Pilot> pilot = traffic_pilot(scene, request);
+    if (!pilot) return "";
+    const std::vector<PilotSegment>& segments = pilot->segments;
+    const std::vector<ObjectExtent>& extents = pilot->extents;
     const std::array<std::vector<Real>, 3> centres = VirtualWalls::sorted_centres(bounds);
     uint64_t best = UINT64_MAX;
     std::optional<uint64_t> cube;  // the equal cuts' count, when the workers make a cube
@@ -291,13 +307,11 @@ std::string owners_by_traffic(const Scene& scene, const VirtualWalls& walls,
     for (const std::array<int, 3>& g : box_grids(workers)) {
         if (g[0] <= slabs[0] && g[1] <= slabs[1] && g[2] <= slabs[2]) grids.push_back(g);
     }
-    if (grids.size() < 2 || request.width <= 0 || request.height <= 0 ||
-        scene.objects.size() > kTrafficPilotMaxObjects)
-        return "";
-    const std::vector<PilotSegment> segments =
-        pilot_segments(scene, request.width, request.height, kTrafficPilotRays);
-    if (segments.empty()) return "";
-    const std::vector<ObjectExtent> extents = object_extents(scene);
+    if (grids.size() < 2) return "";
+    const std::optional<Pilot> pilot = traffic_pilot(scene, request);
+    if (!pilot) return "";
+    const std::vector<PilotSegment>& segments = pilot->segments;
+    const std::vector<ObjectExtent>& extents = pilot->extents;
     // A process's block is boxes [ceil(i S / g), ceil((i + 1) S / g)) on an axis of S
     // slabs cut in g (box_owners): the walls between processes are those at the blocks'
     // first boxes.

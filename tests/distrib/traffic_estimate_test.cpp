@@ -75,19 +75,25 @@ sphere { 0, 1.5 pigment { rgb 1 } }
     EXPECT_EQ(shadows, hits);
 }
 
+// The demo scene at 120x120 in space subdivision over 8 local processes.
+DistributionRequest demo_request(const char* boxes) {
+    DistributionRequest r;
+    r.mode = RenderMode::Space;
+    r.boxes = boxes;
+    r.procs = 8;
+    r.width = 120;
+    r.height = 120;
+    r.pixels = 120 * 120;
+    return r;
+}
+
 // On the demo scene (spheres over a mirror floor, lights high up in front) cutting along
 // y is crossed by every shadow and floor reflection; the planner avoids it and states
 // why.
 TEST(TrafficEstimate, AutoWallsOverWorkersAvoidTheMostCrossedCuts) {
     const Scene scene =
         parser::parse_scene_file(POVWALL_DEMO_SCENE, parser::ParseOptions{});
-    DistributionRequest r;
-    r.mode = RenderMode::Space;
-    r.boxes = "auto";
-    r.procs = 8;
-    r.width = 120;
-    r.height = 120;
-    r.pixels = 120 * 120;
+    DistributionRequest r = demo_request("auto");
     const DistributionPlan plan = plan_distribution(scene, r);
     ASSERT_FALSE(plan.reasons.empty());
     EXPECT_NE(plan.reasons.back().find("walls cut across the least ray traffic"),
@@ -129,14 +135,8 @@ TEST(TrafficEstimate, AutoWallsOverWorkersAvoidTheMostCrossedCuts) {
 TEST(TrafficEstimate, GivenBoxesGoToProcessesInBlocksCrossedLeast) {
     const Scene scene =
         parser::parse_scene_file(POVWALL_DEMO_SCENE, parser::ParseOptions{});
-    DistributionRequest r;
-    r.mode = RenderMode::Space;
-    r.boxes = "4x4x4";
-    r.procs = 8;
+    DistributionRequest r = demo_request("4x4x4");
     r.cores = 2;
-    r.width = 120;
-    r.height = 120;
-    r.pixels = 120 * 120;
     const DistributionPlan plan = plan_distribution(scene, r);
     const std::array<int, 3> grid = plan.space.process_grid;
     EXPECT_EQ(grid[0] * grid[1] * grid[2], 8);
