@@ -1389,7 +1389,9 @@ class TcpCoordinator {
         }
         const int boxes = emitter_->walls().box_count();
         if (shared_sums_) {
-            // Forked workers add into these (fresh zero pages for the first frame).
+            // Forked workers add into these (fresh zero pages for the first frame). A
+            // kept worker may have this frame's message already, but adds nothing
+            // before its first camera range, which io_.run() below sends.
             if (frames_ > 0) std::fill(sums_.begin(), sums_.end(), 0.0);
         } else {
             // Sums of the whole image, on 2 MB pages (thousands of 4 KB faults
