@@ -193,6 +193,9 @@ int run_render(RenderOptions o) {
     o.render.plan_everything_on = o.plan == "all";
     auto t0 = Clock::now();
     Scene scene;
+    // A single frame's worker processes, released after the frame: they exit while the
+    // image is written, and are reaped on return.
+    std::unique_ptr<distrib::TcpSession> released_workers;
     try {
         if (o.tile_worker) {
             // POVWALL_FAULT_WORKER_EXIT_AFTER=N: the worker dies after N tiles (for the
@@ -302,6 +305,10 @@ int run_render(RenderOptions o) {
                 worker_frames = session->frames_on_these_workers();
                 worker_processes = session->processes_started();
                 workers_forked = session->workers_forked();
+                if (one_frame) {
+                    one_frame->release_workers();
+                    released_workers = std::move(one_frame);
+                }
                 // The budget shapes the walls; a worker keeps the objects of all its
                 // boxes plus the process itself (binary, parser), so it can outgrow
                 // the budget: said, not hidden.

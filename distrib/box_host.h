@@ -187,9 +187,14 @@ class BoxHost {
     // Values summed per pixel: r, g, b, and transmit when the output has alpha.
     int sum_channels() const { return sum_channels_; }
     // Contributions go into `sums` (total pixels x sum_channels(), shared with other
-    // processes, added to atomically) instead of this process's own per-thread sums;
-    // for_each_pixel_sum() then visits nothing. Call before begin_run() or run().
-    void use_shared_sums(double* sums) { shared_sums_ = sums; }
+    // processes) instead of this process's own per-thread sums; for_each_pixel_sum()
+    // then visits nothing. A thread logs them per stripe of the image and adds a stripe's
+    // log under that stripe's lock in `stripe_locks` (SharedPixelSums' layout), at the
+    // latest in end_run(). Call before begin_run() or run().
+    void use_shared_sums(double* sums, uint32_t* stripe_locks) {
+        shared_sums_ = sums;
+        stripe_locks_ = stripe_locks;
+    }
     std::vector<BoxStats> box_stats() const;
     int box_count() const { return int(boxes_.size()); }
 
@@ -285,6 +290,18 @@ class BoxHost {
     };
     std::vector<PixelSums> accum_;
     double* shared_sums_ = nullptr;  // use_shared_sums()
+    uint32_t* stripe_locks_ = nullptr;
+    // Per thread and stripe (thread * kStripes + stripe): contributions not yet added to
+    // the shared sums. A full log is added when its stripe's lock is free; one that grew
+    // to kSumLogWait entries waits for the lock.
+    struct PixelAdd {
+        uint32_t pixel;
+        double value[4];
+    };
+    static constexpr size_t kSumLogAdd = 256, kSumLogWait = 8192;
+    std::vector<std::vector<PixelAdd>> sum_logs_;
+    size_t stripe_pixels_ = 1;
+    void add_sum_log(size_t log, bool wait);
 };
 
 template <class Visit>

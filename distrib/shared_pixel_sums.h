@@ -6,12 +6,19 @@
 // 2x2x2 over 8 from 1.050 to 1.000 s). Workers started any other way, or on other hosts,
 // send their sums as before.
 #include <cstddef>
+#include <cstdint>
 #include <span>
 
 namespace povwall::distrib {
 
 class SharedPixelSums {
   public:
+    // The image's pixels fall into this many stripes (equal runs of pixel indices), each
+    // with a lock word on a cache line of its own after the sums: a worker adds a batch
+    // of contributions to one stripe under its lock, as plain adds (atomic adds, one per
+    // value, waited for each cache miss in turn).
+    static constexpr size_t kStripes = 64;
+    static constexpr size_t kLockStride = 16;  // uint32_t words: 64 bytes
     SharedPixelSums() = default;
     // `count` doubles, zero (MAP_SHARED | MAP_ANONYMOUS: inherited by fork, not copied).
     // Throws std::bad_alloc when the mapping fails.
@@ -25,10 +32,14 @@ class SharedPixelSums {
     double* data() const { return data_; }
     size_t size() const { return count_; }
     std::span<double> values() const { return {data_, count_}; }
+    // kStripes lock words, kLockStride apart (0: free).
+    uint32_t* stripe_locks() const { return locks_; }
     explicit operator bool() const { return data_ != nullptr; }
 
   private:
+    size_t bytes() const;
     double* data_ = nullptr;
+    uint32_t* locks_ = nullptr;
     size_t count_ = 0;
 };
 

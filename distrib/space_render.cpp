@@ -8,6 +8,7 @@
 
 #include "core/memory.h"
 #include "distrib/box_host.h"
+#include "distrib/shared_pixel_sums.h"
 #include "trace/camera.h"
 #include "trace/shading.h"
 
@@ -312,12 +313,11 @@ void BoxHost::add_pixel(int thread, int pixel, const Rgb& c, float transmit) {
     if (shared_sums_) {
         // Other processes add to the same pixels; the sums stay in double, so the order
         // of the additions does not show in the image.
-        double* a = shared_sums_ + size_t(pixel) * size_t(sum_channels_);
-        std::atomic_ref<double>(a[0]).fetch_add(c.r, std::memory_order_relaxed);
-        std::atomic_ref<double>(a[1]).fetch_add(c.g, std::memory_order_relaxed);
-        std::atomic_ref<double>(a[2]).fetch_add(c.b, std::memory_order_relaxed);
-        if (sum_channels_ == 4)
-            std::atomic_ref<double>(a[3]).fetch_add(transmit, std::memory_order_relaxed);
+        const size_t log =
+            size_t(thread) * SharedPixelSums::kStripes + size_t(pixel) / stripe_pixels_;
+        std::vector<PixelAdd>& adds = sum_logs_[log];
+        adds.push_back({uint32_t(pixel), {c.r, c.g, c.b, transmit}});
+        if (adds.size() >= kSumLogAdd) add_sum_log(log, adds.size() >= kSumLogWait);
         return;
     }
     PixelSums& sums = accum_[size_t(thread)];
@@ -327,6 +327,34 @@ void BoxHost::add_pixel(int thread, int pixel, const Rgb& c, float transmit) {
     a[1] += c.g;
     a[2] += c.b;
     if (sum_channels_ == 4) a[3] += transmit;
+}
+
+void BoxHost::add_sum_log(size_t log, bool wait) {
+    std::vector<PixelAdd>& adds = sum_logs_[log];
+    std::atomic_ref<uint32_t> lock(
+        stripe_locks_[log % SharedPixelSums::kStripes * SharedPixelSums::kLockStride]);
+    for (uint32_t free = 0;
+         !lock.compare_exchange_strong(free, 1, std::memory_order_acquire); free = 0) {
+        if (!wait) return;          // logged on; added at a later contribution
+        std::this_thread::yield();  // the holder may be a process waiting for a core
+    }
+    const size_t channels = size_t(sum_channels_), n = adds.size();
+    // The sums miss the cache: fetched a few entries ahead, so the misses overlap.
+    constexpr size_t kAhead = 16;
+    for (size_t i = 0; i < std::min(n, kAhead); ++i)
+        __builtin_prefetch(shared_sums_ + adds[i].pixel * channels, 1);
+    for (size_t i = 0; i < n; ++i) {
+        if (i + kAhead < n)
+            __builtin_prefetch(shared_sums_ + adds[i + kAhead].pixel * channels, 1);
+        const PixelAdd& a = adds[i];
+        double* sum = shared_sums_ + a.pixel * channels;
+        sum[0] += a.value[0];
+        sum[1] += a.value[1];
+        sum[2] += a.value[2];
+        if (channels == 4) sum[3] += a.value[3];
+    }
+    lock.store(0, std::memory_order_release);
+    adds.clear();
 }
 
 void BoxHost::deliver(Box& box, const RayItem& ray, const TraceResult& result,
@@ -687,6 +715,12 @@ int BoxHost::begin_run(int threads) {
     }
     accum_.clear();
     if (!shared_sums_) accum_.resize(size_t(threads));
+    if (shared_sums_) {
+        sum_logs_.assign(size_t(threads) * SharedPixelSums::kStripes, {});
+        stripe_pixels_ =
+            std::max<size_t>(1, (size_t(total_pixels_) + SharedPixelSums::kStripes - 1) /
+                                    SharedPixelSums::kStripes);
+    }
     for (PixelSums& sums : accum_) {
         const size_t n = size_t(total_pixels_) * size_t(sum_channels_);
         sums.values.reset(
@@ -710,6 +744,9 @@ int BoxHost::begin_run(int threads) {
 }
 
 void BoxHost::end_run() {
+    for (size_t log = 0; log < sum_logs_.size(); ++log) {
+        if (!sum_logs_[log].empty()) add_sum_log(log, true);
+    }
     const double wall = std::chrono::duration<double>(Clock::now() - run_start_).count();
     for (auto& b : boxes_) {
         if (b->scene) b->stats.idle_seconds = std::max(0.0, wall - b->stats.busy_seconds);

@@ -93,6 +93,11 @@ class TcpSession {
                  const trace::RenderSettings& settings, const SpaceOptions& options,
                  SpaceStats* stats = nullptr);
 
+    // Ends the workers of the last frame (each exits when its connection closes) without
+    // waiting for them: they wind down on the other cores while this process writes the
+    // image, and the destructor only reaps them. The next render starts new workers.
+    void release_workers();
+
     // Frames the current workers have rendered, this one included.
     int frames_on_these_workers() const;
     // Worker processes this session started (--procs), over all its frames.
@@ -133,6 +138,7 @@ struct WorkerOptions {
     // matches the job's image (width x height x channels).
     double* shared_sums = nullptr;
     size_t shared_sums_count = 0;
+    uint32_t* shared_sum_locks = nullptr;  // SharedPixelSums::stripe_locks()
     // Seconds to wait for the rendezvous to answer and then for the coordinator's job;
     // past it the worker ends (exit 3) rather than wait forever under a launcher.
     double rendezvous_timeout = 120;

@@ -904,7 +904,7 @@ class Worker {
             options_.shared_sums_count == size_t(settings_.width) *
                                               size_t(settings_.height) *
                                               size_t(host_->sum_channels())) {
-            host_->use_shared_sums(options_.shared_sums);
+            host_->use_shared_sums(options_.shared_sums, options_.shared_sum_locks);
             // The pages exist (the coordinator populated them) but this process has no
             // entries for them yet: one call maps them all instead of a fault per 4 KB
             // page as the pixels come (no huge pages for shared memory here). Best
@@ -1288,6 +1288,7 @@ void fork_workers(const std::string& token, int threads, const ImageReader& imag
             w.inherited_scene = scene;
             w.shared_sums = sums.data();
             w.shared_sums_count = sums.size();
+            w.shared_sum_locks = sums.stripe_locks();
             _exit(run_worker(w));
         }
         const int fork_errno = errno;
@@ -1357,6 +1358,15 @@ class TcpCoordinator {
 
     const json& fixed() const { return fixed_; }
     bool failed() const { return failed_; }
+    // Workers between frames exit when their connection closes; the destructor reaps
+    // them.
+    void release_workers() {
+        for (auto& w : workers_) {
+            if (w.conn) w.conn->close();
+        }
+        released_ = true;
+    }
+    bool released() const { return released_; }
     int frames() const { return frames_; }
     int processes_started() const { return int(local_.size()); }
     bool forked() const { return forked_; }
@@ -1825,6 +1835,7 @@ class TcpCoordinator {
     int frames_ = 0;
     bool forked_ = false;  // the local workers were forked (else executed, or none)
     bool failed_ = false, lost_ = false;
+    bool released_ = false;  // release_workers(): no frame after it
     int lost_worker_ = -1;
     std::string error_;
 };
@@ -1856,6 +1867,10 @@ int TcpSession::processes_started() const {
            (coordinator_ ? coordinator_->processes_started() : 0);
 }
 
+void TcpSession::release_workers() {
+    if (coordinator_) coordinator_->release_workers();
+}
+
 Image TcpSession::render(const Scene& scene, const SceneSource& source,
                          const trace::RenderSettings& settings,
                          const SpaceOptions& options, SpaceStats* stats) {
@@ -1865,7 +1880,8 @@ Image TcpSession::render(const Scene& scene, const SceneSource& source,
         processes_started_before_ += coordinator_->processes_started();
         coordinator_.reset();
     };
-    if (coordinator_ && (coordinator_->failed() || coordinator_->fixed() != fixed))
+    if (coordinator_ && (coordinator_->failed() || coordinator_->released() ||
+                         coordinator_->fixed() != fixed))
         retire();
     for (;;) {
         if (!coordinator_) coordinator_ = std::make_unique<TcpCoordinator>(tcp_, fixed);

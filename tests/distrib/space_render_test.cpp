@@ -7,10 +7,18 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
 
 #include "distrib/box_host.h"
 #include "distrib/shared_pixel_sums.h"
+#include "distrib/tcp.h"
 #include "parser/parser.h"
 #include "trace/render.h"
 
@@ -143,7 +151,7 @@ TEST_F(SpaceRender, SharedSumsTakeEveryContributionFromAnyProcess) {
         BoxHost host(scene_, settings_, o);
         host.place_walls();
         host.build_boxes({0, 1, 2, 3, 4, 5, 6, 7});
-        host.use_shared_sums(sums.data());
+        host.use_shared_sums(sums.data(), sums.stripe_locks());
         host.run(2, true);
         int visited = 0;
         host.for_each_pixel_sum([&](size_t, const double*) { ++visited; });
@@ -152,6 +160,85 @@ TEST_F(SpaceRender, SharedSumsTakeEveryContributionFromAnyProcess) {
             image_from_sums(sums.values(), settings_.width, settings_.height, false);
         EXPECT_LE(rmse(image, reference_), 1e-6) << int(results);
     }
+}
+
+// A stripe whose lock another process holds keeps its contributions logged: the host
+// adds them once the lock is free, and the run ends only after that.
+TEST_F(SpaceRender, SharedSumsWaitForAStripeAnotherProcessHolds) {
+    const size_t count = size_t(settings_.width) * size_t(settings_.height) * 3;
+    SharedPixelSums sums(count);
+    uint32_t* locks = sums.stripe_locks();
+    for (size_t s = 0; s < SharedPixelSums::kStripes; ++s)
+        ASSERT_EQ(locks[s * SharedPixelSums::kLockStride], 0u);
+    // The first and the last stripe: the top rows (sky and far spheres) and the floor.
+    const size_t held[] = {0, SharedPixelSums::kStripes - 1};
+    for (size_t s : held) locks[s * SharedPixelSums::kLockStride] = 1;
+    SpaceOptions o;
+    o.boxes = {2, 2, 2};
+    BoxHost host(scene_, settings_, o);
+    host.place_walls();
+    host.build_boxes({0, 1, 2, 3, 4, 5, 6, 7});
+    host.use_shared_sums(sums.data(), locks);
+    std::atomic<bool> released{false};
+    std::thread holder([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        released = true;
+        for (size_t s : held)
+            std::atomic_ref<uint32_t>(locks[s * SharedPixelSums::kLockStride])
+                .store(0, std::memory_order_release);
+    });
+    host.run(2, true);
+    EXPECT_TRUE(released.load());
+    holder.join();
+    for (size_t s = 0; s < SharedPixelSums::kStripes; ++s)
+        EXPECT_EQ(locks[s * SharedPixelSums::kLockStride], 0u) << s;
+    const Image image =
+        image_from_sums(sums.values(), settings_.width, settings_.height, false);
+    EXPECT_LE(rmse(image, reference_), 1e-6);
+}
+
+// Worker processes of this process that have not exited (zombies count as gone).
+int live_children() {
+    int live = 0;
+    for (const auto& e : std::filesystem::directory_iterator("/proc")) {
+        const std::string name = e.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        std::ifstream in(e.path() / "stat");
+        std::string text((std::istreambuf_iterator<char>(in)), {});
+        const size_t close = text.rfind(')');
+        if (close == std::string::npos) continue;
+        char state = 0;
+        int ppid = 0;
+        if (std::sscanf(text.c_str() + close + 1, " %c %d", &state, &ppid) != 2) continue;
+        if (ppid == getpid() && state != 'Z') ++live;
+    }
+    return live;
+}
+
+// After the last frame a session lets its workers go without waiting for them (the
+// image is written meanwhile): they exit on their own, and a later frame starts new
+// ones and gives the same image.
+TEST_F(SpaceRender, ReleasedWorkersExitAndTheNextFrameStartsNewOnes) {
+    SceneSource source;
+    source.text = kScene;
+    source.display_name = "space.pov";
+    TcpOptions tcp;
+    tcp.procs = 2;
+    tcp.fork_workers = true;
+    SpaceOptions o;
+    o.boxes = {2, 1, 1};
+    TcpSession session(tcp);
+    const Image first = session.render(scene_, source, settings_, o);
+    EXPECT_EQ(session.processes_started(), 2);
+    EXPECT_EQ(live_children(), 2);
+    session.release_workers();
+    for (int i = 0; i < 500 && live_children() > 0; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    EXPECT_EQ(live_children(), 0);
+    const Image second = session.render(scene_, source, settings_, o);
+    EXPECT_EQ(session.processes_started(), 4);
+    EXPECT_EQ(rmse(first, second), 0.0);
+    EXPECT_LE(rmse(first, reference_), 1e-6);
 }
 
 TEST_F(SpaceRender, StatsShowLocalScenesAndTraffic) {
