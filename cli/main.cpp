@@ -148,6 +148,12 @@ int render_main(const std::vector<std::string>& args) {
                    "scene) or exec (each parses it)")
         ->check(CLI::IsMember({"fork", "exec"}))
         ->capture_default_str();
+    app.add_option("--worker-cores", o.worker_cores,
+                   "--procs workers that outnumber the cores: keep each on one core with "
+                   "those it trades most rays with (auto) or let the system place them "
+                   "(off)")
+        ->check(CLI::IsMember({"auto", "off"}))
+        ->capture_default_str();
     std::string rendezvous;
     double rendezvous_timeout = 120;
     app.add_option("--rendezvous", rendezvous,

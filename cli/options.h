@@ -90,6 +90,9 @@ struct RenderOptions {
     // How --procs starts its black-box workers: fork (after the parse, inheriting the
     // scene) or exec (a fresh `povwall worker`, which parses the scene itself).
     std::string worker_start = "fork";
+    // --procs workers that outnumber the cores: each kept on one core with the workers
+    // it trades most rays with (auto), or placed by the system (off).
+    std::string worker_cores = "auto";
     // A lost worker process (--procs) or tile worker: its work goes to the others (true)
     // or the render stops with it named (false, --no-recover).
     bool recover = true;

@@ -218,6 +218,7 @@ int run_render(RenderOptions o) {
     request.boxes = o.boxes;
     request.threads = o.render.threads;
     request.procs = o.procs;
+    request.keep_on_cores = o.worker_cores == "auto";
     request.workers = int(o.workers.size());
     request.pixels = size_t(o.render.width) * size_t(o.render.height);
     request.width = o.render.width;

@@ -1,5 +1,6 @@
 #include "distrib/child_process.h"
 
+#include <sched.h>
 #include <sys/wait.h>
 
 #include <atomic>
@@ -27,6 +28,19 @@ int wait_child(pid_t pid, double seconds) {
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
     return status;
+}
+
+bool keep_on_core(pid_t pid, int group) {
+    cpu_set_t allowed;
+    if (group < 0 || sched_getaffinity(0, sizeof allowed, &allowed) != 0) return false;
+    for (int cpu = 0, seen = 0; cpu < CPU_SETSIZE; ++cpu) {
+        if (!CPU_ISSET(cpu, &allowed) || seen++ != group) continue;
+        cpu_set_t one;
+        CPU_ZERO(&one);
+        CPU_SET(cpu, &one);
+        return sched_setaffinity(pid, sizeof one, &one) == 0;
+    }
+    return false;
 }
 
 void maybe_inject_worker_fault(const std::vector<pid_t>& pids) {

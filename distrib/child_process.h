@@ -14,6 +14,10 @@ namespace povwall::distrib {
 // status.
 int wait_child(pid_t pid, double seconds);
 
+// Keeps process `pid` (0: this one) on one core: the `group`-th of those this process
+// may run on (SpaceOptions::process_cores). False when it cannot.
+bool keep_on_core(pid_t pid, int group);
+
 // "exit code 3", "killed by signal 9".
 std::string describe_exit_status(int status);
 

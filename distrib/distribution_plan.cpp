@@ -1,5 +1,6 @@
 #include "distrib/distribution_plan.h"
 
+#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -264,10 +265,8 @@ std::optional<Pilot> traffic_pilot(const Scene& scene,
 // BoxHost's in-process hand-over is cheap, so without workers the walls stay as they
 // are). Sets `space` and returns the words for --explain; leaves `space` for scenes too
 // big to trace a pilot through here, or an image size not given.
-std::string walls_by_traffic(const Scene& scene, const std::vector<Bounds3>& bounds,
-                             const DistributionRequest& request, int workers,
-                             SpaceOptions& space) {
-    const std::optional<Pilot> pilot = traffic_pilot(scene, request);
+std::string walls_by_traffic(const Pilot* pilot, const std::vector<Bounds3>& bounds,
+                             int workers, SpaceOptions& space) {
     if (!pilot) return "";
     const std::vector<PilotSegment>& segments = pilot->segments;
     const std::vector<ObjectExtent>& extents = pilot->extents;
@@ -299,17 +298,14 @@ std::string walls_by_traffic(const Scene& scene, const std::vector<Bounds3>& bou
 // the demo scene, in 2x2x2 blocks 1.10 s). Sets space.process_grid and returns the words
 // for --explain; leaves it with a single candidate or where walls_by_traffic would not
 // run the pilot.
-std::string owners_by_traffic(const Scene& scene, const VirtualWalls& walls,
-                              const DistributionRequest& request, int workers,
+std::string owners_by_traffic(const Pilot* pilot, const VirtualWalls& walls, int workers,
                               SpaceOptions& space) {
     const std::array<int, 3> slabs = walls.slabs();
     std::vector<std::array<int, 3>> grids;
     for (const std::array<int, 3>& g : box_grids(workers)) {
         if (g[0] <= slabs[0] && g[1] <= slabs[1] && g[2] <= slabs[2]) grids.push_back(g);
     }
-    if (grids.size() < 2) return "";
-    const std::optional<Pilot> pilot = traffic_pilot(scene, request);
-    if (!pilot) return "";
+    if (grids.size() < 2 || !pilot) return "";
     const std::vector<PilotSegment>& segments = pilot->segments;
     const std::vector<ObjectExtent>& extents = pilot->extents;
     // A process's block is boxes [ceil(i S / g), ceil((i + 1) S / g)) on an axis of S
@@ -339,6 +335,42 @@ std::string owners_by_traffic(const Scene& scene, const VirtualWalls& walls,
            " processes), cut across the least ray traffic: " + std::to_string(best) +
            " crossings between processes for " + std::to_string(segments.size()) +
            " pilot ray segments";
+}
+
+// Local processes that outnumber the cores: the core each is kept on (process_cores),
+// by the pilot's work and traffic under the boxes' owners. Returns the words for
+// --explain.
+std::string cores_by_traffic(const Pilot* pilot, const VirtualWalls& walls,
+                             const Vector3& view, int workers, int cores,
+                             SpaceOptions& space) {
+    if (!pilot) return "";
+    const std::vector<int> owner =
+        box_owners(walls.slabs(), workers, view, space.process_grid);
+    const ProcessTraffic traffic =
+        process_traffic(pilot->segments, walls, pilot->extents, owner, workers);
+    space.process_cores = core_groups(traffic, cores);
+    if (space.process_cores.empty()) return "";
+    std::vector<uint64_t> work(size_t(cores), 0);
+    uint64_t between = 0;
+    for (int p = 0; p < workers; ++p) {
+        work[size_t(space.process_cores[size_t(p)])] += traffic.visits[size_t(p)];
+        for (int q = 0; q < workers; ++q) {
+            if (space.process_cores[size_t(p)] != space.process_cores[size_t(q)])
+                between += traffic.crossings[size_t(p)][size_t(q)];
+        }
+    }
+    std::string shares;
+    for (uint64_t w : work) shares += (shares.empty() ? "" : ", ") + std::to_string(w);
+    return "; each process kept on one of the " + std::to_string(cores) +
+           " cores, with those it trades most rays with: pilot box visits per core " +
+           shares + ", " + std::to_string(between) + " crossings between cores";
+}
+
+// The cores this process may run on.
+int available_cores() {
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
+    return int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 }  // namespace
@@ -446,19 +478,26 @@ DistributionPlan plan_distribution(const Scene& scene,
     if (!request.boxes.empty()) {
         plan.space = parse_boxes(request.boxes);
         std::string traffic;
-        if (request.boxes == "auto" && given > 1)
-            traffic = walls_by_traffic(scene, sizes.bounds, request, given, plan.space);
-        const VirtualWalls walls = walls_for(sizes.bounds, plan.space);
         // Only local processes that outnumber the cores: they take turns on them, so
         // what they do in all counts, not how it is shared out. Where each has a core
         // (or a host) of its own, the cuts across the view share the picture out
         // evenly; the least crossed cut may not (2x2x2 over 2 processes on 2 cores:
         // 0.77 s cut across the view, 0.89 s cut along it, the least crossed).
-        const int cores = request.cores > 0
-                              ? request.cores
-                              : int(std::max(1u, std::thread::hardware_concurrency()));
-        if (request.boxes != "auto" && request.workers == 0 && given > cores)
-            traffic = owners_by_traffic(scene, walls, request, given, plan.space);
+        const int cores = request.cores > 0 ? request.cores : available_cores();
+        const bool crowded = request.workers == 0 && given > cores;
+        // Traced once, for whichever choice needs it.
+        std::optional<Pilot> pilot;
+        if ((request.boxes == "auto" && given > 1) || crowded)
+            pilot = traffic_pilot(scene, request);
+        const Pilot* p = pilot ? &*pilot : nullptr;
+        if (request.boxes == "auto" && given > 1)
+            traffic = walls_by_traffic(p, sizes.bounds, given, plan.space);
+        const VirtualWalls walls = walls_for(sizes.bounds, plan.space);
+        if (request.boxes != "auto" && crowded)
+            traffic = owners_by_traffic(p, walls, given, plan.space);
+        if (crowded && request.keep_on_cores)
+            traffic += cores_by_traffic(p, walls, scene.camera.direction, given, cores,
+                                        plan.space);
         Overlaps ov = overlaps_of(sizes, walls, scene.camera.direction);
         ov.grid = plan.space.process_grid;
         plan.largest_box_bytes = largest_box(sizes, ov);

@@ -27,12 +27,14 @@ enum class RenderMode { Auto, Single, Screen, Space };
 
 struct DistributionRequest {
     RenderMode mode = RenderMode::Auto;
-    std::string boxes;          // --boxes as given (empty: not given)
-    size_t worker_memory = 0;   // bytes; 0: half of this machine's memory
-    int threads = 0;            // 0: all cores
-    int procs = 0;              // worker processes, screen or space (0: not asked for)
-    int workers = 0;            // running workers given (--workers): their count
-    int cores = 0;              // this machine's cores (0: as the system says)
+    std::string boxes;         // --boxes as given (empty: not given)
+    size_t worker_memory = 0;  // bytes; 0: half of this machine's memory
+    int threads = 0;           // 0: all cores
+    int procs = 0;             // worker processes, screen or space (0: not asked for)
+    int workers = 0;           // running workers given (--workers): their count
+    int cores = 0;             // this machine's cores (0: those this process may use)
+    // Local processes that outnumber the cores: each kept on one core (process_cores).
+    bool keep_on_cores = true;
     size_t pixels = 0;          // image width x height (worker accumulators)
     int width = 0, height = 0;  // the image (the pilot of --boxes auto over workers)
 };

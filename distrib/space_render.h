@@ -46,6 +46,9 @@ struct SpaceOptions {
     // chosen for the least ray traffic between processes (plan_distribution); zeros:
     // box_owners' own cuts.
     std::array<int, 3> process_grid{0, 0, 0};
+    // Local worker processes that outnumber the cores: the core group (0 .. cores - 1)
+    // each one is kept on (core_groups); empty: the system places them.
+    std::vector<int> process_cores;
 };
 
 struct BoxStats {

@@ -1177,7 +1177,8 @@ void read_worker_addresses(const std::vector<int>& reads,
 // glibc's huge-page heap in their environment (see the cli's worker start), so they do
 // not have to execute themselves again to get it.
 void spawn_workers(const std::string& binary, const std::string& token, int threads,
-                   int count, std::vector<LocalWorker>& started) {
+                   int count, const std::vector<int>& cores,
+                   std::vector<LocalWorker>& started) {
     std::vector<std::string> env_text;
     for (char** e = environ; *e; ++e) {
         if (std::strncmp(*e, "GLIBC_TUNABLES=", 15) != 0) env_text.push_back(*e);
@@ -1217,6 +1218,7 @@ void spawn_workers(const std::string& binary, const std::string& token, int thre
             // posix_spawn's attributes take no SCHED_BATCH.
             const sched_param batch{};
             sched_setscheduler(pid, SCHED_BATCH, &batch);
+            if (cores.size() == size_t(count)) keep_on_core(pid, cores[size_t(i)]);
         }
         close(fds[1]);
         if (rc != 0) {
@@ -1251,7 +1253,7 @@ bool single_threaded() {
 // and flushes none of its buffers. The caller has checked that no other thread runs.
 void fork_workers(const std::string& token, int threads, const ImageReader& image_reader,
                   Scene* scene, const SharedPixelSums& sums, int count,
-                  std::vector<LocalWorker>& started) {
+                  const std::vector<int>& cores, std::vector<LocalWorker>& started) {
     std::vector<int> reads;
     std::fflush(nullptr);  // nothing buffered is written twice
     for (int i = 0; i < count; ++i) {
@@ -1272,6 +1274,7 @@ void fork_workers(const std::string& token, int threads, const ImageReader& imag
             // its queue (8 workers on 2 cores: involuntary switches 2,855 -> 511).
             const sched_param batch{};
             sched_setscheduler(0, SCHED_BATCH, &batch);
+            if (cores.size() == size_t(count)) keep_on_core(0, cores[size_t(i)]);
             // One render thread: the preparing thread allocates from the main arena
             // too, not from a fresh one whose first touch faults in whole huge pages.
             if (threads == 1) mallopt(M_ARENA_MAX, 1);
@@ -1522,9 +1525,10 @@ class TcpCoordinator {
                 // The child's copy of the scene is its own to take objects from.
                 fork_workers(token, threads, tcp_.image_reader,
                              const_cast<Scene*>(scene_), shared_sums_, tcp_.procs,
-                             local_);
+                             options_->process_cores, local_);
             } else {
-                spawn_workers(tcp_.worker_binary, token, threads, tcp_.procs, local_);
+                spawn_workers(tcp_.worker_binary, token, threads, tcp_.procs,
+                              options_->process_cores, local_);
             }
             for (size_t i = before; i < local_.size(); ++i)
                 addresses.push_back(local_[i].address);

@@ -3,9 +3,14 @@
 // the worker (POVWALL_FAULT_KILL_WORKER, distrib/child_process.h), so the test does not
 // depend on finding worker processes from outside.
 #include <gtest/gtest.h>
+#include <sched.h>
 
 #include <chrono>
 #include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "tests/cli/run_povwall.h"
 
@@ -201,6 +206,51 @@ TEST(Procs, LocalWorkersRunAsBatchTasks) {
             "; /bin/kill -s INT -- -$(cat " + p + "); wait'";
         ASSERT_EQ(std::system(cmd.c_str()), 0) << start_mode;
         EXPECT_EQ(slurp(policies), "3\n3\n") << start_mode;
+    }
+}
+
+// Local workers that outnumber the cores are each kept on one core, both cores in use;
+// with --worker-cores off, or a core each, the system places them.
+TEST(Procs, CrowdedLocalWorkersAreKeptOnCores) {
+    cpu_set_t allowed;
+    ASSERT_EQ(sched_getaffinity(0, sizeof allowed, &allowed), 0);
+    const int cores = CPU_COUNT(&allowed);
+    const std::string scene = std::string(POVWALL_SOURCE_DIR) + "/scenes/demo/walls.pov";
+    for (const std::string extra : {"", " --worker-start exec", " --worker-cores off"}) {
+        const fs::path pid = scratch() / "cores.pid", lists = scratch() / "cores.txt";
+        fs::remove(pid);
+        fs::remove(lists);
+        const std::string start = "setsid " + std::string(POVWALL_BINARY) + " render " +
+                                  scene +
+                                  " +KFF100 -W 320 -H 240 -q --boxes 2x2x1 --procs 4" +
+                                  extra + " -o " + (scratch() / "cores.png").string() +
+                                  " 2>/dev/null & echo $! >" + pid.string() + "; wait";
+        const std::string p = pid.string();
+        const std::string cmd =
+            "sh -c '(" + start + ") & i=0; until [ -s " + p +
+            " ] && [ $(pgrep -P $(cat " + p +
+            ") | wc -l) -ge 4 ] || [ $i -ge 600 ]; do sleep 0.05; i=$((i+1)); done; " +
+            "sleep 0.3; for c in $(pgrep -P $(cat " + p +
+            ")); do grep Cpus_allowed_list /proc/$c/status | cut -f2; done >" +
+            lists.string() + "; /bin/kill -s INT -- -$(cat " + p + "); wait'";
+        ASSERT_EQ(std::system(cmd.c_str()), 0) << extra;
+        std::istringstream in(slurp(lists));
+        std::vector<std::string> each;
+        for (std::string line; std::getline(in, line);) each.push_back(line);
+        ASSERT_EQ(each.size(), 4u) << extra;
+        std::set<std::string> used(each.begin(), each.end());
+        if (cores >= 2 && cores < 4 && extra.find("off") == std::string::npos) {
+            for (const std::string& l : each) {
+                EXPECT_EQ(l.find_first_not_of("0123456789"), std::string::npos)
+                    << extra << ": " << l;  // one CPU
+            }
+            EXPECT_EQ(int(used.size()), cores) << extra;
+        } else {
+            EXPECT_EQ(used.size(), 1u) << extra;  // all alike: the render's own set
+            EXPECT_EQ(int(used.size()) == 1 && cores > 1,
+                      each[0].find_first_not_of("0123456789") != std::string::npos)
+                << extra << ": " << each[0];
+        }
     }
 }
 

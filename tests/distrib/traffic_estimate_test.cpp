@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "distrib/distribution_plan.h"
 #include "parser/parser.h"
@@ -192,6 +194,155 @@ TEST(TrafficEstimate, GivenBoxesGoToProcessesInBlocksCrossedLeast) {
     r.workers = 8;
     EXPECT_EQ(plan_distribution(scene, r).space.process_grid,
               (std::array<int, 3>{0, 0, 0}));
+}
+
+// Per process, the visits are the boxes each segment traces in, and the crossings go
+// from one process's box to the next one's: summed over processes they are the
+// crossings estimated_crossings counts when every box is a process.
+TEST(TrafficEstimate, ProcessTrafficCountsVisitsAndCrossingsBetweenOwners) {
+    const Scene scene =
+        parser::parse_scene_file(POVWALL_DEMO_SCENE, parser::ParseOptions{});
+    const std::vector<PilotSegment> segments =
+        pilot_segments(scene, 120, 120, kTrafficPilotRays);
+    const std::vector<ObjectExtent> extents = object_extents(scene);
+    Bounds3 world;
+    for (const Object& o : scene.objects) {
+        const Bounds3 b = trace::object_world_bounds(o);
+        if (!b.infinite()) world.extend(b);
+    }
+    const VirtualWalls walls = VirtualWalls::uniform(world, 2, 2, 2);
+    std::vector<int> own(8);
+    for (int b = 0; b < 8; ++b) own[size_t(b)] = b;
+    const ProcessTraffic each = process_traffic(segments, walls, extents, own, 8);
+    uint64_t crossings = 0, visits = 0;
+    for (int p = 0; p < 8; ++p) {
+        visits += each.visits[size_t(p)];
+        EXPECT_EQ(each.crossings[size_t(p)][size_t(p)], 0u);  // no box follows itself
+        for (int q = 0; q < 8; ++q) crossings += each.crossings[size_t(p)][size_t(q)];
+    }
+    EXPECT_EQ(crossings, estimated_crossings(segments, walls, extents));
+    // All boxes in one process: the same visits, every crossing inside it.
+    const ProcessTraffic one =
+        process_traffic(segments, walls, extents, std::vector<int>(8, 0), 1);
+    EXPECT_EQ(one.visits[0], visits);
+    EXPECT_EQ(one.crossings[0][0], crossings);
+    EXPECT_GT(visits, crossings);  // each segment's first box is no crossing
+    // Two processes holding the x halves: the crossings between them are those over
+    // the middle x wall, the rest stay inside.
+    std::vector<int> halves(8);
+    for (int b = 0; b < 8; ++b) halves[size_t(b)] = b % 2;
+    const ProcessTraffic two = process_traffic(segments, walls, extents, halves, 2);
+    EXPECT_EQ(two.visits[0] + two.visits[1], visits);
+    uint64_t over_x = 0;
+    for (int p = 0; p < 8; ++p) {
+        for (int q = 0; q < 8; ++q) {
+            if (p % 2 != q % 2) over_x += each.crossings[size_t(p)][size_t(q)];
+        }
+    }
+    EXPECT_EQ(two.crossings[0][1] + two.crossings[1][0], over_x);
+}
+
+// Processes on cores: the loads balanced first, then the fewest crossings between the
+// cores; none where the processes do not outnumber the cores.
+TEST(TrafficEstimate, CoreGroupsBalanceTheWorkThenCutTheLeastTraffic) {
+    ProcessTraffic t;
+    // Two heavy processes (0, 1) and two light ones; 0 trades with 2, 1 with 3.
+    t.visits = {100, 100, 10, 10};
+    t.crossings = {{0, 1, 50, 0}, {1, 0, 0, 50}, {50, 0, 0, 1}, {0, 50, 1, 0}};
+    std::vector<int> g = core_groups(t, 2);
+    ASSERT_EQ(g.size(), 4u);
+    EXPECT_NE(g[0], g[1]);  // the heavy ones apart
+    EXPECT_EQ(g[0], g[2]);  // each with its partner
+    EXPECT_EQ(g[1], g[3]);
+    // The partners heavy together would leave one core idle: balance comes first.
+    t.crossings = {{0, 50, 1, 1}, {50, 0, 1, 1}, {1, 1, 0, 50}, {1, 1, 50, 0}};
+    g = core_groups(t, 2);
+    EXPECT_NE(g[0], g[1]);
+    // Four cores and eight processes: two per core, partners together.
+    ProcessTraffic e;
+    e.visits.assign(8, 10);
+    e.crossings.assign(8, std::vector<uint64_t>(8, 1));
+    for (int p = 0; p < 8; p += 2) e.crossings[size_t(p)][size_t(p + 1)] = 40;
+    g = core_groups(e, 4);
+    ASSERT_EQ(g.size(), 8u);
+    std::vector<int> per_core(4, 0);
+    for (int p = 0; p < 8; ++p) {
+        ASSERT_GE(g[size_t(p)], 0);
+        ASSERT_LT(g[size_t(p)], 4);
+        ++per_core[size_t(g[size_t(p)])];
+    }
+    EXPECT_EQ(per_core, (std::vector<int>{2, 2, 2, 2}));
+    for (int p = 0; p < 8; p += 2) EXPECT_EQ(g[size_t(p)], g[size_t(p + 1)]) << p;
+    // No more processes than cores, one core, or too many processes to search: none.
+    EXPECT_TRUE(core_groups(t, 4).empty());
+    EXPECT_TRUE(core_groups(t, 1).empty());
+    ProcessTraffic many;
+    many.visits.assign(size_t(kMaxProcessesOnCores + 1), 1);
+    many.crossings.assign(many.visits.size(),
+                          std::vector<uint64_t>(many.visits.size(), 0));
+    EXPECT_TRUE(core_groups(many, 2).empty());
+}
+
+// The plan keeps 8 local processes on 2 cores in two groups of even work, with the fewest
+// crossings between the cores of all even splits, and says so; not with running
+// workers, with a core per process, or when asked not to.
+TEST(TrafficEstimate, CrowdedLocalProcessesAreKeptOnCoresByTraffic) {
+    const Scene scene =
+        parser::parse_scene_file(POVWALL_DEMO_SCENE, parser::ParseOptions{});
+    DistributionRequest r = demo_request("2x2x2");
+    r.cores = 2;
+    const DistributionPlan plan = plan_distribution(scene, r);
+    const std::vector<int>& cores = plan.space.process_cores;
+    ASSERT_EQ(cores.size(), 8u) << plan.reasons.back();
+    EXPECT_NE(plan.reasons.back().find("each process kept on one of the 2 cores"),
+              std::string::npos)
+        << plan.reasons.back();
+    const std::vector<PilotSegment> segments =
+        pilot_segments(scene, 120, 120, kTrafficPilotRays);
+    const std::vector<ObjectExtent> extents = object_extents(scene);
+    Bounds3 world;
+    for (const Object& o : scene.objects) {
+        const Bounds3 b = trace::object_world_bounds(o);
+        if (!b.infinite()) world.extend(b);
+    }
+    const VirtualWalls walls = VirtualWalls::uniform(world, 2, 2, 2);
+    const std::vector<int> owner = box_owners({2, 2, 2}, 8, scene.camera.direction);
+    const ProcessTraffic t = process_traffic(segments, walls, extents, owner, 8);
+    auto score = [&](const std::vector<int>& g) {
+        double load[2] = {0, 0};
+        uint64_t cut = 0;
+        for (int p = 0; p < 8; ++p) {
+            load[g[size_t(p)]] += double(t.visits[size_t(p)]);
+            for (int q = 0; q < 8; ++q)
+                if (g[size_t(p)] != g[size_t(q)])
+                    cut += t.crossings[size_t(p)][size_t(q)];
+        }
+        return std::make_pair(std::max(load[0], load[1]), cut);
+    };
+    const auto [chosen_load, chosen_cut] = score(cores);
+    double best_load = 1e300;
+    for (uint32_t m = 1; m < 255; ++m) {
+        std::vector<int> g(8);
+        for (int p = 0; p < 8; ++p) g[size_t(p)] = int(m >> p & 1);
+        best_load = std::min(best_load, score(g).first);
+    }
+    EXPECT_LE(chosen_load, best_load * 1.05);
+    for (uint32_t m = 1; m < 255; ++m) {
+        std::vector<int> g(8);
+        for (int p = 0; p < 8; ++p) g[size_t(p)] = int(m >> p & 1);
+        if (score(g).first <= best_load * 1.05) {
+            EXPECT_LE(chosen_cut, score(g).second);
+        }
+    }
+    r.keep_on_cores = false;
+    EXPECT_TRUE(plan_distribution(scene, r).space.process_cores.empty());
+    r.keep_on_cores = true;
+    r.cores = 8;
+    EXPECT_TRUE(plan_distribution(scene, r).space.process_cores.empty());
+    r.cores = 2;
+    r.procs = 0;
+    r.workers = 8;
+    EXPECT_TRUE(plan_distribution(scene, r).space.process_cores.empty());
 }
 
 }  // namespace
