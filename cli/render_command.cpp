@@ -465,6 +465,8 @@ int run_render(RenderOptions o) {
                     {"peak_resident_bytes", space_stats.worker_peak_resident},
                     {"objects_kept", space_stats.worker_objects_kept},
                     {"objects_left_out", space_stats.worker_objects_left_out}};
+                if (!space_stats.worker_cores.empty())
+                    j["workers"]["cores"] = space_stats.worker_cores;
             }
         } else {
             j["boxes"] = 1;

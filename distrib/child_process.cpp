@@ -9,6 +9,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <thread>
 
 namespace povwall::distrib {
@@ -41,6 +42,16 @@ bool keep_on_core(pid_t pid, int group) {
         return sched_setaffinity(pid, sizeof one, &one) == 0;
     }
     return false;
+}
+
+uint64_t cpu_nanoseconds(pid_t pid) {
+    const std::string path = "/proc/" + std::to_string(pid) + "/schedstat";
+    std::FILE* f = std::fopen(path.c_str(), "r");
+    if (!f) return 0;
+    unsigned long long ns = 0;
+    if (std::fscanf(f, "%llu", &ns) != 1) ns = 0;
+    std::fclose(f);
+    return ns;
 }
 
 void maybe_inject_worker_fault(const std::vector<pid_t>& pids) {

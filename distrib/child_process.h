@@ -5,6 +5,7 @@
 // then kill.
 #include <sys/types.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,10 @@ int wait_child(pid_t pid, double seconds);
 // Keeps process `pid` (0: this one) on one core: the `group`-th of those this process
 // may run on (SpaceOptions::process_cores). False when it cannot.
 bool keep_on_core(pid_t pid, int group);
+
+// The time process `pid` has run on a CPU so far, in nanoseconds (/proc/PID/schedstat);
+// 0 when unknown.
+uint64_t cpu_nanoseconds(pid_t pid);
 
 // "exit code 3", "killed by signal 9".
 std::string describe_exit_status(int status);

@@ -337,33 +337,21 @@ std::string owners_by_traffic(const Pilot* pilot, const VirtualWalls& walls, int
            " pilot ray segments";
 }
 
-// Local processes that outnumber the cores: the core each is kept on (process_cores),
-// by the pilot's work and traffic under the boxes' owners. Returns the words for
-// --explain.
+// Local processes that outnumber the cores: the pilot's crossings between them, for
+// the coordinator to keep each on a core once it has measured their work. Returns the
+// words for --explain.
 std::string cores_by_traffic(const Pilot* pilot, const VirtualWalls& walls,
                              const Vector3& view, int workers, int cores,
                              SpaceOptions& space) {
-    if (!pilot) return "";
+    if (!pilot || workers > kMaxProcessesOnCores) return "";
     const std::vector<int> owner =
         box_owners(walls.slabs(), workers, view, space.process_grid);
-    const ProcessTraffic traffic =
-        process_traffic(pilot->segments, walls, pilot->extents, owner, workers);
-    space.process_cores = core_groups(traffic, cores);
-    if (space.process_cores.empty()) return "";
-    std::vector<uint64_t> work(size_t(cores), 0);
-    uint64_t between = 0;
-    for (int p = 0; p < workers; ++p) {
-        work[size_t(space.process_cores[size_t(p)])] += traffic.visits[size_t(p)];
-        for (int q = 0; q < workers; ++q) {
-            if (space.process_cores[size_t(p)] != space.process_cores[size_t(q)])
-                between += traffic.crossings[size_t(p)][size_t(q)];
-        }
-    }
-    std::string shares;
-    for (uint64_t w : work) shares += (shares.empty() ? "" : ", ") + std::to_string(w);
-    return "; each process kept on one of the " + std::to_string(cores) +
-           " cores, with those it trades most rays with: pilot box visits per core " +
-           shares + ", " + std::to_string(between) + " crossings between cores";
+    space.process_crossings =
+        process_traffic(pilot->segments, walls, pilot->extents, owner, workers).crossings;
+    space.cores = cores;
+    return "; once a quarter of the image is out, each process is kept on one of the " +
+           std::to_string(cores) +
+           " cores, the work measured and split across the fewest pilot crossings";
 }
 
 // The cores this process may run on.

@@ -46,9 +46,12 @@ struct SpaceOptions {
     // chosen for the least ray traffic between processes (plan_distribution); zeros:
     // box_owners' own cuts.
     std::array<int, 3> process_grid{0, 0, 0};
-    // Local worker processes that outnumber the cores: the core group (0 .. cores - 1)
-    // each one is kept on (core_groups); empty: the system places them.
-    std::vector<int> process_cores;
+    // Local worker processes that outnumber `cores`: the pilot's crossings between
+    // them ([from][to]); once a quarter of the image is out, the coordinator keeps each
+    // on one core by their measured work and these (core_groups). Empty: the system
+    // places them.
+    std::vector<std::vector<uint64_t>> process_crossings;
+    int cores = 0;
 };
 
 struct BoxStats {
@@ -75,6 +78,9 @@ struct SpaceStats {
     // boxes) and left out while parsing.
     std::vector<uint64_t> worker_peak_resident;
     std::vector<size_t> worker_objects_kept, worker_objects_left_out;
+    // Local workers kept on cores (SpaceOptions::process_crossings): each one's core
+    // group; empty when the system placed them.
+    std::vector<int> worker_cores;
 };
 
 using trace::shading_is_linear;  // trace/render_plan.h

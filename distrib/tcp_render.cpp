@@ -57,6 +57,7 @@ extern char** environ;
 #include "distrib/message.h"
 #include "distrib/shared_pixel_sums.h"
 #include "distrib/tcp.h"
+#include "distrib/traffic_estimate.h"
 #include "parser/parser.h"
 #include "trace/pattern.h"
 
@@ -1177,8 +1178,7 @@ void read_worker_addresses(const std::vector<int>& reads,
 // glibc's huge-page heap in their environment (see the cli's worker start), so they do
 // not have to execute themselves again to get it.
 void spawn_workers(const std::string& binary, const std::string& token, int threads,
-                   int count, const std::vector<int>& cores,
-                   std::vector<LocalWorker>& started) {
+                   int count, std::vector<LocalWorker>& started) {
     std::vector<std::string> env_text;
     for (char** e = environ; *e; ++e) {
         if (std::strncmp(*e, "GLIBC_TUNABLES=", 15) != 0) env_text.push_back(*e);
@@ -1218,7 +1218,6 @@ void spawn_workers(const std::string& binary, const std::string& token, int thre
             // posix_spawn's attributes take no SCHED_BATCH.
             const sched_param batch{};
             sched_setscheduler(pid, SCHED_BATCH, &batch);
-            if (cores.size() == size_t(count)) keep_on_core(pid, cores[size_t(i)]);
         }
         close(fds[1]);
         if (rc != 0) {
@@ -1253,7 +1252,7 @@ bool single_threaded() {
 // and flushes none of its buffers. The caller has checked that no other thread runs.
 void fork_workers(const std::string& token, int threads, const ImageReader& image_reader,
                   Scene* scene, const SharedPixelSums& sums, int count,
-                  const std::vector<int>& cores, std::vector<LocalWorker>& started) {
+                  std::vector<LocalWorker>& started) {
     std::vector<int> reads;
     std::fflush(nullptr);  // nothing buffered is written twice
     for (int i = 0; i < count; ++i) {
@@ -1274,7 +1273,6 @@ void fork_workers(const std::string& token, int threads, const ImageReader& imag
             // its queue (8 workers on 2 cores: involuntary switches 2,855 -> 511).
             const sched_param batch{};
             sched_setscheduler(0, SCHED_BATCH, &batch);
-            if (cores.size() == size_t(count)) keep_on_core(0, cores[size_t(i)]);
             // One render thread: the preparing thread allocates from the main arena
             // too, not from a fresh one whose first touch faults in whole huge pages.
             if (threads == 1) mallopt(M_ARENA_MAX, 1);
@@ -1459,6 +1457,7 @@ class TcpCoordinator {
                 stats->worker_objects_kept.push_back(w.objects_kept);
                 stats->worker_objects_left_out.push_back(w.objects_left_out);
             }
+            stats->worker_cores = worker_cores_;
             stats->seconds = std::chrono::duration<double>(Clock::now() - t0).count();
         }
         return image;
@@ -1525,10 +1524,9 @@ class TcpCoordinator {
                 // The child's copy of the scene is its own to take objects from.
                 fork_workers(token, threads, tcp_.image_reader,
                              const_cast<Scene*>(scene_), shared_sums_, tcp_.procs,
-                             options_->process_cores, local_);
+                             local_);
             } else {
-                spawn_workers(tcp_.worker_binary, token, threads, tcp_.procs,
-                              options_->process_cores, local_);
+                spawn_workers(tcp_.worker_binary, token, threads, tcp_.procs, local_);
             }
             for (size_t i = before; i < local_.size(); ++i)
                 addresses.push_back(local_[i].address);
@@ -1676,6 +1674,7 @@ class TcpCoordinator {
             }
             emitter_->set_box_reach(reach);
             started_ = true;
+            measure_for_cores();
             const json start = {{"type", "start"}, {"reach", reach_to_json(reach)}};
             for (WorkerState& o : workers_) o.conn->send(control_frame(start));
             emit();
@@ -1775,7 +1774,37 @@ class TcpCoordinator {
             live += 1 + (end - begin);
             pixels_emitted_ += end - begin;
         }
+        if (!cpu_at_start_.empty() && pixels_emitted_ * 4 >= total) keep_on_cores();
         if (next_range_ >= ranges && live == 0 && wave_pending_ < 0) probe();
+    }
+
+    // Local workers that outnumber the cores: the CPU time each has used since the
+    // start, with a quarter of the image handed out (in spread order, so from all over
+    // it) is its share of the work; each is then kept on a core with those it trades
+    // most rays with (core_groups). The pilot's box visits had not told the work apart
+    // (4x4x4 over 8: one core got 57 % of the samples).
+    void measure_for_cores() {
+        cpu_at_start_.clear();
+        if (!worker_cores_.empty() ||
+            options_->process_crossings.size() != local_.size() ||
+            local_.size() != workers_.size())
+            return;
+        for (const LocalWorker& l : local_) {
+            const uint64_t ns = cpu_nanoseconds(l.pid);
+            if (ns == 0) return cpu_at_start_.clear();
+            cpu_at_start_.push_back(ns);
+        }
+    }
+    void keep_on_cores() {
+        std::vector<double> work;
+        for (size_t i = 0; i < local_.size(); ++i) {
+            const uint64_t ns = cpu_nanoseconds(local_[i].pid);
+            work.push_back(ns > cpu_at_start_[i] ? double(ns - cpu_at_start_[i]) : 0.0);
+        }
+        cpu_at_start_.clear();
+        worker_cores_ = core_groups(work, options_->process_crossings, options_->cores);
+        for (size_t i = 0; i < worker_cores_.size(); ++i)
+            keep_on_core(local_[i].pid, worker_cores_[i]);
     }
 
     // Termination: two consecutive probe waves with identical counters of every worker
@@ -1840,6 +1869,10 @@ class TcpCoordinator {
     bool forked_ = false;  // the local workers were forked (else executed, or none)
     bool failed_ = false, lost_ = false;
     bool released_ = false;  // release_workers(): no frame after it
+    // Keeping local workers on cores: their CPU time at the start (until measured), then
+    // each one's core group (kept for later frames).
+    std::vector<uint64_t> cpu_at_start_;
+    std::vector<int> worker_cores_;
     int lost_worker_ = -1;
     std::string error_;
 };
