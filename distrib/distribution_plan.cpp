@@ -265,8 +265,10 @@ std::optional<Pilot> traffic_pilot(const Scene& scene,
 // BoxHost's in-process hand-over is cheap, so without workers the walls stay as they
 // are). Sets `space` and returns the words for --explain; leaves `space` for scenes too
 // big to trace a pilot through here, or an image size not given.
-std::string walls_by_traffic(const Pilot* pilot, const std::vector<Bounds3>& bounds,
-                             int workers, SpaceOptions& space) {
+std::string walls_by_traffic(const Scene& scene, const std::vector<Bounds3>& bounds,
+                             const DistributionRequest& request, int workers,
+                             SpaceOptions& space) {
+    const std::optional<Pilot> pilot = traffic_pilot(scene, request);
     if (!pilot) return "";
     const std::vector<PilotSegment>& segments = pilot->segments;
     const std::vector<ObjectExtent>& extents = pilot->extents;
@@ -298,14 +300,17 @@ std::string walls_by_traffic(const Pilot* pilot, const std::vector<Bounds3>& bou
 // the demo scene, in 2x2x2 blocks 1.10 s). Sets space.process_grid and returns the words
 // for --explain; leaves it with a single candidate or where walls_by_traffic would not
 // run the pilot.
-std::string owners_by_traffic(const Pilot* pilot, const VirtualWalls& walls, int workers,
+std::string owners_by_traffic(const Scene& scene, const VirtualWalls& walls,
+                              const DistributionRequest& request, int workers,
                               SpaceOptions& space) {
     const std::array<int, 3> slabs = walls.slabs();
     std::vector<std::array<int, 3>> grids;
     for (const std::array<int, 3>& g : box_grids(workers)) {
         if (g[0] <= slabs[0] && g[1] <= slabs[1] && g[2] <= slabs[2]) grids.push_back(g);
     }
-    if (grids.size() < 2 || !pilot) return "";
+    if (grids.size() < 2) return "";
+    const std::optional<Pilot> pilot = traffic_pilot(scene, request);
+    if (!pilot) return "";
     const std::vector<PilotSegment>& segments = pilot->segments;
     const std::vector<ObjectExtent>& extents = pilot->extents;
     // A process's block is boxes [ceil(i S / g), ceil((i + 1) S / g)) on an axis of S
@@ -335,23 +340,6 @@ std::string owners_by_traffic(const Pilot* pilot, const VirtualWalls& walls, int
            " processes), cut across the least ray traffic: " + std::to_string(best) +
            " crossings between processes for " + std::to_string(segments.size()) +
            " pilot ray segments";
-}
-
-// Local processes that outnumber the cores: the pilot's crossings between them, for
-// the coordinator to keep each on a core once it has measured their work. Returns the
-// words for --explain.
-std::string cores_by_traffic(const Pilot* pilot, const VirtualWalls& walls,
-                             const Vector3& view, int workers, int cores,
-                             SpaceOptions& space) {
-    if (!pilot || workers > kMaxProcessesOnCores) return "";
-    const std::vector<int> owner =
-        box_owners(walls.slabs(), workers, view, space.process_grid);
-    space.process_crossings =
-        process_traffic(pilot->segments, walls, pilot->extents, owner, workers).crossings;
-    space.cores = cores;
-    return "; once a quarter of the image is out, each process is kept on one of the " +
-           std::to_string(cores) +
-           " cores, the work measured and split across the fewest pilot crossings";
 }
 
 // The cores this process may run on.
@@ -466,6 +454,9 @@ DistributionPlan plan_distribution(const Scene& scene,
     if (!request.boxes.empty()) {
         plan.space = parse_boxes(request.boxes);
         std::string traffic;
+        if (request.boxes == "auto" && given > 1)
+            traffic = walls_by_traffic(scene, sizes.bounds, request, given, plan.space);
+        const VirtualWalls walls = walls_for(sizes.bounds, plan.space);
         // Only local processes that outnumber the cores: they take turns on them, so
         // what they do in all counts, not how it is shared out. Where each has a core
         // (or a host) of its own, the cuts across the view share the picture out
@@ -473,19 +464,17 @@ DistributionPlan plan_distribution(const Scene& scene,
         // 0.77 s cut across the view, 0.89 s cut along it, the least crossed).
         const int cores = request.cores > 0 ? request.cores : available_cores();
         const bool crowded = request.workers == 0 && given > cores;
-        // Traced once, for whichever choice needs it.
-        std::optional<Pilot> pilot;
-        if ((request.boxes == "auto" && given > 1) || crowded)
-            pilot = traffic_pilot(scene, request);
-        const Pilot* p = pilot ? &*pilot : nullptr;
-        if (request.boxes == "auto" && given > 1)
-            traffic = walls_by_traffic(p, sizes.bounds, given, plan.space);
-        const VirtualWalls walls = walls_for(sizes.bounds, plan.space);
         if (request.boxes != "auto" && crowded)
-            traffic = owners_by_traffic(p, walls, given, plan.space);
-        if (crowded && request.keep_on_cores)
-            traffic += cores_by_traffic(p, walls, scene.camera.direction, given, cores,
-                                        plan.space);
+            traffic = owners_by_traffic(scene, walls, request, given, plan.space);
+        if (crowded && request.keep_on_cores && cores > 1 &&
+            given <= kMaxProcessesOnCores) {
+            plan.space.keep_on_cores = cores;
+            traffic +=
+                "; once a quarter of the image is out, each process is kept on one "
+                "of the " +
+                std::to_string(cores) +
+                " cores, its measured work balanced, with those it sends most rays";
+        }
         Overlaps ov = overlaps_of(sizes, walls, scene.camera.direction);
         ov.grid = plan.space.process_grid;
         plan.largest_box_bytes = largest_box(sizes, ov);

@@ -46,12 +46,10 @@ struct SpaceOptions {
     // chosen for the least ray traffic between processes (plan_distribution); zeros:
     // box_owners' own cuts.
     std::array<int, 3> process_grid{0, 0, 0};
-    // Local worker processes that outnumber `cores`: the pilot's crossings between
-    // them ([from][to]); once a quarter of the image is out, the coordinator keeps each
-    // on one core by their measured work and these (core_groups). Empty: the system
-    // places them.
-    std::vector<std::vector<uint64_t>> process_crossings;
-    int cores = 0;
+    // Local worker processes that outnumber these cores (2 or more): once a quarter of
+    // the image is out, the coordinator keeps each on one of them by the work and the
+    // traffic it has measured (core_groups). 0: the system places them.
+    int keep_on_cores = 0;
 };
 
 struct BoxStats {
@@ -78,7 +76,7 @@ struct SpaceStats {
     // boxes) and left out while parsing.
     std::vector<uint64_t> worker_peak_resident;
     std::vector<size_t> worker_objects_kept, worker_objects_left_out;
-    // Local workers kept on cores (SpaceOptions::process_crossings): each one's core
+    // Local workers kept on cores (SpaceOptions::keep_on_cores): each one's core
     // group; empty when the system placed them.
     std::vector<int> worker_cores;
 };

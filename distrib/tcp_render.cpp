@@ -424,7 +424,8 @@ struct Outbox {
     std::mutex mutex;
     std::vector<uint8_t> records;
     uint32_t count = 0;
-    Buffer take() {  // with mutex held
+    uint64_t sent = 0;  // items for this process so far (the status's "sent")
+    Buffer take() {     // with mutex held
         auto buf = std::make_shared<std::vector<uint8_t>>();
         encode_opaque(FrameType::Items, count, records, *buf);
         records.clear();
@@ -930,6 +931,7 @@ class Worker {
             const size_t before = o.records.size();
             write_item(o.records, box, item, *numbers_);
             const size_t bytes = o.records.size() - before;
+            ++o.sent;
             if (++o.count, o.records.size() >= Outbox::kFlushBytes)
                 post(owner_[box], o.take());
             return bytes;
@@ -1051,11 +1053,20 @@ class Worker {
         // finished before created: a snapshot then never shows fewer created than exist.
         uint64_t finished = host_->finished();
         uint64_t created = host_->created();
+        // Items sent to each worker so far: the coordinator keeps crowded local workers
+        // on cores with those they trade most with.
+        std::vector<uint64_t> sent;
+        for (const auto& o : outboxes_) {
+            std::unique_lock<std::mutex> lock(o->mutex, std::defer_lock);
+            if (!inline_) lock.lock();
+            sent.push_back(o->sent);
+        }
         coordinator_->send(control_frame({{"type", "status"},
                                           {"seq", seq},
                                           {"created", created},
                                           {"finished", finished},
-                                          {"pixels", host_->pixels_emitted()}}));
+                                          {"pixels", host_->pixels_emitted()},
+                                          {"sent", sent}}));
         if (seq < 0) {
             status_timer_.expires_after(std::chrono::milliseconds(10));
             status_timer_.async_wait([this](boost::system::error_code ec) {
@@ -1495,6 +1506,7 @@ class TcpCoordinator {
         size_t objects_kept = 0, objects_left_out = 0;  // by its parse (ready)
         long wave_seq = -1;                             // latest probe answered
         uint64_t wave_created = 0, wave_finished = 0;
+        std::vector<uint64_t> sent;  // items sent to each worker (latest status)
     };
 
     void start_workers(const SceneSource& source) {
@@ -1686,6 +1698,9 @@ class TcpCoordinator {
                 settings_->progress->rays += finished - w.finished;
             w.finished = finished;
             w.pixels_done = j.value("pixels", uint64_t(0));
+            if (j.contains("sent") && j["sent"].is_array() &&
+                j["sent"].size() == workers_.size())
+                w.sent = j["sent"].get<std::vector<uint64_t>>();
             report_progress();
             long seq = j.at("seq").get<long>();
             if (seq >= 0) {
@@ -1780,14 +1795,15 @@ class TcpCoordinator {
 
     // Local workers that outnumber the cores: the CPU time each has used since the
     // start, with a quarter of the image handed out (in spread order, so from all over
-    // it) is its share of the work; each is then kept on a core with those it trades
-    // most rays with (core_groups). The pilot's box visits had not told the work apart
-    // (4x4x4 over 8: one core got 57 % of the samples).
+    // it), is its share of the work, and the items each has sent each other its traffic;
+    // each is then kept on a core with those it trades most with (core_groups). The
+    // pilot's box visits had not told the work apart (4x4x4 over 8: one core got 57 %
+    // of the samples).
     void measure_for_cores() {
         cpu_at_start_.clear();
-        if (!worker_cores_.empty() ||
-            options_->process_crossings.size() != local_.size() ||
-            local_.size() != workers_.size())
+        if (!worker_cores_.empty() || options_->keep_on_cores <= 1 ||
+            local_.size() != workers_.size() ||
+            int(local_.size()) <= options_->keep_on_cores)
             return;
         for (const LocalWorker& l : local_) {
             const uint64_t ns = cpu_nanoseconds(l.pid);
@@ -1802,7 +1818,9 @@ class TcpCoordinator {
             work.push_back(ns > cpu_at_start_[i] ? double(ns - cpu_at_start_[i]) : 0.0);
         }
         cpu_at_start_.clear();
-        worker_cores_ = core_groups(work, options_->process_crossings, options_->cores);
+        std::vector<std::vector<uint64_t>> traffic;
+        for (const WorkerState& w : workers_) traffic.push_back(w.sent);
+        worker_cores_ = core_groups(work, traffic, options_->keep_on_cores);
         for (size_t i = 0; i < worker_cores_.size(); ++i)
             keep_on_core(local_[i].pid, worker_cores_[i]);
     }

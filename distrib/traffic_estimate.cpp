@@ -146,26 +146,6 @@ uint64_t estimated_crossings(const std::vector<PilotSegment>& segments,
     return crossings;
 }
 
-ProcessTraffic process_traffic(const std::vector<PilotSegment>& segments,
-                               const VirtualWalls& walls,
-                               const std::vector<ObjectExtent>& objects,
-                               const std::vector<int>& owner, int processes) {
-    const std::vector<Bounds3> reach = box_reach(walls, objects);
-    ProcessTraffic t;
-    t.visits.assign(size_t(processes), 0);
-    t.crossings.assign(size_t(processes), std::vector<uint64_t>(size_t(processes), 0));
-    for (const PilotSegment& s : segments) {
-        int last = -1;
-        boxes_met(s, walls, reach, [&](int box) {
-            const int p = owner[size_t(box)];
-            ++t.visits[size_t(p)];
-            if (last >= 0) ++t.crossings[size_t(last)][size_t(p)];
-            last = p;
-        });
-    }
-    return t;
-}
-
 namespace {
 // Splits `procs` between cores [first, first + count) of `group`: in two, the cores in
 // halves, the processes in the proportion of their work; of the splits within 5 % of

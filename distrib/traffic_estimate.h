@@ -40,18 +40,6 @@ uint64_t estimated_crossings(const std::vector<PilotSegment>& segments,
                              const VirtualWalls& walls,
                              const std::vector<ObjectExtent>& objects);
 
-// What the segments do under `walls` whose boxes `owner` gives to `processes`
-// processes (box_owners): per process, its boxes' visits (segments tracing there: its
-// share of the work), and per pair, the crossings from one process's box to the other's.
-struct ProcessTraffic {
-    std::vector<uint64_t> visits;                  // per process
-    std::vector<std::vector<uint64_t>> crossings;  // [from][to]
-};
-ProcessTraffic process_traffic(const std::vector<PilotSegment>& segments,
-                               const VirtualWalls& walls,
-                               const std::vector<ObjectExtent>& objects,
-                               const std::vector<int>& owner, int processes);
-
 // Local processes that outnumber the cores take turns on them. Each one kept on one
 // core, with the processes it trades most rays with, wakes them without an
 // inter-processor interrupt (costly on a virtual machine) and keeps its caches. Which

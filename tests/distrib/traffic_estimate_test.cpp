@@ -196,52 +196,6 @@ TEST(TrafficEstimate, GivenBoxesGoToProcessesInBlocksCrossedLeast) {
               (std::array<int, 3>{0, 0, 0}));
 }
 
-// Per process, the visits are the boxes each segment traces in, and the crossings go
-// from one process's box to the next one's: summed over processes they are the
-// crossings estimated_crossings counts when every box is a process.
-TEST(TrafficEstimate, ProcessTrafficCountsVisitsAndCrossingsBetweenOwners) {
-    const Scene scene =
-        parser::parse_scene_file(POVWALL_DEMO_SCENE, parser::ParseOptions{});
-    const std::vector<PilotSegment> segments =
-        pilot_segments(scene, 120, 120, kTrafficPilotRays);
-    const std::vector<ObjectExtent> extents = object_extents(scene);
-    Bounds3 world;
-    for (const Object& o : scene.objects) {
-        const Bounds3 b = trace::object_world_bounds(o);
-        if (!b.infinite()) world.extend(b);
-    }
-    const VirtualWalls walls = VirtualWalls::uniform(world, 2, 2, 2);
-    std::vector<int> own(8);
-    for (int b = 0; b < 8; ++b) own[size_t(b)] = b;
-    const ProcessTraffic each = process_traffic(segments, walls, extents, own, 8);
-    uint64_t crossings = 0, visits = 0;
-    for (int p = 0; p < 8; ++p) {
-        visits += each.visits[size_t(p)];
-        EXPECT_EQ(each.crossings[size_t(p)][size_t(p)], 0u);  // no box follows itself
-        for (int q = 0; q < 8; ++q) crossings += each.crossings[size_t(p)][size_t(q)];
-    }
-    EXPECT_EQ(crossings, estimated_crossings(segments, walls, extents));
-    // All boxes in one process: the same visits, every crossing inside it.
-    const ProcessTraffic one =
-        process_traffic(segments, walls, extents, std::vector<int>(8, 0), 1);
-    EXPECT_EQ(one.visits[0], visits);
-    EXPECT_EQ(one.crossings[0][0], crossings);
-    EXPECT_GT(visits, crossings);  // each segment's first box is no crossing
-    // Two processes holding the x halves: the crossings between them are those over
-    // the middle x wall, the rest stay inside.
-    std::vector<int> halves(8);
-    for (int b = 0; b < 8; ++b) halves[size_t(b)] = b % 2;
-    const ProcessTraffic two = process_traffic(segments, walls, extents, halves, 2);
-    EXPECT_EQ(two.visits[0] + two.visits[1], visits);
-    uint64_t over_x = 0;
-    for (int p = 0; p < 8; ++p) {
-        for (int q = 0; q < 8; ++q) {
-            if (p % 2 != q % 2) over_x += each.crossings[size_t(p)][size_t(q)];
-        }
-    }
-    EXPECT_EQ(two.crossings[0][1] + two.crossings[1][0], over_x);
-}
-
 // Processes on cores: the work balanced first, then the fewest crossings between the
 // cores; none where the processes do not outnumber the cores.
 TEST(TrafficEstimate, CoreGroupsBalanceTheWorkThenCutTheLeastTraffic) {
@@ -289,40 +243,30 @@ TEST(TrafficEstimate, CoreGroupsBalanceTheWorkThenCutTheLeastTraffic) {
             .empty());
 }
 
-// The plan gives the coordinator the pilot's crossings between 8 local processes on 2
-// cores (the owners' blocks) and says what it will do with them; not with running
-// workers, with a core per process, or when asked not to.
-TEST(TrafficEstimate, CrowdedLocalProcessesGetThePilotsCrossingsForCores) {
+// The plan has the coordinator keep 8 local processes on the 2 cores, and says so; not
+// with running workers, with a core per process, with more processes than the search
+// takes, or when asked not to.
+TEST(TrafficEstimate, CrowdedLocalProcessesAreKeptOnCores) {
     const Scene scene =
         parser::parse_scene_file(POVWALL_DEMO_SCENE, parser::ParseOptions{});
     DistributionRequest r = demo_request("2x2x2");
     r.cores = 2;
     const DistributionPlan plan = plan_distribution(scene, r);
-    EXPECT_EQ(plan.space.cores, 2);
+    EXPECT_EQ(plan.space.keep_on_cores, 2);
     EXPECT_NE(plan.reasons.back().find("each process is kept on one of the 2 cores"),
               std::string::npos)
         << plan.reasons.back();
-    const std::vector<PilotSegment> segments =
-        pilot_segments(scene, 120, 120, kTrafficPilotRays);
-    const std::vector<ObjectExtent> extents = object_extents(scene);
-    Bounds3 world;
-    for (const Object& o : scene.objects) {
-        const Bounds3 b = trace::object_world_bounds(o);
-        if (!b.infinite()) world.extend(b);
-    }
-    const VirtualWalls walls = VirtualWalls::uniform(world, 2, 2, 2);
-    const std::vector<int> owner = box_owners({2, 2, 2}, 8, scene.camera.direction);
-    EXPECT_EQ(plan.space.process_crossings,
-              process_traffic(segments, walls, extents, owner, 8).crossings);
     r.keep_on_cores = false;
-    EXPECT_TRUE(plan_distribution(scene, r).space.process_crossings.empty());
+    EXPECT_EQ(plan_distribution(scene, r).space.keep_on_cores, 0);
     r.keep_on_cores = true;
     r.cores = 8;
-    EXPECT_TRUE(plan_distribution(scene, r).space.process_crossings.empty());
+    EXPECT_EQ(plan_distribution(scene, r).space.keep_on_cores, 0);
     r.cores = 2;
+    r.procs = kMaxProcessesOnCores + 1;
+    EXPECT_EQ(plan_distribution(scene, r).space.keep_on_cores, 0);
     r.procs = 0;
     r.workers = 8;
-    EXPECT_TRUE(plan_distribution(scene, r).space.process_crossings.empty());
+    EXPECT_EQ(plan_distribution(scene, r).space.keep_on_cores, 0);
 }
 
 }  // namespace
