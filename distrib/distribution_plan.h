@@ -33,7 +33,8 @@ struct DistributionRequest {
     int procs = 0;             // worker processes, screen or space (0: not asked for)
     int workers = 0;           // running workers given (--workers): their count
     int cores = 0;             // this machine's cores (0: those this process may use)
-    // Local processes that outnumber the cores: each kept on one core (process_cores).
+    // Local processes that outnumber the cores: each kept on one (SpaceOptions::
+    // keep_on_cores).
     bool keep_on_cores = true;
     size_t pixels = 0;          // image width x height (worker accumulators)
     int width = 0, height = 0;  // the image (the pilot of --boxes auto over workers)
