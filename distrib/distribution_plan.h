@@ -89,6 +89,19 @@ std::string format_bytes(size_t bytes);
 std::vector<int> box_owners(std::array<int, 3> slabs, int workers, const Vector3& view,
                             std::array<int, 3> grid = {0, 0, 0});
 
+// Local processes that outnumber the cores take turns on them. Each one kept on one
+// core, with the processes it trades most rays with, wakes them without an
+// inter-processor interrupt (costly on a virtual machine) and keeps its caches. Which
+// of `cores` groups each process runs in, given each one's `work` and the `crossings`
+// between them ([from][to]): the cores halved again and again, the processes split in
+// proportion to their work (within 5 % of the most even split) across the fewest
+// crossings. Empty where each process has a core, or for more than
+// kMaxProcessesOnCores processes (the splits are searched exhaustively).
+constexpr int kMaxProcessesOnCores = 12;
+std::vector<int> core_groups(const std::vector<double>& work,
+                             const std::vector<std::vector<uint64_t>>& crossings,
+                             int cores);
+
 // A worker process's own memory before any scene (binary, libraries, stacks): measured
 // 7.7 MB resident for a worker holding one sphere.
 constexpr size_t kWorkerProcessBytes = size_t(8) << 20;

@@ -57,7 +57,6 @@ extern char** environ;
 #include "distrib/message.h"
 #include "distrib/shared_pixel_sums.h"
 #include "distrib/tcp.h"
-#include "distrib/traffic_estimate.h"
 #include "parser/parser.h"
 #include "trace/pattern.h"
 

@@ -1,10 +1,7 @@
 #include "distrib/traffic_estimate.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdint>
-#include <limits>
 
 #include "trace/camera.h"
 #include "trace/prepared_scene.h"
@@ -106,109 +103,29 @@ std::vector<ObjectExtent> object_extents(const Scene& scene) {
     return out;
 }
 
-namespace {
-// Each box's reach, as BoxHost computes it.
-std::vector<Bounds3> box_reach(const VirtualWalls& walls,
-                               const std::vector<ObjectExtent>& objects) {
+uint64_t estimated_crossings(const std::vector<PilotSegment>& segments,
+                             const VirtualWalls& walls,
+                             const std::vector<ObjectExtent>& objects) {
+    // Each box's reach, as BoxHost computes it.
     std::vector<Bounds3> reach(size_t(walls.box_count()));
     for (const ObjectExtent& o : objects) {
         for (int b : walls.boxes_overlapping(o.world)) reach[size_t(b)].extend(o.hit);
     }
     for (size_t b = 0; b < reach.size(); ++b)
         reach[b] = intersection(reach[b], walls.box_bounds(int(b)));
-    return reach;
-}
-
-// Calls visit(box) for each box, in order, that the segment traces in: a secondary ray
-// starts in the box of its hit, a camera ray in the first box it meets; each box met
-// after the first is a crossing.
-template <class Visit>
-void boxes_met(const PilotSegment& s, const VirtualWalls& walls,
-               const std::vector<Bounds3>& reach, Visit&& visit) {
-    const Ray ray{s.from, s.to - s.from};  // t in [0, 1]
-    walls.walk(ray, 0, 1, [&](const VirtualWalls::Segment& seg) {
-        if (meets(reach[size_t(seg.box)], ray, seg)) visit(seg.box);
-        return false;
-    });
-}
-}  // namespace
-
-uint64_t estimated_crossings(const std::vector<PilotSegment>& segments,
-                             const VirtualWalls& walls,
-                             const std::vector<ObjectExtent>& objects) {
-    const std::vector<Bounds3> reach = box_reach(walls, objects);
     uint64_t crossings = 0;
     for (const PilotSegment& s : segments) {
-        uint64_t met = 0;
-        boxes_met(s, walls, reach, [&](int) { ++met; });
-        crossings += met > 0 ? met - 1 : 0;
+        const Ray ray{s.from, s.to - s.from};  // t in [0, 1]
+        int met = 0;
+        walls.walk(ray, 0, 1, [&](const VirtualWalls::Segment& seg) {
+            met += meets(reach[size_t(seg.box)], ray, seg);
+            return false;
+        });
+        // A secondary ray starts in the box of its hit, a camera ray in the first box it
+        // meets: each box met after that one is a crossing.
+        crossings += uint64_t(std::max(met - 1, 0));
     }
     return crossings;
-}
-
-namespace {
-// Splits `procs` between cores [first, first + count) of `group`: in two, the cores in
-// halves, the processes in the proportion of their work; of the splits within 5 % of
-// the best balance, the one the fewest crossings pass; then each half again.
-void split_between_cores(const std::vector<double>& work,
-                         const std::vector<std::vector<uint64_t>>& crossings,
-                         const std::vector<int>& procs, int first, int count,
-                         std::vector<int>& group) {
-    if (count == 1) {
-        for (int p : procs) group[size_t(p)] = first;
-        return;
-    }
-    const int low_cores = count / 2, high_cores = count - low_cores;
-    const size_t n = procs.size();
-    auto makespan = [&](uint32_t mask) {  // bit set: the low half
-        double low = 0, high = 0;
-        for (size_t i = 0; i < n; ++i)
-            (mask >> i & 1 ? low : high) += work[size_t(procs[i])];
-        return std::max(low / low_cores, high / high_cores);
-    };
-    auto valid = [&](uint32_t mask) {
-        const int in_low = std::popcount(mask);
-        return in_low >= low_cores && int(n) - in_low >= high_cores;
-    };
-    double best = std::numeric_limits<double>::infinity();
-    for (uint32_t mask = 1; mask + 1 < (1u << n); ++mask) {
-        if (valid(mask)) best = std::min(best, makespan(mask));
-    }
-    uint32_t chosen = 0;
-    uint64_t fewest = UINT64_MAX;
-    for (uint32_t mask = 1; mask + 1 < (1u << n); ++mask) {
-        if (!valid(mask) || makespan(mask) > best * 1.05) continue;
-        uint64_t cut = 0;
-        for (size_t i = 0; i < n; ++i) {
-            for (size_t j = 0; j < n; ++j) {
-                if ((mask >> i & 1) != (mask >> j & 1))
-                    cut += crossings[size_t(procs[i])][size_t(procs[j])];
-            }
-        }
-        if (cut < fewest) fewest = cut, chosen = mask;
-    }
-    std::vector<int> low, high;
-    for (size_t i = 0; i < n; ++i) (chosen >> i & 1 ? low : high).push_back(procs[i]);
-    split_between_cores(work, crossings, low, first, low_cores, group);
-    split_between_cores(work, crossings, high, first + low_cores, high_cores, group);
-}
-}  // namespace
-
-std::vector<int> core_groups(const std::vector<double>& work,
-                             const std::vector<std::vector<uint64_t>>& crossings,
-                             int cores) {
-    const int processes = int(work.size());
-    if (cores < 2 || processes <= cores || processes > kMaxProcessesOnCores ||
-        crossings.size() != work.size())
-        return {};
-    for (const auto& row : crossings) {
-        if (row.size() != work.size()) return {};
-    }
-    std::vector<int> procs(static_cast<size_t>(processes));
-    for (int p = 0; p < processes; ++p) procs[size_t(p)] = p;
-    std::vector<int> group(size_t(processes), 0);
-    split_between_cores(work, crossings, procs, 0, cores, group);
-    return group;
 }
 
 std::vector<std::array<int, 3>> box_grids(int boxes) {

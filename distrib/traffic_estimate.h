@@ -40,19 +40,6 @@ uint64_t estimated_crossings(const std::vector<PilotSegment>& segments,
                              const VirtualWalls& walls,
                              const std::vector<ObjectExtent>& objects);
 
-// Local processes that outnumber the cores take turns on them. Each one kept on one
-// core, with the processes it trades most rays with, wakes them without an
-// inter-processor interrupt (costly on a virtual machine) and keeps its caches. Which
-// of `cores` groups each process runs in, given each one's `work` and the `crossings`
-// between them ([from][to]): the cores halved again and again, the processes split in
-// proportion to their work (within 5 % of the most even split) across the fewest
-// crossings. Empty where each process has a core, or for more than
-// kMaxProcessesOnCores processes (the splits are searched exhaustively).
-constexpr int kMaxProcessesOnCores = 12;
-std::vector<int> core_groups(const std::vector<double>& work,
-                             const std::vector<std::vector<uint64_t>>& crossings,
-                             int cores);
-
 // Every way to cut `boxes` boxes into nx x ny x nz slabs.
 std::vector<std::array<int, 3>> box_grids(int boxes);
 

@@ -196,53 +196,6 @@ TEST(TrafficEstimate, GivenBoxesGoToProcessesInBlocksCrossedLeast) {
               (std::array<int, 3>{0, 0, 0}));
 }
 
-// Processes on cores: the work balanced first, then the fewest crossings between the
-// cores; none where the processes do not outnumber the cores.
-TEST(TrafficEstimate, CoreGroupsBalanceTheWorkThenCutTheLeastTraffic) {
-    // Two heavy processes (0, 1) and two light ones; 0 trades with 2, 1 with 3.
-    std::vector<double> work = {100, 100, 10, 10};
-    std::vector<std::vector<uint64_t>> crossings = {
-        {0, 1, 50, 0}, {1, 0, 0, 50}, {50, 0, 0, 1}, {0, 50, 1, 0}};
-    std::vector<int> g = core_groups(work, crossings, 2);
-    ASSERT_EQ(g.size(), 4u);
-    EXPECT_NE(g[0], g[1]);  // the heavy ones apart
-    EXPECT_EQ(g[0], g[2]);  // each with its partner
-    EXPECT_EQ(g[1], g[3]);
-    // The partners heavy together would leave one core idle: balance comes first.
-    crossings = {{0, 50, 1, 1}, {50, 0, 1, 1}, {1, 1, 0, 50}, {1, 1, 50, 0}};
-    g = core_groups(work, crossings, 2);
-    EXPECT_NE(g[0], g[1]);
-    // Uneven work: three light processes share a core against one heavy one.
-    g = core_groups({90, 30, 30, 30}, crossings, 2);
-    EXPECT_EQ(g[1], g[2]);
-    EXPECT_EQ(g[2], g[3]);
-    EXPECT_NE(g[0], g[1]);
-    // Four cores and eight processes: two per core, partners together.
-    std::vector<std::vector<uint64_t>> pairs(8, std::vector<uint64_t>(8, 1));
-    for (int p = 0; p < 8; p += 2) pairs[size_t(p)][size_t(p + 1)] = 40;
-    g = core_groups(std::vector<double>(8, 10), pairs, 4);
-    ASSERT_EQ(g.size(), 8u);
-    std::vector<int> per_core(4, 0);
-    for (int p = 0; p < 8; ++p) {
-        ASSERT_GE(g[size_t(p)], 0);
-        ASSERT_LT(g[size_t(p)], 4);
-        ++per_core[size_t(g[size_t(p)])];
-    }
-    EXPECT_EQ(per_core, (std::vector<int>{2, 2, 2, 2}));
-    for (int p = 0; p < 8; p += 2) EXPECT_EQ(g[size_t(p)], g[size_t(p + 1)]) << p;
-    // No more processes than cores, one core, a crossings table of another size, or too
-    // many processes to search: none.
-    EXPECT_TRUE(core_groups(work, crossings, 4).empty());
-    EXPECT_TRUE(core_groups(work, crossings, 1).empty());
-    EXPECT_TRUE(core_groups(std::vector<double>(5, 1), crossings, 2).empty());
-    const size_t many = size_t(kMaxProcessesOnCores + 1);
-    EXPECT_TRUE(
-        core_groups(
-            std::vector<double>(many, 1),
-            std::vector<std::vector<uint64_t>>(many, std::vector<uint64_t>(many, 0)), 2)
-            .empty());
-}
-
 // The plan has the coordinator keep 8 local processes on the 2 cores, and says so; not
 // with running workers, with a core per process, with more processes than the search
 // takes, or when asked not to.
