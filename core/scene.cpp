@@ -4,42 +4,25 @@
 
 namespace povwall {
 
-namespace {
-// `rest`'s object list (empty) becomes the objects of `objects` that `keep` accepts,
-// copied, with their node numbering.
-void keep_objects(Scene& rest, const std::vector<Object>& objects,
-                  const std::function<bool(const Object&)>& keep) {
-    rest.objects.clear();
-    rest.object_first_node.clear();
-    rest.object_nodes_total = 0;
-    rest.objects_left_out = 0;
-    for (const Object& o : objects) {
-        const auto nodes = uint32_t(object_node_count(o));
-        if (keep(o)) {
-            rest.object_first_node.push_back(rest.object_nodes_total);
-            rest.objects.push_back(o);
-        } else {
-            ++rest.objects_left_out;
-        }
-        rest.object_nodes_total += nodes;
-    }
-}
-}  // namespace
-
-Scene copy_scene_keeping(Scene& whole, const std::function<bool(const Object&)>& keep) {
-    std::vector<Object> objects = std::move(whole.objects);
-    whole.objects.clear();
-    Scene copy = whole;
-    whole.objects = std::move(objects);
-    keep_objects(copy, whole.objects, keep);
-    return copy;
-}
-
-Scene take_scene_keeping(Scene&& whole, const std::function<bool(const Object&)>& keep) {
+Scene take_scene_keeping(Scene&& whole, const std::vector<uint32_t>& keep) {
     std::vector<Object> objects = std::move(whole.objects);
     whole.objects.clear();
     Scene taken = std::move(whole);
-    keep_objects(taken, objects, keep);
+    taken.objects.clear();
+    taken.objects.reserve(keep.size());
+    taken.object_first_node.clear();
+    taken.object_first_node.reserve(keep.size());
+    taken.object_nodes_total = 0;
+    size_t next = 0;  // in `keep`
+    for (size_t i = 0; i < objects.size(); ++i) {
+        if (next < keep.size() && keep[next] == i) {
+            taken.object_first_node.push_back(taken.object_nodes_total);
+            taken.objects.push_back(objects[i]);
+            ++next;
+        }
+        taken.object_nodes_total += uint32_t(object_node_count(objects[i]));
+    }
+    taken.objects_left_out = objects.size() - taken.objects.size();
     whole.objects = std::move(objects);
     return taken;
 }

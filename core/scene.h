@@ -431,17 +431,13 @@ inline size_t object_node_count(const Object& o) {
     return n;
 }
 
-// A copy of `whole` with only the objects `keep` accepts, numbered as the parser numbers
-// a parse that left the others out (ParseOptions::keep_object), so a process that got
-// the whole parsed scene (a forked black-box worker) agrees with one that parsed only its
-// part. `whole` must not be filtered already. Its objects are only read (a forked
-// process's pages stay shared with its parent); its object list is moved aside for the
-// copy of the rest and put back.
-Scene copy_scene_keeping(Scene& whole, const std::function<bool(const Object&)>& keep);
-// The same, but everything except the objects is moved out of `whole` instead of copied
-// (a forked worker's textures and the rest stay on the pages it shares with its parent:
-// eight workers each copied the 5,000 textures of the demo scene). `whole` keeps its
-// full object list, untouched, and nothing else.
-Scene take_scene_keeping(Scene&& whole, const std::function<bool(const Object&)>& keep);
+// `whole` with only the objects at the ascending indices `keep`, numbered as the parser
+// numbers a parse that left the others out (ParseOptions::keep_object), so a process that
+// got the whole parsed scene (a forked black-box worker) agrees with one that parsed only
+// its part. Everything except the objects is moved out of `whole`; the kept objects are
+// copied (a forked worker's textures and the rest stay on the pages it shares with its
+// parent). `whole`, which must not be filtered already, keeps its full object list,
+// untouched, and nothing else.
+Scene take_scene_keeping(Scene&& whole, const std::vector<uint32_t>& keep);
 
 }  // namespace povwall

@@ -133,6 +133,10 @@ struct WorkerOptions {
     // after the fork): the first job, which says so, takes from it the objects of this
     // worker's boxes instead of parsing.
     Scene* inherited_scene = nullptr;
+    // With it, every worker's objects: indices into the inherited scene of those that
+    // overlap its boxes, ascending, by worker index (as the coordinator found them once,
+    // instead of each worker testing every object).
+    const std::vector<std::vector<uint32_t>>* inherited_objects = nullptr;
     // A forked local worker's view of the coordinator's pixel sums (SharedPixelSums):
     // it adds its contributions there instead of sending them. Used when the count
     // matches the job's image (width x height x channels).

@@ -475,17 +475,19 @@ class Connection : public std::enable_shared_from_this<Connection> {
         // Received bytes land after the unparsed ones in `pending_` (kept at its largest
         // size, so no fresh pages per frame); parsed frames are dropped by moving only
         // the partial frame that follows them to the front.
-        if (pending_.size() < filled_ + kChunk) pending_.resize(filled_ + kChunk);
+        if (pending_size_ < filled_ + chunk_)
+            grow_pending(std::max(2 * pending_size_, filled_ + chunk_));
         socket_.async_read_some(
-            asio::buffer(pending_.data() + filled_, kChunk),
+            asio::buffer(pending_.get() + filled_, chunk_),
             [this, self](boost::system::error_code ec, size_t n) {
                 if (closed_) return;
                 if (ec) return fail(disconnected(ec));
                 filled_ += n;
+                if (n == chunk_) chunk_ = kChunk;  // a stream of items: read more at once
                 size_t used = 0;
                 for (;;) {
                     DecodeStatus st = decode_frame(
-                        std::span(pending_.data() + used, filled_ - used), frame_);
+                        std::span(pending_.get() + used, filled_ - used), frame_);
                     if (st == DecodeStatus::NeedMore) break;
                     if (st == DecodeStatus::Bad)
                         return fail("malformed frame or wrong protocol version");
@@ -494,7 +496,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
                     if (closed_) return;
                 }
                 if (used) {
-                    std::memmove(pending_.data(), pending_.data() + used, filled_ - used);
+                    std::memmove(pending_.get(), pending_.get() + used, filled_ - used);
                     filled_ -= used;
                 }
                 read();
@@ -515,6 +517,14 @@ class Connection : public std::enable_shared_from_this<Connection> {
                 if (!queue_.empty()) write();
             });
     }
+    // Not zeroed: a page of it is first touched when bytes arrive there, so a connection
+    // that only sends (or only receives control frames) never faults its 64 KB in.
+    void grow_pending(size_t size) {
+        auto grown = std::make_unique_for_overwrite<uint8_t[]>(size);
+        if (filled_) std::memcpy(grown.get(), pending_.get(), filled_);
+        pending_ = std::move(grown);
+        pending_size_ = size;
+    }
     void fail(const std::string& why) {
         if (closed_) return;
         close();
@@ -523,8 +533,12 @@ class Connection : public std::enable_shared_from_this<Connection> {
 
     tcp::socket socket_;
     std::string name_;
+    // Reads start small: most connections carry control frames only, or nothing (a
+    // worker's connections to its peers only send); a full read goes up to kChunk.
     static constexpr size_t kChunk = 64 << 10;
-    std::vector<uint8_t> pending_;
+    size_t chunk_ = 4 << 10;
+    std::unique_ptr<uint8_t[]> pending_;
+    size_t pending_size_ = 0;
     size_t filled_ = 0;  // bytes of pending_ received and not yet parsed
     Frame frame_;        // reused: its body keeps its capacity
     std::deque<Buffer> queue_;
@@ -871,13 +885,15 @@ class Worker {
             return false;
         };
         try {
-            if (j.value("inherited", false) && options_.inherited_scene) {
+            if (j.value("inherited", false) && options_.inherited_scene &&
+                options_.inherited_objects) {
                 // Forked after the coordinator's parse of this frame: no parse here.
                 // Its object list stays in the inherited scene, never freed: the
                 // process ends with _exit, and freeing would write to (copy) the pages
                 // it still shares with the coordinator.
-                scene_ = take_scene_keeping(std::move(*options_.inherited_scene),
-                                            popts.keep_object);
+                scene_ =
+                    take_scene_keeping(std::move(*options_.inherited_scene),
+                                       options_.inherited_objects->at(size_t(self_)));
                 options_.inherited_scene = nullptr;  // later frames parse
             } else {
                 scene_ = parser::parse_scene_text(j.at("scene").get<std::string>(),
@@ -1261,7 +1277,8 @@ bool single_threaded() {
 // _exit: it never returns into the coordinator's frames, runs none of its destructors
 // and flushes none of its buffers. The caller has checked that no other thread runs.
 void fork_workers(const std::string& token, int threads, const ImageReader& image_reader,
-                  Scene* scene, const SharedPixelSums& sums, int count,
+                  Scene* scene, const std::vector<std::vector<uint32_t>>& objects,
+                  const SharedPixelSums& sums, int count,
                   std::vector<LocalWorker>& started) {
     std::vector<int> reads;
     std::fflush(nullptr);  // nothing buffered is written twice
@@ -1297,6 +1314,7 @@ void fork_workers(const std::string& token, int threads, const ImageReader& imag
             w.once = true;
             w.image_reader = image_reader;
             w.inherited_scene = scene;
+            w.inherited_objects = &objects;
             w.shared_sums = sums.data();
             w.shared_sums_count = sums.size();
             w.shared_sum_locks = sums.stripe_locks();
@@ -1474,22 +1492,30 @@ class TcpCoordinator {
     }
 
   private:
-    // How many of the scene's objects each worker will keep (those overlapping its
-    // boxes), so it can reserve its object list.
-    std::vector<size_t> objects_per_worker() const {
+    // Each worker's objects: the indices of those overlapping its boxes (the test of
+    // BoxHost::build_boxes), ascending.
+    std::vector<std::vector<uint32_t>> objects_of_workers() const {
         const VirtualWalls& walls = emitter_walls_;
         const size_t workers =
             owner_.empty() ? 0
                            : size_t(*std::max_element(owner_.begin(), owner_.end())) + 1;
-        std::vector<size_t> count(workers, 0);
-        std::vector<size_t> seen(workers, SIZE_MAX);
+        std::vector<std::vector<uint32_t>> objects(workers);
         for (size_t i = 0; i < scene_->objects.size(); ++i) {
             for (int b : walls.boxes_overlapping(
                      trace::object_world_bounds(scene_->objects[i]))) {
                 const auto w = size_t(owner_[size_t(b)]);
-                if (w < count.size() && seen[w] != i) ++count[w], seen[w] = i;
+                if (w < objects.size() &&
+                    (objects[w].empty() || objects[w].back() != uint32_t(i)))
+                    objects[w].push_back(uint32_t(i));
             }
         }
+        return objects;
+    }
+    // How many of the scene's objects each worker will keep, so it can reserve its
+    // object list.
+    std::vector<size_t> objects_per_worker() const {
+        std::vector<size_t> count;
+        for (const auto& o : objects_of_workers()) count.push_back(o.size());
         return count;
     }
 
@@ -1511,6 +1537,17 @@ class TcpCoordinator {
     void start_workers(const SceneSource& source) {
         std::string token = tcp_.token;
         std::vector<std::string> addresses = tcp_.workers;
+        const int n = int(addresses.size()) + std::max(0, tcp_.procs);
+        if (n == 0) throw DistribError("no workers");
+        // Walls stay for the whole sequence: the outer boxes are unbounded, so any
+        // frame's objects fall in some box; only the balance may drift.
+        emitter_walls_ = emitter_->walls();
+        owner_ = box_owners(emitter_walls_.slabs(), n, scene_->camera.direction,
+                            options_->process_grid);
+        // Before any fork: forked workers take their objects from these lists.
+        worker_objects_ = objects_of_workers();
+        std::vector<size_t> expected;
+        for (const auto& o : worker_objects_) expected.push_back(o.size());
         if (tcp_.procs > 0) {
             if (token.empty()) {
                 std::random_device rd;
@@ -1534,8 +1571,8 @@ class TcpCoordinator {
                 sums_ = shared_sums_.values();
                 // The child's copy of the scene is its own to take objects from.
                 fork_workers(token, threads, tcp_.image_reader,
-                             const_cast<Scene*>(scene_), shared_sums_, tcp_.procs,
-                             local_);
+                             const_cast<Scene*>(scene_), worker_objects_, shared_sums_,
+                             tcp_.procs, local_);
             } else {
                 spawn_workers(tcp_.worker_binary, token, threads, tcp_.procs, local_);
             }
@@ -1545,13 +1582,6 @@ class TcpCoordinator {
             for (const LocalWorker& l : local_) pids.push_back(l.pid);
             maybe_inject_worker_fault(pids);
         }
-        if (addresses.empty()) throw DistribError("no workers");
-        // Walls stay for the whole sequence: the outer boxes are unbounded, so any
-        // frame's objects fall in some box; only the balance may drift.
-        emitter_walls_ = emitter_->walls();
-        const int n = int(addresses.size());
-        owner_ = box_owners(emitter_walls_.slabs(), n, scene_->camera.direction,
-                            options_->process_grid);
         json job = fixed_;
         job["animation"] = animation_values(source);
         job["walls"] = std::array<std::vector<Real>, 3>{
@@ -1559,7 +1589,7 @@ class TcpCoordinator {
         job["owner"] = owner_;
         job["workers"] = addresses;
         job["plan"] = plan_to_json(emitter_->plan());
-        job["expected_objects"] = objects_per_worker();
+        job["expected_objects"] = expected;
         job["inherited"] = forked_;  // this frame's scene is in the workers already
         workers_.resize(n);
         for (int i = 0; i < n; ++i) {
@@ -1884,6 +1914,9 @@ class TcpCoordinator {
     long wave_seq_ = 0;
     int frames_ = 0;
     bool forked_ = false;  // the local workers were forked (else executed, or none)
+    // Each worker's objects in the first frame (objects_of_workers); forked workers
+    // read them from their copy of this process.
+    std::vector<std::vector<uint32_t>> worker_objects_;
     bool failed_ = false, lost_ = false;
     bool released_ = false;  // release_workers(): no frame after it
     // Keeping local workers on cores: their CPU time at the start (until measured), then
@@ -2139,6 +2172,13 @@ int run_worker(const WorkerOptions& given) {
                 throw DistribError("--rank " + std::to_string(options.rank) +
                                    " is not below --size " +
                                    std::to_string(options.size));
+        }
+        if (options.inherited_scene) {
+            // A forked worker, which ends with _exit: its state is never freed, since
+            // freeing writes to (and so copies) pages it shares with the coordinator;
+            // it cost each worker 5-7 ms of CPU at the end of a frame.
+            auto* forked = new Worker(options);
+            return forked->run();
         }
         Worker w(options);
         return w.run();

@@ -510,7 +510,7 @@ TEST(Expressions, VturbulenceMatchesPovRay) {
 // A forked black-box worker takes its objects from the coordinator's whole parse; it must
 // number them as a worker whose parse left the others out (interior stacks cross the
 // wire as those numbers).
-TEST(KeepObjects, CopyOfAWholeParseNumbersObjectsAsAFilteredParse) {
+TEST(KeepObjects, TakenFromAWholeParseNumbersObjectsAsAFilteredParse) {
     const std::string text = R"(
 sphere { <-3, 0, 0>, 1 }
 union { sphere { <3, 0, 0>, 1 } box { <2, -1, -1>, <4, 1, 1> } }
@@ -530,31 +530,34 @@ light_source { <0, 10, 0> rgb 1 looks_like { sphere { 0, 0.1 } } }
     o.keep_object = right;
     const Scene filtered = parse_scene_text(text, "test.pov", o);
     Scene whole = parse_scene_text(text, "test.pov", ParseOptions{});
-    const Scene copy = copy_scene_keeping(whole, right);
+    ASSERT_EQ(whole.objects.size(), 4u);
+    EXPECT_FALSE(whole.objects_filtered());
+    const Object* first = whole.objects.data();
+    const Scene taken = take_scene_keeping(std::move(whole), {1, 3});
     // Nodes: sphere 0; union 1 (children 2, 3); difference 4 (5, 6); sphere 7.
     EXPECT_EQ(filtered.object_first_node, (std::vector<uint32_t>{1, 7}));
-    EXPECT_EQ(copy.object_first_node, filtered.object_first_node);
-    EXPECT_EQ(copy.object_nodes_total, 8u);
-    EXPECT_EQ(copy.object_nodes_total, filtered.object_nodes_total);
-    EXPECT_EQ(copy.objects_left_out, 2u);
-    EXPECT_EQ(copy.objects_left_out, filtered.objects_left_out);
-    ASSERT_EQ(copy.objects.size(), 2u);
-    EXPECT_TRUE(std::holds_alternative<Csg>(copy.objects[0].shape));
-    EXPECT_EQ(std::get<Sphere>(copy.objects[1].shape).radius, 0.5);
-    EXPECT_EQ(copy.lights.size(), 1u);
-    // The whole scene is left as it was.
-    EXPECT_EQ(whole.objects.size(), 4u);
-    EXPECT_FALSE(whole.objects_filtered());
-    // Taken rather than copied: the same scene; `whole` keeps only its object list.
-    const Scene taken = take_scene_keeping(std::move(whole), right);
     EXPECT_EQ(taken.object_first_node, filtered.object_first_node);
+    EXPECT_EQ(taken.object_nodes_total, 8u);
     EXPECT_EQ(taken.object_nodes_total, filtered.object_nodes_total);
+    EXPECT_EQ(taken.objects_left_out, 2u);
     EXPECT_EQ(taken.objects_left_out, filtered.objects_left_out);
     ASSERT_EQ(taken.objects.size(), 2u);
+    EXPECT_TRUE(std::holds_alternative<Csg>(taken.objects[0].shape));
     EXPECT_EQ(std::get<Sphere>(taken.objects[1].shape).radius, 0.5);
     EXPECT_EQ(taken.lights.size(), 1u);
-    EXPECT_EQ(whole.objects.size(), 4u);
+    // `whole` keeps its object list, in place (a forked worker writes none of its
+    // pages), and nothing else.
+    ASSERT_EQ(whole.objects.size(), 4u);
+    EXPECT_EQ(whole.objects.data(), first);
+    EXPECT_EQ(std::get<Sphere>(whole.objects[0].shape).centre.x, -3);
     EXPECT_TRUE(whole.lights.empty());
+    // Keeping everything still numbers as a filtered parse: every object has its first
+    // node.
+    Scene again = parse_scene_text(text, "test.pov", ParseOptions{});
+    const Scene all = take_scene_keeping(std::move(again), {0, 1, 2, 3});
+    EXPECT_EQ(all.object_first_node, (std::vector<uint32_t>{0, 1, 4, 7}));
+    EXPECT_EQ(all.objects_left_out, 0u);
+    EXPECT_TRUE(all.objects_filtered());
 }
 
 }  // namespace
