@@ -154,6 +154,19 @@ int render_main(const std::vector<std::string>& args) {
                    "(off)")
         ->check(CLI::IsMember({"auto", "off"}))
         ->capture_default_str();
+    app.add_option("--teams", o.teams,
+                   "black-box workers in N teams that each host every box (fewer rays "
+                   "between processes, more of the scene in each), or auto: the most "
+                   "teams of 2 or more whose workers fit the memory budget")
+        ->check([](const std::string& v) -> std::string {
+            if (v == "auto") return "";
+            char* end = nullptr;
+            const long n = std::strtol(v.c_str(), &end, 10);
+            if (v.empty() || *end != 0 || n < 1 || n > 4096)
+                return "a count from 1 to 4096 or auto, not '" + v + "'";
+            return "";
+        })
+        ->capture_default_str();
     std::string rendezvous;
     double rendezvous_timeout = 120;
     app.add_option("--rendezvous", rendezvous,

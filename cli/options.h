@@ -93,6 +93,9 @@ struct RenderOptions {
     // --procs workers that outnumber the cores: each kept on one core with the workers
     // it trades most rays with (auto), or placed by the system (off).
     std::string worker_cores = "auto";
+    // Teams of workers, each hosting every box: a count that divides the workers, or
+    // "auto" (distrib::SpaceOptions::teams).
+    std::string teams = "auto";
     // A lost worker process (--procs) or tile worker: its work goes to the others (true)
     // or the render stops with it named (false, --no-recover).
     bool recover = true;

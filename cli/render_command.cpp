@@ -219,6 +219,7 @@ int run_render(RenderOptions o) {
     request.threads = o.render.threads;
     request.procs = o.procs;
     request.keep_on_cores = o.worker_cores == "auto";
+    request.teams = o.teams == "auto" ? 0 : std::atoi(o.teams.c_str());
     request.workers = int(o.workers.size());
     request.pixels = size_t(o.render.width) * size_t(o.render.height);
     request.width = o.render.width;
@@ -465,6 +466,7 @@ int run_render(RenderOptions o) {
                     {"peak_resident_bytes", space_stats.worker_peak_resident},
                     {"objects_kept", space_stats.worker_objects_kept},
                     {"objects_left_out", space_stats.worker_objects_left_out}};
+                j["workers"]["teams"] = space_stats.teams;
                 if (!space_stats.worker_cores.empty())
                     j["workers"]["cores"] = space_stats.worker_cores;
             }

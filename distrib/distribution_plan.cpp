@@ -425,12 +425,22 @@ DistributionPlan plan_distribution(const Scene& scene,
     plan.threads = request.threads > 0
                        ? request.threads
                        : int(std::max(1u, std::thread::hardware_concurrency()));
-    plan.worker_memory = request.worker_memory;
-    if (plan.worker_memory == 0) {
-        long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-        plan.worker_memory =
-            pages > 0 && page > 0 ? size_t(pages) * size_t(page) / 2 : size_t(1) << 31;
+    if (request.teams > 1) {
+        const int given = request.workers > 0 ? request.workers : request.procs;
+        if (request.boxes.empty() || given <= 0 || request.mode == RenderMode::Single ||
+            request.mode == RenderMode::Screen)
+            throw DistributionError("--teams needs --boxes and --procs or --workers");
+        if (request.teams > 1 && given % request.teams != 0)
+            throw DistributionError("--teams " + std::to_string(request.teams) +
+                                    " does not divide the " + std::to_string(given) +
+                                    " workers into equal teams");
     }
+    plan.worker_memory = request.worker_memory;
+    size_t machine_half = size_t(1) << 31;
+    if (long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+        pages > 0 && page > 0)
+        machine_half = size_t(pages) * size_t(page) / 2;
+    if (plan.worker_memory == 0) plan.worker_memory = machine_half;
     ObjectSizes sizes;
     for (const Object& o : scene.objects) {
         sizes.bounds.push_back(trace::object_world_bounds(o));
@@ -481,9 +491,13 @@ DistributionPlan plan_distribution(const Scene& scene,
     const bool workers_can_fit = plan.worker_memory > empty_worker;
     // Local worker processes for these boxes: `given`, else the fewest (at most one box
     // each, at most kMaxAutoWorkers) whose largest worker fits; false when none fits.
+    // Teams (SpaceOptions::teams): each of `teams` groups of the workers hosts every box;
+    // a team's `team_size` workers share the boxes out.
+    int teams = 1;
+    auto team_size = [&] { return given > 0 ? given / teams : 0; };
     auto fit_workers = [&](const Overlaps& ov) {
         // Below an empty worker no count fits: one per core then.
-        int k = given > 0         ? given
+        int k = given > 0         ? team_size()
                 : workers_can_fit ? 1
                                   : std::min(ov.boxes, plan.threads);
         plan.largest_worker_bytes =
@@ -494,7 +508,7 @@ DistributionPlan plan_distribution(const Scene& scene,
             plan.largest_worker_bytes =
                 largest_worker(sizes, ov, ++k, request.pixels, request.threads);
         }
-        plan.procs = request.workers > 0 ? 0 : k;
+        plan.procs = request.workers > 0 ? 0 : given > 0 ? given : k;
         return plan.largest_worker_bytes <= plan.worker_memory;
     };
     auto over_processes = [&](const Overlaps& ov) {
@@ -509,8 +523,11 @@ DistributionPlan plan_distribution(const Scene& scene,
         const int k = request.workers > 0 ? request.workers : plan.procs;
         std::string text = " over " + std::to_string(k) +
                            (request.workers > 0 ? " running" : "") + " worker process" +
-                           (k == 1 ? "" : "es") + ", largest worker " +
-                           format_bytes(plan.largest_worker_bytes);
+                           (k == 1 ? "" : "es");
+        if (teams > 1)
+            text += " in " + std::to_string(teams) + " teams of " +
+                    std::to_string(team_size()) + " (each team hosts every box)";
+        text += ", largest worker " + format_bytes(plan.largest_worker_bytes);
         if (!workers_can_fit)
             text +=
                 " (over budget: a worker alone needs " + format_bytes(empty_worker) + ")";
@@ -520,20 +537,51 @@ DistributionPlan plan_distribution(const Scene& scene,
         return text;
     };
     if (!request.boxes.empty()) {
-        plan.space = parse_boxes(request.boxes);
+        // Walls and owners for the current team size; for --teams auto, the most teams
+        // (of at least 2 workers, so the scene stays cut between processes) whose
+        // largest worker fits the budget.
+        std::vector<int> candidates;
+        if (request.teams == 0) {
+            for (int t = given / 2; t >= 1; --t)
+                if (given % t == 0) candidates.push_back(t);
+            if (candidates.empty()) candidates.push_back(1);
+        } else {
+            candidates.push_back(std::max(1, request.teams));
+        }
         std::string traffic;
-        if (request.boxes == "auto" && given > 1)
-            traffic = walls_by_traffic(scene, sizes.bounds, request, given, plan.space);
-        const VirtualWalls walls = walls_for(sizes.bounds, plan.space);
-        // Only local processes that outnumber the cores: they take turns on them, so
-        // what they do in all counts, not how it is shared out. Where each has a core
-        // (or a host) of its own, the cuts across the view share the picture out
-        // evenly; the least crossed cut may not (2x2x2 over 2 processes on 2 cores:
-        // 0.77 s cut across the view, 0.89 s cut along it, the least crossed).
+        VirtualWalls walls;
+        Overlaps ov;
         const int cores = request.cores > 0 ? request.cores : available_cores();
         const bool crowded = request.workers == 0 && given > cores;
-        if (request.boxes != "auto" && crowded)
-            traffic = owners_by_traffic(scene, walls, request, given, plan.space);
+        for (int t : candidates) {
+            teams = t;
+            plan.space = parse_boxes(request.boxes);
+            plan.space.teams = teams;
+            traffic.clear();
+            if (request.boxes == "auto" && team_size() > 1)
+                traffic = walls_by_traffic(scene, sizes.bounds, request, team_size(),
+                                           plan.space);
+            walls = walls_for(sizes.bounds, plan.space);
+            // Only local processes that outnumber the cores: they take turns on them, so
+            // what they do in all counts, not how it is shared out. Where each has a
+            // core (or a host) of its own, the cuts across the view share the picture
+            // out evenly; the least crossed cut may not (2x2x2 over 2 processes on 2
+            // cores: 0.77 s cut across the view, 0.89 s cut along it, the least
+            // crossed).
+            if (request.boxes != "auto" && crowded)
+                traffic =
+                    owners_by_traffic(scene, walls, request, team_size(), plan.space);
+            ov = overlaps_of(sizes, walls, scene.camera.direction);
+            ov.grid = plan.space.process_grid;
+            if (request.teams != 0 || t == candidates.back()) break;
+            // Each worker within the budget, and local workers together within half of
+            // this machine's memory (each team holds the whole scene).
+            const size_t largest =
+                largest_worker(sizes, ov, team_size(), request.pixels, request.threads);
+            if (largest <= plan.worker_memory &&
+                (request.workers > 0 || largest * size_t(given) <= machine_half))
+                break;
+        }
         if (crowded && request.keep_on_cores && cores > 1 &&
             given <= kMaxProcessesOnCores) {
             plan.space.keep_on_cores = cores;
@@ -543,8 +591,6 @@ DistributionPlan plan_distribution(const Scene& scene,
                 std::to_string(cores) +
                 " cores, its measured work balanced, with those it sends most rays";
         }
-        Overlaps ov = overlaps_of(sizes, walls, scene.camera.direction);
-        ov.grid = plan.space.process_grid;
         plan.largest_box_bytes = largest_box(sizes, ov);
         const auto& b = plan.space.boxes;
         plan.reasons.push_back(

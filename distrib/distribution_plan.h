@@ -36,6 +36,11 @@ struct DistributionRequest {
     // Local processes that outnumber the cores: each kept on one (SpaceOptions::
     // keep_on_cores).
     bool keep_on_cores = true;
+    // Teams of workers that each host every box (SpaceOptions::teams); 0: auto, the most
+    // teams of at least 2 workers whose largest worker fits the budget (local workers:
+    // all of them within half of this machine's memory). More than 1 needs --boxes and
+    // workers.
+    int teams = 1;
     size_t pixels = 0;          // image width x height (worker accumulators)
     int width = 0, height = 0;  // the image (the pilot of --boxes auto over workers)
 };

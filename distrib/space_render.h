@@ -50,6 +50,11 @@ struct SpaceOptions {
     // the image is out, the coordinator keeps each on one of them by the work and the
     // traffic it has measured (core_groups). 0: the system places them.
     int keep_on_cores = 0;
+    // Worker processes in this many teams, each team hosting every box (its workers
+    // share them out as box_owners says), camera ranges handed to the teams in turn: a
+    // ray then crosses only the walls between the processes of one team. Each worker
+    // holds more of the scene, and rays between processes fall (--teams).
+    int teams = 1;
 };
 
 struct BoxStats {
@@ -79,6 +84,7 @@ struct SpaceStats {
     // Local workers kept on cores (SpaceOptions::keep_on_cores): each one's core
     // group; empty when the system placed them.
     std::vector<int> worker_cores;
+    int teams = 1;  // SpaceOptions::teams as used (fewer after a lost worker)
 };
 
 using trace::shading_is_linear;  // trace/render_plan.h

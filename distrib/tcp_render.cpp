@@ -761,12 +761,17 @@ class Worker {
         peers_.resize(addresses.size());
         for (size_t i = 0; i < addresses.size(); ++i)
             outboxes_.push_back(std::make_unique<Outbox>());
+        // Only the workers of its team (those its owner table names) get its rays.
+        std::vector<uint8_t> needed(addresses.size(), 0);
+        for (int o : owner_)
+            if (o >= 0 && size_t(o) < needed.size()) needed[size_t(o)] = 1;
         int to_connect = 0;
-        for (size_t i = 0; i < addresses.size(); ++i) to_connect += int(i) != self_;
+        for (size_t i = 0; i < addresses.size(); ++i)
+            to_connect += int(i) != self_ && needed[i];
         auto remaining = std::make_shared<int>(to_connect);
         if (to_connect == 0) coordinator_->send(control_frame(ready_message()));
         for (size_t i = 0; i < addresses.size(); ++i) {
-            if (int(i) == self_) continue;
+            if (int(i) == self_ || !needed[i]) continue;
             auto socket = std::make_shared<tcp::socket>(io_);
             tcp::endpoint ep;
             try {
@@ -1447,6 +1452,7 @@ class TcpCoordinator {
         }
         empty_.assign(boxes, 1);
         box_stats_ = emitter_->box_stats();
+        for (BoxStats& b : box_stats_) b = BoxStats{.region = b.region};  // the workers'
         created_ = 0;
         pixels_emitted_ = 0;
         next_range_ = 0;
@@ -1486,6 +1492,7 @@ class TcpCoordinator {
                 stats->worker_objects_left_out.push_back(w.objects_left_out);
             }
             stats->worker_cores = worker_cores_;
+            stats->teams = teams_;
             stats->seconds = std::chrono::duration<double>(Clock::now() - t0).count();
         }
         return image;
@@ -1496,9 +1503,7 @@ class TcpCoordinator {
     // BoxHost::build_boxes), ascending.
     std::vector<std::vector<uint32_t>> objects_of_workers() const {
         const VirtualWalls& walls = emitter_walls_;
-        const size_t workers =
-            owner_.empty() ? 0
-                           : size_t(*std::max_element(owner_.begin(), owner_.end())) + 1;
+        const size_t workers = size_t(team_size_);
         std::vector<std::vector<uint32_t>> objects(workers);
         for (size_t i = 0; i < scene_->objects.size(); ++i) {
             for (int b : walls.boxes_overlapping(
@@ -1509,7 +1514,16 @@ class TcpCoordinator {
                     objects[w].push_back(uint32_t(i));
             }
         }
+        // Worker t * team_size_ + k hosts the boxes of the team's k.
+        for (int t = 1; t < teams_; ++t)
+            for (size_t k = 0; k < workers; ++k) objects.push_back(objects[k]);
         return objects;
+    }
+    // The owner table team `t`'s workers route by (worker indices among all).
+    std::vector<int> owners_of_team(int t) const {
+        std::vector<int> owners = owner_;
+        for (int& o : owners) o += t * team_size_;
+        return owners;
     }
     // How many of the scene's objects each worker will keep, so it can reserve its
     // object list.
@@ -1542,7 +1556,11 @@ class TcpCoordinator {
         // Walls stay for the whole sequence: the outer boxes are unbounded, so any
         // frame's objects fall in some box; only the balance may drift.
         emitter_walls_ = emitter_->walls();
-        owner_ = box_owners(emitter_walls_.slabs(), n, scene_->camera.direction,
+        // Teams that divide the workers (after a lost worker, fewer may).
+        teams_ = std::clamp(options_->teams, 1, n);
+        while (n % teams_ != 0) --teams_;
+        team_size_ = n / teams_;
+        owner_ = box_owners(emitter_walls_.slabs(), team_size_, scene_->camera.direction,
                             options_->process_grid);
         // Before any fork: forked workers take their objects from these lists.
         worker_objects_ = objects_of_workers();
@@ -1586,7 +1604,6 @@ class TcpCoordinator {
         job["animation"] = animation_values(source);
         job["walls"] = std::array<std::vector<Real>, 3>{
             emitter_walls_.walls(0), emitter_walls_.walls(1), emitter_walls_.walls(2)};
-        job["owner"] = owner_;
         job["workers"] = addresses;
         job["plan"] = plan_to_json(emitter_->plan());
         job["expected_objects"] = expected;
@@ -1603,6 +1620,7 @@ class TcpCoordinator {
             // image sums took 10 ms before the first job left).
             if (!ec) {
                 job["index"] = i;
+                job["owner"] = owners_of_team(i / team_size_);
                 const Buffer hello =
                     control_frame({{"type", "hello"}, {"token", token}, {"from", -1}});
                 const Buffer work = control_frame(job);
@@ -1626,10 +1644,11 @@ class TcpCoordinator {
     std::string describe(int i) const {
         std::string list;
         int count = 0;
+        const int k = i % team_size_;  // its boxes: those of its place in its team
         for (size_t b = 0; b < owner_.size(); ++b) {
-            if (owner_[b] != i || (b > 0 && owner_[b - 1] == i)) continue;
+            if (owner_[b] != k || (b > 0 && owner_[b - 1] == k)) continue;
             size_t last = b;
-            while (last + 1 < owner_.size() && owner_[last + 1] == i) ++last;
+            while (last + 1 < owner_.size() && owner_[last + 1] == k) ++last;
             if (!list.empty()) list += ", ";
             list += std::to_string(b);
             if (last > b) list += "-" + std::to_string(last);
@@ -1743,16 +1762,24 @@ class TcpCoordinator {
             const json& boxes = j.at("stats");
             size_t k = 0;
             for (size_t b = 0; b < owner_.size(); ++b) {
-                if (owner_[b] != i || k >= boxes.size()) continue;
+                if (owner_[b] != i % team_size_ || k >= boxes.size()) continue;
                 const json& s = boxes[k++];
+                // Every team hosts the box: the counts and times of its copies add up,
+                // the peaks are the largest copy's.
                 BoxStats& out = box_stats_[b];
-                out.objects = s[0], out.resident_bytes = s[1], out.camera = s[2];
-                out.reflected = s[3], out.refracted = s[4], out.shadow = s[5];
-                out.rays_received = s[6], out.results_received = s[7],
-                out.messages_sent = s[8];
-                out.peak_queue = s[9], out.peak_parents = s[10], out.busy_seconds = s[11];
-                out.messages_received = s[12], out.bytes_sent = s[13];
-                out.bytes_received = s[14], out.idle_seconds = s[15];
+                out.objects = s[0], out.resident_bytes = s[1];
+                out.camera += s[2].get<uint64_t>(), out.reflected += s[3].get<uint64_t>();
+                out.refracted += s[4].get<uint64_t>(), out.shadow += s[5].get<uint64_t>();
+                out.rays_received += s[6].get<uint64_t>();
+                out.results_received += s[7].get<uint64_t>();
+                out.messages_sent += s[8].get<uint64_t>();
+                out.peak_queue = std::max(out.peak_queue, s[9].get<size_t>());
+                out.peak_parents = std::max(out.peak_parents, s[10].get<size_t>());
+                out.busy_seconds += s[11].get<double>();
+                out.messages_received += s[12].get<uint64_t>();
+                out.bytes_sent += s[13].get<uint64_t>();
+                out.bytes_received += s[14].get<uint64_t>();
+                out.idle_seconds += s[15].get<double>();
             }
             w.peak_resident = j.value("peak_resident", uint64_t(0));
             w.done = true;
@@ -1810,7 +1837,10 @@ class TcpCoordinator {
             const int end = std::min(total, begin + kRange);
             Item item;
             const int box = emitter_->camera_item((begin + end) / 2, item);
-            WorkerState& w = workers_[size_t(box >= 0 ? owner_[size_t(box)] : 0)];
+            // The teams in turn: a team traces its rays' whole paths.
+            const int team = next_range_ % teams_;
+            WorkerState& w = workers_[size_t(team * team_size_ +
+                                             (box >= 0 ? owner_[size_t(box)] : 0))];
             w.conn->send(
                 control_frame({{"type", "pixels"}, {"begin", begin}, {"end", end}}));
             w.pixels_sent += uint64_t(end - begin);
@@ -1910,7 +1940,10 @@ class TcpCoordinator {
     VirtualWalls emitter_walls_;
     std::vector<LocalWorker> local_;
     std::vector<WorkerState> workers_;
+    // Which worker of a team hosts each box (an index within the team); worker
+    // t * team_size_ + k is team t's k (SpaceOptions::teams).
     std::vector<int> owner_;
+    int teams_ = 1, team_size_ = 1;
     long wave_seq_ = 0;
     int frames_ = 0;
     bool forked_ = false;  // the local workers were forked (else executed, or none)

@@ -341,5 +341,64 @@ TEST(DistributionPlan, CoreGroupsBalanceTheWorkThenCutTheLeastTraffic) {
             .empty());
 }
 
+// --teams auto: the most teams of 2 or more workers whose largest worker fits the budget.
+TEST(DistributionPlan, TeamsAutoTakesTheMostTeamsWhoseWorkersFit) {
+    Scene scene = parse(R"(
+camera { location <0, 2, -30> look_at <0, 0, 0> }
+light_source { <0, 30, -30> color rgb 1 }
+#declare I = 0;
+#while (I < 4000)
+  sphere { <-20 + mod(I, 400) * 0.1, int(I / 400) * 0.5, 0>, 0.05 pigment { rgb 1 } }
+  #declare I = I + 1;
+#end
+)");
+    DistributionRequest request;
+    request.boxes = "8x1x1";
+    request.workers = 8;  // running workers: no core placement, no machine total
+    request.worker_memory = size_t(1) << 34;
+    auto planned = [&](int teams, size_t memory) {
+        request.teams = teams;
+        request.worker_memory = memory;
+        return plan_distribution(scene, request);
+    };
+    const DistributionPlan four = planned(4, size_t(1) << 34);
+    const DistributionPlan two = planned(2, size_t(1) << 34);
+    const DistributionPlan one = planned(1, size_t(1) << 34);
+    EXPECT_EQ(four.space.teams, 4);
+    EXPECT_EQ(one.space.teams, 1);
+    // A worker of a team of 2 holds half the spheres, of 4 a quarter, of 8 an eighth.
+    ASSERT_GT(four.largest_worker_bytes, two.largest_worker_bytes);
+    ASSERT_GT(two.largest_worker_bytes, one.largest_worker_bytes);
+
+    EXPECT_EQ(planned(0, size_t(1) << 34).space.teams, 4);
+    EXPECT_EQ(planned(0, four.largest_worker_bytes).space.teams, 4);
+    EXPECT_EQ(planned(0, four.largest_worker_bytes - 1).space.teams, 2);
+    EXPECT_EQ(planned(0, two.largest_worker_bytes - 1).space.teams, 1);
+    const DistributionPlan tight = planned(0, one.largest_worker_bytes - 1);
+    EXPECT_EQ(tight.space.teams, 1);  // none fits: one team, said over budget
+    ASSERT_FALSE(tight.reasons.empty());
+    EXPECT_NE(tight.reasons.back().find("over budget"), std::string::npos)
+        << tight.reasons.back();
+    const DistributionPlan chosen = planned(0, two.largest_worker_bytes);
+    EXPECT_EQ(chosen.space.teams, 2);
+    EXPECT_NE(
+        chosen.reasons.back().find("over 8 running worker processes in 2 teams of 4 "
+                                   "(each team hosts every box)"),
+        std::string::npos)
+        << chosen.reasons.back();
+
+    // Fewer workers than two teams of 2, or none: one team.
+    request.workers = 3;
+    EXPECT_EQ(planned(0, size_t(1) << 34).space.teams, 1);
+    request.workers = 0;
+    request.procs = 0;
+    EXPECT_EQ(planned(0, size_t(1) << 34).space.teams, 1);
+    // A count that does not divide the workers, or no workers to make teams of.
+    request.workers = 8;
+    EXPECT_THROW(planned(3, size_t(1) << 34), DistributionError);
+    request.workers = 0;
+    EXPECT_THROW(planned(2, size_t(1) << 34), DistributionError);
+}
+
 }  // namespace
 }  // namespace povwall::distrib

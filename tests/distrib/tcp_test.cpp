@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <string>
@@ -29,6 +30,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using json = nlohmann::json;
 
 fs::path scratch() {
     fs::path d =
@@ -199,9 +201,10 @@ TEST(Tcp, WorkersKeepOnlyTheObjectsOfTheirBoxesAndTheImageIsUnchanged) {
         SCOPED_TRACE(start);
         const fs::path stats = scratch() / "left_shadows.json";
         const std::string out = (scratch() / "left_shadows.exr").string();
+        // One team: each worker hosts one box (teams are the next test's).
         const RunResult r = run("render " + scene.string() + " -W 64 -H 48 -q -o " + out +
-                                " --boxes 4x1x1 --procs 4 --worker-start " + start +
-                                " --stats " + stats.string());
+                                " --boxes 4x1x1 --procs 4 --teams 1 --worker-start " +
+                                start + " --stats " + stats.string());
         ASSERT_EQ(r.code, 0) << r.err;
         std::ifstream in(stats);
         const std::string text{std::istreambuf_iterator<char>(in), {}};
@@ -254,6 +257,56 @@ TEST(Tcp, WorkersKeepOnlyTheObjectsOfTheirBoxesAndTheImageIsUnchanged) {
         EXPECT_GT(sum("bytes_received"), sum("bytes_sent"));
         EXPECT_GT(sum("idle_seconds") + sum("busy_seconds"), 0);
     }
+}
+
+// Teams: 4 workers in 2 teams of 2; each team hosts all 4 boxes, its first worker boxes
+// 0-1 and its second boxes 2-3, and the teams take the camera ranges in turn.
+TEST(Tcp, TeamsEachHostEveryBoxAndTheImageIsUnchanged) {
+    fs::path scene = scratch() / "left_shadows.pov";
+    std::ofstream(scene) << kLeftShadowsScene;
+    expect_same_images(scene.string(), "-W 64 -H 48",
+                       {"--boxes 4x1x1 --procs 4 --teams 2",
+                        "--boxes 4x1x1 --procs 4 --teams 2 --results parents",
+                        "--boxes 4x1x1 --procs 4 --teams 2 --worker-start exec",
+                        "--boxes 4x1x1 --procs 4 --teams 4"});
+    const fs::path stats = scratch() / "teams.json";
+    const std::string out = (scratch() / "teams.exr").string();
+    const RunResult r =
+        run("render " + scene.string() + " -W 64 -H 48 -q -o " + out +
+            " --boxes 4x1x1 --procs 4 --teams 2 --stats " + stats.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::ifstream in(stats);
+    const json j = json::parse(in);
+    EXPECT_EQ(j.at("workers").at("teams"), 2);
+    // Boxes 0 and 1 hold the sphere columns at x = -7 ... -3.4 (40 spheres) and the
+    // floor; boxes 2 and 3 the floor, the glass and the box (see the test above).
+    EXPECT_EQ(j.at("workers").at("objects_kept"), (std::vector<long>{41, 3, 41, 3}));
+    // A box's counts add over the teams hosting it: every pixel's camera ray once.
+    uint64_t camera = 0, objects = 0;
+    for (const json& b : j.at("boxes")) {
+        camera += b.at("rays").at("camera").get<uint64_t>();
+        objects += b.at("objects").get<uint64_t>();
+    }
+    EXPECT_EQ(camera, 64u * 48u);
+    EXPECT_EQ(objects, 33u + 17u + 1u + 3u);
+}
+
+TEST(Tcp, TeamsAreCheckedAgainstTheWorkers) {
+    const std::string scene = POVWALL_DEMO_SCENE;
+    const std::string out = (scratch() / "teams_bad.png").string();
+    RunResult r = run("render " + scene + " -W 8 -H 6 -q -o " + out +
+                      " --boxes 2x2x2 --procs 4 --teams 3");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(
+        r.err.find("error: --teams 3 does not divide the 4 workers into equal teams"),
+        std::string::npos)
+        << r.err;
+    r = run("render " + scene + " -W 8 -H 6 -q -o " + out + " --teams 2");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("error: --teams needs --boxes and --procs or --workers"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(out));
 }
 
 // Two boxes split at x = 0; the camera stands in the left one (x < 0) and looks across
