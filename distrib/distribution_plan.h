@@ -87,7 +87,7 @@ std::string format_bytes(size_t bytes);
 // The longest side is cut first; among equal sides, the one most across the `view`
 // direction, so each process gets a part of the picture (cutting along the view puts
 // the front boxes, which most rays reach, on one process). More workers than boxes:
-// some host none.
+// some host none (teams, SpaceOptions::teams, put such workers to use).
 // With `grid` (px x py x pz = workers, each at most the slabs on its axis) the blocks are
 // that grid's instead: blocks chosen by the pilot's ray traffic (SpaceOptions::
 // process_grid). Any other `grid` is ignored.
