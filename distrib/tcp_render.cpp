@@ -727,6 +727,10 @@ class Worker {
             inline_ = threads_ == 1;
             if (inline_) {
                 host_->begin_run(1);
+                // Peers that started first may have sent items already (another
+                // connection: no order with this message); they wait in the inboxes, and
+                // this worker may get nothing else to wake it (a team without pixels).
+                schedule_drain();
             } else {
                 render_ = std::thread([this] { host_->run(threads_, false); });
             }
@@ -1736,7 +1740,23 @@ class TcpCoordinator {
             started_ = true;
             measure_for_cores();
             const json start = {{"type", "start"}, {"reach", reach_to_json(reach)}};
-            for (WorkerState& o : workers_) o.conn->send(control_frame(start));
+            // For the tests: POVWALL_FAULT_LATE_START="I,MS" sends worker I its start MS
+            // milliseconds after the others, so that its peers' items come first.
+            int late = -1, late_ms = 0;
+            if (const char* spec = std::getenv("POVWALL_FAULT_LATE_START"))
+                if (std::sscanf(spec, "%d,%d", &late, &late_ms) != 2) late = -1;
+            for (size_t k = 0; k < workers_.size(); ++k) {
+                if (int(k) != late) {
+                    workers_[k].conn->send(control_frame(start));
+                    continue;
+                }
+                auto timer = std::make_shared<asio::steady_timer>(
+                    io_, std::chrono::milliseconds(late_ms));
+                timer->async_wait([this, timer, k, frame = control_frame(start)](
+                                      boost::system::error_code ec) {
+                    if (!ec && in_frame_) workers_[k].conn->send(frame);
+                });
+            }
             emit();
         } else if (type == "status") {
             w.created = j.at("created").get<uint64_t>();

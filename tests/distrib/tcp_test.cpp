@@ -291,6 +291,32 @@ TEST(Tcp, TeamsEachHostEveryBoxAndTheImageIsUnchanged) {
     EXPECT_EQ(objects, 33u + 17u + 1u + 3u);
 }
 
+// A worker's start comes on the coordinator's connection, its peers' items on theirs: no
+// order between them. Items that came first waited in the inboxes of a worker that traced
+// on its io thread, and a worker given nothing after its start (a team without pixels,
+// or a tiny image) never traced them: the render hung. Here each worker in turn gets its
+// start 300 ms after the others.
+TEST(Tcp, ItemsThatComeBeforeTheStartAreTraced) {
+    fs::path scene = scratch() / "left_shadows.pov";
+    std::ofstream(scene) << kLeftShadowsScene;
+    const std::string ref = (scratch() / "late_ref.exr").string();
+    ASSERT_EQ(run("render " + scene.string() + " -W 8 -H 6 -q -o " + ref).code, 0);
+    for (const std::string teams : {"1", "2"}) {
+        for (int late = 0; late < 4; ++late) {
+            SCOPED_TRACE("teams " + teams + ", late worker " + std::to_string(late));
+            const std::string out = (scratch() / "late.exr").string();
+            fs::remove(out);
+            const std::string cmd =
+                "POVWALL_FAULT_LATE_START=" + std::to_string(late) + ",300 timeout 60 " +
+                POVWALL_BINARY + " render " + scene.string() + " -W 8 -H 6 -q -o " + out +
+                " --boxes 4x1x1 --procs 4 --teams " + teams + " 2>/dev/null";
+            const int status = std::system(cmd.c_str());
+            ASSERT_EQ(WEXITSTATUS(status), 0) << "124: it hung";
+            EXPECT_LE(rmse(ref, out), 1e-6);
+        }
+    }
+}
+
 TEST(Tcp, TeamsAreCheckedAgainstTheWorkers) {
     const std::string scene = POVWALL_DEMO_SCENE;
     const std::string out = (scratch() / "teams_bad.png").string();
