@@ -243,14 +243,16 @@ RenderPlan make_render_plan(const Scene& scene, bool everything_on) {
     plan.refraction_rays = everything_on || refracting;
 
     // Who can cast a shadow: top-level objects without no_shadow (looks_like objects
-    // never do). None, or one convex surface that is the whole scene: no shadow ray can
-    // be blocked.
+    // never do). None, or one opaque convex surface that is the whole scene: no shadow
+    // ray can be blocked. (A transparent one shadows the points inside it: its far side
+    // is lit through its near side.)
     size_t casters = 0;
     for (const Object& o : scene.objects) casters += o.no_shadow ? 0 : 1;
     size_t looks_like = 0;
     for (const Light& l : scene.lights) looks_like += l.looks_like.size();
     const bool lone_convex = scene.objects.size() == 1 && looks_like == 0 &&
-                             casters == 1 && convex_surface(scene.objects[0]);
+                             casters == 1 && !transparent &&
+                             convex_surface(scene.objects[0]);
     for (const Light& l : scene.lights) {
         LightPlan lp;
         if (l.shadowless) {
