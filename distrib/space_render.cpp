@@ -207,6 +207,7 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
         box->stats.region = walls_.box_bounds(b);
         if (host[b]) {
             box->scene = std::make_unique<trace::PreparedScene>(scene_, local[b], &plan_);
+            box->scene->set_alpha_background(settings_.alpha);
             box->stats.objects = local[b].size();
             box->stats.resident_bytes = box->scene->resident_bytes();
             if (box->scene->primitive_count() == 0) reach_[b] = Bounds3{};
