@@ -46,6 +46,8 @@ struct RenderOptions {
         bool fraction = false;
     } start_row, end_row, start_col, end_col;
     std::map<std::string, double> declares;
+    // +MV / Version=: the language version the scene starts under (times 100).
+    std::optional<int> language_version;
     // POV-Ray's animation options (+KFI +KFF +KI +KF +KC +SF +EF, Initial_Frame=...) and
     // the clock of a still image (+K).
     struct Animation {

@@ -110,6 +110,10 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
         o.start_col = partial(arg);
     } else if (starts_with_ci(arg, 1, "EC")) {
         o.end_col = partial(arg);
+    } else if (starts_with_ci(arg, 1, "MV")) {
+        // As POV-Ray: the version times 100, rounded, kept within 1.0 .. 100.
+        const double v = number(arg, arg.substr(3));
+        o.language_version = std::clamp(int(v * 100.0 + 0.5), 100, 10000);
     } else if (starts_with_ci(arg, 1, "GA") || starts_with_ci(arg, 1, "GD") ||
                starts_with_ci(arg, 1, "GF") || starts_with_ci(arg, 1, "GR") ||
                starts_with_ci(arg, 1, "GS") || starts_with_ci(arg, 1, "GW")) {

@@ -65,6 +65,10 @@ std::vector<std::string> tile_worker_command(const RenderOptions& o) {
         cmd.push_back("Declare=" + name + "=" + buf);
     }
     if (o.render.alpha) cmd.push_back("+UA");
+    if (o.language_version)
+        cmd.push_back("+MV" + std::to_string(*o.language_version / 100) + "." +
+                      std::to_string(*o.language_version % 100 / 10) +
+                      std::to_string(*o.language_version % 10));
     if (o.max_trace_level)
         cmd.push_back("--max-trace-level=" + std::to_string(*o.max_trace_level));
     if (o.adc_bailout) {
@@ -167,6 +171,7 @@ int run_render(RenderOptions o) {
     popts.image_width = o.width;
     popts.image_height = o.height;
     popts.declares = o.declares;
+    popts.language_version = o.language_version;
     popts.image_reader = output::read_stored_image;
     popts.function_hooks = trace::parse_time_function_hooks();
     popts.initial_frame = o.animation.initial_frame;
@@ -276,6 +281,7 @@ int run_render(RenderOptions o) {
             source.display_name = o.scene;
             source.library_paths = o.library_paths;
             source.declares = o.declares;
+            source.language_version = o.language_version;
             source.clock = popts.clock, source.clock_delta = popts.clock_delta;
             source.initial_clock = popts.initial_clock,
             source.final_clock = popts.final_clock;

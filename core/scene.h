@@ -375,14 +375,26 @@ struct Fog {
 
 struct SkySphere {
     std::vector<Pigment> pigments;  // layered, first on top
+    Rgb emission{1.0f};             // scales the pigments' colour
     Transform transform;
+};
+
+// POV-Ray 3.7's gamma modes (its gammaMode), decided by #version and assumed_gamma as
+// the parse goes: how image files are decoded while parsing and whether the output is
+// encoded at all.
+enum class GammaMode : uint8_t {
+    None,       // no assumed_gamma, effective version below 3.7: no gamma handling
+    Assumed36,  // assumed_gamma given while the effective version was below 3.7
+    Assumed37,  // assumed_gamma given in a 3.7 scene
+    Implied37,  // a 3.7 scene without assumed_gamma: working gamma 1.0
 };
 
 struct GlobalSettings {
     int max_trace_level = 5;
     float adc_bailout = 1.0f / 255.0f;
     Rgb ambient_light{1.0f};
-    std::optional<float> assumed_gamma;  // absent: legacy rules depend on #version
+    std::optional<float> assumed_gamma;  // absent: Scene::gamma_mode decides
+    // Absent from the scene, it follows the final #version: 1 below 3.5, else 2.
     int noise_generator = 2;
     int max_intersections = 64;
     Rgb irid_wavelength{0.25f, 0.18f, 0.14f};
@@ -397,6 +409,9 @@ struct Scene {
     std::vector<Object> objects;
     std::vector<Light> lights;
     Colour background{Rgb{0.0f}, 0.0f, 1.0f};  // default: black, fully transparent in +UA
+    // The background statement came while the effective version was below 3.7: POV-Ray
+    // then drops its filter and takes its transmit from +UA alone.
+    bool background_legacy = false;
     std::optional<SkySphere> sky_sphere;
     std::vector<Fog> fogs;
     GlobalSettings settings;
@@ -412,13 +427,14 @@ struct Scene {
     bool objects_filtered() const {
         return objects_left_out > 0 || !object_first_node.empty();
     }
-    // Effective #version at the end of parsing, times 100 (e.g. 362, 370).
+    // POV-Ray's effective language version at the end of parsing, times 100 (e.g. 362,
+    // 370): the #version in force then, or 362 for a scene that never set one (+MV sets
+    // one too). What the `version` identifier reads is the parser's business.
     int language_version = 362;
     bool version_set = false;
+    GammaMode gamma_mode = GammaMode::None;
     // Whether output colours are gamma-encoded (3.7 rules) or written raw (legacy).
-    bool gamma_handling() const {
-        return assumed_gamma_given() || language_version >= 370;
-    }
+    bool gamma_handling() const { return gamma_mode != GammaMode::None; }
     bool assumed_gamma_given() const { return settings.assumed_gamma.has_value(); }
 };
 

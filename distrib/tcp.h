@@ -30,6 +30,7 @@ struct SceneSource {
     std::string display_name;  // its path: diagnostics and relative includes
     std::vector<std::string> library_paths;
     std::map<std::string, double> declares;
+    std::optional<int> language_version;  // +MV (ParseOptions::language_version)
     // Animation values the language exposes (clock, frame_number, ...).
     double clock = 0, clock_delta = 0, initial_clock = 0, final_clock = 0;
     int frame_number = 0, initial_frame = 1, final_frame = 1;

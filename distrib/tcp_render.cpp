@@ -865,6 +865,8 @@ class Worker {
         popts.write_user_files = false;  // the coordinator's parse writes them
         popts.library_paths = j.at("library_paths").get<std::vector<std::string>>();
         popts.declares = j.at("declares").get<std::map<std::string, double>>();
+        if (!j.at("language_version").is_null())
+            popts.language_version = j.at("language_version").get<int>();
         const json& anim = j.at("animation");
         popts.clock = anim.at(0), popts.clock_delta = anim.at(1);
         popts.initial_clock = anim.at(2), popts.final_clock = anim.at(3);
@@ -1353,6 +1355,8 @@ json fixed_job(const SceneSource& source, const trace::RenderSettings& settings,
             {"name", source.display_name},
             {"library_paths", source.library_paths},
             {"declares", source.declares},
+            {"language_version",
+             source.language_version ? json(*source.language_version) : json()},
             {"max_loop_iterations", source.max_loop_iterations},
             {"max_trace_level",
              source.max_trace_level ? json(*source.max_trace_level) : json()},

@@ -79,10 +79,16 @@ void Interpreter::run_directive(const Token& t) {
     if (d == "macro") return directive_macro(t);
     if (d == "include") return directive_include(t);
     if (d == "version") {
-        double v = parse_float();
+        if (is_word(peek(), "unofficial")) {
+            const Token w = next();
+            unsupported(w, is_word(peek(), "megapov")
+                               ? "MegaPOV scene"
+                               : "scene for an unofficial POV-Ray");
+        }
+        const Token at = peek();
+        const double v = parse_float();
         accept_semicolon();
-        version_ = int(std::lround(v * 100));
-        version_set_ = true;
+        set_version(at, int(v * 100 + 0.5));
         return;
     }
     if (d == "undef") {
@@ -577,10 +583,6 @@ void Interpreter::directive_include(const Token& t) {
                        &sources_.file(index).tokens});
 }
 
-}  // namespace povwall::parser
-
-namespace povwall::parser {
-
 // #default { texture {...} | pigment {...} | finish {...} | normal {...} }: what later
 // textures start from.
 void Interpreter::directive_default() {
@@ -601,6 +603,40 @@ void Interpreter::directive_default() {
             expected("texture, pigment, finish or normal in #default", t);
         }
     }
+}
+
+void Interpreter::set_version(const Token& at, int version) {
+    if (version > 370) {
+        unsupported(at, "#version " + std::to_string(version / 100) + "." +
+                            std::to_string(version % 100 / 10) +
+                            " (povwall renders POV-Ray 3.7 scenes)");
+    }
+    version_ = version;
+    version_set_ = true;
+    // POV-Ray updates its gamma mode at once: image files read later in the parse are
+    // decoded by it.
+    const bool modern = effective_version() >= 370;
+    if (gamma_mode_ == GammaMode::Assumed36 || gamma_mode_ == GammaMode::Assumed37)
+        gamma_mode_ = modern ? GammaMode::Assumed37 : GammaMode::Assumed36;
+    else
+        gamma_mode_ = modern ? GammaMode::Implied37 : GammaMode::None;
+}
+
+void Interpreter::finish_version_state() {
+    if (!noise_generator_given_) scene_.settings.noise_generator = version_ < 350 ? 1 : 2;
+    if (gamma_mode_ != GammaMode::Assumed36 && gamma_mode_ != GammaMode::Assumed37)
+        gamma_mode_ = effective_version() < 370 ? GammaMode::None : GammaMode::Implied37;
+    // A version given with +MV / Version= of 3.7 or more turns output gamma on even when
+    // the scene ends as a legacy one (POV-Ray's front end does).
+    if (gamma_mode_ == GammaMode::None && options_.language_version &&
+        *options_.language_version >= 370)
+        gamma_mode_ = GammaMode::Implied37;
+    // Scenes that end below 3.5 are raised to it once parsed (POV-Ray warns that 3.1's
+    // bugs are not reproduced).
+    if (version_ < 350) version_ = 350;
+    scene_.language_version = effective_version();
+    scene_.version_set = version_set_;
+    scene_.gamma_mode = gamma_mode_;
 }
 
 }  // namespace povwall::parser

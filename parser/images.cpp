@@ -102,16 +102,15 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         } catch (const std::exception& e) {
             error(name_token, e.what());
         }
-        // POV-Ray 3.7's gamma modes: legacy scenes (#version < 3.7, no assumed_gamma)
-        // read images raw; 3.6 scenes with assumed_gamma take files to be in the working
-        // gamma; 3.7 scenes decode with the file type's gamma. bump_map reads raw unless
-        // a gamma is given (POV-Ray treats its data as heights, not colours).
-        const bool assumed = scene_.settings.assumed_gamma.has_value();
+        // POV-Ray 3.7's gamma modes, as the parse has them when the file is read:
+        // legacy scenes (no assumed_gamma, effective version < 3.7) read images raw; 3.6
+        // scenes with assumed_gamma take files to be in the working gamma; 3.7 scenes
+        // decode with the file type's gamma. bump_map reads raw unless a gamma is given
+        // (POV-Ray treats its data as heights, not colours).
         const float working = scene_.settings.assumed_gamma.value_or(1.0f);
-        const bool legacy = version_ < 370 && !assumed;
-        bool correct = !legacy && !is_bump;
+        bool correct = gamma_mode_ != GammaMode::None && !is_bump;
         std::optional<Curve> fallback;  // POV-Ray's options.defaultGamma
-        if (correct && version_ < 370) fallback = power(working);
+        if (correct && gamma_mode_ == GammaMode::Assumed36) fallback = power(working);
         if (explicit_gamma) {
             correct = true;
             fallback = explicit_gamma;

@@ -172,7 +172,8 @@ class Interpreter {
     double draw_random(int stream, const Token& at);
 
     const ParseOptions& options() const { return options_; }
-    int language_version() const { return version_; }
+    int language_version() const { return version_; }  // what `version` reads
+    int effective_version() const { return version_set_ ? version_ : 362; }
     Texture default_texture() const { return default_texture_; }
 
   private:
@@ -262,8 +263,17 @@ class Interpreter {
     void check_parse_limits(const Token& at);            // time and memory
     uint64_t resident_at_start_ = 0, memory_limit_ = 0;  // bytes; limit 0: none
     std::vector<std::unique_ptr<RandomStream>> streams_;
-    int version_ = 362;
+    // POV-Ray's version state (its languageVersion and languageVersionSet): `version`
+    // reads version_, 3.7 until a #version (or +MV) sets it; what must stay compatible
+    // with older scenes asks effective_version(), which is 3.62 until then. Standard
+    // includes save `version` and restore it with #version, so a scene without one
+    // leaves colors.inc as an explicit 3.7 scene.
+    int version_ = 370;
     bool version_set_ = false;
+    GammaMode gamma_mode_ = GammaMode::None;  // as the parse has it so far
+    bool noise_generator_given_ = false;
+    void set_version(const Token& at, int version);
+    void finish_version_state();  // POV-Ray's end-of-parse adjustments
     int macro_depth_ = 0;
     // Expressions, objects and patterns inside each other (parentheses, vectors, CSG,
     // pigment maps, an object in an expression through a loop that never closes it):

@@ -557,6 +557,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
             expect_punct('}', "after the background colour");
             scene_.background = Colour(Rgb(float(c.c[0]), float(c.c[1]), float(c.c[2])),
                                        float(c.c[3]), float(c.c[4]));
+            scene_.background_legacy = effective_version() < 370;
             return;
         }
         if (w == "global_settings") {

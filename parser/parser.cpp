@@ -100,6 +100,10 @@ Scene Interpreter::run(int root_file) {
     stack_floor_ = stack_floor();
     scene_dir_ =
         std::filesystem::path(sources_.file(root_file).path).parent_path().string();
+    if (options_.language_version) {  // +MV / Version=: as a #version before the scene
+        version_ = *options_.language_version;
+        version_set_ = true;
+    }
     scopes_.emplace_back();  // global #declare table
     for (const auto& [name, value] : options_.declares) {
         bind(scopes_[0], sources_.intern(name)).value = Numeric::scalar(value);
@@ -125,8 +129,7 @@ Scene Interpreter::run(int root_file) {
         scene_.files.push_back(sources_.file(i).path);
     // Image files after the sources (SourceLoc indexes only the sources).
     for (const auto& f : image_files_) scene_.files.push_back(f);
-    scene_.language_version = version_;
-    scene_.version_set = version_set_;
+    finish_version_state();
     return std::move(scene_);
 }
 

@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -26,6 +27,9 @@ struct ParseOptions {
     double initial_clock = 0.0, final_clock = 0.0;
     double clock_delta = 0.0;  // clock step between frames (0 for a still image)
     std::map<std::string, double> declares;  // Declare=NAME=value from the command line
+    // The language version given with +MV / Version= (times 100): the scene starts as if
+    // it began with that #version. Absent: POV-Ray's default state (parser/README.md).
+    std::optional<int> language_version;
     // Where #debug/#warning/#render text goes (POV-Ray's console streams); null:
     // discarded.
     std::ostream* messages = nullptr;

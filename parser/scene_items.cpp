@@ -276,7 +276,15 @@ void Interpreter::parse_global_settings() {
         if (w == "assumed_gamma") {
             Token at = peek();
             if (is_word(at, "srgb")) unsupported(at, "assumed_gamma srgb");
-            g.assumed_gamma = float(parse_float());
+            const float gamma = float(parse_float());
+            if (gamma_mode_ == GammaMode::Assumed36 ||
+                gamma_mode_ == GammaMode::Assumed37) {
+                warn(t, "new instance of assumed_gamma ignored");  // as POV-Ray
+            } else {
+                gamma_mode_ = effective_version() < 370 ? GammaMode::Assumed36
+                                                        : GammaMode::Assumed37;
+                g.assumed_gamma = gamma;
+            }
         } else if (w == "max_trace_level") {
             int n = parse_int();
             g.max_trace_level = std::min(256, std::max(1, n));
@@ -286,6 +294,7 @@ void Interpreter::parse_global_settings() {
             g.ambient_light = parse_colour_value().rgb;
         } else if (w == "noise_generator") {
             g.noise_generator = parse_int();
+            noise_generator_given_ = true;
         } else if (w == "max_intersections") {
             g.max_intersections = parse_int();
         } else if (w == "number_of_waves") {
@@ -327,7 +336,7 @@ SkySphere Interpreter::parse_sky_sphere() {
         if (is_word(t, "pigment")) {
             sky.pigments.push_back(parse_pigment_block());
         } else if (is_word(t, "emission")) {
-            parse_colour();
+            sky.emission = parse_colour_value().rgb;
         } else {
             expected("a pigment or '}' in sky_sphere", t);
         }

@@ -6,9 +6,12 @@
 namespace povwall::parser {
 namespace {
 
-float srgb_to_linear(double v) {
+// An sRGB-encoded value in the working gamma (POV-Ray's workingGammaToSRGB->Decode):
+// to linear, then to `working`'s power curve. Negative values mirror.
+float srgb_to_working(double v, float working) {
     double a = std::fabs(v);
     double r = a <= 0.04045 ? a / 12.92 : std::pow((a + 0.055) / 1.055, 2.4);
+    if (working != 1.0f) r = std::pow(r, 1.0 / working);
     return float(v < 0 ? -r : r);
 }
 
@@ -68,13 +71,21 @@ Numeric Interpreter::parse_colour() {
     c.colour = true;
     bool any = false;
     if (is_word(peek(), "color") || is_word(peek(), "colour")) next();
+    // sRGB forms decode into the working gamma, which only assumed_gamma sets.
+    auto decode_srgb = [&](double v) {
+        return srgb_to_working(v, *scene_.settings.assumed_gamma);
+    };
+    auto check_srgb = [&](const Token& form) {
+        if (form.text[0] == 's' && !scene_.settings.assumed_gamma)
+            error(form, "cannot read sRGB colours before assumed_gamma has been set");
+    };
     auto set = [&](const Numeric& v, int count, bool srgb) {
         Numeric p = v;
         if (p.size == 1) {
             for (int i = 1; i < 5; ++i) p.c[i] = p.c[0];
         }
         for (int i = 0; i < count; ++i) {
-            c.c[i] = (srgb && i < 3) ? srgb_to_linear(p.c[i]) : p.c[i];
+            c.c[i] = (srgb && i < 3) ? decode_srgb(p.c[i]) : p.c[i];
         }
     };
     for (;;) {
@@ -84,6 +95,7 @@ Numeric Interpreter::parse_colour() {
         bool form = w == "rgb" || w == "srgb" || w == "rgbf" || w == "srgbf" ||
                     w == "rgbt" || w == "srgbt" || w == "rgbft" || w == "srgbft";
         if (form && any) break;
+        if (form) check_srgb(t);
         if (w == "rgb" || w == "srgb") {
             next();
             set(parse_express(), 3, w == "srgb");
@@ -98,7 +110,7 @@ Numeric Interpreter::parse_colour() {
                 for (int i = 1; i < 5; ++i) p.c[i] = p.c[0];
             }
             for (int i = 0; i < 3; ++i)
-                c.c[i] = w == "srgbt" ? srgb_to_linear(p.c[i]) : p.c[i];
+                c.c[i] = w == "srgbt" ? decode_srgb(p.c[i]) : p.c[i];
             c.c[4] = p.c[3];
         } else if (w == "rgbft" || w == "srgbft") {
             next();

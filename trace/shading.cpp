@@ -671,7 +671,18 @@ TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
     const bool sky = sc.sky_sphere && !sc.sky_sphere->pigments.empty();
     Point3 p;
     if (sky) p = sc.sky_sphere->transform.inverse_point(ray.direction);
+    // The background as POV-Ray stores it when it parses the statement: a legacy one
+    // loses its filter and takes its transmit from +UA; a 3.7 one without +UA is
+    // composed over black then (a transmit of 0.6 keeps 0.4 of the colour).
     Colour bg = sc.background;
+    if (sc.background_legacy) {
+        bg.filter = 0;
+        bg.transmit = alpha ? 1.0f : 0.0f;
+    } else if (!alpha) {
+        bg.rgb *= 1 - bg.transmit;
+        bg.filter = bg.transmit = 0;
+    }
+    const Rgb emission = sky ? sc.sky_sphere->emission : Rgb(1.0f);
     if (sc.language_version < 370) {
         // Legacy: full transparency with alpha; else the 3.6 compositing.
         if (alpha) return fogged(sc, ray, {Rgb{}, 1.0f});
@@ -687,6 +698,7 @@ TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
             ft *= c.transmit;
             trans = std::fabs(ff) + std::fabs(ft);
         }
+        col *= emission;
         return fogged(sc, ray, {col + bg.rgb * (fil * ff + Rgb(ft)), 0.0f});
     }
     Rgb col, fil(1.0f);
@@ -694,13 +706,12 @@ TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
         for (auto it = sc.sky_sphere->pigments.rbegin();
              it != sc.sky_sphere->pigments.rend(); ++it) {
             Colour c = evaluate_pigment(*it, p, scene.pattern_env());
-            col += c.rgb * (1 - c.filter - c.transmit) * fil;
+            col += c.rgb * (1 - c.filter - c.transmit) * fil * emission;
             fil *= rgb_transm(c);
         }
     }
-    // The background acts as one more uniform layer. Measured with POV-Ray 3.7.0.10: its
-    // transmit darkens it even without +UA (background rgbt <0.9,0.9,0.1,0.6> renders
-    // 0.36), as if composited over black.
+    // The background is one more uniform layer (its filter and transmit are 0 without
+    // +UA, see above).
     col += bg.rgb * (1 - bg.filter - bg.transmit) * fil;
     fil *= rgb_transm(bg);
     return fogged(sc, ray, {col, std::min(1.0f, std::fabs(fil.grey()))});
