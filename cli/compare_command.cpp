@@ -109,15 +109,19 @@ int run_compare(int argc, char** argv) {
     std::string our_png = (dir / (stem + "-povwall.png")).string();
     std::string log = (dir / (stem + "-povray.log")).string();
 
-    std::vector<std::string>
-        extra;  // partial renders: POV-Ray writes the full-size image
-    for (const auto& sw : pov_switches) {
-        std::string head = sw.substr(1, 2);
-        for (char& c : head) c = char(std::toupper((unsigned char)c));
-        if (head == "SR" || head == "ER" || head == "SC" || head == "EC")
-            extra.push_back(sw);
+    // An animation is compared on its first frame (of the subset): both renderers
+    // render that one frame with the animation's clock and frame values, and write it
+    // under POV-Ray's numbered name.
+    std::string pov_image = pov_png, our_image = our_png;
+    if (const std::vector<Frame> frames = animation_frames(o); !frames.empty()) {
+        o.animation.subset_start = o.animation.subset_end = frames.front().number;
+        RenderOptions named = o;
+        named.output = pov_png;
+        pov_image = animation_frames(named).front().output;
+        named.output = our_png;
+        our_image = animation_frames(named).front().output;
     }
-    const std::vector<std::string> cmd = povray_command(o, pov_png, threads, extra);
+    const std::vector<std::string> cmd = povray_command(o, pov_png, threads);
     const PovrayRun pov = run_povray(o, cmd, cache, log);
     switch (pov.status) {
         case PovrayRun::Status::Ok:
@@ -128,10 +132,14 @@ int run_compare(int argc, char** argv) {
             return 77;  // CTest's skip code
         case PovrayRun::Status::SceneError:
             return 2;
-        case PovrayRun::Status::Failed:
-            std::cerr << "povwall: error: povray failed (exit " << pov.exit_code << ")\n"
-                      << pov.log;
+        case PovrayRun::Status::Failed: {
+            // Its error line first; the whole log only when it names none.
+            const std::string message = povray_error_lines(pov.log);
+            std::cerr << "povwall: error: povray failed (exit " << pov.exit_code << ")"
+                      << (message.empty() ? "\n" + pov.log : ": " + message + "\n");
+            if (!keep.empty()) std::cerr << "povwall: povray's log: " << log << "\n";
             return 2;
+        }
     }
     const bool from_cache = pov.cached;
     const std::string cached = cache;
@@ -147,7 +155,8 @@ int run_compare(int argc, char** argv) {
     double our_s = std::chrono::duration<double>(t3 - t2).count();
     output::DiffResult r;
     try {
-        Image ours = output::read_image(our_png), theirs = output::read_image(pov_png);
+        Image ours = output::read_image(our_image),
+              theirs = output::read_image(pov_image);
         r = output::diff_images(ours, theirs, t);
         if (!keep.empty() && r.status != output::DiffResult::Status::SizeMismatch) {
             OutputEncoding raw;  // |povwall - povray| as values, for looking at

@@ -1,5 +1,6 @@
 #include "cli/povray_reference.h"
 
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -34,6 +35,7 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
     popts.image_width = o.width;
     popts.image_height = o.height;
     popts.declares = o.declares;
+    popts.language_version = o.language_version;
     popts.write_user_files = false;  // only reads which files the scene uses
     popts.function_hooks = trace::parse_time_function_hooks();
     Scene scene;
@@ -72,6 +74,13 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
     return buf;
 }
 
+// The shortest text that reads back as `v` exactly.
+std::string shortest(double v) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+
 }  // namespace
 
 std::vector<std::string> povray_command(const RenderOptions& o,
@@ -101,16 +110,38 @@ std::vector<std::string> povray_command(const RenderOptions& o,
         cmd.push_back("-A");
     }
     if (o.render.alpha) cmd.push_back("+UA");
+    // Every other setting that changes the image, as povwall has it from its switches
+    // and .ini files.
+    if (o.language_version) cmd.push_back("+MV" + shortest(*o.language_version / 100.0));
+    auto partial = [&](const char* sw, const RenderOptions::Partial& p) {
+        if (p.value < 0) return;
+        std::string v = shortest(p.value);
+        if (p.fraction && v.find('.') == std::string::npos) v += ".0";
+        cmd.push_back(std::string("+") + sw + v);
+    };
+    partial("SR", o.start_row);
+    partial("ER", o.end_row);
+    partial("SC", o.start_col);
+    partial("EC", o.end_col);
+    const RenderOptions::Animation& a = o.animation;
+    if (a.final_frame > a.initial_frame) {
+        cmd.push_back("+KFI" + std::to_string(a.initial_frame));
+        cmd.push_back("+KFF" + std::to_string(a.final_frame));
+        cmd.push_back("+KI" + shortest(a.initial_clock));
+        cmd.push_back("+KF" + shortest(a.final_clock));
+        if (a.cyclic) cmd.push_back("+KC");
+        if (a.subset_start > 0) cmd.push_back("+SF" + std::to_string(a.subset_start));
+        if (a.subset_end > 0) cmd.push_back("+EF" + std::to_string(a.subset_end));
+    } else if (a.clock != 0) {
+        cmd.push_back("+K" + shortest(a.clock));
+    }
     for (const auto& sw : extra) cmd.push_back(sw);
     std::string scene_dir = fs::path(o.scene).parent_path().string();
     cmd.push_back("+L" + (scene_dir.empty() ? std::string(".") : scene_dir));
     for (const auto& l : o.library_paths) cmd.push_back("+L" + l);
     cmd.push_back("+L/usr/share/povray-3.7/include");
-    for (const auto& [k, v] : o.declares) {
-        std::ostringstream d;
-        d << "Declare=" << k << "=" << v;
-        cmd.push_back(d.str());
-    }
+    for (const auto& [k, v] : o.declares)
+        cmd.push_back("Declare=" + k + "=" + shortest(v));
     return cmd;
 }
 
@@ -118,7 +149,13 @@ PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd
                      const std::string& cache_dir, const std::string& log_path,
                      double timeout_seconds) {
     PovrayRun run;
-    const std::string out_png = cmd.at(2).substr(2);
+    std::string out_png = cmd.at(2).substr(2);
+    {  // an animation's one frame is written under its frame-numbered name
+        RenderOptions named = o;
+        named.output = out_png;
+        if (const std::vector<Frame> frames = animation_frames(named); !frames.empty())
+            out_png = frames.front().output;
+    }
     std::string cached;
     if (!cache_dir.empty()) {
         std::string key = cache_key(o, cmd);
@@ -168,6 +205,27 @@ PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd
         fs::rename(tmp, cached);
     }
     return run;
+}
+
+std::string povray_error_lines(const std::string& log) {
+    // POV-Ray wraps a message over lines that start with a space; the message ends
+    // where its "Fatal error ..." or "Render failed" summary begins.
+    std::istringstream in(log);
+    std::string line, message;
+    bool in_message = false;
+    while (std::getline(in, line)) {
+        const bool summary =
+            line.rfind("Fatal error", 0) == 0 || line.rfind("Render failed", 0) == 0;
+        if (in_message) {
+            if (summary || line.empty() || line[0] != ' ') break;
+            message += line;
+        } else if (!summary && (line.find("Error") != std::string::npos ||
+                                line.find("error:") != std::string::npos)) {
+            message = line;
+            in_message = true;
+        }
+    }
+    return message;
 }
 
 }  // namespace povwall::cli

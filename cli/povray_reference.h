@@ -11,8 +11,9 @@
 namespace povwall::cli {
 
 // The povray command that renders `o` (size, anti-aliasing, alpha, partial render,
-// include folders, declares) into the PNG `out_png` with `threads` threads (0: all
-// cores). `extra` switches (+SR..., +MV...) are appended as given.
+// language version, animation or clock, include folders, declares) into the PNG
+// `out_png` (numbered per frame for an animation, as POV-Ray numbers them) with
+// `threads` threads (0: all cores). `extra` switches are appended as given.
 std::vector<std::string> povray_command(const RenderOptions& o,
                                         const std::string& out_png, int threads,
                                         const std::vector<std::string>& extra = {});
@@ -35,5 +36,9 @@ struct PovrayRun {
 PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd,
                      const std::string& cache_dir, const std::string& log_path,
                      double timeout_seconds = 0);
+
+// The error message of a failed POV-Ray run, unwrapped onto one line ("File 'x.pov'
+// line 3: Parse Error: ..."), or empty when its log names none.
+std::string povray_error_lines(const std::string& log);
 
 }  // namespace povwall::cli

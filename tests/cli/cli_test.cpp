@@ -381,9 +381,33 @@ TEST(Cli, CompareReportsPovRayFailure) {
         write_scene("cmpbad.pov", "sphere { 0, 1 pigment { colr rgb 1 } }\n");
     RunResult r = run("compare " + scene.string() + " -W 8 -H 8 --threads 1");
     EXPECT_EQ(r.code, 2);
-    EXPECT_EQ(r.err.rfind("povwall: error: povray failed (exit ", 0), 0u) << r.err;
-    EXPECT_NE(r.err.find("Parse Error"), std::string::npos)
-        << r.err;  // povray's own text
+    // POV-Ray's error line first, unwrapped, not its whole log.
+    EXPECT_EQ(r.err, "povwall: error: povray failed (exit 1): File '" + scene.string() +
+                         "' line 1: Parse Error: No matching } in 'pigment', undeclared "
+                         "identifier 'colr' found instead\n");
+}
+
+// Every switch that changes the image reaches both renderers: here the version (+MV),
+// the clock of an animation's frame and a Declare; an animation is compared on its first
+// frame, under POV-Ray's numbered name.
+TEST(Cli, CompareGivesPovRayTheSameVersionClockAndDeclares) {
+    if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
+    fs::path scene = write_scene("cmpanim.pov", R"(
+camera { location <0, 0, -3> look_at 0 }
+light_source { <2, 3, -4> color rgb 1 }
+sphere { <clock * 2 - 1, 0, 0>, 0.5 + Extra pigment { rgbf <1, 0.5, 0.2, 0.5> } }
+)");
+    fs::path keep = scratch() / "keepanim";
+    fs::remove_all(keep);
+    RunResult r = run("compare " + scene.string() +
+                      " -W 32 -H 24 --threads 1 --json +MV3.7 Declare=Extra=0.25 +KFI1 "
+                      "+KFF4 +KI0 +KF0.75 +SF3 --keep " +
+                      keep.string());
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["rmse"].get<double>(), 0.0) << r.out;
+    for (const char* f : {"cmpanim-povray3.png", "cmpanim-povwall3.png"})
+        EXPECT_TRUE(fs::exists(keep / f)) << f;
+    EXPECT_FALSE(fs::exists(keep / "cmpanim-povray4.png"));
 }
 
 }  // namespace
