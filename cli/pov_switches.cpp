@@ -158,21 +158,24 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
                     if (v2.size() > 1) o.bits = int(number(arg, v2.substr(1)));
                 }
                 break;
-            case 'D':
-            case 'V':
-            case 'P':
-            case 'X':
-            case 'Q':
-            case 'B':
             case 'C':
                 o.continue_trace = on;
+                break;
+            case 'Q':
+                // POV-Ray's quality level; it treats anything above 9 as 9.
+                o.render.quality = std::clamp(int(number(arg, v2)), 0, 9);
                 break;
             case 'K':
                 if (!v2.empty()) o.animation.clock = number(arg, v2);
                 break;
+            case 'D':
+            case 'V':
+            case 'P':
+            case 'X':
+            case 'B':
             case 'M':
-                break;  // display, verbosity, pause, quality, buffers: no effect on the
-                        // image
+                break;  // display, verbosity, pause, abort, buffers, bounding: no
+                        // effect on the image
             default:
                 return false;
         }

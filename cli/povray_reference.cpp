@@ -110,6 +110,7 @@ std::vector<std::string> povray_command(const RenderOptions& o,
         cmd.push_back("-A");
     }
     if (o.render.alpha) cmd.push_back("+UA");
+    if (o.render.quality != 9) cmd.push_back("+Q" + std::to_string(o.render.quality));
     // Every other setting that changes the image, as povwall has it from its switches
     // and .ini files.
     if (o.language_version) cmd.push_back("+MV" + shortest(*o.language_version / 100.0));

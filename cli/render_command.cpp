@@ -16,6 +16,7 @@
 #include "distrib/distribution_plan.h"
 #include "distrib/screen_render.h"
 #include "distrib/space_render.h"
+#include "distrib/stats_json.h"
 #include "distrib/tcp.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
@@ -65,6 +66,7 @@ std::vector<std::string> tile_worker_command(const RenderOptions& o) {
         cmd.push_back("Declare=" + name + "=" + buf);
     }
     if (o.render.alpha) cmd.push_back("+UA");
+    cmd.push_back("+Q" + std::to_string(o.render.quality));
     if (o.language_version)
         cmd.push_back("+MV" + std::to_string(*o.language_version / 100) + "." +
                       std::to_string(*o.language_version % 100 / 10) +
@@ -246,7 +248,7 @@ int run_render(RenderOptions o) {
     }
     if (o.explain) {
         const trace::RenderPlan plan =
-            trace::make_render_plan(scene, o.render.plan_everything_on);
+            trace::make_render_plan(scene, o.render.plan_everything_on, o.render.quality);
         std::printf("render plan for %s:\n", o.scene.c_str());
         for (const auto& line : trace::explain_plan(plan, scene))
             std::printf("  %s\n", line.c_str());
@@ -344,12 +346,7 @@ int run_render(RenderOptions o) {
             image = distrib::render_space(scene, o.render, space, &space_stats);
         }
         stats.trace_seconds = space_stats.seconds;
-        for (const auto& b : space_stats.boxes) {
-            stats.camera_rays += b.camera;
-            stats.reflected_rays += b.reflected;
-            stats.refracted_rays += b.refracted;
-            stats.shadow_rays += b.shadow;
-        }
+        for (const auto& b : space_stats.boxes) stats.rays += b.rays;
     } else if (dplan.mode == distrib::RenderMode::Screen) {
         if (o.render.antialias)
             throw UsageError("anti-aliasing is not available with --mode screen yet");
@@ -365,10 +362,7 @@ int run_render(RenderOptions o) {
             return 2;
         }
         stats.trace_seconds = screen_stats.seconds;
-        stats.camera_rays = screen_stats.camera;
-        stats.reflected_rays = screen_stats.reflected;
-        stats.refracted_rays = screen_stats.refracted;
-        stats.shadow_rays = screen_stats.shadow;
+        stats.rays = screen_stats.rays;
     } else {
         image = trace::render_scene(scene, o.render, &stats);
     }
@@ -401,14 +395,11 @@ int run_render(RenderOptions o) {
                         {"prepare", stats.prepare_seconds},
                         {"trace", stats.trace_seconds},
                         {"total", total_s}};
-        j["rays"] = {{"camera", stats.camera_rays},
-                     {"reflected", stats.reflected_rays},
-                     {"refracted", stats.refracted_rays},
-                     {"shadow", stats.shadow_rays}};
+        j["rays"] = distrib::rays_json(stats.rays);
         j["intersection_tests"] = stats.intersection_tests;
         // What the plan left out, with the counters that show it cost nothing.
         const trace::RenderPlan plan =
-            trace::make_render_plan(scene, o.render.plan_everything_on);
+            trace::make_render_plan(scene, o.render.plan_everything_on, o.render.quality);
         nlohmann::json lights = nlohmann::json::array();
         for (const auto& l : plan.lights)
             lights.push_back({{"shadow_rays", l.shadow_rays}, {"why", l.reason}});
@@ -439,29 +430,11 @@ int run_render(RenderOptions o) {
                 auto lim = [](double v) {
                     return std::isinf(v) ? nlohmann::json(nullptr) : nlohmann::json(v);
                 };
-                boxes.push_back(
-                    {{"region",
-                      {{"lo",
-                        {lim(b.region.lo.x), lim(b.region.lo.y), lim(b.region.lo.z)}},
-                       {"hi",
-                        {lim(b.region.hi.x), lim(b.region.hi.y), lim(b.region.hi.z)}}}},
-                     {"objects", b.objects},
-                     {"resident_bytes", b.resident_bytes},
-                     {"rays",
-                      {{"camera", b.camera},
-                       {"reflected", b.reflected},
-                       {"refracted", b.refracted},
-                       {"shadow", b.shadow}}},
-                     {"rays_received", b.rays_received},
-                     {"results_received", b.results_received},
-                     {"messages_sent", b.messages_sent},
-                     {"messages_received", b.messages_received},
-                     {"bytes_sent", b.bytes_sent},
-                     {"bytes_received", b.bytes_received},
-                     {"peak_queue", b.peak_queue},
-                     {"peak_waiting_parents", b.peak_parents},
-                     {"busy_seconds", b.busy_seconds},
-                     {"idle_seconds", b.idle_seconds}});
+                nlohmann::json box = distrib::box_stats_json(b);
+                box["region"] = {
+                    {"lo", {lim(b.region.lo.x), lim(b.region.lo.y), lim(b.region.lo.z)}},
+                    {"hi", {lim(b.region.hi.x), lim(b.region.hi.y), lim(b.region.hi.z)}}};
+                boxes.push_back(std::move(box));
             }
             j["boxes"] = boxes;
             if (worker_frames > 0) {

@@ -180,6 +180,7 @@ struct Finish {
     Rgb ambient{0.1f};
     Rgb emission{0.0f};
     float diffuse = 0.6f, brilliance = 1.0f, crand = 0.0f;
+    float diffuse_back = 0.0f;  // `diffuse a, b`: light arriving from behind the surface
     float phong = 0.0f, phong_size = 40.0f;
     float specular = 0.0f, roughness = 0.05f;
     float metallic = 0.0f;
@@ -189,6 +190,9 @@ struct Finish {
     bool reflection_fresnel = false;
     bool conserve_energy = false;
     float irid = 0.0f, irid_thickness = 0.0f, irid_turbulence = 0.0f;
+    // POV-Ray's old `finish { ior, caustics, refraction }`: moved into the object's
+    // interior when the object is placed (ior and caustics negative: not given).
+    float legacy_ior = -1.0f, legacy_caustics = -1.0f, legacy_refraction = 1.0f;
     bool operator==(const Finish&) const = default;
 };
 
@@ -215,11 +219,20 @@ using LayeredTexture = std::vector<Texture>;  // layers, bottom first
 
 struct Interior {
     float ior = 1.0f;
-    float caustics = 0.0f;
+    float caustics = 0.0f;  // faked caustics, as POV-Ray stores it (interior{}: x45)
     float dispersion = 1.0f;
     int dispersion_samples = 7;
     float fade_distance = 0.0f, fade_power = 0.0f;
     Rgb fade_colour{0.0f};
+    float old_refract = 1.0f;  // `refraction`: scales what passes each surface
+    // Fog and media fill it (POV-Ray keeps `hollow` in the interior, which its sharers
+    // set in turn as they are placed).
+    bool hollow = false;
+    // Which interior this is. As POV-Ray shares one interior between a CSG and the
+    // children without their own, so that a ray leaving one of them leaves all, objects
+    // that share one carry the same id; object{} copies get their own. The parser numbers
+    // them when it places an object in the scene (0: not numbered).
+    uint32_t id = 0;
 };
 
 // ---------------------------------------------------------------- shapes (object space)
@@ -303,6 +316,7 @@ struct Object {
     HeapOptional<Interior> interior;
     bool inverse = false;
     bool hollow = false;
+    bool hollow_given = false;  // `hollow` was written on it (a CSG's then leaves it)
     bool no_shadow = false, no_image = false, no_reflection = false;
     bool double_illuminate = false;
     HeapValue<std::vector<Object>> clipped_by;
@@ -328,6 +342,9 @@ struct Light {
     Real radius = 30, falloff = 45, tightness = 0;  // spot/cylinder (degrees)
     Real fade_distance = 0, fade_power = 0;
     bool shadowless = false;
+    // A parallel spotlight: light from point_at's direction at full strength, only in
+    // front of the light (a parallel point light is Kind::Parallel).
+    bool parallel = false;
     bool media_interaction = true, media_attenuation = false;
     std::optional<AreaLight> area;
     std::vector<Object> looks_like;  // rendered as an object with no shadow

@@ -17,6 +17,7 @@
 #include "core/scene.h"
 #include "distrib/parent_table.h"
 #include "distrib/space_render.h"
+#include "trace/camera_interiors.h"
 #include "trace/prepared_scene.h"
 #include "trace/render_plan.h"
 #include "trace/shading.h"
@@ -235,6 +236,7 @@ class BoxHost {
     const trace::RenderSettings& settings_;
     const SpaceOptions& options_;
     trace::RenderPlan plan_;  // made once; every box's local scene follows it
+    trace::CameraInteriors camera_interiors_;  // what camera rays start inside of
     bool parents_ = false;
     // Threads trace in a box at once (forward contributions, direct hand-over on).
     bool shared_boxes_ = false;

@@ -37,8 +37,8 @@ struct TileRequest {
 struct TileReply {
     uint32_t magic = kReplyMagic;
     int32_t x0 = 0, y0 = 0, x1 = 0,
-            y1 = 0;  // all zero: "ready" after preparing the scene
-    uint64_t camera = 0, reflected = 0, refracted = 0, shadow = 0;
+            y1 = 0;             // all zero: "ready" after preparing the scene
+    trace::TraceCounters rays;  // cumulative for the worker
 };
 
 // Moves all n bytes with ::read or ::write, retrying short transfers and EINTR; false on
@@ -238,7 +238,7 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
         };
         read_reply(ready);  // the scene is parsed and prepared
         bool ok = st == ReadStatus::Ok && ready.magic == kReplyMagic;
-        uint64_t counts[4] = {0, 0, 0, 0};
+        trace::TraceCounters counts;  // the worker's, as last reported
         int t = -1;
         while (ok && (t = pool.take()) >= 0) {
             TileRequest rq;
@@ -271,16 +271,10 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
                             size_t(tw) * 4 * sizeof(float));
             }
             if (settings.progress) {
-                const uint64_t rays =
-                    reply.camera + reply.reflected + reply.refracted + reply.shadow;
-                settings.progress->rays +=
-                    rays - (counts[0] + counts[1] + counts[2] + counts[3]);
+                settings.progress->rays += reply.rays.rays() - counts.rays();
                 settings.progress->pixels_done += uint64_t(tw) * (rq.y1 - rq.y0);
             }
-            counts[0] = reply.camera;  // counters are cumulative per worker
-            counts[1] = reply.reflected;
-            counts[2] = reply.refracted;
-            counts[3] = reply.shadow;
+            counts = reply.rays;  // counters are cumulative per worker
             ++local.tiles_per_worker[wi];
             pool.done();
         }
@@ -294,10 +288,7 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
         close(w.to);
         close(w.from);
         std::lock_guard<std::mutex> lock(mutex);
-        local.camera += counts[0];
-        local.reflected += counts[1];
-        local.refracted += counts[2];
-        local.shadow += counts[3];
+        local.rays += counts;
         if (!ok) {
             char seconds[32];
             std::snprintf(seconds, sizeof seconds, "%g", options.heartbeat_timeout);
@@ -427,11 +418,7 @@ int serve_tiles(const std::function<Scene()>& load_scene,
         reply.y0 = rq.y0;
         reply.x1 = rq.x1;
         reply.y1 = rq.y1;
-        const trace::TraceCounters& c = renderer.counters();
-        reply.camera = c.camera;
-        reply.reflected = c.reflected;
-        reply.refracted = c.refracted;
-        reply.shadow = c.shadow;
+        reply.rays = renderer.counters();
         if (!write_all(out_fd, &reply, sizeof reply) ||
             !write_all(out_fd, pixels.data(), pixels.size() * sizeof(float)))
             return 1;

@@ -16,6 +16,7 @@
 #include "core/image.h"
 #include "core/scene.h"
 #include "trace/render.h"
+#include "trace/tracer.h"
 
 namespace povwall::distrib {
 
@@ -35,7 +36,7 @@ struct ScreenOptions {
 struct ScreenStats {
     int tiles = 0;
     std::vector<int> tiles_per_worker;
-    uint64_t camera = 0, reflected = 0, refracted = 0, shadow = 0;
+    trace::TraceCounters rays;
     double seconds = 0;
 };
 

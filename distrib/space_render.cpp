@@ -49,7 +49,10 @@ BoxHost::BoxHost(const Scene& scene, const trace::RenderSettings& settings,
     : scene_(scene),
       settings_(settings),
       options_(options),
-      plan_(plan ? *plan : trace::make_render_plan(scene, settings.plan_everything_on)) {
+      plan_(plan ? *plan
+                 : trace::make_render_plan(scene, settings.plan_everything_on,
+                                           settings.quality)),
+      camera_interiors_(scene) {
     parents_ = options.results == SpaceOptions::Results::Parents ||
                (options.results == SpaceOptions::Results::Auto && plan_.parent_tracking);
     shared_boxes_ = !parents_ && options.direct_handoff;
@@ -424,27 +427,15 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
             if (leave(next)) continue;
             return;
         }
+        Box::Lane& here = lane(box);
         // A refused ray is black and opaque (max_trace_level, adc_bailout).
-        if (ray.trace.depth > g.max_trace_level || ray.trace.weight < g.adc_bailout) {
+        if (trace::refuse_ray(ray.trace, g, here.stats.rays)) {
             deliver(box, ray, {}, thread);
             return;
         }
-        Box::Lane& here = lane(box);
         if (!ray.counted) {
             ray.counted = true;
-            switch (ray.trace.use) {
-                case trace::RayUse::Camera:
-                    ++here.stats.camera;
-                    break;
-                case trace::RayUse::Reflection:
-                    ++here.stats.reflected;
-                    break;
-                case trace::RayUse::Refraction:
-                    ++here.stats.refracted;
-                    break;
-                case trace::RayUse::Shadow:
-                    break;
-            }
+            trace::count_ray(ray.trace, here.stats.rays);
         }
         trace::Hit hit;
         if (!box.scene->closest_hit(ray.trace.ray, ray.t_from, seg.t_exit, ray.trace.use,
@@ -507,7 +498,7 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
                 deliver(box, child, {Rgb(1.0f), 0}, thread);
                 continue;
             }
-            if (child.shadow) ++here.stats.shadow;
+            if (child.shadow) ++here.stats.rays.shadow;
             const int dest = enter(child.trace.ray, 0, child.route_walk);
             child.route_box = dest;
             push(&box, std::max(dest, 0), std::move(child_item));
@@ -539,6 +530,7 @@ int BoxHost::camera_item(int pixel, Item& item) const {
                                                settings_.width, settings_.height);
     if (!ray) return -1;  // nothing seen there (fisheye corners): the pixel stays black
     r.trace.ray = *ray;
+    camera_interiors_.seed(r.trace.ray.origin, r.trace.interiors);
     r.pixel = pixel;
     const int box = enter(r.trace.ray, 0, r.route_walk);
     r.route_box = box;
@@ -771,8 +763,7 @@ std::vector<BoxStats> BoxHost::box_stats() const {
         BoxStats st = b->stats;
         for (const Box::Lane& l : b->lanes) {
             const BoxStats& x = l.stats;
-            st.camera += x.camera, st.reflected += x.reflected;
-            st.refracted += x.refracted, st.shadow += x.shadow;
+            st.rays += x.rays;
             st.rays_received += x.rays_received,
                 st.results_received += x.results_received;
             st.messages_sent += x.messages_sent,

@@ -24,6 +24,7 @@
 #include "distrib/work_queue.h"
 #include "trace/render.h"
 #include "trace/render_plan.h"
+#include "trace/tracer.h"
 
 namespace povwall::distrib {
 
@@ -61,7 +62,7 @@ struct BoxStats {
     Bounds3 region;
     size_t objects = 0;
     size_t resident_bytes = 0;  // estimate of the local scene
-    uint64_t camera = 0, reflected = 0, refracted = 0, shadow = 0;
+    trace::TraceCounters rays;
     uint64_t rays_received = 0, results_received = 0, messages_sent = 0;
     // Messages are items between boxes (in this process or over TCP); bytes are
     // sizeof(Item) in process and the encoded record over TCP.

@@ -56,6 +56,7 @@ extern char** environ;
 #include "distrib/distribution_plan.h"
 #include "distrib/message.h"
 #include "distrib/shared_pixel_sums.h"
+#include "distrib/stats_json.h"
 #include "distrib/tcp.h"
 #include "parser/parser.h"
 #include "trace/pattern.h"
@@ -91,9 +92,7 @@ class ObjectNumbers {
         materials_.resize(objects_.size());
         for (size_t i = 0; i < objects_.size(); ++i) {
             const Object& o = *objects_[i];
-            materials_[i].texture = &o.texture;
-            materials_[i].interior = o.interior ? &*o.interior : nullptr;
-            materials_[i].object = &o;
+            materials_[i] = trace::material_of(o, o.texture);
             if (sparse_) by_number_.emplace(numbers_[i], i);
         }
     }
@@ -134,6 +133,7 @@ json plan_to_json(const trace::RenderPlan& p) {
     for (const trace::LightPlan& l : p.lights)
         lights.push_back({l.shadow_rays, l.unoccluded, l.reason});
     return {{"everything_on", p.everything_on},
+            {"quality", p.quality.level},
             {"reflection_rays", p.reflection_rays},
             {"transmission_rays", p.transmission_rays},
             {"refraction_rays", p.refraction_rays},
@@ -149,6 +149,7 @@ json plan_to_json(const trace::RenderPlan& p) {
 trace::RenderPlan plan_from_json(const json& j) {
     trace::RenderPlan p;
     p.everything_on = j.at("everything_on").get<bool>();
+    p.quality = trace::Quality::of(j.at("quality").get<int>());
     p.reflection_rays = j.at("reflection_rays").get<bool>();
     p.transmission_rays = j.at("transmission_rays").get<bool>();
     p.refraction_rays = j.at("refraction_rays").get<bool>();
@@ -1136,11 +1137,7 @@ class Worker {
         const std::vector<BoxStats> all = host_->box_stats();
         for (int index : mine_) {
             const BoxStats& b = all[size_t(index)];
-            boxes.push_back({b.objects, b.resident_bytes, b.camera, b.reflected,
-                             b.refracted, b.shadow, b.rays_received, b.results_received,
-                             b.messages_sent, b.peak_queue, b.peak_parents,
-                             b.busy_seconds, b.messages_received, b.bytes_sent,
-                             b.bytes_received, b.idle_seconds});
+            boxes.push_back(box_stats_json(b));
         }
         coordinator_->send(control_frame({{"type", "done"},
                                           {"stats", boxes},
@@ -1460,7 +1457,11 @@ class TcpCoordinator {
         }
         empty_.assign(boxes, 1);
         box_stats_ = emitter_->box_stats();
-        for (BoxStats& b : box_stats_) b = BoxStats{.region = b.region};  // the workers'
+        for (BoxStats& b : box_stats_) {  // the workers' reports fill them
+            const Bounds3 region = b.region;
+            b = BoxStats{};
+            b.region = region;
+        }
         created_ = 0;
         pixels_emitted_ = 0;
         next_range_ = 0;
@@ -1787,23 +1788,8 @@ class TcpCoordinator {
             size_t k = 0;
             for (size_t b = 0; b < owner_.size(); ++b) {
                 if (owner_[b] != i % team_size_ || k >= boxes.size()) continue;
-                const json& s = boxes[k++];
-                // Every team hosts the box: the counts and times of its copies add up,
-                // the peaks are the largest copy's.
-                BoxStats& out = box_stats_[b];
-                out.objects = s[0], out.resident_bytes = s[1];
-                out.camera += s[2].get<uint64_t>(), out.reflected += s[3].get<uint64_t>();
-                out.refracted += s[4].get<uint64_t>(), out.shadow += s[5].get<uint64_t>();
-                out.rays_received += s[6].get<uint64_t>();
-                out.results_received += s[7].get<uint64_t>();
-                out.messages_sent += s[8].get<uint64_t>();
-                out.peak_queue = std::max(out.peak_queue, s[9].get<size_t>());
-                out.peak_parents = std::max(out.peak_parents, s[10].get<size_t>());
-                out.busy_seconds += s[11].get<double>();
-                out.messages_received += s[12].get<uint64_t>();
-                out.bytes_sent += s[13].get<uint64_t>();
-                out.bytes_received += s[14].get<uint64_t>();
-                out.idle_seconds += s[15].get<double>();
+                // Every team hosts the box: its copies' reports add up.
+                add_box_stats(box_stats_[b], boxes[k++]);
             }
             w.peak_resident = j.value("peak_resident", uint64_t(0));
             w.done = true;

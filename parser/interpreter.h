@@ -242,7 +242,10 @@ class Interpreter {
     Binding* find_binding(uint32_t sym, int* scope_index = nullptr);
     void parse_top_level_item(const Token& t);
     std::string resolve_include(const std::string& name, int from_file) const;
-    void finish_object(Object& obj);
+    void finish_object(Object& obj);  // POV-Ray's post-processing of a placed object
+    void place_object(Object& obj, const Object* parent,
+                      std::unordered_map<uint32_t, Interior>& shared);
+    uint32_t interiors_numbered_ = 0;     // Interior::id of the last interior numbered
     void add_scene_object(Object&& obj);  // to Scene::objects, unless keep_object says no
     size_t objects_populated_ = 0;        // Scene::objects' pages mapped up to this index
 

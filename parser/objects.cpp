@@ -1,6 +1,7 @@
 // Objects: shapes, CSG, object modifiers and transforms, and the top-level scene items.
 #include <cmath>
 #include <iterator>
+#include <unordered_map>
 
 #include "parser/interpreter.h"
 
@@ -67,6 +68,9 @@ void Interpreter::apply_transform(Object& obj, const Transform& t) {
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
         for (Object& child : csg->children) apply_transform(child, t);
         for (Light& l : csg->lights) transform_light(l, t);
+    }
+    if (auto mesh = std::get_if<Mesh>(&obj.shape)) {  // per-face textures move too
+        for (LayeredTexture& tex : mesh->textures) transform_textures(tex, t);
     }
     if (obj.clipped_by.allocated()) {
         for (Object& o : obj.clipped_by.edit()) apply_transform(o, t);
@@ -197,23 +201,48 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
     } else if (w == "no_shadow") {
         obj.no_shadow = true;
     } else if (w == "no_image") {
-        obj.no_image = true;
+        obj.no_image = parse_bool_opt();
     } else if (w == "no_reflection") {
-        obj.no_reflection = true;
+        obj.no_reflection = parse_bool_opt();
+    } else if (w == "no_radiosity") {
+        parse_bool_opt();  // radiosity rays: povwall renders no radiosity
+    } else if (w == "hierarchy") {
+        // Bounding inside meshes (blobs, height fields): the image is the same.
+        if (!std::holds_alternative<Mesh>(obj.shape))
+            error(t, "'hierarchy' cannot be used with this object");
+        parse_bool_opt();
     } else if (w == "hollow") {
         obj.hollow = parse_bool_opt();
+        obj.hollow_given = true;
+        // On a union, merge or intersection it goes at once to the children that did
+        // not say (through nested ones of those kinds), as POV-Ray's parser does.
+        auto pass_down = [&](auto& self, Object& o) -> void {
+            const Csg* csg = std::get_if<Csg>(&o.shape);
+            if (!csg || csg->kind == CsgKind::Difference) return;
+            for (Object& c : std::get<Csg>(o.shape).children) {
+                if (c.hollow_given) continue;
+                const Csg* cc = std::get_if<Csg>(&c.shape);
+                if (cc && cc->kind != CsgKind::Difference)
+                    self(self, c);
+                else
+                    c.hollow = obj.hollow;
+            }
+        };
+        pass_down(pass_down, obj);
     } else if (w == "inverse") {
         obj.inverse = !obj.inverse;
     } else if (w == "double_illuminate") {
         obj.double_illuminate = true;
     } else if (w == "sturm") {
-        if (auto torus = std::get_if<Torus>(&obj.shape))
-            torus->sturm = parse_bool_opt();
-        else
-            parse_bool_opt();
+        auto torus = std::get_if<Torus>(&obj.shape);
+        if (!torus) error(t, "'sturm' cannot be used with this object");
+        torus->sturm = parse_bool_opt();
     } else if (w == "open") {
-        if (auto c = std::get_if<Cylinder>(&obj.shape)) c->open = true;
-        if (auto c = std::get_if<Cone>(&obj.shape)) c->open = true;
+        auto cyl = std::get_if<Cylinder>(&obj.shape);
+        auto cone = std::get_if<Cone>(&obj.shape);
+        if (!cyl && !cone) error(t, "'open' cannot be used with this object");
+        if (cyl) cyl->open = true;
+        if (cone) cone->open = true;
     } else if (w == "clipped_by" || w == "bounded_by") {
         expect_punct('{', "after ", w);
         std::vector<Object>& list =
@@ -237,8 +266,15 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
             if (is_punct(s, '{')) ++depth;
             if (is_punct(s, '}')) --depth;
         }
-    } else if (w == "split_union" || w == "cutaway_textures") {
-        parse_bool_opt();
+    } else if (w == "split_union") {
+        parse_bool_opt();  // how POV-Ray bounds a union: the image is the same
+    } else if (w == "cutaway_textures") {
+        const Csg* csg = std::get_if<Csg>(&obj.shape);
+        if (!csg ||
+            (csg->kind != CsgKind::Intersection && csg->kind != CsgKind::Difference))
+            error(t,
+                  "cutaway_textures can only be used with intersection and difference");
+        unsupported(t, "cutaway_textures");
     } else if (w == "uv_mapping") {
         unsupported(t, "uv_mapping");
     } else {
@@ -484,19 +520,54 @@ void Interpreter::collect_lights(Object& obj) {
 }
 
 void Interpreter::finish_object(Object& obj) {
-    // Textures and interiors given to a CSG go to the children that have none.
-    if (auto csg = std::get_if<Csg>(&obj.shape)) {
-        for (Object& child : csg->children) {
-            if (child.texture.empty()) child.texture = obj.texture;
-            if (!child.interior && obj.interior) child.interior = obj.interior;
-            child.no_shadow |= obj.no_shadow;
-            child.no_image |= obj.no_image;
-            child.no_reflection |= obj.no_reflection;
-            child.double_illuminate |= obj.double_illuminate;
-            finish_object(child);
-        }
+    std::unordered_map<uint32_t, Interior> shared;
+    place_object(obj, nullptr, shared);
+    // Every sharer of an interior gets its final state (a later sharer may have changed
+    // it, as POV-Ray's shared pointer lets it).
+    auto settle = [&](auto& self, Object& o) -> void {
+        *o.interior = shared.at(o.interior->id);
+        if (auto csg = std::get_if<Csg>(&o.shape))
+            for (Object& child : csg->children) self(self, child);
+    };
+    settle(settle, obj);
+}
+
+// POV-Ray's post-processing of a placed object, top down: a child without a texture or
+// interior takes its parent's (the same interior: children then enter and leave it
+// together); an object with none gets the default texture and an interior of its own;
+// a plain top texture's old finish ior/caustics/refraction go into the interior, which
+// every sharer sees (the last one placed wins, as in POV-Ray).
+void Interpreter::place_object(Object& obj, const Object* parent,
+                               std::unordered_map<uint32_t, Interior>& shared) {
+    if (parent) {
+        if (obj.texture.empty()) obj.texture = parent->texture;
+        if (!obj.interior) obj.interior = *parent->interior;
+        obj.no_shadow |= parent->no_shadow;
+        obj.no_image |= parent->no_image;
+        obj.no_reflection |= parent->no_reflection;
+        obj.double_illuminate |= parent->double_illuminate;
     }
     if (obj.texture.empty()) obj.texture.push_back(default_texture_);
+    if (!obj.interior) obj.interior = Interior{};
+    if (obj.interior->id == 0) {
+        obj.interior->id = ++interiors_numbered_;
+        shared.emplace(obj.interior->id, *obj.interior);
+    }
+    Interior& in = shared.at(obj.interior->id);
+    in.hollow = obj.hollow;
+    const Texture& top = obj.texture.back();
+    if (!top.map_pattern && top.map->entries.empty()) {
+        const Finish& f = *top.finish;
+        if (f.legacy_ior >= 0) {
+            in.ior = f.legacy_ior;
+            in.dispersion = 1;
+        }
+        if (f.legacy_caustics >= 0) in.caustics = f.legacy_caustics;
+        in.old_refract = f.legacy_refraction;
+    }
+    if (auto csg = std::get_if<Csg>(&obj.shape)) {
+        for (Object& child : csg->children) place_object(child, &obj, shared);
+    }
 }
 
 void Interpreter::add_scene_object(Object&& obj) {

@@ -169,7 +169,7 @@ Light Interpreter::parse_light_block() {
         Colour c = parse_colour_value();
         l.colour = c.rgb;
     }
-    bool radius_set = false, falloff_set = false;
+    bool parallel = false;
     bool jitter = false, circular = false, orient = false;
     for (;;) {
         Token t = next();
@@ -180,23 +180,30 @@ Light Interpreter::parse_light_block() {
             continue;
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
-        if (w == "spotlight")
+        // As POV-Ray: the light type keyword resets its cone; `parallel` is a flag of its
+        // own (cylinder lights have it); the cone items need a spot or cylinder light.
+        const bool coned = l.kind == Light::Kind::Spot || l.kind == Light::Kind::Cylinder;
+        if (w == "spotlight") {
             l.kind = Light::Kind::Spot;
-        else if (w == "cylinder") {
+            l.radius = 30, l.falloff = 45, l.tightness = 0;
+        } else if (w == "cylinder") {
             l.kind = Light::Kind::Cylinder;
-            if (!radius_set) l.radius = 0.75;
-            if (!falloff_set) l.falloff = 1;
-        } else if (w == "parallel")
-            l.kind = Light::Kind::Parallel;
-        else if (w == "point_at")
+            l.radius = 0.75, l.falloff = 1, l.tightness = 0;
+            parallel = true;
+        } else if (w == "parallel") {
+            parallel = true;
+        } else if (w == "point_at" && !coned && !parallel) {
+            error(t, "'point_at' cannot be used with a standard light source");
+        } else if ((w == "radius" || w == "falloff" || w == "tightness") && !coned) {
+            error(t,
+                  "'" + std::string(w) + "' cannot be used with a standard light source");
+        } else if (w == "point_at")
             l.point_at = parse_vector();
-        else if (w == "radius") {
+        else if (w == "radius")
             l.radius = parse_float();
-            radius_set = true;
-        } else if (w == "falloff") {
+        else if (w == "falloff")
             l.falloff = parse_float();
-            falloff_set = true;
-        } else if (w == "tightness")
+        else if (w == "tightness")
             l.tightness = parse_float();
         else if (w == "fade_distance")
             l.fade_distance = parse_float();
@@ -224,15 +231,18 @@ Light Interpreter::parse_light_block() {
         } else if (w == "adaptive" && l.area)
             l.area->adaptive = parse_int();
         // These may come before area_light; kept and applied at the end.
-        else if (w == "jitter")
+        else if (w == "jitter") {
             jitter = true;
-        else if (w == "circular")
+            warn(t,
+                 "area-light jitter is rendered without jitter (povwall samples the "
+                 "fixed grid; soft shadows lose their noise)");
+        } else if (w == "circular")
             circular = true;
         else if (w == "orient")
             orient = true;
-        else if (w == "area_illumination")
-            parse_bool_opt();
-        else if (w == "looks_like" || w == "projected_through") {
+        else if (w == "area_illumination") {
+            if (parse_bool_opt()) unsupported(t, "area_illumination");
+        } else if (w == "looks_like" || w == "projected_through") {
             if (w == "projected_through") unsupported(t, w);
             expect_punct('{');
             Token o = next();
@@ -258,6 +268,10 @@ Light Interpreter::parse_light_block() {
             expected("a light_source item or '}'", t);
         }
     }
+    // A parallel point or spot light: every point gets the light from point_at's
+    // direction at full strength (POV-Ray's spot cone then sees the axis itself).
+    if (parallel && l.kind == Light::Kind::Point) l.kind = Light::Kind::Parallel;
+    l.parallel = parallel && l.kind == Light::Kind::Spot;
     if (l.area) {
         l.area->jitter = l.area->jitter || jitter;
         l.area->circular = l.area->circular || circular;

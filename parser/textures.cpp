@@ -614,31 +614,44 @@ Finish Interpreter::parse_finish_block() {
         if (n.size == 1) return Rgb(float(n.c[0]));
         return Rgb(float(n.c[0]), float(n.c[1]), float(n.c[2]));
     };
+    // `albedo` scales diffuse, phong or specular by the brilliance, phong_size or
+    // roughness in force when the block ends (POV-Ray's order).
+    bool diffuse_albedo = false, phong_albedo = false, specular_albedo = false;
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return f;
+        if (is_punct(t, '}')) {
+            if (diffuse_albedo) {
+                f.diffuse *= (f.brilliance + 1) / 2;
+                f.diffuse_back *= (f.brilliance + 1) / 2;
+            }
+            if (phong_albedo) f.phong *= (f.phong_size + 1) / 2;
+            if (specular_albedo) {
+                const double r = f.roughness != 0 ? 1.0 / f.roughness : 0.0;
+                f.specular *= float((r + 2) / (4 * (2 - std::pow(2.0, -r / 2))));
+            }
+            return f;
+        }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
         if (w == "ambient") {
             f.ambient = rgb_of(parse_colour());
         } else if (w == "emission") {
             f.emission = rgb_of(parse_colour());
         } else if (w == "diffuse") {
-            bool albedo = accept_word("albedo");
+            diffuse_albedo = accept_word("albedo") || diffuse_albedo;
             f.diffuse = float(parse_float());
-            if (accept_punct(',')) parse_float();  // diffuse back: not modelled
-            if (albedo) f.diffuse *= (f.brilliance + 1) / 2;
+            accept_punct(',');
+            f.diffuse_back = starts_float(peek()) ? float(parse_float()) : 0.0f;
         } else if (w == "brilliance") {
             f.brilliance = float(parse_float());
         } else if (w == "crand") {
             f.crand = float(parse_float());
         } else if (w == "phong") {
-            bool albedo = accept_word("albedo");
+            phong_albedo = accept_word("albedo") || phong_albedo;
             f.phong = float(parse_float());
-            if (albedo) f.phong *= (f.phong_size + 1) / 2;
         } else if (w == "phong_size") {
             f.phong_size = float(parse_float());
         } else if (w == "specular") {
-            accept_word("albedo");
+            specular_albedo = accept_word("albedo") || specular_albedo;
             f.specular = float(parse_float());
         } else if (w == "roughness") {
             f.roughness = float(parse_float());
@@ -694,9 +707,19 @@ Finish Interpreter::parse_finish_block() {
                 else
                     expected("an irid item or '}'", m);
             }
-        } else if (w == "refraction" || w == "ior" || w == "caustics" ||
-                   w == "fade_distance" || w == "fade_power") {
-            unsupported(t, "finish " + std::string(w) + " (use interior)");
+        } else if (w == "ior") {
+            // POV-Ray 3.7 still reads these old finish items (with a warning) and moves
+            // them into the object's interior when it is placed (finish_object).
+            f.legacy_ior = float(parse_float());
+            warn(t, "the index of refraction belongs in interior { }");
+        } else if (w == "caustics") {
+            f.legacy_caustics = float(parse_float());
+            warn(t, "caustics belong in interior { }");
+        } else if (w == "refraction") {
+            f.legacy_refraction = float(parse_float());
+            warn(t,
+                 "refraction is not needed to turn refraction on; it scales what "
+                 "passes the surface");
         } else if (w == "subsurface") {
             unsupported(t, "subsurface");
         } else {
@@ -723,12 +746,22 @@ Interior Interpreter::parse_interior_block() {
         if (w == "ior")
             in.ior = float(parse_float());
         else if (w == "caustics")
-            in.caustics = float(parse_float());
-        else if (w == "dispersion")
+            in.caustics = float(parse_float() * 45.0);  // as POV-Ray scales it
+        else if (w == "dispersion") {
+            const Token at = peek();
             in.dispersion = float(parse_float());
-        else if (w == "dispersion_samples")
+            // POV-Ray then traces monochromatic sub-rays; povwall does not (yet).
+            if (in.dispersion != 1.0f) unsupported(at, "dispersion");
+        } else if (w == "dispersion_samples") {
+            const Token at = peek();
             in.dispersion_samples = parse_int();
-        else if (w == "fade_distance")
+            if (in.dispersion_samples < 2) error(at, "dispersion samples minimum is 2");
+        } else if (w == "refraction") {
+            in.old_refract = float(parse_float());
+            warn(t,
+                 "refraction is not needed to turn refraction on; it scales what "
+                 "passes the surface");
+        } else if (w == "fade_distance")
             in.fade_distance = float(parse_float());
         else if (w == "fade_power")
             in.fade_power = float(parse_float());

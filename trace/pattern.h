@@ -25,6 +25,8 @@ struct PatternEnv {
     int noise_generator = 2;
     // global_settings number_of_waves (ripples, waves).
     int number_of_waves = 10;
+    // +Q5 and below: a pigment's quick_color stands for it (POV-Ray's Compute_Pigment).
+    bool quick_colours = false;
 };
 
 // What user functions (core/function.h) call to evaluate `pattern { }` and `pigment { }`

@@ -80,6 +80,8 @@ Colour blend(const Colour& prev, const Colour& cur, Real f) {
 
 Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
                         const PatternEnv& env) {
+    if (env.quick_colours && pigment.maps->quick_colour)
+        return *pigment.maps->quick_colour;
     const PatternSpec& spec = *pigment.pattern;
     if (spec.kind == PatternKind::Solid) return pigment.colour;
     Point3 p = detail::warp_point(spec, world);

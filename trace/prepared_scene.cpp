@@ -399,6 +399,7 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     const Scene& scene = scene_;
     env_.noise_generator = scene.settings.noise_generator;
     env_.number_of_waves = scene.settings.number_of_waves;
+    env_.quick_colours = plan_.quality.quick_colours();
     size_t leaves = 0;
     for (const Object* o : objects) leaves += count_leaves(*o);
     for (const Light& l : scene.lights) {
@@ -522,22 +523,27 @@ size_t PreparedScene::resident_bytes() const {
                sizeof(octree::Octree::Node);
 }
 
-uint32_t PreparedScene::add_material(const Object& o) {
+Material material_of(const Object& o, const LayeredTexture& texture) {
     Material m;
-    m.texture = &o.texture;
+    m.texture = &texture;
     m.interior = o.interior ? &*o.interior : nullptr;
     m.object = &o;
+    m.interior_id = interior_key(o);
     m.no_shadow = o.no_shadow;
     m.no_image = o.no_image;
     m.no_reflection = o.no_reflection;
     m.double_illuminate = o.double_illuminate;
-    m.opaque = texture_opaque(o.texture);
-    if (texture_is_plain(o.texture)) {
+    m.opaque = texture_opaque(texture);
+    if (texture_is_plain(texture)) {
         m.plain = true;
-        m.plain_colour = o.texture.front().pigment.colour;
-        m.plain_finish = *o.texture.front().finish;
+        m.plain_colour = texture.front().pigment.colour;
+        m.plain_finish = *texture.front().finish;
     }
-    materials_.push_back(m);
+    return m;
+}
+
+uint32_t PreparedScene::add_material(const Object& o) {
+    materials_.push_back(material_of(o, o.texture));
     uint32_t index = uint32_t(materials_.size()) - 1;
     leaf_materials_.push_back({&o, index});
     return index;
@@ -596,12 +602,8 @@ void PreparedScene::add_object(const Object& o, const Material*) {
         uint32_t base = add_material(o);
         std::vector<uint32_t> face_materials;
         for (const LayeredTexture& t : m->textures) {
-            Object tmp;
-            (void)tmp;
-            Material mm = materials_[base];
-            mm.texture = &t;
-            mm.opaque = texture_opaque(t);
-            materials_.push_back(mm);
+            // Each face texture is a material of its own (plain or not by itself).
+            materials_.push_back(material_of(o, t));
             face_materials.push_back(uint32_t(materials_.size()) - 1);
         }
         for (const auto& f : m->faces) {

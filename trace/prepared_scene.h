@@ -14,10 +14,19 @@
 namespace povwall::trace {
 
 // What a ray may see of an object, and where its surface description lives.
+// Which interior an object has, for the interior stack: the parser's number of the
+// interior (shared by a CSG's children, see Interior::id), or for a scene built without
+// the parser, the object itself.
+inline uintptr_t interior_key(const Object& o) {
+    return o.interior && o.interior->id != 0 ? uintptr_t(o.interior->id)
+                                             : reinterpret_cast<uintptr_t>(&o);
+}
+
 struct Material {
     const LayeredTexture* texture = nullptr;
     const Interior* interior = nullptr;  // null: default interior (ior 1)
-    const Object* object = nullptr;      // identity for the interior stack
+    const Object* object = nullptr;      // the leaf: its number on the wire
+    uintptr_t interior_id = 0;           // interior_key(*object)
     bool no_shadow = false, no_image = false, no_reflection = false;
     bool double_illuminate = false;
     bool opaque = true;  // no filter or transmit anywhere in its textures
@@ -29,10 +38,14 @@ struct Material {
     Finish plain_finish;
 };
 
+// The material of object `o` seen with `texture` (its own, or a mesh face's).
+Material material_of(const Object& o, const LayeredTexture& texture);
+
 // A single colour everywhere: no pattern, list or colour map.
 inline bool pigment_is_solid(const Pigment& p) {
+    // (A quick_color makes it a pattern: low +Q levels show that colour instead.)
     return p.pattern->kind == PatternKind::Solid && p.maps->list.empty() &&
-           p.maps->colour_map.empty();
+           p.maps->colour_map.empty() && !p.maps->quick_colour;
 }
 // Whether a texture is `plain` in the sense of Material::plain.
 bool texture_is_plain(const LayeredTexture& layers);

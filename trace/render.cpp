@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "trace/camera.h"
+#include "trace/camera_interiors.h"
 #include "trace/tracer.h"
 
 namespace povwall::trace {
@@ -48,7 +49,8 @@ void aa_jitter_offset(Real px, Real py, Real& jx, Real& jy) {
     jy = Real((h >> 16) & 0xffffffull) / Real(1ull << 24) - 0.5;
 }
 
-void trace_camera_sample(Tracer& tracer, const Camera& camera, Real px, Real py,
+void trace_camera_sample(Tracer& tracer, const Camera& camera,
+                         const CameraInteriors& interiors, Real px, Real py,
                          const RenderSettings& settings, float* out) {
     std::optional<Ray> ray = camera_ray(camera, px, py, settings.width, settings.height);
     if (!ray) {
@@ -58,6 +60,7 @@ void trace_camera_sample(Tracer& tracer, const Camera& camera, Real px, Real py,
     }
     TraceRay r;
     r.ray = *ray;
+    interiors.seed(r.ray.origin, r.interiors);
     TraceResult res = tracer.trace(r);
     out[0] = res.colour.r;
     out[1] = res.colour.g;
@@ -69,9 +72,11 @@ void trace_camera_sample(Tracer& tracer, const Camera& camera, Real px, Real py,
 Image render_scene(const Scene& scene, const RenderSettings& settings,
                    RenderStats* stats) {
     auto t0 = Clock::now();
-    const RenderPlan plan = make_render_plan(scene, settings.plan_everything_on);
+    const RenderPlan plan =
+        make_render_plan(scene, settings.plan_everything_on, settings.quality);
     PreparedScene prepared(scene, &plan);
     prepared.set_alpha_background(settings.alpha);
+    const CameraInteriors camera_interiors(scene);
     auto t1 = Clock::now();
     const int W = settings.width, H = settings.height;
     Image image(W, H);
@@ -86,7 +91,8 @@ Image render_scene(const Scene& scene, const RenderSettings& settings,
                       : int(std::max(1u, std::thread::hardware_concurrency()));
 
     auto sample = [&](Tracer& tracer, Real px, Real py, float* out) {
-        trace_camera_sample(tracer, scene.camera, px, py, settings, out);
+        trace_camera_sample(tracer, scene.camera, camera_interiors, px, py, settings,
+                            out);
     };
 
     auto run_pool = [&](auto&& fn) {
@@ -266,10 +272,7 @@ Image render_scene(const Scene& scene, const RenderSettings& settings,
     auto t2 = Clock::now();
     if (stats) {
         for (int i = 0; i < threads; ++i) {
-            stats->camera_rays += counters[i].camera;
-            stats->reflected_rays += counters[i].reflected;
-            stats->refracted_rays += counters[i].refracted;
-            stats->shadow_rays += counters[i].shadow;
+            stats->rays += counters[i];
             stats->intersection_tests += tests[i];
         }
         stats->prepare_seconds = std::chrono::duration<double>(t1 - t0).count();

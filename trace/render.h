@@ -6,6 +6,7 @@
 
 #include "core/image.h"
 #include "core/scene.h"
+#include "trace/tracer.h"
 
 namespace povwall::trace {
 
@@ -28,6 +29,7 @@ struct RenderSettings {
     bool aa_jitter = true;  // POV-Ray jitters AA samples unless -J
     double aa_jitter_amount = 1.0;
     bool alpha = false;  // +UA: background contributes transparency
+    int quality = 9;     // +Q (trace::Quality)
     // Partial render (+SR/+ER/+SC/+EC), 0-based inclusive rows/columns; -1: to the end.
     int first_row = 0, last_row = -1, first_col = 0, last_col = -1;
     // --plan all: leave nothing out (tests that the render plan changes no pixel).
@@ -36,7 +38,7 @@ struct RenderSettings {
 };
 
 struct RenderStats {
-    uint64_t camera_rays = 0, reflected_rays = 0, refracted_rays = 0, shadow_rays = 0;
+    TraceCounters rays;
     uint64_t intersection_tests = 0;
     double prepare_seconds = 0, trace_seconds = 0;
     // What the prepared scene holds: octree or flat list, and its size.
@@ -52,10 +54,13 @@ struct RenderStats {
 void aa_jitter_offset(Real px, Real py, Real& jx, Real& jy);
 
 class Tracer;
+class CameraInteriors;
 // One camera sample at image position (px, py): RGBA into `out`, as every renderer writes
 // it (nothing seen, e.g. a fisheye's corners: black and transparent; background transmit
 // only with +UA).
-void trace_camera_sample(Tracer& tracer, const Camera& camera, Real px, Real py,
+// `interiors`: what the camera ray starts inside of.
+void trace_camera_sample(Tracer& tracer, const Camera& camera,
+                         const CameraInteriors& interiors, Real px, Real py,
                          const RenderSettings& settings, float* out);
 
 Image render_scene(const Scene& scene, const RenderSettings& settings,

@@ -221,9 +221,10 @@ bool shading_is_linear(const Scene& scene) {
     return linear;
 }
 
-RenderPlan make_render_plan(const Scene& scene, bool everything_on) {
+RenderPlan make_render_plan(const Scene& scene, bool everything_on, int quality) {
     RenderPlan plan;
     plan.everything_on = everything_on;
+    plan.quality = Quality::of(quality);
     bool reflective = false, transparent = false;
     for_each_scene_texture(scene, [&](const LayeredTexture& layers) {
         for (const Texture& t : layers) {

@@ -24,8 +24,24 @@ struct LightPlan {
     std::string reason;  // why, in plain words (for --explain)
 };
 
+// POV-Ray's quality levels (+Q, Quality=; its quality flags): what each level renders.
+// 9, the default, renders everything povwall has; POV-Ray treats 10 and 11 as 9.
+struct Quality {
+    int level = 9;
+    bool lighting() const { return level >= 2; }  // below: each surface is its pigment
+    bool quick_colours() const { return level <= 5; }  // quick_color stands for a pigment
+    bool shadows() const { return level >= 4; }
+    bool area_lights() const { return level >= 5; }  // below: a point at the centre
+    bool refraction() const { return level >= 6; }   // transmitted and refracted rays
+    bool reflection() const { return level >= 8; }
+    bool normals() const { return level >= 8; }     // normal { } perturbation
+    bool atmosphere() const { return level >= 9; }  // fog (and media, radiosity, photons)
+    static Quality of(int level) { return {level < 0 ? 0 : level > 9 ? 9 : level}; }
+};
+
 struct RenderPlan {
     bool everything_on = false;  // --plan all: nothing is left out
+    Quality quality;             // +Q: what the render draws at all
     // Some texture reflects (reflection rays can occur at all).
     bool reflection_rays = true;
     // Some texture lets light through (filter/transmit): transmission and refraction
@@ -48,7 +64,8 @@ struct RenderPlan {
 };
 
 // `everything_on`: the plan that leaves nothing out (same image, more work).
-RenderPlan make_render_plan(const Scene& scene, bool everything_on = false);
+RenderPlan make_render_plan(const Scene& scene, bool everything_on = false,
+                            int quality = 9);
 
 // True when the scene's shading is linear in child colours (no reflection exponent), so
 // forward contributions give the same image as parent tracking.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <deque>
 
 #include "core/noise.h"
@@ -40,6 +41,69 @@ float ior_of(const Material* m) {
     return m->interior->ior > 0 ? m->interior->ior : 1.0f;
 }
 
+// The index ratio (transmitted over incident) POV-Ray's fresnel reflection uses at a
+// surface of `m` (its ComputeRelativeIOR), from the interiors the incoming ray is in. It
+// keeps POV-Ray's quirk: leaving the innermost of two or more interiors compares the
+// object with itself (ratio 1, no fresnel reflection), unlike the refraction there.
+Real fresnel_relative_ior(const InteriorStack& inside, const Material& m) {
+    if (inside.size == 0) return ior_of(&m);
+    if (!inside.contains(m.interior_id))
+        return Real(ior_of(&m)) / ior_of(inside.innermost());
+    if (inside.size == 1) return 1 / Real(ior_of(&m));
+    return Real(ior_of(inside.innermost())) / ior_of(&m);
+}
+
+// POV-Ray's thin-film iridescence (ComputeIridColour): each channel of a light's
+// contribution scaled by 1 + irid * cos(phase / wavelength).
+Rgb iridescence(const Finish& f, const Scene& sc, const Point3& P, const Vector3& N,
+                const Vector3& to_light, const Vector3& eye) {
+    Real thickness = f.irid_thickness;
+    if (f.irid_turbulence != 0) {
+        TurbulenceParams tp;  // POV-Ray's fixed octaves, omega and lambda here
+        tp.octaves = 5;
+        tp.omega = 0.5;
+        tp.lambda = 2.0;
+        const Real noise = 2 * turbulence(P, tp, sc.settings.noise_generator) - 1;
+        thickness *= 1 + noise * f.irid_turbulence;
+    }
+    const Real phase =
+        2 * kPi * thickness * (std::fabs(dot(N, to_light)) + std::fabs(dot(N, eye)));
+    const Rgb& wl = sc.settings.irid_wavelength;
+    return {float(1 + f.irid * std::cos(phase / wl.r)),
+            float(1 + f.irid * std::cos(phase / wl.g)),
+            float(1 + f.irid * std::cos(phase / wl.b))};
+}
+
+// A uniform number in [0, 1) for crand at point P and light l: POV-Ray draws a random
+// one there; this one depends only on where (the same in every mode).
+Real crand_sample(const Point3& P, size_t l) {
+    uint64_t h = 0x9e3779b97f4a7c15ull * (l + 1);
+    for (Real v : {P.x, P.y, P.z}) {
+        uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+        h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+        h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+        h ^= h >> 31;
+    }
+    return Real(h >> 11) / Real(1ull << 53);
+}
+
+// Removes the reflection children whose layer normal is `normal` (each component within
+// 1e-10), as POV-Ray skips them after a total internal reflection.
+void drop_reflections_with_normal(std::vector<ChildRay>& children,
+                                  const std::vector<std::pair<size_t, Vector3>>& normals,
+                                  const Vector3& normal) {
+    auto same = [&](const Vector3& a) {
+        return std::fabs(a.x - normal.x) < kPovEpsilon &&
+               std::fabs(a.y - normal.y) < kPovEpsilon &&
+               std::fabs(a.z - normal.z) < kPovEpsilon;
+    };
+    // Children after the reflections (shadows) keep their order.
+    for (auto it = normals.rbegin(); it != normals.rend(); ++it)
+        if (same(it->second)) children.erase(children.begin() + ptrdiff_t(it->first));
+}
+
 struct LightSample {
     Vector3 dir;  // unit, from the point toward the light
     Real distance;
@@ -58,7 +122,13 @@ bool light_at(const Light& l, const Point3& p, LightSample& s) {
         s.dir = v / s.distance;
     }
     float att = 1;
-    if (l.kind == Light::Kind::Spot || l.kind == Light::Kind::Cylinder) {
+    if (l.parallel) {
+        // POV-Ray measures the spot's cone along the parallel direction itself: full
+        // strength in front of the light, none behind it.
+        s.dir = normalize(l.location - l.point_at);
+        s.distance = dot(l.location - p, s.dir);
+        if (s.distance <= 0) return false;
+    } else if (l.kind == Light::Kind::Spot || l.kind == Light::Kind::Cylinder) {
         Vector3 axis = normalize(l.point_at - l.location);
         Real radius_cos = std::cos(l.radius * kPi / 180);
         Real falloff_cos = std::cos(l.falloff * kPi / 180);
@@ -92,6 +162,11 @@ bool light_at(const Light& l, const Point3& p, LightSample& s) {
     return !s.colour.is_black();
 }
 
+// POV-Ray's +Q0 and +Q1 (its FULL_AMBIENT): no lighting, no rays; a surface is the
+// colour of its layers' pigments as seen through the transparent ones, opaque.
+void pigment_only(const PreparedScene& scene, const Material& m, const Point3& P,
+                  ShadingRecord& out);
+
 Colour eval_pigment(const PreparedScene& scene, const Pigment& p, const Point3& at) {
     if (pigment_is_solid(p)) {
         return p.colour;
@@ -100,6 +175,26 @@ Colour eval_pigment(const PreparedScene& scene, const Pigment& p, const Point3& 
 }
 
 Rgb rgb_transm(const Colour& c) { return c.rgb * c.filter + Rgb(c.transmit); }
+
+const LayeredTexture& texture_of(const Material& m);
+
+void pigment_only(const PreparedScene& scene, const Material& m, const Point3& P,
+                  ShadingRecord& out) {
+    const float adc = scene.scene().settings.adc_bailout;
+    Rgb fil(1.0f);
+    float trans = 1;
+    if (m.plain) {
+        out.local = m.plain_colour.rgb;
+        return;
+    }
+    const LayeredTexture& layers = texture_of(m);
+    for (int li = int(layers.size()) - 1; li >= 0 && trans > adc; --li) {
+        const Colour lay = eval_pigment(scene, layers[size_t(li)].pigment, P);
+        out.local = lay.rgb;  // each layer seen replaces the one above
+        fil *= rgb_transm(lay);
+        trans = std::min(1.0f, std::fabs(fil.grey()));
+    }
+}
 
 const LayeredTexture& texture_of(const Material& m) {
     static const LayeredTexture kDefault{Texture{}};
@@ -186,18 +281,21 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     ShadingRecord& out) {
     out.clear();
-    if (!scene.scene().fogs.empty()) {
+    const Quality quality = scene.plan().quality;
+    if (!scene.scene().fogs.empty() && quality.atmosphere()) {
         // Fog fills only "hollow" space: not the inside of a solid (non-hollow) object.
         bool hollow = true;
         for (int i = 0; i < ray.interiors.size && i < InteriorStack::kCapacity; ++i) {
             const Material* m = ray.interiors.items[i];
-            if (m && m->object && !m->object->hollow) hollow = false;
+            if (m && !(m->interior ? m->interior->hollow : m->object->hollow))
+                hollow = false;
         }
         if (hollow) out.fog = fog_effect(scene.scene(), ray.ray, hit.t);
     }
     if (spawn_texture_map(scene, ray, hit, out)) return;
     const Scene& sc = scene.scene();
     const Material& m = *hit.material;
+    if (!quality.lighting()) return pigment_only(scene, m, hit.point, out);
     const Vector3 D = ray.ray.direction;
     const Point3 P = hit.point;
     // Normals face the incoming ray, as POV-Ray flips them.
@@ -219,11 +317,15 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     Rgb fil(1.0f);
     float trans = 1;
     Vector3 top_normal = N;
+    // Each reflection child with its layer's normal: total internal reflection drops
+    // those of the layers whose normal is the top layer's (POV-Ray 3.7).
+    thread_local std::vector<std::pair<size_t, Vector3>> reflection_normals;
+    reflection_normals.clear();
     for (int li = nlayers - 1; li >= 0 && trans > adc; --li) {
         const Texture* tex = layers ? &(*layers)[size_t(li)] : nullptr;
         const Colour lay = tex ? eval_pigment(scene, tex->pigment, P) : m.plain_colour;
         Vector3 Nl = N;
-        if (tex && tex->normal) {
+        if (tex && tex->normal && quality.normals()) {
             Nl = perturb_normal(*tex->normal, P, N, scene.pattern_env());
         }
         if (li == nlayers - 1) top_normal = Nl;
@@ -234,7 +336,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                   lay.rgb * f.emission * att;
         out.local += tmp * fil;
 
-        if (f.diffuse != 0 || f.phong != 0 || f.specular != 0) {
+        if (f.diffuse != 0 || f.diffuse_back != 0 || f.phong != 0 || f.specular != 0) {
             for (size_t l = 0; l < nlights; ++l) {
                 const Light& light = sc.lights[l];
                 if (sample_ok[l] == 2) {
@@ -242,7 +344,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                     // media_attenuation: fog dims the light along its way (no fog colour
                     // is added to light, as for POV-Ray's shadow test rays).
                     if (sample_ok[l] && light.media_attenuation && !sc.fogs.empty() &&
-                        samples[l].distance < kInfinity) {
+                        quality.atmosphere() && samples[l].distance < kInfinity) {
                         LightSample& ls = samples[l];
                         ls.colour *= fog_effect(sc, {P, ls.dir}, ls.distance).mul;
                     }
@@ -250,20 +352,31 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                 if (!sample_ok[l]) continue;
                 const LightSample& s = samples[l];
                 Real cos_nl = dot(Nl, s.dir);
+                // A light behind the surface lights it only with diffuse back (and then
+                // without highlights), unless the object is double_illuminate.
+                bool backside = false;
                 if (cos_nl < kPovEpsilon) {
-                    if (!m.double_illuminate) continue;
-                    cos_nl = -cos_nl;
+                    if (m.double_illuminate)
+                        cos_nl = -cos_nl;
+                    else if (f.diffuse_back != 0)
+                        backside = true;
+                    else
+                        continue;
                 }
                 Rgb c;
-                if (f.diffuse != 0) {
+                const float diffuse = backside ? f.diffuse_back : f.diffuse;
+                if (diffuse > 0) {
                     Real base = std::fabs(cos_nl);
-                    float k = float(
+                    Real k =
                         (f.brilliance != 1 ? std::pow(base, Real(f.brilliance)) : base) *
-                        f.diffuse * att);
-                    c += lay.rgb * k;
+                        diffuse * att;
+                    // crand: POV-Ray subtracts a fresh random number per light and point;
+                    // ours is a hash of the point (the same in every mode and process).
+                    if (f.crand > 0) k -= crand_sample(P, l) * f.crand;
+                    c += lay.rgb * float(k);
                 }
-                if (!light.shadowless) {
-                    if (f.phong != 0) {
+                if (!light.shadowless && !backside) {
+                    if (f.phong > 0) {
                         Vector3 R = D - Nl * (2 * dot(D, Nl));
                         Real cc = dot(R, s.dir);
                         if (cc > 0 && !(f.phong_size >= 60 && cc <= 0.0008)) {
@@ -271,7 +384,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                             c += metallic_tint(f.metallic, cos_nl, lay.rgb) * k;
                         }
                     }
-                    if (f.specular != 0) {
+                    if (f.specular > 0) {
                         Vector3 H = (s.dir - D) * 0.5;
                         Real hl = length(H);
                         Real cc = hl > 0 ? dot(H, Nl) / hl : 0;
@@ -282,6 +395,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                         }
                     }
                 }
+                if (f.irid > 0) c *= iridescence(f, sc, P, Nl, s.dir, D);
                 lit[l] += c * s.colour * fil;
             }
         }
@@ -289,15 +403,14 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         // Reflection of this layer; not scaled by the layers above (POV-Ray 3.7).
         const bool has_reflection =
             !f.reflection_max.is_black() || !f.reflection_min.is_black();
-        float reflectivity_grey = 0;
+        Rgb reflectivity{0.0f};
+        float reflection_weight = 0;
         if (has_reflection) {
             Real cos_i = std::fabs(dot(D, Nl));
-            Rgb reflec;
-            float w;
+            Rgb& reflec = reflectivity;
+            float& w = reflection_weight;
             if (f.reflection_fresnel) {
-                float n1 = ior_of(ray.interiors.innermost());
-                float n2 = ray.interiors.contains(m.object) ? 1.0f : ior_of(&m);
-                Real eta = n2 / n1;
+                const Real eta = fresnel_relative_ior(ray.interiors, m);
                 Real g2 = eta * eta + cos_i * cos_i - 1;
                 float F = 1;
                 if (g2 > 0) {
@@ -307,7 +420,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                     F = float(std::clamp(0.5 * a * a * (1 + b * b), 0.0, 1.0));
                 }
                 reflec = f.reflection_max * F + f.reflection_min * (1 - F);
-                w = ray.weight * max3(reflec);
+                w = ray.weight * trans * max3(reflec);
             } else {
                 // pow(x, 1) is x exactly: the default falloff needs no pow call.
                 float frac = f.reflection_falloff == 1
@@ -315,12 +428,16 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                                  : float(std::pow(1 - cos_i, Real(f.reflection_falloff)));
                 if (f.reflection_falloff == 1 && frac == 0) frac = 0;
                 reflec = f.reflection_max * frac + f.reflection_min * (1 - frac);
-                w = ray.weight * std::max(max3(f.reflection_max), max3(f.reflection_min));
+                w = ray.weight * trans *
+                    std::max(max3(f.reflection_max), max3(f.reflection_min));
             }
             if (f.reflection_metallic != 0) {
                 reflec *= metallic_tint(f.reflection_metallic, cos_i, lay.rgb);
             }
-            reflectivity_grey = reflec.grey();
+        }
+        // Reflection rays from +Q8 (the reflectivity still counts for conserve_energy).
+        if (has_reflection && quality.reflection()) {
+            reflection_normals.push_back({out.children.size(), Nl});
             Vector3 R = D - Nl * (2 * dot(D, Nl));
             if (dot(R, N) < 0)
                 R = D - N * (2 * dot(D, N));  // perturbed normal pointed away
@@ -328,15 +445,20 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
             child.kind = ChildRay::Kind::Reflection;
             child.trace.ray = {P, normalize(R)};
             child.trace.depth = ray.depth + 1;
-            child.trace.weight = w;
+            child.trace.weight = reflection_weight;
             child.trace.use = RayUse::Reflection;
             child.trace.interiors = ray.interiors;
-            child.coeff = reflec;
+            child.coeff = reflectivity;
             child.exponent = f.reflection_exponent;
             out.children.push_back(child);
         }
         fil *= rgb_transm(lay);
-        if (f.conserve_energy && has_reflection) fil *= (1 - reflectivity_grey);
+        if (f.conserve_energy) {
+            // What a layer reflects does not also pass through it (per channel).
+            fil.r *= std::min(1.0f, 1 - reflectivity.r);
+            fil.g *= std::min(1.0f, 1 - reflectivity.g);
+            fil.b *= std::min(1.0f, 1 - reflectivity.b);
+        }
         trans = std::min(1.0f, std::fabs(fil.grey()));
     }
 
@@ -364,13 +486,16 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         child.coeff = lit[l];
         child.area = light.area.has_value();
         child.light_colour = s.colour;
-        child.unoccluded = l < plan.lights.size() && plan.lights[l].unoccluded;
+        // Below +Q4 nothing blocks a light; below +Q5 an area light is its centre.
+        child.unoccluded =
+            (l < plan.lights.size() && plan.lights[l].unoccluded) || !quality.shadows();
+        child.area = child.area && quality.area_lights();
         out.children.push_back(child);
     }
 
     // What shows through the surface: straight on when the IOR does not change (no trace
     // level used, POV-Ray 3.7), refracted otherwise.
-    if (trans > adc) {
+    if (trans > adc && quality.refraction()) {
         ChildRay child;
         child.kind = ChildRay::Kind::Transmission;
         child.coeff = fil;
@@ -379,25 +504,31 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         child.trace.use = RayUse::Refraction;
         child.trace.weight =
             ray.weight * max3(Rgb(std::fabs(fil.r), std::fabs(fil.g), std::fabs(fil.b)));
-        float n1, n2;
-        if (ray.interiors.contains(m.object)) {
-            n1 = ior_of(&m);
-            child.trace.interiors.remove(m.object);
-            n2 = ior_of(child.trace.interiors.innermost());
+        // The interior list, POV-Ray's rules (ComputeRefraction): entering from outside
+        // everything; leaving the innermost interior; leaving one the ray is inside of
+        // but not innermost (an overlap: no bending); entering one more.
+        const InteriorStack& inside = ray.interiors;
+        const uintptr_t id = m.interior_id;
+        Real eta = 1;  // incident over transmitted index
+        if (inside.size == 0) {
+            eta = 1 / ior_of(&m);
+            child.trace.interiors.push(&m);
+        } else if (inside.innermost() && inside.innermost()->interior_id == id) {
+            child.trace.interiors.remove(id);
+            eta = ior_of(&m) / ior_of(child.trace.interiors.innermost());
+        } else if (child.trace.interiors.remove(id)) {
+            eta = 1;
         } else {
-            n1 = ior_of(ray.interiors.innermost());
-            n2 = ior_of(&m);
+            eta = ior_of(inside.innermost()) / ior_of(&m);
             child.trace.interiors.push(&m);
         }
-        // Interior fade: light reaching this surface from inside the object is attenuated
-        // by the distance the incoming ray travelled in it (only the transmitted part).
-        Rgb att(1.0f);
-        if (ray.interiors.contains(m.object) && m.interior) {
-            att = interior_attenuation(*m.interior, hit.t, false);
-            child.coeff *= att;
-            child.transmit_factor *= att.grey();
-        }
-        Real eta = n1 / n2;
+        // What passes is scaled by the interior's `refraction` and, when the incoming
+        // ray travelled inside it, by its fade.
+        Rgb att(m.interior ? m.interior->old_refract : 1.0f);
+        if (m.interior && inside.contains(id))
+            att *= interior_attenuation(*m.interior, hit.t, false);
+        child.coeff *= att;
+        child.transmit_factor *= att.grey();
         if (std::fabs(eta - 1) < kPovEpsilon) {
             child.trace.ray = {P, D};
             child.trace.depth = ray.depth;
@@ -406,11 +537,18 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
             Real t = 1 + eta * eta * (n * n - 1);
             child.trace.depth = ray.depth + 1;
             if (t < 0) {
-                // Total internal reflection: reflected, not filtered, stays inside.
+                // Total internal reflection: reflected with the top normal, not
+                // filtered, no alpha, and the ray stays inside; the layers whose normal
+                // is the top one reflect no more.
                 Vector3 R = D + top_normal * (2 * n);
+                child.kind = ChildRay::Kind::Reflection;
                 child.trace.ray = {P, normalize(R)};
+                child.trace.use = RayUse::Reflection;
                 child.trace.interiors = ray.interiors;
                 child.coeff = att;
+                child.transmit_factor = 0;
+                drop_reflections_with_normal(out.children, reflection_normals,
+                                             top_normal);
             } else {
                 Vector3 T = D * eta + top_normal * (eta * n - std::sqrt(t));
                 child.trace.ray = {P, normalize(T)};
@@ -491,6 +629,52 @@ FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth) {
     return e;
 }
 
+namespace {
+
+// Faked caustics: a layer lets more light through where the shadow ray crosses the
+// surface head on (POV-Ray's 1 + |N.D|^caustics, with the layer's perturbed normal).
+float caustic_gain(const PreparedScene& scene, const Texture* t, float caustics,
+                   const Hit& hit, const Ray& ray) {
+    Vector3 n = hit.normal;
+    if (t && t->normal) n = perturb_normal(*t->normal, hit.point, n, scene.pattern_env());
+    return float(1 + std::pow(std::fabs(dot(n, ray.direction)), Real(caustics)));
+}
+
+// What a surface with `layers` lets through toward a light (POV-Ray's shadow texture):
+// the product of its layers' filter and transmit; a patterned texture (texture_map,
+// checker of textures) blends its two entries around the pattern value.
+Rgb shadow_filter(const PreparedScene& scene, const LayeredTexture& layers,
+                  float caustics, const Hit& hit, const Ray& ray) {
+    if (layers.size() == 1 && layers.front().map_pattern &&
+        !layers.front().map->entries.empty()) {
+        const Texture& t = layers.front();
+        const int count = int(t.map->entries.size());
+        const bool has_values = int(t.map->values.size()) == count;
+        const MapPick pick =
+            pick_map_entries(*t.map_pattern, has_values ? t.map->values.data() : nullptr,
+                             count, hit.point, scene.pattern_env());
+        const auto entry = [&](int i) -> const LayeredTexture& {
+            return t.map->entries[size_t(std::clamp(i, 0, count - 1))];
+        };
+        Rgb f = shadow_filter(scene, entry(pick.lookup.cur), caustics, hit, ray);
+        if (pick.lookup.prev != pick.lookup.cur) {
+            const float w = float(pick.lookup.fraction);
+            f = f * w +
+                shadow_filter(scene, entry(pick.lookup.prev), caustics, hit, ray) *
+                    (1 - w);
+        }
+        return f;
+    }
+    Rgb f(1.0f);
+    for (const Texture& t : layers) {
+        f *= rgb_transm(eval_pigment(scene, t.pigment, hit.point));
+        if (caustics != 0) f *= caustic_gain(scene, &t, caustics, hit, ray);
+    }
+    return f;
+}
+
+}  // namespace
+
 bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
                     Real light_distance, ShadowState& state, RayContext& ctx) {
     const Real hi = std::min(segment_end, light_distance - kShadowTolerance);
@@ -519,17 +703,20 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
         bool black = m.opaque;
         if (!black && m.plain) {
             state.filter *= rgb_transm(m.plain_colour);
+            if (m.interior && m.interior->caustics != 0)
+                state.filter *=
+                    caustic_gain(scene, nullptr, m.interior->caustics, hit, ray);
         } else if (!black) {
-            for (const Texture& t : texture_of(m))
-                state.filter *= rgb_transm(eval_pigment(scene, t.pigment, hit.point));
+            state.filter *= shadow_filter(
+                scene, texture_of(m), m.interior ? m.interior->caustics : 0.0f, hit, ray);
         }
         if (!black) {
-            if (state.inside.contains(m.object)) {
+            if (state.inside.contains(m.interior_id)) {
                 if (m.interior) {
                     state.filter *=
                         interior_attenuation(*m.interior, hit.t - state.last_hit, true);
                 }
-                state.inside.remove(m.object);
+                state.inside.remove(m.interior_id);
             } else {
                 state.inside.push(&m);
             }
@@ -655,8 +842,9 @@ Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow,
 namespace {
 
 // A ray that hits nothing crosses fog up to POV-Ray's MAX_DISTANCE.
-TraceResult fogged(const Scene& sc, const Ray& ray, TraceResult r) {
-    if (sc.fogs.empty()) return r;
+TraceResult fogged(const PreparedScene& scene, const Ray& ray, TraceResult r) {
+    const Scene& sc = scene.scene();
+    if (sc.fogs.empty() || !scene.plan().quality.atmosphere()) return r;
     FogEffect f = fog_effect(sc, ray, kMaxDistance);
     return {f.add + f.mul * r.colour, f.add_transmit + f.mul_transmit * r.transmit};
 }
@@ -685,8 +873,8 @@ TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
     const Rgb emission = sky ? sc.sky_sphere->emission : Rgb(1.0f);
     if (sc.language_version < 370) {
         // Legacy: full transparency with alpha; else the 3.6 compositing.
-        if (alpha) return fogged(sc, ray, {Rgb{}, 1.0f});
-        if (!sky) return fogged(sc, ray, {bg.rgb, 0.0f});
+        if (alpha) return fogged(scene, ray, {Rgb{}, 1.0f});
+        if (!sky) return fogged(scene, ray, {bg.rgb, 0.0f});
         Rgb col, fil(1.0f);
         float ff = 1, ft = 1, trans = 1;
         for (auto it = sc.sky_sphere->pigments.rbegin();
@@ -699,7 +887,7 @@ TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
             trans = std::fabs(ff) + std::fabs(ft);
         }
         col *= emission;
-        return fogged(sc, ray, {col + bg.rgb * (fil * ff + Rgb(ft)), 0.0f});
+        return fogged(scene, ray, {col + bg.rgb * (fil * ff + Rgb(ft)), 0.0f});
     }
     Rgb col, fil(1.0f);
     if (sky) {
@@ -714,7 +902,7 @@ TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
     // +UA, see above).
     col += bg.rgb * (1 - bg.filter - bg.transmit) * fil;
     fil *= rgb_transm(bg);
-    return fogged(sc, ray, {col, std::min(1.0f, std::fabs(fil.grey()))});
+    return fogged(scene, ray, {col, std::min(1.0f, std::fabs(fil.grey()))});
 }
 
 }  // namespace povwall::trace

@@ -32,29 +32,31 @@
 
 namespace povwall::trace {
 
-// The objects a ray is inside of, innermost last (for the relative IOR and interior
-// fade).
+// The interiors a ray is inside of, innermost (last entered) last, as POV-Ray's ray
+// keeps them: each entry is the material of a surface where the ray entered, and entries
+// are told apart by Material::interior_id, so leaving one object of a shared interior
+// leaves them all.
 struct InteriorStack {
     static constexpr int kCapacity = 8;
     const Material* items[kCapacity] = {};
     int size = 0;
-    bool contains(const Object* o) const {
+    bool contains(uintptr_t interior) const { return find(interior) >= 0; }
+    // Index of the first entry of `interior`, or -1.
+    int find(uintptr_t interior) const {
         for (int i = 0; i < size && i < kCapacity; ++i)
-            if (items[i] && items[i]->object == o) return true;
-        return false;
+            if (items[i] && items[i]->interior_id == interior) return i;
+        return -1;
     }
     void push(const Material* m) {
         if (size < kCapacity) items[size++] = m;
     }
-    void remove(const Object* o) {
-        for (int i = 0; i < size; ++i) {
-            if (items[i] && items[i]->object == o) {
-                for (int j = i; j + 1 < size && j + 1 < kCapacity; ++j)
-                    items[j] = items[j + 1];
-                --size;
-                return;
-            }
-        }
+    // Removes the first entry of `interior` (POV-Ray's RemoveInterior); false if none.
+    bool remove(uintptr_t interior) {
+        const int i = find(interior);
+        if (i < 0) return false;
+        for (int j = i; j + 1 < size && j + 1 < kCapacity; ++j) items[j] = items[j + 1];
+        --size;
+        return true;
     }
     const Material* innermost() const { return size ? items[size - 1] : nullptr; }
 };

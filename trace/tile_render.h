@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/scene.h"
+#include "trace/camera_interiors.h"
 #include "trace/prepared_scene.h"
 #include "trace/render.h"
 #include "trace/render_plan.h"
@@ -24,6 +25,7 @@ class TileRenderer {
     RenderSettings settings_;
     RenderPlan plan_;
     PreparedScene prepared_;
+    CameraInteriors camera_interiors_;
     Tracer tracer_;
 };
 

@@ -8,22 +8,8 @@ Tracer::Tracer(const PreparedScene& scene) : scene_(scene) { scene.init_context(
 TraceResult Tracer::trace(const TraceRay& ray) { return trace_at(ray, 0); }
 
 TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
-    const GlobalSettings& g = scene_.scene().settings;
-    // A refused ray is black and opaque (POV-Ray's max_trace_level and adc_bailout rule).
-    if (ray.depth > g.max_trace_level || ray.weight < g.adc_bailout) return {};
-    switch (ray.use) {
-        case RayUse::Camera:
-            ++counters_.camera;
-            break;
-        case RayUse::Reflection:
-            ++counters_.reflected;
-            break;
-        case RayUse::Refraction:
-            ++counters_.refracted;
-            break;
-        case RayUse::Shadow:
-            break;
-    }
+    if (refuse_ray(ray, scene_.scene().settings, counters_)) return {};
+    count_ray(ray, counters_);
     Hit hit;
     if (!scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_)) {
         return miss_colour(scene_, ray.ray);

@@ -95,10 +95,10 @@ TEST(RenderPlan, DiffuseSceneHasNoReflectionRefractionOrParentTable) {
 
     trace::RenderStats stats;
     trace::render_scene(scene, settings(false), &stats);
-    EXPECT_EQ(stats.camera_rays, 64u * 48u);
-    EXPECT_EQ(stats.reflected_rays, 0u);
-    EXPECT_EQ(stats.refracted_rays, 0u);
-    EXPECT_GT(stats.shadow_rays, 0u);
+    EXPECT_EQ(stats.rays.camera, 64u * 48u);
+    EXPECT_EQ(stats.rays.reflected, 0u);
+    EXPECT_EQ(stats.rays.refracted, 0u);
+    EXPECT_GT(stats.rays.shadow, 0u);
 
     SpaceOptions o;
     o.boxes = {2, 2, 2};
@@ -106,8 +106,8 @@ TEST(RenderPlan, DiffuseSceneHasNoReflectionRefractionOrParentTable) {
     render_space(scene, settings(false), o, &space);
     EXPECT_FALSE(space.parent_tracking);
     for (const BoxStats& b : space.boxes) {
-        EXPECT_EQ(b.reflected, 0u);
-        EXPECT_EQ(b.refracted, 0u);
+        EXPECT_EQ(b.rays.reflected, 0u);
+        EXPECT_EQ(b.rays.refracted, 0u);
         EXPECT_EQ(b.peak_parents, 0u);
         EXPECT_EQ(b.results_received, 0u);
     }
@@ -134,8 +134,8 @@ TEST(RenderPlan, UnblockableShadowRaysAreLeftOut) {
         trace::RenderStats left_out, forced;
         trace::render_scene(scene, settings(false), &left_out);
         trace::render_scene(scene, settings(true), &forced);
-        EXPECT_EQ(left_out.shadow_rays, 0u);
-        EXPECT_GT(forced.shadow_rays, 0u);
+        EXPECT_EQ(left_out.rays.shadow, 0u);
+        EXPECT_GT(forced.rays.shadow, 0u);
     }
     // A second object that casts shadows brings them back.
     std::string two = std::string(kLoneSphere) + "sphere { <1, 2, -1>, 0.3 }\n";

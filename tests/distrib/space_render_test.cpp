@@ -116,7 +116,7 @@ TEST_F(SpaceRender, DirectHandOverGivesTheQueuedImageAndTheSameMessages) {
         for (int k = 0; k < 2; ++k) {
             for (const auto& box : (k == 0 ? queued : direct).boxes) {
                 sent[k] += box.messages_sent;
-                rays[k] += box.camera + box.reflected + box.refracted + box.shadow;
+                rays[k] += box.rays.rays();
                 peak[k] += box.peak_queue;
             }
         }
@@ -250,7 +250,7 @@ TEST_F(SpaceRender, StatsShowLocalScenesAndTraffic) {
     uint64_t camera = 0, sent = 0;
     for (const auto& b : stats.boxes) {
         max_objects = std::max(max_objects, b.objects);
-        camera += b.camera;
+        camera += b.rays.camera;
         sent += b.messages_sent;
         EXPECT_EQ(b.peak_parents, 0u);  // forward contributions park nothing
     }

@@ -163,7 +163,7 @@ TEST(AntiAliasRecursive, FlatImageTracesOnlyThePixelCorners) {
     rs.aa_depth = 4;
     RenderStats stats;
     Image img = render_scene(s, rs, &stats);
-    EXPECT_EQ(stats.camera_rays, uint64_t(11 * 8));
+    EXPECT_EQ(stats.rays.camera, uint64_t(11 * 8));
     EXPECT_FLOAT_EQ(img.pixel(3, 3)[2], 0.4f);
 }
 
@@ -181,13 +181,13 @@ TEST(AntiAliasRecursive, SubdividesOnlyWhereCornersDiffer) {
     RenderStats stats;
     Image img = render_scene(s, rs, &stats);
     const uint64_t corners = 33 * 25;
-    EXPECT_GT(stats.camera_rays, corners);
+    EXPECT_GT(stats.rays.camera, corners);
     // Flat pixels far from the sphere keep the plain mean of their corners: the
     // background.
     EXPECT_FLOAT_EQ(img.pixel(0, 0)[0], 0.5f);
     EXPECT_FLOAT_EQ(img.pixel(31, 23)[1], 0.5f);
     // Depth 3 splits a pixel at most into 4 + 16 squares: 5 + 16 midpoint/centre samples.
-    EXPECT_LT(stats.camera_rays, corners + 21 * 32 * 24);
+    EXPECT_LT(stats.rays.camera, corners + 21 * 32 * 24);
 }
 
 TEST(AntiAliasJitter, OffsetsAreRepeatableAndUniform) {

@@ -1,0 +1,179 @@
+// What POV-Ray's parser does to an object once it is placed, and keywords it checks: a
+// CSG's interior shared by the children without their own, object{} copies apart, the old
+// finish { ior refraction caustics } moved into the interior (the last sharer wins),
+// hollow passed down, light types and their items, finish details.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "parser/parser.h"
+
+namespace povwall::parser {
+namespace {
+
+Scene parse(const std::string& text) {
+    std::ostringstream messages;
+    ParseOptions o;
+    o.messages = &messages;
+    return parse_scene_text(text, "test.pov", o);
+}
+
+std::string error_of(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const ParseError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+const Object& child(const Object& o, size_t i) {
+    return std::get<Csg>(o.shape).children[i];
+}
+
+TEST(PostProcess, CsgChildrenShareItsInteriorObjectCopiesDoNot) {
+    Scene s = parse(R"(
+#declare S = sphere { 0, 1 interior { ior 1.3 } }
+union { sphere { 0, 1 } sphere { x, 1 } sphere { y, 1 interior { ior 2 } } interior { ior 1.5 } }
+object { S }
+object { S }
+sphere { 0, 1 }
+)");
+    const Object& u = s.objects[0];
+    EXPECT_EQ(child(u, 0).interior->id, u.interior->id);
+    EXPECT_EQ(child(u, 1).interior->id, u.interior->id);
+    EXPECT_NE(child(u, 2).interior->id, u.interior->id);
+    EXPECT_FLOAT_EQ(child(u, 1).interior->ior, 1.5f);
+    EXPECT_FLOAT_EQ(child(u, 2).interior->ior, 2.0f);
+    // Each copy of a declared object has its own interior; an object without one gets
+    // a new one too.
+    EXPECT_NE(s.objects[1].interior->id, s.objects[2].interior->id);
+    EXPECT_NE(s.objects[3].interior->id, 0u);
+    EXPECT_NE(s.objects[3].interior->id, s.objects[2].interior->id);
+}
+
+TEST(PostProcess, OldFinishIorGoesIntoTheSharedInteriorAndTheLastSharerWins) {
+    Scene s = parse(R"(
+union { sphere { 0, 1 } sphere { x, 1 finish { ior 1.2 refraction 0.5 } } interior { ior 1.5 } }
+sphere { 0, 1 finish { caustics 0.4 } interior { caustics 1 refraction 0.3 } }
+sphere { 0, 1 texture { checker texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } }
+         interior { refraction 0.3 } }
+)");
+    const Object& u = s.objects[0];
+    // The second child's plain texture rewrites the interior it shares with the union
+    // and its sibling.
+    for (const Object* o : {&u, &child(u, 0), &child(u, 1)}) {
+        EXPECT_FLOAT_EQ(o->interior->ior, 1.2f);
+        EXPECT_FLOAT_EQ(o->interior->old_refract, 0.5f);
+    }
+    // finish caustics are moved unscaled (interior caustics are x45); a plain texture's
+    // finish refraction (1 when not given) replaces interior { refraction }.
+    EXPECT_FLOAT_EQ(s.objects[1].interior->caustics, 0.4f);
+    EXPECT_FLOAT_EQ(s.objects[1].interior->old_refract, 1.0f);
+    // A patterned texture (of textures) is not plain: the interior keeps its refraction.
+    EXPECT_FLOAT_EQ(s.objects[2].interior->old_refract, 0.3f);
+    EXPECT_FLOAT_EQ(
+        parse("sphere { 0, 1 interior { caustics 0.5 } }").objects[0].interior->caustics,
+        22.5f);
+}
+
+TEST(PostProcess, HollowGoesDownToChildrenThatDidNotSayExceptThroughDifference) {
+    Scene s = parse(R"(
+union { sphere { 0, 1 } sphere { x, 1 hollow off interior { } } union { sphere { y, 1 } }
+        hollow }
+difference { sphere { 0, 1 } sphere { x, 1 } hollow }
+)");
+    const Object& u = s.objects[0];
+    EXPECT_TRUE(child(u, 0).hollow);
+    EXPECT_FALSE(child(u, 1).hollow);
+    EXPECT_FALSE(child(u, 2).hollow);  // a nested union passes it on, keeping its own
+    EXPECT_TRUE(child(child(u, 2), 0).hollow);
+    // The interior holds the flag of the last object placed with it: the union's is
+    // shared with the leaves, which are hollow; the second sphere has its own.
+    EXPECT_TRUE(child(u, 0).interior->hollow);
+    EXPECT_FALSE(child(u, 1).interior->hollow);
+    const Object& d = s.objects[1];
+    EXPECT_FALSE(child(d, 0).hollow);
+    EXPECT_FALSE(child(d, 0).interior->hollow);
+}
+
+TEST(Lights, ParallelIsAFlagAndTheTypeResetsItsCone) {
+    Scene s = parse(R"(
+light_source { <0, 5, 0> rgb 1 parallel point_at 0 }
+light_source { <0, 5, 0> rgb 1 parallel spotlight point_at 0 }
+light_source { <0, 5, 0> rgb 1 spotlight radius 10 falloff 20 spotlight }
+light_source { <0, 5, 0> rgb 1 cylinder point_at 0 }
+)");
+    EXPECT_EQ(s.lights[0].kind, Light::Kind::Parallel);
+    EXPECT_EQ(s.lights[1].kind, Light::Kind::Spot);
+    EXPECT_TRUE(s.lights[1].parallel);
+    EXPECT_DOUBLE_EQ(s.lights[2].radius, 30);
+    EXPECT_DOUBLE_EQ(s.lights[2].falloff, 45);
+    EXPECT_EQ(s.lights[3].kind, Light::Kind::Cylinder);
+    EXPECT_FALSE(s.lights[3].parallel);
+    EXPECT_EQ(
+        error_of("light_source { 0, 1 radius 10 }"),
+        "test.pov:1:21: error: 'radius' cannot be used with a standard light source\n"
+        "light_source { 0, 1 radius 10 }\n"
+        "                    ^~~~~~");
+    EXPECT_EQ(error_of("light_source { 0, 1 point_at x }"),
+              "test.pov:1:21: error: 'point_at' cannot be used with a standard light "
+              "source\n"
+              "light_source { 0, 1 point_at x }\n"
+              "                    ^~~~~~~~");
+}
+
+TEST(Finishes, DiffuseBackAndAlbedoAtTheEndOfTheBlock) {
+    Scene s = parse(R"(
+sphere { 0, 1 finish { diffuse 0.6, 0.4 } }
+sphere { 0, 1 finish { diffuse albedo 0.6 brilliance 3 phong albedo 0.5 phong_size 9 } }
+sphere { 0, 1 finish { specular albedo 0.5 roughness 0.05 } }
+)");
+    const Finish& a = *s.objects[0].texture[0].finish;
+    EXPECT_FLOAT_EQ(a.diffuse, 0.6f);
+    EXPECT_FLOAT_EQ(a.diffuse_back, 0.4f);
+    const Finish& b = *s.objects[1].texture[0].finish;
+    EXPECT_FLOAT_EQ(b.diffuse, 0.6f * 2);  // (brilliance + 1) / 2 with the later 3
+    EXPECT_FLOAT_EQ(b.phong, 0.5f * 5);    // (phong_size + 1) / 2 with the later 9
+    // roughness 0.05 is R = 20: (R + 2) / (4 (2 - 2^-10)).
+    EXPECT_FLOAT_EQ(s.objects[2].texture[0].finish->specular,
+                    float(0.5 * 22 / (4 * (2 - std::pow(2.0, -10)))));
+}
+
+TEST(Keywords, RefusedOrCheckedWhereTheyStand) {
+    EXPECT_EQ(error_of("sphere { 0, 1 sturm }"),
+              "test.pov:1:15: error: 'sturm' cannot be used with this object\n"
+              "sphere { 0, 1 sturm }\n"
+              "              ^~~~~");
+    EXPECT_EQ(error_of("box { 0, 1 open }"),
+              "test.pov:1:12: error: 'open' cannot be used with this object\n"
+              "box { 0, 1 open }\n"
+              "           ^~~~");
+    EXPECT_EQ(error_of("union { sphere { 0, 1 } sphere { x, 1 } cutaway_textures }"),
+              "test.pov:1:41: error: cutaway_textures can only be used with intersection "
+              "and difference\n"
+              "union { sphere { 0, 1 } sphere { x, 1 } cutaway_textures }\n"
+              "                                        ^~~~~~~~~~~~~~~~");
+    EXPECT_EQ(
+        error_of("intersection { sphere { 0, 1 } sphere { x, 1 } cutaway_textures }"),
+        "test.pov:1:48: error: unsupported: cutaway_textures\n"
+        "intersection { sphere { 0, 1 } sphere { x, 1 } cutaway_textures }\n"
+        "                                               ^~~~~~~~~~~~~~~~");
+    EXPECT_EQ(error_of("light_source { 0, 1 area_light x, y, 2, 2 area_illumination }"),
+              "test.pov:1:43: error: unsupported: area_illumination\n"
+              "light_source { 0, 1 area_light x, y, 2, 2 area_illumination }\n"
+              "                                          ^~~~~~~~~~~~~~~~~");
+    EXPECT_EQ(error_of("sphere { 0, 1 interior { dispersion 1.02 } }"),
+              "test.pov:1:37: error: unsupported: dispersion\n"
+              "sphere { 0, 1 interior { dispersion 1.02 } }\n"
+              "                                    ^~~~");
+    // Off, they change nothing and are accepted.
+    EXPECT_EQ(error_of("light_source { 0, 1 area_light x, y, 2, 2 area_illumination off }"
+                       "sphere { 0, 1 interior { dispersion 1 } no_radiosity }"
+                       "mesh { triangle { 0, x, y } hierarchy off }"),
+              "(no error)");
+}
+
+}  // namespace
+}  // namespace povwall::parser

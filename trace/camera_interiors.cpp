@@ -1,0 +1,68 @@
+#include "trace/camera_interiors.h"
+
+#include "trace/prepared_scene.h"
+
+namespace povwall::trace {
+namespace {
+
+bool contains(const Bounds3& b, const Point3& p) {
+    return p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y &&
+           p.z >= b.lo.z && p.z <= b.hi.z;
+}
+
+}  // namespace
+
+CameraInteriors::CameraInteriors(const Scene& scene) {
+    const Camera& cam = scene.camera;
+    using Kind = Camera::Kind;
+    // Where camera rays start: the location, or the image rectangle (orthographic) or
+    // line (cylinder 3, 4) around it. Bounds of these, to sort the candidates out.
+    Bounds3 origins;
+    origins.extend(cam.location);
+    per_ray_ = cam.kind == Kind::Orthographic || cam.kind == Kind::Cylinder3 ||
+               cam.kind == Kind::Cylinder4;
+    if (per_ray_) {
+        const Vector3 up = cam.kind == Kind::Cylinder4 ? Vector3{0, 0, 0} : cam.up * 0.5;
+        const Vector3 right =
+            cam.kind == Kind::Cylinder3 ? Vector3{0, 0, 0} : cam.right * 0.5;
+        for (int sx = -1; sx <= 1; sx += 2)
+            for (int sy = -1; sy <= 1; sy += 2)
+                origins.extend(cam.location + right * Real(sx) + up * Real(sy));
+    }
+    for (const Object& o : scene.objects) collect(o, origins);
+    materials_.reserve(candidates_.size());
+    for (const Object* o : candidates_) materials_.push_back(material_of(*o, o->texture));
+    if (!per_ray_) fill(cam.location, fixed_);
+}
+
+// POV-Ray's top-level objects after it splits plain unions (not clipped, bounded,
+// inverted or a merge) into their children, recursively.
+void CameraInteriors::collect(const Object& o, const Bounds3& origins) {
+    const Csg* csg = std::get_if<Csg>(&o.shape);
+    if (csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty() &&
+        o.bounded_by->empty()) {
+        for (const Object& c : csg->children) collect(c, origins);
+        return;
+    }
+    const Bounds3 b = object_world_bounds(o);
+    if (intersection(b, origins).empty()) return;
+    candidates_.push_back(&o);
+    bounds_.push_back(b);
+}
+
+void CameraInteriors::fill(const Point3& origin, InteriorStack& out) const {
+    out = InteriorStack{};
+    for (size_t i = 0; i < candidates_.size(); ++i) {
+        if (contains(bounds_[i], origin) && inside_object(*candidates_[i], origin))
+            out.push(&materials_[i]);
+    }
+}
+
+void CameraInteriors::seed(const Point3& origin, InteriorStack& out) const {
+    if (per_ray_)
+        fill(origin, out);
+    else
+        out = fixed_;
+}
+
+}  // namespace povwall::trace
