@@ -94,6 +94,11 @@ int run_compare(int argc, char** argv) {
         "reuse POV-Ray renders from this folder, keyed by a hash of the scene, its "
         "includes and the render settings");
     app.add_flag("--warn-ok", warn_ok, "exit 0 on a warning (tests)");
+    int block = 1;
+    app.add_option("--block-mean", block,
+                   "compare the means of NxN pixel squares (stochastic features: crand, "
+                   "jitter)")
+        ->check(CLI::Range(1, 4096));
     output::DiffThresholds t;
     add_diff_threshold_options(app, t);
     std::vector<std::string> pov_switches;
@@ -155,8 +160,8 @@ int run_compare(int argc, char** argv) {
     double our_s = std::chrono::duration<double>(t3 - t2).count();
     output::DiffResult r;
     try {
-        Image ours = output::read_image(our_image),
-              theirs = output::read_image(pov_image);
+        Image ours = output::block_means(output::read_image(our_image), block),
+              theirs = output::block_means(output::read_image(pov_image), block);
         r = output::diff_images(ours, theirs, t);
         if (!keep.empty() && r.status != output::DiffResult::Status::SizeMismatch) {
             OutputEncoding raw;  // |povwall - povray| as values, for looking at

@@ -102,4 +102,28 @@ Image difference_heatmap(const Image& a, const Image& b, double full_scale) {
     return heat;
 }
 
+Image block_means(const Image& image, int block) {
+    if (block <= 1) return image;
+    const int w = (image.width + block - 1) / block,
+              h = (image.height + block - 1) / block;
+    Image out(w, h);
+    for (int by = 0; by < h; ++by) {
+        for (int bx = 0; bx < w; ++bx) {
+            double sum[4] = {0, 0, 0, 0};
+            int n = 0;
+            for (int y = by * block; y < std::min(image.height, (by + 1) * block); ++y) {
+                for (int x = bx * block; x < std::min(image.width, (bx + 1) * block);
+                     ++x) {
+                    const float* p = image.pixel(x, y);
+                    for (int c = 0; c < 4; ++c) sum[c] += p[c];
+                    ++n;
+                }
+            }
+            float* o = out.pixel(bx, by);
+            for (int c = 0; c < 4; ++c) o[c] = float(sum[c] / n);
+        }
+    }
+    return out;
+}
+
 }  // namespace povwall::output

@@ -40,6 +40,11 @@ DiffResult diff_images(const Image& a, const Image& b, const DiffThresholds& t =
 DiffResult diff_files(const std::string& a, const std::string& b,
                       const DiffThresholds& t = {});
 
+// The means of `block` x `block` pixel squares (the last row and column of squares may
+// be narrower): stochastic renders (crand, jitter) are compared by these, where POV-Ray's
+// own random numbers make no two renders alike pixel for pixel.
+Image block_means(const Image& image, int block);
+
 // |a - b| per RGB channel (alpha 1), for looking at where two same-sized images differ.
 Image difference_image(const Image& a, const Image& b);
 

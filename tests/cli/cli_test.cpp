@@ -387,6 +387,38 @@ TEST(Cli, CompareReportsPovRayFailure) {
                          "identifier 'colr' found instead\n");
 }
 
+// POV-Ray's statistics of the ray tree: the deepest trace level reached ("Max Level") and
+// the rays refused for their weight ("Saved"). --stats gives the same numbers, in every
+// mode, on nested fresnel glass where adc_bailout prunes most of the tree.
+TEST(Cli, StatsMaxLevelAndAdcSavedAgreeWithPovRay) {
+    if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
+    const std::string scene =
+        std::string(POVWALL_SOURCE_DIR) + "/scenes/golden/fresnel_nested_spheres.pov";
+    const fs::path log = scratch() / "pov_stats.log";
+    const std::string pov = "povray +I" + scene + " +O" + (scratch() / "p.png").string() +
+                            " +W16 +H12 -D -A +WT1 >" + log.string() + " 2>&1";
+    ASSERT_EQ(std::system(pov.c_str()), 0);
+    std::smatch m;
+    const std::string text = slurp(log);
+    ASSERT_TRUE(std::regex_search(
+        text, m, std::regex(R"(Saved:\s+(\d+)\s+Max Level:\s+(\d+)/(\d+))")))
+        << text;
+    const uint64_t saved = std::stoull(m[1]);
+    const int level = std::stoi(m[2]);
+    EXPECT_EQ(m[3], "40");
+    for (const char* mode : {"", "--boxes 2x2x2", "--boxes 2x1x1 --procs 2"}) {
+        SCOPED_TRACE(mode);
+        const fs::path stats = scratch() / "nested_stats.json";
+        RunResult r = run("render " + scene + " -W 16 -H 12 --threads 1 -q -o " +
+                          (scratch() / "n.png").string() + " --stats " + stats.string() +
+                          " " + mode);
+        ASSERT_EQ(r.code, 0) << r.err;
+        const nlohmann::json rays = nlohmann::json::parse(slurp(stats))["rays"];
+        EXPECT_EQ(rays["saved_by_adc_bailout"].get<uint64_t>(), saved);
+        EXPECT_EQ(rays["max_trace_level_reached"].get<int>(), level);
+    }
+}
+
 // Every switch that changes the image reaches both renderers: here the version (+MV),
 // the clock of an animation's frame and a Declare; an animation is compared on its first
 // frame, under POV-Ray's numbered name.

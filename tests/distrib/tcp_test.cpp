@@ -137,6 +137,36 @@ TEST(Tcp, GlassAndCsgSceneOverProcessesEqualsOneProcess) {
 
 // With alpha output (+UA) the boxes sum the background's transmit as a fourth value per
 // pixel (without it, three); the alpha channel must come out as in one process.
+// Glass in every kind of CSG, a camera that starts inside glass, the legacy finish
+// refraction: the interiors a ray carries (shared by a CSG's children, seeded from the
+// objects around the camera) cross walls and processes unchanged, so every mode gives
+// the one-process image (each scene matches POV-Ray in tests/golden).
+TEST(Tcp, GlassCsgAndCameraInsideGlassInEveryModeEqualOneProcess) {
+    for (const char* name :
+         {"csg_glass_union", "csg_glass_merge", "csg_glass_intersection",
+          "csg_glass_difference", "camera_inside_glass", "orthographic_inside_glass",
+          "sky_plane_fresnel", "legacy_finish_refraction", "faked_caustics"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        expect_same_images(
+            scene, "-W 40 -H 30",
+            {"--mode screen --procs 2", "--boxes 2x2x2", "--boxes 3x1x2 --procs 2",
+             "--boxes 4x1x1 --procs 4 --results parents"});
+    }
+}
+
+// Quality levels change what is traced (no shadows, no refraction, pigments only): every
+// mode leaves out the same rays.
+TEST(Tcp, QualityLevelsInEveryModeEqualOneProcess) {
+    const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/quality_levels.pov";
+    for (const char* level : {"+Q0", "+Q4", "+Q5", "+Q8"}) {
+        SCOPED_TRACE(level);
+        expect_same_images(scene, std::string("-W 40 -H 30 ") + level,
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents"});
+    }
+}
+
 TEST(Tcp, AlphaOutputOverProcessesEqualsOneProcess) {
     fs::path scene = scratch() / "glass_alpha.pov";
     std::ofstream(scene) << kGlassCsgScene;
