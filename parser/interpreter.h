@@ -96,8 +96,9 @@ class Interpreter {
     void declare_symbol(uint32_t sym, Value v, bool local, const Token& at);
 
     // ---- expressions (expressions.cpp)
-    Value parse_expression_value();             // float, vector, colour or string
-    Value parse_value_additive();               // same without comparisons (array items)
+    Value parse_expression_value();  // float, vector, colour or string
+    // Same without comparisons: POV-Ray's Parse_RValue (array items, macro arguments).
+    Value parse_value_additive();
     Numeric parse_numeric(bool no_gt = false);  // POV-Ray's Parse_Float/Vector level
     Numeric parse_express();                    // full expression (Parse_Express)
     double parse_float();
@@ -113,6 +114,8 @@ class Interpreter {
     Colour parse_colour_value();
     bool parse_bool_opt();
     bool starts_float(const Token& t);  // can `t` begin a float expression?
+    // Can `t` begin a float, vector or colour expression (POV-Ray's CASE_EXPRESS)?
+    bool starts_expression(const Token& t);
     void require_operand(std::string_view what);
     float parse_map_value(
         bool average);  // the value of a *_map entry  // error if the block ends here //
@@ -150,6 +153,7 @@ class Interpreter {
     void parse_global_settings();
     Value parse_declared_value(const Token& first);
     Value parse_item_value(const Token& t);
+    void parse_array_initializer(ArrayValue& a, size_t dim, size_t base);
     // `spline { ... }` after the keyword, and a call `S(p [, kind])` after `S`.
     std::shared_ptr<const Spline> parse_spline_block();
     Numeric call_spline(const Spline& s);

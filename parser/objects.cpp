@@ -358,7 +358,10 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             d.normal = parse_vector();
             accept_punct(',');
             d.radius = parse_float();
-            if (accept_punct(',')) d.hole_radius = parse_float();
+            // disc { c[,] n[,] r[,] [hole] }: POV-Ray reads floats while they come, the
+            // last one is the hole radius.
+            accept_punct(',');
+            while (starts_float(peek())) d.hole_radius = parse_float();
             out.shape = d;
         }
     } else if (w == "triangle") {

@@ -625,7 +625,9 @@ Finish Interpreter::parse_finish_block() {
         } else if (w == "diffuse") {
             bool albedo = accept_word("albedo");
             f.diffuse = float(parse_float());
-            if (accept_punct(',')) parse_float();  // diffuse back: not modelled
+            // `diffuse a[,] [back]`: the backside value is read, not modelled.
+            accept_punct(',');
+            if (starts_float(peek())) parse_float();
             if (albedo) f.diffuse *= (f.brilliance + 1) / 2;
         } else if (w == "brilliance") {
             f.brilliance = float(parse_float());
@@ -649,7 +651,9 @@ Finish Interpreter::parse_finish_block() {
                 Rgb a = rgb_of(parse_colour());
                 Rgb b = a;
                 bool two = false;
-                if (accept_punct(',')) {
+                // reflection { min[,] [max] ...}
+                accept_punct(',');
+                if (starts_expression(peek())) {
                     b = rgb_of(parse_colour());
                     two = true;
                 }
