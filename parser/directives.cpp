@@ -587,7 +587,9 @@ void Interpreter::directive_include(const Token& t) {
 }
 
 // #default { texture {...} | pigment {...} | finish {...} | normal {...} }: what later
-// textures start from.
+// textures start from. Each block edits the current default, so #defaults accumulate
+// (POV-Ray's Parse_Default); a texture starts from the current default too and must be
+// plain and single-layered.
 void Interpreter::directive_default() {
     expect_punct('{', "after #default");
     for (;;) {
@@ -595,13 +597,16 @@ void Interpreter::directive_default() {
         if (is_punct(t, '}')) return;
         if (is_word(t, "texture")) {
             LayeredTexture layers = parse_texture_block();
+            if (layers.back().map_pattern)
+                error(t, "the default texture cannot be patterned");
+            if (layers.size() > 1) error(t, "the default texture cannot be layered");
             default_texture_ = layers.back();
         } else if (is_word(t, "pigment")) {
-            default_texture_.pigment = parse_pigment_block();
+            parse_pigment_into(default_texture_.pigment);
         } else if (is_word(t, "finish")) {
-            default_texture_.finish = shared_finish(parse_finish_block());
+            parse_finish_into(default_texture_.finish);
         } else if (is_word(t, "normal")) {
-            default_texture_.normal = parse_normal_block();
+            parse_normal_into(default_texture_.normal);
         } else {
             expected("texture, pigment, finish or normal in #default", t);
         }

@@ -133,13 +133,25 @@ class Interpreter {
     void collect_lights(Object& obj);
     LayeredTexture parse_texture_block();  // after 'texture'
     void parse_texture_body(LayeredTexture& layers, char terminator);
+    // After the keyword: a new part starts from the default texture's (a fresh interior);
+    // the *_into forms edit the part a texture, object or #default holds, so a repeated
+    // block continues from the earlier one (notes/parser-rules.md §2).
     Pigment parse_pigment_block();  // after 'pigment'
+    void parse_pigment_into(Pigment& p);
     void parse_pigment_body(Pigment& p, char terminator);
     Finish parse_finish_block();  // after 'finish'
+    void parse_finish_into(Finish& f);
+    void parse_finish_into(SharedValue<Finish>& f);
     SharedValue<Finish> shared_finish(const Finish& f);
     Normal parse_normal_block();  // after 'normal'
+    void parse_normal_into(HeapOptional<Normal>& n);
     void parse_normal_body(Normal& n, char terminator);
-    Interior parse_interior_block();     // after 'interior'
+    Interior parse_interior_block();  // after 'interior'
+    void parse_interior_into(Interior& in);
+    void parse_interior_into(HeapOptional<Interior>& in);
+    // Puts `layers` on top of an object's (or a declaration's) texture, refusing to
+    // layer over or with a patterned texture as POV-Ray's Link_Textures does.
+    void link_textures(LayeredTexture& onto, LayeredTexture&& layers, const Token& at);
     ColourMap parse_colour_map_block();  // after 'color_map'
     bool try_pattern_keyword(const Token& t, PatternSpec& spec);
     bool try_pattern_keyword(const Token& t, HeapValue<PatternSpec>& spec);

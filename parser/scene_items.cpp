@@ -714,10 +714,8 @@ Value Interpreter::parse_item_value(const Token& t) {
         if (w == "texture") {
             // `#declare T = texture {...} texture {...}` declares a layered texture.
             LayeredTexture layers = parse_texture_block();
-            while (accept_raw_word("texture")) {
-                LayeredTexture more = parse_texture_block();
-                layers.insert(layers.end(), more.begin(), more.end());
-            }
+            while (accept_raw_word("texture"))
+                link_textures(layers, parse_texture_block(), t);
             return std::make_shared<LayeredTexture>(std::move(layers));
         }
         if (w == "spline") return parse_spline_block();

@@ -1,6 +1,8 @@
 // POV-Ray 3.7's optional commas (notes/parser-rules.md §1): optional exactly where 3.7
 // reads them with Parse_Comma, required where it loops on a comma. The #debug outputs
 // below are what POV-Ray 3.7.0.10 prints for the same lines.
+// Repeated blocks (§2): a second pigment, normal, finish or interior block edits the
+// first; scenes/golden/repeated_blocks.pov checks the same against POV-Ray's image.
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -275,6 +277,163 @@ TEST(Commas, MapsListsSplinesAndDirectives) {
               "test.pov:1:17: error: expected ')' but found ','");
     EXPECT_EQ(error_of("#switch (3) #range (1, 5,) #end"),
               "test.pov:1:25: error: expected ')' but found ','");
+}
+
+const Texture& top_layer(const Scene& s, size_t object) {
+    return s.objects.at(object).texture.back();
+}
+
+TEST(RepeatedBlocks, ASecondFinishContinuesFromTheFirst) {
+    Scene s = parse(
+        "sphere { 0, 1 texture { pigment { rgb 1 } finish { ambient 0.3 diffuse 0.4 }\n"
+        "  finish { phong 0.8 reflection 0.2 } } }\n"
+        "#declare F = finish { ambient 0.5 phong 0.3 phong_size 20 };\n"
+        "sphere { 0, 1 finish { F phong 1 } }\n"
+        "sphere { 0, 1 finish { phong 0.5 } finish { F } }\n"
+        "sphere { 0, 1 finish { diffuse albedo 0.6 brilliance 3 phong albedo 0.5 } }\n");
+    const Finish& a = *top_layer(s, 0).finish;
+    EXPECT_FLOAT_EQ(a.ambient.r, 0.3f);
+    EXPECT_FLOAT_EQ(a.diffuse, 0.4f);
+    EXPECT_FLOAT_EQ(a.phong, 0.8f);
+    EXPECT_FLOAT_EQ(a.reflection_max.g, 0.2f);
+    const Finish& b = *top_layer(s, 1).finish;
+    EXPECT_FLOAT_EQ(b.ambient.r, 0.5f);
+    EXPECT_FLOAT_EQ(b.phong, 1.0f);
+    EXPECT_FLOAT_EQ(b.phong_size, 20.0f);
+    // An identifier first replaces what the block edits.
+    EXPECT_FLOAT_EQ(top_layer(s, 2).finish->phong, 0.3f);
+    // Albedo scales by the values the block ends with: 0.6 * (3 + 1) / 2, 0.5 * 41 / 2.
+    EXPECT_FLOAT_EQ(top_layer(s, 3).finish->diffuse, 1.2f);
+    EXPECT_FLOAT_EQ(top_layer(s, 3).finish->phong, 10.25f);
+    // The identifier only as the first item.
+    EXPECT_EQ(
+        error_of(
+            "#declare F = finish { phong 1 };\nsphere { 0, 1 finish { ambient 1 F } }"),
+        "test.pov:2:34: error: expected a finish item or '}' but found 'F'");
+}
+
+TEST(RepeatedBlocks, ASecondPigmentEditsTheFirst) {
+    Scene s = parse(
+        "sphere { 0, 1 pigment { gradient x color_map { [0 rgb 0] [1 rgb <0, 0, 1>] } "
+        "scale 2 } pigment { gradient y } }\n"
+        "sphere { 0, 1 pigment { rgb <1, 0, 0> } pigment { translate x } }\n"
+        "sphere { 0, 1 pigment { checker rgb 1 rgb 0 } pigment { checker rgb 0.5 } }\n"
+        "sphere { 0, 1 pigment { brick brick_size <1, 2, 3> mortar 0.1 } "
+        "pigment { brick } }\n"
+        "sphere { 0, 1 pigment { spiral1 5 } pigment { brick } }\n"
+        "sphere { 0, 1 pigment { bozo color_map { [0 rgb 1] [1 rgb 0] } } "
+        "pigment { checker } }\n");
+    const Pigment& g = top_layer(s, 0).pigment;
+    EXPECT_EQ(g.pattern->kind, PatternKind::Gradient);
+    expect_vec(g.pattern->vector, 0, 1, 0);
+    ASSERT_EQ(g.maps->colour_map.size(), 2u);  // the map stays
+    EXPECT_FLOAT_EQ(g.maps->colour_map[1].colour.rgb.b, 1.0f);
+    EXPECT_DOUBLE_EQ(g.pattern->transform.point(Point3(1, 1, 1)).y,
+                     2);  // so does the scale
+    const Pigment& red = top_layer(s, 1).pigment;
+    EXPECT_EQ(red.pattern->kind, PatternKind::Solid);
+    EXPECT_FLOAT_EQ(red.colour.rgb.r, 1.0f);
+    // A blend list replaces the earlier one (the missing entry is the default's).
+    ASSERT_EQ(top_layer(s, 2).pigment.maps->list.size(), 1u);
+    EXPECT_FLOAT_EQ(top_layer(s, 2).pigment.maps->list[0].colour.rgb.r, 0.5f);
+    // brick keeps its size and mortar when it was brick already; other parameters are
+    // the new pattern's own.
+    expect_vec(top_layer(s, 3).pigment.pattern->vector2, 1, 2, 3);
+    EXPECT_DOUBLE_EQ(top_layer(s, 3).pigment.pattern->scalar, 0.1);
+    expect_vec(top_layer(s, 4).pigment.pattern->vector2, 0, 0, 0);
+    EXPECT_DOUBLE_EQ(top_layer(s, 4).pigment.pattern->scalar, 0);
+    EXPECT_TRUE(top_layer(s, 5).pigment.maps->colour_map.empty());
+}
+
+TEST(RepeatedBlocks, NormalsAndInteriors) {
+    Scene s = parse(
+        "#declare N = normal { dents 0.7 };\n"
+        "sphere { 0, 1 normal { bumps 0.6 scale 0.2 } normal { scale 2 } }\n"
+        "sphere { 0, 1 normal { N 0.3 } }\n"
+        "sphere { 0, 1 interior { ior 1.5 } interior { fade_distance 2 } }\n"
+        "#declare I = interior { caustics 0.5 };\n"
+        "sphere { 0, 1 interior { ior 1.5 } interior { I fade_power 3 } }\n");
+    const Normal& n = *top_layer(s, 0).normal;
+    EXPECT_EQ(n.pattern->kind, PatternKind::Bumps);
+    EXPECT_DOUBLE_EQ(n.amount, 0.6);
+    EXPECT_NEAR(n.pattern->transform.point(Point3(1, 0, 0)).x, 0.4, 1e-15);
+    EXPECT_EQ(top_layer(s, 1).normal->pattern->kind, PatternKind::Dents);
+    EXPECT_DOUBLE_EQ(top_layer(s, 1).normal->amount, 0.3);
+    ASSERT_TRUE(s.objects[2].interior);
+    EXPECT_FLOAT_EQ(s.objects[2].interior->ior, 1.5f);
+    EXPECT_FLOAT_EQ(s.objects[2].interior->fade_distance, 2.0f);
+    // An identifier first replaces the interior.
+    EXPECT_FLOAT_EQ(s.objects[3].interior->ior, 1.0f);
+    EXPECT_FLOAT_EQ(s.objects[3].interior->caustics, 0.5f);
+    EXPECT_FLOAT_EQ(s.objects[3].interior->fade_power, 3.0f);
+}
+
+TEST(RepeatedBlocks, LoosePartsEditTheTopLayer) {
+    Scene s = parse(
+        "sphere { 0, 1 texture { pigment { rgb 1 } }\n"
+        "  texture { pigment { rgbt <0, 0, 1, 0.5> } finish { phong 1 } }\n"
+        "  pigment { rgbt <0, 1, 0, 0.5> } }\n"
+        "#declare T = texture { pigment { rgb <1, 0, 0> } finish { diffuse 0.2 } };\n"
+        "sphere { 0, 1 texture { T } finish { ambient 0.5 } }\n"
+        "sphere { 0, 1 pigment { gradient x } pigment { scale 2 } finish { phong 1 } }\n"
+        "sphere { 0, 1 material { texture { pigment { rgb 1 } } scale 3 } }\n");
+    ASSERT_EQ(s.objects[0].texture.size(), 2u);
+    EXPECT_FLOAT_EQ(s.objects[0].texture[0].pigment.colour.rgb.r, 1.0f);
+    EXPECT_FLOAT_EQ(top_layer(s, 0).pigment.colour.rgb.g, 1.0f);
+    EXPECT_FLOAT_EQ(top_layer(s, 0).pigment.colour.rgb.b, 0.0f);
+    EXPECT_FLOAT_EQ(top_layer(s, 0).finish->phong, 1.0f);
+    EXPECT_FLOAT_EQ(top_layer(s, 1).pigment.colour.rgb.r, 1.0f);
+    EXPECT_FLOAT_EQ(top_layer(s, 1).finish->diffuse, 0.2f);
+    EXPECT_FLOAT_EQ(top_layer(s, 1).finish->ambient.r, 0.5f);
+    EXPECT_EQ(top_layer(s, 2).pigment.pattern->kind, PatternKind::Gradient);
+    EXPECT_DOUBLE_EQ(top_layer(s, 2).pigment.pattern->transform.point(Point3(1, 0, 0)).x,
+                     2);
+    // A material's transform moves its textures, not the object.
+    EXPECT_DOUBLE_EQ(s.objects[3].transform.point(Point3(1, 0, 0)).x, 1);
+    EXPECT_DOUBLE_EQ(top_layer(s, 3).pigment.pattern->transform.point(Point3(1, 0, 0)).x,
+                     3);
+    // Nothing layers over a patterned texture.
+    const std::string checker =
+        "sphere { 0, 1 texture { checker texture { pigment { rgb 1 } } "
+        "texture { pigment { rgb 0 } } }";
+    EXPECT_EQ(error_of(checker + " pigment { rgb 1 } }"),
+              "test.pov:1:95: error: cannot layer over a patterned texture");
+    EXPECT_EQ(error_of(checker + " texture { pigment { rgb 1 } } }"),
+              "test.pov:1:95: error: cannot layer over a patterned texture");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { rgb 1 } texture { checker } }"),
+              "test.pov:1:33: error: cannot layer a patterned texture over another");
+}
+
+TEST(RepeatedBlocks, DefaultsAccumulateAndDeclarationsStartFromThem) {
+    Scene s = parse(
+        "#default { finish { ambient 0.4 } }\n"
+        "#default { finish { diffuse 0.3 } }\n"
+        "sphere { 0, 1 }\n"
+        "#default { pigment { rgb <1, 0, 0> } }\n"
+        "#default { pigment { scale 2 } }\n"
+        "#declare P = pigment { translate x };\n"
+        "sphere { 0, 1 pigment { P } }\n"
+        "#default { texture { finish { phong 1 } } }\n"
+        "#default { texture { normal { bumps 0.4 } } }\n"
+        "sphere { 0, 1 }\n");
+    const Finish& f = *top_layer(s, 0).finish;
+    EXPECT_FLOAT_EQ(f.ambient.r, 0.4f);
+    EXPECT_FLOAT_EQ(f.diffuse, 0.3f);
+    const Pigment& p = top_layer(s, 1).pigment;
+    EXPECT_FLOAT_EQ(p.colour.rgb.r, 1.0f);
+    EXPECT_DOUBLE_EQ(p.pattern->transform.point(Point3(1, 0, 0)).x, 3);  // scale, move
+    const Texture& t = top_layer(s, 2);
+    EXPECT_FLOAT_EQ(t.finish->phong, 1.0f);
+    EXPECT_FLOAT_EQ(t.finish->ambient.r, 0.4f);
+    ASSERT_TRUE(t.normal);
+    EXPECT_DOUBLE_EQ(t.normal->amount, 0.4);
+    EXPECT_EQ(error_of("#default { texture { pigment { rgb 1 } } texture { } }"),
+              "(no error)");
+    EXPECT_EQ(error_of("#declare T = texture { pigment { rgb 1 } } texture { };\n"
+                       "#default { texture { T } }"),
+              "test.pov:2:12: error: the default texture cannot be layered");
+    EXPECT_EQ(error_of("#default { texture { checker } }"),
+              "test.pov:1:12: error: the default texture cannot be patterned");
 }
 
 }  // namespace
