@@ -164,6 +164,7 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
             case 'X':
             case 'Q':
             case 'B':
+                break;  // display, verbosity, pause, abort test, quality, bounding
             case 'C':
                 o.continue_trace = on;
                 break;

@@ -687,6 +687,25 @@ TEST(Cli, ContinueTraceKeepsImagesNewerThanTheSceneAndRedoesStaleOnes) {
     EXPECT_NE(fs::last_write_time(image), made);
 }
 
+// Display, verbosity, pause, abort-test, quality and bounding switches change nothing:
+// they used to fall through to +C and keep an existing image.
+TEST(Cli, DisplayAndQualitySwitchesDoNotContinueATrace) {
+    fs::path dir = scratch() / "noc";
+    fs::create_directories(dir);
+    fs::path scene = write_scene("noc.pov", "sphere { 0, 1 pigment { color rgb 1 } }\n");
+    const fs::path image = dir / "n.png";
+    ASSERT_EQ(run("render " + scene.string() + " -W 8 -H 6 -q -o " + image.string()).code,
+              0);
+    const auto made = fs::last_write_time(image) - std::chrono::seconds(10);
+    fs::last_write_time(image, made);
+    fs::last_write_time(scene, made - std::chrono::seconds(10));
+    RunResult r = run("render " + scene.string() + " -W 8 -H 6 +D +V +P +X +Q9 +B -o " +
+                      image.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("kept (+C)"), std::string::npos) << r.err;
+    EXPECT_NE(fs::last_write_time(image), made);
+}
+
 TEST(Cli, BatchKeepsGoingPastAFailingJobAndExitsOne) {
     fs::path dir = scratch() / "batch2";
     fs::create_directories(dir);
