@@ -254,7 +254,23 @@ TEST(Cli, PartialRenderByRowNumbersAndFractions) {
         }
     }
     EXPECT_EQ(rendered, 10);
-    EXPECT_EQ(run("+I" + scene.string() + " +SR0").code, 2);
+    // As POV-Ray's view.cpp: by value, a start in [0, 1) and an end in [0, 1] are
+    // fractions (benchmark.ini's Start_Column=0, End_Column=1 is the whole width), the
+    // end truncated: 0.75 of 10 columns ends at column 7 (index 6).
+    ASSERT_EQ(run("+I" + scene.string() + " +O" + out.string() +
+                  " +W10 +H10 +SR0 +ER1 +SC1.0 +EC0.75 -GA")
+                  .code,
+              0);
+    img = povwall::output::read_image(out.string());
+    for (int y = 0; y < 10; ++y) {
+        for (int x = 0; x < 10; ++x) {
+            EXPECT_FLOAT_EQ(img.pixel(x, y)[0] * 255.0f, x <= 6 ? 188.0f : 0.0f)
+                << x << "," << y;
+        }
+    }
+    RunResult r = run("+I" + scene.string() + " +SR-1");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err.rfind("povwall: error: bad value in switch '+SR-1'", 0), 0u) << r.err;
 }
 
 TEST(Cli, UsageErrorsExitTwo) {
