@@ -178,24 +178,34 @@ TEST(Cli, IniFileSetsSceneSizeAndFormat) {
     fs::path scene = write_scene("ini_scene.pov", kGreyScene);
     fs::path out = scratch() / "from_ini";
     fs::remove(scratch() / "from_ini.tga");
+    // Options before any [section] apply; a named section only when it is asked for.
     fs::path ini = write_scene(
-        "opts.ini", "; POV-Ray options\n[default]\nInput_File_Name=" + scene.string() +
+        "opts.ini", "; POV-Ray options\nInput_File_Name=" + scene.string() +
                         "\nOutput_File_Name=" + out.string() +
                         "\nWidth=9\nHeight=4\n"
-                        "Antialias=Off\nOutput_File_Type=T\n");
+                        "Antialias=Off\nOutput_File_Type=T\nQuality=4\nVerbose=on\n"
+                        "[Small]\nWidth=3\n");
     RunResult r = run(ini.string() + " -GA");
     ASSERT_EQ(r.code, 0) << r.err;
+    // Quality is not implemented: one warning; Verbose cannot change the image: none.
+    EXPECT_EQ(r.err, "povwall: warning: " + ini.string() +
+                         ":8: Quality=4 is accepted but has no effect in povwall\n");
     // No extension given: POV-Ray appends the format's, and +FT means Targa.
     povwall::Image img =
         povwall::output::read_image((scratch() / "from_ini.tga").string());
     EXPECT_EQ(img.width, 9);
     EXPECT_EQ(img.height, 4);
     EXPECT_FLOAT_EQ(img.pixel(8, 3)[0] * 255.0f, 188.0f);  // sRGB(0.5)
+    r = run(ini.string() + "[Small] -GA");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(povwall::output::read_image((scratch() / "from_ini.tga").string()).width,
+              3);
+    // An unknown key stops, as in POV-Ray, with its file and line.
     fs::path bad = write_scene("bad.ini", "Width=9\nFrobnicate=1\n");
     r = run(bad.string());
     EXPECT_EQ(r.code, 2);
     EXPECT_EQ(r.err.rfind("povwall: error: " + bad.string() +
-                              ":2: option 'Frobnicate' is not supported by povwall\n",
+                              ":2: unknown key 'Frobnicate' in INI file\n",
                           0),
               0u)
         << r.err;
