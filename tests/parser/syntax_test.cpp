@@ -5,6 +5,8 @@
 // first; scenes/golden/repeated_blocks.pov checks the same against POV-Ray's image.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "parser/parser.h"
@@ -277,6 +279,32 @@ TEST(Commas, MapsListsSplinesAndDirectives) {
               "test.pov:1:17: error: expected ')' but found ','");
     EXPECT_EQ(error_of("#switch (3) #range (1, 5,) #end"),
               "test.pov:1:25: error: expected ')' but found ','");
+}
+
+// #read and #write: commas between the items optional (the #debug output is POV-Ray
+// 3.7.0.10's for the same scene).
+TEST(Commas, ReadAndWriteArguments) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "povwall_syntax_test_rw";
+    fs::create_directories(dir);
+    std::ostringstream messages;
+    ParseOptions o;
+    o.messages = &messages;
+    o.output_dir = dir.string();
+    parse_scene_text(
+        "#fopen F \"rw1.txt\" write\n"
+        "#write (F \"1, 2,\" 3 \",\\n\")\n"
+        "#write (F, \"\\\"a\\\"\", \",\", 4, \"\\n\")\n"
+        "#fclose F\n"
+        "#fopen F \"rw1.txt\" read\n"
+        "#read (F A B C)\n"
+        "#read (F, S, D)\n"
+        "#fclose F\n"
+        "#debug concat(str(A + B + C, 0, 0), S, str(D, 0, 0))\n",
+        (dir / "rw.pov").string(), o);
+    EXPECT_EQ(messages.str(), "6a4");
+    std::ifstream in(dir / "rw1.txt");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "1, 2,3,\n\"a\",4\n");
 }
 
 const Texture& top_layer(const Scene& s, size_t object) {
