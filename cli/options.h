@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <iostream>
 #include <istream>
 #include <map>
 #include <memory>
@@ -110,11 +111,17 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o);
 // True when `arg` looks like a POV-Ray switch rather than one of povwall's own options.
 bool looks_like_pov_switch(const std::string& arg);
 
-// POV-Ray .ini option files (Input_File_Name=..., Width=..., Antialias=on, ...).
+// POV-Ray .ini option files (Input_File_Name=..., Width=..., Antialias=on, ...), read
+// as POV-Ray 3.7 reads them: `spec` is a file name, optionally with the [Section] to read
+// (file.ini[Section]). Keys povwall does not implement that could change the image give
+// one warning line on `warnings` (none when null or o.quiet); errors (an unknown key, a
+// bad number) throw UsageError("file:line: ...").
 bool looks_like_ini_file(const std::string& arg);
-void apply_ini_file(const std::string& path, RenderOptions& o);
+void apply_ini_file(const std::string& spec, RenderOptions& o,
+                    std::ostream* warnings = &std::cerr, int depth = 0);
 // Same, from a stream; `path` names it in messages ("file:line: ...").
-void apply_ini_stream(std::istream& in, const std::string& path, RenderOptions& o);
+void apply_ini_stream(std::istream& in, const std::string& path, RenderOptions& o,
+                      std::ostream* warnings = &std::cerr);
 
 std::string default_output_name(const RenderOptions& o);
 

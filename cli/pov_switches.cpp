@@ -28,14 +28,14 @@ double number(const std::string& arg, const std::string& value) {
     }
 }
 
-RenderOptions::Partial partial(const std::string& arg) {
+// As POV-Ray 3.7 (scene/view.cpp): a start in [0, 1) or an end in [0, 1] is a fraction
+// of the image, any other value a 1-based row or column number.
+RenderOptions::Partial partial(const std::string& arg, bool end) {
     std::string v = arg.substr(3);
     RenderOptions::Partial p;
     p.value = number(arg, v);
-    p.fraction = v.find('.') != std::string::npos && p.value <= 1.0;
-    if (p.value < 0 || (!p.fraction && p.value < 1)) {
-        throw UsageError("bad value in switch '" + arg + "'");
-    }
+    if (p.value < 0) throw UsageError("bad value in switch '" + arg + "'");
+    p.fraction = end ? p.value <= 1.0 : p.value < 1.0;
     return p;
 }
 
@@ -48,7 +48,7 @@ void resolve_partial_render(RenderOptions& o) {
     };
     auto last = [](const RenderOptions::Partial& p, int size) {
         if (p.value < 0) return -1;
-        return p.fraction ? int(std::ceil(p.value * size)) - 1 : int(p.value) - 1;
+        return p.fraction ? int(p.value * size) - 1 : int(p.value) - 1;
     };
     o.render.first_row = first(o.start_row, o.height);
     o.render.last_row = last(o.end_row, o.height);
@@ -103,13 +103,13 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
     } else if (starts_with_ci(arg, 1, "EF")) {
         o.animation.subset_end = int(number(arg, arg.substr(3)));
     } else if (starts_with_ci(arg, 1, "SR")) {
-        o.start_row = partial(arg);
+        o.start_row = partial(arg, false);
     } else if (starts_with_ci(arg, 1, "ER")) {
-        o.end_row = partial(arg);
+        o.end_row = partial(arg, true);
     } else if (starts_with_ci(arg, 1, "SC")) {
-        o.start_col = partial(arg);
+        o.start_col = partial(arg, false);
     } else if (starts_with_ci(arg, 1, "EC")) {
-        o.end_col = partial(arg);
+        o.end_col = partial(arg, true);
     } else if (starts_with_ci(arg, 1, "MV")) {
         // As POV-Ray: the version times 100, rounded, kept within 1.0 .. 100.
         const double v = number(arg, arg.substr(3));

@@ -127,16 +127,20 @@ class ExpressionCompiler {
         }
     }
 
-    // ExpressionParser::vector_literal: 2 to 5 components, commas optional, a trailing
-    // comma allowed; each component contributes its first element.
+    // ExpressionParser::vector_literal: 2 to 5 components, a comma after each of the
+    // first four optional; each component contributes its first element.
     bool vector() {
         int size = 0;
         for (;;) {
-            if (size == 5) return false;
             if (!expression(true, true)) return false;
-            ++size;
-            if (accept('>')) break;
-            if (accept(',') && accept('>')) break;
+            // No comma after a fifth component; more components (which overwrite the
+            // fifth) are left to ExpressionParser.
+            if (++size == 5) {
+                if (!accept('>')) return false;
+                break;
+            }
+            accept(',');
+            if (size >= 2 && accept('>')) break;
             if (at_end()) return false;
         }
         if (size < 2) return false;
@@ -167,7 +171,9 @@ class ExpressionCompiler {
             if (!accept('(')) return false;
             for (int i = 0; i < f->arity; ++i) {
                 if (i > 0) accept(',');
-                if (at_end() || !expression(true, false)) return false;
+                // As ExpressionParser::call_float: one argument is a full expression,
+                // two are sums.
+                if (at_end() || !expression(f->arity == 1, false)) return false;
             }
             if (!accept(')')) return false;
             out_.code.push_back({Code::Call, BinaryOpCode::Add, 0, f});

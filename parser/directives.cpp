@@ -252,8 +252,10 @@ void Interpreter::directive_for(const Token& t) {
     double start = parse_float();
     accept_punct(',');
     double end = parse_float();
+    // #for (I[,] a[,] b[,] [step]): a comma after b is allowed without a step.
+    accept_punct(',');
     double step = 1;
-    if (accept_punct(',')) step = parse_float();
+    if (starts_float(peek())) step = parse_float();
     expect_punct(')');
     if (step == 0) error(t, "#for step must not be zero");
     declare(std::string(var.text), Numeric::scalar(start), false, var);
@@ -451,22 +453,14 @@ void Interpreter::directive_macro(const Token& t) {
     m->name = std::string(name.text);
     Token open = next_raw();
     if (!is_punct(open, '(')) expected("'(' after the macro name", open);
+    // POV-Ray 3.7: each parameter name may be followed by a comma (a trailing one too);
+    // `)` ends the list.
     Token p = next_raw();
     while (!is_punct(p, ')')) {
-        bool optional = false;
-        if (is_word(p, "optional")) {
-            optional = true;
-            p = next_raw();
-        }
         if (p.kind != TokenKind::Word) expected("a parameter name", p);
         m->params.emplace_back(p.text);
-        m->optional_params.push_back(optional);
         p = next_raw();
-        if (is_punct(p, ',')) {
-            p = next_raw();
-        } else if (!is_punct(p, ')')) {
-            expected("',' or ')' in the parameter list", p);
-        }
+        if (is_punct(p, ',')) p = next_raw();
     }
     m->file = frames_.back().file;
     m->body_begin = frames_.back().pos;
@@ -481,49 +475,58 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
                         std::to_string(kMaxMacroDepth) + "): runaway recursion?");
     }
     expect_punct('(', "after macro name ", m.name);
+    // As POV-Ray 3.7 reads a call: each argument is a right-hand side (numbers at the
+    // sum level, so `M(1 -2)` is one argument), optionally followed by a comma; after
+    // the declared number of arguments `)` is required.
     Scope params;
     for (size_t i = 0; i < m.params.size(); ++i) {
-        if (is_punct(peek(), ')')) {
-            if (m.optional_params[i]) continue;
-            error(peek(), "macro '" + m.name + "' expects " +
-                              std::to_string(m.params.size()) + " parameters");
-        }
-        if (is_punct(peek(), ',') && m.optional_params[i]) {
-            next();
-            continue;
+        const Token& a = peek();
+        if (a.kind == TokenKind::End ||
+            (a.kind == TokenKind::Punct && !is_punct(a, '(') && !is_punct(a, '<') &&
+             !is_punct(a, '-') && !is_punct(a, '+') && !is_punct(a, '!'))) {
+            error(a, "macro '" + m.name + "' expects " + std::to_string(m.params.size()) +
+                         " parameter" + (m.params.size() == 1 ? "" : "s") + " but only " +
+                         std::to_string(i) + (i == 1 ? " was" : " were") + " found");
         }
         Binding b;
-        // A bare identifier argument is passed by reference.
-        const Token& a = peek();
+        // An identifier that is the whole argument is passed by reference.
         if (a.kind == TokenKind::Word) {
             int scope = -1;
             uint32_t key = a.sym;
             Binding* existing = find_binding(key, &scope);
             if (existing &&
                 !std::holds_alternative<std::shared_ptr<Macro>>(existing->value)) {
+                const bool number = std::holds_alternative<Numeric>(existing->value);
+                const bool callable =
+                    std::holds_alternative<std::shared_ptr<const FunctionProgram>>(
+                        existing->value) ||
+                    std::holds_alternative<std::shared_ptr<const Spline>>(
+                        existing->value);
                 Token id = next();
                 const Token& after = peek();
-                bool alone = is_punct(after, ',') || is_punct(after, ')');
+                const bool continues =
+                    (number && (is_punct(after, '+') || is_punct(after, '-') ||
+                                is_punct(after, '*') || is_punct(after, '/') ||
+                                is_punct(after, '.'))) ||
+                    (callable && is_punct(after, '('));
                 // Looking ahead may end the frame this call started in (an argument
                 // list running past its macro body's #end), which frees that frame's
                 // scope: find the binding again rather than keep a pointer into it.
-                existing = alone ? find_binding(key, &scope) : nullptr;
+                existing = continues ? nullptr : find_binding(key, &scope);
                 if (existing) {
                     b.value = existing->value;
                     b.ref_scope = scope;
                     b.ref_name = key;
                     bind(params, sources_.intern(m.params[i])) = std::move(b);
-                    if (i + 1 < m.params.size()) accept_punct(',');
+                    accept_punct(',');
                     continue;
                 }
                 unget(id);
             }
         }
-        b.value = parse_declared_value(next());
+        b.value = parse_value_additive();
         bind(params, sources_.intern(m.params[i])) = std::move(b);
-        if (i + 1 < m.params.size() && !is_punct(peek(), ')')) {
-            accept_punct(',');
-        }
+        accept_punct(',');
     }
     expect_punct(')', "after the arguments of ", m.name);
     Frame f{m.file,
@@ -584,7 +587,9 @@ void Interpreter::directive_include(const Token& t) {
 }
 
 // #default { texture {...} | pigment {...} | finish {...} | normal {...} }: what later
-// textures start from.
+// textures start from. Each block edits the current default, so #defaults accumulate
+// (POV-Ray's Parse_Default); a texture starts from the current default too and must be
+// plain and single-layered.
 void Interpreter::directive_default() {
     expect_punct('{', "after #default");
     for (;;) {
@@ -592,13 +597,16 @@ void Interpreter::directive_default() {
         if (is_punct(t, '}')) return;
         if (is_word(t, "texture")) {
             LayeredTexture layers = parse_texture_block();
+            if (layers.back().map_pattern)
+                error(t, "the default texture cannot be patterned");
+            if (layers.size() > 1) error(t, "the default texture cannot be layered");
             default_texture_ = layers.back();
         } else if (is_word(t, "pigment")) {
-            default_texture_.pigment = parse_pigment_block();
+            parse_pigment_into(default_texture_.pigment);
         } else if (is_word(t, "finish")) {
-            default_texture_.finish = shared_finish(parse_finish_block());
+            parse_finish_into(default_texture_.finish);
         } else if (is_word(t, "normal")) {
-            default_texture_.normal = parse_normal_block();
+            parse_normal_into(default_texture_.normal);
         } else {
             expected("texture, pigment, finish or normal in #default", t);
         }

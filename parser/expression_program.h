@@ -66,8 +66,10 @@ inline bool apply_to_floats(BinaryOpCode code, Numeric& a, const Numeric& b) {
     return true;
 }
 
-// The built-in functions of floats (`sin(A)`, `pow(A, B)`): arguments are full
-// expressions, commas between them optional; each contributes its first element.
+// The built-in functions of floats (`sin(A)`, `pow(A, B)`): the argument of a
+// one-argument function is a full expression, those of two-argument ones sums (as
+// POV-Ray's Parse_Float_Param and Parse_Float_Param2), commas between them optional; each
+// contributes its first element.
 using FloatFunction = FloatBuiltin;
 const FloatFunction* find_float_function(std::string_view name);  // null: not one
 

@@ -308,30 +308,46 @@ class ExpressionParser {
         return v;
     }
 
+    // POV-Ray 3.7's `< >`: two components, then a third, fourth and fifth while the next
+    // token can start an expression; a comma after each of the first four is optional
+    // (so `<1,2,>` is fine), none is read after the fifth, and further components
+    // overwrite the fifth (`<1,2,3,4,5 6>` is <1,2,3,4,6>). Components are sums, so
+    // `<1 -2 3>` is <-1, 3>.
     Numeric vector_literal(const Token& open) {
         Numeric r;
         r.size = 0;
         for (;;) {
-            if (r.size == 5) in_.error(in_.peek(), "a vector has at most 5 components");
-            Token at = in_.peek();
+            const Token& next = in_.peek();
+            if (r.size >= 2 && !in_.starts_expression(next)) break;
+            if (r.size < 2 && in_.is_punct(next, '>'))
+                in_.error(open, "a vector needs at least 2 components");
+            Token at = next;
             Numeric c = num(ExpressionParser(in_, true).parse(), at);
+            if (r.size == 5) {
+                r.c[4] = c.c[0];
+                continue;
+            }
             r.c[r.size++] = c.c[0];
-            // Commas between components are optional, as POV-Ray reads `< -1 0 0 >`.
-            if (in_.accept_punct('>')) break;
-            // A trailing comma before '>' is accepted too.
-            if (in_.accept_punct(',') && in_.accept_punct('>')) break;
+            if (r.size < 5) in_.accept_punct(',');
         }
-        if (r.size < 2) in_.error(open, "a vector needs at least 2 components");
+        in_.expect_punct('>', "to close the vector");
         return r;
     }
 
+    // A one-float argument is a full expression (POV-Ray's Parse_Float_Param); the
+    // arguments of functions taking more, and vector arguments, are sums (Parse_Float,
+    // Parse_Vector), which is what lets `vdot(<1,2,3> <4,5,6>)` read two vectors.
     double arg_float() {
         Token at = in_.peek();
         return num(ExpressionParser(in_, false).parse(), at).c[0];
     }
+    double arg_sum() {
+        Token at = in_.peek();
+        return num(ExpressionParser(in_, false, false).parse(), at).c[0];
+    }
     Vector3 arg_vector() {
         Token at = in_.peek();
-        return num(ExpressionParser(in_, false).parse(), at).vec3();
+        return num(ExpressionParser(in_, false, false).parse(), at).vec3();
     }
     std::string arg_string() { return in_.parse_string(); }
 
@@ -340,7 +356,7 @@ class ExpressionParser {
         double a[3] = {0, 0, 0};
         for (int i = 0; i < arity; ++i) {
             if (i > 0) in_.accept_punct(',');
-            a[i] = arg_float();
+            a[i] = arity == 1 ? arg_float() : arg_sum();
         }
         in_.expect_punct(')');
         return Numeric::scalar(f(a));
@@ -468,9 +484,10 @@ Value ExpressionParser::word(const Token& t) {
         return call_float(t, f->arity, f->fn);
     if (w == "bitwise_and" || w == "bitwise_or" || w == "bitwise_xor") {
         in_.expect_punct('(');
-        long long r = (long long)arg_float();
+        // Each further argument only after a comma, as POV-Ray requires.
+        long long r = (long long)arg_sum();
         while (in_.accept_punct(',')) {
-            long long b = (long long)arg_float();
+            long long b = (long long)arg_sum();
             r = w == "bitwise_and" ? (r & b) : w == "bitwise_or" ? (r | b) : (r ^ b);
         }
         in_.expect_punct(')');
@@ -478,24 +495,25 @@ Value ExpressionParser::word(const Token& t) {
     }
     if (w == "min" || w == "max") {
         in_.expect_punct('(', "after ", w);
-        double r = arg_float();
+        double r = arg_sum();
         while (in_.accept_punct(',')) {
-            double b = arg_float();
+            double b = arg_sum();
             r = w == "min" ? std::min(r, b) : std::max(r, b);
         }
         in_.expect_punct(')');
         return Numeric::scalar(r);
     }
     if (w == "select") {
+        // select(c[,] a[,] b [, d]): the fourth argument only after a comma.
         in_.expect_punct('(');
-        double c = arg_float();
+        double c = arg_sum();
         in_.accept_punct(',');
-        Value a = ExpressionParser(in_, false).parse();
+        Value a = ExpressionParser(in_, false, false).parse();
         in_.accept_punct(',');
-        Value b = ExpressionParser(in_, false).parse();
+        Value b = ExpressionParser(in_, false, false).parse();
         Value r;
         if (in_.accept_punct(',')) {
-            Value d = ExpressionParser(in_, false).parse();
+            Value d = ExpressionParser(in_, false, false).parse();
             r = c < 0 ? a : (c == 0 ? b : d);
         } else {
             r = c < 0 ? a : b;
@@ -537,7 +555,7 @@ Value ExpressionParser::word(const Token& t) {
         in_.accept_punct(',');
         Vector3 b = arg_vector();
         in_.accept_punct(',');
-        double deg = arg_float();
+        double deg = arg_sum();
         in_.expect_punct(')');
         return Numeric::vector(axis_rotate(a, b, deg));
     }
@@ -545,15 +563,31 @@ Value ExpressionParser::word(const Token& t) {
         // vturbulence(Lambda, Omega, Octaves, <point>): POV-Ray's DTurbulence vector.
         in_.expect_punct('(');
         TurbulenceParams tp;
-        tp.lambda = arg_float();
+        // vturbulence(l[,] o[,] oct[,] P[,]): a comma after P is allowed too.
+        tp.lambda = arg_sum();
         in_.accept_punct(',');
-        tp.omega = arg_float();
+        tp.omega = arg_sum();
         in_.accept_punct(',');
-        tp.octaves = saturating_int(arg_float());
+        tp.octaves = std::clamp(saturating_int(arg_sum()), 1, 10);
         in_.accept_punct(',');
         Vector3 p = arg_vector();
+        in_.accept_punct(',');
         in_.expect_punct(')');
         return Numeric::vector(dturbulence(p, tp));
+    }
+    if (w == "strcmp") {
+        // strcmp(a[,] b): the difference of the first characters that differ, as
+        // POV-Ray 3.7 returns it (0 when equal).
+        in_.expect_punct('(');
+        std::string a = arg_string();
+        in_.accept_punct(',');
+        std::string b = arg_string();
+        in_.expect_punct(')');
+        size_t i = 0;
+        while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
+        const int ca = i < a.size() ? (unsigned char)a[i] : 0;
+        const int cb = i < b.size() ? (unsigned char)b[i] : 0;
+        return Numeric::scalar(double(ca - cb));
     }
     if (w == "strlen") {
         in_.expect_punct('(');
@@ -598,7 +632,7 @@ Value ExpressionParser::word(const Token& t) {
             r = double(arr->dims.size());
         } else {
             in_.accept_punct(',');
-            int d = saturating_int(arg_float());
+            int d = saturating_int(arg_sum());
             r = (d >= 1 && d <= int(arr->dims.size())) ? arr->dims[d - 1] : 0;
         }
         in_.expect_punct(')');
@@ -639,6 +673,8 @@ Value Interpreter::parse_expression_value() {
     return ExpressionParser(*this, false).parse();
 }
 Value Interpreter::parse_value_additive() {
+    peek();
+    if (Numeric n; try_compiled_expression(false, false, n)) return n;
     return ExpressionParser(*this, false, false).parse();
 }
 
@@ -724,8 +760,11 @@ std::string Interpreter::parse_string() {
             const Token at = peek();
             const double days = parse_float();
             std::string format = "%Y-%m-%d %H:%M:%SZ";
-            if (accept_punct(',')) format = parse_string();
-            expect_punct(')');
+            accept_punct(',');  // datetime(t[,] [format]): `datetime(t,)` too
+            if (!accept_punct(')')) {
+                format = parse_string();
+                expect_punct(')');
+            }
             const double secs = std::floor(days * 86400.0 + 946684800.0);
             if (!(std::fabs(secs) < 1e15))
                 error(at, "datetime: the time is out of range");
@@ -770,9 +809,12 @@ std::string Interpreter::parse_string() {
         }
         if (w == "concat") {
             expect_punct('(');
+            // concat(a[,] b[,] c ...): strings with optional commas between them.
             std::string s = parse_string();
-            while (accept_punct(',')) s += parse_string();
-            expect_punct(')');
+            while (!accept_punct(')')) {
+                accept_punct(',');
+                s += parse_string();
+            }
             return s;
         }
         if (w == "substr") {

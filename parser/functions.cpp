@@ -411,22 +411,25 @@ std::shared_ptr<const FunctionProgram> Interpreter::parse_function_block(
 
 // F(a, b, ...) in an SDL expression: a float, or a spline function's vector.
 Numeric Interpreter::call_function(const Token& name, const FunctionProgram& f) {
+    // As POV-Ray 3.7 reads a call from SDL: exactly the function's number of sums, a
+    // comma between two of them optional, then ')' (no trailing comma).
     expect_punct('(', "after ", name.text);
     double args[kMaxFunctionParameters + 1] = {};
-    int n = 0;
-    if (!accept_punct(')')) {
-        for (;;) {
-            if (n > kMaxFunctionParameters) error(peek(), "too many arguments");
-            args[n++] = parse_float();
-            if (accept_punct(')')) break;
-            expect_punct(',', "between the arguments of ", name.text);
-        }
+    const int count = std::min(f.parameter_count(), kMaxFunctionParameters + 1);
+    for (int i = 0; i < count; ++i) {
+        if (i > 0) accept_punct(',');
+        if (is_punct(peek(), ')'))
+            error(name, "'" + std::string(name.text) + "' takes " +
+                            std::to_string(count) + " argument" +
+                            (count == 1 ? "" : "s") + ", not " + std::to_string(i));
+        args[i] = parse_float();
     }
-    if (n != f.parameter_count())
-        error(name, "'" + std::string(name.text) + "' takes " +
-                        std::to_string(f.parameter_count()) + " argument" +
-                        (f.parameter_count() == 1 ? "" : "s") + ", not " +
-                        std::to_string(n));
+    if (!is_punct(peek(), ')')) {
+        expect_punct(')', "after the " + std::to_string(count) + " argument" +
+                              (count == 1 ? "" : "s") + " of '" + std::string(name.text) +
+                              "'");
+    }
+    next();
     if (f.spline) {
         const auto v = spline_evaluate(*f.spline, args[0]);
         Numeric r;

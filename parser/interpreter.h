@@ -96,8 +96,9 @@ class Interpreter {
     void declare_symbol(uint32_t sym, Value v, bool local, const Token& at);
 
     // ---- expressions (expressions.cpp)
-    Value parse_expression_value();             // float, vector, colour or string
-    Value parse_value_additive();               // same without comparisons (array items)
+    Value parse_expression_value();  // float, vector, colour or string
+    // Same without comparisons: POV-Ray's Parse_RValue (array items, macro arguments).
+    Value parse_value_additive();
     Numeric parse_numeric(bool no_gt = false);  // POV-Ray's Parse_Float/Vector level
     Numeric parse_express();                    // full expression (Parse_Express)
     double parse_float();
@@ -113,6 +114,8 @@ class Interpreter {
     Colour parse_colour_value();
     bool parse_bool_opt();
     bool starts_float(const Token& t);  // can `t` begin a float expression?
+    // Can `t` begin a float, vector or colour expression (POV-Ray's CASE_EXPRESS)?
+    bool starts_expression(const Token& t);
     void require_operand(std::string_view what);
     float parse_map_value(
         bool average);  // the value of a *_map entry  // error if the block ends here //
@@ -130,13 +133,25 @@ class Interpreter {
     void collect_lights(Object& obj);
     LayeredTexture parse_texture_block();  // after 'texture'
     void parse_texture_body(LayeredTexture& layers, char terminator);
+    // After the keyword: a new part starts from the default texture's (a fresh interior);
+    // the *_into forms edit the part a texture, object or #default holds, so a repeated
+    // block continues from the earlier one (notes/parser-rules.md §2).
     Pigment parse_pigment_block();  // after 'pigment'
+    void parse_pigment_into(Pigment& p);
     void parse_pigment_body(Pigment& p, char terminator);
     Finish parse_finish_block();  // after 'finish'
+    void parse_finish_into(Finish& f);
+    void parse_finish_into(SharedValue<Finish>& f);
     SharedValue<Finish> shared_finish(const Finish& f);
     Normal parse_normal_block();  // after 'normal'
+    void parse_normal_into(HeapOptional<Normal>& n);
     void parse_normal_body(Normal& n, char terminator);
-    Interior parse_interior_block();     // after 'interior'
+    Interior parse_interior_block();  // after 'interior'
+    void parse_interior_into(Interior& in);
+    void parse_interior_into(HeapOptional<Interior>& in);
+    // Puts `layers` on top of an object's (or a declaration's) texture, refusing to
+    // layer over or with a patterned texture as POV-Ray's Link_Textures does.
+    void link_textures(LayeredTexture& onto, LayeredTexture&& layers, const Token& at);
     ColourMap parse_colour_map_block();  // after 'color_map'
     bool try_pattern_keyword(const Token& t, PatternSpec& spec);
     bool try_pattern_keyword(const Token& t, HeapValue<PatternSpec>& spec);
@@ -150,6 +165,7 @@ class Interpreter {
     void parse_global_settings();
     Value parse_declared_value(const Token& first);
     Value parse_item_value(const Token& t);
+    void parse_array_initializer(ArrayValue& a, size_t dim, size_t base);
     // `spline { ... }` after the keyword, and a call `S(p [, kind])` after `S`.
     std::shared_ptr<const Spline> parse_spline_block();
     Numeric call_spline(const Spline& s);

@@ -152,6 +152,16 @@ Transform Interpreter::parse_transform_block() {
     }
 }
 
+void Interpreter::link_textures(LayeredTexture& onto, LayeredTexture&& layers,
+                                const Token& at) {
+    if (layers.empty()) return;
+    if (!onto.empty() && onto.back().map_pattern)
+        error(at, "cannot layer over a patterned texture");
+    for (Texture& l : layers) onto.push_back(std::move(l));
+    if (onto.size() > 1 && onto.back().map_pattern)
+        error(at, "cannot layer a patterned texture over another");
+}
+
 bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
     Transform tr;
     if (try_transform(t, tr)) {
@@ -161,39 +171,51 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
     if (t.kind != TokenKind::Word) return false;
     std::string_view w = t.text;
     if (w == "texture") {
-        LayeredTexture layers = parse_texture_block();
-        for (auto& l : layers) obj.texture.push_back(std::move(l));
+        // Each texture is a new layer on top (POV-Ray's Link_Textures).
+        link_textures(obj.texture, parse_texture_block(), t);
     } else if (w == "pigment" || w == "finish" || w == "normal") {
-        if (obj.texture.empty()) obj.texture.push_back(default_texture_);
+        // A loose pigment, normal or finish edits the top layer, made from the default
+        // texture when there is none; a patterned top layer cannot take one.
+        if (obj.texture.empty())
+            obj.texture.push_back(default_texture_);
+        else if (obj.texture.back().map_pattern)
+            error(t, "cannot layer over a patterned texture");
         Texture& top = obj.texture.back();
         if (w == "pigment") {
-            top.pigment = parse_pigment_block();
+            parse_pigment_into(top.pigment);
         } else if (w == "finish") {
-            top.finish = shared_finish(parse_finish_block());
+            parse_finish_into(top.finish);
         } else {
-            top.normal = parse_normal_block();
+            parse_normal_into(top.normal);
         }
     } else if (w == "interior_texture") {
-        obj.interior_texture = parse_texture_block();
+        LayeredTexture& inside = obj.interior_texture.edit();
+        link_textures(inside, parse_texture_block(), t);
     } else if (w == "interior") {
-        obj.interior = parse_interior_block();
+        parse_interior_into(obj.interior);
     } else if (w == "material") {
+        // The material works on the object's texture and interior: its textures are
+        // layered on top, its interior block edits the object's, and its transforms move
+        // the textures (not the object), as POV-Ray's Parse_Material.
         expect_punct('{', "after 'material'");
         for (;;) {
             Token m = next();
             if (is_punct(m, '}')) break;
             if (is_word(m, "texture")) {
-                LayeredTexture layers = parse_texture_block();
-                for (auto& l : layers) obj.texture.push_back(std::move(l));
+                link_textures(obj.texture, parse_texture_block(), m);
+            } else if (is_word(m, "interior_texture")) {
+                link_textures(obj.interior_texture.edit(), parse_texture_block(), m);
             } else if (is_word(m, "interior")) {
-                obj.interior = parse_interior_block();
+                parse_interior_into(obj.interior);
             } else if (try_transform(m, tr)) {
-                apply_transform(obj, tr);
+                transform_textures(obj.texture, tr);
+                if (obj.interior_texture.allocated())
+                    transform_textures(obj.interior_texture.edit(), tr);
             } else if (m.kind == TokenKind::Word && lookup(m) &&
                        std::holds_alternative<std::shared_ptr<Material>>(*lookup(m))) {
                 auto mat = std::get<std::shared_ptr<Material>>(*lookup(m));
-                for (auto l : mat->texture) obj.texture.push_back(l);
-                if (mat->interior) obj.interior = mat->interior;
+                link_textures(obj.texture, LayeredTexture(mat->texture), m);
+                obj.interior = mat->interior;
             } else {
                 expected("texture, interior or '}' in material", m);
             }
@@ -394,7 +416,10 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             d.normal = parse_vector();
             accept_punct(',');
             d.radius = parse_float();
-            if (accept_punct(',')) d.hole_radius = parse_float();
+            // disc { c[,] n[,] r[,] [hole] }: POV-Ray reads floats while they come, the
+            // last one is the hole radius.
+            accept_punct(',');
+            while (starts_float(peek())) d.hole_radius = parse_float();
             out.shape = d;
         }
     } else if (w == "triangle") {

@@ -64,10 +64,9 @@ CameraSpec Interpreter::parse_camera_block() {
             c.look_at = parse_vector();
             c.has_look_at = true;
         } else if (w == "angle") {
+            // One float: POV-Ray 3.7 reads `angle h[,] v` only for the spherical camera.
             c.angle = parse_float();
             c.has_angle = true;
-            // `angle h, v` (vertical angle) is accepted; the vertical value is ignored.
-            if (accept_punct(',')) parse_float();
         } else if (w == "aperture" || w == "blur_samples" || w == "focal_point" ||
                    w == "confidence" || w == "variance") {
             unsupported(t, "focal blur");
@@ -596,22 +595,37 @@ void Interpreter::parse_mesh2(Object& out) {
                     }
                     f.v[k] = uint32_t(v[k]);
                 }
-                // Up to three texture indices may follow (`<a,b,c>, t0, t1, t2`); read on
-                // the raw stream so that the fast path for the next face stays available.
+                // Up to three texture indices may follow (`<a,b,c>[,] t0[,] t1[,] t2`),
+                // each a float. Plain numbers are read on the raw stream so that the fast
+                // path for the next face stays available.
                 for (int k = 0; k < 3; ++k) {
-                    const Token first = raw_ahead(0);
-                    if (first.kind == TokenKind::End) break;
-                    size_t skip = is_punct(first, ',') ? 1 : 0;  // the comma is optional
-                    const Token value = raw_ahead(skip);
-                    if (value.kind != TokenKind::Number) break;
-                    if (skip == 0 && mesh.textures.empty()) break;
-                    frames_.back().pos += skip + 1;
-                    if (k == 0) {
-                        if (!(value.number >= 0 &&
-                              value.number < double(mesh.textures.size())))
-                            error(value, "mesh2 texture index out of range");
-                        f.texture = int32_t(value.number);
+                    double index;
+                    Token index_at;
+                    if (pushback_.empty()) {
+                        const Token first = raw_ahead(0);
+                        if (first.kind == TokenKind::End) break;
+                        const size_t skip = is_punct(first, ',') ? 1 : 0;
+                        const Token value = raw_ahead(skip);
+                        if (value.kind == TokenKind::Number) {
+                            frames_.back().pos += skip + 1;
+                            index = value.number;
+                            index_at = value;
+                        } else if (value.kind == TokenKind::End || !starts_float(value)) {
+                            break;
+                        } else {
+                            if (skip) next();
+                            index_at = peek();
+                            index = parse_float();
+                        }
+                    } else {
+                        accept_punct(',');
+                        if (!starts_float(peek())) break;
+                        index_at = peek();
+                        index = parse_float();
                     }
+                    if (!(index >= 0 && index < double(mesh.textures.size())))
+                        error(index_at, "mesh2 texture index out of range");
+                    if (k == 0) f.texture = int32_t(index);
                 }
                 mesh.faces.push_back(f);  // degenerate ones are dropped at the end
             }
@@ -680,6 +694,31 @@ double Interpreter::draw_random(int stream, const Token& at) {
     return streams_[stream]->next();
 }
 
+// `{ ... }` of `array[n]...`, as POV-Ray 3.7 reads it: one block per dimension holding
+// exactly its size of blocks (outer dimensions) or elements (the last one), each element
+// and each inner block followed by an optional comma.
+void Interpreter::parse_array_initializer(ArrayValue& a, size_t dim, size_t base) {
+    NestingGuard guard(*this, peek());
+    expect_punct('{', "to begin the array initializer");
+    const size_t n = size_t(a.dims[dim]);
+    for (size_t i = 0; i < n; ++i) {
+        if (dim + 1 < a.dims.size()) {
+            if (is_punct(peek(), '}'))
+                error(peek(), "too few elements in array initializer");
+            parse_array_initializer(a, dim + 1, (base + i) * size_t(a.dims[dim + 1]));
+            accept_punct(',');
+            continue;
+        }
+        const Token& e = peek();
+        if (is_punct(e, '}')) error(e, "too few elements in array initializer");
+        if (is_punct(e, ',')) expected("an array element", e);
+        a.items[base + i] = parse_value_additive();
+        accept_punct(',');
+    }
+    if (!is_punct(peek(), '}')) error(peek(), "too many elements in array initializer");
+    next();
+}
+
 // Keyword-introduced values in expressions: objects, textures, pigments, arrays, ...
 Value Interpreter::parse_item_value(const Token& t) {
     if (t.kind == TokenKind::Word) {
@@ -689,10 +728,8 @@ Value Interpreter::parse_item_value(const Token& t) {
         if (w == "texture") {
             // `#declare T = texture {...} texture {...}` declares a layered texture.
             LayeredTexture layers = parse_texture_block();
-            while (accept_raw_word("texture")) {
-                LayeredTexture more = parse_texture_block();
-                layers.insert(layers.end(), more.begin(), more.end());
-            }
+            while (accept_raw_word("texture"))
+                link_textures(layers, parse_texture_block(), t);
             return std::make_shared<LayeredTexture>(std::move(layers));
         }
         if (w == "spline") return parse_spline_block();
@@ -737,26 +774,12 @@ Value Interpreter::parse_item_value(const Token& t) {
             }
             if (a->dims.empty()) expected("'[' and the array size", peek());
             a->items.resize(total);
-            if (accept_raw_punct('{')) {
-                // Nested braces per dimension; items are filled in row-major order.
-                size_t index = 0;
-                int depth = 1;
-                while (depth > 0) {
-                    Token e = next();
-                    if (is_punct(e, '{')) {
-                        ++depth;
-                        continue;
-                    }
-                    if (is_punct(e, '}')) {
-                        --depth;
-                        continue;
-                    }
-                    if (is_punct(e, ',')) continue;
-                    if (index >= total)
-                        error(e, "too many elements in array initializer");
-                    unget(e);
-                    a->items[index++] = parse_value_additive();
-                }
+            if (raw_next_is_punct('{')) {
+                parse_array_initializer(*a, 0, 0);
+                // POV-Ray reads an optional comma after each block, the outermost one
+                // too; raw, so that a directive after the array runs after it is
+                // stored.
+                accept_raw_punct(',');
             }
             return a;
         }

@@ -196,6 +196,16 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
     }
     for (const auto& p : kPatterns) {
         if (w != p.name) continue;
+        // A pattern keyword in a block that edits an earlier pattern (a second
+        // `pigment { }`) replaces the type and the type's own parameters, and keeps the
+        // rest (maps, transforms, warps), as POV-Ray's Parse_Pattern. The parameters
+        // share the generic fields, so they start over; brick keeps its size and mortar
+        // when it was brick already.
+        if (p.kind != PatternKind::Brick || spec.kind != PatternKind::Brick) {
+            spec.scalar = 0;
+            spec.vector = {0, 0, 0};
+            spec.vector2 = {0, 0, 0};
+        }
         spec.kind = p.kind;
         switch (p.kind) {
             case PatternKind::Gradient:
@@ -397,10 +407,16 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
 }
 
 Pigment Interpreter::parse_pigment_block() {
-    expect_punct('{', "after 'pigment'");
     Pigment p = default_texture_.pigment;
-    parse_pigment_body(p, '}');
+    parse_pigment_into(p);
     return p;
+}
+
+// `pigment { ... }` after the keyword, editing `p` in place: a second pigment block in
+// a texture continues from the first (POV-Ray's Parse_Pigment).
+void Interpreter::parse_pigment_into(Pigment& p) {
+    expect_punct('{', "after 'pigment'");
+    parse_pigment_body(p, '}');
 }
 
 // The inside of `pigment { ... }`, also the entries of a pigment_map (ending at ']').
@@ -432,6 +448,13 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
             if (p.pattern->kind == PatternKind::Checker ||
                 p.pattern->kind == PatternKind::Hexagon ||
                 p.pattern->kind == PatternKind::Brick) {
+                // The list replaces the map an earlier block gave.
+                if (p.maps.allocated()) {
+                    PigmentMaps& m = p.maps.edit();
+                    m.colour_map.clear();
+                    m.map_values.clear();
+                    m.list.clear();
+                }
                 int count = p.pattern->kind == PatternKind::Hexagon ? 3 : 2;
                 for (int i = 0; i < count; ++i) {
                     if (i) accept_punct(',');
@@ -509,6 +532,17 @@ Normal Interpreter::parse_normal_block() {
     return n;
 }
 
+// `normal { ... }` after the keyword, editing the texture's normal in place; a texture
+// without one starts from the default texture's normal (POV-Ray's Parse_Tnormal).
+void Interpreter::parse_normal_into(HeapOptional<Normal>& n) {
+    if (!n) {
+        n = parse_normal_block();
+        return;
+    }
+    expect_punct('{', "after 'normal'");
+    parse_normal_body(*n, '}');
+}
+
 // The inside of `normal { ... }`, also a normal_map entry (ending at ']').
 void Interpreter::parse_normal_body(Normal& n, char terminator) {
     const Token& first = peek();
@@ -520,6 +554,11 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
             n = *std::get<std::shared_ptr<Normal>>(*v);
         }
     }
+    // Without a pattern first, POV-Ray still reads `[,] amount`: `normal { N 0.3 }`.
+    if (is_punct(peek(), ',') || starts_float(peek())) {
+        accept_punct(',');
+        if (starts_float(peek())) n.amount = parse_float();
+    }
     for (;;) {
         Token t = next();
         if (is_punct(t, terminator)) return;
@@ -527,7 +566,10 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
             if (n.pattern->kind == PatternKind::Checker ||
                 n.pattern->kind == PatternKind::Hexagon ||
                 n.pattern->kind == PatternKind::Brick) {
-                // checker normal{..} normal{..}: entries follow the keyword.
+                // checker normal{..} normal{..}: entries follow the keyword and replace
+                // the map an earlier block gave.
+                n.list.clear();
+                n.map_values.clear();
                 int count = n.pattern->kind == PatternKind::Hexagon ? 3 : 2;
                 for (int i = 0; i < count; ++i) {
                     if (i) accept_punct(',');
@@ -600,8 +642,23 @@ SharedValue<Finish> Interpreter::shared_finish(const Finish& f) {
 }
 
 Finish Interpreter::parse_finish_block() {
-    expect_punct('{', "after 'finish'");
     Finish f = *default_texture_.finish;
+    parse_finish_into(f);
+    return f;
+}
+
+void Interpreter::parse_finish_into(SharedValue<Finish>& finish) {
+    Finish f = *finish;
+    parse_finish_into(f);
+    finish = shared_finish(f);
+}
+
+// `finish { ... }` after the keyword, editing `f` in place (POV-Ray's Parse_Finish): a
+// second finish block continues from the first; a finish identifier is read only as the
+// first item and replaces what `f` held. The albedo forms are scaled at the end of the
+// block, by the brilliance, phong_size and roughness it ends with.
+void Interpreter::parse_finish_into(Finish& f) {
+    expect_punct('{', "after 'finish'");
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
         const Value* v = lookup(first);
@@ -614,23 +671,10 @@ Finish Interpreter::parse_finish_block() {
         if (n.size == 1) return Rgb(float(n.c[0]));
         return Rgb(float(n.c[0]), float(n.c[1]), float(n.c[2]));
     };
-    // `albedo` scales diffuse, phong or specular by the brilliance, phong_size or
-    // roughness in force when the block ends (POV-Ray's order).
     bool diffuse_albedo = false, phong_albedo = false, specular_albedo = false;
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) {
-            if (diffuse_albedo) {
-                f.diffuse *= (f.brilliance + 1) / 2;
-                f.diffuse_back *= (f.brilliance + 1) / 2;
-            }
-            if (phong_albedo) f.phong *= (f.phong_size + 1) / 2;
-            if (specular_albedo) {
-                const double r = f.roughness != 0 ? 1.0 / f.roughness : 0.0;
-                f.specular *= float((r + 2) / (4 * (2 - std::pow(2.0, -r / 2))));
-            }
-            return f;
-        }
+        if (is_punct(t, '}')) break;
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
         if (w == "ambient") {
             f.ambient = rgb_of(parse_colour());
@@ -639,7 +683,7 @@ Finish Interpreter::parse_finish_block() {
         } else if (w == "diffuse") {
             diffuse_albedo = accept_word("albedo") || diffuse_albedo;
             f.diffuse = float(parse_float());
-            accept_punct(',');
+            accept_punct(',');  // `diffuse a[,] [back]`
             f.diffuse_back = starts_float(peek()) ? float(parse_float()) : 0.0f;
         } else if (w == "brilliance") {
             f.brilliance = float(parse_float());
@@ -662,7 +706,9 @@ Finish Interpreter::parse_finish_block() {
                 Rgb a = rgb_of(parse_colour());
                 Rgb b = a;
                 bool two = false;
-                if (accept_punct(',')) {
+                // reflection { min[,] [max] ...}
+                accept_punct(',');
+                if (starts_expression(peek())) {
                     b = rgb_of(parse_colour());
                     two = true;
                 }
@@ -726,11 +772,33 @@ Finish Interpreter::parse_finish_block() {
             expected("a finish item or '}'", t);
         }
     }
+    if (diffuse_albedo) {
+        f.diffuse *= (f.brilliance + 1) / 2;
+        f.diffuse_back *= (f.brilliance + 1) / 2;
+    }
+    if (phong_albedo) f.phong *= (f.phong_size + 1) / 2;
+    if (specular_albedo) {
+        // POV-Ray keeps 1/roughness.
+        const double r = f.roughness != 0 ? 1.0 / f.roughness : 0.0;
+        f.specular = float(f.specular * (r + 2) / (4 * (2 - std::pow(2.0, -r / 2))));
+    }
 }
 
 Interior Interpreter::parse_interior_block() {
-    expect_punct('{', "after 'interior'");
     Interior in;
+    parse_interior_into(in);
+    return in;
+}
+
+// `interior { ... }` on an object or in a material: a second block edits the first
+// (POV-Ray's Parse_Interior).
+void Interpreter::parse_interior_into(HeapOptional<Interior>& in) {
+    if (!in) in = Interior();
+    parse_interior_into(*in);
+}
+
+void Interpreter::parse_interior_into(Interior& in) {
+    expect_punct('{', "after 'interior'");
     const Token& first = peek();
     if (first.kind == TokenKind::Word) {
         const Value* v = lookup(first);
@@ -741,7 +809,7 @@ Interior Interpreter::parse_interior_block() {
     }
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return in;
+        if (is_punct(t, '}')) return;
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
         if (w == "ior")
             in.ior = float(parse_float());
@@ -805,12 +873,24 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
         Texture& top = layers.back();
+        // pigment, normal and finish edit what the texture holds (from its identifier
+        // or the default texture), so a second block continues from the first.
         if (w == "pigment") {
-            top.pigment = parse_pigment_block();
+            parse_pigment_into(top.pigment);
         } else if (w == "finish") {
-            top.finish = shared_finish(parse_finish_block());
+            parse_finish_into(top.finish);
         } else if (w == "normal") {
-            top.normal = parse_normal_block();
+            parse_normal_into(top.normal);
+        } else if (const Value* v = t.kind == TokenKind::Word ? lookup(t) : nullptr;
+                   v && !top.map_pattern &&
+                   (std::holds_alternative<std::shared_ptr<Pigment>>(*v) ||
+                    std::holds_alternative<std::shared_ptr<Finish>>(*v) ||
+                    std::holds_alternative<std::shared_ptr<Normal>>(*v))) {
+            // The old form `texture { P_Id F_Id }` replaces the part.
+            if (auto p = std::get_if<std::shared_ptr<Pigment>>(v)) top.pigment = **p;
+            if (auto f = std::get_if<std::shared_ptr<Finish>>(v))
+                top.finish = shared_finish(**f);
+            if (auto n = std::get_if<std::shared_ptr<Normal>>(v)) top.normal = **n;
         } else if (w == "texture_map") {
             if (!top.map_pattern) expected("a pattern before texture_map", t);
             expect_punct('{', "after 'texture_map'");
@@ -846,6 +926,8 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
                     spec.kind == PatternKind::Hexagon ||
                     spec.kind == PatternKind::Brick) {
                     // checker texture{..} texture{..}: entries follow the keyword.
+                    top.map.edit().entries.clear();
+                    top.map.edit().values.clear();
                     int count = spec.kind == PatternKind::Hexagon ? 3 : 2;
                     for (int i = 0; i < count; ++i) {
                         if (i) accept_punct(',');

@@ -340,8 +340,18 @@ bool Interpreter::starts_float(const Token& t) {
     }
     if (t.kind != TokenKind::Word) return false;
     if (const Value* v = lookup(t)) {
+        if (auto f = std::get_if<std::shared_ptr<const FunctionProgram>>(v))
+            return !(*f)->spline && !(*f)->transform && !(*f)->pigment;
         auto n = std::get_if<Numeric>(v);
         return n && n->size == 1;
+    }
+    // Float keywords POV-Ray 3.7 also has (CASE_FLOAT).
+    static constexpr std::string_view kMoreFloatWords[] = {
+        "acosh",         "asinh",       "atanh",         "strcmp",      "bitwise_and",
+        "bitwise_or",    "bitwise_xor", "dimensions",    "file_exists", "clock_on",
+        "initial_frame", "final_frame", "initial_clock", "final_clock", "inside"};
+    for (std::string_view w : kMoreFloatWords) {
+        if (t.text == w) return true;
     }
     static constexpr std::string_view kFloatWords[] = {
         "on",           "off",         "true",        "false",
@@ -358,6 +368,30 @@ bool Interpreter::starts_float(const Token& t) {
         "val",          "asc",         "defined",     "dimension_size",
         "now",          "seed"};
     for (std::string_view w : kFloatWords) {
+        if (t.text == w) return true;
+    }
+    return false;
+}
+
+bool Interpreter::starts_expression(const Token& t) {
+    if (starts_float(t) || is_punct(t, '<')) return true;
+    if (t.kind != TokenKind::Word) return false;
+    if (const Value* v = lookup(t)) {
+        return std::holds_alternative<Numeric>(*v) ||
+               std::holds_alternative<std::shared_ptr<const FunctionProgram>>(*v) ||
+               std::holds_alternative<std::shared_ptr<const Spline>>(*v);
+    }
+    // x y z t u v, the vector functions, the colour keywords.
+    if (t.text.size() == 1)
+        return std::string_view("xyztuv").find(t.text[0]) != std::string_view::npos;
+    static constexpr std::string_view kWords[] = {
+        "vaxis_rotate", "vcross",     "vnormalize", "vrotate",      "vturbulence",
+        "trace",        "min_extent", "max_extent", "eval_pigment", "color",
+        "colour",       "rgb",        "rgbf",       "rgbt",         "rgbft",
+        "srgb",         "srgbf",      "srgbt",      "srgbft",       "red",
+        "green",        "blue",       "filter",     "transmit",     "gray",
+        "grey"};
+    for (std::string_view w : kWords) {
         if (t.text == w) return true;
     }
     return false;

@@ -70,7 +70,6 @@ struct Macro {
     int file;
     size_t body_begin, body_end;  // token indices in that file; body_end is the #end
     std::vector<std::string> params;
-    std::vector<bool> optional_params;
 };
 
 // A file opened by #fopen (file_io.cpp). A file read is lexed like a scene file, so its

@@ -178,24 +178,34 @@ TEST(Cli, IniFileSetsSceneSizeAndFormat) {
     fs::path scene = write_scene("ini_scene.pov", kGreyScene);
     fs::path out = scratch() / "from_ini";
     fs::remove(scratch() / "from_ini.tga");
+    // Options before any [section] apply; a named section only when it is asked for.
     fs::path ini = write_scene(
-        "opts.ini", "; POV-Ray options\n[default]\nInput_File_Name=" + scene.string() +
+        "opts.ini", "; POV-Ray options\nInput_File_Name=" + scene.string() +
                         "\nOutput_File_Name=" + out.string() +
                         "\nWidth=9\nHeight=4\n"
-                        "Antialias=Off\nOutput_File_Type=T\n");
+                        "Antialias=Off\nOutput_File_Type=T\nDither=on\nVerbose=on\n"
+                        "[Small]\nWidth=3\n");
     RunResult r = run(ini.string() + " -GA");
     ASSERT_EQ(r.code, 0) << r.err;
+    // Dither is not implemented: one warning; Verbose cannot change the image: none.
+    EXPECT_EQ(r.err, "povwall: warning: " + ini.string() +
+                         ":8: Dither=on is accepted but has no effect in povwall\n");
     // No extension given: POV-Ray appends the format's, and +FT means Targa.
     povwall::Image img =
         povwall::output::read_image((scratch() / "from_ini.tga").string());
     EXPECT_EQ(img.width, 9);
     EXPECT_EQ(img.height, 4);
     EXPECT_FLOAT_EQ(img.pixel(8, 3)[0] * 255.0f, 188.0f);  // sRGB(0.5)
+    r = run(ini.string() + "[Small] -GA");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(povwall::output::read_image((scratch() / "from_ini.tga").string()).width,
+              3);
+    // An unknown key stops, as in POV-Ray, with its file and line.
     fs::path bad = write_scene("bad.ini", "Width=9\nFrobnicate=1\n");
     r = run(bad.string());
     EXPECT_EQ(r.code, 2);
     EXPECT_EQ(r.err.rfind("povwall: error: " + bad.string() +
-                              ":2: option 'Frobnicate' is not supported by povwall\n",
+                              ":2: unknown key 'Frobnicate' in INI file\n",
                           0),
               0u)
         << r.err;
@@ -254,7 +264,23 @@ TEST(Cli, PartialRenderByRowNumbersAndFractions) {
         }
     }
     EXPECT_EQ(rendered, 10);
-    EXPECT_EQ(run("+I" + scene.string() + " +SR0").code, 2);
+    // As POV-Ray's view.cpp: by value, a start in [0, 1) and an end in [0, 1] are
+    // fractions (benchmark.ini's Start_Column=0, End_Column=1 is the whole width), the
+    // end truncated: 0.75 of 10 columns ends at column 7 (index 6).
+    ASSERT_EQ(run("+I" + scene.string() + " +O" + out.string() +
+                  " +W10 +H10 +SR0 +ER1 +SC1.0 +EC0.75 -GA")
+                  .code,
+              0);
+    img = povwall::output::read_image(out.string());
+    for (int y = 0; y < 10; ++y) {
+        for (int x = 0; x < 10; ++x) {
+            EXPECT_FLOAT_EQ(img.pixel(x, y)[0] * 255.0f, x <= 6 ? 188.0f : 0.0f)
+                << x << "," << y;
+        }
+    }
+    RunResult r = run("+I" + scene.string() + " +SR-1");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err.rfind("povwall: error: bad value in switch '+SR-1'", 0), 0u) << r.err;
 }
 
 TEST(Cli, UsageErrorsExitTwo) {
@@ -716,6 +742,25 @@ TEST(Cli, ContinueTraceKeepsImagesNewerThanTheSceneAndRedoesStaleOnes) {
         r.err.find("s.png is older than " + scene.string() + ", rendered again (+C)"),
         std::string::npos)
         << r.err;
+    EXPECT_NE(fs::last_write_time(image), made);
+}
+
+// Display, verbosity, pause, abort-test, quality and bounding switches change nothing:
+// they used to fall through to +C and keep an existing image.
+TEST(Cli, DisplayAndQualitySwitchesDoNotContinueATrace) {
+    fs::path dir = scratch() / "noc";
+    fs::create_directories(dir);
+    fs::path scene = write_scene("noc.pov", "sphere { 0, 1 pigment { color rgb 1 } }\n");
+    const fs::path image = dir / "n.png";
+    ASSERT_EQ(run("render " + scene.string() + " -W 8 -H 6 -q -o " + image.string()).code,
+              0);
+    const auto made = fs::last_write_time(image) - std::chrono::seconds(10);
+    fs::last_write_time(image, made);
+    fs::last_write_time(scene, made - std::chrono::seconds(10));
+    RunResult r = run("render " + scene.string() + " -W 8 -H 6 +D +V +P +X +Q9 +B -o " +
+                      image.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("kept (+C)"), std::string::npos) << r.err;
     EXPECT_NE(fs::last_write_time(image), made);
 }
 

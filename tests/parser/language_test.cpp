@@ -372,7 +372,10 @@ TEST(Functions, LocatedErrorsAndTolerance) {
         return e.substr(0, e.find('\n'));
     };
     EXPECT_EQ(first_line("#declare F = function(a) { a }\n#declare B = F(1, 2);"),
-              "test.pov:2:14: error: 'F' takes 1 argument, not 2");
+              "test.pov:2:17: error: expected ')' after the 1 argument of 'F' but found "
+              "','");
+    EXPECT_EQ(first_line("#declare F = function(a, b) { a }\n#declare B = F(1);"),
+              "test.pov:2:14: error: 'F' takes 2 arguments, not 1");
     EXPECT_EQ(first_line("#declare P = function { pigment { rgb 1 } }\n"
                          "#declare G = function { P(x, y, z) + 1 }"),
               "test.pov:2:25: error: 'P' returns a vector: follow the call with a "
@@ -535,7 +538,8 @@ std::string first_line(const std::string& text) {
 
 TEST(BadInput, LocatedErrorsInsteadOfCrashesOrHangs) {
     EXPECT_EQ(first_line("sphere { 0, 1 pigment { rgb <1, 0"),
-              "test.pov:1:34: error: expected an expression but found end of file");
+              "test.pov:1:34: error: expected '>' to close the vector but found end of "
+              "file");
     EXPECT_EQ(
         first_line("union { sphere { 0, 1 }\n"),
         "test.pov:2:1: error: expected an object modifier or '}' but found end of file");

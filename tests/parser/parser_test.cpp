@@ -339,10 +339,16 @@ TEST(Errors, DeepNestingIsALocatedErrorNotAStackOverflow) {
                    repeat(" ] }", 3000) + " };"),
         "test.pov:1:7145: error: expressions, objects or patterns nested too deeply "
         "(limit 256)");
+    // (After a third component a vector reads on only what can start an expression, as
+    // POV-Ray does, so the object comes in as an operand of `+`.)
     EXPECT_EQ(first_line("mesh {\n#declare I = 0;\n#while (I < 24)\n"
-                         "  triangle { <0, 0, 0>, <1, 0, 0>, <cos(I), 1, 0 #end\n"),
+                         "  triangle { <0, 0, 0>, <1, 0, 0>, <cos(I), 1, 0 + #end\n"),
               "test.pov:4:14: error: expressions, objects or patterns nested too deeply "
               "(limit 256)");
+    EXPECT_EQ(
+        first_line("mesh {\n#declare I = 0;\n#while (I < 24)\n"
+                   "  triangle { <0, 0, 0>, <1, 0, 0>, <cos(I), 1, 0 #end\n"),
+        "test.pov:4:3: error: expected '>' to close the vector but found 'triangle'");
 }
 
 // A #declare whose value runs into the loop's #end: every turn nests another #declare on

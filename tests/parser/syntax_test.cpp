@@ -1,0 +1,468 @@
+// POV-Ray 3.7's optional commas (notes/parser-rules.md §1): optional exactly where 3.7
+// reads them with Parse_Comma, required where it loops on a comma. The #debug outputs
+// below are what POV-Ray 3.7.0.10 prints for the same lines.
+// Repeated blocks (§2): a second pigment, normal, finish or interior block edits the
+// first; scenes/golden/repeated_blocks.pov checks the same against POV-Ray's image.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "parser/parser.h"
+
+namespace povwall::parser {
+namespace {
+
+Scene parse(const std::string& text, std::string* debug = nullptr) {
+    std::ostringstream messages;
+    ParseOptions o;
+    o.messages = &messages;
+    Scene s = parse_scene_text(text, "test.pov", o);
+    if (debug) *debug = messages.str();
+    return s;
+}
+
+std::string debug_of(const std::string& text) {
+    std::string out;
+    parse(text, &out);
+    return out;
+}
+
+// The first line of the error a scene stops with.
+std::string error_of(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const ParseError& e) {
+        const std::string what = e.what();
+        return what.substr(0, what.find('\n'));
+    }
+    return "(no error)";
+}
+
+void expect_vec(const Vector3& v, double x, double y, double z) {
+    EXPECT_DOUBLE_EQ(v.x, x);
+    EXPECT_DOUBLE_EQ(v.y, y);
+    EXPECT_DOUBLE_EQ(v.z, z);
+}
+
+TEST(Commas, MacroParametersAndArguments) {
+    const std::string m =
+        "#macro M(A B) #debug concat(str(A,0,1), \" \", str(B,0,1), \";\") #end\n"
+        "#macro T(A, B,) #debug concat(str(A,0,1), \" \", str(B,0,1), \";\") #end\n";
+    EXPECT_EQ(debug_of(m + "M(1 2) M(1, 2) M(1,2,) T(3 4) T(5, 6,)"),
+              "1.0 2.0;1.0 2.0;1.0 2.0;3.0 4.0;5.0 6.0;");
+    // Arguments are sums: `-` after a term subtracts, and `<` after a number starts the
+    // next argument (a vector).
+    EXPECT_EQ(debug_of(m + "M(1 (-2)) M(0 <1, 2, 3>.y) M(2*3 4/2)"),
+              "1.0 -2.0;0.0 2.0;6.0 2.0;");
+    // An identifier alone is passed by reference, also without a comma after it.
+    EXPECT_EQ(debug_of("#declare K = 5;\n#macro Add(P Q) #declare P = P + Q; #end\n"
+                       "Add(K 2) Add(K, 3) #debug str(K, 0, 0)"),
+              "10");
+    EXPECT_EQ(debug_of("#declare K = 5;\n#macro Add(P Q) #declare P = P + 10; #end\n"
+                       "Add(K -2 3) #debug str(K, 0, 0)"),
+              "5");  // K - 2 is an expression: passed by value
+    EXPECT_EQ(error_of(m + "M(1 -2)"),
+              "test.pov:3:7: error: macro 'M' expects 2 parameters but only 1 was found");
+    EXPECT_EQ(error_of(m + "M(1,,2)"),
+              "test.pov:3:5: error: macro 'M' expects 2 parameters but only 1 was found");
+    EXPECT_EQ(
+        error_of(m + "M(1, 2, 3)"),
+        "test.pov:3:9: error: expected ')' after the arguments of 'M' but found '3'");
+    EXPECT_EQ(error_of("#macro M(A,,B) #end"),
+              "test.pov:1:12: error: expected a parameter name but found ','");
+    // `optional` is no keyword in 3.7: it names a parameter.
+    EXPECT_EQ(debug_of("#macro O(optional A) #debug str(optional + A, 0, 0) #end O(1 2)"),
+              "3");
+}
+
+TEST(Commas, ArrayInitialisers) {
+    EXPECT_EQ(debug_of("#declare A = array[3] {1 2 3}\n"
+                       "#declare B = array[3] {1, 2, 3,}\n"
+                       "#declare C = array[2][2] {{1 2}{3 4}}\n"
+                       "#declare D = array[2][3] {{1, 2, 3}, {4, 5, 6},}\n"
+                       "#debug concat(str(A[2],0,0), str(B[0],0,0), str(C[1][0],0,0), "
+                       "str(D[1][2],0,0), str(D[0][1],0,0))"),
+              "31362");
+    // Elements are sums: `{1 -2 3}` is two elements.
+    EXPECT_EQ(debug_of("#declare A = array[2] {1 -2 3} #debug str(A[0] + A[1], 0, 0)"),
+              "2");
+    EXPECT_EQ(error_of("#declare A = array[3] {1, 2}"),
+              "test.pov:1:28: error: too few elements in array initializer");
+    EXPECT_EQ(error_of("#declare A = array[2] {1, 2, 3}"),
+              "test.pov:1:30: error: too many elements in array initializer");
+    EXPECT_EQ(error_of("#declare A = array[3] {1,, 2, 3}"),
+              "test.pov:1:26: error: expected an array element but found ','");
+    EXPECT_EQ(error_of("#declare A = array[2][2] {{1 2}}"),
+              "test.pov:1:32: error: too few elements in array initializer");
+}
+
+TEST(Commas, VectorLiterals) {
+    const std::string show = "#debug vstr(5, V, \",\", 0, 0)";
+    EXPECT_EQ(debug_of("#declare V = <1 2 3>;" + show), "1,2,3,0,0");
+    EXPECT_EQ(debug_of("#declare V = <1, 2,>;" + show), "1,2,0,0,0");
+    EXPECT_EQ(debug_of("#declare V = <1, 2, 3, 4,>;" + show), "1,2,3,4,0");
+    // `-` after a term subtracts: two components.
+    EXPECT_EQ(debug_of("#declare V = <1 -2 3>;" + show), "-1,3,0,0,0");
+    EXPECT_EQ(debug_of("#declare V = <1 (-2) 3>;" + show), "1,-2,3,0,0");
+    // Components after the fifth overwrite it.
+    EXPECT_EQ(debug_of("#declare V = <1, 2, 3, 4, 5 6>;" + show), "1,2,3,4,6");
+    EXPECT_EQ(error_of("#declare V = <1, 2, 3, 4, 5,>;"),
+              "test.pov:1:28: error: expected '>' to close the vector but found ','");
+    EXPECT_EQ(error_of("#declare V = <1, 2 }"),
+              "test.pov:1:20: error: expected '>' to close the vector but found '}'");
+    // The same inside a loop, where expressions are compiled.
+    EXPECT_EQ(debug_of("#for (I, 1, 2) #declare V = <I 2 -I 3, 4, 5 6 7>;"
+                       "#debug concat(vstr(5, V, \",\", 0, 0), \";\") #end"),
+              "1,1,3,4,7;2,0,3,4,7;");
+}
+
+TEST(Commas, UserFunctionCalls) {
+    EXPECT_EQ(debug_of("#declare F = function(a, b) { a - b }\n"
+                       "#debug concat(str(F(1 2), 0, 0), str(F(5, 1), 0, 0))"),
+              "-14");
+    EXPECT_EQ(error_of("#declare F = function(a, b) { a - b }\n#declare X = F(1, 2,);"),
+              "test.pov:2:20: error: expected ')' after the 2 arguments of 'F' but "
+              "found ','");
+    EXPECT_EQ(error_of("#declare F = function(a, b) { a - b }\n#declare X = F(1 -2);"),
+              "test.pov:2:14: error: 'F' takes 2 arguments, not 1");
+    // Inside function { } commas are required.
+    EXPECT_EQ(error_of("#declare G = function(a, b) { a + b }\n"
+                       "#declare F = function { G(x 2) }"),
+              "test.pov:2:29: error: expected ',' between the arguments of 'G' but found "
+              "'2'");
+    EXPECT_EQ(error_of("#declare F = function { max(x 2) }"),
+              "test.pov:1:31: error: expected ',' between the arguments of 'max' but "
+              "found '2'");
+}
+
+TEST(Commas, BuiltInFunctions) {
+    EXPECT_EQ(debug_of("#debug concat(str(atan2(1 2), 0, 4), \" \", str(div(7 2), 0, 0), "
+                       "\" \", str(mod(7 2), 0, 0), \" \", str(pow(2 3), 0, 0))"),
+              "0.4636 3 1 8");
+    EXPECT_EQ(debug_of("#debug concat(str(vdot(<1,2,3> <1,1,1>), 0, 0), \" \", "
+                       "vstr(3, vcross(x y), \",\", 0, 0), \" \", "
+                       "vstr(3, vrotate(x <0,0,90>), \",\", 0, 0), \" \", "
+                       "vstr(3, vaxis_rotate(x z 90), \",\", 0, 0))"),
+              "6 0,0,1 0,1,0 0,1,0");
+    EXPECT_EQ(debug_of("#debug vstr(3, vturbulence(2 0.5 6 <1,2,3>,), \",\", 0, 3)"),
+              "-0.381,-0.538,0.422");
+    EXPECT_EQ(debug_of("#debug concat(str(strcmp(\"abc\" \"abd\"), 0, 0), \" \", "
+                       "str(strcmp(\"b\", \"a\"), 0, 0), \" \", "
+                       "str(strcmp(\"ab\", \"abc\"), 0, 0), \" \", "
+                       "str(strcmp(\"x\", \"x\"), 0, 0))"),
+              "-1 1 -99 0");
+    EXPECT_EQ(debug_of("#debug concat(substr(\"abcdef\" 2 3), str(3.14159 0 2), "
+                       "\"x\" \"y\", vstr(3 <1,2,3> \",\" 0 0), datetime(0 \"%Y\"), "
+                       "\" \", datetime(0,))"),
+              "bcd3.14xy1,2,32000 2000-01-01 00:00:00Z");
+    EXPECT_EQ(
+        debug_of("#declare D = array[2][5]\n"
+                 "#debug concat(str(select(1 2 3), 0, 0), str(select(-1 2 3), 0, 0), "
+                 "str(select(0, 2, 3, 4), 0, 0), str(dimension_size(D 2), 0, 0))"),
+        "3235");
+    // Required commas.
+    EXPECT_EQ(error_of("#declare X = max(1 2);"),
+              "test.pov:1:20: error: expected ')' but found '2'");
+    EXPECT_EQ(error_of("#declare X = min(1 2);"),
+              "test.pov:1:20: error: expected ')' but found '2'");
+    EXPECT_EQ(error_of("#declare X = bitwise_or(1 2);"),
+              "test.pov:1:27: error: expected ')' but found '2'");
+    EXPECT_EQ(error_of("#declare X = select(1, 2, 3 4);"),
+              "test.pov:1:29: error: expected ')' but found '4'");
+    EXPECT_EQ(error_of("#declare S = spline { linear_spline 0, <0,0>, 1, <1,1> }\n"
+                       "#declare X = S(0.5 linear_spline);"),
+              "test.pov:2:20: error: expected ')' to close the spline call but found "
+              "'linear_spline'");
+    EXPECT_EQ(debug_of("#declare S = spline { linear_spline 0 <0,0> 1 <1,1>, }\n"
+                       "#debug vstr(2, S(0.5, linear_spline), \",\", 0, 2)"),
+              "0.50,0.50");
+}
+
+TEST(Commas, ObjectHeadersWithAndWithoutCommas) {
+    for (const char* comma : {"", ","}) {
+        const std::string c = comma;
+        Scene s = parse("sphere { <1 2 3>" + c + " 4 }\n" +                  //
+                        "box { <0 0 0>" + c + " <1 2 3> }\n" +               //
+                        "cone { 0" + c + " 1" + c + " y" + c + " 0.5 }\n" +  //
+                        "cylinder { 0" + c + " x" + c + " 2 }\n" +           //
+                        "disc { 0" + c + " y" + c + " 2" + c + " 1 }\n" +    //
+                        "plane { z" + c + " 3 }\n" +                         //
+                        "torus { 2" + c + " 0.5 }\n" +                       //
+                        "triangle { 0" + c + " x" + c + " y }\n" +           //
+                        "polygon { 4" + c + " <0,0>" + c + " <1,0>" + c +    //
+                        " <1,1>" + c + " <0,0> }\n" +                        //
+                        "light_source { <1 2 3>" + c +
+                        " rgb <0.5 0.25 1> "  //
+                        "area_light x" +
+                        c + " y" + c + " 3" + c + " 2 }\n");
+        ASSERT_EQ(s.objects.size(), 9u) << "comma '" << c << "'";
+        const Sphere& sp = std::get<Sphere>(s.objects[0].shape);
+        expect_vec(sp.centre, 1, 2, 3);
+        EXPECT_EQ(sp.radius, 4);
+        expect_vec(std::get<Box>(s.objects[1].shape).corner2, 1, 2, 3);
+        const Cone& cone = std::get<Cone>(s.objects[2].shape);
+        EXPECT_EQ(cone.base_radius, 1);
+        EXPECT_EQ(cone.cap_radius, 0.5);
+        expect_vec(cone.cap, 0, 1, 0);
+        EXPECT_EQ(std::get<Cylinder>(s.objects[3].shape).radius, 2);
+        const Disc& d = std::get<Disc>(s.objects[4].shape);
+        EXPECT_EQ(d.radius, 2);
+        EXPECT_EQ(d.hole_radius, 1);
+        EXPECT_EQ(std::get<Plane>(s.objects[5].shape).distance, 3);
+        EXPECT_EQ(std::get<Torus>(s.objects[6].shape).minor, 0.5);
+        expect_vec(std::get<Triangle>(s.objects[7].shape).p[2], 0, 1, 0);
+        EXPECT_EQ(std::get<Polygon>(s.objects[8].shape).points.size(), 4u);
+        ASSERT_EQ(s.lights.size(), 1u);
+        EXPECT_EQ(s.lights[0].location.z, 3);
+        EXPECT_EQ(s.lights[0].colour.g, 0.25f);
+        ASSERT_TRUE(s.lights[0].area);
+        EXPECT_EQ(s.lights[0].area->size1, 3);
+        EXPECT_EQ(s.lights[0].area->size2, 2);
+    }
+    // A comma after the disc radius, with no hole radius.
+    EXPECT_EQ(std::get<Disc>(parse("disc { 0, y, 2, }").objects[0].shape).hole_radius, 0);
+    // No comma after the last fixed argument of other objects.
+    EXPECT_EQ(error_of("sphere { 0, 1, }"),
+              "test.pov:1:14: error: expected an object modifier or '}' but found ','");
+    // `angle h, v` is the spherical camera's only.
+    EXPECT_EQ(error_of("camera { angle 60, 40 }"),
+              "test.pov:1:18: error: expected a camera item or '}' but found ','");
+}
+
+TEST(Commas, Mesh2TextureIndices) {
+    const std::string head =
+        "mesh2 { vertex_vectors { 3 0 x y } texture_list { 2 texture { pigment { rgb 1 } "
+        "} texture { pigment { rgb 0 } } } face_indices { 2 ";
+    for (const char* faces : {"<0 1 2> 1 <0 1 2> 0 1 1", "<0,1,2>, 1, <0,1,2>, 0, 1, 1,",
+                              "<0 1 2>, 1 <0, 1, 2> 0, 1 1"}) {
+        Scene s = parse(head + faces + " } }");
+        const Mesh& mesh = std::get<Mesh>(s.objects[0].shape);
+        ASSERT_EQ(mesh.faces.size(), 2u) << faces;
+        EXPECT_EQ(mesh.faces[0].texture, 1) << faces;
+        EXPECT_EQ(mesh.faces[1].texture, 0) << faces;
+    }
+    // An index may be any float expression.
+    Scene s = parse("#declare T = 1;\n" + head + "<0 1 2> T <0,1,2>, T-1 } }");
+    EXPECT_EQ(std::get<Mesh>(s.objects[0].shape).faces[0].texture, 1);
+    EXPECT_EQ(std::get<Mesh>(s.objects[0].shape).faces[1].texture, 0);
+    EXPECT_EQ(error_of(head + "<0 1 2> 0 2 <0 1 2> } }"),
+              "test.pov:1:142: error: mesh2 texture index out of range");
+}
+
+TEST(Commas, MapsListsSplinesAndDirectives) {
+    for (const char* comma : {"", ","}) {
+        const std::string c = comma;
+        Scene s = parse("sphere { 0 1 pigment { gradient x color_map { [0" + c +
+                        " rgb 0.25] [1" + c + " rgb 1] } } }\n" +
+                        "sphere { 0 1 pigment { checker rgb 0.5" + c + " rgb 1 } }\n" +
+                        "sphere { 0 1 matrix <1" + c + " 0" + c + " 0" + c + " 0" + c +
+                        " 2" + c + " 0" + c + " 0" + c + " 0" + c + " 1" + c + " 0" + c +
+                        " 0" + c + " 3> }\n");
+        ASSERT_EQ(s.objects.size(), 3u);
+        const ColourMap& map = s.objects[0].texture[0].pigment.maps->colour_map;
+        ASSERT_EQ(map.size(), 2u);
+        EXPECT_EQ(map[0].colour.rgb.r, 0.25f);
+        EXPECT_EQ(map[1].value, 1.0f);
+        ASSERT_EQ(s.objects[1].texture[0].pigment.maps->list.size(), 2u);
+        EXPECT_EQ(s.objects[1].texture[0].pigment.maps->list[0].colour.rgb.r, 0.5f);
+        const Point3 p = s.objects[2].transform.point(Point3(1, 1, 1));
+        EXPECT_EQ(p.y, 2);
+        EXPECT_EQ(p.z, 4);
+    }
+    EXPECT_EQ(debug_of("#for (I 0 4 2) #debug str(I, 0, 0) #end "
+                       "#for (I, 0, 2,) #debug str(I, 0, 0) #end "
+                       "#switch (3) #range (1 5) #debug \"in\" #break #end"),
+              "024012in");
+    EXPECT_EQ(error_of("#for (I, 0, 4, 2,) #end"),
+              "test.pov:1:17: error: expected ')' but found ','");
+    EXPECT_EQ(error_of("#switch (3) #range (1, 5,) #end"),
+              "test.pov:1:25: error: expected ')' but found ','");
+}
+
+// #read and #write: commas between the items optional (the #debug output is POV-Ray
+// 3.7.0.10's for the same scene).
+TEST(Commas, ReadAndWriteArguments) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "povwall_syntax_test_rw";
+    fs::create_directories(dir);
+    std::ostringstream messages;
+    ParseOptions o;
+    o.messages = &messages;
+    o.output_dir = dir.string();
+    parse_scene_text(
+        "#fopen F \"rw1.txt\" write\n"
+        "#write (F \"1, 2,\" 3 \",\\n\")\n"
+        "#write (F, \"\\\"a\\\"\", \",\", 4, \"\\n\")\n"
+        "#fclose F\n"
+        "#fopen F \"rw1.txt\" read\n"
+        "#read (F A B C)\n"
+        "#read (F, S, D)\n"
+        "#fclose F\n"
+        "#debug concat(str(A + B + C, 0, 0), S, str(D, 0, 0))\n",
+        (dir / "rw.pov").string(), o);
+    EXPECT_EQ(messages.str(), "6a4");
+    std::ifstream in(dir / "rw1.txt");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "1, 2,3,\n\"a\",4\n");
+}
+
+const Texture& top_layer(const Scene& s, size_t object) {
+    return s.objects.at(object).texture.back();
+}
+
+TEST(RepeatedBlocks, ASecondFinishContinuesFromTheFirst) {
+    Scene s = parse(
+        "sphere { 0, 1 texture { pigment { rgb 1 } finish { ambient 0.3 diffuse 0.4 }\n"
+        "  finish { phong 0.8 reflection 0.2 } } }\n"
+        "#declare F = finish { ambient 0.5 phong 0.3 phong_size 20 };\n"
+        "sphere { 0, 1 finish { F phong 1 } }\n"
+        "sphere { 0, 1 finish { phong 0.5 } finish { F } }\n"
+        "sphere { 0, 1 finish { diffuse albedo 0.6 brilliance 3 phong albedo 0.5 } }\n");
+    const Finish& a = *top_layer(s, 0).finish;
+    EXPECT_FLOAT_EQ(a.ambient.r, 0.3f);
+    EXPECT_FLOAT_EQ(a.diffuse, 0.4f);
+    EXPECT_FLOAT_EQ(a.phong, 0.8f);
+    EXPECT_FLOAT_EQ(a.reflection_max.g, 0.2f);
+    const Finish& b = *top_layer(s, 1).finish;
+    EXPECT_FLOAT_EQ(b.ambient.r, 0.5f);
+    EXPECT_FLOAT_EQ(b.phong, 1.0f);
+    EXPECT_FLOAT_EQ(b.phong_size, 20.0f);
+    // An identifier first replaces what the block edits.
+    EXPECT_FLOAT_EQ(top_layer(s, 2).finish->phong, 0.3f);
+    // Albedo scales by the values the block ends with: 0.6 * (3 + 1) / 2, 0.5 * 41 / 2.
+    EXPECT_FLOAT_EQ(top_layer(s, 3).finish->diffuse, 1.2f);
+    EXPECT_FLOAT_EQ(top_layer(s, 3).finish->phong, 10.25f);
+    // The identifier only as the first item.
+    EXPECT_EQ(
+        error_of(
+            "#declare F = finish { phong 1 };\nsphere { 0, 1 finish { ambient 1 F } }"),
+        "test.pov:2:34: error: expected a finish item or '}' but found 'F'");
+}
+
+TEST(RepeatedBlocks, ASecondPigmentEditsTheFirst) {
+    Scene s = parse(
+        "sphere { 0, 1 pigment { gradient x color_map { [0 rgb 0] [1 rgb <0, 0, 1>] } "
+        "scale 2 } pigment { gradient y } }\n"
+        "sphere { 0, 1 pigment { rgb <1, 0, 0> } pigment { translate x } }\n"
+        "sphere { 0, 1 pigment { checker rgb 1 rgb 0 } pigment { checker rgb 0.5 } }\n"
+        "sphere { 0, 1 pigment { brick brick_size <1, 2, 3> mortar 0.1 } "
+        "pigment { brick } }\n"
+        "sphere { 0, 1 pigment { spiral1 5 } pigment { brick } }\n"
+        "sphere { 0, 1 pigment { bozo color_map { [0 rgb 1] [1 rgb 0] } } "
+        "pigment { checker } }\n");
+    const Pigment& g = top_layer(s, 0).pigment;
+    EXPECT_EQ(g.pattern->kind, PatternKind::Gradient);
+    expect_vec(g.pattern->vector, 0, 1, 0);
+    ASSERT_EQ(g.maps->colour_map.size(), 2u);  // the map stays
+    EXPECT_FLOAT_EQ(g.maps->colour_map[1].colour.rgb.b, 1.0f);
+    EXPECT_DOUBLE_EQ(g.pattern->transform.point(Point3(1, 1, 1)).y,
+                     2);  // so does the scale
+    const Pigment& red = top_layer(s, 1).pigment;
+    EXPECT_EQ(red.pattern->kind, PatternKind::Solid);
+    EXPECT_FLOAT_EQ(red.colour.rgb.r, 1.0f);
+    // A blend list replaces the earlier one (the missing entry is the default's).
+    ASSERT_EQ(top_layer(s, 2).pigment.maps->list.size(), 1u);
+    EXPECT_FLOAT_EQ(top_layer(s, 2).pigment.maps->list[0].colour.rgb.r, 0.5f);
+    // brick keeps its size and mortar when it was brick already; other parameters are
+    // the new pattern's own.
+    expect_vec(top_layer(s, 3).pigment.pattern->vector2, 1, 2, 3);
+    EXPECT_DOUBLE_EQ(top_layer(s, 3).pigment.pattern->scalar, 0.1);
+    expect_vec(top_layer(s, 4).pigment.pattern->vector2, 0, 0, 0);
+    EXPECT_DOUBLE_EQ(top_layer(s, 4).pigment.pattern->scalar, 0);
+    EXPECT_TRUE(top_layer(s, 5).pigment.maps->colour_map.empty());
+}
+
+TEST(RepeatedBlocks, NormalsAndInteriors) {
+    Scene s = parse(
+        "#declare N = normal { dents 0.7 };\n"
+        "sphere { 0, 1 normal { bumps 0.6 scale 0.2 } normal { scale 2 } }\n"
+        "sphere { 0, 1 normal { N 0.3 } }\n"
+        "sphere { 0, 1 interior { ior 1.5 } interior { fade_distance 2 } }\n"
+        "#declare I = interior { caustics 0.5 };\n"
+        "sphere { 0, 1 interior { ior 1.5 } interior { I fade_power 3 } }\n");
+    const Normal& n = *top_layer(s, 0).normal;
+    EXPECT_EQ(n.pattern->kind, PatternKind::Bumps);
+    EXPECT_DOUBLE_EQ(n.amount, 0.6);
+    EXPECT_NEAR(n.pattern->transform.point(Point3(1, 0, 0)).x, 0.4, 1e-15);
+    EXPECT_EQ(top_layer(s, 1).normal->pattern->kind, PatternKind::Dents);
+    EXPECT_DOUBLE_EQ(top_layer(s, 1).normal->amount, 0.3);
+    ASSERT_TRUE(s.objects[2].interior);
+    EXPECT_FLOAT_EQ(s.objects[2].interior->ior, 1.5f);
+    EXPECT_FLOAT_EQ(s.objects[2].interior->fade_distance, 2.0f);
+    // An identifier first replaces the interior.
+    EXPECT_FLOAT_EQ(s.objects[3].interior->ior, 1.0f);
+    EXPECT_FLOAT_EQ(s.objects[3].interior->caustics, 0.5f);
+    EXPECT_FLOAT_EQ(s.objects[3].interior->fade_power, 3.0f);
+}
+
+TEST(RepeatedBlocks, LoosePartsEditTheTopLayer) {
+    Scene s = parse(
+        "sphere { 0, 1 texture { pigment { rgb 1 } }\n"
+        "  texture { pigment { rgbt <0, 0, 1, 0.5> } finish { phong 1 } }\n"
+        "  pigment { rgbt <0, 1, 0, 0.5> } }\n"
+        "#declare T = texture { pigment { rgb <1, 0, 0> } finish { diffuse 0.2 } };\n"
+        "sphere { 0, 1 texture { T } finish { ambient 0.5 } }\n"
+        "sphere { 0, 1 pigment { gradient x } pigment { scale 2 } finish { phong 1 } }\n"
+        "sphere { 0, 1 material { texture { pigment { rgb 1 } } scale 3 } }\n");
+    ASSERT_EQ(s.objects[0].texture.size(), 2u);
+    EXPECT_FLOAT_EQ(s.objects[0].texture[0].pigment.colour.rgb.r, 1.0f);
+    EXPECT_FLOAT_EQ(top_layer(s, 0).pigment.colour.rgb.g, 1.0f);
+    EXPECT_FLOAT_EQ(top_layer(s, 0).pigment.colour.rgb.b, 0.0f);
+    EXPECT_FLOAT_EQ(top_layer(s, 0).finish->phong, 1.0f);
+    EXPECT_FLOAT_EQ(top_layer(s, 1).pigment.colour.rgb.r, 1.0f);
+    EXPECT_FLOAT_EQ(top_layer(s, 1).finish->diffuse, 0.2f);
+    EXPECT_FLOAT_EQ(top_layer(s, 1).finish->ambient.r, 0.5f);
+    EXPECT_EQ(top_layer(s, 2).pigment.pattern->kind, PatternKind::Gradient);
+    EXPECT_DOUBLE_EQ(top_layer(s, 2).pigment.pattern->transform.point(Point3(1, 0, 0)).x,
+                     2);
+    // A material's transform moves its textures, not the object.
+    EXPECT_DOUBLE_EQ(s.objects[3].transform.point(Point3(1, 0, 0)).x, 1);
+    EXPECT_DOUBLE_EQ(top_layer(s, 3).pigment.pattern->transform.point(Point3(1, 0, 0)).x,
+                     3);
+    // Nothing layers over a patterned texture.
+    const std::string checker =
+        "sphere { 0, 1 texture { checker texture { pigment { rgb 1 } } "
+        "texture { pigment { rgb 0 } } }";
+    EXPECT_EQ(error_of(checker + " pigment { rgb 1 } }"),
+              "test.pov:1:95: error: cannot layer over a patterned texture");
+    EXPECT_EQ(error_of(checker + " texture { pigment { rgb 1 } } }"),
+              "test.pov:1:95: error: cannot layer over a patterned texture");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { rgb 1 } texture { checker } }"),
+              "test.pov:1:33: error: cannot layer a patterned texture over another");
+}
+
+TEST(RepeatedBlocks, DefaultsAccumulateAndDeclarationsStartFromThem) {
+    Scene s = parse(
+        "#default { finish { ambient 0.4 } }\n"
+        "#default { finish { diffuse 0.3 } }\n"
+        "sphere { 0, 1 }\n"
+        "#default { pigment { rgb <1, 0, 0> } }\n"
+        "#default { pigment { scale 2 } }\n"
+        "#declare P = pigment { translate x };\n"
+        "sphere { 0, 1 pigment { P } }\n"
+        "#default { texture { finish { phong 1 } } }\n"
+        "#default { texture { normal { bumps 0.4 } } }\n"
+        "sphere { 0, 1 }\n");
+    const Finish& f = *top_layer(s, 0).finish;
+    EXPECT_FLOAT_EQ(f.ambient.r, 0.4f);
+    EXPECT_FLOAT_EQ(f.diffuse, 0.3f);
+    const Pigment& p = top_layer(s, 1).pigment;
+    EXPECT_FLOAT_EQ(p.colour.rgb.r, 1.0f);
+    EXPECT_DOUBLE_EQ(p.pattern->transform.point(Point3(1, 0, 0)).x, 3);  // scale, move
+    const Texture& t = top_layer(s, 2);
+    EXPECT_FLOAT_EQ(t.finish->phong, 1.0f);
+    EXPECT_FLOAT_EQ(t.finish->ambient.r, 0.4f);
+    ASSERT_TRUE(t.normal);
+    EXPECT_DOUBLE_EQ(t.normal->amount, 0.4);
+    EXPECT_EQ(error_of("#default { texture { pigment { rgb 1 } } texture { } }"),
+              "(no error)");
+    EXPECT_EQ(error_of("#declare T = texture { pigment { rgb 1 } } texture { };\n"
+                       "#default { texture { T } }"),
+              "test.pov:2:12: error: the default texture cannot be layered");
+    EXPECT_EQ(error_of("#default { texture { checker } }"),
+              "test.pov:1:12: error: the default texture cannot be patterned");
+}
+
+}  // namespace
+}  // namespace povwall::parser
