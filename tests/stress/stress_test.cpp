@@ -129,9 +129,11 @@ TEST(StressErrors, SingularMatrixIsALocatedError) {
 }
 
 // POV-Ray 3.7 loses every object 1e6-1e7 from the origin with sizes ~1e-3 (its image is
-// all background); on each pixel where the two images differ, the oracle confirms
-// povwall's hit.
-TEST(StressPovray, FarCoordinatesOracleSidesWithPovwall) {
+// all background): their single-precision bounding boxes are a float spacing (0.25 at
+// 3e6) off the objects, and the rays meet them in float too. povwall applies the same
+// rule (trace/pov_bounds.h), so the two images agree; the numerics check above still
+// compares every shape against the oracle with exact bounds.
+TEST(StressPovray, FarCoordinatesVanishAsInPovray) {
     if (std::system("command -v povray > /dev/null 2>&1") != 0)
         GTEST_SKIP() << "no povray";
     std::string cmd = std::string(POVWALL_BINARY) + " check-numerics " +
@@ -144,10 +146,10 @@ TEST(StressPovray, FarCoordinatesOracleSidesWithPovwall) {
     while (size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
     ASSERT_EQ(WEXITSTATUS(pclose(p)), 0) << out;
     auto j = nlohmann::json::parse(out);
-    EXPECT_GT(j["povray"]["differing_pixels"].get<int>(), 100);
-    EXPECT_EQ(j["povray"]["oracle_contradicts_povwall_first_hit"].get<int>(), 0);
-    EXPECT_EQ(j["povray"]["oracle_agrees_with_povwall_first_hit"],
-              j["povray"]["differing_pixels"]);
+    EXPECT_EQ(j["povray"]["differing_pixels"].get<int>(), 0);
+    // With exact bounds every shape kind is met (the oracle's comparison ran).
+    for (const char* kind : {"sphere", "box", "torus", "cylinder", "triangle"})
+        EXPECT_GT(j["kinds"][kind]["compared"].get<int>(), 0) << kind;
 }
 
 }  // namespace
