@@ -70,7 +70,9 @@ Image render_scene(const Scene& scene, const RenderSettings& settings,
                    RenderStats* stats) {
     auto t0 = Clock::now();
     const RenderPlan plan = make_render_plan(scene, settings.plan_everything_on);
-    PreparedScene prepared(scene, &plan);
+    PrepareOptions prepare;
+    prepare.threads = settings.threads;
+    PreparedScene prepared(scene, &plan, prepare);
     prepared.set_alpha_background(settings.alpha);
     auto t1 = Clock::now();
     const int W = settings.width, H = settings.height;
