@@ -321,8 +321,8 @@ std::optional<Pilot> traffic_pilot(const Scene& scene,
         scene.objects.size() > kTrafficPilotMaxObjects)
         return std::nullopt;
     Pilot pilot;
-    pilot.segments =
-        pilot_segments(scene, request.width, request.height, kTrafficPilotRays);
+    pilot.segments = pilot_segments(scene, request.width, request.height,
+                                    kTrafficPilotRays, request.threads);
     if (pilot.segments.empty()) return std::nullopt;
     pilot.extents = object_extents(scene);
     return pilot;

@@ -209,7 +209,10 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
         box->next_id = (uint64_t(b) + 1) << 40;
         box->stats.region = walls_.box_bounds(b);
         if (host[b]) {
-            box->scene = std::make_unique<trace::PreparedScene>(scene_, local[b], &plan_);
+            trace::PrepareOptions prepare;
+            prepare.threads = settings_.threads;
+            box->scene =
+                std::make_unique<trace::PreparedScene>(scene_, local[b], &plan_, prepare);
             box->scene->set_alpha_background(settings_.alpha);
             box->stats.objects = local[b].size();
             box->stats.resident_bytes = box->scene->resident_bytes();

@@ -54,11 +54,13 @@ bool meets(const Bounds3& reach, const Ray& ray, const VirtualWalls::Segment& se
 }  // namespace
 
 std::vector<PilotSegment> pilot_segments(const Scene& scene, int width, int height,
-                                         int samples) {
+                                         int samples, int threads) {
     std::vector<PilotSegment> out;
     if (width <= 0 || height <= 0 || samples <= 0) return out;
     const trace::RenderPlan plan = trace::make_render_plan(scene);
-    const trace::PreparedScene prepared(scene, &plan);
+    trace::PrepareOptions prepare;
+    prepare.threads = threads;
+    const trace::PreparedScene prepared(scene, &plan, prepare);
     trace::RayContext ctx;
     prepared.init_context(ctx);
     const Bounds3 world = finite_bounds(scene);

@@ -23,8 +23,9 @@ struct PilotSegment {
 };
 
 // The pilot: about `samples` camera rays on a regular grid of a width x height image.
+// `threads`: for preparing the scene (0: every core).
 std::vector<PilotSegment> pilot_segments(const Scene& scene, int width, int height,
-                                         int samples);
+                                         int samples, int threads = 0);
 
 // An object's world bounds (the boxes it is in) and the bounds of where a ray can hit
 // it (what it adds to their reach), computed once for all the walls scored.

@@ -4,6 +4,7 @@
 // parallel into private arrays and stitched into the flat node array afterwards.
 #include "octree/octree.h"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -49,8 +50,13 @@ struct Task {
 
 class Builder {
   public:
-    Builder(const BuildInput& in, const BuildOptions& opt, Real min_cell)
-        : in_(in), opt_(opt), min_cell_(min_cell) {}
+    Builder(const BuildInput& in, const BuildOptions& opt, Real min_cell,
+            uint64_t references, uint64_t budget)
+        : in_(in),
+          opt_(opt),
+          min_cell_(min_cell),
+          references_(references),
+          budget_(budget) {}
 
     // Builds the subtree of nodes[index] (already allocated) over `ids`. At spawn_depth
     // the node is handed to `tasks` instead (null: never).
@@ -86,8 +92,31 @@ class Builder {
 
     uint64_t exact_tests() const { return exact_tests_; }
     uint64_t exact_rejected() const { return exact_rejected_; }
+    uint64_t inseparable_leaves() const { return inseparable_; }
+    uint64_t budget_leaves() const { return budget_leaves_; }
 
   private:
+    // True when the ids are copies: they have at most leaf_primitives distinct bounds,
+    // more than two ids per distinct bounds on average. Splitting cannot separate equal
+    // bounds (copies of one part placed at one transform), so these cells would stay this
+    // full to the deepest level. (Two per bounds is left to the split: the two triangles
+    // of a quad share their bounds but the exact test separates them.)
+    bool copies(const std::vector<uint32_t>& ids) const {
+        const size_t most = size_t(std::max(opt_.leaf_primitives, 1));
+        const Bounds3* seen[64];
+        size_t distinct = 0;
+        for (uint32_t id : ids) {
+            const Bounds3& b = in_.bounds[id];
+            bool known = false;
+            for (size_t k = 0; k < distinct && !known; ++k)
+                known = seen[k]->lo == b.lo && seen[k]->hi == b.hi;
+            if (known) continue;
+            if (distinct == most || distinct == 64) return false;
+            seen[distinct++] = &b;
+        }
+        return ids.size() > 2 * distinct;
+    }
+
     // Distributes `ids` over the 8 children; false: this cell stays a leaf.
     bool split(const std::vector<uint32_t>& ids, const Bounds3& box, int depth,
                std::array<std::vector<uint32_t>, 8>& kids) {
@@ -95,6 +124,10 @@ class Builder {
         if (n <= size_t(opt_.leaf_primitives) || depth >= opt_.max_depth) return false;
         const Vector3 size = box.diagonal();
         if (std::min({size.x, size.y, size.z}) <= min_cell_) return false;
+        if (copies(ids)) {
+            ++inseparable_;
+            return false;
+        }
         const Point3 mid = box.centre();
         uint64_t tests = 0, rejected = 0;
         size_t total = 0;
@@ -141,23 +174,50 @@ class Builder {
         // children split further, so a split that about breaks even (a row of primitives
         // cut by two mid-planes: 4 copies each) is taken too, provided every child is
         // clearly smaller (else primitives covering whole cells would be split forever).
-        size_t max_child = 0;
-        for (const auto& k : kids) max_child = std::max(max_child, k.size());
+        size_t max_child = 0, min_filled = n, filled = 0;
+        for (const auto& k : kids) {
+            max_child = std::max(max_child, k.size());
+            if (!k.empty()) {
+                ++filled;
+                min_filled = std::min(min_filled, k.size());
+            }
+        }
+        auto stay_leaf = [&] {
+            for (auto& k : kids) std::vector<uint32_t>().swap(k);
+            return false;
+        };
+        // Every child that gets anything gets everything, in several copies: the split
+        // separates nothing (nested or heavily overlapping primitives) and only
+        // multiplies references.
+        if (filled > 1 && min_filled == n) {
+            ++inseparable_;
+            return stay_leaf();
+        }
         const Real leaf_cost = Real(n);
         const Real split_cost = opt_.traversal_cost * 2 + 0.25 * Real(total);
         const bool pays = split_cost < leaf_cost;
         const bool breaks_even = split_cost < leaf_cost * 1.25 && max_child * 4 <= n * 3;
-        if (!pays && !breaks_even) {
-            for (auto& k : kids) std::vector<uint32_t>().swap(k);
-            return false;
-        }
+        if (!pays && !breaks_even) return stay_leaf();
+        // The references the tree would hold after this split, against the budget.
+        const uint64_t added = uint64_t(total - std::min(total, n));
+        uint64_t now = references_.load(std::memory_order_relaxed);
+        do {
+            if (now + added > budget_) {
+                ++budget_leaves_;
+                return stay_leaf();
+            }
+        } while (!references_.compare_exchange_weak(now, now + added,
+                                                    std::memory_order_relaxed));
         return true;
     }
 
     const BuildInput& in_;
     const BuildOptions& opt_;
     const Real min_cell_;
+    std::atomic<uint64_t> references_;  // references in the tree as built so far
+    const uint64_t budget_;
     std::atomic<uint64_t> exact_tests_{0}, exact_rejected_{0};
+    std::atomic<uint64_t> inseparable_{0}, budget_leaves_{0};
 };
 
 }  // namespace
@@ -202,7 +262,10 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
     }
     // Cells narrower than this lose their mid-plane to rounding.
     const Real min_cell = mag * 1e-13;
-    Builder builder(input, opt, min_cell);
+    const uint64_t budget =
+        uint64_t(std::max(0.0, opt.max_references_per_primitive) * Real(all.size())) +
+        opt.reference_slack;
+    Builder builder(input, opt, min_cell, all.size(), budget);
     nodes_.push_back(Node{});
     int threads =
         opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency());
@@ -228,6 +291,7 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
         for (int i = 1; i < std::min<int>(threads, int(tasks.size())); ++i) {
             pool.emplace_back(work);
         }
+        stats_.threads = int(pool.size()) + 1;
         work();
         for (auto& th : pool) th.join();
         for (Task& t : tasks) {
@@ -265,6 +329,8 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
     stats_.dense_top = top_level_;
     stats_.exact_tests = builder.exact_tests();
     stats_.exact_rejected = builder.exact_rejected();
+    stats_.inseparable_leaves = builder.inseparable_leaves();
+    stats_.budget_leaves = builder.budget_leaves();
     stats_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

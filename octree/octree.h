@@ -46,6 +46,13 @@ struct BuildOptions {
     Real traversal_cost = 8;
     /// Build threads; 0 = hardware concurrency.
     int threads = 0;
+    /// Most references (ids in leaves) the tree may hold: this multiple of the bounded
+    /// primitives plus reference_slack. Where a split would go beyond it the cell stays a
+    /// leaf. A safety net for primitives that cannot be separated (heavy overlap); the
+    /// usual trees hold 1-9 references per primitive.
+    Real max_references_per_primitive = 32;
+    /// Added to the budget above, so that small scenes are never cut short.
+    uint64_t reference_slack = uint64_t(1) << 16;
     /// Deepest level kept as a dense array of cells, walked by stepping from cell to
     /// cell (0 = off). Used where the tree is complete down to that level; see
     /// Octree::top_level().
@@ -68,6 +75,13 @@ struct BuildStats {
     uint64_t exact_rejected =
         0;              // cell references the exact test removed (bounds overlapped)
     bool flat = false;  // below flat_threshold: a single leaf, no tree
+    // Cells left as leaves because their primitives cannot be told apart: at most
+    // leaf_primitives distinct bounds among them (identical copies), or a split would
+    // have copied every reference into several children and separated nothing.
+    uint64_t inseparable_leaves = 0;
+    // Cells left as leaves because the reference budget was spent.
+    uint64_t budget_leaves = 0;
+    int threads = 1;    // threads the build ran on (BuildOptions::threads, at most)
     int dense_top = 0;  // levels walked as a dense array of cells (0: none)
     double seconds = 0;
 };

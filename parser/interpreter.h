@@ -72,9 +72,10 @@ class Interpreter {
             *options_.messages << format_diagnostic(sources_, at, "warning", message)
                                << "\n";
     }
-    // POV-Ray's degenerate triangle: coincident or collinear corners.
+    // POV-Ray's degenerate triangle: (P1 - P2) x (P3 - P2) of length exactly 0
+    // (Triangle::Compute_Triangle, Mesh::Degenerate). A tiny triangle is not degenerate.
     static bool degenerate_corners(const Point3 p[3]) {
-        return length(cross(p[1] - p[0], p[2] - p[0])) < 1e-10;
+        return length(cross(p[0] - p[1], p[2] - p[1])) == 0;
     }
     [[noreturn]] void unsupported(const Token& at, std::string_view feature);
     [[noreturn]] void expected(std::string_view what, const Token& found);

@@ -7,6 +7,8 @@
 
 namespace povwall::trace {
 
+Real round_to_float(Real x) { return Real(float(x)); }
+
 void intersect_sphere(const Sphere& s, const Point3& o, const Vector3& dir,
                       Crossings& out) {
     Vector3 oc = s.centre - o;
@@ -59,6 +61,49 @@ void intersect_box(const Box& b, const Point3& o, const Vector3& dir, Crossings&
     if (tmax > kBoxTolerance) out.add(tmax, fmax);
 }
 
+void intersect_box_pov(const Box& b, const Point3& o, const Vector3& dir,
+                       Crossings& out) {
+    const Point3 lo = min(b.corner1, b.corner2), hi = max(b.corner1, b.corner2);
+    Real tmin = 0, tmax = kBoxBoundHuge;
+    int fmin = -1, fmax = -1;
+    // Whether a face of `axis` is met more head-on than the face `current` (which lies on
+    // an earlier axis): y is weighed against x, z against the current face's axis.
+    auto more_direct = [&](int axis, int current) {
+        const int other = axis == 1 ? 0 : current / 2;
+        if (axis == 2 && current < 0) return false;
+        return std::fabs(dir[axis]) > std::fabs(dir[other]);
+    };
+    for (int a = 0; a < 3; ++a) {
+        if (!(dir[a] < -kPovEpsilon || dir[a] > kPovEpsilon)) {
+            if (o[a] < lo[a] || o[a] > hi[a]) return;
+            continue;
+        }
+        const bool down = dir[a] < 0;
+        const int enter_face = down ? 2 * a + 1 : 2 * a,
+                  leave_face = down ? 2 * a : 2 * a + 1;
+        const Real close = a == 0 ? 0 : kBoxCloseTolerance;
+        const Real leave = ((down ? lo[a] : hi[a]) - o[a]) / dir[a];
+        if (leave < tmin) return;
+        if (leave <= tmax - close) {
+            tmax = leave;
+            fmax = leave_face;
+        } else if (a > 0 && leave <= tmax + close && more_direct(a, fmax)) {
+            fmax = leave_face;
+        }
+        const Real enter = ((down ? hi[a] : lo[a]) - o[a]) / dir[a];
+        if (enter >= tmin + close) {
+            if (enter > tmax) return;
+            tmin = enter;
+            fmin = enter_face;
+        } else if (a > 0 && enter >= tmin - close && more_direct(a, fmin)) {
+            fmin = enter_face;
+        }
+    }
+    if (tmax < kBoxTolerance) return;
+    if (tmin > kBoxTolerance) out.add(tmin, fmin);
+    out.add(tmax, fmax);
+}
+
 Vector3 box_normal(const Box& b, int face) {
     Vector3 n{0, 0, 0};
     int axis = face / 2;
@@ -73,12 +118,12 @@ bool inside_box(const Box& b, const Point3& p) {
            p.z <= hi.z;
 }
 
-void intersect_plane(const Plane& p, const Point3& o, const Vector3& dir,
-                     Crossings& out) {
+void intersect_plane(const Plane& p, const Point3& o, const Vector3& dir, Crossings& out,
+                     Real min_t) {
     Real nd = dot(p.normal, dir);
     if (std::fabs(nd) < kPovEpsilon) return;
     Real t = (p.distance - dot(p.normal, o)) / nd;
-    if (t > kPlaneTolerance && t < kMaxDistance) out.add(t, 0);
+    if (t > min_t && t < kMaxDistance) out.add(t, 0);
 }
 
 bool inside_plane(const Plane& pl, const Point3& p) {
@@ -229,19 +274,20 @@ bool inside_cone(const Cone& c, const Point3& p) {
     return dot(perp, perp) < r * r;
 }
 
-void intersect_disc(const Disc& d, const Point3& o, const Vector3& dir, Crossings& out) {
+void intersect_disc(const Disc& d, const Point3& o, const Vector3& dir, Crossings& out,
+                    Real min_t) {
     Vector3 n = normalize(d.normal);
     Real nd = dot(n, dir);
     if (std::fabs(nd) < kPovEpsilon) return;
     Real t = dot(n, d.centre - o) / nd;
-    if (t <= kPlaneTolerance) return;
+    if (t <= min_t) return;
     Vector3 q = o + dir * t - d.centre;
     Real r2 = dot(q, q);
     if (r2 <= d.radius * d.radius && r2 >= d.hole_radius * d.hole_radius) out.add(t, 0);
 }
 
 void intersect_triangle(const Point3 p[3], const Point3& o, const Vector3& dir,
-                        Crossings& out) {
+                        Crossings& out, Real min_t) {
     Vector3 e1 = p[1] - p[0], e2 = p[2] - p[0];
     Vector3 pv = cross(dir, e2);
     Real det = dot(e1, pv);
@@ -254,7 +300,26 @@ void intersect_triangle(const Point3 p[3], const Point3& o, const Vector3& dir,
     Real v = dot(dir, qv) * inv;
     if (v < 0 || u + v > 1) return;
     Real t = dot(e2, qv) * inv;
-    if (t > kTriangleTolerance) out.add(t, 0);
+    if (t > min_t) out.add(t, 0);
+}
+
+bool degenerate_polygon(const Polygon& poly) {
+    const auto& pts = poly.points;
+    const size_t k = pts.size();
+    if (k < 3) return true;
+    const Point3& o = pts[0];
+    size_t i = 1;
+    Vector3 u;
+    for (; i < k; ++i) {
+        u = pts[i] - o;
+        if (dot(u, u) > kPovEpsilon) break;
+    }
+    if (i == k) return true;
+    for (++i; i < k; ++i) {
+        const Vector3 v = pts[i] - o, w = cross(u, v);
+        if (dot(v, v) > kPovEpsilon && dot(w, w) > kPovEpsilon) return false;
+    }
+    return true;
 }
 
 Vector3 smooth_triangle_normal(const Point3 (&corner)[3], const Vector3* n,
@@ -313,7 +378,7 @@ void intersect_polygon(const Polygon& poly, const Point3& o, const Vector3& dir,
 // ------------------------------------------------------------------ torus
 
 bool torus_quartic(const Torus& tor, const Point3& o0, const Vector3& dir,
-                   TorusQuartic& q) {
+                   TorusQuartic& q, Real min_t) {
     const Real R = tor.major, r = tor.minor;
     const Real bound = R + r;
     const Real tc = -dot(o0, dir);
@@ -339,15 +404,95 @@ bool torus_quartic(const Torus& tor, const Point3& o0, const Vector3& dir,
     // Every crossing lies inside the bounding sphere: solve only over that chord.
     const Real half_chord = std::sqrt(std::max(0.0, bound * bound - closest2));
     const Real slack = 1e-9 * (bound + std::fabs(tc));
-    q.lo = std::max(kTorusTolerance - q.shift, tc - q.shift - half_chord - slack);
+    q.lo = std::max(min_t - q.shift, tc - q.shift - half_chord - slack);
     q.hi = tc - q.shift + half_chord + slack;
     return q.lo < q.hi;
 }
 
+namespace {
+
+// POV-Ray's thick-cylinder pre-test of a torus (Torus::Test_Thick_Cylinder): the ray
+// meets the cap planes y = +-r inside the ring R - r .. R + r, or the outer or inner
+// cylinder between the caps, ahead of its origin (EPSILON < k < MAX_DISTANCE).
+bool meets_thick_cylinder(const Torus& tor, const Point3& p, const Vector3& d) {
+    const Real h1 = -tor.minor, h2 = tor.minor;
+    const Real r1 =
+        tor.major < tor.minor ? 0 : (tor.major - tor.minor) * (tor.major - tor.minor);
+    const Real r2 = (tor.major + tor.minor) * (tor.major + tor.minor);
+    auto ahead = [](Real k) { return k > kPovEpsilon && k < kMaxDistance; };
+    if (std::fabs(d.y) < kPovEpsilon) {
+        if (p.y < h1 || p.y > h2) return false;
+    } else {
+        for (Real h : {h2, h1}) {
+            const Real k = (h - p.y) / d.y;
+            const Real u = p.x + k * d.x, v = p.z + k * d.z;
+            if (ahead(k) && u * u + v * v >= r1 && u * u + v * v <= r2) return true;
+        }
+    }
+    const Real a = d.x * d.x + d.z * d.z;
+    if (!(a > kPovEpsilon)) return false;
+    const Real b = p.x * d.x + p.z * d.z;
+    for (Real rr : {r2, r1}) {
+        Real disc = b * b - a * (p.x * p.x + p.z * p.z - rr);
+        if (!(disc >= 0)) continue;
+        disc = std::sqrt(disc);
+        for (Real k : {(-b + disc) / a, (-b - disc) / a}) {
+            const Real h = p.y + k * d.y;
+            if (ahead(k) && h >= h1 && h <= h2) return true;
+        }
+    }
+    return false;
+}
+
+// POV-Ray's root elimination (Solve_Polynomial with ROOT_TOLERANCE 1e-4): the quartic in
+// t, monic, about the point `closer` along the ray (the origin moved to 2r outside the
+// bounding sphere, as POV-Ray moves it). When its constant term is below 1e-4 times its
+// linear one (a root within about 1e-4 of that point: a ray leaving the surface, or a
+// torus whose minor radius is about that small), the constant is dropped and the cubic
+// left is solved instead. Returns false when no elimination happens; else `out` holds
+// the cubic's roots as crossings (for a torus that small they are not on its surface:
+// POV- Ray shades it at those points).
+bool torus_root_elimination(const Torus& tor, const Point3& o, const Vector3& dir,
+                            Crossings& out, Real min_t) {
+    const Real R2 = tor.major * tor.major, r2 = tor.minor * tor.minor;
+    const Real bound = tor.major + 2 * tor.minor;
+    Real closer = 0;
+    Point3 p = o;
+    const Real dist2 = dot(o, o);
+    if (dist2 > bound * bound) {
+        closer = std::sqrt(dist2) - bound;
+        p = o + dir * closer;
+    }
+    const Real k1 = p.x * p.x + p.z * p.z + p.y * p.y - R2 - r2;
+    const Real k2 = p.x * dir.x + p.z * dir.z + p.y * dir.y;
+    const Real c1 = 4 * k2;
+    const Real c2 = 2 * (k1 + 2 * (k2 * k2 + R2 * dir.y * dir.y));
+    const Real c3 = 4 * (k2 * k1 + 2 * R2 * p.y * dir.y);
+    const Real c4 = k1 * k1 + 4 * R2 * (p.y * p.y - r2);
+    if (!(c3 != 0 && std::fabs(c4 / c3) < kTorusTolerance)) return false;
+    if (!meets_thick_cylinder(tor, o, dir))
+        return true;  // POV-Ray's pre-test fails first
+    Real roots[3];
+    const int n = solve_cubic(c1, c2, c3, roots);
+    Real t[3];
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+        const Real d = roots[i] + closer;
+        if (d > min_t && d < kMaxDistance) t[m++] = d;
+    }
+    for (int i = 1; i < m; ++i)  // ascending
+        for (int j = i; j > 0 && t[j] < t[j - 1]; --j) std::swap(t[j], t[j - 1]);
+    for (int i = 0; i < m; ++i) out.add(t[i], 0);
+    return true;
+}
+
+}  // namespace
+
 void intersect_torus(const Torus& tor, const Point3& o, const Vector3& dir,
-                     Crossings& out) {
+                     Crossings& out, Real min_t) {
+    if (torus_root_elimination(tor, o, dir, out, min_t)) return;
     TorusQuartic q;
-    if (!torus_quartic(tor, o, dir, q)) return;
+    if (!torus_quartic(tor, o, dir, q, min_t)) return;
     Real roots[4];
     int n = solve_quartic(q.c, q.lo, q.hi, roots);
     // The quartic's coefficients are rounded sums of large terms, so its exact roots are
@@ -382,13 +527,13 @@ void intersect_torus(const Torus& tor, const Point3& o, const Vector3& dir,
                 std::fabs(distance(nt, nslope)) < std::fabs(g))
                 t = nt;
         }
-        if (t > kTorusTolerance) out.add(t, 0);
+        if (t > min_t) out.add(t, 0);
     }
 }
 
 Vector3 torus_normal(const Torus& tor, const Point3& p) {
     Real d = std::sqrt(p.x * p.x + p.z * p.z);
-    if (d == 0) return {0, 1, 0};
+    if (!(d > kPovEpsilon)) return p;  // POV-Ray: no ring point, the normal is p itself
     Point3 ring{p.x * tor.major / d, 0, p.z * tor.major / d};
     return p - ring;
 }

@@ -11,8 +11,12 @@
 
 namespace povwall::trace {
 
-// POV-Ray's minimum accepted hit depths (see docs/pov-semantics notes): per shape, in
-// object space, then 1e-4 world distance for every hit.
+// POV-Ray's minimum accepted hit depths (see docs/pov-semantics notes): per shape, then
+// 1e-4 world distance for every hit. Each shape applies its own in the space its
+// 3.7 code does: world distance for the box, disc, triangle, plane and torus (their depth
+// is compared after the division by the transformed direction's length, or the direction
+// is never normalised), object space along a unit direction for the ellipsoid, cone,
+// cylinder and polygon.
 constexpr Real kSphereTolerance = 1e-6;
 constexpr Real kBoxTolerance = 1e-6;
 constexpr Real kPlaneTolerance = 1e-6;
@@ -43,31 +47,65 @@ struct Crossings {
 void intersect_sphere(const Sphere& s, const Point3& o, const Vector3& dir,
                       Crossings& out);
 void intersect_box(const Box& b, const Point3& o, const Vector3& dir, Crossings& out);
-void intersect_plane(const Plane& p, const Point3& o, const Vector3& dir, Crossings& out);
+// POV-Ray's box (3.7:source/backend/shape/boxes.cpp, Box::Intersect and
+// All_Intersections): the slabs in object space with the direction as the inverse
+// transform leaves it, not normalised, so `t` is the ray's own parameter (the world
+// distance). The interval starts at [0, BOUND_HUGE]; x narrows it exactly, y and z only
+// where they move an end by more than kBoxCloseTolerance, and an entry within that of the
+// current one is never compared with the exit. So a box thinner than 1e-6 along the ray
+// is met wherever its slabs nearly overlap. Where two faces are that close, the face
+// kept is the one the direction points at most directly (y against x; z against the
+// axis of the face so far). The entry counts above kBoxTolerance, the exit always; no
+// hit when the exit is below kBoxTolerance.
+constexpr Real kBoxCloseTolerance = 1e-6;
+constexpr Real kBoxBoundHuge = 2e10;
+void intersect_box_pov(const Box& b, const Point3& o, const Vector3& dir, Crossings& out);
+void intersect_plane(const Plane& p, const Point3& o, const Vector3& dir, Crossings& out,
+                     Real min_t = kPlaneTolerance);
 void intersect_cylinder(const Cylinder& c, const Point3& o, const Vector3& dir,
                         Crossings& out);
 void intersect_cone(const Cone& c, const Point3& o, const Vector3& dir, Crossings& out);
-void intersect_disc(const Disc& d, const Point3& o, const Vector3& dir, Crossings& out);
+// `min_t`: the smallest crossing kept, in the units of `dir` (callers turn the world
+// tolerance into object units).
+void intersect_disc(const Disc& d, const Point3& o, const Vector3& dir, Crossings& out,
+                    Real min_t = kPlaneTolerance);
 void intersect_triangle(const Point3 p[3], const Point3& o, const Vector3& dir,
-                        Crossings& out);
-// POV-Ray's degenerate triangle: coincident or collinear corners (|edge x edge| < 1e-10).
-// It has no normal, so it is never hit.
+                        Crossings& out, Real min_t = kTriangleTolerance);
+// POV-Ray's degenerate triangle: its normal (P1 - P2) x (P3 - P2) has length exactly 0
+// (Triangle::Compute_Triangle, 3.7:source/backend/shape/triangle.cpp:314). It has no
+// normal, so it is never hit; a tiny triangle (edges of 1e-6) still is.
 inline bool degenerate_triangle(const Point3 p[3]) {
-    return length(cross(p[1] - p[0], p[2] - p[0])) < 1e-10;
+    return length(cross(p[0] - p[1], p[2] - p[1])) == 0;
 }
-void intersect_torus(const Torus& t, const Point3& o, const Vector3& dir, Crossings& out);
+// POV-Ray's degenerate polygon (Polygon::Compute_Polygon, 3.7:source/backend/shape/
+// polygon.cpp:672): no point after the first more than sqrt(EPSILON) = 1e-5 from it, or
+// none after that one also 1e-5 from the first and spanning a parallelogram of area over
+// 1e-5 with them. Polygons this small are never hit.
+bool degenerate_polygon(const Polygon& p);
+void intersect_torus(const Torus& t, const Point3& o, const Vector3& dir, Crossings& out,
+                     Real min_t = kTorusTolerance);
 // The torus's quartic along a ray: crossings are shift + the roots of c in (lo, hi].
 // False when the ray misses the bounding sphere. Shared by the tracer, the solver
 // benchmark and tests.
 struct TorusQuartic {
     Real c[5], lo, hi, shift;
 };
-bool torus_quartic(const Torus& t, const Point3& o, const Vector3& dir, TorusQuartic& q);
+bool torus_quartic(const Torus& t, const Point3& o, const Vector3& dir, TorusQuartic& q,
+                   Real min_t = kTorusTolerance);
 // Even-odd rule over all edges of the point list (sub-polygons closed by repeating their
 // first point, as POV-Ray writes them); the plane is the points' Newell plane.
 void intersect_polygon(const Polygon& p, const Point3& o, const Vector3& dir,
                        Crossings& out);
 Vector3 polygon_normal(const Polygon& p);
+
+// `x` rounded to single precision. Out of line on purpose: inlined into a Vector3 built
+// from three such values, GCC 12.2's SLP vectorizer at -O3 drops the round trip of two of
+// them (the double -> float -> double pair comes out unchanged).
+Real round_to_float(Real x);
+// A mesh vertex as POV-Ray stores it: single precision (SNGL_VECT, Mesh_Hash_Vertex).
+inline Point3 single_precision(const Point3& p) {
+    return {round_to_float(p.x), round_to_float(p.y), round_to_float(p.z)};
+}
 
 // Outward surface normal (object space, not normalised necessarily) at a crossing.
 Vector3 sphere_normal(const Sphere& s, const Point3& p);

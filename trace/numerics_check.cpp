@@ -14,7 +14,10 @@ namespace povwall::trace {
 
 NumericsReport check_numerics(const Scene& scene, int width, int height) {
     NumericsReport rep;
-    PreparedScene prepared(scene);
+    // The oracle's rules: exact bounds (POV-Ray's float box tests are not numerics).
+    PrepareOptions exact;
+    exact.pov_float_bounds = false;
+    PreparedScene prepared(scene, nullptr, exact);
     RayContext ctx;
     prepared.init_context(ctx);
     std::map<std::string, std::vector<double>> errors;

@@ -211,16 +211,19 @@ bool leaf_first(const Object& o, const LocalRay& r, Best& best) {
                 for (int i = 0; i < n; ++i) best.offer(roots[i], kTorusTolerance);
             } else if constexpr (std::is_same_v<T, Triangle> ||
                                  std::is_same_v<T, SmoothTriangle>) {
+                if (degenerate_triangle(s.p)) return;
                 V3 p[3] = {V3(s.p[0]), V3(s.p[1]), V3(s.p[2])};
                 triangle(p, r, best);
             } else if constexpr (std::is_same_v<T, Mesh>) {
+                // Single-precision vertices, as POV-Ray keeps them.
                 for (const auto& f : s.faces) {
-                    V3 p[3] = {V3(s.vertices[f.v[0]]), V3(s.vertices[f.v[1]]),
-                               V3(s.vertices[f.v[2]])};
+                    V3 p[3] = {V3(single_precision(s.vertices[f.v[0]])),
+                               V3(single_precision(s.vertices[f.v[1]])),
+                               V3(single_precision(s.vertices[f.v[2]]))};
                     triangle(p, r, best);
                 }
             } else if constexpr (std::is_same_v<T, Polygon>) {
-                if (s.points.size() < 3) return;
+                if (s.points.size() < 3 || degenerate_polygon(s)) return;
                 V3 n(polygon_normal(s));
                 HP nd = dot(n, r.d);
                 if (abs(nd) < eps) return;

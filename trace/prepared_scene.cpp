@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "octree/overlap.h"
 #include "octree/spatial_order.h"
@@ -65,35 +66,42 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
     if (!(len > 0)) return;
     Vector3 dn = local.direction / len;
     Crossings cs;
+    // The box works along the untouched direction: its crossings are world distances.
+    bool world_t = false;
     std::visit(
         [&](const auto& s) {
             using T = std::decay_t<decltype(s)>;
             if constexpr (std::is_same_v<T, Sphere>)
                 intersect_sphere(s, local.origin, dn, cs);
-            else if constexpr (std::is_same_v<T, Box>)
-                intersect_box(s, local.origin, dn, cs);
-            else if constexpr (std::is_same_v<T, Plane>)
-                intersect_plane(s, local.origin, dn, cs);
+            else if constexpr (std::is_same_v<T, Box>) {
+                intersect_box_pov(s, local.origin, local.direction, cs);
+                world_t = true;
+            } else if constexpr (std::is_same_v<T, Plane>)
+                intersect_plane(s, local.origin, dn, cs, kPlaneTolerance * len);
             else if constexpr (std::is_same_v<T, Cylinder>)
                 intersect_cylinder(s, local.origin, dn, cs);
             else if constexpr (std::is_same_v<T, Cone>)
                 intersect_cone(s, local.origin, dn, cs);
             else if constexpr (std::is_same_v<T, Torus>)
-                intersect_torus(s, local.origin, dn, cs);
+                intersect_torus(s, local.origin, dn, cs, kTorusTolerance * len);
             else if constexpr (std::is_same_v<T, Disc>)
-                intersect_disc(s, local.origin, dn, cs);
+                intersect_disc(s, local.origin, dn, cs, kPlaneTolerance * len);
             else if constexpr (std::is_same_v<T, Triangle>) {
                 if (!degenerate_triangle(s.p))
-                    intersect_triangle(s.p, local.origin, dn, cs);
+                    intersect_triangle(s.p, local.origin, dn, cs,
+                                       kTriangleTolerance * len);
             } else if constexpr (std::is_same_v<T, SmoothTriangle>) {
                 if (!degenerate_triangle(s.p))
-                    intersect_triangle(s.p, local.origin, dn, cs);
-            } else if constexpr (std::is_same_v<T, Polygon>)
-                intersect_polygon(s, local.origin, dn, cs);
+                    intersect_triangle(s.p, local.origin, dn, cs,
+                                       kTriangleTolerance * len);
+            } else if constexpr (std::is_same_v<T, Polygon>) {
+                if (!degenerate_polygon(s)) intersect_polygon(s, local.origin, dn, cs);
+            }
         },
         o.shape);
     for (int i = 0; i < cs.n; ++i) {
-        Point3 p = local.origin + dn * cs.c[i].t;
+        Point3 p = world_t ? local.origin + local.direction * cs.c[i].t
+                           : local.origin + dn * cs.c[i].t;
         Vector3 n;
         std::visit(
             [&](const auto& s) {
@@ -122,7 +130,7 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
             o.shape);
         n = normalize(o.transform.is_identity() ? n : o.transform.normal(n));
         if (o.inverse) n = -n;
-        out.push_back({cs.c[i].t / len, n, &o});
+        out.push_back({world_t ? cs.c[i].t : cs.c[i].t / len, n, &o});
     }
 }
 
@@ -178,8 +186,9 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             Real len = length(local.direction);
             Vector3 dn = local.direction / len;
             for (const auto& f : m->faces) {
-                Point3 p[3] = {m->vertices[f.v[0]], m->vertices[f.v[1]],
-                               m->vertices[f.v[2]]};
+                Point3 p[3] = {single_precision(m->vertices[f.v[0]]),
+                               single_precision(m->vertices[f.v[1]]),
+                               single_precision(m->vertices[f.v[2]])};
                 Crossings cs;
                 intersect_triangle(p, local.origin, dn, cs);
                 if (cs.n) {
@@ -227,6 +236,12 @@ Bounds3 object_bounds(const Object& o) {
             } else if constexpr (std::is_same_v<T, Torus>) {
                 Real a = s.major + s.minor;
                 local = {{-a, -s.minor, -a}, {a, s.minor, a}};
+                // A torus this thin gets POV-Ray's root elimination from afar
+                // (intersect.cpp): its crossings are the cubic's roots, off the surface
+                // but within about 1.3 (R + 2r) of the centre. Its bounds cover them, so
+                // that a black box holding it sees them too.
+                if (s.minor < 1e-3)
+                    local = {Vector3(-2 * (a + s.minor)), Vector3(2 * (a + s.minor))};
             } else if constexpr (std::is_same_v<T, Disc>) {
                 local = {s.centre - Vector3(s.radius), s.centre + Vector3(s.radius)};
             } else if constexpr (std::is_same_v<T, Triangle> ||
@@ -268,21 +283,6 @@ Bounds3 object_bounds(const Object& o) {
     return world;
 }
 
-// Rotation-and-uniform-scale check: such spheres stay spheres in world space.
-bool similarity(const Transform& t, Real& scale) {
-    const auto& m = t.forward().m;
-    Vector3 c0{m[0][0], m[1][0], m[2][0]}, c1{m[0][1], m[1][1], m[2][1]},
-        c2{m[0][2], m[1][2], m[2][2]};
-    Real s0 = dot(c0, c0), s1 = dot(c1, c1), s2 = dot(c2, c2);
-    Real tol = 1e-12 * std::max({s0, s1, s2});
-    if (std::fabs(s0 - s1) > tol || std::fabs(s0 - s2) > tol) return false;
-    if (std::fabs(dot(c0, c1)) > tol || std::fabs(dot(c0, c2)) > tol ||
-        std::fabs(dot(c1, c2)) > tol)
-        return false;
-    scale = std::sqrt(s0);
-    return true;
-}
-
 size_t count_leaves(const Object& o) {
     size_t n = 1;
     if (auto c = std::get_if<Csg>(&o.shape)) {
@@ -299,7 +299,9 @@ bool inside_mesh(const Mesh& m, const Point3& q) {
     const Vector3 dir = normalize(*m.inside_vector);
     int crossed = 0;
     for (const auto& f : m.faces) {
-        Point3 p[3] = {m.vertices[f.v[0]], m.vertices[f.v[1]], m.vertices[f.v[2]]};
+        Point3 p[3] = {single_precision(m.vertices[f.v[0]]),
+                       single_precision(m.vertices[f.v[1]]),
+                       single_precision(m.vertices[f.v[2]])};
         Crossings cs;
         intersect_triangle(p, q, dir, cs);
         crossed += cs.n;
@@ -379,8 +381,9 @@ Bounds3 object_hit_bounds(const Object& obj) {
     return b;
 }
 
-PreparedScene::PreparedScene(const Scene& scene, const RenderPlan* plan)
-    : scene_(scene), plan_(plan ? *plan : make_render_plan(scene)) {
+PreparedScene::PreparedScene(const Scene& scene, const RenderPlan* plan,
+                             const PrepareOptions& options)
+    : scene_(scene), plan_(plan ? *plan : make_render_plan(scene)), options_(options) {
     std::vector<const Object*> all;
     for (const Object& o : scene.objects) all.push_back(&o);
     build(all);
@@ -388,8 +391,8 @@ PreparedScene::PreparedScene(const Scene& scene, const RenderPlan* plan)
 
 PreparedScene::PreparedScene(const Scene& scene,
                              const std::vector<uint32_t>& object_subset,
-                             const RenderPlan* plan)
-    : scene_(scene), plan_(plan ? *plan : make_render_plan(scene)) {
+                             const RenderPlan* plan, const PrepareOptions& options)
+    : scene_(scene), plan_(plan ? *plan : make_render_plan(scene)), options_(options) {
     std::vector<const Object*> some;
     for (uint32_t i : object_subset) some.push_back(&scene.objects[i]);
     build(some);
@@ -400,6 +403,9 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     env_.noise_generator = scene.settings.noise_generator;
     env_.number_of_waves = scene.settings.number_of_waves;
     env_.quick_colours = plan_.quality.quick_colours();
+    pov_slab_tree_ =
+        options_.pov_float_bounds && pov_frame_objects(scene) >= kPovBoundingThreshold;
+    pov_root_tested_ = pov_slab_tree_ && pov_slab_root(scene, pov_root_);
     size_t leaves = 0;
     for (const Object* o : objects) leaves += count_leaves(*o);
     for (const Light& l : scene.lights) {
@@ -458,6 +464,7 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     };
     octree::BuildOptions build_options;
     build_options.flat_threshold = plan_.flat_threshold;
+    build_options.threads = options_.threads;
     // Spheres are tested four or eight at a time (sphere_lanes.h), about three times
     // cheaper than one by one, so a node step is worth more tests: on the seed scene 12
     // and 16 were both about 7% faster than the default 8 (docs/performance.md).
@@ -470,23 +477,29 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     std::vector<PrimKind> kind;
     std::vector<uint32_t> index, material;
     std::vector<Bounds3> bounds;
+    // pov_ holds the non-spheres in the order they were added: their rank among them.
+    std::vector<uint32_t> pov_rank(kind_.size(), 0);
+    for (uint32_t id = 0, r = 0; id < kind_.size(); ++id) {
+        if (kind_[id] != PrimKind::Sphere) pov_rank[id] = r++;
+    }
+    std::vector<PovPrim> pov;
     kind.reserve(kind_.size());
     index.reserve(kind_.size());
     material.reserve(kind_.size());
     bounds.reserve(kind_.size());
-    for (uint32_t id : bounded_ids) {
+    pov.reserve(pov_.size());
+    auto move_primitive = [&](uint32_t id) {
         kind.push_back(kind_[id]);
         index.push_back(index_[id]);
         material.push_back(material_[id]);
         bounds.push_back(bounds_[id]);
-    }
+        if (kind_[id] != PrimKind::Sphere) pov.push_back(pov_[pov_rank[id]]);
+    };
+    for (uint32_t id : bounded_ids) move_primitive(id);
     std::vector<uint32_t> unbounded;
     for (uint32_t id : unbounded_) {
         unbounded.push_back(uint32_t(kind.size()));
-        kind.push_back(kind_[id]);
-        index.push_back(index_[id]);
-        material.push_back(material_[id]);
-        bounds.push_back(bounds_[id]);
+        move_primitive(id);
     }
     // Spheres re-packed in primitive order: spheres_[id] for id < sphere_count_.
     std::vector<SpherePrim> spheres;
@@ -501,6 +514,7 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     index_ = std::move(index);
     material_ = std::move(material);
     bounds_ = std::move(bounds);
+    pov_ = std::move(pov);
     unbounded_ = std::move(unbounded);
     lanes_.build(tree_.ids(), spheres_.data(), sphere_count_);
     // A box's resident scene is what it keeps: drop the growth slack of push_back.
@@ -509,6 +523,7 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     planes_.shrink_to_fit();
     objects_.shrink_to_fit();
     leaf_materials_.shrink_to_fit();
+    pov_.shrink_to_fit();
 }
 
 size_t PreparedScene::resident_bytes() const {
@@ -517,7 +532,8 @@ size_t PreparedScene::resident_bytes() const {
     return sizeof(*this) + bytes(materials_) + bytes(kind_) + bytes(index_) +
            bytes(material_) + bytes(bounds_) + bytes(spheres_) + bytes(triangles_) +
            bytes(planes_) + bytes(objects_) + bytes(unbounded_) + bytes(leaf_materials_) +
-           lanes_.bytes() + size_t(ts.nodes) * sizeof(octree::Octree::Node) +
+           bytes(pov_) + lanes_.bytes() +
+           size_t(ts.nodes) * sizeof(octree::Octree::Node) +
            ts.references * sizeof(uint32_t) +
            (ts.dense_top > 0 ? (size_t(1) << (3 * ts.dense_top)) : 0) *
                sizeof(octree::Octree::Node);
@@ -570,15 +586,17 @@ void PreparedScene::add_object(const Object& o, const Material*) {
         for (const Object& c : csg->children) add_object(c, nullptr);
         return;
     }
-    auto push = [&](PrimKind k, uint32_t index, uint32_t material, const Bounds3& b) {
+    auto push = [&](PrimKind k, uint32_t index, uint32_t material, const Bounds3& b,
+                    const PovPrim& pov = {}) {
         kind_.push_back(k);
         index_.push_back(index);
         material_.push_back(material);
         bounds_.push_back(b);
+        if (k != PrimKind::Sphere) pov_.push_back(pov);
     };
     Real scale = 1;
     if (auto s = std::get_if<Sphere>(&o.shape);
-        s && !o.inverse && o.clipped_by->empty() && similarity(o.transform, scale)) {
+        s && !o.inverse && o.clipped_by->empty() && is_similarity(o.transform, scale)) {
         Point3 c = o.transform.point(s->centre);
         Real r = s->radius * scale;
         uint32_t index = uint32_t(spheres_.size());
@@ -587,7 +605,7 @@ void PreparedScene::add_object(const Object& o, const Material*) {
         return;
     }
     if (auto pl = std::get_if<Plane>(&o.shape);
-        pl && !o.inverse && o.clipped_by->empty() && similarity(o.transform, scale)) {
+        pl && !o.inverse && o.clipped_by->empty() && is_similarity(o.transform, scale)) {
         // Ground planes are tested by every ray: keep them out of the general object
         // path.
         Vector3 n = normalize(o.transform.normal(pl->normal));
@@ -606,11 +624,14 @@ void PreparedScene::add_object(const Object& o, const Material*) {
             materials_.push_back(material_of(o, t));
             face_materials.push_back(uint32_t(materials_.size()) - 1);
         }
+        // POV-Ray tests the mesh's box, then the triangle's in the mesh's tree.
+        const PovPrim mesh_pov = pov_prim(o, kPovMeshTriangle);
         for (const auto& f : m->faces) {
             TrianglePrim tri;
             Bounds3 b;
             for (int k = 0; k < 3; ++k) {
-                tri.p[k] = o.transform.point(m->vertices[f.v[k]]);
+                // POV-Ray keeps a mesh's vertices in single precision.
+                tri.p[k] = o.transform.point(single_precision(m->vertices[f.v[k]]));
                 b.extend(tri.p[k]);
                 if (f.n[k] >= 0 && size_t(f.n[k]) < m->normals.size()) {
                     tri.n[k] = normalize(o.transform.normal(m->normals[f.n[k]]));
@@ -621,7 +642,7 @@ void PreparedScene::add_object(const Object& o, const Material*) {
                                ? face_materials[f.texture]
                                : base;
             triangles_.push_back(tri);
-            push(PrimKind::Triangle, uint32_t(triangles_.size()) - 1, mat, b);
+            push(PrimKind::Triangle, uint32_t(triangles_.size()) - 1, mat, b, mesh_pov);
         }
         return;
     }
@@ -641,7 +662,53 @@ void PreparedScene::add_object(const Object& o, const Material*) {
         mat = add_material(o);
     }
     objects_.push_back(&o);
-    push(PrimKind::Object, uint32_t(objects_.size()) - 1, mat, object_bounds(o));
+    push(PrimKind::Object, uint32_t(objects_.size()) - 1, mat, object_bounds(o),
+         pov_prim(o));
+}
+
+PreparedScene::PovPrim PreparedScene::pov_prim(const Object& o, uint8_t extra) const {
+    PovPrim p;
+    if (!options_.pov_float_bounds) return p;
+    p.box = pov_object_bbox(o);
+    p.tests = extra;
+    if (pov_slab_tree_ && pov_bbox_finite(p.box)) p.tests |= kPovSlabTree;
+    if (pov_tests_own_bbox(o)) p.tests |= kPovOwnBox;
+    return p;
+}
+
+bool PreparedScene::pov_accepts(uint32_t id, const Ray& ray) const {
+    if (id < sphere_count_) {
+        if (!pov_slab_tree_) return true;
+        const SpherePrim& s = spheres_[id];
+        const PovRay r(ray);
+        return (!pov_root_tested_ || slab_tree_accepts(pov_root_, r)) &&
+               slab_tree_accepts(pov_sphere_bbox({s.x, s.y, s.z}, s.r), r);
+    }
+    const PovPrim& p = pov_[id - sphere_count_];
+    if (!p.tests) return true;
+    const PovRay r(ray);
+    if ((p.tests & kPovSlabTree) && pov_root_tested_ && !slab_tree_accepts(pov_root_, r))
+        return false;
+    if ((p.tests & kPovSlabTree) && !slab_tree_accepts(p.box, r)) return false;
+    if ((p.tests & kPovOwnBox) &&
+        !own_bbox_accepts(p.box, r, float(kMinIsectDepth),
+                          std::numeric_limits<float>::infinity()))
+        return false;
+    if (p.tests & kPovMeshTriangle) {
+        // The triangle's box in the mesh's tree, met by the ray in the mesh's space.
+        const Object& mesh = *materials_[material_[id]].object;
+        const TrianglePrim& t = triangles_[index_[id]];
+        Point3 local[3];
+        for (int k = 0; k < 3; ++k)
+            local[k] = mesh.transform.is_identity()
+                           ? t.p[k]
+                           : mesh.transform.inverse_point(t.p[k]);
+        const Ray in_mesh =
+            mesh.transform.is_identity() ? ray : mesh.transform.inverse_ray(ray);
+        if (!slab_tree_accepts(pov_mesh_triangle_bbox(local), PovRay(in_mesh)))
+            return false;
+    }
+    return true;
 }
 
 inline Real sphere_distance(const PreparedScene::SpherePrim& sp, const Ray& ray,
@@ -662,7 +729,7 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
         case PrimKind::Sphere: {
             // Spheres are primitives 0 .. sphere_count_ - 1: spheres_[id] is this one.
             const Real t = sphere_distance(spheres_[id], ray, lo);
-            if (!(t < t_max)) return false;
+            if (!(t < t_max) || !pov_accepts(id, ray)) return false;
             fill_sphere_hit(id, ray, t, hit);
             return true;
         }
@@ -710,6 +777,7 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
             Crossings cs;
             intersect_triangle(tri.p, ray.origin, ray.direction, cs);
             if (!cs.n || cs.c[0].t < lo || cs.c[0].t >= t_max) return false;
+            if (!pov_accepts(id, ray)) return false;
             hit.t = cs.c[0].t;
             hit.prim = id;
             hit.point = ray.at(hit.t);
@@ -729,7 +797,7 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
             for (const auto& c : crossings) {
                 if (c.t >= lo && c.t < t_max && (!best || c.t < best->t)) best = &c;
             }
-            if (!best) return false;
+            if (!best || !pov_accepts(id, ray)) return false;
             hit.t = best->t;
             hit.prim = id;
             hit.point = ray.at(best->t);
@@ -788,7 +856,9 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
         ++ctx.tests;
         if (id < sphere_count_) {
             const Real t = sphere_distance(spheres_[id], ray, lo);
-            if (!(t < limit) || hidden(materials_[material_[id]])) return;
+            if (!(t < limit) || hidden(materials_[material_[id]]) ||
+                !pov_accepts(id, ray))
+                return;
             limit = nearest_t = t;
             nearest_sphere = id;
             found = true;
@@ -811,7 +881,8 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
             // mailbox check).
             const size_t spheres = leading_spheres(ids, n, sphere_count_);
             for_sphere_hits(ids, spheres, ray, lo, tmax, ctx, [&](uint32_t id, Real t) {
-                if (hidden(materials_[material_[id]])) return false;
+                if (hidden(materials_[material_[id]]) || !pov_accepts(id, ray))
+                    return false;
                 tmax = nearest_t = t;
                 nearest_sphere = id;
                 found = true;
@@ -839,7 +910,9 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
     auto meets = [&](uint32_t id) {
         ++ctx.tests;
         if (id < sphere_count_) {
-            if (!(sphere_distance(spheres_[id], ray, lo) < t_max)) return 0;
+            if (!(sphere_distance(spheres_[id], ray, lo) < t_max) ||
+                !pov_accepts(id, ray))
+                return 0;
             return caster(materials_[material_[id]]);
         }
         Hit h;
@@ -869,7 +942,8 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
             const size_t spheres = leading_spheres(ids, n, sphere_count_);
             if (for_sphere_hits(ids, spheres, ray, lo, t_max, ctx,
                                 [&](uint32_t id, Real) {
-                                    return blocks(id, caster(materials_[material_[id]]));
+                                    return pov_accepts(id, ray) &&
+                                           blocks(id, caster(materials_[material_[id]]));
                                 }))
                 return blocked = true;
             for (size_t i = spheres; i < n; ++i) {

@@ -8,6 +8,7 @@
 #include "core/scene.h"
 #include "octree/octree.h"
 #include "trace/pattern.h"
+#include "trace/pov_bounds.h"
 #include "trace/render_plan.h"
 #include "trace/sphere_lanes.h"
 
@@ -77,15 +78,25 @@ struct RayContext {
     std::vector<uint32_t> last_blocker;
 };
 
+// How a scene is prepared, beside what its plan leaves out.
+struct PrepareOptions {
+    // Threads building the octree (0: every core): the render's --threads.
+    int threads = 0;
+    // POV-Ray's single-precision bounding-box tests (trace/pov_bounds.h) on every hit:
+    // POV-Ray's image. Off: exact bounds, the rules the numerics oracle applies.
+    bool pov_float_bounds = true;
+};
+
 class PreparedScene {
   public:
     // `plan`: what the scene leaves out (null: make_render_plan(scene)).
-    explicit PreparedScene(const Scene& scene, const RenderPlan* plan = nullptr);
+    explicit PreparedScene(const Scene& scene, const RenderPlan* plan = nullptr,
+                           const PrepareOptions& options = {});
     // Only the given top-level objects (indices into scene.objects) and light looks_like
     // objects: the local scene of a black box. Materials still point into `scene`, so
     // object identity (interior stacks) is the same in every box.
     PreparedScene(const Scene& scene, const std::vector<uint32_t>& object_subset,
-                  const RenderPlan* plan = nullptr);
+                  const RenderPlan* plan = nullptr, const PrepareOptions& options = {});
 
     const Scene& scene() const { return scene_; }
     const octree::Octree& tree() const { return tree_; }
@@ -123,6 +134,16 @@ class PreparedScene {
     uint32_t add_material(const Object& obj);
     bool test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max,
                         Hit& hit) const;
+    // POV-Ray's float bounding-box tests of primitive `id` (trace/pov_bounds.h): false
+    // when POV-Ray would not intersect it with this ray at all. Asked only of hits.
+    bool pov_accepts(uint32_t id, const Ray& ray) const;
+    // The tests a primitive's POV-Ray object gets, and its box.
+    enum : uint8_t { kPovSlabTree = 1, kPovOwnBox = 2, kPovMeshTriangle = 4 };
+    struct PovPrim {
+        PovBBox box;
+        uint8_t tests = 0;
+    };
+    PovPrim pov_prim(const Object& o, uint8_t extra = 0) const;
     // Calls on_hit(id, t), in leaf order, for each of the first `spheres` ids of a leaf
     // whose sphere is hit at t < below (`below` is read again before each call: it may
     // shrink) until on_hit returns true; returns whether it did.
@@ -136,6 +157,16 @@ class PreparedScene {
 
     const Scene& scene_;
     RenderPlan plan_;
+    PrepareOptions options_;
+    // POV-Ray would build its bounding-slab tree (enough frame-level objects), so every
+    // finite object's box is tested in float.
+    bool pov_slab_tree_ = false;
+    // ... and tests its root box first (a scene without infinite objects).
+    bool pov_root_tested_ = false;
+    PovBBox pov_root_;
+    // Per non-sphere primitive, in the order added until build() ends, then by id -
+    // sphere_count_: spheres' boxes are computed from spheres_ when needed.
+    std::vector<PovPrim> pov_;
     PatternEnv env_;
     bool alpha_background_ = false;
     std::vector<Material> materials_;  // reserved up front: pointers stay valid

@@ -74,7 +74,9 @@ Image render_scene(const Scene& scene, const RenderSettings& settings,
     auto t0 = Clock::now();
     const RenderPlan plan =
         make_render_plan(scene, settings.plan_everything_on, settings.quality);
-    PreparedScene prepared(scene, &plan);
+    PrepareOptions prepare;
+    prepare.threads = settings.threads;
+    PreparedScene prepared(scene, &plan, prepare);
     prepared.set_alpha_background(settings.alpha);
     const CameraInteriors camera_interiors(scene);
     auto t1 = Clock::now();

@@ -60,6 +60,28 @@ int solve_cubic_real(Real a, Real b, Real c, Real roots[3]) {
     return 1;
 }
 
+}  // namespace
+
+int solve_cubic(Real a, Real b, Real c, Real roots[3]) {
+    const Real q = (a * a - 3 * b) / 9, r = (2 * a * a * a - 9 * a * b + 27 * c) / 54;
+    const Real q3 = q * q * q;
+    if (q3 - r * r >= 0) {
+        if (!(q3 > 0)) return 0;
+        const Real th = std::acos(std::clamp(r / std::sqrt(q3), -1.0, 1.0)) / 3;
+        const Real s = -2 * std::sqrt(q);
+        roots[0] = s * std::cos(th) - a / 3;
+        roots[1] = s * std::cos(th + 2 * kPi / 3) - a / 3;
+        roots[2] = s * std::cos(th + 4 * kPi / 3) - a / 3;
+        return 3;
+    }
+    Real big = std::cbrt(std::sqrt(r * r - q3) + std::fabs(r));
+    const Real one = big + (big != 0 ? q / big : 0);
+    roots[0] = (r < 0 ? one : -one) - a / 3;
+    return 1;
+}
+
+namespace {
+
 Real eval4(const Real c[5], Real x) {
     return (((c[4] * x + c[3]) * x + c[2]) * x + c[1]) * x + c[0];
 }

@@ -12,6 +12,12 @@ int solve_quadratic(Real a, Real b, Real c, Real roots[2]);
 // The textbook (-b ± sqrt(disc)) / 2a, kept only as the baseline of the accuracy table.
 int solve_quadratic_naive(Real a, Real b, Real c, Real roots[2]);
 
+// Real roots of x^3 + a x^2 + b x + c by the trigonometric / Cardano closed form,
+// unsorted: three when r^2 <= q^3 (q = (a^2 - 3b)/9, r = (2a^3 - 9ab + 27c)/54), else
+// one; none when q = r = 0 (the closed form's 0/0). The split POV-Ray's cubic solver
+// makes, so a cubic it solves has as many roots here.
+int solve_cubic(Real a, Real b, Real c, Real roots[3]);
+
 // Quartics: c[i] is the coefficient of x^i, c[4] != 0. Real roots, ascending.
 // Ferrari's closed form through the resolvent cubic, then per root Newton steps while
 // they lower the residual: plain Horner, or compensated Horner (residual as in

@@ -11,7 +11,7 @@ TileRenderer::TileRenderer(const Scene& scene, const RenderSettings& settings)
     : scene_(scene),
       settings_(settings),
       plan_(make_render_plan(scene, settings.plan_everything_on, settings.quality)),
-      prepared_(scene, &plan_),
+      prepared_(scene, &plan_, PrepareOptions{settings.threads, true}),
       camera_interiors_(scene),
       tracer_(prepared_) {
     prepared_.set_alpha_background(settings.alpha);

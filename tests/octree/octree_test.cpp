@@ -539,6 +539,155 @@ TEST(Octree, UnboundedAndEmptyBoundsAreLeftOut) {
     EXPECT_EQ(tree.bounds().hi.x, 1);
 }
 
+// Thin boxes standing for triangles (bounds only, no exact test): `kinds` different ones
+// in a 10-unit cluster, each repeated `copies` times at identical bounds, as a model of
+// one part placed many times at one transform.
+BuildInput copied_slabs(int kinds, int copies, std::vector<Bounds3>& shapes) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<Real> pos(-5, 5), size(0.5, 4);
+    shapes.clear();
+    for (int k = 0; k < kinds; ++k) {
+        Point3 lo{pos(rng), pos(rng), pos(rng)};
+        Vector3 d{size(rng), size(rng), size(rng)};
+        d[k % 3] = 1e-3;  // flat along one axis
+        shapes.push_back({lo, lo + d});
+    }
+    BuildInput in;
+    for (int c = 0; c < copies; ++c)
+        for (int k = 0; k < kinds; ++k) in.bounds.push_back(shapes[size_t(k)]);
+    return in;
+}
+
+Real hit_box(const Bounds3& b, const Ray& ray) {
+    Real t0 = 1e-9, t1 = kInfinity;
+    for (int a = 0; a < 3; ++a) {
+        if (ray.direction[a] == 0) {
+            if (ray.origin[a] < b.lo[a] || ray.origin[a] > b.hi[a]) return kInfinity;
+            continue;
+        }
+        Real u = (b.lo[a] - ray.origin[a]) / ray.direction[a];
+        Real v = (b.hi[a] - ray.origin[a]) / ray.direction[a];
+        if (u > v) std::swap(u, v);
+        t0 = std::max(t0, u);
+        t1 = std::min(t1, v);
+    }
+    return t0 <= t1 ? t0 : kInfinity;
+}
+
+// 150 copies of 40 parts (the bricks of scenes/stress/coincident_bricks.pov in small):
+// cells stop splitting once they hold copies of at most leaf_primitives parts, so the
+// tree stays shallow and its references a small multiple of the primitives. Before,
+// splitting went on around every part's edges to the deepest level.
+TEST(OctreeBounded, CopiesAtOneTransformStopSplitting) {
+    std::vector<Bounds3> shapes;
+    BuildInput in = copied_slabs(40, 150, shapes);
+    BuildOptions one;
+    one.threads = 1;
+    Octree tree;
+    tree.build(in, one);
+    const BuildStats& s = tree.stats();
+    EXPECT_GT(s.inseparable_leaves, 0u);
+    EXPECT_EQ(s.budget_leaves, 0u);
+    EXPECT_EQ(s.threads, 1);
+    EXPECT_LE(s.depth, 4);
+    EXPECT_LE(s.references, 8 * in.bounds.size());
+    // Copies of one part sit in the same leaves: the tree for 150 copies has the shape of
+    // the tree for 3.
+    BuildInput few = copied_slabs(40, 3, shapes);
+    Octree small;
+    small.build(few, one);
+    EXPECT_EQ(small.stats().nodes, s.nodes);
+    EXPECT_EQ(small.stats().references * 50, s.references);
+    // Still exact: closest hits equal brute force.
+    std::mt19937 rng(3);
+    Mailbox mb;
+    mb.resize(in.bounds.size());
+    int tests = 0, hits = 0;
+    bool ordered = true;
+    for (int n = 0; n < 2000; ++n) {
+        Ray ray = random_ray(rng, 6, n);
+        Real brute = kInfinity;
+        for (const Bounds3& b : shapes) brute = std::min(brute, hit_box(b, ray));
+        Real best = octree_closest(
+            tree, ray, mb, [&](uint32_t id) { return hit_box(in.bounds[id], ray); },
+            &tests, &ordered);
+        ASSERT_EQ(best, brute) << "ray " << n;
+        hits += best < kInfinity;
+    }
+    EXPECT_TRUE(ordered);
+    EXPECT_GT(hits, 150);
+}
+
+// Two quads of two triangles each share their bounds in pairs: pairs are not copies (the
+// exact test separates them), so such cells still split.
+TEST(OctreeBounded, PairsWithEqualBoundsStillSplit) {
+    std::vector<Bounds3> shapes;
+    BuildInput in = copied_slabs(300, 2, shapes);
+    Octree tree;
+    tree.build(in);
+    EXPECT_EQ(tree.stats().inseparable_leaves, 0u);
+    EXPECT_GE(tree.stats().depth, 2);
+}
+
+// 40 nested boxes in the low octant of the scene (a box at the far corner makes the
+// scene): in that octant's cell they fill exactly the two low-x, low-y children. The area
+// estimate says splitting pays (each box in 2 of 8 children), but both children would get
+// all 40: the cell stays a leaf (before: two leaves of 40, 80 references).
+TEST(OctreeBounded, SplitsThatCopyEverythingAreNotTaken) {
+    BuildInput in;
+    for (int i = 0; i < 40; ++i) {
+        const Real e = 1e-3 * i;
+        in.bounds.push_back({{-1, -1, -1}, {-0.51 - e, -0.51 - e, -0.001 - e}});
+    }
+    in.bounds.push_back({{0.9, 0.9, 0.9}, {1, 1, 1}});
+    Octree tree;
+    tree.build(in);
+    const BuildStats& s = tree.stats();
+    EXPECT_EQ(s.inseparable_leaves, 1u);
+    EXPECT_EQ(s.leaves, 8);
+    EXPECT_EQ(s.references, 41u);
+}
+
+// The budget of references is a hard cap: one reference per primitive and no slack leaves
+// overlapping spheres unsplit where copying them would exceed it, and hits stay exact.
+TEST(OctreeBounded, ReferenceBudgetCapsTheTree) {
+    std::mt19937 rng(4);
+    std::vector<Sphere> spheres = random_spheres(4000, 10, rng);
+    BuildOptions tight;
+    tight.max_references_per_primitive = 1.2;
+    tight.reference_slack = 0;
+    tight.threads = 1;
+    Octree tree = build_spheres(spheres, tight);
+    EXPECT_GT(tree.stats().budget_leaves, 0u);
+    EXPECT_LE(tree.stats().references, uint64_t(1.2 * 4000));
+    Octree free = build_spheres(spheres, BuildOptions{});
+    EXPECT_GT(free.stats().references, uint64_t(1.2 * 4000));
+    Mailbox mb;
+    mb.resize(spheres.size());
+    int tests = 0;
+    bool ordered = true;
+    for (int n = 0; n < 2000; ++n) {
+        Ray ray = random_ray(rng, 10, n);
+        Real brute = kInfinity;
+        for (const auto& sp : spheres) brute = std::min(brute, hit_sphere(sp, ray));
+        ASSERT_EQ(
+            octree_closest(
+                tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); },
+                &tests, &ordered),
+            brute);
+    }
+}
+
+TEST(OctreeBounded, BuildThreadsAsAsked) {
+    std::mt19937 rng(9);
+    std::vector<Sphere> spheres = random_spheres(6000, 10, rng);
+    BuildOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    EXPECT_EQ(build_spheres(spheres, one).stats().threads, 1);
+    EXPECT_EQ(build_spheres(spheres, two).stats().threads, 2);
+}
+
 TEST(Mailbox, FirstVisitPerRay) {
     Mailbox m;
     m.resize(4);

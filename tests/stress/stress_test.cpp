@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +15,7 @@
 #include "distrib/space_render.h"
 #include "parser/parser.h"
 #include "trace/numerics_check.h"
+#include "trace/prepared_scene.h"
 #include "trace/render.h"
 
 namespace povwall {
@@ -97,6 +99,47 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Stress, ::testing::ValuesIn(kCases),
                              return std::string(param_info.param.name);
                          });
 
+// 162 copies of one brick at one transform (scenes/stress/coincident_bricks.pov): the
+// octree cannot separate them and must stop splitting where copies meet (the build used
+// to run past 300 s and 2.7 GB). On one build thread as asked, in well under a second,
+// with a bounded number of references; and the image is the one of a single brick.
+TEST(StressOctree, CoincidentCopiesBuildBoundedAndRenderAsOne) {
+    Scene scene = load("coincident_bricks");
+    ASSERT_EQ(scene.objects.size(), 163u);  // the plane and 162 bricks
+    trace::PrepareOptions one_thread;
+    one_thread.threads = 1;
+    const auto start = std::chrono::steady_clock::now();
+    trace::PreparedScene prepared(scene, nullptr, one_thread);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const octree::BuildStats& st = prepared.tree().stats();
+    // 162 x (98 triangles + 6 cylinders + 5 discs) bounded, the plane unbounded.
+    EXPECT_EQ(prepared.tree().primitive_count(), 162u * 109u);
+    EXPECT_EQ(st.threads, 1);
+    EXPECT_LT(seconds, 5.0);
+    EXPECT_GT(st.inseparable_leaves, 0u);
+    EXPECT_EQ(st.budget_leaves, 0u);
+    // Leaves hold every copy of at most leaf_primitives parts: the references grow with
+    // the copies, not with the depth (8.55 per primitive, as for 8 copies).
+    EXPECT_LE(st.references, 10 * prepared.tree().primitive_count());
+    EXPECT_LE(st.depth, 4);
+    EXPECT_LE(prepared.resident_bytes(), size_t(16) << 20);
+
+    Scene single = scene;
+    single.objects.resize(2);
+    trace::RenderSettings rs;
+    rs.width = kW;
+    rs.height = kH;
+    rs.threads = 1;
+    Image many = trace::render_scene(scene, rs);
+    Image one = trace::render_scene(single, rs);
+    ASSERT_EQ(many.rgba.size(), one.rgba.size());
+    size_t lit = 0;
+    for (size_t i = 0; i < one.rgba.size(); i += 4) lit += one.rgba[i] > 0.3f;
+    EXPECT_GT(lit, size_t(kW * kH / 10));  // the brick fills part of the image
+    EXPECT_EQ(many.rgba, one.rgba);
+}
+
 TEST(StressErrors, ScaleByZeroIsALocatedError) {
     try {
         load("singular_scale");
@@ -129,9 +172,11 @@ TEST(StressErrors, SingularMatrixIsALocatedError) {
 }
 
 // POV-Ray 3.7 loses every object 1e6-1e7 from the origin with sizes ~1e-3 (its image is
-// all background); on each pixel where the two images differ, the oracle confirms
-// povwall's hit.
-TEST(StressPovray, FarCoordinatesOracleSidesWithPovwall) {
+// all background): their single-precision bounding boxes are a float spacing (0.25 at
+// 3e6) off the objects, and the rays meet them in float too. povwall applies the same
+// rule (trace/pov_bounds.h), so the two images agree; the numerics check above still
+// compares every shape against the oracle with exact bounds.
+TEST(StressPovray, FarCoordinatesVanishAsInPovray) {
     if (std::system("command -v povray > /dev/null 2>&1") != 0)
         GTEST_SKIP() << "no povray";
     std::string cmd = std::string(POVWALL_BINARY) + " check-numerics " +
@@ -144,10 +189,10 @@ TEST(StressPovray, FarCoordinatesOracleSidesWithPovwall) {
     while (size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
     ASSERT_EQ(WEXITSTATUS(pclose(p)), 0) << out;
     auto j = nlohmann::json::parse(out);
-    EXPECT_GT(j["povray"]["differing_pixels"].get<int>(), 100);
-    EXPECT_EQ(j["povray"]["oracle_contradicts_povwall_first_hit"].get<int>(), 0);
-    EXPECT_EQ(j["povray"]["oracle_agrees_with_povwall_first_hit"],
-              j["povray"]["differing_pixels"]);
+    EXPECT_EQ(j["povray"]["differing_pixels"].get<int>(), 0);
+    // With exact bounds every shape kind is met (the oracle's comparison ran).
+    for (const char* kind : {"sphere", "box", "torus", "cylinder", "triangle"})
+        EXPECT_GT(j["kinds"][kind]["compared"].get<int>(), 0) << kind;
 }
 
 }  // namespace

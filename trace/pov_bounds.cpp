@@ -1,0 +1,430 @@
+#include "trace/pov_bounds.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "trace/intersect.h"
+
+namespace povwall::trace {
+
+PovBBox pov_bbox(const Bounds3& b) {
+    PovBBox r;
+    for (int a = 0; a < 3; ++a) {
+        r.lo[a] = float(b.lo[a]);
+        r.len[a] = float(b.hi[a] - b.lo[a]);
+    }
+    return r;
+}
+
+Bounds3 pov_bbox_bounds(const PovBBox& b) {
+    Bounds3 r;
+    for (int a = 0; a < 3; ++a) {
+        r.lo[a] = Real(b.lo[a]);
+        r.hi[a] = Real(b.lo[a]) + Real(b.len[a]);
+    }
+    return r;
+}
+
+bool pov_bbox_finite(const PovBBox& b) {
+    const Real volume = Real(b.len[0]) * Real(b.len[1]) * Real(b.len[2]);
+    return volume <= kBoundHuge;
+}
+
+PovRay::PovRay(const Ray& ray) {
+    const Real len = length(ray.direction);
+    const Vector3 d = len == 1 ? ray.direction : ray.direction / len;
+    for (int a = 0; a < 3; ++a) {
+        origin[a] = float(ray.origin[a]);
+        nonzero[a] = d[a] != 0;
+        inv[a] = float(1.0 / d[a]);  // +-inf along a zero component, as POV-Ray's invdir
+    }
+}
+
+bool slab_tree_accepts(const PovBBox& box, const PovRay& ray) {
+    // The entry and exit distances of one axis: the near corner's distance in float, the
+    // far one that plus the length's (a float product) in double.
+    auto slab = [&](int a, Real& enter, Real& leave) {
+        const float base = (box.lo[a] - ray.origin[a]) * ray.inv[a];
+        const Real other = Real(base) + Real(box.len[a] * ray.inv[a]);
+        if (ray.inv[a] > 0) {
+            enter = base;
+            leave = other;
+        } else {
+            leave = base;
+            enter = other;
+        }
+    };
+    auto outside = [&](int a) {
+        return ray.origin[a] < box.lo[a] || ray.origin[a] > box.len[a] + box.lo[a];
+    };
+    Real lo = -kBoundHuge, hi = kBoundHuge;
+    // x opens the interval; a box behind the origin or an empty slab ends the test.
+    if (ray.nonzero[0]) {
+        slab(0, lo, hi);
+        if (hi < kPovEpsilon || lo > hi) return false;
+    } else if (outside(0)) {
+        return false;
+    }
+    // y and z narrow it, each bound replaced only when the new one is tighter (so a NaN
+    // slab changes nothing, as in POV-Ray).
+    for (int a = 1; a < 3; ++a) {
+        if (!ray.nonzero[a]) {
+            if (outside(a)) return false;
+            continue;
+        }
+        Real enter, leave;
+        slab(a, enter, leave);
+        if (leave < hi) {
+            if (leave < kPovEpsilon) return false;
+            if (enter > lo) {
+                if (enter > leave) return false;
+                lo = enter;
+            } else if (lo > leave) {
+                return false;
+            }
+            hi = leave;
+        } else if (enter > lo) {
+            if (enter > hi) return false;
+            lo = enter;
+        }
+    }
+    return true;
+}
+
+bool own_bbox_accepts(const PovBBox& box, const PovRay& ray, float mind, float maxd) {
+    float lo = 0, hi = 0;
+    for (int a = 0; a < 3; ++a) {
+        const float lower = box.lo[a], upper = box.lo[a] + box.len[a];
+        const bool back = ray.inv[a] < 0;
+        const float enter = ((back ? upper : lower) - ray.origin[a]) * ray.inv[a];
+        const float leave = ((back ? lower : upper) - ray.origin[a]) * ray.inv[a];
+        if (a == 0) {
+            lo = enter;
+            hi = leave;
+            continue;
+        }
+        if (lo > leave || enter > hi) return false;
+        if (enter > lo) lo = enter;
+        if (leave < hi) hi = leave;
+    }
+    return lo < maxd && hi > mind;
+}
+
+bool is_similarity(const Transform& t, Real& scale) {
+    const auto& m = t.forward().m;
+    Vector3 c0{m[0][0], m[1][0], m[2][0]}, c1{m[0][1], m[1][1], m[2][1]},
+        c2{m[0][2], m[1][2], m[2][2]};
+    Real s0 = dot(c0, c0), s1 = dot(c1, c1), s2 = dot(c2, c2);
+    Real tol = 1e-12 * std::max({s0, s1, s2});
+    if (std::fabs(s0 - s1) > tol || std::fabs(s0 - s2) > tol) return false;
+    if (std::fabs(dot(c0, c1)) > tol || std::fabs(dot(c0, c2)) > tol ||
+        std::fabs(dot(c1, c2)) > tol)
+        return false;
+    scale = std::sqrt(s0);
+    return true;
+}
+
+namespace {
+
+// POV-Ray's canonical frame for a cylinder, cone or disc along `up` (unit): the images of
+// x and y under the rotation about (-up.y, up.x, 0) by acos(up.z) that takes z to `up`
+// (Compute_Coordinate_Transform, 3.7:source/backend/math/matrices.cpp:1027).
+void canonical_frame(Vector3 up, Vector3& ex, Vector3& ey) {
+    Vector3 k;
+    if (std::fabs(up.z) > 1.0 - kPovEpsilon) {
+        k = {1, 0, 0};
+        up.z = up.z < 0 ? -1.0 : 1.0;
+    } else {
+        k = normalize(Vector3{-up.y, up.x, 0});
+    }
+    const Real angle = std::acos(std::clamp(up.z, -1.0, 1.0));
+    const Real c = std::cos(angle), s = std::sin(angle);
+    auto rotate = [&](const Vector3& v) {  // Rodrigues
+        return v * c + cross(k, v) * s + k * (dot(k, v) * (1 - c));
+    };
+    ex = rotate({1, 0, 0});
+    ey = rotate({0, 1, 0});
+}
+
+// Recompute_BBox: the eight corners of a box in the shape's canonical space, placed by
+// `local` (canonical -> object space) and the object's transform.
+template <class Place>
+Bounds3 corners_bounds(const Bounds3& canonical, Place&& place) {
+    Bounds3 r;
+    for (int i = 0; i < 8; ++i) {
+        const Point3 p{(i & 1) ? canonical.hi.x : canonical.lo.x,
+                       (i & 2) ? canonical.hi.y : canonical.lo.y,
+                       (i & 4) ? canonical.hi.z : canonical.lo.z};
+        r.extend(place(p));
+    }
+    for (int a = 0; a < 3; ++a) {  // clipped at the largest box POV-Ray allows
+        r.lo[a] = std::max(r.lo[a], -kBoundHuge / 2);
+        r.hi[a] = std::min(r.hi[a], kBoundHuge / 2);
+    }
+    return r;
+}
+
+// A cylinder's or cone's box: its canonical box [-1,1]^2 x [z0,1] scaled by the radius
+// and the height of the frame along `axis` from `origin`.
+Bounds3 axial_bounds(const Object& o, const Point3& origin, const Vector3& axis,
+                     Real radius, Real height, Real z0) {
+    Vector3 ex, ey;
+    canonical_frame(axis, ex, ey);
+    return corners_bounds(Bounds3{{-1, -1, z0}, {1, 1, 1}}, [&](const Point3& p) {
+        const Point3 local =
+            origin + ex * (p.x * radius) + ey * (p.y * radius) + axis * (p.z * height);
+        return o.transform.point(local);
+    });
+}
+
+const PovBBox kInfiniteBox = [] {
+    PovBBox b;
+    for (int a = 0; a < 3; ++a) {
+        b.lo[a] = float(-kBoundHuge / 2);
+        b.len[a] = float(kBoundHuge);
+    }
+    return b;
+}();
+
+PovBBox csg_bbox(const Object& o, const Csg& csg);
+
+PovBBox shape_bbox(const Object& o) {
+    PovBBox box = kInfiniteBox;
+    std::visit(
+        [&](const auto& s) {
+            using T = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<T, Sphere>) {
+                // Translation, rotation and uniform scaling move the centre and the
+                // radius (no transform kept): the box is centre +- radius. Any other
+                // transform is kept and the box is the transformed cube's.
+                Real scale = 1;
+                if (o.transform.is_identity() || is_similarity(o.transform, scale)) {
+                    box = pov_sphere_bbox(o.transform.point(s.centre), s.radius * scale);
+                } else {
+                    box = pov_bbox(corners_bounds(
+                        {s.centre - Vector3(s.radius), s.centre + Vector3(s.radius)},
+                        [&](const Point3& p) { return o.transform.point(p); }));
+                }
+            } else if constexpr (std::is_same_v<T, Box>) {
+                box = pov_bbox(corners_bounds(
+                    {min(s.corner1, s.corner2), max(s.corner1, s.corner2)},
+                    [&](const Point3& p) { return o.transform.point(p); }));
+            } else if constexpr (std::is_same_v<T, Cylinder>) {
+                const Vector3 a = s.cap - s.base;
+                const Real len = length(a);
+                if (len > 0)
+                    box = pov_bbox(axial_bounds(o, s.base, a / len, s.radius, len, 0));
+            } else if constexpr (std::is_same_v<T, Cone>) {
+                // The wider end on top, the frame's origin at the apex of the full cone,
+                // the box as wide as the wider end all along (Compute_Cone_Data).
+                Point3 base = s.base, cap = s.cap;
+                Real r0 = s.base_radius, r1 = s.cap_radius;
+                if (r1 < r0) {
+                    std::swap(base, cap);
+                    std::swap(r0, r1);
+                }
+                const Vector3 a = cap - base;
+                const Real len = length(a);
+                if (!(len > 0)) return;
+                const Vector3 axis = a / len;
+                if (std::fabs(r1 - r0) < kPovEpsilon) {
+                    box = pov_bbox(axial_bounds(o, base, axis, r1, len, 0));
+                    return;
+                }
+                const Real below = r0 * len / (r1 - r0);
+                const Real height = below + len;
+                box = pov_bbox(axial_bounds(o, base - axis * below, axis, r1, height,
+                                            below / height));
+            } else if constexpr (std::is_same_v<T, Disc>) {
+                const Real nl = length(s.normal);
+                if (!(nl > 0)) return;
+                // The canonical box is [-r, r]^2 x [-SMALL_TOLERANCE, SMALL_TOLERANCE].
+                const Real r = s.radius;
+                Vector3 ex, ey;
+                canonical_frame(s.normal / nl, ex, ey);
+                const Vector3 n = s.normal / nl;
+                box = pov_bbox(corners_bounds(
+                    Bounds3{{-r, -r, -kSmallTolerance}, {r, r, kSmallTolerance}},
+                    [&](const Point3& p) {
+                        return o.transform.point(s.centre + ex * p.x + ey * p.y +
+                                                 n * p.z);
+                    }));
+            } else if constexpr (std::is_same_v<T, Torus>) {
+                const Real a = s.major + s.minor;
+                box = pov_bbox(corners_bounds(
+                    {{-a, -s.minor, -a}, {a, s.minor, a}},
+                    [&](const Point3& p) { return o.transform.point(p); }));
+            } else if constexpr (std::is_same_v<T, Triangle> ||
+                                 std::is_same_v<T, SmoothTriangle>) {
+                // Triangles keep no transform: their corners are moved. Padded by
+                // EPSILON.
+                Bounds3 b;
+                for (const Point3& p : s.p) b.extend(o.transform.point(p));
+                b.lo -= Vector3(kPovEpsilon);
+                b.hi += Vector3(kPovEpsilon);
+                box = pov_bbox(b);
+            } else if constexpr (std::is_same_v<T, Polygon>) {
+                Bounds3 b;
+                for (const Point3& p : s.points) b.extend(o.transform.point(p));
+                if (b.empty()) return;
+                box = pov_bbox(b);
+                // A box flat along an axis is widened by SMALL_TOLERANCE each way.
+                for (int a = 0; a < 3; ++a) {
+                    if (std::fabs(box.len[a]) < kSmallTolerance) {
+                        box.lo[a] = float(Real(box.lo[a]) - kSmallTolerance);
+                        box.len[a] = float(Real(box.len[a]) + 2 * kSmallTolerance);
+                    }
+                }
+            } else if constexpr (std::is_same_v<T, Mesh>) {
+                // Vertices are single precision; the box of the mesh's own space goes
+                // through the transform.
+                Bounds3 b;
+                for (const Point3& p : s.vertices) b.extend(single_precision(p));
+                if (b.empty()) return;
+                box = pov_bbox(corners_bounds(
+                    b, [&](const Point3& p) { return o.transform.point(p); }));
+            } else if constexpr (std::is_same_v<T, Csg>) {
+                box = csg_bbox(o, s);
+            }
+            // Plane: infinite.
+        },
+        o.shape);
+    return box;
+}
+
+PovBBox csg_bbox(const Object& o, const Csg& csg) {
+    if (o.inverse) return kInfiniteBox;
+    Bounds3 b;
+    if (csg.kind == CsgKind::Intersection || csg.kind == CsgKind::Difference) {
+        // The children's boxes intersected, inverted children (every child of a
+        // difference but the first) left out.
+        b = {{-kBoundHuge, -kBoundHuge, -kBoundHuge},
+             {kBoundHuge, kBoundHuge, kBoundHuge}};
+        for (size_t i = 0; i < csg.children.size(); ++i) {
+            const Object& c = csg.children[i];
+            if (c.inverse || (csg.kind == CsgKind::Difference && i > 0)) continue;
+            if (std::holds_alternative<Plane>(c.shape)) continue;
+            b = intersection(b, pov_bbox_bounds(pov_object_bbox(c)));
+        }
+    } else {
+        for (const Object& c : csg.children)
+            b.extend(pov_bbox_bounds(pov_object_bbox(c)));
+    }
+    if (b.empty()) return kInfiniteBox;  // "degenerate CSG bounding box (not used)"
+    const PovBBox r = pov_bbox(b);
+    for (int a = 0; a < 3; ++a) {
+        if (Real(r.len[a]) > kCriticalLength) return kInfiniteBox;
+    }
+    return r;
+}
+
+}  // namespace
+
+PovBBox pov_object_bbox(const Object& o) {
+    // An inverted shape keeps its box (only its inside flips).
+    PovBBox box = shape_bbox(o);
+    // clipped_by: the clipping objects' boxes intersected, kept when smaller.
+    if (!o.clipped_by->empty()) {
+        Bounds3 clip = {{-kBoundHuge, -kBoundHuge, -kBoundHuge},
+                        {kBoundHuge, kBoundHuge, kBoundHuge}};
+        for (const Object& c : *o.clipped_by) {
+            if (c.inverse) continue;
+            clip = intersection(clip, pov_bbox_bounds(pov_object_bbox(c)));
+        }
+        const PovBBox clipped = pov_bbox(clip);
+        auto volume = [](const PovBBox& b) {
+            return Real(b.len[0]) * Real(b.len[1]) * Real(b.len[2]);
+        };
+        if (volume(clipped) < volume(box)) box = clipped;
+    }
+    return box;
+}
+
+PovBBox pov_sphere_bbox(const Point3& centre, Real radius) {
+    PovBBox r;
+    for (int a = 0; a < 3; ++a) {
+        r.lo[a] = float(centre[a] - radius);
+        r.len[a] = float(2.0 * radius);
+    }
+    return r;
+}
+
+PovBBox pov_mesh_triangle_bbox(const Point3 (&p)[3]) {
+    Bounds3 b;
+    for (const Point3& q : p) b.extend(single_precision(q));
+    return pov_bbox(b);
+}
+
+bool pov_tests_own_bbox(const Object& o) {
+    return !(std::holds_alternative<Box>(o.shape) ||
+             std::holds_alternative<Sphere>(o.shape) ||
+             std::holds_alternative<Plane>(o.shape) ||
+             std::holds_alternative<Triangle>(o.shape) ||
+             std::holds_alternative<SmoothTriangle>(o.shape));
+}
+
+namespace {
+
+size_t frame_objects(const Object& o) {
+    const Csg* csg = std::get_if<Csg>(&o.shape);
+    if (csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty() &&
+        o.bounded_by->empty()) {
+        size_t n = 0;
+        for (const Object& c : csg->children) n += frame_objects(c);
+        return n;
+    }
+    return 1;
+}
+
+}  // namespace
+
+namespace {
+
+template <class Visit>
+void for_frame_objects(const Object& o, Visit&& visit) {
+    const Csg* csg = std::get_if<Csg>(&o.shape);
+    if (csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty() &&
+        o.bounded_by->empty()) {
+        for (const Object& c : csg->children) for_frame_objects(c, visit);
+        return;
+    }
+    visit(o);
+}
+
+}  // namespace
+
+bool pov_slab_root(const Scene& scene, PovBBox& root) {
+    if (scene.objects_filtered()) return false;
+    // Most scenes have a plane: their root is infinite, known without the other boxes.
+    bool plane = false;
+    for (const Object& o : scene.objects) {
+        for_frame_objects(o, [&](const Object& f) {
+            plane = plane || std::holds_alternative<Plane>(f.shape);
+        });
+        if (plane) return false;
+    }
+    Bounds3 b;
+    bool finite = true;
+    auto add = [&](const Object& o) {
+        if (!finite) return;
+        const PovBBox box = pov_object_bbox(o);
+        if (!pov_bbox_finite(box)) finite = false;
+        b.extend(pov_bbox_bounds(box));
+    };
+    for (const Object& o : scene.objects) for_frame_objects(o, add);
+    for (const Light& l : scene.lights) {
+        if (!l.looks_like.empty()) add(l.looks_like.front());
+    }
+    if (!finite || b.empty()) return false;
+    root = pov_bbox(b);
+    return true;
+}
+
+size_t pov_frame_objects(const Scene& scene) {
+    size_t n = scene.lights.size() + scene.objects_left_out;
+    for (const Object& o : scene.objects) n += frame_objects(o);
+    return n;
+}
+
+}  // namespace povwall::trace
