@@ -62,8 +62,13 @@ struct Item {
 
 struct WaitingParent {
     trace::ShadingRecord record;
+    // Result slots: one per child, except that an area-light shadow child has one per
+    // sample of its grid; child i's first slot is first_slot[i] (empty: slot i).
     std::vector<trace::TraceResult> results;
+    std::vector<uint32_t> first_slot;
     RayItem origin;
+    // The children's results in record order, area grids averaged.
+    void gather(const Scene& scene, std::vector<trace::TraceResult>& out) const;
 };
 
 struct Box {

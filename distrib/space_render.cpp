@@ -53,8 +53,10 @@ BoxHost::BoxHost(const Scene& scene, const trace::RenderSettings& settings,
                  : trace::make_render_plan(scene, settings.plan_everything_on,
                                            settings.quality)),
       camera_interiors_(scene) {
-    parents_ = options.results == SpaceOptions::Results::Parents ||
-               (options.results == SpaceOptions::Results::Auto && plan_.parent_tracking);
+    parents_ =
+        options.results == SpaceOptions::Results::Parents ||
+        (options.results == SpaceOptions::Results::Auto && plan_.parent_tracking) ||
+        plan_.parents_required;
     shared_boxes_ = !parents_ && options.direct_handoff;
     total_pixels_ = settings.width * settings.height;
     sum_channels_ = settings.alpha ? 4 : 3;
@@ -458,6 +460,32 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
         trace::spawn_children(*box.scene, ray.trace, hit, rec);
         const size_t n = rec.children.size();
         uint64_t id = 0;
+        // Result slots: an area-light shadow child takes one per grid sample, after the
+        // children's own slots. (Children may be traced at once, in this thread, and
+        // come back here: nothing of this hit is kept in thread-wide scratch.)
+        auto area_child = [&](const trace::ChildRay& c) {
+            return parents_ && c.kind == trace::ChildRay::Kind::Shadow && c.area &&
+                   !c.unoccluded;
+        };
+        std::vector<uint32_t> first_slot;
+        uint32_t slots = uint32_t(n);
+        int pending = int(n);  // results to wait for (an area child's own slot gets none)
+        if (parents_) {
+            for (size_t i = 0; i < n; ++i) {
+                if (!area_child(rec.children[i])) continue;
+                if (first_slot.empty()) {
+                    for (uint32_t k = 0; k < n; ++k) first_slot.push_back(k);
+                }
+                first_slot[i] = slots;
+                const auto samples =
+                    uint32_t(trace::AreaGrid(scene_, rec.children[i]).samples());
+                slots += samples;
+                pending += int(samples) - 1;
+            }
+            if (slots > 65535)
+                throw std::runtime_error(
+                    "a point's area-light grids have more than 65,535 samples");
+        }
         if (parents_) {
             if (n == 0) {
                 deliver(box, ray, trace::combine_children(rec, nullptr), thread);
@@ -466,13 +494,20 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
             id = ++box.next_id;
             WaitingParent w;
             w.record = rec;
-            w.results.resize(n);
+            w.results.resize(slots);
+            w.first_slot = std::move(first_slot);
             w.origin = ray;
-            box.parents.park(id, std::move(w), int(n));
+            box.parents.park(id, std::move(w), pending);
             box.stats.peak_parents = std::max(box.stats.peak_parents, box.parents.size());
         } else {
-            add_pixel(thread, ray.pixel, ray.contribution * rec.local, 0);
+            // Fog along this ray is affine (add + mul x colour): its added part goes to
+            // the pixel now, its factor into every child's contribution.
+            const trace::FogEffect& fog = rec.fog;
+            add_pixel(thread, ray.pixel,
+                      ray.contribution * (fog.add + fog.mul * rec.local),
+                      ray.transmit_contribution * fog.add_transmit);
         }
+        uint32_t next_area_slot = uint32_t(n);
         for (size_t i = 0; i < n; ++i) {
             const trace::ChildRay& c = rec.children[i];
             Item child_item;
@@ -491,14 +526,39 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
                 child.parent_box = box.index;
                 child.slot = uint16_t(i);
             } else {
-                child.contribution = ray.contribution * c.coeff;
+                child.contribution = ray.contribution * rec.fog.mul * c.coeff;
                 child.transmit_contribution =
                     c.kind == trace::ChildRay::Kind::Transmission
-                        ? ray.transmit_contribution * c.transmit_factor
+                        ? ray.transmit_contribution * rec.fog.mul_transmit *
+                              c.transmit_factor
                         : 0.0f;
             }
             if (c.unoccluded) {  // the plan proved nothing can block it: no message
                 deliver(box, child, {Rgb(1.0f), 0}, thread);
+                continue;
+            }
+            if (area_child(c)) {
+                // An area light: a shadow ray to each sample of its grid.
+                const trace::AreaGrid grid(scene_, c);
+                uint32_t slot = next_area_slot;
+                next_area_slot += uint32_t(grid.samples());
+                for (int u = 0; u < grid.n1; ++u) {
+                    for (int v = 0; v < grid.n2; ++v, ++slot) {
+                        Item sample_item = child_item;
+                        RayItem& sample = sample_item.ray;
+                        sample.slot = uint16_t(slot);
+                        Real d = 0;
+                        if (!grid.sample_ray(u, v, sample.trace.ray, d)) {
+                            deliver(box, sample, {Rgb(1.0f), 0}, thread);
+                            continue;
+                        }
+                        sample.light_distance = d;
+                        ++here.stats.rays.shadow;
+                        const int dest = enter(sample.trace.ray, 0, sample.route_walk);
+                        sample.route_box = dest;
+                        push(&box, std::max(dest, 0), std::move(sample_item));
+                    }
+                }
                 continue;
             }
             if (child.shadow) ++here.stats.rays.shadow;
@@ -507,6 +567,28 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
             push(&box, std::max(dest, 0), std::move(child_item));
         }
         return;
+    }
+}
+
+void WaitingParent::gather(const Scene& scene,
+                           std::vector<trace::TraceResult>& out) const {
+    const size_t n = record.children.size();
+    if (first_slot.empty()) {
+        out.assign(results.begin(), results.begin() + ptrdiff_t(n));
+        return;
+    }
+    out.resize(n);
+    thread_local std::vector<Rgb> samples;
+    for (size_t i = 0; i < n; ++i) {
+        if (first_slot[i] == i) {
+            out[i] = results[i];
+            continue;
+        }
+        const trace::AreaGrid grid(scene, record.children[i]);
+        samples.resize(grid.samples());
+        for (size_t k = 0; k < samples.size(); ++k)
+            samples[k] = results[first_slot[i] + k].colour;
+        out[i] = {grid.average(samples.data()), 0};
     }
 }
 
@@ -521,9 +603,12 @@ void BoxHost::process(Box& box, Item& item, int thread) {
     const ResultItem& r = item.result;
     auto done = box.parents.deliver(
         r.parent, [&](WaitingParent& w) { w.results[r.slot] = r.result; });
-    if (done)
-        deliver(box, done->origin,
-                trace::combine_children(done->record, done->results.data()), thread);
+    if (done) {
+        thread_local std::vector<TraceResult> results;
+        done->gather(scene_, results);
+        deliver(box, done->origin, trace::combine_children(done->record, results.data()),
+                thread);
+    }
 }
 
 int BoxHost::camera_item(int pixel, Item& item) const {

@@ -141,6 +141,7 @@ json plan_to_json(const trace::RenderPlan& p) {
             {"skip_unlit_shadow_rays", p.skip_unlit_shadow_rays},
             {"flat_threshold", p.flat_threshold},
             {"parent_tracking", p.parent_tracking},
+            {"parents_required", p.parents_required},
             {"parent_reason", p.parent_reason},
             {"finite_primitives", p.finite_primitives},
             {"infinite_primitives", p.infinite_primitives}};
@@ -163,6 +164,7 @@ trace::RenderPlan plan_from_json(const json& j) {
     p.skip_unlit_shadow_rays = j.at("skip_unlit_shadow_rays").get<bool>();
     p.flat_threshold = j.at("flat_threshold").get<int>();
     p.parent_tracking = j.at("parent_tracking").get<bool>();
+    p.parents_required = j.at("parents_required").get<bool>();
     p.parent_reason = j.at("parent_reason").get<std::string>();
     p.finite_primitives = j.at("finite_primitives").get<size_t>();
     p.infinite_primitives = j.at("infinite_primitives").get<size_t>();

@@ -288,9 +288,19 @@ RenderPlan make_render_plan(const Scene& scene, bool everything_on, int quality)
     }
     plan.skip_unlit_shadow_rays = !everything_on;
     plan.flat_threshold = everything_on ? 0 : octree::BuildOptions{}.flat_threshold;
-    plan.parent_tracking = everything_on || !shading_is_linear(scene);
+    bool area_shadows = false;
+    for (size_t l = 0; l < scene.lights.size(); ++l)
+        area_shadows =
+            area_shadows || (scene.lights[l].area && plan.lights[l].shadow_rays);
+    plan.parents_required =
+        area_shadows && plan.quality.area_lights() && plan.quality.shadows();
+    plan.parent_tracking =
+        everything_on || !shading_is_linear(scene) || plan.parents_required;
     plan.parent_reason =
         everything_on ? "parent tracking (plan forced on)"
+        : plan.parents_required
+            ? "area-light shadows: each lit point's grid is averaged (POV-Ray's adaptive "
+              "rule) once its samples are in, in the parent table"
         : plan.parent_tracking
             ? "a reflection exponent makes shading non-linear: parents wait "
               "for their children in each box's parent table"

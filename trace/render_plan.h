@@ -58,6 +58,9 @@ struct RenderPlan {
     // Non-linear shading (reflection exponent): black boxes park parents until children
     // report; linear shading forwards contributions straight to the pixel.
     bool parent_tracking = false;
+    // Parents must wait whatever --results says: an area light's shadow is the adaptive
+    // average of its grid samples, taken once they are all in.
+    bool parents_required = false;
     std::string parent_reason;
     // Primitives as the tracer sees them (plain unions opened, mesh triangles counted).
     size_t finite_primitives = 0, infinite_primitives = 0;

@@ -748,95 +748,105 @@ float colour_distance(const Rgb& a, const Rgb& b) {
     return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
 }
 
-// POV-Ray's area light: a size1 x size2 grid over axis1/axis2 centred on the light,
-// sampled at the corners of a region and refined by quadrants; each level averages its 4
-// quadrants.
-struct AreaSampler {
-    const PreparedScene& scene;
-    const ChildRay& shadow;
-    RayContext& ctx;
-    const Light& light;
-    const AreaLight& area;
-    Vector3 axis1, axis2;
-    Point3 at;
-    std::vector<Rgb>& grid;
-    std::vector<uint8_t>& done;
-    int n1, n2;
-
-    Rgb sample(int u, int v) {
-        size_t k = size_t(u) * n2 + v;
-        if (done[k]) return grid[k];
-        Vector3 offset{0, 0, 0};
-        Real ju = u, jv = v;
-        if (area.circular && n1 > 1 && n2 > 1) {
-            ju = ju / (n1 - 1) - 0.5 + 0.001;
-            jv = jv / (n2 - 1) - 0.5 + 0.001;
-            Real scale =
-                std::max(std::fabs(ju), std::fabs(jv)) / std::sqrt(ju * ju + jv * jv);
-            offset = axis1 * (ju * scale) + axis2 * (jv * scale);
-        } else {
-            if (n1 > 1) offset += axis1 * (ju / (n1 - 1) - 0.5);
-            if (n2 > 1) offset += axis2 * (jv / (n2 - 1) - 0.5);
+// POV-Ray's adaptive average over a grid whose samples `sample(u, v)` gives: the corners
+// of a region, refined by quadrants while level < adaptive or neighbouring corners differ
+// by more than 0.1 (light colour applied); each level averages its 4 quadrants.
+template <class Sample>
+Rgb adaptive_average(const AreaLight& area, const Rgb& light_colour, int u1, int v1,
+                     int u2, int v2, int level, Sample&& sample) {
+    Rgb s[4] = {sample(u1, v1), sample(u2, v1), sample(u1, v2), sample(u2, v2)};
+    if (u2 - u1 > 1 || v2 - v1 > 1) {
+        const Rgb& lc = light_colour;
+        bool refine = level < area.adaptive ||
+                      colour_distance(lc * s[0], lc * s[1]) > 0.1f ||
+                      colour_distance(lc * s[1], lc * s[3]) > 0.1f ||
+                      colour_distance(lc * s[3], lc * s[2]) > 0.1f ||
+                      colour_distance(lc * s[2], lc * s[0]) > 0.1f;
+        if (refine) {
+            const int ul = (u1 + u2) / 2,
+                      uh = (u1 + u2 + 1) / 2;  // floor, ceil of middle
+            const int vl = (v1 + v2) / 2, vh = (v1 + v2 + 1) / 2;
+            s[0] = adaptive_average(area, lc, u1, v1, ul, vl, level + 1, sample);
+            s[1] = adaptive_average(area, lc, uh, v1, u2, vl, level + 1, sample);
+            s[2] = adaptive_average(area, lc, u1, vh, ul, v2, level + 1, sample);
+            s[3] = adaptive_average(area, lc, uh, vh, u2, v2, level + 1, sample);
         }
-        Vector3 to = light.location + offset - at;
-        Real d = length(to);
-        Rgb t = d > 0 ? point_shadow(shadow, scene, {at, to / d}, d, ctx) : Rgb(1.0f);
-        grid[k] = t;
-        done[k] = 1;
-        return t;
     }
-
-    Rgb region(int u1, int v1, int u2, int v2, int level) {
-        Rgb s[4] = {sample(u1, v1), sample(u2, v1), sample(u1, v2), sample(u2, v2)};
-        if (u2 - u1 > 1 || v2 - v1 > 1) {
-            const Rgb& lc = shadow.light_colour;
-            bool refine = level < area.adaptive ||
-                          colour_distance(lc * s[0], lc * s[1]) > 0.1f ||
-                          colour_distance(lc * s[1], lc * s[3]) > 0.1f ||
-                          colour_distance(lc * s[3], lc * s[2]) > 0.1f ||
-                          colour_distance(lc * s[2], lc * s[0]) > 0.1f;
-            if (refine) {
-                int ul = (u1 + u2) / 2,
-                    uh = (u1 + u2 + 1) / 2;  // floor and ceil of the middle
-                int vl = (v1 + v2) / 2, vh = (v1 + v2 + 1) / 2;
-                s[0] = region(u1, v1, ul, vl, level + 1);
-                s[1] = region(uh, v1, u2, vl, level + 1);
-                s[2] = region(u1, vh, ul, v2, level + 1);
-                s[3] = region(uh, vh, u2, v2, level + 1);
-            }
-        }
-        return (s[0] + s[1] + s[2] + s[3]) * 0.25f;
-    }
-};
+    return (s[0] + s[1] + s[2] + s[3]) * 0.25f;
+}
 
 }  // namespace
 
-Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow,
-                         RayContext& ctx) {
-    if (!shadow.area)
-        return point_shadow(shadow, scene, shadow.trace.ray, shadow.t_max, ctx);
-    const Light& light = scene.scene().lights[shadow.light];
-    const AreaLight& area = *light.area;
-    const Point3 at = shadow.trace.ray.origin;
-    Vector3 axis1 = area.axis1, axis2 = area.axis2;
+AreaGrid::AreaGrid(const Scene& scene, const ChildRay& shadow)
+    : light(scene.lights[size_t(shadow.light)]),
+      area(*light.area),
+      at(shadow.trace.ray.origin),
+      n1(std::max(1, area.size1)),
+      n2(std::max(1, area.size2)),
+      axis1(area.axis1),
+      axis2(area.axis2),
+      light_colour(shadow.light_colour) {
     if (area.orient) {
         // Face the lit point: both axes perpendicular to the light ray, axis1's length.
-        Vector3 dir = normalize(light.location - at);
-        Real len = length(axis1);
-        Vector3 up =
+        const Vector3 dir = normalize(light.location - at);
+        const Real len = length(axis1);
+        const Vector3 up =
             std::fabs(std::fabs(dir.z) - 1) < 0.01 ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
         axis1 = normalize(cross(dir, up));
         axis2 = normalize(cross(dir, axis1)) * len;
         axis1 *= len;
     }
-    thread_local std::vector<Rgb> grid;
+}
+
+bool AreaGrid::sample_ray(int u, int v, Ray& ray, Real& distance) const {
+    Vector3 offset{0, 0, 0};
+    Real ju = u, jv = v;
+    if (area.circular && n1 > 1 && n2 > 1) {
+        ju = ju / (n1 - 1) - 0.5 + 0.001;
+        jv = jv / (n2 - 1) - 0.5 + 0.001;
+        const Real scale =
+            std::max(std::fabs(ju), std::fabs(jv)) / std::sqrt(ju * ju + jv * jv);
+        offset = axis1 * (ju * scale) + axis2 * (jv * scale);
+    } else {
+        if (n1 > 1) offset += axis1 * (ju / (n1 - 1) - 0.5);
+        if (n2 > 1) offset += axis2 * (jv / (n2 - 1) - 0.5);
+    }
+    const Vector3 to = light.location + offset - at;
+    distance = length(to);
+    if (!(distance > 0)) return false;
+    ray = {at, to / distance};
+    return true;
+}
+
+Rgb AreaGrid::average(const Rgb* samples) const {
+    return adaptive_average(area, light_colour, 0, 0, n1 - 1, n2 - 1, 0,
+                            [&](int u, int v) { return samples[size_t(u) * n2 + v]; });
+}
+
+Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow,
+                         RayContext& ctx) {
+    if (!shadow.area)
+        return point_shadow(shadow, scene, shadow.trace.ray, shadow.t_max, ctx);
+    // The samples the adaptive rule asks for, each traced once.
+    const AreaGrid grid(scene.scene(), shadow);
+    thread_local std::vector<Rgb> values;
     thread_local std::vector<uint8_t> done;
-    const int n1 = std::max(1, area.size1), n2 = std::max(1, area.size2);
-    grid.resize(size_t(n1) * n2);
-    done.assign(size_t(n1) * n2, 0);
-    AreaSampler sampler{scene, shadow, ctx,  light, area, axis1,
-                        axis2, at,     grid, done,  n1,   n2};
-    return sampler.region(0, 0, n1 - 1, n2 - 1, 0);
+    values.resize(grid.samples());
+    done.assign(grid.samples(), 0);
+    return adaptive_average(grid.area, grid.light_colour, 0, 0, grid.n1 - 1, grid.n2 - 1,
+                            0, [&](int u, int v) {
+                                const size_t k = size_t(u) * grid.n2 + v;
+                                if (!done[k]) {
+                                    Ray ray;
+                                    Real d = 0;
+                                    values[k] =
+                                        grid.sample_ray(u, v, ray, d)
+                                            ? point_shadow(shadow, scene, ray, d, ctx)
+                                            : Rgb(1.0f);
+                                    done[k] = 1;
+                                }
+                                return values[k];
+                            });
 }
 
 namespace {

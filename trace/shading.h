@@ -145,6 +145,28 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
 Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow,
                          RayContext& ctx);
 
+// An area light's sample grid as seen from one lit point (the shadow child's origin):
+// where each sample is, and POV-Ray's adaptive average of sample transmittances. The
+// single-process tracer samples what the adaptive rule asks for; black boxes trace every
+// sample as a shadow ray of its own and average them once all are in (the same value:
+// the rule reads only samples it asks for).
+struct AreaGrid {
+    AreaGrid(const Scene& scene, const ChildRay& shadow);
+    size_t samples() const { return size_t(n1) * size_t(n2); }
+    // The shadow ray toward sample (u, v) and the distance to it; false when the point
+    // is the sample itself (transmittance 1).
+    bool sample_ray(int u, int v, Ray& ray, Real& distance) const;
+    // The adaptive average of `samples` (u-major, n1 x n2).
+    Rgb average(const Rgb* samples) const;
+
+    const Light& light;
+    const AreaLight& area;
+    Point3 at;
+    int n1, n2;
+    Vector3 axis1, axis2;
+    Rgb light_colour;
+};
+
 // POV-Ray 3.7's interior fade after `distance` inside a medium (camera/secondary rays and
 // shadow rays differ in one test, hence the flag).
 Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray);

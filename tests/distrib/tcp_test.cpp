@@ -140,12 +140,14 @@ TEST(Tcp, GlassAndCsgSceneOverProcessesEqualsOneProcess) {
 // Glass in every kind of CSG, a camera that starts inside glass, the legacy finish
 // refraction: the interiors a ray carries (shared by a CSG's children, seeded from the
 // objects around the camera) cross walls and processes unchanged, so every mode gives
-// the one-process image (each scene matches POV-Ray in tests/golden).
+// the one-process image (each scene matches POV-Ray in tests/golden); fog, affine in the
+// colour, reaches the pixels of forwarded contributions as it does in one process.
 TEST(Tcp, GlassCsgAndCameraInsideGlassInEveryModeEqualOneProcess) {
     for (const char* name :
          {"csg_glass_union", "csg_glass_merge", "csg_glass_intersection",
           "csg_glass_difference", "camera_inside_glass", "orthographic_inside_glass",
-          "sky_plane_fresnel", "legacy_finish_refraction", "faked_caustics"}) {
+          "sky_plane_fresnel", "legacy_finish_refraction", "faked_caustics",
+          "fog_turbulence", "fog_hollow_union", "fog_camera_in_solid"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(
@@ -159,7 +161,7 @@ TEST(Tcp, GlassCsgAndCameraInsideGlassInEveryModeEqualOneProcess) {
 // mode leaves out the same rays.
 TEST(Tcp, QualityLevelsInEveryModeEqualOneProcess) {
     const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/quality_levels.pov";
-    for (const char* level : {"+Q0", "+Q4", "+Q5", "+Q8"}) {
+    for (const char* level : {"+Q0", "+Q4", "+Q5", "+Q8", "+Q9"}) {
         SCOPED_TRACE(level);
         expect_same_images(scene, std::string("-W 40 -H 30 ") + level,
                            {"--mode screen --procs 2", "--boxes 2x2x2",
