@@ -392,7 +392,7 @@ TEST(RepeatedBlocks, NormalsAndInteriors) {
     EXPECT_FLOAT_EQ(s.objects[2].interior->fade_distance, 2.0f);
     // An identifier first replaces the interior.
     EXPECT_FLOAT_EQ(s.objects[3].interior->ior, 1.0f);
-    EXPECT_FLOAT_EQ(s.objects[3].interior->caustics, 0.5f);
+    EXPECT_FLOAT_EQ(s.objects[3].interior->caustics, 0.5f * 45);
     EXPECT_FLOAT_EQ(s.objects[3].interior->fade_power, 3.0f);
 }
 
