@@ -204,7 +204,9 @@ struct Cursor {
     bool at_end() const { return pos >= line.size(); }
     char peek() const { return at_end() ? '\0' : line[pos]; }
     void skip_space() {
-        while (!at_end() && (line[pos] == ' ' || line[pos] == '\t')) ++pos;
+        // Any white space, not only blanks and tabs: a stray \r or \f mid-line would
+        // otherwise end every word before it starts and the line would never advance.
+        while (!at_end() && std::isspace((unsigned char)line[pos])) ++pos;
     }
 };
 
@@ -289,7 +291,12 @@ class IniReader {
                     break;
                 }
                 if (!active) break;
+                const size_t before = c.pos;
                 if (!item(c)) break;  // an option takes the rest of its line
+                // Every item consumes text; one that did not would loop on this line.
+                if (c.pos == before)
+                    error(std::string("cannot read an item starting with '") + c.peek() +
+                          "'");
             }
         }
     }
@@ -298,6 +305,11 @@ class IniReader {
     // One item at the cursor: false when the rest of the line is done with.
     bool item(Cursor& c) {
         const char first = c.peek();
+        if (std::iscntrl((unsigned char)first)) {
+            char code[8];
+            std::snprintf(code, sizeof code, "0x%02x", (unsigned char)first);
+            error(std::string("unexpected control character ") + code);
+        }
         if (first == '+' || first == '-') {
             std::string sw = read_word(c, true);
             if (c.peek() == '"' || c.peek() == '\'') sw += read_value(c, false);
@@ -320,6 +332,10 @@ class IniReader {
                 error("unknown key '" + name + "' in INI file");
             c.pos = plain.pos;
             unknown_string(word);
+            return true;
+        }
+        if (first == ',') {  // a separator between items, as between a key's values
+            ++c.pos;
             return true;
         }
         const std::string word = read_value(c, first != '"' && first != '\'');

@@ -207,6 +207,18 @@ TEST(Ini, ValuesListsSwitchesAndComments) {
     EXPECT_EQ(r.o.animation.initial_frame, 2);  // %d reads the integer part
 }
 
+// Found by fuzz_ini: a carriage return mid-file made no progress and the reader looped
+// forever, as did a comma before an item. White space of any kind and commas separate
+// items; other control characters are errors.
+TEST(Ini, StrayControlCharacters) {
+    Read r = read_ini("\rWidth=64\n\fHeight=32\n\v+A0.2\n, ,+W48\n");
+    EXPECT_EQ(r.o.width, 48);
+    EXPECT_EQ(r.o.height, 32);
+    EXPECT_TRUE(r.o.render.antialias);
+    EXPECT_EQ(error_of(std::string("Width=64\n\r\0Height=32\n", 22)),
+              "t.ini:2: unexpected control character 0x00");
+}
+
 TEST(Ini, BareWordsSectionsAndIncludes) {
     const fs::path inner = write("inner.ini", "Height=77\n");
     const fs::path sections = write(
