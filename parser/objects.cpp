@@ -215,6 +215,9 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
                        std::holds_alternative<std::shared_ptr<Material>>(*lookup(m))) {
                 auto mat = std::get<std::shared_ptr<Material>>(*lookup(m));
                 link_textures(obj.texture, LayeredTexture(mat->texture), m);
+                if (!mat->interior_texture.empty())
+                    link_textures(obj.interior_texture.edit(),
+                                  LayeredTexture(mat->interior_texture), m);
                 obj.interior = mat->interior;
             } else {
                 expected("texture, interior or '}' in material", m);
@@ -308,7 +311,12 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
 void Interpreter::parse_object_modifiers(Object& obj) {
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return;
+        if (is_punct(t, '}')) {
+            // As POV-Ray's Parse_Object_Mods: the inside needs an outside.
+            if (obj.texture.empty() && !obj.interior_texture->empty())
+                error(t, "interior texture requires an exterior texture");
+            return;
+        }
         if (!try_object_modifier(obj, t)) expected("an object modifier or '}'", t);
     }
 }
@@ -566,6 +574,10 @@ void Interpreter::place_object(Object& obj, const Object* parent,
                                std::unordered_map<uint32_t, Interior>& shared) {
     if (parent) {
         if (obj.texture.empty()) obj.texture = parent->texture;
+        // The interior texture comes down on its own, whether the child has a texture
+        // of its own or not (POV-Ray's Post_Process).
+        if (obj.interior_texture->empty() && !parent->interior_texture->empty())
+            obj.interior_texture = parent->interior_texture;
         if (!obj.interior) obj.interior = *parent->interior;
         obj.no_shadow |= parent->no_shadow;
         obj.no_image |= parent->no_image;

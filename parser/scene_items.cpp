@@ -757,6 +757,7 @@ Value Interpreter::parse_item_value(const Token& t) {
             Token k = next();
             try_object_modifier(holder, k);
             m->texture = holder.texture;
+            m->interior_texture = *holder.interior_texture;
             m->interior = holder.interior;
             return m;
         }

@@ -47,6 +47,7 @@ struct CameraSpec;
 struct UserFile;
 struct Material {
     LayeredTexture texture;
+    LayeredTexture interior_texture;
     HeapOptional<Interior> interior;
 };
 

@@ -348,6 +348,22 @@ Vector3 polygon_normal(const Polygon& poly) {
     return normalize(n);
 }
 
+Vector3 pov_polygon_normal(const Polygon& poly) {
+    const Vector3 newell = polygon_normal(poly);
+    const std::vector<Point3>& p = poly.points;
+    constexpr Real kEpsilon = 1e-10;  // POV-Ray's EPSILON
+    size_t i = 1;
+    while (i < p.size() && dot(p[i] - p[0], p[i] - p[0]) <= kEpsilon) ++i;
+    if (i >= p.size()) return newell;
+    const Vector3 u = p[i] - p[0];
+    for (++i; i < p.size(); ++i) {
+        const Vector3 v = p[i] - p[0], w = cross(u, v);
+        if (dot(v, v) > kEpsilon && dot(w, w) > kEpsilon)
+            return dot(w, newell) < 0 ? -newell : newell;
+    }
+    return newell;
+}
+
 void intersect_polygon(const Polygon& poly, const Point3& o, const Vector3& dir,
                        Crossings& out) {
     const size_t k = poly.points.size();

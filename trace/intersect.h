@@ -97,6 +97,16 @@ bool torus_quartic(const Torus& t, const Point3& o, const Vector3& dir, TorusQua
 void intersect_polygon(const Polygon& p, const Point3& o, const Vector3& dir,
                        Crossings& out);
 Vector3 polygon_normal(const Polygon& p);
+// The polygon's normal with the sign POV-Ray gives its surface: u x v, u from the first
+// point to the first point apart from it, v to the next point off their line. (Which side
+// is "outside" matters for interior_texture; Newell's normal can point the other way
+// when the first corner is a reflex one.)
+Vector3 pov_polygon_normal(const Polygon& p);
+// A flat triangle's normal with POV-Ray's sign, (p0 - p1) x (p2 - p1) (Triangle and mesh
+// triangles alike; unnormalised).
+inline Vector3 pov_triangle_normal(const Point3 (&p)[3]) {
+    return cross(p[0] - p[1], p[2] - p[1]);
+}
 
 // `x` rounded to single precision. Out of line on purpose: inlined into a Vector3 built
 // from three such values, GCC 12.2's SLP vectorizer at -O3 drops the round trip of two of

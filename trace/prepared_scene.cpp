@@ -121,11 +121,11 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
                 else if constexpr (std::is_same_v<T, Disc>)
                     n = s.normal;
                 else if constexpr (std::is_same_v<T, Triangle>)
-                    n = cross(s.p[1] - s.p[0], s.p[2] - s.p[0]);
+                    n = pov_triangle_normal(s.p);
                 else if constexpr (std::is_same_v<T, SmoothTriangle>)
                     n = smooth_triangle_normal(s.p, s.n->data(), p);
                 else if constexpr (std::is_same_v<T, Polygon>)
-                    n = polygon_normal(s);
+                    n = pov_polygon_normal(s);
             },
             o.shape);
         n = normalize(o.transform.is_identity() ? n : o.transform.normal(n));
@@ -192,8 +192,7 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
                 Crossings cs;
                 intersect_triangle(p, local.origin, dn, cs);
                 if (cs.n) {
-                    Vector3 n =
-                        normalize(o.transform.normal(cross(p[1] - p[0], p[2] - p[0])));
+                    Vector3 n = normalize(o.transform.normal(pov_triangle_normal(p)));
                     out.push_back({cs.c[0].t / len, n, &o});
                 }
             }
@@ -550,12 +549,29 @@ Material material_of(const Object& o, const LayeredTexture& texture) {
     m.no_reflection = o.no_reflection;
     m.double_illuminate = o.double_illuminate;
     m.opaque = texture_opaque(texture);
+    if (!o.interior_texture->empty()) {
+        m.interior_texture = &*o.interior_texture;
+        m.opaque = m.opaque && texture_opaque(*o.interior_texture);
+    }
     if (texture_is_plain(texture)) {
         m.plain = true;
         m.plain_colour = texture.front().pigment.colour;
         m.plain_finish = *texture.front().finish;
     }
     return m;
+}
+
+Material interior_side(const Material& m) {
+    Material in = m;
+    const LayeredTexture& texture = *m.interior_texture;
+    in.texture = &texture;
+    in.interior_texture = nullptr;
+    in.plain = texture_is_plain(texture);
+    if (in.plain) {
+        in.plain_colour = texture.front().pigment.colour;
+        in.plain_finish = *texture.front().finish;
+    }
+    return in;
 }
 
 uint32_t PreparedScene::add_material(const Object& o) {
@@ -626,8 +642,12 @@ void PreparedScene::add_object(const Object& o, const Material*) {
         }
         // POV-Ray tests the mesh's box, then the triangle's in the mesh's tree.
         const PovPrim mesh_pov = pov_prim(o, kPovMeshTriangle);
+        const bool mirrored =
+            dot(cross(o.transform.vector({1, 0, 0}), o.transform.vector({0, 1, 0})),
+                o.transform.vector({0, 0, 1})) < 0;
         for (const auto& f : m->faces) {
             TrianglePrim tri;
+            tri.mirrored = mirrored;
             Bounds3 b;
             for (int k = 0; k < 3; ++k) {
                 // POV-Ray keeps a mesh's vertices in single precision.
@@ -784,7 +804,8 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
             if (tri.smooth) {
                 hit.normal = normalize(smooth_triangle_normal(tri.p, tri.n, hit.point));
             } else {
-                hit.normal = normalize(cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]));
+                hit.normal = normalize(pov_triangle_normal(tri.p));
+                if (tri.mirrored) hit.normal = -hit.normal;
             }
             hit.material = &materials_[material_[id]];
             return true;

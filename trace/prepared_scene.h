@@ -25,12 +25,16 @@ inline uintptr_t interior_key(const Object& o) {
 
 struct Material {
     const LayeredTexture* texture = nullptr;
+    // The object's interior_texture (null: none): what a hit on the inside of its surface
+    // shows (see shows_interior_texture()).
+    const LayeredTexture* interior_texture = nullptr;
     const Interior* interior = nullptr;  // null: default interior (ior 1)
     const Object* object = nullptr;      // the leaf: its number on the wire
     uintptr_t interior_id = 0;           // interior_key(*object)
     bool no_shadow = false, no_image = false, no_reflection = false;
     bool double_illuminate = false;
-    bool opaque = true;  // no filter or transmit anywhere in its textures
+    // No filter or transmit anywhere in its textures (interior_texture included).
+    bool opaque = true;
     // The common texture (one layer, a solid pigment, no normal, no map) copied here, so
     // that shading reads this small record instead of the object's 1.4 KB Texture: its
     // cache misses were a third of spawn_children's time on the seed scene.
@@ -41,6 +45,10 @@ struct Material {
 
 // The material of object `o` seen with `texture` (its own, or a mesh face's).
 Material material_of(const Object& o, const LayeredTexture& texture);
+// The same material seen from inside: its interior_texture in place of its texture
+// (`m.interior_texture` must be set). A stand-in for shading one hit; interior stacks
+// must keep naming `m`.
+Material interior_side(const Material& m);
 
 // A single colour everywhere: no pattern, list or colour map.
 inline bool pigment_is_solid(const Pigment& p) {
@@ -57,6 +65,9 @@ struct TrianglePrim {
     Point3 p[3];
     Vector3 n[3];
     bool smooth = false;
+    // The mesh's transform mirrors: the corners' normal points against the one POV-Ray
+    // transforms from mesh space.
+    bool mirrored = false;
 };
 
 // Kind of ray, for no_image / no_reflection / no_shadow.
@@ -66,7 +77,10 @@ struct Hit {
     Real t = kInfinity;
     uint32_t prim = 0;
     Point3 point;
-    Vector3 normal;  // world space, unit, outward (not yet flipped toward the ray)
+    // World space, unit, outward with POV-Ray's sign for the surface (its raw normal:
+    // flat triangles and polygons by their corners' order; not yet flipped toward the
+    // ray).
+    Vector3 normal;
     const Material* material = nullptr;
 };
 

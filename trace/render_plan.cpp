@@ -53,7 +53,8 @@ void count_primitives(const Object& o, size_t& finite, size_t& infinite) {
 
 // Some object with a transparent texture has an interior whose ior bends rays.
 bool any_refracting(const Object& o, bool transparent_above) {
-    bool transparent = transparent_above || !texture_opaque(o.texture);
+    bool transparent = transparent_above || !texture_opaque(o.texture) ||
+                       !texture_opaque(*o.interior_texture);
     if (transparent && o.interior && o.interior->ior != 1.0f) return true;
     if (auto c = std::get_if<Csg>(&o.shape)) {
         for (const Object& ch : c->children) {

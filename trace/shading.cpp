@@ -178,6 +178,14 @@ Rgb rgb_transm(const Colour& c) { return c.rgb * c.filter + Rgb(c.transmit); }
 
 const LayeredTexture& texture_of(const Material& m);
 
+// POV-Ray's texture choice (ComputeTextureColour, ComputeShadowColour): a ray meeting a
+// surface from inside, along its raw normal (Hit::normal has POV-Ray's sign), sees the
+// object's interior_texture when it has one. Decided from the hit alone, so every back
+// end and every kind of ray agrees.
+bool shows_interior_texture(const Material& m, const Hit& hit, const Ray& ray) {
+    return m.interior_texture && dot(hit.normal, ray.direction) > 0;
+}
+
 void pigment_only(const PreparedScene& scene, const Material& m, const Point3& P,
                   ShadingRecord& out) {
     const float adc = scene.scene().settings.adc_bailout;
@@ -280,6 +288,22 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
 
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     ShadingRecord& out) {
+    if (shows_interior_texture(*hit.material, hit, ray.ray)) {
+        // Shaded with the interior texture; the children's interior stacks name the
+        // object's own material, not this stand-in.
+        const Material inside = interior_side(*hit.material);
+        Hit h = hit;
+        h.material = &inside;
+        spawn_children(scene, ray, h, out);
+        for (ChildRay& c : out.children) {
+            for (int k = 0; k < c.trace.interiors.size && k < InteriorStack::kCapacity;
+                 ++k) {
+                if (c.trace.interiors.items[k] == &inside)
+                    c.trace.interiors.items[k] = hit.material;
+            }
+        }
+        return;
+    }
     out.clear();
     const Quality quality = scene.plan().quality;
     if (!scene.scene().fogs.empty() && quality.atmosphere()) {
@@ -701,7 +725,11 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
         if (!scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx)) break;
         const Material& m = *hit.material;
         bool black = m.opaque;
-        if (!black && m.plain) {
+        if (!black && shows_interior_texture(m, hit, ray)) {
+            state.filter *=
+                shadow_filter(scene, *m.interior_texture,
+                              m.interior ? m.interior->caustics : 0.0f, hit, ray);
+        } else if (!black && m.plain) {
             state.filter *= rgb_transm(m.plain_colour);
             if (m.interior && m.interior->caustics != 0)
                 state.filter *=

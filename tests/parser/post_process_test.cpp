@@ -53,6 +53,28 @@ sphere { 0, 1 }
     EXPECT_NE(s.objects[3].interior->id, s.objects[2].interior->id);
 }
 
+TEST(PostProcess, InteriorTextureComesDownAndNeedsAnExteriorTexture) {
+    Scene s = parse(R"(
+#declare M = material { texture { pigment { rgb 1 } } interior_texture { pigment { rgb x } } }
+union { sphere { 0, 1 } sphere { x, 1 texture { pigment { rgb y } } }
+        texture { pigment { rgb z } } interior_texture { pigment { rgb 0.5 } } }
+sphere { 0, 1 material { M } }
+)");
+    const Object& u = s.objects[0];
+    // Each child takes the union's interior texture, with or without its own texture.
+    ASSERT_EQ(child(u, 0).interior_texture->size(), 1u);
+    ASSERT_EQ(child(u, 1).interior_texture->size(), 1u);
+    EXPECT_FLOAT_EQ(child(u, 1).interior_texture->front().pigment.colour.rgb.r, 0.5f);
+    EXPECT_FLOAT_EQ(child(u, 1).texture.front().pigment.colour.rgb.g, 1.0f);
+    // A declared material carries its interior texture.
+    ASSERT_EQ(s.objects[1].interior_texture->size(), 1u);
+    EXPECT_FLOAT_EQ(s.objects[1].interior_texture->front().pigment.colour.rgb.g, 0.0f);
+    EXPECT_EQ(error_of("sphere { 0, 1 interior_texture { pigment { rgb 1 } } }"),
+              "test.pov:1:54: error: interior texture requires an exterior texture\n"
+              "sphere { 0, 1 interior_texture { pigment { rgb 1 } } }\n"
+              "                                                     ^");
+}
+
 TEST(PostProcess, OldFinishIorGoesIntoTheSharedInteriorAndTheLastSharerWins) {
     Scene s = parse(R"(
 union { sphere { 0, 1 } sphere { x, 1 finish { ior 1.2 refraction 0.5 } } interior { ior 1.5 } }

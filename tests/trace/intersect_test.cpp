@@ -507,11 +507,13 @@ TEST(IntersectAudit, DifferenceWithASolidMeshCutsTheSphere) {
     Hit h;
     // Along z through x = y = 0.1 the shifted tetrahedron spans z in [-0.7, -0.3]: it
     // swallows the sphere's front (z = -sqrt(0.23)), so the first surface is its slanted
-    // face at z = -0.3, inside the sphere, with the face's normal turned inward.
+    // face at z = -0.3, inside the sphere. Its normal has POV-Ray's sign for a mesh face,
+    // (p2 - p0) x (p1 - p0): inward for these faces wound counter-clockwise from outside,
+    // and the difference turns it over.
     ASSERT_TRUE(shoot(one(o), {{0.1, 0.1, -5}, {0, 0, 1}}, h));
     EXPECT_NEAR(h.t, 4.7, 1e-9);
     const Real k = 1 / std::sqrt(3.0);
-    expect_vec(h.normal, {-k, -k, -k}, 1e-9);
+    expect_vec(h.normal, {k, k, k}, 1e-9);
     // Beside the tetrahedron the sphere is untouched.
     ASSERT_TRUE(shoot(one(o), {{-0.3, 0, -5}, {0, 0, 1}}, h));
     EXPECT_NEAR(h.t, 5 - 0.4, 1e-9);
