@@ -319,10 +319,36 @@ struct Object {
     bool hollow_given = false;  // `hollow` was written on it (a CSG's then leaves it)
     bool no_shadow = false, no_image = false, no_reflection = false;
     bool double_illuminate = false;
+    // `split_union off` on a union: POV-Ray links it to the scene whole, not child by
+    // child (which keeps its children's bounded_by, see pov_splits_union()).
+    bool split_union = true;
+    // clipped_by { bounded_by } or bounded_by { clipped_by }: the two lists are one, as
+    // in POV-Ray (no more bounds or clips may be added then).
+    bool bounds_are_clips = false;
     HeapValue<std::vector<Object>> clipped_by;
+    // A ray that misses every one of these (and starts outside them) skips the object,
+    // where POV-Ray keeps the bound: see pov_keeps_bound(). Their boxes also shrink the
+    // object's bounding box (trace/pov_bounds.h).
     HeapValue<std::vector<Object>> bounded_by;
     SourceLoc loc;
 };
+
+// POV-Ray links a union to the scene child by child (Link_To_Frame), recursively, when it
+// is a plain union: not a merge, not inverse, not clipped or bounded, split_union not
+// off.
+inline bool pov_splits_union(const Object& o) {
+    const Csg* csg = std::get_if<Csg>(&o.shape);
+    return csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty() &&
+           o.bounded_by->empty() && o.split_union;
+}
+
+// Whether an object linked to the scene keeps its bounded_by (Link_To_Frame with
+// Remove_Bounds on, POV-Ray's default): only CSG objects do; a shape's bound is removed
+// as unnecessary. CSG children always keep theirs.
+inline bool pov_keeps_bound(const Object& frame_object) {
+    return !frame_object.bounded_by->empty() &&
+           std::holds_alternative<Csg>(frame_object.shape);
+}
 
 // ---------------------------------------------------------------- lights, camera,
 // settings

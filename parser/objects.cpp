@@ -269,17 +269,29 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (cyl) cyl->open = true;
         if (cone) cone->open = true;
     } else if (w == "clipped_by" || w == "bounded_by") {
+        // As POV-Ray: `bounded_by { clipped_by }` bounds by the clip, `clipped_by {
+        // bounded_by }` clips by the bound; the lists are then one, and neither grows.
         expect_punct('{', "after ", w);
-        std::vector<Object>& list =
-            w == "clipped_by" ? obj.clipped_by.edit() : obj.bounded_by.edit();
-        for (;;) {
-            Token o = next();
-            if (is_punct(o, '}')) break;
-            if (w == "bounded_by" && is_word(o, "clipped_by"))
-                continue;  // bounded_by{clipped_by}
-            Object child;
-            if (!try_parse_object(o, child)) expected("an object or '}'", o);
-            list.push_back(std::move(child));
+        const bool clip = w == "clipped_by";
+        std::vector<Object>& list = clip ? obj.clipped_by.edit() : obj.bounded_by.edit();
+        const std::string other = clip ? "bounded_by" : "clipped_by";
+        if (obj.bounds_are_clips && !list.empty() &&
+            obj.clipped_by->size() == obj.bounded_by->size())
+            error(t, std::string("cannot add ") + (clip ? "clips" : "bounds") +
+                         " after linking bounds and clips");
+        if (Token o = next(); is_word(o, other)) {
+            if (!list.empty())
+                error(o, std::string("cannot link ") + (clip ? "bounds" : "clips") +
+                             " with previous " + (clip ? "clips" : "bounds"));
+            list = clip ? *obj.bounded_by : *obj.clipped_by;
+            obj.bounds_are_clips = true;
+            expect_punct('}', "after ", other);
+        } else {
+            for (; !is_punct(o, '}'); o = next()) {
+                Object child;
+                if (!try_parse_object(o, child)) expected("an object or '}'", o);
+                list.push_back(std::move(child));
+            }
         }
     } else if (w == "photons" || w == "radiosity") {
         // Photon and radiosity hints on an object do not change a render without them.
@@ -292,7 +304,11 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
             if (is_punct(s, '}')) --depth;
         }
     } else if (w == "split_union") {
-        parse_bool_opt();  // how POV-Ray bounds a union: the image is the same
+        // How POV-Ray links a union: whole, its children keep their bounded_by.
+        const Csg* csg = std::get_if<Csg>(&obj.shape);
+        if (!csg || (csg->kind != CsgKind::Union && csg->kind != CsgKind::Merge))
+            error(t, "split_union found in non-union object");
+        obj.split_union = parse_float() != 0;  // a value is required
     } else if (w == "cutaway_textures") {
         const Csg* csg = std::get_if<Csg>(&obj.shape);
         if (!csg ||
@@ -688,9 +704,19 @@ void Interpreter::parse_top_level_item(const Token& t) {
             w == "radiosity") {
             unsupported(t, w);
         }
+        // POV-Ray's Link_To_Frame removes the bound of a shape placed in the scene (as
+        // unnecessary) and says so; the render leaves it out (pov_keeps_bound()).
+        auto warn_removed_bounds = [&](auto& self, const Object& o) -> void {
+            if (pov_splits_union(o)) {
+                for (const Object& c : std::get<Csg>(o.shape).children) self(self, c);
+            } else if (!o.bounded_by->empty() && !pov_keeps_bound(o)) {
+                warn(t, "unnecessary bounding object removed");
+            }
+        };
         Object obj;
         if (try_parse_object(t, obj)) {
             finish_object(obj);
+            warn_removed_bounds(warn_removed_bounds, obj);
             collect_lights(obj);
             add_scene_object(std::move(obj));
             return;
@@ -703,6 +729,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
             Object copy = **o;
             copy.loc = sources_.location(t);
             finish_object(copy);
+            warn_removed_bounds(warn_removed_bounds, copy);
             add_scene_object(std::move(copy));
             return;
         }

@@ -38,10 +38,8 @@ CameraInteriors::CameraInteriors(const Scene& scene) {
 // POV-Ray's top-level objects after it splits plain unions (not clipped, bounded,
 // inverted or a merge) into their children, recursively.
 void CameraInteriors::collect(const Object& o, const Bounds3& origins) {
-    const Csg* csg = std::get_if<Csg>(&o.shape);
-    if (csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty() &&
-        o.bounded_by->empty()) {
-        for (const Object& c : csg->children) collect(c, origins);
+    if (pov_splits_union(o)) {
+        for (const Object& c : std::get<Csg>(o.shape).children) collect(c, origins);
         return;
     }
     const Bounds3 b = object_world_bounds(o);

@@ -324,20 +324,24 @@ PovBBox csg_bbox(const Object& o, const Csg& csg) {
 PovBBox pov_object_bbox(const Object& o) {
     // An inverted shape keeps its box (only its inside flips).
     PovBBox box = shape_bbox(o);
-    // clipped_by: the clipping objects' boxes intersected, kept when smaller.
-    if (!o.clipped_by->empty()) {
-        Bounds3 clip = {{-kBoundHuge, -kBoundHuge, -kBoundHuge},
-                        {kBoundHuge, kBoundHuge, kBoundHuge}};
-        for (const Object& c : *o.clipped_by) {
+    // bounded_by, then clipped_by (Parse_Object_Mods): the objects' boxes intersected,
+    // kept when smaller. A bound shrinks the box even where it is later removed.
+    auto shrink = [&](const std::vector<Object>& list) {
+        if (list.empty()) return;
+        Bounds3 all = {{-kBoundHuge, -kBoundHuge, -kBoundHuge},
+                       {kBoundHuge, kBoundHuge, kBoundHuge}};
+        for (const Object& c : list) {
             if (c.inverse) continue;
-            clip = intersection(clip, pov_bbox_bounds(pov_object_bbox(c)));
+            all = intersection(all, pov_bbox_bounds(pov_object_bbox(c)));
         }
-        const PovBBox clipped = pov_bbox(clip);
+        const PovBBox smaller = pov_bbox(all);
         auto volume = [](const PovBBox& b) {
             return Real(b.len[0]) * Real(b.len[1]) * Real(b.len[2]);
         };
-        if (volume(clipped) < volume(box)) box = clipped;
-    }
+        if (volume(smaller) < volume(box)) box = smaller;
+    };
+    shrink(*o.bounded_by);
+    shrink(*o.clipped_by);
     return box;
 }
 
@@ -367,11 +371,9 @@ bool pov_tests_own_bbox(const Object& o) {
 namespace {
 
 size_t frame_objects(const Object& o) {
-    const Csg* csg = std::get_if<Csg>(&o.shape);
-    if (csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty() &&
-        o.bounded_by->empty()) {
+    if (pov_splits_union(o)) {
         size_t n = 0;
-        for (const Object& c : csg->children) n += frame_objects(c);
+        for (const Object& c : std::get<Csg>(o.shape).children) n += frame_objects(c);
         return n;
     }
     return 1;
@@ -383,10 +385,9 @@ namespace {
 
 template <class Visit>
 void for_frame_objects(const Object& o, Visit&& visit) {
-    const Csg* csg = std::get_if<Csg>(&o.shape);
-    if (csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty() &&
-        o.bounded_by->empty()) {
-        for (const Object& c : csg->children) for_frame_objects(c, visit);
+    if (pov_splits_union(o)) {
+        for (const Object& c : std::get<Csg>(o.shape).children)
+            for_frame_objects(c, visit);
         return;
     }
     visit(o);

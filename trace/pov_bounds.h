@@ -72,8 +72,8 @@ bool own_bbox_accepts(const PovBBox& box, const PovRay& ray, float mind, float m
 // centre +- radius, a box's, torus's, cylinder's, cone's or disc's canonical box through
 // its transform (Recompute_BBox), a triangle's corners +- EPSILON, a polygon's corners
 // widened where flat, a mesh's single-precision vertices), CSG boxes from their
-// children's, clipped_by boxes when smaller. The infinite box (BOUND_HUGE) for planes and
-// inverse CSG.
+// children's, bounded_by and then clipped_by boxes when smaller. The infinite box
+// (BOUND_HUGE) for planes and inverse CSG.
 PovBBox pov_object_bbox(const Object& o);
 // Sphere::Compute_BBox: corner centre - radius, lengths 2 radius.
 PovBBox pov_sphere_bbox(const Point3& centre, Real radius);
@@ -97,9 +97,10 @@ bool pov_tests_own_bbox(const Object& o);
 // root and the objects are not modelled: their grouping is POV-Ray's sort_and_split.
 bool pov_slab_root(const Scene& scene, PovBBox& root);
 
-// Frame-level objects as POV-Ray links them: plain unions (no clipped_by, not inverse)
-// are opened into their children, everything else counts once; light sources count too.
-// POV-Ray builds its bounding-slab tree when this reaches kPovBoundingThreshold.
+// Frame-level objects as POV-Ray links them: plain unions (pov_splits_union(), core/
+// scene.h) are opened into their children, everything else counts once; light sources
+// count too. POV-Ray builds its bounding-slab tree when this reaches
+// kPovBoundingThreshold.
 size_t pov_frame_objects(const Scene& scene);
 
 }  // namespace povwall::trace

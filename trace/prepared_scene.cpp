@@ -141,13 +141,37 @@ bool inside_clips(const Object& o, const Point3& p) {
     return true;
 }
 
+void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out);
+
+// POV-Ray's Ray_In_Bound: the ray passes when, for every bounding object, it meets it
+// somewhere ahead (MIN_ISECT_DEPTH on, as Find_Intersection; the bound's own bounds and
+// clips count) or starts inside it.
+bool ray_in_bound(const std::vector<Object>& bound, const Ray& ray) {
+    std::vector<WorldCrossing> cs;
+    for (const Object& b : bound) {
+        cs.clear();
+        if (b.bounded_by->empty() || ray_in_bound(*b.bounded_by, ray))
+            object_crossings(b, ray, cs);
+        const bool meets = std::any_of(cs.begin(), cs.end(), [](const WorldCrossing& c) {
+            return c.t >= kMinIsectDepth;
+        });
+        if (!meets && !inside_object(b, ray.origin)) return false;
+    }
+    return true;
+}
+
 void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out) {
     size_t start = out.size();
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
         std::vector<WorldCrossing> tmp;
         for (size_t i = 0; i < csg->children.size(); ++i) {
             tmp.clear();
-            object_crossings(csg->children[i], ray, tmp);
+            // A child's bound is never removed: a ray outside it skips the child (its
+            // inside still counts for the others' crossings).
+            const Object& child = csg->children[i];
+            if (!child.bounded_by->empty() && !ray_in_bound(*child.bounded_by, ray))
+                continue;
+            object_crossings(child, ray, tmp);
             for (WorldCrossing c : tmp) {
                 Point3 p = ray.at(c.t);
                 bool keep = true;
@@ -597,7 +621,7 @@ const Material* PreparedScene::material_for(const Object* leaf) const {
 
 void PreparedScene::add_object(const Object& o, const Material*) {
     const Csg* csg = std::get_if<Csg>(&o.shape);
-    if (csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty()) {
+    if (pov_splits_union(o)) {
         // A plain union is its children: each goes into the octree on its own.
         for (const Object& c : csg->children) add_object(c, nullptr);
         return;
@@ -611,8 +635,11 @@ void PreparedScene::add_object(const Object& o, const Material*) {
         if (k != PrimKind::Sphere) pov_.push_back(pov);
     };
     Real scale = 1;
+    // (A bounded_by shrinks a shape's POV-Ray box: such spheres and planes take the
+    // general path, which tests that box.)
     if (auto s = std::get_if<Sphere>(&o.shape);
-        s && !o.inverse && o.clipped_by->empty() && is_similarity(o.transform, scale)) {
+        s && !o.inverse && o.clipped_by->empty() && o.bounded_by->empty() &&
+        is_similarity(o.transform, scale)) {
         Point3 c = o.transform.point(s->centre);
         Real r = s->radius * scale;
         uint32_t index = uint32_t(spheres_.size());
@@ -621,7 +648,8 @@ void PreparedScene::add_object(const Object& o, const Material*) {
         return;
     }
     if (auto pl = std::get_if<Plane>(&o.shape);
-        pl && !o.inverse && o.clipped_by->empty() && is_similarity(o.transform, scale)) {
+        pl && !o.inverse && o.clipped_by->empty() && o.bounded_by->empty() &&
+        is_similarity(o.transform, scale)) {
         // Ground planes are tested by every ray: keep them out of the general object
         // path.
         Vector3 n = normalize(o.transform.normal(pl->normal));
@@ -811,9 +839,11 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
             return true;
         }
         case PrimKind::Object: {
+            const Object& obj = *objects_[index_[id]];
+            if (pov_keeps_bound(obj) && !ray_in_bound(*obj.bounded_by, ray)) return false;
             thread_local std::vector<WorldCrossing> crossings;
             crossings.clear();
-            object_crossings(*objects_[index_[id]], ray, crossings);
+            object_crossings(obj, ray, crossings);
             const WorldCrossing* best = nullptr;
             for (const auto& c : crossings) {
                 if (c.t >= lo && c.t < t_max && (!best || c.t < best->t)) best = &c;

@@ -40,9 +40,9 @@ void for_each_scene_texture(const Scene& scene, Fn&& fn) {
 
 // Primitives as PreparedScene makes them: plain unions are opened, meshes give triangles.
 void count_primitives(const Object& o, size_t& finite, size_t& infinite) {
-    auto c = std::get_if<Csg>(&o.shape);
-    if (c && c->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty()) {
-        for (const Object& ch : c->children) count_primitives(ch, finite, infinite);
+    if (pov_splits_union(o)) {
+        for (const Object& ch : std::get<Csg>(o.shape).children)
+            count_primitives(ch, finite, infinite);
         return;
     }
     bool bounded = !object_world_bounds(o).infinite();
@@ -106,10 +106,10 @@ size_t estimate_prepared_bytes(const Object& o) {
     // leaf.
     constexpr size_t kPerPrimitive = 1 + 4 + 4 + sizeof(Bounds3) + 4 + 14;
     constexpr size_t kMaterial = sizeof(Material) + 16;
-    auto c = std::get_if<Csg>(&o.shape);
-    if (c && c->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty()) {
+    if (pov_splits_union(o)) {
         size_t n = 0;
-        for (const Object& ch : c->children) n += estimate_prepared_bytes(ch);
+        for (const Object& ch : std::get<Csg>(o.shape).children)
+            n += estimate_prepared_bytes(ch);
         return n;
     }
     if (auto m = std::get_if<Mesh>(&o.shape)) {

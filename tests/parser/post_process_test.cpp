@@ -75,6 +75,38 @@ sphere { 0, 1 material { M } }
               "                                                     ^");
 }
 
+TEST(PostProcess, BoundsAndClipsLinkAsPovRays) {
+    Scene s = parse(R"(
+sphere { 0, 1 bounded_by { box { -1, 0.5 } } clipped_by { bounded_by } translate x }
+intersection { sphere { 0, 1 } sphere { x, 1 } clipped_by { plane { y, 0 } }
+               bounded_by { clipped_by } }
+union { sphere { 0, 1 } sphere { x, 1 } split_union off }
+)");
+    ASSERT_EQ(s.objects[0].clipped_by->size(), 1u);
+    ASSERT_EQ(s.objects[0].bounded_by->size(), 1u);
+    // The clip is the bound, moved with the object.
+    const Box& clip = std::get<Box>(s.objects[0].clipped_by->front().shape);
+    EXPECT_EQ(clip.corner2.x, 0.5);
+    EXPECT_EQ(s.objects[0].clipped_by->front().transform.point({0, 0, 0}).x, 1.0);
+    ASSERT_EQ(s.objects[1].bounded_by->size(), 1u);
+    EXPECT_TRUE(std::holds_alternative<Plane>(s.objects[1].bounded_by->front().shape));
+    EXPECT_FALSE(s.objects[2].split_union);
+    EXPECT_FALSE(pov_splits_union(s.objects[2]));
+    EXPECT_TRUE(pov_keeps_bound(s.objects[1]));
+    EXPECT_FALSE(pov_keeps_bound(s.objects[0]));  // a shape's bound is removed
+    EXPECT_NE(error_of("sphere { 0, 1 clipped_by { box { -1, 1 } } "
+                       "clipped_by { bounded_by } }")
+                  .find("error: cannot link bounds with previous clips"),
+              std::string::npos);
+    EXPECT_NE(error_of("sphere { 0, 1 bounded_by { box { -1, 1 } } "
+                       "clipped_by { bounded_by } bounded_by { sphere { 0, 1 } } }")
+                  .find("error: cannot add bounds after linking bounds and clips"),
+              std::string::npos);
+    EXPECT_NE(error_of("sphere { 0, 1 split_union off }")
+                  .find("error: split_union found in non-union object"),
+              std::string::npos);
+}
+
 TEST(PostProcess, OldFinishIorGoesIntoTheSharedInteriorAndTheLastSharerWins) {
     Scene s = parse(R"(
 union { sphere { 0, 1 } sphere { x, 1 finish { ior 1.2 refraction 0.5 } } interior { ior 1.5 } }
