@@ -134,6 +134,12 @@ struct PatternSpec {
     // POV-Ray does).
     std::vector<Warp> warps;
     CompactTransform transform;  // pattern space -> world (inverse applied to hit points)
+    // Mandel only: how points that escape (exterior, types 0-8) and points that stay
+    // (interior, types 0-6) get their value, each with its factor (POV-Ray's defaults).
+    struct Fractal {
+        uint8_t exterior_type = 1, interior_type = 0;
+        Real exterior_factor = 1, interior_factor = 1;
+    } fractal;
     std::shared_ptr<const ImageMapping> image;        // PatternKind::ImageMap only
     std::shared_ptr<const FunctionProgram> function;  // PatternKind::Function only
 };

@@ -226,6 +226,7 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
                 break;
             case PatternKind::Mandel:
                 spec.scalar = parse_float();
+                spec.fractal = {};  // POV-Ray's default colouring
                 break;
             case PatternKind::Quilted:
                 spec.vector = {1, 1, 0};  // control0, control1 defaults
@@ -320,11 +321,28 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     } else if (w == "solid") {
         spec.vector2.y = 1;
     } else if (w == "interior" || w == "exterior") {
-        // Fractal colouring types (mandel/julia): `interior TYPE, FACTOR`; read, not
-        // modelled.
-        parse_float();
+        // Fractal colouring: `exterior TYPE, FACTOR`, `interior TYPE, FACTOR`. POV-Ray
+        // takes them on mandel, julia, magnet and pavement; povwall has mandel only (the
+        // others are refused as patterns).
+        if (spec.kind != PatternKind::Mandel)
+            error(t, "keyword '" + std::string(w) +
+                         "' can only be used in a mandel, julia, magnet or pavement "
+                         "statement");
+        const bool exterior = w == "exterior";
+        Token at = peek();
+        const int type = saturating_int(parse_float());
+        if (type < 0 || type > (exterior ? 8 : 6))
+            error(at, exterior ? "invalid fractal pattern exterior type (0 to 8)"
+                               : "invalid fractal pattern interior type (0 to 6)");
         accept_punct(',');
-        parse_float();
+        const Real factor = parse_float();
+        if (exterior) {
+            spec.fractal.exterior_type = uint8_t(type);
+            spec.fractal.exterior_factor = factor;
+        } else {
+            spec.fractal.interior_type = uint8_t(type);
+            spec.fractal.interior_factor = factor;
+        }
     } else if (w == "control0") {
         spec.vector.x = parse_float();
     } else if (w == "control1") {

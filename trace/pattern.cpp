@@ -227,17 +227,69 @@ Real wrinkles(const Point3& p, int gen) {
     return value / 2.0;
 }
 
-Real mandel(const Point3& p, int iterations) {
+// POV-Ray's mandel: z -> z^2 + c from z = c = (x, y); a point escapes once |z|^2 > 4.
+// The colouring types follow fractal_exterior_color / fractal_interior_color, interior
+// type 6's missing parentheses included.
+Real mandel(const Point3& p, int iterations, const PatternSpec::Fractal& f) {
     Real a = p.x, b = p.y, x = a, y = b, a2 = a * a, b2 = b * b;
-    for (int col = 0; col < iterations; ++col) {
+    Real mindist2 = a2 + b2;
+    int col = 0;
+    for (; col < iterations; ++col) {
         b = 2.0 * a * b + y;
         a = a2 - b2 + x;
         a2 = a * a;
         b2 = b * b;
-        if (a2 + b2 > 4.0)
-            return Real(col) / Real(iterations);  // exterior: iteration ratio
+        const Real dist2 = a2 + b2;
+        if (dist2 < mindist2) mindist2 = dist2;
+        if (dist2 > 4.0) {
+            const Real e = f.exterior_factor;
+            switch (f.exterior_type) {
+                case 0:
+                    return e;
+                case 1:
+                    return Real(col) / Real(iterations);
+                case 2:
+                    return a * e;
+                case 3:
+                    return b * e;
+                case 4:
+                    return a * a * e;
+                case 5:
+                    return b * b * e;
+                case 6:
+                    return std::sqrt(a * a + b * b) * e;
+                case 7: {  // 0 .. (n-1)/n
+                    const auto n = unsigned(e);
+                    return n ? Real(unsigned(col) % n) / e : 0.0;
+                }
+                case 8: {  // 0 .. 1
+                    const auto n = unsigned(1 + e);
+                    return n ? Real(unsigned(col) % n) / e : 0.0;
+                }
+                default:
+                    return 0;
+            }
+        }
     }
-    return 1.0;  // interior factor
+    const Real i = f.interior_factor;
+    switch (f.interior_type) {
+        case 0:
+            return i;
+        case 1:
+            return std::sqrt(mindist2) * i;
+        case 2:
+            return a * i;
+        case 3:
+            return b * i;
+        case 4:
+            return a * a * i;
+        case 5:
+            return b * b * i;
+        case 6:
+            return a * a + b * b * i;  // sic
+        default:
+            return 0;
+    }
 }
 
 Real spiral_angle_term(const Point3& p, Real arms, Real& rad) {
@@ -411,7 +463,7 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
             return v * v;
         }
         case PatternKind::Mandel:
-            return mandel(p, int(s.scalar));
+            return mandel(p, int(s.scalar), s.fractal);
         case PatternKind::Marble: {
             Real t =
                 turb ? turb->turbulence.x * turbulence(p, turb_params(turb), gen) : 0.0;

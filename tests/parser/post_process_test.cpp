@@ -107,6 +107,30 @@ union { sphere { 0, 1 } sphere { x, 1 } split_union off }
               std::string::npos);
 }
 
+TEST(PostProcess, FractalColouringOnMandelOnly) {
+    Scene s =
+        parse("plane { z, 0 pigment { mandel 30 exterior 6, 0.5 interior 4 0.25 } }");
+    const PatternSpec& p = *s.objects[0].texture.front().pigment.pattern;
+    EXPECT_EQ(p.fractal.exterior_type, 6);
+    EXPECT_EQ(p.fractal.exterior_factor, 0.5);
+    EXPECT_EQ(p.fractal.interior_type, 4);
+    EXPECT_EQ(p.fractal.interior_factor, 0.25);
+    // A new mandel starts from POV-Ray's defaults.
+    s = parse(
+        "#declare P = pigment { mandel 30 exterior 6, 0.5 }\n"
+        "plane { z, 0 pigment { P mandel 20 } }");
+    EXPECT_EQ(s.objects[0].texture.front().pigment.pattern->fractal.exterior_type, 1);
+    EXPECT_NE(error_of("plane { z, 0 pigment { bozo exterior 1, 1 } }")
+                  .find("error: keyword 'exterior' can only be used in a mandel"),
+              std::string::npos);
+    EXPECT_NE(error_of("plane { z, 0 pigment { mandel 9 interior 7, 1 } }")
+                  .find("error: invalid fractal pattern interior type (0 to 6)"),
+              std::string::npos);
+    EXPECT_NE(error_of("plane { z, 0 pigment { mandel 9 exterior 9, 1 } }")
+                  .find("error: invalid fractal pattern exterior type (0 to 8)"),
+              std::string::npos);
+}
+
 TEST(PostProcess, OldFinishIorGoesIntoTheSharedInteriorAndTheLastSharerWins) {
     Scene s = parse(R"(
 union { sphere { 0, 1 } sphere { x, 1 finish { ior 1.2 refraction 0.5 } } interior { ior 1.5 } }

@@ -382,6 +382,24 @@ TEST(PatternVsPovray, MandelAndQuilted) {
     m.pattern.edit().transform =
         Transform::rotate({90, 0, 0});  // mandel lives in the x-y plane
     EXPECT_LE(max_pigment_error("mandel 25" + kGrey + " rotate x*90", m, view), kTol);
+    // Every exterior and interior colouring type (values outside 0..1 included).
+    struct Colouring {
+        int exterior, interior;
+        Real efactor, ifactor;
+    };
+    for (const Colouring& c :
+         {Colouring{0, 1, 0.7, 1.3}, Colouring{2, 2, 0.4, 0.9}, Colouring{3, 3, 0.5, 1.1},
+          Colouring{4, 4, 0.25, 2}, Colouring{5, 5, 0.3, 1.7}, Colouring{6, 6, 0.2, 0.6},
+          Colouring{7, 0, 4, 0.35}, Colouring{8, 1, 5, 0.5}}) {
+        Pigment f = m;
+        f.pattern.edit().fractal = {uint8_t(c.exterior), uint8_t(c.interior), c.efactor,
+                                    c.ifactor};
+        const std::string pov = "mandel 25 exterior " + std::to_string(c.exterior) +
+                                ", " + std::to_string(c.efactor) + " interior " +
+                                std::to_string(c.interior) + ", " +
+                                std::to_string(c.ifactor) + kGrey + " rotate x*90";
+        EXPECT_LE(max_pigment_error(pov, f, view), kTol) << pov;
+    }
     Pigment q = patterned(PatternKind::Quilted);
     q.pattern.edit().vector = {1, 1, 0};
     EXPECT_LE(max_pigment_error("quilted" + kGrey, q, view), kTol);
