@@ -163,6 +163,8 @@ class Interpreter {
     bool try_pattern_modifier(const Token& t, HeapValue<PatternSpec>& spec);
     Light parse_light_block();
     CameraSpec parse_camera_block();
+    // The rest of a camera block read as POV-Ray read it before 3.5, from `c`.
+    CameraSpec parse_legacy_camera(CameraSpec c);
     void parse_global_settings();
     Value parse_declared_value(const Token& first);
     Value parse_item_value(const Token& t);

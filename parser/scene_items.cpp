@@ -20,6 +20,18 @@ CameraSpec Interpreter::parse_camera_block() {
             c = *std::get<std::shared_ptr<CameraSpec>>(*v);
         }
     }
+    // POV-Ray tests the language version as set (its languageVersion), not the
+    // effective one: a scene without #version reads a 3.5+ camera.
+    if (version_ < 350) return parse_legacy_camera(c);
+    if (c.legacy) {
+        // A camera declared in an older part of the scene: its final vectors.
+        const Camera cam = finish_camera(c);
+        c.kind = cam.kind, c.location = cam.location, c.direction = cam.direction;
+        c.right = cam.right, c.up = cam.up, c.angle = cam.angle;
+        c.has_look_at = c.has_angle = false;
+        c.has_up = c.has_right = true;
+        c.legacy = false;
+    }
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) return c;
@@ -81,6 +93,106 @@ CameraSpec Interpreter::parse_camera_block() {
     }
 }
 
+// Before 3.5 POV-Ray applied each camera item where it stood (Parse_Camera's old-style
+// branch): look_at turns the vectors it finds, angle scales the direction it finds,
+// transforms move the location and turn direction, up and right (not sky) at once.
+CameraSpec Interpreter::parse_legacy_camera(CameraSpec c) {
+    constexpr double kEpsilon = 1e-10;
+    if (!c.legacy) {  // a camera declared in a 3.5+ part of the scene
+        const Camera cam = finish_camera(c);
+        c.kind = cam.kind, c.location = cam.location, c.direction = cam.direction;
+        c.right = cam.right, c.up = cam.up, c.angle = cam.angle;
+        c.transform = Transform{};
+        c.legacy = true;
+    }
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return c;
+        Transform tr;
+        if (try_transform(t, tr)) {
+            c.location = tr.point(c.location);
+            c.direction = tr.vector(c.direction);
+            c.up = tr.vector(c.up);
+            c.right = tr.vector(c.right);
+            continue;
+        }
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (w == "perspective") {
+            c.kind = Camera::Kind::Perspective;
+        } else if (w == "orthographic") {
+            c.kind = Camera::Kind::Orthographic;
+            // The same image area as the perspective camera, from where it stands now.
+            const double k1 = length(c.look_at - c.location), k2 = length(c.direction);
+            if (k1 > kEpsilon && k2 > kEpsilon) {
+                c.right = c.right * (k1 / k2);
+                c.up = c.up * (k1 / k2);
+            }
+        } else if (w == "fisheye") {
+            c.kind = Camera::Kind::Fisheye;
+        } else if (w == "ultra_wide_angle") {
+            c.kind = Camera::Kind::UltraWideAngle;
+        } else if (w == "panoramic") {
+            c.kind = Camera::Kind::Panoramic;
+        } else if (w == "omnimax") {
+            unsupported(t, "camera omnimax");
+        } else if (w == "mesh_camera") {
+            error(t, "this camera type is not supported for language version < 3.5");
+        } else if (w == "cylinder") {
+            const double n = parse_float();  // POV-Ray ignores other values here
+            static constexpr Camera::Kind kCylinders[] = {
+                Camera::Kind::Cylinder1, Camera::Kind::Cylinder2, Camera::Kind::Cylinder3,
+                Camera::Kind::Cylinder4};
+            if (int(n) >= 1 && int(n) <= 4) c.kind = kCylinders[int(n) - 1];
+        } else if (w == "angle") {
+            const Token at = peek();
+            c.angle = parse_float();
+            c.has_angle = true;
+            if (c.angle < 0) error(at, "negative viewing angle");
+            if (c.kind == Camera::Kind::Perspective) {
+                if (c.angle >= 180) error(at, "camera angle must be below 180 degrees");
+                const double len = length(c.right) / std::tan(c.angle * kPi / 360) / 2;
+                c.direction = normalize(c.direction) * len;
+            }
+        } else if (w == "normal") {
+            unsupported(t, "camera normal");
+        } else if (w == "location") {
+            c.location = parse_vector();
+        } else if (w == "direction") {
+            c.direction = parse_vector();
+        } else if (w == "up") {
+            c.up = parse_vector();
+        } else if (w == "right") {
+            c.right = parse_vector();
+        } else if (w == "sky") {
+            c.sky = parse_vector();
+        } else if (w == "look_at") {
+            const double dl = length(c.direction), ul = length(c.up),
+                         rl = length(c.right);
+            const double handed = dot(cross(c.up, c.direction), c.right);
+            const Token at = peek();
+            c.look_at = parse_vector();
+            c.has_look_at = true;
+            Vector3 d = c.look_at - c.location;
+            if (dot(d, d) < kEpsilon)
+                error(at, "camera location and look_at point must be different");
+            d = normalize(d);
+            Vector3 r = cross(c.sky, d);
+            if (std::fabs(r.x) < kEpsilon && std::fabs(r.y) < kEpsilon &&
+                std::fabs(r.z) < kEpsilon)
+                r = c.right;
+            r = normalize(r);
+            c.up = cross(d, r) * ul;
+            c.direction = d * dl;
+            c.right = r * (handed > 0 ? rl : -rl);
+        } else if (w == "aperture" || w == "blur_samples" || w == "focal_point" ||
+                   w == "confidence" || w == "variance") {
+            unsupported(t, "focal blur");
+        } else {
+            expected("a camera item or '}'", t);
+        }
+    }
+}
+
 // POV-Ray 3.5+ applies the camera items in a fixed order whatever the order in the file:
 // right, direction, angle, up, sky, location, look_at, then transforms (Parse_Camera).
 Camera Interpreter::finish_camera(const CameraSpec& s) {
@@ -88,6 +200,14 @@ Camera Interpreter::finish_camera(const CameraSpec& s) {
     Camera cam;
     cam.kind = s.kind;
     cam.loc = s.loc;
+    if (s.legacy) {
+        cam.location = s.location;
+        cam.direction = s.direction;
+        cam.right = s.right;
+        cam.up = s.up;
+        cam.angle = s.angle;
+        return cam;
+    }
     Vector3 right = s.right, direction = s.direction, up = s.up;
     bool projective =
         s.kind == Camera::Kind::Perspective || s.kind == Camera::Kind::Orthographic;

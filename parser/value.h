@@ -91,6 +91,10 @@ struct CameraSpec {
     Vector3 location{0, 0, 0}, direction{0, 0, 1}, right{1.33, 0, 0}, up{0, 1, 0};
     Vector3 sky{0, 1, 0}, look_at{0, 0, 1};
     bool has_look_at = false, has_angle = false, has_up = false, has_right = false;
+    // Read while the language version was below 3.5: every item was applied where it
+    // stood (POV-Ray's old-style camera), so the vectors above are final and `transform`
+    // is unused.
+    bool legacy = false;
     double angle = 90;
     Transform transform;
     SourceLoc loc;

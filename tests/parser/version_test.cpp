@@ -5,6 +5,7 @@
 // goes.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "parser/parser.h"
@@ -30,6 +31,33 @@ std::string error_of(const std::string& text) {
         return e.what();
     }
     return "(no error)";
+}
+
+// Below 3.5 each camera item applies where it stands; POV-Ray asks the version as set,
+// so a scene without #version (effective 3.62) has the 3.5+ fixed order.
+TEST(Version, CameraItemsApplyInWrittenOrderBelowThreeFive) {
+    const std::string camera =
+        "camera { look_at <5, 0, 0> location <0, 0, -5> translate x angle 60 }\n";
+    Scene old = parse("#version 3.1;\n" + camera);
+    // look_at turned the camera standing at the origin toward +x, location then moved it
+    // without turning it, translate moved it again, and angle rescaled the direction.
+    EXPECT_DOUBLE_EQ(old.camera.location.x, 1);
+    EXPECT_DOUBLE_EQ(old.camera.location.z, -5);
+    EXPECT_NEAR(old.camera.direction.x, 1.33 / std::tan(kPi / 6) / 2, 1e-12);
+    EXPECT_NEAR(old.camera.direction.z, 0, 1e-12);
+    // No #version: 3.5+ order, look_at from the location.
+    Scene modern = parse(camera);
+    EXPECT_EQ(modern.language_version, 362);
+    EXPECT_NEAR(modern.camera.direction.x, modern.camera.direction.z, 1e-12);
+    // A turn after look_at turns the old camera's vectors and location at once.
+    Scene turned = parse(
+        "#version 3.0;\ncamera { location <0, 0, -5> look_at 0 "
+        "rotate <0, 90, 0> }");
+    EXPECT_NEAR(turned.camera.location.x, -5, 1e-12);
+    EXPECT_NEAR(turned.camera.direction.x, 1, 1e-12);
+    EXPECT_NE(error_of("#version 3.1;\ncamera { angle -1 }")
+                  .find("error: negative viewing angle"),
+              std::string::npos);
 }
 
 TEST(Version, ReadsThreeSevenBeforeAnyDirectiveButTheSceneStaysLegacy) {
