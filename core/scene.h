@@ -291,10 +291,15 @@ struct Mesh {
     struct Face {
         uint32_t v[3];
         int32_t n[3] = {-1, -1, -1};
+        // Index into `textures`; -1: the mesh's texture; -2 - k: the three textures of
+        // texture_triples[k] (rare, so kept out of every face).
         int32_t texture = -1;
     };
     std::vector<Face> faces;
     std::vector<LayeredTexture> textures;  // per-face textures (mesh2 texture_list)
+    // Faces with a texture per corner (mesh2 `<a, b, c>, t0, t1, t2`, a mesh triangle's
+    // texture_list): POV-Ray blends them by the hit's barycentric weights.
+    std::vector<std::array<int32_t, 3>> texture_triples;
     HeapOptional<Vector3> inside_vector;   // only a mesh with one is solid
 };
 

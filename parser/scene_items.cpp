@@ -562,8 +562,27 @@ void Interpreter::parse_mesh(Object& out) {
             if (is_word(m, "texture")) {
                 mesh.textures.push_back(parse_texture_block());
                 face.texture = int32_t(mesh.textures.size()) - 1;
+            } else if (is_word(m, "texture_list")) {
+                // Three texture identifiers, one per corner, blended (POV-Ray's
+                // Parse_Mesh_Texture); this ends the triangle's items.
+                expect_punct('{', "after 'texture_list'");
+                std::array<int32_t, 3> triple;
+                for (int k = 0; k < 3; ++k) {
+                    if (k) accept_punct(',');
+                    Token id = next();
+                    const Value* v = id.kind == TokenKind::Word ? lookup(id) : nullptr;
+                    auto tex = v ? std::get_if<std::shared_ptr<LayeredTexture>>(v) : nullptr;
+                    if (!tex) expected("a texture identifier", id);
+                    mesh.textures.push_back(**tex);
+                    triple[size_t(k)] = int32_t(mesh.textures.size()) - 1;
+                }
+                expect_punct('}', "after the three textures");
+                mesh.texture_triples.push_back(triple);
+                face.texture = -2 - int32_t(mesh.texture_triples.size() - 1);
+                expect_punct('}', "to close the mesh triangle");
+                break;
             } else {
-                expected("texture or '}' in a mesh triangle", m);
+                expected("texture, texture_list or '}' in a mesh triangle", m);
             }
         }
         // Degenerate triangles are dropped silently, as POV-Ray does in meshes.
@@ -715,6 +734,9 @@ void Interpreter::parse_mesh2(Object& out) {
                     }
                     f.v[k] = uint32_t(v[k]);
                 }
+                std::array<int32_t, 3> indices;
+                int given = 0;
+                Token second_at;
                 // Up to three texture indices may follow (`<a,b,c>[,] t0[,] t1[,] t2`),
                 // each a float. Plain numbers are read on the raw stream so that the fast
                 // path for the next face stays available.
@@ -745,7 +767,17 @@ void Interpreter::parse_mesh2(Object& out) {
                     }
                     if (!(index >= 0 && index < double(mesh.textures.size())))
                         error(index_at, "mesh2 texture index out of range");
-                    if (k == 0) f.texture = int32_t(index);
+                    indices[size_t(given++)] = int32_t(index);
+                    if (given == 2) second_at = index_at;
+                }
+                // POV-Ray blends a face with a second index as one with three, and then
+                // reads a texture before its list for the missing third.
+                if (given == 2)
+                    unsupported(second_at, "mesh2 face with two texture indices");
+                if (given == 1) f.texture = indices[0];
+                if (given == 3) {
+                    mesh.texture_triples.push_back(indices);
+                    f.texture = -2 - int32_t(mesh.texture_triples.size() - 1);
                 }
                 mesh.faces.push_back(f);  // degenerate ones are dropped at the end
             }

@@ -306,12 +306,18 @@ Bounds3 object_bounds(const Object& o) {
     return world;
 }
 
+size_t blend_faces(const Mesh& m) {
+    if (m.texture_triples.empty()) return 0;
+    return size_t(std::count_if(m.faces.begin(), m.faces.end(),
+                                [](const Mesh::Face& f) { return f.texture <= -2; }));
+}
+
 size_t count_leaves(const Object& o) {
     size_t n = 1;
     if (auto c = std::get_if<Csg>(&o.shape)) {
         for (const auto& ch : c->children) n += count_leaves(ch);
     }
-    if (auto m = std::get_if<Mesh>(&o.shape)) n += m->textures.size();
+    if (auto m = std::get_if<Mesh>(&o.shape)) n += m->textures.size() + blend_faces(*m);
     return n;
 }
 
@@ -435,6 +441,16 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
         for (const Object& o : l.looks_like) leaves += count_leaves(o);
     }
     materials_.reserve(leaves + 1);
+    size_t blends = 0;
+    auto count_blends = [&](auto& self, const Object& o) -> void {
+        if (auto m = std::get_if<Mesh>(&o.shape)) blends += blend_faces(*m);
+        if (auto c = std::get_if<Csg>(&o.shape))
+            for (const Object& ch : c->children) self(self, ch);
+    };
+    for (const Object* o : objects) count_blends(count_blends, *o);
+    for (const Light& l : scene.lights)
+        for (const Object& o : l.looks_like) count_blends(count_blends, o);
+    blends_.reserve(blends);  // materials point into it
     for (const Object* o : objects) add_object(*o, nullptr);
     // A light's looks_like object is visible but casts no shadow (it would block its
     // light).
@@ -555,7 +571,7 @@ size_t PreparedScene::resident_bytes() const {
     return sizeof(*this) + bytes(materials_) + bytes(kind_) + bytes(index_) +
            bytes(material_) + bytes(bounds_) + bytes(spheres_) + bytes(triangles_) +
            bytes(planes_) + bytes(objects_) + bytes(unbounded_) + bytes(leaf_materials_) +
-           bytes(pov_) + lanes_.bytes() +
+           bytes(pov_) + bytes(blends_) + lanes_.bytes() +
            size_t(ts.nodes) * sizeof(octree::Octree::Node) +
            ts.references * sizeof(uint32_t) +
            (ts.dense_top > 0 ? (size_t(1) << (3 * ts.dense_top)) : 0) *
@@ -585,11 +601,56 @@ Material material_of(const Object& o, const LayeredTexture& texture) {
     return m;
 }
 
+namespace {
+
+// How far from corner `a` toward the side b-c the point `q` lies (0 at a, 1 on the side),
+// as POV-Ray's smooth-triangle helper finds it: the line from a through q meets the side
+// at b + s (c - b); each step solves in the first pair of axes whose determinant is not
+// below EPSILON (1e-10, absolute).
+Real corner_fraction(const Point3& q, const Point3& a, const Point3& b, const Point3& c) {
+    constexpr Real kEpsilon = 1e-10;
+    const Vector3 qa = q - a, cb = b - c, ba = b - a;
+    // Determinants of the pairs (x, y), (x, z), (y, z) of the two directions q - a and
+    // b - c.
+    const Real dxy = qa.x * cb.y - qa.y * cb.x, dxz = qa.x * cb.z - qa.z * cb.x,
+               dyz = qa.y * cb.z - qa.z * cb.y;
+    Real s;
+    if (dxy * dxy >= kEpsilon)
+        s = (qa.x * ba.y - qa.y * ba.x) / dxy;
+    else if (dxz * dxz >= kEpsilon)
+        s = (qa.x * ba.z - qa.z * ba.x) / dxz;
+    else if (dyz * dyz >= kEpsilon)
+        s = (qa.y * ba.z - qa.z * ba.y) / dyz;
+    else
+        return 0;  // q too close to a to tell
+    const Vector3 side = (b + (c - b) * s) - a;  // from a to where the line meets b-c
+    if (side.x * side.x >= kEpsilon) return qa.x / side.x;
+    if (side.y * side.y >= kEpsilon) return qa.y / side.y;
+    if (side.z * side.z >= kEpsilon) return qa.z / side.z;
+    return 0;
+}
+
+}  // namespace
+
+void blend_weights(const TextureBlend& b, const Point3& world, float (&w)[3]) {
+    const Object& mesh = *b.mesh;
+    const Point3 q = mesh.transform.is_identity() ? world : mesh.transform.inverse_point(world);
+    const Point3* p = b.points;
+    // In POV-Ray's precision: the fractions and weights are single-precision colour
+    // values.
+    for (int k = 0; k < 3; ++k)
+        w[k] = float(1.0 - double(float(
+                               corner_fraction(q, p[k], p[(k + 1) % 3], p[(k + 2) % 3]))));
+    const float inverse = float(1.0 / double(w[0] + w[1] + w[2]));
+    for (float& x : w) x *= inverse;
+}
+
 Material interior_side(const Material& m) {
     Material in = m;
     const LayeredTexture& texture = *m.interior_texture;
     in.texture = &texture;
     in.interior_texture = nullptr;
+    in.blend = nullptr;  // the interior texture takes the place of the corners' too
     in.plain = texture_is_plain(texture);
     if (in.plain) {
         in.plain_colour = texture.front().pigment.colour;
@@ -673,6 +734,36 @@ void PreparedScene::add_object(const Object& o, const Material*) {
         const bool mirrored =
             dot(cross(o.transform.vector({1, 0, 0}), o.transform.vector({0, 1, 0})),
                 o.transform.vector({0, 0, 1})) < 0;
+        // A face with a texture per corner: its own material, blending the corners'.
+        auto blend_material = [&](const Mesh::Face& f) {
+            const auto& triple = m->texture_triples[size_t(-2 - f.texture)];
+            TextureBlend b;
+            b.mesh = &o;
+            Material mm = material_of(o, o.texture);
+            mm.plain = false;
+            for (int k = 0; k < 3; ++k) {
+                b.points[k] = single_precision(m->vertices[f.v[k]]);
+                b.corners[k] = &materials_[face_materials[size_t(triple[size_t(k)])]];
+                mm.opaque = mm.opaque && b.corners[k]->opaque;
+            }
+            // POV-Ray turns some triangles by swapping their first two corners (with
+            // their textures) where the dominant axis of (p2 - p0) x (p1 - p0) wants
+            // it; the weights are found from the corners in that order.
+            const Point3* p = b.points;
+            const Vector3 n = cross(p[2] - p[0], p[1] - p[0]);
+            const Real ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
+            const int axis = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+            const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
+            if ((p[1][u] - p[2][u]) * (p[1][v] - p[0][v]) <
+                (p[1][v] - p[2][v]) * (p[1][u] - p[0][u])) {
+                std::swap(b.points[0], b.points[1]);
+                std::swap(b.corners[0], b.corners[1]);
+            }
+            blends_.push_back(b);
+            mm.blend = &blends_.back();
+            materials_.push_back(mm);
+            return uint32_t(materials_.size()) - 1;
+        };
         for (const auto& f : m->faces) {
             TrianglePrim tri;
             tri.mirrored = mirrored;
@@ -688,7 +779,8 @@ void PreparedScene::add_object(const Object& o, const Material*) {
             }
             uint32_t mat = (f.texture >= 0 && size_t(f.texture) < face_materials.size())
                                ? face_materials[f.texture]
-                               : base;
+                           : f.texture <= -2 ? blend_material(f)
+                                             : base;
             triangles_.push_back(tri);
             push(PrimKind::Triangle, uint32_t(triangles_.size()) - 1, mat, b, mesh_pov);
         }

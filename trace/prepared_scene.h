@@ -23,6 +23,8 @@ inline uintptr_t interior_key(const Object& o) {
                                              : reinterpret_cast<uintptr_t>(&o);
 }
 
+struct TextureBlend;
+
 struct Material {
     const LayeredTexture* texture = nullptr;
     // The object's interior_texture (null: none): what a hit on the inside of its surface
@@ -41,7 +43,22 @@ struct Material {
     bool plain = false;
     Colour plain_colour;
     Finish plain_finish;
+    // A mesh face with a texture per corner (null: none): shading blends the three
+    // corners' materials (see blend_weights()); `texture` is unused then.
+    const TextureBlend* blend = nullptr;
 };
+
+// A mesh face with three textures (Mesh::texture_triples): POV-Ray blends them by the
+// hit's weights toward each corner (Mesh::Determine_Textures), in mesh space.
+struct TextureBlend {
+    const Material* corners[3] = {};  // each corner's texture, as a face material
+    Point3 points[3];                 // mesh space, single precision, POV-Ray's order
+    const Object* mesh = nullptr;
+};
+// The three weights at a world point, normalised to sum 1 (POV-Ray's: each is 1 - the
+// fraction of the way from its corner to the opposite side, in the triangle's plane, with
+// POV-Ray's absolute EPSILON tests, so corners of tiny triangles weigh alike).
+void blend_weights(const TextureBlend& b, const Point3& world, float (&w)[3]);
 
 // The material of object `o` seen with `texture` (its own, or a mesh face's).
 Material material_of(const Object& o, const LayeredTexture& texture);
@@ -184,6 +201,7 @@ class PreparedScene {
     PatternEnv env_;
     bool alpha_background_ = false;
     std::vector<Material> materials_;  // reserved up front: pointers stay valid
+    std::vector<TextureBlend> blends_;  // the same
     // Per primitive id.
     std::vector<PrimKind> kind_;
     std::vector<uint32_t> index_, material_;

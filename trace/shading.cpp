@@ -228,10 +228,48 @@ Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray) {
 
 namespace {
 
+// Shades `hit` once with each of `n` stand-in materials and merges the records with
+// their weights (POV-Ray sums the weighted colours of the textures it finds for a hit);
+// children keep combining linearly, and their interior stacks name the hit's own material,
+// not the stand-ins. `out.fog` is kept.
+void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
+                    const Material* const* subs, const float* weights, int n,
+                    ShadingRecord& out) {
+    FogEffect fog = out.fog;
+    Rgb local;
+    // A deque keeps references valid while nested texture maps grow it.
+    thread_local std::deque<ShadingRecord> scratch_pool;
+    thread_local size_t depth = 0;
+    if (scratch_pool.size() <= depth) scratch_pool.resize(depth + 1);
+    std::vector<ChildRay> children;
+    for (int e = 0; e < n; ++e) {
+        const float w = weights[e];
+        Hit h = hit;
+        h.material = subs[e];
+        ++depth;
+        ShadingRecord& rec = scratch_pool[depth - 1];
+        spawn_children(scene, ray, h, rec);
+        --depth;
+        local += rec.local * w;
+        for (ChildRay c : rec.children) {
+            c.coeff *= w;
+            c.transmit_factor *= w;
+            for (int k = 0; k < c.trace.interiors.size && k < InteriorStack::kCapacity;
+                 ++k) {
+                if (c.trace.interiors.items[k] == subs[e])
+                    c.trace.interiors.items[k] = hit.material;
+            }
+            children.push_back(c);
+        }
+    }
+    out.clear();
+    out.fog = fog;
+    out.local = local;
+    out.children = std::move(children);
+}
+
 // A texture_map (or checker/hexagon/brick of textures) as the object's texture: POV-Ray
-// blends the final colours of the two entries around the pattern value. Both entries are
-// shaded and their records merged with the blend weights; children keep combining
-// linearly.
+// blends the final colours of the two entries around the pattern value.
 bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                        ShadingRecord& out) {
     const Material& m = *hit.material;
@@ -244,43 +282,43 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
         pick_map_entries(*t.map_pattern, has_values ? t.map->values.data() : nullptr,
                          count, hit.point, scene.pattern_env());
     const int entries[2] = {pick.lookup.prev, pick.lookup.cur};
-    const float weights[2] = {float(1 - pick.lookup.fraction),
-                              float(pick.lookup.fraction)};
-    FogEffect fog = out.fog;
-    Rgb local;
-    // A deque keeps references valid while nested texture maps grow it.
-    thread_local std::deque<ShadingRecord> scratch_pool;
-    thread_local size_t depth = 0;
-    if (scratch_pool.size() <= depth) scratch_pool.resize(depth + 1);
-    std::vector<ChildRay> children;
+    const float fraction = float(pick.lookup.fraction);
+    Material subs[2] = {m, m};
+    const Material* used[2];
+    float weights[2];
+    int n = 0;
     for (int e = 0; e < 2; ++e) {
-        if (weights[e] <= 0) continue;
+        const float w =
+            entries[1] == entries[0] ? 1.0f : (e == 0 ? float(1 - pick.lookup.fraction)
+                                                      : fraction);
+        if ((e == 0 ? float(1 - pick.lookup.fraction) : fraction) <= 0) continue;
         if (e == 1 && entries[1] == entries[0]) continue;
-        int index = std::clamp(entries[e], 0, count - 1);
-        float w = (entries[1] == entries[0]) ? 1.0f : weights[e];
-        Material sub = m;
-        sub.texture = &t.map->entries[size_t(index)];
-        Hit h = hit;
-        h.material = &sub;
-        ++depth;
-        ShadingRecord& rec = scratch_pool[depth - 1];
-        spawn_children(scene, ray, h, rec);
-        --depth;
-        local += rec.local * w;
-        for (ChildRay c : rec.children) {
-            c.coeff *= w;
-            c.transmit_factor *= w;
-            // Interior stacks must name the object's own material, not this stand-in.
-            for (int k = 0; k < c.trace.interiors.size; ++k) {
-                if (c.trace.interiors.items[k] == &sub) c.trace.interiors.items[k] = &m;
-            }
-            children.push_back(c);
-        }
+        subs[e].texture = &t.map->entries[size_t(std::clamp(entries[e], 0, count - 1))];
+        used[n] = &subs[e];
+        weights[n++] = w;
     }
-    out.clear();
-    out.fog = fog;
-    out.local = local;
-    out.children = std::move(children);
+    spawn_weighted(scene, ray, hit, used, weights, n, out);
+    return true;
+}
+
+// A mesh face with a texture per corner: the corners' textures, weighted toward the hit
+// (textures below adc_bailout left out, as POV-Ray's ComputeTextureColour does).
+bool spawn_corner_blend(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
+                        ShadingRecord& out) {
+    const TextureBlend* b = hit.material->blend;
+    if (!b) return false;
+    float w[3];
+    blend_weights(*b, hit.point, w);
+    const float adc = scene.scene().settings.adc_bailout;
+    const Material* used[3];
+    float weights[3];
+    int n = 0;
+    for (int k = 0; k < 3; ++k) {
+        if (w[k] < adc) continue;
+        used[n] = b->corners[k];
+        weights[n++] = w[k];
+    }
+    spawn_weighted(scene, ray, hit, used, weights, n, out);
     return true;
 }
 
@@ -316,6 +354,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         }
         if (hollow) out.fog = fog_effect(scene.scene(), ray.ray, hit.t);
     }
+    if (spawn_corner_blend(scene, ray, hit, out)) return;
     if (spawn_texture_map(scene, ray, hit, out)) return;
     const Scene& sc = scene.scene();
     const Material& m = *hit.material;
@@ -726,9 +765,25 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
         const Material& m = *hit.material;
         bool black = m.opaque;
         if (!black && shows_interior_texture(m, hit, ray)) {
-            state.filter *=
-                shadow_filter(scene, *m.interior_texture,
-                              m.interior ? m.interior->caustics : 0.0f, hit, ray);
+            state.filter *= shadow_filter(scene, *m.interior_texture,
+                                          m.interior ? m.interior->caustics : 0.0f, hit, ray);
+        } else if (!black && m.blend) {
+            // The corners' filters weighted (POV-Ray sums the weighted shadow colours,
+            // whose filter is the sum of the weights used).
+            float w[3];
+            blend_weights(*m.blend, hit.point, w);
+            const float adc = scene.scene().settings.adc_bailout;
+            Rgb sum{0.0f};
+            float used = 0;
+            for (int k = 0; k < 3; ++k) {
+                if (w[k] < adc) continue;
+                const Material& c = *m.blend->corners[k];
+                sum += shadow_filter(scene, texture_of(c),
+                                     m.interior ? m.interior->caustics : 0.0f, hit, ray) *
+                       w[k];
+                used += w[k];
+            }
+            state.filter *= sum * used;
         } else if (!black && m.plain) {
             state.filter *= rgb_transm(m.plain_colour);
             if (m.interior && m.interior->caustics != 0)

@@ -496,7 +496,7 @@ sphere { 0, 1 pigment { color rgb <1, 0.6, 0.3> } }
             "  1 bounded primitives (< 24): no octree, a flat list\n"
             "  shading is linear: contributions go straight to the pixel, no parent "
             "table\n"
-            "  scene 0.7 KB fits the 1.0 GB worker budget: one process, no walls; 2 "
+            "  scene 0.8 KB fits the 1.0 GB worker budget: one process, no walls; 2 "
             "threads take image rows as they finish (screen subdivision, one shared "
             "scene)\n");
     std::ifstream in(stats);

@@ -241,7 +241,10 @@ TEST(Commas, Mesh2TextureIndices) {
         const Mesh& mesh = std::get<Mesh>(s.objects[0].shape);
         ASSERT_EQ(mesh.faces.size(), 2u) << faces;
         EXPECT_EQ(mesh.faces[0].texture, 1) << faces;
-        EXPECT_EQ(mesh.faces[1].texture, 0) << faces;
+        // Three indices: a texture per corner, blended by the hit's barycentrics.
+        EXPECT_EQ(mesh.faces[1].texture, -2) << faces;
+        ASSERT_EQ(mesh.texture_triples.size(), 1u) << faces;
+        EXPECT_EQ(mesh.texture_triples[0], (std::array<int32_t, 3>{0, 1, 1})) << faces;
     }
     // An index may be any float expression.
     Scene s = parse("#declare T = 1;\n" + head + "<0 1 2> T <0,1,2>, T-1 } }");
@@ -249,6 +252,9 @@ TEST(Commas, Mesh2TextureIndices) {
     EXPECT_EQ(std::get<Mesh>(s.objects[0].shape).faces[1].texture, 0);
     EXPECT_EQ(error_of(head + "<0 1 2> 0 2 <0 1 2> } }"),
               "test.pov:1:142: error: mesh2 texture index out of range");
+    // Two indices: POV-Ray reads the third from a texture written before the list.
+    EXPECT_EQ(error_of(head + "<0 1 2> 0 1 <0 1 2> 1 } }"),
+              "test.pov:1:142: error: unsupported: mesh2 face with two texture indices");
 }
 
 TEST(Commas, MapsListsSplinesAndDirectives) {
