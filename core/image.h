@@ -42,6 +42,9 @@ struct StoredImage {
     // Encoding gamma the file declares (PNG gAMA chunk), as a decoding exponent; 0: none
     // (PNG without gAMA: sRGB as POV-Ray assumes).
     float declared_gamma = 0;
+    // A palette image (GIF, palette PNG, BMP of up to 8 bits, colour-mapped TGA): POV-Ray
+    // keeps its indices, which some of its options read (bump_map use_index).
+    bool colour_mapped = false;
 };
 
 // Reads an image file; throws std::runtime_error with a message naming the problem. The

@@ -609,10 +609,14 @@ Value ExpressionParser::word(const Token& t) {
     }
     if (w == "file_exists") {
         in_.expect_punct('(');
+        const Token at = in_.peek();
         std::string s = arg_string();
         in_.expect_punct(')');
+        // Where #fopen would find it for reading (POV-Ray: Locate_File, as for reading).
         std::error_code ec;
-        return Numeric::scalar(std::filesystem::exists(s, ec) ? 1 : 0);
+        if (std::filesystem::path(s).is_absolute() || s.empty())
+            return Numeric::scalar(std::filesystem::is_regular_file(s, ec) ? 1 : 0);
+        return Numeric::scalar(in_.user_file_path(s, false, at).empty() ? 0 : 1);
     }
     if (w == "defined") {
         in_.expect_punct('(');
@@ -652,7 +656,8 @@ Value ExpressionParser::word(const Token& t) {
     }
     if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" ||
         w == "rgbft" || w == "srgb" || w == "srgbf" || w == "srgbt" || w == "srgbft" ||
-        w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") {
+        w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit" ||
+        w == "alpha") {
         in_.unget(t);
         return in_.parse_colour();
     }

@@ -6,6 +6,7 @@
 // is not a comma, and an identifier holding a 2-, 4- or 5-component vector cannot be read
 // into. Writing: strings as they are, floats with printf's %g, vectors as
 // "<%g,...> " (with the space after '>').
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -45,6 +46,49 @@ std::string describe_value(const Value& v) {
     if (!n || n->size == 1) return std::string("a ") + type_name(v);
     if (n->colour) return "a colour";
     return "a " + std::to_string(n->size) + "-component vector";
+}
+
+// The raw integer formats of #write (POV-Ray 3.7: sint8 ... uint16be).
+struct BinaryFormat {
+    std::string_view keyword;
+    int64_t min, max;
+    int bytes;
+    bool big_endian;
+};
+constexpr BinaryFormat kBinaryFormats[] = {
+    {"sint8", -128, 127, 1, false},
+    {"uint8", 0, 255, 1, false},
+    {"sint16le", -32768, 32767, 2, false},
+    {"sint16be", -32768, 32767, 2, true},
+    {"uint16le", 0, 65535, 2, false},
+    {"uint16be", 0, 65535, 2, true},
+    {"sint32le", -2147483648LL, 2147483647LL, 4, false},
+    {"sint32be", -2147483648LL, 2147483647LL, 4, true},
+};
+
+const BinaryFormat* binary_format(const Token& t) {
+    if (t.kind != TokenKind::Word) return nullptr;
+    for (const BinaryFormat& f : kBinaryFormats) {
+        if (t.text == f.keyword) return &f;
+    }
+    return nullptr;
+}
+
+void write_binary(const BinaryFormat& f, const Numeric& n, std::ostream& out) {
+    for (int i = 0; i < n.size; ++i) {
+        const double x = n.c[i];
+        int64_t v;
+        if (!(x > double(f.min)))  // NaN writes the minimum, as POV-Ray's comparisons
+            v = f.min;
+        else if (x >= double(f.max))
+            v = f.max;
+        else
+            v = int64_t(std::floor(x + 0.5));
+        for (int j = 0; j < f.bytes; ++j) {
+            const int shift = (f.big_endian ? f.bytes - 1 - j : j) * 8;
+            out.put(char((uint64_t(v) >> shift) & 0xFF));
+        }
+    }
 }
 
 }  // namespace
@@ -290,6 +334,23 @@ void Interpreter::directive_write(const Token& t) {
         if (accept_punct(')')) break;
         if (accept_punct(',')) continue;
         const Token at = peek();
+        if (const BinaryFormat* format = binary_format(at)) {
+            // `uint8 V`, `sint16le <a, b>`...: each component rounded, clamped to the
+            // type's range and written as raw bytes, until the next ',' or ')'.
+            next();
+            do {
+                const Token value_at = peek();
+                const Value v = parse_expression_value();
+                const Numeric* n = std::get_if<Numeric>(&v);
+                if (!n)
+                    error(value_at,
+                          std::string("#write: expected a float or vector after '") +
+                              std::string(at.text) + "' but found " + type_name(v));
+                if (out) write_binary(*format, *n, *out);
+            } while (!(peek().kind == TokenKind::Punct &&
+                       (peek().text == "," || peek().text == ")")));
+            continue;
+        }
         Value v = parse_expression_value();
         std::string text;
         if (auto s = std::get_if<std::string>(&v)) {

@@ -35,10 +35,10 @@ struct FileType {
     const char* keyword;
     const char* extension;
 };
-constexpr FileType kFileTypes[] = {{"png", ".png"},  {"tga", ".tga"}, {"ppm", ".ppm"},
-                                   {"pgm", ".pgm"},  {"gif", ".gif"}, {"jpeg", ".jpg"},
-                                   {"tiff", ".tif"}, {"bmp", ".bmp"}, {"exr", ".exr"},
-                                   {"hdr", ".hdr"},  {"iff", ".iff"}, {"sys", ""}};
+constexpr FileType kFileTypes[] = {
+    {"png", ".png"},  {"tga", ".tga"},  {"ppm", ".ppm"}, {"pgm", ".pgm"}, {"gif", ".gif"},
+    {"jpeg", ".jpg"}, {"tiff", ".tif"}, {"bmp", ".bmp"}, {"exr", ".exr"}, {"hdr", ".hdr"},
+    {"iff", ".iff"},  {"sys", ""},      {"pot", ".pot"}};
 
 }  // namespace
 
@@ -53,7 +53,8 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
     }
     if (type) {
         if (std::string_view(type->keyword) == "iff" ||
-            std::string_view(type->keyword) == "sys")
+            std::string_view(type->keyword) == "sys" ||
+            std::string_view(type->keyword) == "pot")
             unsupported(first, std::string("image file type ") + type->keyword);
         next();
     } else if (first.kind == TokenKind::Word && first.text == "function") {
@@ -95,6 +96,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
     auto mapping = std::make_shared<ImageMapping>();
     mapping->path = path;
     image_files_.push_back(path);
+    bool colour_mapped = false;
     if (options_.image_reader) {
         StoredImage stored;
         try {
@@ -118,9 +120,11 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         Curve file;
         if (correct) {
             const std::string& f = stored.format;
-            if (f == "pnm" || f == "openexr" || f == "hdr") {
-                // Netpbm files may or may not be encoded; HDR formats are linear.
-                if (fallback && (f == "pnm" || explicit_gamma)) file = *fallback;
+            if (f == "pnm" || f == "tiff" || f == "openexr" || f == "hdr") {
+                // Netpbm and TIFF files are linear unless a gamma is assumed (3.6 mode)
+                // or given; HDR formats are linear unless one is given.
+                if (fallback && (f == "pnm" || f == "tiff" || explicit_gamma))
+                    file = *fallback;
             } else if (f == "png" && !explicit_gamma && stored.declared_gamma > 0) {
                 file = power(stored.declared_gamma);
             } else {
@@ -145,6 +149,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             d[3] = 0;
             d[4] = stored.has_alpha ? 1.0f - s[3] : 0.0f;
         }
+        colour_mapped = stored.colour_mapped;
         mapping->pixels = std::move(px);
         mapping->width = mapping->pixels->width;
         mapping->height = mapping->pixels->height;
@@ -177,6 +182,10 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         } else if (w == "use_color" || w == "use_colour") {
             mapping->use_index = false;
         } else if (w == "use_index") {
+            // A bump map of palette indices takes each index itself as the height; of
+            // other images, the colours' grey (POV-Ray 3.7's bump_map).
+            if (is_bump && colour_mapped)
+                unsupported(t, "bump_map use_index on a palette image");
             mapping->use_index = true;
         } else if (w == "repeat") {
             Token at = peek();
@@ -190,10 +199,12 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             mapping->offset_v = -ov * (mapping->pixels ? mapping->pixels->height : 0);
         } else if (is_bump && w == "bump_size") {
             bump->amount = parse_float();
-        } else if (!is_bump && (w == "filter" || w == "transmit")) {
+        } else if (!is_bump && (w == "filter" || w == "transmit" || w == "alpha")) {
+            if (w == "alpha")
+                warn(t, "keyword 'alpha' discontinued; use 'filter' instead");
             if (accept_word("all")) {
                 float v = float(parse_float());
-                (w == "filter" ? mapping->all_filter : mapping->all_transmit) = v;
+                (w == "transmit" ? mapping->all_transmit : mapping->all_filter) = v;
             } else {
                 // Per-index values need a colour-mapped (palette) image; OpenImageIO
                 // expands palettes, so every image is read as true colour here.

@@ -231,6 +231,8 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         obj.no_reflection = parse_bool_opt();
     } else if (w == "no_radiosity") {
         parse_bool_opt();  // radiosity rays: povwall renders no radiosity
+    } else if (w == "dtag") {
+        parse_string();  // a debugging tag: POV-Ray's release builds drop it
     } else if (w == "hierarchy") {
         // Bounding inside meshes (blobs, height fields): the image is the same.
         if (!std::holds_alternative<Mesh>(obj.shape))
@@ -491,13 +493,16 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             else
                 parse_mesh2(out);
         }
-    } else if (w == "union" || w == "merge" || w == "intersection" || w == "difference") {
+    } else if (w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
+               w == "composite") {
         open();
+        // POV-Ray 3.7 reads the old `composite` as a union.
+        if (w == "composite") warn(t, "use union instead of composite");
         Csg csg;
-        csg.kind = w == "union"          ? CsgKind::Union
-                   : w == "merge"        ? CsgKind::Merge
-                   : w == "intersection" ? CsgKind::Intersection
-                                         : CsgKind::Difference;
+        csg.kind = w == "union" || w == "composite" ? CsgKind::Union
+                   : w == "merge"                   ? CsgKind::Merge
+                   : w == "intersection"            ? CsgKind::Intersection
+                                                    : CsgKind::Difference;
         out.shape = Csg{};
         for (;;) {
             Token c = peek();

@@ -56,7 +56,8 @@ bool is_unsupported_pattern(std::string_view w) {
         "material_map", "object",          "slope",         "aoi",
         "density_file", "facets",          "pavement",      "tiling",
         "julia",        "magnet",          "image_pattern", "tiles",
-        "proportion",   "pigment_pattern", "gradient_map"};
+        "proportion",   "pigment_pattern", "gradient_map",  "cubic",
+        "square",       "triangular"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -116,13 +117,15 @@ Numeric Interpreter::parse_colour() {
             next();
             set(parse_express(), 5, w == "srgbft");
         } else if (w == "red" || w == "green" || w == "blue" || w == "filter" ||
-                   w == "transmit") {
+                   w == "transmit" || w == "alpha") {
             next();
-            int i = w == "red"      ? 0
-                    : w == "green"  ? 1
-                    : w == "blue"   ? 2
-                    : w == "filter" ? 3
-                                    : 4;
+            if (w == "alpha")
+                warn(t, "keyword 'alpha' discontinued; use 'filter' instead");
+            int i = w == "red"                      ? 0
+                    : w == "green"                  ? 1
+                    : w == "blue"                   ? 2
+                    : w == "filter" || w == "alpha" ? 3
+                                                    : 4;
             c.c[i] = parse_float();
         } else if (!any &&
                    (t.kind == TokenKind::Number || is_punct(t, '<') || is_punct(t, '(') ||
@@ -264,6 +267,8 @@ bool Interpreter::try_pattern_modifier(const Token& t, HeapValue<PatternSpec>& s
 bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     if (t.kind != TokenKind::Word) return false;
     std::string_view w = t.text;
+    // Keeps bump heights when a normal pattern is scaled (POV-Ray's DONT_SCALE_BUMPS).
+    if (w == "no_bump_scale") unsupported(t, w);
     Transform tr;
     if (try_transform(t, tr)) {
         spec.transform = spec.transform.then(tr);
@@ -452,7 +457,7 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
         return w == "color" || w == "colour" || w == "rgb" || w == "rgbf" ||
                w == "rgbt" || w == "rgbft" || w == "srgb" || w == "srgbf" ||
                w == "srgbt" || w == "srgbft" || w == "red" || w == "green" ||
-               w == "blue" || w == "filter" || w == "transmit";
+               w == "blue" || w == "filter" || w == "transmit" || w == "alpha";
     };
     for (;;) {
         Token t = next();

@@ -8,7 +8,8 @@ camera { location <0, 2, -6> look_at <0, 0.3, 0> angle 45 }
 light_source { <-4, 7, -5> color rgb 1 area_light x*2, y*2, 3, 3 adaptive 1 }
 light_source { <4, 5, -3> color rgb 0.4 }
 fog { distance 12 color rgb <0.7, 0.7, 0.8> }
-plane { y, -1 pigment { checker color rgb 0.9 color rgb <0.1, 0.3, 0.6> scale 0.5 } }
+plane { y, -1 pigment { checker color rgb 0.9 color rgb <0.1, 0.3, 0.6> scale 0.5
+                     quick_colour rgb <0.5, 0.6, 0.7> } }
 sphere { <-1.4, 0, 0>, 0.8 pigment { rgbf <0.9, 1, 0.9, 0.8> } interior { ior 1.4 } }
 sphere { <0.2, 0, 0.4>, 0.8 pigment { granite quick_color rgb <1, 0, 0> }
          normal { bumps 0.6 scale 0.2 } finish { reflection 0.3 phong 0.6 } }

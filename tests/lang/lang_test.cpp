@@ -51,7 +51,7 @@ TEST_P(LangFixture, DebugOutputMatchesPovRay) {
 
 INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
                          ::testing::Values("expressions", "directives", "colours",
-                                           "splines", "functions", "fileio"));
+                                           "splines", "functions", "fileio", "keywords"));
 
 }  // namespace
 }  // namespace povwall::parser
