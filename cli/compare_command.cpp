@@ -45,7 +45,8 @@ void add_diff_threshold_options(CLI::App& app, output::DiffThresholds& t) {
 }
 
 int parse_with_pov_switches(CLI::App& app, int argc, char** argv, RenderOptions& o,
-                            std::vector<std::string>& switches) {
+                            std::vector<std::string>& switches,
+                            const std::function<void(RenderOptions&)>& before_switches) {
     std::vector<std::string> rest;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
@@ -61,6 +62,7 @@ int parse_with_pov_switches(CLI::App& app, int argc, char** argv, RenderOptions&
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : 2;
     }
+    if (before_switches) before_switches(o);
     for (const auto& s : switches) {
         if (!apply_pov_switch(s, o)) throw UsageError("unknown switch '" + s + "'");
     }
@@ -101,8 +103,27 @@ int run_compare(int argc, char** argv) {
         ->check(CLI::Range(1, 4096));
     output::DiffThresholds t;
     add_diff_threshold_options(app, t);
+    bool no_ini = false;
+    app.add_flag(
+        "--no-ini", no_ini,
+        "ignore the .ini file of the scene's name in its folder (by default its "
+        "options apply, as `povray SCENE.ini` would, before the command line's)");
+    // The scene's own .ini first, as a user renders it; the command line's size,
+    // folders and switches then win.
+    auto with_scene_ini = [&](RenderOptions& r) {
+        const std::string ini = no_ini ? "" : scene_ini_file(r.scene);
+        if (ini.empty()) return;
+        const RenderOptions given = r;
+        apply_ini_file(ini, r);
+        r.scene = given.scene;  // whatever its Input_File_Name says
+        if (app.count("-W")) r.width = given.width;
+        if (app.count("-H")) r.height = given.height;
+        std::fprintf(stderr, "povwall: options from %s\n", ini.c_str());
+    };
     std::vector<std::string> pov_switches;
-    if (int code = parse_with_pov_switches(app, argc, argv, o, pov_switches); code >= 0)
+    if (int code =
+            parse_with_pov_switches(app, argc, argv, o, pov_switches, with_scene_ini);
+        code >= 0)
         return code;
     o.render.threads = threads;
     fs::path dir = keep.empty() ? fs::temp_directory_path() /

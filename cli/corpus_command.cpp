@@ -38,9 +38,11 @@ struct CorpusSettings {
     double timeout_seconds = 300;
     std::vector<std::string> library_paths;
     output::DiffThresholds thresholds;
-    fs::path out_dir;
+    fs::path out_dir;   // absolute
+    fs::path work_dir;  // the renderers' working folder, inside out_dir
     std::string cache_dir;
-    std::string exe;  // this binary, for povwall's renders
+    std::string exe;      // this binary, for povwall's renders
+    bool use_ini = true;  // a scene's .ini of the same name applies (scene_ini_file)
 };
 
 enum class Outcome { Matched, Mismatched, Unsupported, Failed };
@@ -187,27 +189,76 @@ SceneResult run_scene(const CorpusSettings& s, const CorpusScene& scene, size_t 
     // Images of an earlier report must not stand in for renders that fail this time.
     for (const auto& f : {pov_png, our_png, heat_png}) remove_quietly(images / f);
 
+    // The settings both renderers get, as a user would give them: the scene's .ini
+    // (an animation's first frame), then the report's size, threads and 8-bit PNG
+    // without anti-aliasing, which win over it.
+    RenderOptions o;
+    o.library_paths = s.library_paths;
+    const std::string ini = s.use_ini ? scene_ini_file(scene.path.string()) : "";
+    std::vector<std::string> switches{"+W" + std::to_string(s.width),
+                                      "+H" + std::to_string(s.height), "-A",
+                                      "+WT" + std::to_string(s.threads), "+FN8"};
+    try {
+        if (!ini.empty()) apply_ini_file(ini, o, nullptr);
+        for (const auto& sw : switches) apply_pov_switch(sw, o);
+        if (const std::vector<Frame> frames = animation_frames(o); !frames.empty()) {
+            for (const auto& sw : {"+SF" + std::to_string(frames.front().number),
+                                   "+EF" + std::to_string(frames.front().number)}) {
+                switches.push_back(sw);
+                apply_pov_switch(sw, o);
+            }
+        }
+    } catch (const UsageError& e) {
+        result.note = e.what();
+        return result;
+    }
+    o.scene = scene.path.string();
+
+    // Each renderer runs in its own empty folder of REPORT/files/: files the scene writes
+    // (#fopen) go there, to POV-Ray's working folder and beside povwall's image (its
+    // rule), so neither renderer nor an earlier run sees the other's. Emptied folders
+    // are removed again.
+    const fs::path scratch = s.work_dir / stem, pov_dir = scratch / "povray",
+                   our_dir = scratch / "povwall";
+    {
+        std::error_code ec;
+        fs::remove_all(scratch, ec);
+        fs::create_directories(pov_dir, ec);
+        fs::create_directories(our_dir, ec);
+    }
+    struct RemoveEmpty {
+        std::vector<fs::path> dirs;
+        ~RemoveEmpty() {
+            for (const auto& d : dirs) remove_quietly(d);  // only when empty
+        }
+    } cleanup{{pov_dir, our_dir, scratch}};
+    // The image a render made in `made` (an animation's frame under its numbered
+    // name), moved to the report's name.
+    auto take_image = [&](const fs::path& made, const std::string& png) {
+        RenderOptions named = o;
+        named.output = made.string();
+        const std::vector<Frame> frames = animation_frames(named);
+        std::error_code ec;
+        fs::rename(frames.empty() ? made : fs::path(frames.front().output), images / png,
+                   ec);
+    };
+
     // povwall first: a scene it cannot read needs no reference render.
-    std::vector<std::string> cmd{s.exe,
-                                 "render",
-                                 scene.path.string(),
-                                 "-o",
-                                 (images / our_png).string(),
-                                 "-W",
-                                 std::to_string(s.width),
-                                 "-H",
-                                 std::to_string(s.height),
-                                 "--threads",
-                                 std::to_string(s.threads),
-                                 "-q"};
+    std::vector<std::string> cmd{s.exe, "render", scene.path.string()};
+    if (!ini.empty()) cmd.push_back(ini);
+    for (const auto& sw : switches) cmd.push_back(sw);
+    cmd.push_back("+O" + (our_dir / our_png).string());
+    cmd.push_back("-q");
     for (const auto& l : s.library_paths) {
         cmd.push_back("-L");
         cmd.push_back(l);
     }
     const std::string our_log = stem + "-povwall.log";
     const auto t0 = Clock::now();
-    const int rc = run_process(cmd, (logs / our_log).string(), s.timeout_seconds);
+    const int rc =
+        run_process(cmd, (logs / our_log).string(), s.timeout_seconds, our_dir.string());
     result.povwall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (rc == 0) take_image(our_dir / our_png, our_png);
     if (rc != 0 || !fs::exists(images / our_png)) {
         result.log = "logs/" + our_log;
         const std::string message = povwall_message(slurp(logs / our_log), scene);
@@ -219,9 +270,9 @@ SceneResult run_scene(const CorpusSettings& s, const CorpusScene& scene, size_t 
             result.note =
                 "povwall timed out after " + format_seconds(s.timeout_seconds) + " s";
             // A render killed while writing leaves its temporary file: remove it.
-            const std::string partial = "." + our_png + ".tmp";
+            const std::string partial = "." + stem + "-povwall";  // frame numbers too
             std::error_code ec;
-            for (const auto& e : fs::directory_iterator(images, ec))
+            for (const auto& e : fs::directory_iterator(our_dir, ec))
                 if (e.path().filename().string().rfind(partial, 0) == 0)
                     remove_quietly(e.path());
         } else if (rc == -1) {
@@ -237,16 +288,11 @@ SceneResult run_scene(const CorpusSettings& s, const CorpusScene& scene, size_t 
     }
     result.povwall_image = "images/" + our_png;
 
-    RenderOptions o;
-    o.scene = scene.path.string();
-    o.width = s.width;
-    o.height = s.height;
-    o.library_paths = s.library_paths;
-    o.render.threads = s.threads;
     const std::string pov_log = stem + "-povray.log";
-    const PovrayRun pov =
-        run_povray(o, povray_command(o, (images / pov_png).string(), s.threads),
-                   s.cache_dir, (logs / pov_log).string(), s.timeout_seconds);
+    const PovrayRun pov = run_povray(
+        o, povray_command(o, (images / pov_png).string(), s.threads), s.cache_dir,
+        (logs / pov_log).string(), s.timeout_seconds, pov_dir.string());
+    if (pov.status == PovrayRun::Status::Ok) take_image(images / pov_png, pov_png);
     switch (pov.status) {
         case PovrayRun::Status::Ok:
             break;
@@ -425,6 +471,10 @@ int run_corpus(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("-L", s.library_paths,
                    "include folder for both renderers (repeatable)");
+    bool no_ini = false;
+    app.add_flag("--no-ini", no_ini,
+                 "ignore a scene's .ini of the same name (by default its options apply, "
+                 "an animation's first frame, under the report's size and settings)");
     app.add_option("--max-rmse", s.thresholds.max_rmse, "largest RMSE that matches")
         ->capture_default_str();
     app.add_option("--max-bad-fraction", s.thresholds.max_bad_fraction,
@@ -435,6 +485,7 @@ int run_corpus(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : 2;
     }
+    s.use_ini = !no_ini;
     if (s.width <= 0 || s.height <= 0) throw UsageError("-W and -H must be positive");
     if (s.threads < 0) throw UsageError("--threads must be 0 or more");
     if (!(s.timeout_seconds > 0)) throw UsageError("--timeout must be positive");
@@ -450,10 +501,13 @@ int run_corpus(int argc, char** argv) {
     if (n <= 0) throw std::runtime_error("cannot find the povwall binary");
     exe[n] = 0;
     s.exe = exe;
-    s.out_dir = html;
-    s.cache_dir = cache.empty() ? (s.out_dir / "cache").string() : cache;
+    s.out_dir = fs::absolute(html);
+    s.work_dir = s.out_dir / "files";
+    s.cache_dir = fs::absolute(cache.empty() ? s.out_dir / "cache" : fs::path(cache));
+    for (auto& l : s.library_paths) l = fs::absolute(l).string();
     fs::create_directories(s.out_dir / "images");
     fs::create_directories(s.out_dir / "logs");
+    fs::create_directories(s.work_dir);
 
     std::printf("%4s  %-44s %-20s %8s %8s %6s %8s %8s  %s\n", "#", "scene", "status",
                 "povray_s", "ours_s", "ratio", "rmse", "bad", "note");

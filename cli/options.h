@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <iostream>
 #include <istream>
 #include <map>
@@ -144,10 +145,13 @@ void resolve_partial_render(RenderOptions& o);
 // POV-Ray's image.
 void add_diff_threshold_options(CLI::App& app, output::DiffThresholds& t);
 // compare and bench: parses the arguments with `app` after taking out the POV-Ray +X
-// switches, which then apply to `o` and are kept in `switches` (to pass on). Returns -1
-// when the command goes on, else its exit code (0 after --help, 2 on a usage error).
-int parse_with_pov_switches(CLI::App& app, int argc, char** argv, RenderOptions& o,
-                            std::vector<std::string>& switches);
+// switches, which then apply to `o` and are kept in `switches` (to pass on);
+// `before_switches`, when set, runs on `o` between the two. Returns -1 when the command
+// goes on, else its exit code (0 after --help, 2 on a usage error).
+int parse_with_pov_switches(
+    CLI::App& app, int argc, char** argv, RenderOptions& o,
+    std::vector<std::string>& switches,
+    const std::function<void(RenderOptions&)>& before_switches = {});
 
 int run_render(RenderOptions o);
 int run_diff(int argc, char** argv);

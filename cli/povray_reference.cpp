@@ -38,6 +38,22 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
     popts.language_version = o.language_version;
     popts.write_user_files = false;  // only reads which files the scene uses
     popts.function_hooks = trace::parse_time_function_hooks();
+    // The values of the frame rendered: an animation's first (of the subset), as
+    // run_render has them; a scene may read a different set of files in another frame.
+    if (const std::vector<Frame> frames = animation_frames(o); !frames.empty()) {
+        popts.initial_frame = o.animation.initial_frame;
+        popts.final_frame = o.animation.final_frame;
+        popts.initial_clock = o.animation.initial_clock;
+        popts.final_clock = o.animation.final_clock;
+        popts.clock = frames.front().clock;
+        popts.clock_delta = frames.front().clock_delta;
+        popts.frame_number = frames.front().number;
+    } else {
+        popts.initial_frame = popts.final_frame = o.animation.initial_frame;
+        popts.initial_clock = o.animation.initial_clock;
+        popts.final_clock = o.animation.final_clock;
+        popts.clock = o.animation.clock;
+    }
     Scene scene;
     try {
         scene = parser::parse_scene_file(o.scene, popts);
@@ -146,9 +162,16 @@ std::vector<std::string> povray_command(const RenderOptions& o,
     return cmd;
 }
 
+std::string scene_ini_file(const std::string& scene) {
+    fs::path ini(scene);
+    ini.replace_extension(".ini");
+    std::error_code ec;
+    return fs::is_regular_file(ini, ec) ? ini.string() : std::string();
+}
+
 PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd,
                      const std::string& cache_dir, const std::string& log_path,
-                     double timeout_seconds) {
+                     double timeout_seconds, const std::string& working_dir) {
     PovrayRun run;
     std::string out_png = cmd.at(2).substr(2);
     {  // an animation's one frame is written under its frame-numbered name
@@ -179,7 +202,7 @@ PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd
         return run;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const int rc = run_process(cmd, log_path, timeout_seconds);
+    const int rc = run_process(cmd, log_path, timeout_seconds, working_dir);
     run.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (rc == -1) {

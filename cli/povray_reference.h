@@ -33,9 +33,15 @@ struct PovrayRun {
 // ends at cmd's +O path. A scene that does not parse for povwall gives SceneError (its
 // message printed) when a cache key is needed. With `timeout_seconds` > 0 a render still
 // running after that long is killed: Failed with timed_out set, no image left behind.
+// A non-empty `working_dir` is POV-Ray's current folder (where the files a scene writes
+// with #fopen go).
 PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd,
                      const std::string& cache_dir, const std::string& log_path,
-                     double timeout_seconds = 0);
+                     double timeout_seconds = 0, const std::string& working_dir = "");
+
+// The option file a scene comes with, as a user renders it (`povray scene.ini`): the
+// file of the same name ending in .ini in the scene's folder, or "" when there is none.
+std::string scene_ini_file(const std::string& scene);
 
 // The error message of a failed POV-Ray run, unwrapped onto one line ("File 'x.pov'
 // line 3: Parse Error: ..."), or empty when its log names none.

@@ -68,7 +68,7 @@ bool wait_until(pid_t pid, Clock::time_point deadline, int& code) {
 }  // namespace
 
 int run_process(const std::vector<std::string>& args, const std::string& log,
-                double timeout_seconds) {
+                double timeout_seconds, const std::string& working_dir) {
     std::vector<char*> argv;
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
@@ -77,6 +77,8 @@ int run_process(const std::vector<std::string>& args, const std::string& log,
     posix_spawn_file_actions_addopen(&fa, 2, log.empty() ? "/dev/null" : log.c_str(),
                                      O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+    if (!working_dir.empty())
+        posix_spawn_file_actions_addchdir_np(&fa, working_dir.c_str());
     pid_t pid;
     const auto start = Clock::now();
     int rc = posix_spawnp(&pid, argv[0], &fa, nullptr, argv.data(), environ);

@@ -13,8 +13,9 @@ constexpr int kProcessTimedOut = -2;
 // it too); returns its exit status, 128 + the signal number if it died of a signal, -1 if
 // it cannot run. With `timeout_seconds` > 0 a program still running after that long is
 // killed (SIGKILL: a hung render may ignore anything gentler) and kProcessTimedOut is
-// returned.
+// returned. A non-empty `working_dir` is the program's current folder (files it writes
+// with relative names land there).
 int run_process(const std::vector<std::string>& args, const std::string& log = "",
-                double timeout_seconds = 0);
+                double timeout_seconds = 0, const std::string& working_dir = "");
 
 }  // namespace povwall::cli

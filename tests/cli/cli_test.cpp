@@ -468,6 +468,45 @@ sphere { <clock * 2 - 1, 0, 0>, 0.5 + Extra pigment { rgbf <1, 0.5, 0.2, 0.5> } 
     EXPECT_FALSE(fs::exists(keep / "cmpanim-povray4.png"));
 }
 
+// A scene's .ini of the same name applies first, as `povray SCENE.ini` would: here its
+// animation (frame_number picks the colour: frame 0 is a negative subscript), a Declare
+// and its size; the command line's -W/-H win over its Width/Height, --no-ini leaves it
+// out.
+TEST(Cli, CompareReadsTheScenesIniFirst) {
+    if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
+    const fs::path dir = scratch() / "withini";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path scene = dir / "inianim.pov";
+    std::ofstream(scene) << R"(#version 3.7;
+#declare Colours = array[3] { rgb <1, 0, 0>, rgb <0, 1, 0>, rgb <0, 0, 1> }
+camera { location <0, 0, -3> look_at 0 }
+light_source { <2, 3, -4> color rgb 1 }
+sphere { <clock, 0, 0>, Radius pigment { Colours[frame_number - 1] } }
+)";
+    std::ofstream(dir / "inianim.ini") << "; the scene's options\n"
+                                          "Input_File_Name=elsewhere.pov\n"
+                                          "Width=64\nHeight=48\n"
+                                          "Initial_Frame=1\nFinal_Frame=3\n"
+                                          "Initial_Clock=0.25\nFinal_Clock=1\n"
+                                          "Declare=Radius=0.75\n";
+    const fs::path keep = dir / "keep";
+    RunResult r =
+        run("compare " + scene.string() + " -H 24 --threads 1 --keep " + keep.string());
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    EXPECT_NE(r.out.find("(64x24)"), std::string::npos) << r.out;  // Width=, then -H
+    EXPECT_NE(r.err.find("options from " + (dir / "inianim.ini").string()),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.out.find("PASS"), std::string::npos) << r.out;
+    for (const char* f : {"inianim-povray1.png", "inianim-povwall1.png"})
+        EXPECT_TRUE(fs::exists(keep / f)) << f;
+    // Without it, frame_number is 0: POV-Ray's error.
+    r = run("compare " + scene.string() + " -W 16 -H 12 --threads 1 --no-ini");
+    EXPECT_EQ(r.code, 2) << r.err << r.out;
+    EXPECT_NE(r.err.find("povray failed"), std::string::npos) << r.err;
+}
+
 }  // namespace
 
 namespace povwall_cli_plan {

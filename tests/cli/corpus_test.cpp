@@ -209,6 +209,60 @@ TEST(CorpusFolder, StricterThresholdsMismatchAndCachedReferencesKeepTheirTime) {
     fs::remove_all(dir);
 }
 
+// A scene with an .ini of its name is rendered as a user renders it: the .ini's
+// animation on its first frame (frame_number 1 here: frame 0 is a negative subscript),
+// under the report's size (not the .ini's Width/Height) and without its anti-aliasing.
+// The files the scene writes go to REPORT/files, one folder per renderer, not to the
+// folder the corpus runs in; --no-ini leaves the .ini out.
+TEST(CorpusIni, SceneIniGivesTheFirstFrameAndWrittenFilesStayInTheReport) {
+    if (!on_path("povray"))
+        GTEST_SKIP() << "povray is not on PATH: nothing to compare with";
+    const fs::path dir = work_dir() / "ini";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "scenes");
+    fs::create_directories(dir / "cwd");
+    std::ofstream(dir / "scenes/anim.pov")
+        << "#version 3.7;\n"
+           "#declare Colours = array[2] { rgb <1, 0.5, 0>, rgb <0, 0.5, 1> }\n"
+           "#fopen Out \"written.txt\" write\n"
+           "#write (Out, frame_number, \"\\n\")\n"
+           "#fclose Out\n"
+           "camera { location <0, 0, -3> look_at 0 }\n"
+           "light_source { <2, 3, -4> color rgb 1 }\n"
+           "sphere { <clock, 0, 0>, 1 pigment { Colours[frame_number - 1] } }\n";
+    std::ofstream(dir / "scenes/anim.ini")
+        << "Input_File_Name=anim.pov\nWidth=640\nHeight=480\nAntialias=on\n"
+           "Initial_Frame=1\nFinal_Frame=2\nInitial_Clock=-0.5\nFinal_Clock=0.5\n";
+    const std::string command = "cd " + (dir / "cwd").string() + " && " +
+                                std::string(POVWALL_BINARY) + " corpus " +
+                                (dir / "scenes").string() + " -W 32 -H 24 --html " +
+                                (dir / "report").string();
+    RunResult r = run_shell(command, "ini");
+    ASSERT_EQ(r.code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("1 scenes: 1 matched / 1 rendered / 0 unsupported / 0 failed\n"),
+              std::string::npos)
+        << r.out;
+    // The report's images under their own names, at the report's size: a PNG's width
+    // and height are the big-endian words at bytes 16 and 20.
+    for (const char* kind : {"povray", "povwall"}) {
+        const std::string png =
+            slurp(dir / "report/images" / (std::string("001-anim-") + kind + ".png"));
+        ASSERT_GT(png.size(), 24u) << kind;
+        EXPECT_EQ((unsigned char)png[19], 32) << kind;
+        EXPECT_EQ((unsigned char)png[23], 24) << kind;
+        const fs::path written = dir / "report/files/001-anim" / kind / "written.txt";
+        EXPECT_EQ(slurp(written), "1\n") << written;
+    }
+    EXPECT_TRUE(fs::is_empty(dir / "cwd"));
+    // Without the .ini, frame_number is 0 and the subscript negative.
+    r = run_shell(command + " --no-ini", "no-ini");
+    ASSERT_EQ(r.code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("1 scenes: 0 matched / 0 rendered / 0 unsupported / 1 failed\n"),
+              std::string::npos)
+        << r.out;
+    fs::remove_all(dir);
+}
+
 TEST(CorpusUsage, MissingSourceOrBadOptionsExitTwo) {
     fs::create_directories(work_dir());
     RunResult r = run_shell(std::string(POVWALL_BINARY) + " corpus /nonexistent/list.txt",
