@@ -90,7 +90,9 @@ struct Warp {
     // major_radius, planar offset.
     Vector3 orientation{0, 0, 1};
     Real dist_exp = 0, major_radius = 1, plane_offset = 0;
-    Transform transform;  // transforms applied after this warp (pattern space)
+    // The transforms written before this warp (after the previous one): on the way
+    // from world to pattern space their inverse applies after the warp.
+    Transform transform;
 };
 
 // The pixels of an image_map / bump_map file after POV-Ray's gamma decoding:
@@ -133,7 +135,9 @@ struct PatternSpec {
     // Classic turbulence keyword applied before the pattern (ordered after warps as
     // POV-Ray does).
     std::vector<Warp> warps;
-    CompactTransform transform;  // pattern space -> world (inverse applied to hit points)
+    // The transforms written after the last warp (all of them when there is none),
+    // object transforms included: its inverse applies to hit points first.
+    CompactTransform transform;
     // Mandel only: how points that escape (exterior, types 0-8) and points that stay
     // (interior, types 0-6) get their value, each with its factor (POV-Ray's defaults).
     struct Fractal {

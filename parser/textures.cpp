@@ -422,6 +422,12 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
             else
                 expected("a warp modifier or '}'", m);
         }
+        // POV-Ray keeps transforms and warps in one list, each new one put in front:
+        // the transforms written before this warp act after it on the way into pattern
+        // space (Warp::transform), the ones written after it before it (spec.transform
+        // again, from here on).
+        wp.transform = spec.transform;
+        spec.transform = Transform{};
         spec.warps.push_back(wp);
     } else {
         return false;
