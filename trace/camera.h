@@ -15,9 +15,12 @@ namespace povwall::trace {
 inline std::optional<Ray> camera_ray(const Camera& cam, Real px, Real py, int width,
                                      int height) {
     using Kind = Camera::Kind;
-    // Image position from -0.5 to 0.5, right and up.
+    // Image position from -0.5 to 0.5, right and up, rounded as POV-Ray computes it: its
+    // pixel position is (px - 0.5, py - 0.5), which it moves to (px, py - 1) before
+    // taking y from the bottom row. The last bits decide which side of a surface lying on
+    // a pattern's edge (an onion's r = 1 on a unit sphere) a hit falls.
     const Real x0 = px / width - 0.5;
-    const Real y0 = 0.5 - py / height;
+    const Real y0 = ((height - 1) - (py - 1.0)) / height - 0.5;
     switch (cam.kind) {
         case Kind::Perspective:
             break;
@@ -88,7 +91,8 @@ inline std::optional<Ray> camera_ray(const Camera& cam, Real px, Real py, int wi
             return Ray{origin, normalize(dir)};
         }
     }
-    return Ray{cam.location, normalize(cam.direction + cam.right * x0 + cam.up * y0)};
+    const Vector3 dir = cam.direction + cam.right * x0 + cam.up * y0;
+    return Ray{cam.location, dir * (1.0 / length(dir))};  // POV-Ray's VNormalize
 }
 
 }  // namespace povwall::trace

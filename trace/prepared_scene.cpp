@@ -61,10 +61,26 @@ namespace {
 
 // Leaf shape crossings along a world ray, in world distances, with outward world normals.
 void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out) {
+    // A sphere moved, turned or scaled evenly is a sphere in world space, met by the
+    // world ray as it is (POV-Ray moves its centre and radius; only an ellipsoid works in
+    // its own space): the same last bits as a sphere outside CSG, which decide hits on a
+    // pattern's edge such as an onion's r = 1.
+    Real scale = 1;
+    if (const Sphere* s = std::get_if<Sphere>(&o.shape);
+        s && is_similarity(o.transform, scale)) {
+        const Sphere world{o.transform.point(s->centre), s->radius * scale};
+        Crossings cs;
+        intersect_sphere(world, ray.origin, ray.direction, cs);
+        for (int i = 0; i < cs.n; ++i) {
+            const Vector3 n = sphere_normal(world, ray.at(cs.c[i].t));
+            out.push_back({cs.c[i].t, o.inverse ? -n : n, &o});
+        }
+        return;
+    }
     Ray local = o.transform.is_identity() ? ray : o.transform.inverse_ray(ray);
     Real len = length(local.direction);
     if (!(len > 0)) return;
-    Vector3 dn = local.direction / len;
+    Vector3 dn = local.direction * (1.0 / len);  // POV-Ray's VInverseScaleEq
     Crossings cs;
     // The box works along the untouched direction: its crossings are world distances.
     bool world_t = false;
