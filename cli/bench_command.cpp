@@ -23,7 +23,7 @@
 namespace povwall::cli {
 
 nlohmann::json diff_json(const output::DiffResult& r);
-void print_diff(const output::DiffResult& r);
+void print_diff(const output::DiffResult& r, const std::string& note = "");
 
 namespace {
 

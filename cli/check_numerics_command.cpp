@@ -20,6 +20,7 @@
 #include "trace/numerics_check.h"
 #include "trace/pattern.h"
 #include "trace/render.h"
+#include "trace/ties.h"
 
 namespace povwall::cli {
 namespace {
@@ -105,6 +106,8 @@ int run_check_numerics(int argc, char** argv) {
         enc.gamma_handling = scene.gamma_handling();
         enc.working_gamma = scene.settings.assumed_gamma.value_or(1.0f);
         uint64_t differ = 0, ours_supported = 0, ours_contradicted = 0, unknown = 0;
+        uint64_t ties = 0, pattern_ties = 0;
+        trace::TieProbe tie_probe(scene, rs);
         for (int y = 0; y < height; ++y) {
             for (int x = 0; x < width; ++x) {
                 bool d = false;
@@ -114,6 +117,9 @@ int run_check_numerics(int argc, char** argv) {
                 }
                 if (!d) continue;
                 ++differ;
+                const trace::TieProbe::Kind kind = tie_probe.pixel(x, y);
+                ties += kind == trace::TieProbe::Kind::Surface;
+                pattern_ties += kind == trace::TieProbe::Kind::Pattern;
                 switch (rep.verdict[size_t(y) * width + x]) {
                     case trace::PixelVerdict::Agree:
                         ++ours_supported;
@@ -128,6 +134,8 @@ int run_check_numerics(int argc, char** argv) {
             }
         }
         j["povray"] = {{"differing_pixels", differ},
+                       {"tie_pixels", ties},
+                       {"pattern_boundary_pixels", pattern_ties},
                        {"oracle_agrees_with_povwall_first_hit", ours_supported},
                        {"oracle_contradicts_povwall_first_hit", ours_contradicted},
                        {"oracle_unsupported", unknown}};
@@ -150,14 +158,25 @@ int run_check_numerics(int argc, char** argv) {
     }
     if (with_povray) {
         const auto& p = j["povray"];
+        const auto differ = (unsigned long long)p["differing_pixels"];
+        const auto ties = (unsigned long long)p["tie_pixels"];
         std::printf(
             "POV-Ray: %llu pixels differ (>0.1); oracle agrees with povwall's first hit "
             "on %llu, "
             "contradicts it on %llu, cannot tell on %llu\n",
-            (unsigned long long)p["differing_pixels"],
-            (unsigned long long)p["oracle_agrees_with_povwall_first_hit"],
+            differ, (unsigned long long)p["oracle_agrees_with_povwall_first_hit"],
             (unsigned long long)p["oracle_contradicts_povwall_first_hit"],
             (unsigned long long)p["oracle_unsupported"]);
+        const auto patterns = (unsigned long long)p["pattern_boundary_pixels"];
+        if (patterns > 0) {
+            std::printf(
+                "bad pixels: %llu (%llu exact ties, %llu on a pattern boundary, "
+                "%llu other)\n",
+                differ, ties, patterns, differ - ties - patterns);
+        } else {
+            std::printf("bad pixels: %llu (%llu exact ties, %llu other)\n", differ, ties,
+                        differ - ties);
+        }
     }
     return 0;
 }

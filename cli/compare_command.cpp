@@ -13,6 +13,7 @@
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -21,11 +22,34 @@
 #include "output/diff.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
+#include "trace/ties.h"
 
 namespace povwall::cli {
 
 nlohmann::json diff_json(const output::DiffResult& r);
-void print_diff(const output::DiffResult& r);
+void print_diff(const output::DiffResult& r, const std::string& note = "");
+
+// The bad pixels (row-major indices) of the scene `o` renders classified by the tie
+// probe (trace/ties.h): a mask over the image holding each one's TieProbe::Kind. Throws
+// parser::ParseError.
+std::vector<uint8_t> tie_pixels(const RenderOptions& o, const std::vector<size_t>& bad,
+                                int levels) {
+    RenderOptions first = o;
+    if (const std::vector<Frame> frames = animation_frames(o); !frames.empty())
+        first.frame = RenderOptions::FrameValues{
+            frames.front().number, frames.front().clock, frames.front().clock_delta};
+    const Scene scene = parse_render_scene(first);
+    trace::RenderSettings settings = o.render;
+    settings.width = o.width;
+    settings.height = o.height;
+    trace::TieProbeOptions probe;
+    probe.levels = levels;
+    trace::TieProbe ties(scene, settings, probe);
+    std::vector<uint8_t> mask(size_t(o.width) * size_t(o.height), 0);
+    for (size_t i : bad)
+        mask[i] = uint8_t(ties.pixel(int(i % size_t(o.width)), int(i / size_t(o.width))));
+    return mask;
+}
 
 namespace {
 
@@ -101,6 +125,17 @@ int run_compare(int argc, char** argv) {
                    "compare the means of NxN pixel squares (stochastic features: crand, "
                    "jitter)")
         ->check(CLI::Range(1, 4096));
+    bool exclude_ties = false;
+    int tie_levels = 2;
+    app.add_flag(
+        "--exclude-ties", exclude_ties,
+        "leave the bad pixels that are exact ties (a ray meeting two surfaces at "
+        "the same depth) out of the pass/fail decision");
+    app.add_option("--tie-levels", tie_levels,
+                   "trace levels searched for ties at a bad pixel (1: the camera ray, 2: "
+                   "also the rays its first hit spawns)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 256));
     output::DiffThresholds t;
     add_diff_threshold_options(app, t);
     bool no_ini = false;
@@ -180,10 +215,31 @@ int run_compare(int argc, char** argv) {
     double pov_s = pov.seconds;
     double our_s = std::chrono::duration<double>(t3 - t2).count();
     output::DiffResult r;
+    // Bad pixels that are exact ties (only pixel by pixel, one frame: the probe traces
+    // the first frame's scene).
+    std::optional<long long> ties;
+    long long pattern_ties = 0;
     try {
         Image ours = output::block_means(output::read_image(our_image), block),
               theirs = output::block_means(output::read_image(pov_image), block);
         r = output::diff_images(ours, theirs, t);
+        const std::vector<size_t> bad = output::bad_pixel_indices(ours, theirs, t.fail);
+        if (block == 1 && !bad.empty() &&
+            r.status != output::DiffResult::Status::SizeMismatch) {
+            try {
+                const std::vector<uint8_t> mask = tie_pixels(o, bad, tie_levels);
+                ties = 0;
+                for (uint8_t m : mask) {
+                    *ties += m == uint8_t(trace::TieProbe::Kind::Surface);
+                    pattern_ties += m == uint8_t(trace::TieProbe::Kind::Pattern);
+                }
+                if (exclude_ties) r = output::diff_images(ours, theirs, t, &mask);
+            } catch (const parser::ParseError& e) {
+                std::cerr << "povwall: warning: no tie search: " << e.what() << "\n";
+            }
+        } else if (block == 1 && r.status != output::DiffResult::Status::SizeMismatch) {
+            ties = 0;
+        }
         if (!keep.empty() && r.status != output::DiffResult::Status::SizeMismatch) {
             OutputEncoding raw;  // |povwall - povray| as values, for looking at
             raw.gamma_handling = false;
@@ -196,6 +252,10 @@ int run_compare(int argc, char** argv) {
     }
     if (json) {
         nlohmann::json j = diff_json(r);
+        j["tie_pixels"] = ties ? nlohmann::json(*ties) : nlohmann::json(nullptr);
+        j["pattern_boundary_pixels"] =
+            ties ? nlohmann::json(pattern_ties) : nlohmann::json(nullptr);
+        j["ties_excluded"] = exclude_ties && ties;
         j["povwall_seconds"] = our_s;
         // A cached reference has no render time of its own.
         j["povray_seconds"] =
@@ -212,7 +272,24 @@ int run_compare(int argc, char** argv) {
             std::printf("povray: %.3f s\npovwall: %.3f s (%.2fx faster)\n", pov_s, our_s,
                         our_s > 0 ? pov_s / our_s : 0.0);
         }
-        print_diff(r);
+        char note[160] = "";
+        if (ties && exclude_ties) {
+            std::snprintf(note, sizeof note,
+                          "left out of the decision: %lld exact ties, %lld on a pattern "
+                          "boundary",
+                          *ties, pattern_ties);
+        } else if (ties && pattern_ties > 0) {
+            std::snprintf(
+                note, sizeof note,
+                "bad pixels: %lld (%lld exact ties, %lld on a pattern boundary, "
+                "%lld other)",
+                r.bad_pixels, *ties, pattern_ties, r.bad_pixels - *ties - pattern_ties);
+        } else if (ties) {
+            std::snprintf(note, sizeof note,
+                          "bad pixels: %lld (%lld exact ties, %lld other)", r.bad_pixels,
+                          *ties, r.bad_pixels - *ties);
+        }
+        print_diff(r, note);
     }
     if (keep.empty()) fs::remove_all(dir);
     if (warn_ok && r.status == output::DiffResult::Status::Warn) return 0;

@@ -26,7 +26,7 @@ nlohmann::json diff_json(const output::DiffResult& r) {
     return j;
 }
 
-void print_diff(const output::DiffResult& r) {
+void print_diff(const output::DiffResult& r, const std::string& note) {
     if (r.status == output::DiffResult::Status::Unreadable ||
         r.status == output::DiffResult::Status::SizeMismatch) {
         std::printf("%s\nFAILURE\n", r.error.c_str());
@@ -42,6 +42,7 @@ void print_diff(const output::DiffResult& r) {
                 r.max_y, kChan[r.max_channel], r.max_value_a, r.max_value_b);
     std::printf("bad_pixel_fraction: %.6f (%lld of %lld pixels)\n", r.bad_pixel_fraction,
                 r.bad_pixels, (long long)r.width * r.height);
+    if (!note.empty()) std::printf("%s\n", note.c_str());
     static const char* kWord[] = {"PASS", "WARNING", "FAILURE", "FAILURE", "FAILURE"};
     std::printf("%s\n", kWord[int(r.status)]);
 }
@@ -99,7 +100,7 @@ int run_diff(int argc, char** argv) {
     if (json) {
         std::printf("%s\n", diff_json(r).dump().c_str());
     } else {
-        print_diff(r);
+        print_diff(r, "");
     }
     return int(r.status);
 }

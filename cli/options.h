@@ -105,6 +105,10 @@ struct RenderOptions {
     bool recover = true;
 };
 
+// The scene as `render` parses it for `o` (no messages, no #write files); throws
+// parser::ParseError.
+Scene parse_render_scene(const RenderOptions& o);
+
 // Applies one POV-Ray switch (+W320, -A, +Ldir, Declare=X=1, ...) to `o`.
 // Returns false when `arg` is not a POV-Ray switch povwall knows; throws on a bad value.
 bool apply_pov_switch(const std::string& arg, RenderOptions& o);

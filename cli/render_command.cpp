@@ -141,6 +141,41 @@ int run_animation(const RenderOptions& options, const std::vector<Frame>& frames
     return 0;
 }
 
+// The parse options `render` uses for `o` (#write files go to `output_dir`).
+parser::ParseOptions render_parse_options(const RenderOptions& o,
+                                          const std::string& output_dir) {
+    parser::ParseOptions popts;
+    popts.library_paths = o.library_paths;
+    popts.image_width = o.width;
+    popts.image_height = o.height;
+    popts.declares = o.declares;
+    popts.language_version = o.language_version;
+    popts.image_reader = output::read_stored_image;
+    popts.function_hooks = trace::parse_time_function_hooks();
+    popts.initial_frame = o.animation.initial_frame;
+    popts.final_frame = o.frame ? o.animation.final_frame : o.animation.initial_frame;
+    popts.initial_clock = o.animation.initial_clock;
+    popts.final_clock = o.animation.final_clock;
+    popts.clock = o.frame ? o.frame->clock : o.animation.clock;
+    popts.clock_delta = o.frame ? o.frame->clock_delta : 0.0;
+    popts.frame_number = o.frame ? o.frame->number : 0;
+    popts.messages = o.quiet ? nullptr : &std::cerr;
+    popts.max_loop_iterations = o.max_loop_iterations;
+    popts.max_parse_seconds = o.max_parse_seconds;
+    popts.output_dir = output_dir;
+    return popts;
+}
+
+Scene parse_render_scene(const RenderOptions& o) {
+    parser::ParseOptions popts = render_parse_options(o, "");
+    popts.messages = nullptr;
+    popts.write_user_files = false;
+    Scene scene = parser::parse_scene_file(o.scene, popts);
+    if (o.max_trace_level) scene.settings.max_trace_level = *o.max_trace_level;
+    if (o.adc_bailout) scene.settings.adc_bailout = float(*o.adc_bailout);
+    return scene;
+}
+
 int run_render(RenderOptions o) {
     if (o.scene.empty())
         throw UsageError("no scene file given (+ISCENE.pov or render SCENE.pov)");
@@ -168,26 +203,9 @@ int run_render(RenderOptions o) {
     if (std::filesystem::path(o.output).extension().empty()) {
         o.output += format_extension(o.format);
     }
-    parser::ParseOptions popts;
-    popts.library_paths = o.library_paths;
-    popts.image_width = o.width;
-    popts.image_height = o.height;
-    popts.declares = o.declares;
-    popts.language_version = o.language_version;
-    popts.image_reader = output::read_stored_image;
-    popts.function_hooks = trace::parse_time_function_hooks();
-    popts.initial_frame = o.animation.initial_frame;
-    popts.final_frame = o.frame ? o.animation.final_frame : o.animation.initial_frame;
-    popts.initial_clock = o.animation.initial_clock;
-    popts.final_clock = o.animation.final_clock;
-    popts.clock = o.frame ? o.frame->clock : o.animation.clock;
-    popts.clock_delta = o.frame ? o.frame->clock_delta : 0.0;
-    popts.frame_number = o.frame ? o.frame->number : 0;
-    popts.messages = o.quiet ? nullptr : &std::cerr;
-    popts.max_loop_iterations = o.max_loop_iterations;
-    popts.max_parse_seconds = o.max_parse_seconds;
     // #fopen ... write puts relative names beside the image.
-    popts.output_dir = std::filesystem::path(o.output).parent_path().string();
+    const parser::ParseOptions popts =
+        render_parse_options(o, std::filesystem::path(o.output).parent_path().string());
     auto load_scene = [&] {
         Scene scene = parser::parse_scene_file(o.scene, popts);
         if (o.max_trace_level) scene.settings.max_trace_level = *o.max_trace_level;

@@ -377,6 +377,9 @@ struct AreaLight {
 
 struct Light {
     enum class Kind : uint8_t { Point, Spot, Cylinder, Parallel } kind = Kind::Point;
+    // Scene::objects placed before this light: where POV-Ray's object list holds it
+    // (its looks_like object takes part in POV-Ray's test order there).
+    uint32_t objects_before = 0;
     Point3 location;
     Rgb colour{1.0f};
     Point3 point_at{0, 0, 1};

@@ -8,7 +8,23 @@
 
 namespace povwall::output {
 
-DiffResult diff_images(const Image& a, const Image& b, const DiffThresholds& t) {
+std::vector<size_t> bad_pixel_indices(const Image& a, const Image& b, double fail) {
+    std::vector<size_t> bad;
+    if (a.width != b.width || a.height != b.height) return bad;
+    const size_t n = size_t(a.width) * size_t(a.height);
+    for (size_t i = 0; i < n; ++i) {
+        for (int c = 0; c < 3; ++c) {
+            if (std::fabs(double(a.rgba[i * 4 + c]) - double(b.rgba[i * 4 + c])) > fail) {
+                bad.push_back(i);
+                break;
+            }
+        }
+    }
+    return bad;
+}
+
+DiffResult diff_images(const Image& a, const Image& b, const DiffThresholds& t,
+                       const std::vector<uint8_t>* skip) {
     DiffResult r;
     r.width = a.width;
     r.height = a.height;
@@ -20,8 +36,11 @@ DiffResult diff_images(const Image& a, const Image& b, const DiffThresholds& t) 
         return r;
     }
     double sum = 0;
-    const long long n = (long long)a.width * a.height;
-    for (long long i = 0; i < n; ++i) {
+    long long n = 0;
+    const long long pixels = (long long)a.width * a.height;
+    for (long long i = 0; i < pixels; ++i) {
+        if (skip && size_t(i) < skip->size() && (*skip)[size_t(i)]) continue;
+        ++n;
         bool bad = false, warn = false;
         for (int c = 0; c < 3; ++c) {
             double va = a.rgba[i * 4 + c], vb = b.rgba[i * 4 + c];

@@ -1,7 +1,9 @@
 // Image comparison in the manner of OpenImageIO's idiff.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/image.h"
 
@@ -35,8 +37,14 @@ struct DiffResult {
     std::string error;  // for Unreadable / SizeMismatch
 };
 
-// Compares RGB channels of two images as stored (0..1 scale).
-DiffResult diff_images(const Image& a, const Image& b, const DiffThresholds& t = {});
+// Compares RGB channels of two images as stored (0..1 scale). `skip` (one entry per
+// pixel, row-major): pixels left out of every statistic and of the decision (the rmse
+// and fractions are then over the other pixels).
+DiffResult diff_images(const Image& a, const Image& b, const DiffThresholds& t = {},
+                       const std::vector<uint8_t>* skip = nullptr);
+// The pixels (row-major indices) with a channel differing by more than `fail`: the bad
+// pixels of diff_images.
+std::vector<size_t> bad_pixel_indices(const Image& a, const Image& b, double fail);
 DiffResult diff_files(const std::string& a, const std::string& b,
                       const DiffThresholds& t = {});
 

@@ -567,7 +567,10 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
 
 void Interpreter::collect_lights(Object& obj) {
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
-        for (Light& l : csg->lights) scene_.lights.push_back(std::move(l));
+        for (Light& l : csg->lights) {
+            scene_.lights.push_back(std::move(l));
+            scene_.lights.back().objects_before = uint32_t(scene_.objects.size());
+        }
         csg->lights.clear();
         for (Object& child : csg->children) collect_lights(child);
     }
@@ -678,6 +681,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
         }
         if (w == "light_source") {
             scene_.lights.push_back(parse_light_block());
+            scene_.lights.back().objects_before = uint32_t(scene_.objects.size());
             return;
         }
         if (w == "background") {
@@ -740,6 +744,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
         }
         if (auto l = std::get_if<std::shared_ptr<Light>>(v)) {
             scene_.lights.push_back(**l);
+            scene_.lights.back().objects_before = uint32_t(scene_.objects.size());
             return;
         }
         error(t, "a " + std::string(type_name(*v)) + " identifier '" + std::string(w) +

@@ -41,7 +41,7 @@ PovRay::PovRay(const Ray& ray) {
     }
 }
 
-bool slab_tree_accepts(const PovBBox& box, const PovRay& ray) {
+bool slab_tree_entry(const PovBBox& box, const PovRay& ray, Real& entry) {
     // The entry and exit distances of one axis: the near corner's distance in float, the
     // far one that plus the length's (a float product) in double.
     auto slab = [&](int a, Real& enter, Real& leave) {
@@ -89,7 +89,13 @@ bool slab_tree_accepts(const PovBBox& box, const PovRay& ray) {
             lo = enter;
         }
     }
+    entry = lo;
     return true;
+}
+
+bool slab_tree_accepts(const PovBBox& box, const PovRay& ray) {
+    Real entry;
+    return slab_tree_entry(box, ray, entry);
 }
 
 bool own_bbox_accepts(const PovBBox& box, const PovRay& ray, float mind, float maxd) {
@@ -368,18 +374,14 @@ bool pov_tests_own_bbox(const Object& o) {
              std::holds_alternative<SmoothTriangle>(o.shape));
 }
 
-namespace {
-
-size_t frame_objects(const Object& o) {
+size_t pov_frame_object_count(const Object& o) {
     if (pov_splits_union(o)) {
         size_t n = 0;
-        for (const Object& c : std::get<Csg>(o.shape).children) n += frame_objects(c);
+        for (const Object& c : std::get<Csg>(o.shape).children) n += pov_frame_object_count(c);
         return n;
     }
     return 1;
 }
-
-}  // namespace
 
 namespace {
 
@@ -424,7 +426,7 @@ bool pov_slab_root(const Scene& scene, PovBBox& root) {
 
 size_t pov_frame_objects(const Scene& scene) {
     size_t n = scene.lights.size() + scene.objects_left_out;
-    for (const Object& o : scene.objects) n += frame_objects(o);
+    for (const Object& o : scene.objects) n += pov_frame_object_count(o);
     return n;
 }
 

@@ -33,6 +33,8 @@ constexpr Real kSmallTolerance = 1e-3;  // padding of flat polygon and disc boxe
 // The Bounding_Threshold POV-Ray runs with: the povray.ini installed beside povray 3.7
 // (/etc/povray/3.7/povray.ini) sets 3 (the backend's own default is 1).
 constexpr size_t kPovBoundingThreshold = 3;
+// A Bounding_Threshold no scene reaches: bounding off (-MB, Bounding=off).
+constexpr size_t kPovBoundingOff = ~size_t(0);
 
 // A BBOX: lower-left corner and lengths, single precision.
 struct PovBBox {
@@ -63,6 +65,10 @@ struct PovRay {
 // parallel to an axis must start inside the slab (float compare). True unless the slabs
 // leave an empty interval or one ending below EPSILON (1e-10).
 bool slab_tree_accepts(const PovBBox& box, const PovRay& ray);
+// The same test, and where it accepts, the distance it files the box under in its
+// priority queue: the largest slab entry (-BOUND_HUGE along an axis the ray is parallel
+// to; negative when the origin is inside).
+bool slab_tree_entry(const PovBBox& box, const PovRay& ray, Real& entry);
 
 // The object's own box test (Intersect_BBox_Dir): everything in float, corners lo and
 // lo + len, slabs met in x, y, z order; true when the interval meets (mind, maxd).
@@ -102,5 +108,7 @@ bool pov_slab_root(const Scene& scene, PovBBox& root);
 // count too. POV-Ray builds its bounding-slab tree when this reaches
 // kPovBoundingThreshold.
 size_t pov_frame_objects(const Scene& scene);
+// The frame-level objects one object becomes (1, or a plain union's children's).
+size_t pov_frame_object_count(const Object& o);
 
 }  // namespace povwall::trace

@@ -179,6 +179,11 @@ bool ray_in_bound(const std::vector<Object>& bound, const Ray& ray) {
 void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out) {
     size_t start = out.size();
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
+        // In POV-Ray's push order: a plain union pushes its children's intersections as
+        // they come; every other CSG collects each child's on a stack of its own and
+        // moves them over from the top, reversing them (csg.cpp All_Intersections).
+        const bool reversed =
+            csg->kind != CsgKind::Union || o.inverse || !o.clipped_by->empty();
         std::vector<WorldCrossing> tmp;
         for (size_t i = 0; i < csg->children.size(); ++i) {
             tmp.clear();
@@ -188,6 +193,7 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             if (!child.bounded_by->empty() && !ray_in_bound(*child.bounded_by, ray))
                 continue;
             object_crossings(child, ray, tmp);
+            if (reversed) std::reverse(tmp.begin(), tmp.end());
             for (WorldCrossing c : tmp) {
                 Point3 p = ray.at(c.t);
                 bool keep = true;
@@ -448,8 +454,9 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     env_.noise_generator = scene.settings.noise_generator;
     env_.number_of_waves = scene.settings.number_of_waves;
     env_.quick_colours = plan_.quality.quick_colours();
-    pov_slab_tree_ =
-        options_.pov_float_bounds && pov_frame_objects(scene) >= kPovBoundingThreshold;
+    pov_slab_tree_ = options_.pov_float_bounds &&
+                     options_.pov_bounding_threshold != kPovBoundingOff &&
+                     pov_frame_objects(scene) >= options_.pov_bounding_threshold;
     pov_root_tested_ = pov_slab_tree_ && pov_slab_root(scene, pov_root_);
     size_t leaves = 0;
     for (const Object* o : objects) leaves += count_leaves(*o);
@@ -467,12 +474,27 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     for (const Light& l : scene.lights)
         for (const Object& o : l.looks_like) count_blends(count_blends, o);
     blends_.reserve(blends);  // materials point into it
-    for (const Object* o : objects) add_object(*o, nullptr);
+    material_frame_.reserve(leaves + 1);
+    // Each object's place in POV-Ray's object list, for exact ties (unknown when the
+    // parse left objects out).
+    const bool frames_known = !scene.objects_filtered();
+    PovFrameList frames;
+    if (frames_known) frames = pov_frame_list(scene, options_.pov_bounding_threshold);
+    for (const Object* o : objects) {
+        const size_t i = size_t(o - scene.objects.data());
+        add_object(*o, frames_known && i < frames.first_of_object.size()
+                           ? frames.first_of_object[i]
+                           : ~0u);
+    }
     // A light's looks_like object is visible but casts no shadow (it would block its
     // light).
     const size_t first_looks_like = materials_.size();
-    for (const Light& l : scene.lights) {
-        for (const Object& o : l.looks_like) add_object(o, nullptr);
+    for (size_t l = 0; l < scene.lights.size(); ++l) {
+        bool first = true;
+        for (const Object& o : scene.lights[l].looks_like) {
+            add_object(o, frames_known && first ? frames.of_light[l] : ~0u);
+            first = false;
+        }
     }
     for (size_t i = first_looks_like; i < materials_.size(); ++i)
         materials_[i].no_shadow = true;
@@ -578,16 +600,17 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     planes_.shrink_to_fit();
     objects_.shrink_to_fit();
     leaf_materials_.shrink_to_fit();
+    material_frame_.shrink_to_fit();
     pov_.shrink_to_fit();
 }
 
 size_t PreparedScene::resident_bytes() const {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     const auto& ts = tree_.stats();
-    return sizeof(*this) + bytes(materials_) + bytes(kind_) + bytes(index_) +
-           bytes(material_) + bytes(bounds_) + bytes(spheres_) + bytes(triangles_) +
-           bytes(planes_) + bytes(objects_) + bytes(unbounded_) + bytes(leaf_materials_) +
-           bytes(pov_) + bytes(blends_) + lanes_.bytes() +
+    return sizeof(*this) + bytes(materials_) + bytes(material_frame_) + bytes(kind_) +
+           bytes(index_) + bytes(material_) + bytes(bounds_) + bytes(spheres_) +
+           bytes(triangles_) + bytes(planes_) + bytes(objects_) + bytes(unbounded_) +
+           bytes(leaf_materials_) + bytes(pov_) + bytes(blends_) + lanes_.bytes() +
            size_t(ts.nodes) * sizeof(octree::Octree::Node) +
            ts.references * sizeof(uint32_t) +
            (ts.dense_top > 0 ? (size_t(1) << (3 * ts.dense_top)) : 0) *
@@ -677,6 +700,7 @@ Material interior_side(const Material& m) {
 
 uint32_t PreparedScene::add_material(const Object& o) {
     materials_.push_back(material_of(o, o.texture));
+    material_frame_.push_back(adding_frame_);
     uint32_t index = uint32_t(materials_.size()) - 1;
     leaf_materials_.push_back({&o, index});
     return index;
@@ -696,12 +720,19 @@ const Material* PreparedScene::material_for(const Object* leaf) const {
     return nullptr;
 }
 
-void PreparedScene::add_object(const Object& o, const Material*) {
+void PreparedScene::add_object(const Object& o, uint32_t frame) {
     const Csg* csg = std::get_if<Csg>(&o.shape);
     if (pov_splits_union(o)) {
-        // A plain union is its children: each goes into the octree on its own.
-        for (const Object& c : csg->children) add_object(c, nullptr);
+        // A plain union is its children: each goes into the octree on its own and, as
+        // POV-Ray links them, takes its own place in the object list.
+        for (const Object& c : csg->children) {
+            add_object(c, frame);
+            if (frame < kSameFrame) frame += uint32_t(pov_frame_object_count(c));
+        }
         return;
+    }
+    if (frame != kSameFrame) {
+        adding_frame_ = frame;
     }
     auto push = [&](PrimKind k, uint32_t index, uint32_t material, const Bounds3& b,
                     const PovPrim& pov = {}) {
@@ -741,8 +772,10 @@ void PreparedScene::add_object(const Object& o, const Material*) {
         uint32_t base = add_material(o);
         std::vector<uint32_t> face_materials;
         for (const LayeredTexture& t : m->textures) {
-            // Each face texture is a material of its own (plain or not by itself).
+            // Each face texture is a material of its own (plain or not by itself), in the
+            // same place as the mesh's.
             materials_.push_back(material_of(o, t));
+            material_frame_.push_back(material_frame_[base]);
             face_materials.push_back(uint32_t(materials_.size()) - 1);
         }
         // POV-Ray tests the mesh's box, then the triangle's in the mesh's tree.
@@ -778,6 +811,7 @@ void PreparedScene::add_object(const Object& o, const Material*) {
             blends_.push_back(b);
             mm.blend = &blends_.back();
             materials_.push_back(mm);
+            material_frame_.push_back(material_frame_[base]);
             return uint32_t(materials_.size()) - 1;
         };
         for (const auto& f : m->faces) {
@@ -879,7 +913,7 @@ inline size_t leading_spheres(const uint32_t* ids, size_t n, uint32_t sphere_cou
 }
 
 bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max,
-                                   Hit& hit) const {
+                                   Hit& hit, Real tie_tolerance, bool* tie) const {
     const Real lo = std::max(t_min, kMinIsectDepth);
     switch (kind_[id]) {
         case PrimKind::Sphere: {
@@ -910,16 +944,16 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
                 if (rough > t_max * (1 + 1e-7) + 1e-7 || rough < lo * (1 - 1e-7) - 1e-7)
                     return false;
             }
-            // Same arithmetic as POV-Ray's (and the general path's): re-normalised
-            // direction, object-space depth, then back to world distance. Coincident
-            // faces depend on it.
-            Real len = length(ray.direction);
-            Vector3 dn = ray.direction / len;
-            Real nd = dot(pl.normal, dn);
+            // POV-Ray's arithmetic for a plane it keeps without a transform (translate,
+            // rotate and uniform scale move its normal and distance): the depth along the
+            // ray as given, -(n.o - d) / n.dir, with no re-normalisation, so that a face
+            // lying on the plane (a box's, whose depth is (d - o) / dir along the same
+            // axis) gives the very same bits and POV-Ray's test order decides
+            // (planes.cpp Plane::Intersect).
+            const Real nd = dot(pl.normal, ray.direction);
             if (std::fabs(nd) < kPovEpsilon) return false;
-            Real t_obj = (pl.distance - dot(pl.normal, ray.origin)) / nd;
-            if (!(t_obj > pl.tolerance && t_obj < kMaxDistance)) return false;
-            Real t = t_obj / len;
+            const Real t = (pl.distance - dot(pl.normal, ray.origin)) / nd;
+            if (!(t > pl.tolerance && t < kMaxDistance)) return false;
             if (!(t >= lo && t < t_max)) return false;
             hit.t = t;
             hit.prim = id;
@@ -952,11 +986,20 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
             thread_local std::vector<WorldCrossing> crossings;
             crossings.clear();
             object_crossings(obj, ray, crossings);
+            // The crossings are in the order POV-Ray pops them last (object_crossings):
+            // of equal depths it keeps the last.
             const WorldCrossing* best = nullptr;
             for (const auto& c : crossings) {
-                if (c.t >= lo && c.t < t_max && (!best || c.t < best->t)) best = &c;
+                if (c.t >= lo && c.t < t_max && (!best || c.t <= best->t)) best = &c;
             }
             if (!best || !pov_accepts(id, ray)) return false;
+            if (tie) {
+                for (const auto& c : crossings) {
+                    if (c.leaf != best->leaf && c.t >= lo &&
+                        std::fabs(c.t - best->t) <= tie_tolerance * std::fabs(best->t))
+                        *tie = true;
+                }
+            }
             hit.t = best->t;
             hit.prim = id;
             hit.point = ray.at(best->t);
@@ -998,6 +1041,22 @@ bool PreparedScene::for_sphere_hits(const uint32_t* ids, size_t spheres, const R
     return false;
 }
 
+bool PreparedScene::pov_takes(const Material& candidate, const Material& nearest,
+                              const Ray& ray) const {
+    const size_t c = size_t(&candidate - materials_.data()),
+                 n = size_t(&nearest - materials_.data());
+    const uint32_t fc = material_frame_[c], fn = material_frame_[n];
+    if (fc == ~0u || fn == ~0u) return false;
+    // Parts of one frame object: its CSG pushes the later child's intersections last and
+    // takes the first it pops.
+    if (fc == fn) return c > n;
+    std::call_once(pov_order_once_, [this] {
+        pov_order_ = std::make_unique<PovTestOrder>(
+            pov_frame_list(scene_, options_.pov_bounding_threshold));
+    });
+    return pov_order_->tests_first(ray, fc, fn);
+}
+
 bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use,
                                 Hit& hit, RayContext& ctx) const {
     bool found = false;
@@ -1010,53 +1069,90 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
     // end.
     const Real lo = std::max(t_min, kMinIsectDepth);
     uint32_t nearest_sphere = ~0u;
-    Real nearest_t = kInfinity;
-    auto consider = [&](uint32_t id, Real& limit) {
+    // The nearest hit so far (its distance and material), and how far tests and the
+    // traversal look: a little past it, so that a surface at exactly the same depth
+    // (coincident faces) is met wherever its cell starts, and POV-Ray's order can choose
+    // (pov_takes). Nothing beyond `best` is taken.
+    Real best = t_max;
+    const Material* best_material = nullptr;
+    Real reach = t_max;
+    const Real probe = ctx.tie_tolerance;
+    bool tie = false;        // tie probe: two leaves within `probe` of each other
+    Real other = kInfinity;  // tie probe: the nearest hit on another leaf
+    auto widen = [&](Real t) {
+        const Real margin = std::fabs(t) * std::max(probe, Real(1e-12));
+        return std::min(t_max, std::nextafter(t + margin, kInfinity));
+    };
+    // Whether a hit at `t` on `m` becomes the nearest.
+    auto offer = [&](Real t, const Material& m) {
+        if (!found) return t < t_max;
+        if (t < best) {
+            if (probe > 0 && m.object != best_material->object)
+                other = std::min(other, best);
+            return true;
+        }
+        if (m.object == best_material->object) return false;
+        if (probe > 0) other = std::min(other, t);
+        return t == best && pov_takes(m, *best_material, ray);
+    };
+    auto accept = [&](Real t, const Material& m) {
+        best = t;
+        best_material = &m;
+        reach = widen(t);
+        found = true;
+    };
+    auto consider = [&](uint32_t id) {
         ++ctx.tests;
         if (id < sphere_count_) {
             const Real t = sphere_distance(spheres_[id], ray, lo);
-            if (!(t < limit) || hidden(materials_[material_[id]]) ||
-                !pov_accepts(id, ray))
+            const Material& m = materials_[material_[id]];
+            if (!(t < reach) || hidden(m) || !pov_accepts(id, ray) || !offer(t, m))
                 return;
-            limit = nearest_t = t;
+            accept(t, m);
             nearest_sphere = id;
-            found = true;
             return;
         }
         Hit h;
-        if (!test_primitive(id, ray, t_min, limit, h) || hidden(*h.material)) return;
-        limit = h.t;
+        bool inner_tie = false;
+        if (!test_primitive(id, ray, t_min, reach, h, probe,
+                            probe > 0 ? &inner_tie : nullptr) ||
+            hidden(*h.material))
+            return;
+        tie = tie || inner_tie;
+        if (!offer(h.t, *h.material)) return;
+        accept(h.t, *h.material);
         hit = h;
         nearest_sphere = ~0u;
-        found = true;
     };
-    Real limit = t_max;
-    for (uint32_t id : unbounded_) consider(id, limit);
+    for (uint32_t id : unbounded_) consider(id);
     ctx.mailbox.next_ray();
+    Real limit = reach;
     tree_.traverse(
         ray, t_min, limit,
         [&](const uint32_t* ids, size_t n, Real& tmax) {
             // A sphere spanning several leaves is simply tested again (cheaper than its
             // mailbox check).
             const size_t spheres = leading_spheres(ids, n, sphere_count_);
-            for_sphere_hits(ids, spheres, ray, lo, tmax, ctx, [&](uint32_t id, Real t) {
-                if (hidden(materials_[material_[id]]) || !pov_accepts(id, ray))
-                    return false;
-                tmax = nearest_t = t;
+            for_sphere_hits(ids, spheres, ray, lo, reach, ctx, [&](uint32_t id, Real t) {
+                const Material& m = materials_[material_[id]];
+                if (hidden(m) || !pov_accepts(id, ray) || !offer(t, m)) return false;
+                accept(t, m);
                 nearest_sphere = id;
-                found = true;
                 return false;
             });
             for (size_t i = spheres; i < n; ++i) {
                 // Objects hidden from this ray kind can have a hit beyond a visible one:
                 // a primitive seen in an earlier leaf was fully tested there.
                 if (!ctx.mailbox.first_visit(ids[i])) continue;
-                consider(ids[i], tmax);
+                consider(ids[i]);
             }
+            tmax = reach;
             return false;
         },
         [this](uint32_t first) { lanes_.prefetch(first); });
-    if (nearest_sphere != ~0u) fill_sphere_hit(nearest_sphere, ray, nearest_t, hit);
+    if (nearest_sphere != ~0u) fill_sphere_hit(nearest_sphere, ray, best, hit);
+    if (probe > 0 && found && (tie || other - best <= probe * std::fabs(best)))
+        ++ctx.ties;
     return found;
 }
 

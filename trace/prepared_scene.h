@@ -3,12 +3,15 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "core/scene.h"
 #include "octree/octree.h"
 #include "trace/pattern.h"
 #include "trace/pov_bounds.h"
+#include "trace/pov_order.h"
 #include "trace/render_plan.h"
 #include "trace/sphere_lanes.h"
 
@@ -104,6 +107,14 @@ struct Hit {
 struct RayContext {
     octree::Mailbox mailbox;
     uint64_t tests = 0;
+    // Tie probe (diagnostics, off while 0): closest_hit also looks for another surface
+    // (another leaf object) within this relative distance of the nearest hit, and counts
+    // the rays where it finds one in `ties`.
+    Real tie_tolerance = 0;
+    uint64_t ties = 0;
+    // ... and the hits found on a jump of their surface's pattern (on_pattern_boundary,
+    // counted by the tracer and shadow rays).
+    uint64_t pattern_ties = 0;
     // Per light: the primitive that last blocked a shadow ray toward it. Neighbouring
     // points are usually shadowed by the same object, so it is tried first.
     std::vector<uint32_t> last_blocker;
@@ -116,6 +127,10 @@ struct PrepareOptions {
     // POV-Ray's single-precision bounding-box tests (trace/pov_bounds.h) on every hit:
     // POV-Ray's image. Off: exact bounds, the rules the numerics oracle applies.
     bool pov_float_bounds = true;
+    // POV-Ray's Bounding_Threshold (kPovBoundingOff: -MB): whether it builds its
+    // bounding-slab tree, which decides its float box tests and its order of testing
+    // objects (exact ties in depth, trace/pov_order.h).
+    size_t pov_bounding_threshold = kPovBoundingThreshold;
 };
 
 class PreparedScene {
@@ -161,10 +176,19 @@ class PreparedScene {
 
   private:
     void build(const std::vector<const Object*>& objects);
-    void add_object(const Object& obj, const Material* parent_material);
+    // `frame`: the object's index in POV-Ray's object list (plain unions are opened
+    // first), ~0u when unknown, kSameFrame for a part of a frame object being added.
+    static constexpr uint32_t kSameFrame = ~0u - 1;
+    void add_object(const Object& obj, uint32_t frame);
     uint32_t add_material(const Object& obj);
-    bool test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max,
-                        Hit& hit) const;
+    // `tie`, when given: set when the object's nearest crossing has a crossing of another
+    // of its leaves within `tie_tolerance` (relative) of it (CSG objects only).
+    bool test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max, Hit& hit,
+                        Real tie_tolerance = 0, bool* tie = nullptr) const;
+    // On an exact tie in depth: whether POV-Ray would see `candidate`'s surface rather
+    // than `nearest`'s (trace/pov_order.h).
+    bool pov_takes(const Material& candidate, const Material& nearest,
+                   const Ray& ray) const;
     // POV-Ray's float bounding-box tests of primitive `id` (trace/pov_bounds.h): false
     // when POV-Ray would not intersect it with this ray at all. Asked only of hits.
     bool pov_accepts(uint32_t id, const Ray& ray) const;
@@ -185,6 +209,17 @@ class PreparedScene {
     void fill_sphere_hit(uint32_t id, const Ray& ray, Real t, Hit& hit) const;
     const Material* material_for(const Object* leaf) const;
     std::vector<std::pair<const Object*, uint32_t>> leaf_materials_;  // sorted by pointer
+    // The POV-Ray frame object the materials being added belong to (add_object).
+    uint32_t adding_frame_ = ~0u;
+    // Per material: where POV-Ray tests its leaf, for exact ties in depth
+    // (trace/pov_order.h): its frame-level object's index in POV-Ray's object list (~0u:
+    // unknown, no tie rule). Leaves povwall splits off one frame object (a union with
+    // bounded_by) share it; of those POV-Ray takes the later child's surface, and their
+    // materials are made in child order.
+    std::vector<uint32_t> material_frame_;
+    // POV-Ray's test order (its object list and slab tree), built on the first tie.
+    mutable std::once_flag pov_order_once_;
+    mutable std::unique_ptr<PovTestOrder> pov_order_;
 
     const Scene& scene_;
     RenderPlan plan_;

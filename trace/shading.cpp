@@ -738,14 +738,42 @@ Rgb shadow_filter(const PreparedScene& scene, const LayeredTexture& layers,
 
 }  // namespace
 
+bool on_pattern_boundary(const PreparedScene& scene, const Hit& hit, Real tolerance) {
+    if (!hit.material || hit.material->plain) return false;
+    const Real scale = std::max({Real(1), std::fabs(hit.point.x), std::fabs(hit.point.y),
+                                 std::fabs(hit.point.z)});
+    const Vector3 step = hit.normal * (tolerance * scale);
+    const Point3 above = hit.point + step, below = hit.point - step;
+    const PatternEnv& env = scene.pattern_env();
+    for (const Texture& t : texture_of(*hit.material)) {
+        if (t.map_pattern && !t.map->entries.empty()) {
+            if (std::fabs(evaluate_pattern(*t.map_pattern, above, env) -
+                          evaluate_pattern(*t.map_pattern, below, env)) > 0.1)
+                return true;
+            continue;
+        }
+        if (pigment_is_solid(t.pigment)) continue;
+        const Colour a = evaluate_pigment(t.pigment, above, env),
+                     b = evaluate_pigment(t.pigment, below, env);
+        const float d[5] = {a.rgb.r - b.rgb.r, a.rgb.g - b.rgb.g, a.rgb.b - b.rgb.b,
+                            a.filter - b.filter, a.transmit - b.transmit};
+        for (float x : d) {
+            if (std::fabs(x) > 0.1f) return true;
+        }
+    }
+    return false;
+}
+
 bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
                     Real light_distance, ShadowState& state, RayContext& ctx) {
     const Real hi = std::min(segment_end, light_distance - kShadowTolerance);
     if (state.blocked) return true;
     if (!(state.t_min < hi)) return false;
-    // Most shadow rays meet only opaque blockers or nothing: find out in any order.
-    bool transparent = false;
-    if (scene.opaque_blocker(ray, state.t_min, hi, transparent, ctx, state.light)) {
+    // Most shadow rays meet only opaque blockers or nothing: find out in any order (not
+    // while probing for ties, which looks at the crossings in order).
+    bool transparent = ctx.tie_tolerance > 0;
+    if (!transparent &&
+        scene.opaque_blocker(ray, state.t_min, hi, transparent, ctx, state.light)) {
         state.blocked = true;
         state.filter = Rgb{};
         return true;
@@ -762,6 +790,8 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
     for (int guard = 0; guard < 256 && state.t_min < hi; ++guard) {
         Hit hit;
         if (!scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx)) break;
+        if (ctx.tie_tolerance > 0 && on_pattern_boundary(scene, hit, ctx.tie_tolerance))
+            ++ctx.pattern_ties;
         const Material& m = *hit.material;
         bool black = m.opaque;
         if (!black && shows_interior_texture(m, hit, ray)) {

@@ -137,6 +137,13 @@ struct ShadowState {
 bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
                     Real light_distance, ShadowState& state, RayContext& ctx);
 
+// Tie probe (trace/ties.h): whether `hit` lies on a jump of its surface's pigment (or
+// texture map) pattern: the colours just above and just below the surface, `tolerance`
+// (relative to the point's size, at least 1) away along the normal, differ by more than
+// 0.1 in a channel. The last bits of the hit point then pick the colour (a gradient's
+// wrap exactly at a box's face).
+bool on_pattern_boundary(const PreparedScene& scene, const Hit& hit, Real tolerance);
+
 // Transmittance toward a light (shadow ray), POV-Ray's rules: hits in (1e-3, distance -
 // 1e-3), filters multiply, opaque blocks, interior fade between entering and leaving. For
 // an area light (`shadow.area`), the adaptive grid average (TraceAreaLightShadowRay's

@@ -11,9 +11,12 @@ TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
     if (refuse_ray(ray, scene_.scene().settings, counters_)) return {};
     count_ray(ray, counters_);
     Hit hit;
-    if (!scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_)) {
-        return miss_colour(scene_, ray.ray);
-    }
+    const Real probe = ray.depth <= tie_levels_ ? tie_tolerance_ : 0;
+    ctx_.tie_tolerance = probe;
+    const bool found = scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_);
+    ctx_.tie_tolerance = 0;
+    if (!found) return miss_colour(scene_, ray.ray);
+    if (probe > 0 && on_pattern_boundary(scene_, hit, probe)) ++ctx_.pattern_ties;
     if (records_.size() <= level) {
         records_.resize(level + 1);
         results_.resize(level + 1);
@@ -31,7 +34,9 @@ TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
                 r.colour = Rgb(1.0f);
             } else {
                 ++counters_.shadow;
+                ctx_.tie_tolerance = probe;
                 r.colour = shadow_transmittance(scene_, child, ctx_);
+                ctx_.tie_tolerance = 0;
             }
         } else {
             r = trace_at(child.trace, level + 1);

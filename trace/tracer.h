@@ -59,6 +59,18 @@ class Tracer {
     TraceResult trace(const TraceRay& ray);
     const TraceCounters& counters() const { return counters_; }
     uint64_t intersection_tests() const { return ctx_.tests; }
+    // Tie probe (trace/ties.h): rays up to trace level `levels` (1: camera rays), and the
+    // shadow rays from their hits, look for a second surface within `tolerance`
+    // (relative) of their nearest hit; ties() counts the rays that found one.
+    void set_tie_probe(Real tolerance, int levels) {
+        tie_tolerance_ = tolerance;
+        tie_levels_ = levels;
+    }
+    uint64_t ties() const { return ctx_.ties; }
+    // ... and the rays whose nearest hit lies on a jump of its pigment (or texture map)
+    // pattern: the surface coincides with a colour boundary (a gradient's wrap exactly
+    // at a box's face), so the last bits of the hit point pick the colour.
+    uint64_t pattern_ties() const { return ctx_.pattern_ties; }
 
   private:
     TraceResult trace_at(const TraceRay& ray, size_t level);
@@ -66,6 +78,8 @@ class Tracer {
     const PreparedScene& scene_;
     RayContext ctx_;
     TraceCounters counters_;
+    Real tie_tolerance_ = 0;
+    int tie_levels_ = 0;
     // Records and result buffers reused per recursion level: no allocation per ray.
     std::vector<ShadingRecord> records_;
     std::vector<std::vector<TraceResult>> results_;

@@ -353,6 +353,36 @@ TEST(Cli, CompareReportsBothRendersAsJson) {
     }
 }
 
+// A disc lying in a plane: POV-Ray's rounding picks disc or plane pixel by pixel. Every
+// differing pixel is an exact tie, named as such, and --exclude-ties leaves them out.
+TEST(Cli, CompareNamesExactTies) {
+    if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
+    fs::path scene = write_scene("tie.pov",
+                                 "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+                                 "camera { location <0, 4, -4> look_at 0 angle 40 }\n"
+                                 "light_source { <0, 5, -2> color rgb 1 }\n"
+                                 "plane { y, 0 pigment { rgb 0.8 } }\n"
+                                 "disc { 0, y, 1 pigment { rgb <1, 0, 0> } }\n");
+    RunResult r = run("compare " + scene.string() + " -W 40 -H 30 --threads 1 --json");
+    nlohmann::json j = nlohmann::json::parse(r.out);
+    const long long bad = j["bad_pixels"].get<long long>();
+    EXPECT_GT(bad, 20);  // the disc covers about 230 pixels
+    EXPECT_EQ(j["tie_pixels"].get<long long>(), bad);
+    EXPECT_EQ(j["pattern_boundary_pixels"].get<long long>(), 0);
+    EXPECT_EQ(j["status"], "fail");
+    r = run("compare " + scene.string() + " -W 40 -H 30 --threads 1");
+    const std::string b = std::to_string(bad);
+    EXPECT_NE(r.out.find("bad pixels: " + b + " (" + b + " exact ties, 0 other)\n"),
+              std::string::npos)
+        << r.out;
+    r = run("compare " + scene.string() + " -W 40 -H 30 --threads 1 --exclude-ties");
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("left out of the decision: " + b +
+                         " exact ties, 0 on a pattern boundary\nPASS\n"),
+              std::string::npos)
+        << r.out;
+}
+
 // Speed bars are measured with `povwall bench`: both renderers as whole processes,
 // alternating, and the medians of the times it lists.
 TEST(Cli, BenchAlternatesRendersAndComparesMedians) {

@@ -173,16 +173,15 @@ TEST(Intersect, PlaneAwayRejectionKeepsPovRaysAnswer) {
         // Directions nearly along the plane: the normal component from 1 down to 1e-40.
         Vector3 along = normalize(cross(n, Vector3{u(rng), u(rng), u(rng)}));
         ray.direction = normalize(along + n * (u(rng) * std::pow(10.0, -tiny(rng))));
-        // POV-Ray's arithmetic, as the general object path does it.
-        const Real len = length(ray.direction);
-        const Vector3 dn = ray.direction / len;
-        const Real nd = dot(pn, dn);
+        // POV-Ray's arithmetic for a plane it keeps without a transform: the depth along
+        // the ray as given, no re-normalisation (planes.cpp Plane::Intersect).
+        const Real nd = dot(pn, ray.direction);
         bool want = false;
         Real want_t = 0;
         if (!(std::fabs(nd) < kPovEpsilon)) {
-            const Real t_obj = (pd - dot(pn, ray.origin)) / nd;
-            if (t_obj > 1e-6 && t_obj < 1e7) {
-                want_t = t_obj / len;
+            const Real t = (pd - dot(pn, ray.origin)) / nd;
+            if (t > 1e-6 && t < 1e7) {
+                want_t = t;
                 want = want_t >= kMinIsectDepth;
             }
         }
