@@ -45,6 +45,10 @@ struct StoredImage {
     // A palette image (GIF, palette PNG, BMP of up to 8 bits, colour-mapped TGA): POV-Ray
     // keeps its indices, which some of its options read (bump_map use_index).
     bool colour_mapped = false;
+    // A colour-mapped file's palette index of each pixel, when its palette could be read
+    // and names each colour once (output/palette.h); else empty.
+    std::vector<uint8_t> indices;
+    int palette_size = 0;
 };
 
 // Reads an image file; throws std::runtime_error with a message naming the problem. The

@@ -101,6 +101,9 @@ struct Warp {
 struct ImagePixels {
     int width = 0, height = 0;
     std::vector<float> rgbft;  // 5 floats per pixel
+    // A palette file's index of each pixel (bump_map use_index reads it); else empty.
+    std::vector<uint8_t> indices;
+    int palette_size = 0;
     const float* at(int x, int y) const {
         return &rgbft[(size_t(y) * size_t(width) + size_t(x)) * 5];
     }
@@ -115,7 +118,9 @@ struct ImageMapping {
     int map_type = 0;     // 0 planar, 1 spherical, 2 cylindrical, 5 torus
     int interpolate = 0;  // 0 none, 2 bilinear, 3 bicubic, 4 normalised distance
     bool once = false;
-    bool use_index = false;  // bump_map: same as use_color for non-indexed images
+    // bump_map: heights are palette indices (ImagePixels::indices); for other images
+    // the colours' grey, as use_color.
+    bool use_index = false;
     float all_filter = 0, all_transmit = 0;
     Real width = 0, height = 0;  // image size in pixels times the `repeat` vector
     Real offset_u = 0,
@@ -304,7 +309,7 @@ struct Mesh {
     // Faces with a texture per corner (mesh2 `<a, b, c>, t0, t1, t2`, a mesh triangle's
     // texture_list): POV-Ray blends them by the hit's barycentric weights.
     std::vector<std::array<int32_t, 3>> texture_triples;
-    HeapOptional<Vector3> inside_vector;   // only a mesh with one is solid
+    HeapOptional<Vector3> inside_vector;  // only a mesh with one is solid
 };
 
 struct Object;

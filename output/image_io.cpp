@@ -12,6 +12,7 @@
 #include <random>
 
 #include "output/image_backend.h"
+#include "output/palette.h"
 #include "output/png_writer.h"
 
 namespace povwall::output {
@@ -189,25 +190,6 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
 
 Image read_image(const std::string& path) { return read_stored_image(path).pixels; }
 
-namespace {
-
-// Whether the file stores palette indices, from its header (OpenImageIO expands palettes
-// and does not say).
-bool colour_mapped_file(const std::string& path, const std::string& format) {
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) return false;
-    unsigned char h[32] = {};
-    const size_t n = std::fread(h, 1, sizeof h, f);
-    std::fclose(f);
-    if (format == "gif") return true;
-    if (format == "png") return n >= 26 && h[25] == 3;  // IHDR colour type 3
-    if (format == "bmp") return n >= 30 && h[28] + 256 * h[29] <= 8;  // bits per pixel
-    if (format == "targa") return n >= 3 && h[1] == 1 && (h[2] == 1 || h[2] == 9);
-    return false;
-}
-
-}  // namespace
-
 StoredImage read_stored_image(const std::string& path) {
     int width = 0, height = 0, nc = 0;
     std::vector<float> pixels;
@@ -229,6 +211,11 @@ StoredImage read_stored_image(const std::string& path) {
     stored.declared_gamma = info.declared_gamma;
     stored.has_alpha = info.has_alpha;
     stored.colour_mapped = colour_mapped_file(path, info.format);
+    if (stored.colour_mapped) {
+        const auto palette = read_palette(path, info.format);
+        stored.indices = palette_indices(path, info.format, stored.pixels, palette);
+        stored.palette_size = int(palette.size());
+    }
     return stored;
 }
 

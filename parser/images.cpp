@@ -97,6 +97,8 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
     mapping->path = path;
     image_files_.push_back(path);
     bool colour_mapped = false;
+    std::shared_ptr<ImagePixels> pixels;  // editable while the block is read
+    std::optional<Token> use_index_at;
     if (options_.image_reader) {
         StoredImage stored;
         try {
@@ -150,6 +152,9 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             d[4] = stored.has_alpha ? 1.0f - s[3] : 0.0f;
         }
         colour_mapped = stored.colour_mapped;
+        px->indices = std::move(stored.indices);
+        px->palette_size = stored.palette_size;
+        pixels = px;
         mapping->pixels = std::move(px);
         mapping->width = mapping->pixels->width;
         mapping->height = mapping->pixels->height;
@@ -184,8 +189,10 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         } else if (w == "use_index") {
             // A bump map of palette indices takes each index itself as the height; of
             // other images, the colours' grey (POV-Ray 3.7's bump_map).
-            if (is_bump && colour_mapped)
-                unsupported(t, "bump_map use_index on a palette image");
+            if (is_bump && colour_mapped && pixels && pixels->indices.empty())
+                unsupported(
+                    t, "bump_map use_index on a palette image that repeats a colour");
+            use_index_at = t;
             mapping->use_index = true;
         } else if (w == "repeat") {
             Token at = peek();
@@ -202,12 +209,37 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         } else if (!is_bump && (w == "filter" || w == "transmit" || w == "alpha")) {
             if (w == "alpha")
                 warn(t, "keyword 'alpha' discontinued; use 'filter' instead");
+            // A palette image keeps filter and transmit per palette entry, which these
+            // set; other images add `all`'s value to every pixel.
+            const int channel = w == "transmit" ? 4 : 3;
+            const bool indexed = pixels && !pixels->indices.empty();
             if (accept_word("all")) {
-                float v = float(parse_float());
-                (w == "transmit" ? mapping->all_transmit : mapping->all_filter) = v;
+                const float v = float(parse_float());
+                if (indexed) {
+                    for (size_t i = 0; i < pixels->indices.size(); ++i)
+                        pixels->rgbft[i * 5 + size_t(channel)] = v;
+                } else {
+                    (channel == 4 ? mapping->all_transmit : mapping->all_filter) = v;
+                }
+            } else if (indexed || !pixels) {
+                const Token at = peek();
+                const int reg = int(parse_float() + 0.01);
+                if (pixels && (reg < 0 || reg >= pixels->palette_size))
+                    error(at, std::string(w) + " colour register " + std::to_string(reg) +
+                                  " out of range (the palette has " +
+                                  std::to_string(pixels->palette_size) + " colours)");
+                accept_punct(',');
+                const float v = float(parse_float());
+                if (pixels) {
+                    for (size_t i = 0; i < pixels->indices.size(); ++i)
+                        if (pixels->indices[i] == reg)
+                            pixels->rgbft[i * 5 + size_t(channel)] = v;
+                }
+            } else if (colour_mapped) {
+                unsupported(t, std::string(w) +
+                                   " <index> on a palette image that repeats a colour");
             } else {
-                // Per-index values need a colour-mapped (palette) image; OpenImageIO
-                // expands palettes, so every image is read as true colour here.
+                // POV-Ray: per-index values need a colour-mapped (palette) image.
                 error(t, std::string(w) + " <index> needs a colour-mapped image; use " +
                              std::string(w) + " all");
             }
@@ -215,6 +247,10 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             expected(is_bump ? "a bump_map item or '}'" : "an image_map item or '}'", t);
         }
     }
+    // POV-Ray averages the corners' indices when it interpolates them.
+    if (is_bump && use_index_at && mapping->use_index && colour_mapped &&
+        mapping->interpolate != 0)
+        unsupported(*use_index_at, "bump_map use_index with interpolate");
     return mapping;
 }
 

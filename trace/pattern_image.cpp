@@ -86,10 +86,9 @@ bool image_coordinates(const ImageMapping& m, const Point3& p, Real& u, Real& v)
     return true;
 }
 
-// One pixel (rgbft, with filter/transmit all added), wrapping or clamping its indices.
-void pixel(const ImageMapping& m, Real x, Real y, double out[5]) {
+// The pixel at image coordinates (x, y), wrapping or clamping them.
+void pixel_at(const ImageMapping& m, Real x, Real y, int& ix, int& iy) {
     const ImagePixels& img = *m.pixels;
-    int ix, iy;
     if (m.once) {
         ix = x < 0.0 ? 0 : (x >= img.width ? img.width - 1 : int(x));
         iy = y < 0.0 ? 0 : (y >= img.height ? img.height - 1 : int(y));
@@ -97,6 +96,13 @@ void pixel(const ImageMapping& m, Real x, Real y, double out[5]) {
         ix = std::min(int(wrap(x, Real(img.width))), img.width - 1);
         iy = std::min(int(wrap(y, Real(img.height))), img.height - 1);
     }
+}
+
+// One pixel (rgbft, with filter/transmit all added).
+void pixel(const ImageMapping& m, Real x, Real y, double out[5]) {
+    const ImagePixels& img = *m.pixels;
+    int ix, iy;
+    pixel_at(m, x, y, ix, iy);
     const float* c = img.at(ix, iy);
     for (int i = 0; i < 5; ++i) out[i] = c[i];
     out[3] += m.all_filter;
@@ -183,13 +189,22 @@ void bump_map_normal(const ImageMapping& m, Real amount, const Point3& p, Vector
     auto rewrap = [](Real v, Real limit) {
         return v < 0.0 ? v + limit : (v >= limit ? v - limit : v);
     };
+    // A palette image's index itself is the height with use_index (not scaled to 0..1:
+    // POV-Ray's bump_map); otherwise the colour's grey.
+    const bool indices = m.use_index && !m.pixels->indices.empty();
+    auto height = [&](Real hx, Real hy) -> Real {
+        if (!indices) return sample(m, hx, hy).rgb.grey();
+        int ix, iy;
+        pixel_at(m, hx, hy, ix, iy);
+        return m.pixels->indices[size_t(iy) * size_t(m.pixels->width) + size_t(ix)];
+    };
     // Heights here, one pixel left-down and one right-down (image rows grow downwards).
-    Real h1 = sample(m, x, y).rgb.grey();
+    Real h1 = height(x, y);
     x = rewrap(x - 1, iw);
     y = rewrap(y + 1, ih);
-    Real h2 = sample(m, x, y).rgb.grey();
+    Real h2 = height(x, y);
     x = rewrap(x + 2, iw);
-    Real h3 = sample(m, x, y).rgb.grey();
+    Real h3 = height(x, y);
     // The normal of the triangle through the three height samples...
     Vector3 p1{0, amount * h1, 0}, p2{-1, amount * h2, 1}, p3{1, amount * h3, 1};
     Vector3 bump = normalize(cross(p3 - p2, p1 - p2));

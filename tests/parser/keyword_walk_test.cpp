@@ -370,16 +370,30 @@ TEST(KeywordDetails, BinaryWriteRoundsClampsAndOrdersBytes) {
               "#write: expected a float or vector after 'uint8' but found string");
 }
 
-TEST(KeywordDetails, BumpMapIndicesOfAPaletteImageAreRefused) {
+TEST(KeywordDetails, PaletteIndicesAndTheirLimits) {
+    // POV-Ray averages the corners' indices when it interpolates: refused.
     std::optional<ParseError> e = parse_snippet(
-        "plane { z, 0 normal { bump_map { gif \"images/card.gif\" use_index } } }");
+        "plane { z, 0 normal { bump_map { png \"images/palette.png\" use_index "
+        "interpolate 2 } } }");
     ASSERT_TRUE(e);
     EXPECT_EQ(e->kind(), ParseError::Kind::Unsupported);
-    EXPECT_EQ(e->message(), "unsupported: bump_map use_index on a palette image");
-    EXPECT_EQ(e->loc().column, 56);  // at use_index
+    EXPECT_EQ(e->message(), "unsupported: bump_map use_index with interpolate");
+    EXPECT_EQ(e->loc().column, 59);  // at use_index
     // Of a true-colour image, use_index reads its grey as use_colour does.
     EXPECT_FALSE(parse_snippet(
         "plane { z, 0 normal { bump_map { png \"images/card.png\" use_index } } }"));
+    // A palette entry that does not exist, and a per-entry value on a true-colour image.
+    e = parse_snippet(
+        "plane { z, 0 pigment { image_map { png \"images/palette.png\" filter 8, 1 } } "
+        "}");
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->message(),
+              "filter colour register 8 out of range (the palette has 8 colours)");
+    e = parse_snippet(
+        "plane { z, 0 pigment { image_map { png \"images/card.png\" transmit 1, 1 } } }");
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->message(),
+              "transmit <index> needs a colour-mapped image; use transmit all");
 }
 
 }  // namespace
