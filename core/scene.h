@@ -463,7 +463,9 @@ struct GlobalSettings {
     // Absent from the scene, it follows the final #version: 1 below 3.5, else 2.
     int noise_generator = 2;
     int max_intersections = 64;
-    Rgb irid_wavelength{0.25f, 0.18f, 0.14f};
+    Rgb irid_wavelength{
+        0.70f, 0.52f,
+        0.48f};  // POV-Ray 3.7's (not the 0.25, 0.18, 0.14 its documentation gives)
     int number_of_waves = 10;
 };
 

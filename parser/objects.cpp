@@ -258,6 +258,17 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         pass_down(pass_down, obj);
     } else if (w == "inverse") {
         obj.inverse = !obj.inverse;
+        // POV-Ray inverts a CSG by inverting its children and morphing every CSG of the
+        // tree (union and merge into intersection, intersection into merge): a union
+        // never comes back, and its surfaces inside another child are gone. Kept as the
+        // inverse of a merge, whose surfaces are those.
+        auto morph = [](auto& self, Object& o) -> void {
+            Csg* csg = std::get_if<Csg>(&o.shape);
+            if (!csg) return;
+            if (csg->kind == CsgKind::Union) csg->kind = CsgKind::Merge;
+            for (Object& c : csg->children) self(self, c);
+        };
+        morph(morph, obj);
     } else if (w == "double_illuminate") {
         obj.double_illuminate = true;
     } else if (w == "sturm") {

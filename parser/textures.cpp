@@ -632,6 +632,8 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
                     sub = parse_normal_block();
                     expect_punct(']', "to close the normal_map entry");
                 } else {
+                    // An entry starts from the #default normal, as a normal { } does.
+                    if (default_texture_.normal) sub = *default_texture_.normal;
                     parse_normal_body(sub, ']');
                 }
                 n.map_values.push_back(value);

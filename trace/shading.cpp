@@ -74,6 +74,26 @@ Rgb iridescence(const Finish& f, const Scene& sc, const Point3& P, const Vector3
             float(1 + f.irid * std::cos(phase / wl.b))};
 }
 
+// POV-Ray's reflected direction (ComputeReflection): D mirrored about the layer's normal
+// Nl; when that sends it behind the surface (N faces the ray), mirrored once more about
+// N, or, if it also leaves through Nl's back, D mirrored about N instead.
+Vector3 reflected_direction(const Vector3& D, const Vector3& Nl, const Vector3& N) {
+    Vector3 R = D - Nl * (2 * dot(D, Nl));
+    const Real rn = dot(R, N);
+    if (rn < 0) R = dot(R, Nl) < 0 ? D - N * (2 * dot(D, N)) : R - N * (2 * rn);
+    return normalize(R);
+}
+
+// A reflected child's iridescence (POV-Ray tints what a reflected ray brings back, before
+// the reflection exponent): folded into its coefficient, which is exact for the
+// non-negative colours it scales.
+void tint_reflection(ChildRay& child, const Rgb& tint) {
+    auto f = [&](float t) {
+        return child.exponent == 1 ? t : std::pow(std::max(0.0f, t), 1 / child.exponent);
+    };
+    child.coeff *= Rgb(f(tint.r), f(tint.g), f(tint.b));
+}
+
 // A uniform number in [0, 1) for crand at point P and light l: POV-Ray draws a random
 // one there; this one depends only on where (the same in every mode).
 Real crand_sample(const Point3& P, size_t l) {
@@ -230,8 +250,8 @@ namespace {
 
 // Shades `hit` once with each of `n` stand-in materials and merges the records with
 // their weights (POV-Ray sums the weighted colours of the textures it finds for a hit);
-// children keep combining linearly, and their interior stacks name the hit's own material,
-// not the stand-ins. `out.fog` is kept.
+// children keep combining linearly, and their interior stacks name the hit's own
+// material, not the stand-ins. `out.fog` is kept.
 void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     const Material* const* subs, const float* weights, int n,
                     ShadingRecord& out) {
@@ -278,6 +298,24 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
     if (!t.map_pattern || t.map->entries.empty()) return false;
     const int count = int(t.map->entries.size());
     const bool has_values = int(t.map->values.size()) == count;
+    if (t.map_pattern->kind == PatternKind::Average) {
+        // `average`: every entry shaded, weighted by its value over their sum (POV-Ray's
+        // ComputeAverageTextureColours). Rare enough for the lists to be allocated here.
+        float total = 0;
+        for (int i = 0; i < count; ++i)
+            total += has_values ? t.map->values[size_t(i)] : 1.0f;
+        const size_t entries = size_t(count);
+        std::vector<Material> subs(entries, m);
+        std::vector<const Material*> used(entries);
+        std::vector<float> weights(entries);
+        for (int i = 0; i < count; ++i) {
+            subs[size_t(i)].texture = &t.map->entries[size_t(i)];
+            used[size_t(i)] = &subs[size_t(i)];
+            weights[size_t(i)] = (has_values ? t.map->values[size_t(i)] : 1.0f) / total;
+        }
+        spawn_weighted(scene, ray, hit, used.data(), weights.data(), count, out);
+        return true;
+    }
     MapPick pick =
         pick_map_entries(*t.map_pattern, has_values ? t.map->values.data() : nullptr,
                          count, hit.point, scene.pattern_env());
@@ -288,9 +326,9 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
     float weights[2];
     int n = 0;
     for (int e = 0; e < 2; ++e) {
-        const float w =
-            entries[1] == entries[0] ? 1.0f : (e == 0 ? float(1 - pick.lookup.fraction)
-                                                      : fraction);
+        const float w = entries[1] == entries[0]
+                            ? 1.0f
+                            : (e == 0 ? float(1 - pick.lookup.fraction) : fraction);
         if ((e == 0 ? float(1 - pick.lookup.fraction) : fraction) <= 0) continue;
         if (e == 1 && entries[1] == entries[0]) continue;
         subs[e].texture = &t.map->entries[size_t(std::clamp(entries[e], 0, count - 1))];
@@ -380,6 +418,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     Rgb fil(1.0f);
     float trans = 1;
     Vector3 top_normal = N;
+    const Finish* top_finish = nullptr;  // the top layer's (total internal reflection)
     // Each reflection child with its layer's normal: total internal reflection drops
     // those of the layers whose normal is the top layer's (POV-Ray 3.7).
     thread_local std::vector<std::pair<size_t, Vector3>> reflection_normals;
@@ -395,6 +434,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         const float att = legacy ? 1 - (lay.filter * max3(lay.rgb) + lay.transmit)
                                  : 1 - lay.filter - lay.transmit;
         const Finish& f = tex ? *tex->finish : m.plain_finish;
+        if (li == nlayers - 1) top_finish = &f;
         Rgb tmp = lay.rgb * f.ambient * sc.settings.ambient_light * att +
                   lay.rgb * f.emission * att;
         out.local += tmp * fil;
@@ -501,18 +541,17 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         // Reflection rays from +Q8 (the reflectivity still counts for conserve_energy).
         if (has_reflection && quality.reflection()) {
             reflection_normals.push_back({out.children.size(), Nl});
-            Vector3 R = D - Nl * (2 * dot(D, Nl));
-            if (dot(R, N) < 0)
-                R = D - N * (2 * dot(D, N));  // perturbed normal pointed away
+            const Vector3 R = reflected_direction(D, Nl, N);
             ChildRay child;
             child.kind = ChildRay::Kind::Reflection;
-            child.trace.ray = {P, normalize(R)};
+            child.trace.ray = {P, R};
             child.trace.depth = ray.depth + 1;
             child.trace.weight = reflection_weight;
             child.trace.use = RayUse::Reflection;
             child.trace.interiors = ray.interiors;
             child.coeff = reflectivity;
             child.exponent = f.reflection_exponent;
+            if (f.irid > 0) tint_reflection(child, iridescence(f, sc, P, Nl, R, D));
             out.children.push_back(child);
         }
         fil *= rgb_transm(lay);
@@ -596,24 +635,34 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
             child.trace.ray = {P, D};
             child.trace.depth = ray.depth;
         } else {
-            Real n = -dot(D, top_normal);
+            // Bent about the top layer's normal turned to face the ray (a perturbed
+            // normal may point away from it).
+            Vector3 facing = top_normal;
+            Real n = -dot(D, facing);
+            if (n < 0) {
+                facing = -facing;
+                n = -n;
+            }
             Real t = 1 + eta * eta * (n * n - 1);
             child.trace.depth = ray.depth + 1;
             if (t < 0) {
-                // Total internal reflection: reflected with the top normal, not
-                // filtered, no alpha, and the ray stays inside; the layers whose normal
-                // is the top one reflect no more.
-                Vector3 R = D + top_normal * (2 * n);
+                // Total internal reflection: reflected as a finish reflects (top normal,
+                // raw normal, iridescence), not filtered, no alpha, and the ray stays
+                // inside; the layers whose normal is the top one reflect no more.
+                const Vector3 R = reflected_direction(D, top_normal, N);
                 child.kind = ChildRay::Kind::Reflection;
-                child.trace.ray = {P, normalize(R)};
+                child.trace.ray = {P, R};
                 child.trace.use = RayUse::Reflection;
                 child.trace.interiors = ray.interiors;
                 child.coeff = att;
                 child.transmit_factor = 0;
+                if (top_finish && top_finish->irid > 0)
+                    tint_reflection(child,
+                                    iridescence(*top_finish, sc, P, top_normal, R, D));
                 drop_reflections_with_normal(out.children, reflection_normals,
                                              top_normal);
             } else {
-                Vector3 T = D * eta + top_normal * (eta * n - std::sqrt(t));
+                Vector3 T = D * eta + facing * (eta * n - std::sqrt(t));
                 child.trace.ray = {P, normalize(T)};
             }
         }
@@ -698,7 +747,9 @@ namespace {
 // surface head on (POV-Ray's 1 + |N.D|^caustics, with the layer's perturbed normal).
 float caustic_gain(const PreparedScene& scene, const Texture* t, float caustics,
                    const Hit& hit, const Ray& ray) {
-    Vector3 n = hit.normal;
+    // Turned to face the shadow ray before it is perturbed, as POV-Ray's shadow texture
+    // does (a bump is not mirrored with the normal, so the side matters).
+    Vector3 n = dot(hit.normal, ray.direction) > 0 ? -hit.normal : hit.normal;
     if (t && t->normal) n = perturb_normal(*t->normal, hit.point, n, scene.pattern_env());
     return float(1 + std::pow(std::fabs(dot(n, ray.direction)), Real(caustics)));
 }
@@ -713,6 +764,19 @@ Rgb shadow_filter(const PreparedScene& scene, const LayeredTexture& layers,
         const Texture& t = layers.front();
         const int count = int(t.map->entries.size());
         const bool has_values = int(t.map->values.size()) == count;
+        if (t.map_pattern->kind == PatternKind::Average) {
+            // Every entry, weighted by its value (POV-Ray's average texture).
+            Rgb sum(0.0f);
+            float total = 0;
+            for (int i = 0; i < count; ++i) {
+                const float v = has_values ? t.map->values[size_t(i)] : 1.0f;
+                sum +=
+                    shadow_filter(scene, t.map->entries[size_t(i)], caustics, hit, ray) *
+                    v;
+                total += v;
+            }
+            return sum * (1 / total);
+        }
         const MapPick pick =
             pick_map_entries(*t.map_pattern, has_values ? t.map->values.data() : nullptr,
                              count, hit.point, scene.pattern_env());
@@ -795,8 +859,9 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
         const Material& m = *hit.material;
         bool black = m.opaque;
         if (!black && shows_interior_texture(m, hit, ray)) {
-            state.filter *= shadow_filter(scene, *m.interior_texture,
-                                          m.interior ? m.interior->caustics : 0.0f, hit, ray);
+            state.filter *=
+                shadow_filter(scene, *m.interior_texture,
+                              m.interior ? m.interior->caustics : 0.0f, hit, ray);
         } else if (!black && m.blend) {
             // The corners' filters weighted (POV-Ray sums the weighted shadow colours,
             // whose filter is the sum of the weights used).
