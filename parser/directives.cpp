@@ -573,6 +573,8 @@ void Interpreter::directive_include(const Token& t) {
     }
     std::string path = resolve_include(name, frames_.back().file);
     if (path.empty()) error(nt, "cannot find include file \"" + name + "\"");
+    // Reading and lexing a large include takes a while: meanwhile the parse is here.
+    publish_place(nt.file, nt.offset);
     SourceText text;
     if (!text.read_file(path)) error(nt, "cannot open include file \"" + path + "\"");
     int index = sources_.add(path, std::move(text));
@@ -584,6 +586,7 @@ void Interpreter::directive_include(const Token& t) {
                        scopes_.size() - 1,
                        {},
                        &sources_.file(index).tokens});
+    publish_place(index, sources_.file(index).tokens.front().offset);
 }
 
 // #default { texture {...} | pigment {...} | finish {...} | normal {...} }: what later

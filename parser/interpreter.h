@@ -282,7 +282,11 @@ class Interpreter {
     // resident memory, a /proc read, once per 16 clock reads.
     std::chrono::steady_clock::time_point parse_deadline_;
     uint32_t tokens_since_clock_ = 0, clock_reads_ = 0;
-    void check_parse_limits(const Token& at);            // time and memory
+    void check_parse_limits(const Token& at);  // time and memory
+    // ParseOptions::place: the line of the token at `offset`, and the file's name when it
+    // is not the one published last.
+    void publish_place(int file, uint32_t offset);
+    int published_file_ = -1;
     uint64_t resident_at_start_ = 0, memory_limit_ = 0;  // bytes; limit 0: none
     std::vector<std::unique_ptr<RandomStream>> streams_;
     // POV-Ray's version state (its languageVersion and languageVersionSet): `version`

@@ -52,8 +52,20 @@ Interpreter::Interpreter(const ParseOptions& options, SourceManager& sources)
                               std::chrono::duration<double>(options_.max_parse_seconds));
 }
 
+void Interpreter::publish_place(int file, uint32_t offset) {
+    if (!options_.place || file < 0) return;
+    const auto line = uint32_t(sources_.location(file, offset).line);
+    if (file == published_file_) {
+        options_.place->set_line(line);
+    } else {
+        options_.place->set(sources_.file(file).path, line);
+        published_file_ = file;
+    }
+}
+
 void Interpreter::check_parse_limits(const Token& at) {
     tokens_since_clock_ = 0;
+    publish_place(at.file, at.offset);
     if (memory_limit_ && ++clock_reads_ % 16 == 0) {
         const uint64_t now = resident_bytes();
         if (now > resident_at_start_ && now - resident_at_start_ > memory_limit_) {
@@ -116,6 +128,7 @@ Scene Interpreter::run(int root_file) {
                        1,
                        {},
                        &sources_.file(root_file).tokens});
+    publish_place(root_file, sources_.file(root_file).tokens.front().offset);
     for (;;) {
         Token t = next();
         if (t.kind == TokenKind::End) break;

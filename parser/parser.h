@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/image.h"
+#include "core/published_place.h"
 #include "core/scene.h"
 
 namespace povwall::parser {
@@ -55,6 +56,10 @@ struct ParseOptions {
     // Growth of the process's resident memory during the parse (a loop that makes objects
     // without end); 0: half the memory available when the parse starts.
     uint64_t max_parse_memory = 0;
+    // When set, kept current with the file and line being read (every few thousand
+    // tokens and at each #include's start and end), so that a signal handler or another
+    // thread can name where an interrupted parse was.
+    PublishedPlace* place = nullptr;
     // Called with each finished top-level object; false leaves it out of Scene::objects
     // (its light sources stay). A black-box worker keeps only what overlaps its boxes,
     // so its memory holds its part of the scene, never the whole. Null: everything.

@@ -28,7 +28,12 @@ Token Interpreter::next_raw() {
         if (frames_.size() == 1) return end_tok;
         scopes_.resize(f.scope_depth);
         if (f.kind == Frame::Kind::Macro) --macro_depth_;
+        const bool file_ended = f.kind == Frame::Kind::File;
         frames_.pop_back();
+        if (file_ended) {  // back in the includer, at the token after the #include
+            const Frame& g = frames_.back();
+            if (g.pos < g.end) publish_place(g.file, g.toks->packed[g.pos].offset);
+        }
     }
     return Token{};
 }
