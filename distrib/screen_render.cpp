@@ -214,8 +214,7 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
         error = e.what();
     }
     Image image(W, H);
-    if (settings.progress)
-        settings.progress->pixels_total += uint64_t(c1 - c0) * (r1 - r0);
+    if (settings.progress) settings.progress->start_pass(uint64_t(c1 - c0) * (r1 - r0));
     TilePool pool(tiles);
     if (!error.empty()) pool.stop();
     std::vector<std::string> lost;  // workers whose tiles went to the others

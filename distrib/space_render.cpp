@@ -909,7 +909,7 @@ Image render_space(const Scene& scene, const trace::RenderSettings& settings,
     for (size_t b = 0; b < all.size(); ++b) all[b] = int(b);
     host.build_boxes(all);
     if (settings.progress)
-        settings.progress->pixels_total += uint64_t(settings.width) * settings.height;
+        settings.progress->start_pass(uint64_t(settings.width) * settings.height);
     int threads = settings.threads > 0
                       ? settings.threads
                       : int(std::max(1u, std::thread::hardware_concurrency()));

@@ -1472,7 +1472,7 @@ class TcpCoordinator {
         started_ = false;
         progress_reported_ = 0;
         if (settings.progress)
-            settings.progress->pixels_total += uint64_t(settings.width) * settings.height;
+            settings.progress->start_pass(uint64_t(settings.width) * settings.height);
         for (WorkerState& w : workers_) {
             w.ready = w.done = false;
             w.created = w.finished = 0;

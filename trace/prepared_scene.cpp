@@ -7,6 +7,7 @@
 #include "octree/overlap.h"
 #include "octree/spatial_order.h"
 #include "trace/intersect.h"
+#include "trace/render.h"
 #include "trace/sphere_lanes.h"
 
 namespace povwall::trace {
@@ -548,6 +549,10 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     // Triangles and other shapes are still tested one by one and keep the default.
     const size_t sphere_refs = size_t(first_other - bounded_ids.begin());
     if (sphere_refs * 2 > bounded_ids.size()) build_options.traversal_cost = 12;
+    if (options_.progress) {
+        options_.progress->objects = bounded_ids.size();
+        options_.progress->stage = RenderProgress::Stage::BuildingOctree;
+    }
     tree_.build(input, build_options);
     // Re-map: store octree ids as primitive ids by permuting primitive arrays is avoided;
     // instead the bounded primitives are moved to the front so octree id == primitive id.

@@ -120,6 +120,8 @@ struct RayContext {
     std::vector<uint32_t> last_blocker;
 };
 
+struct RenderProgress;
+
 // How a scene is prepared, beside what its plan leaves out.
 struct PrepareOptions {
     // Threads building the octree (0: every core): the render's --threads.
@@ -131,6 +133,8 @@ struct PrepareOptions {
     // bounding-slab tree, which decides its float box tests and its order of testing
     // objects (exact ties in depth, trace/pov_order.h).
     size_t pov_bounding_threshold = kPovBoundingThreshold;
+    // Told when the octree build starts (not owned; may be null).
+    RenderProgress* progress = nullptr;
 };
 
 class PreparedScene {

@@ -72,10 +72,15 @@ void trace_camera_sample(Tracer& tracer, const Camera& camera,
 Image render_scene(const Scene& scene, const RenderSettings& settings,
                    RenderStats* stats) {
     auto t0 = Clock::now();
+    if (settings.progress) {
+        settings.progress->objects = scene.objects.size();
+        settings.progress->stage = RenderProgress::Stage::Preparing;
+    }
     const RenderPlan plan =
         make_render_plan(scene, settings.plan_everything_on, settings.quality);
     PrepareOptions prepare;
     prepare.threads = settings.threads;
+    prepare.progress = settings.progress;
     PreparedScene prepared(scene, &plan, prepare);
     prepared.set_alpha_background(settings.alpha);
     const CameraInteriors camera_interiors(scene);
@@ -114,8 +119,7 @@ Image render_scene(const Scene& scene, const RenderSettings& settings,
     auto over_rows = [&](int first, int last, auto&& per_row) {
         std::atomic<int> next_row{first};
         const uint64_t row_pixels = uint64_t(std::max(0, last_col - first_col + 1));
-        if (progress)
-            progress->pixels_total += row_pixels * std::max(0, last - first + 1);
+        if (progress) progress->start_pass(row_pixels * std::max(0, last - first + 1));
         run_pool([&](int ti) {
             Tracer tracer(prepared);
             uint64_t reported = 0;

@@ -10,13 +10,30 @@
 
 namespace povwall::trace {
 
-// Live counters a progress display reads while a render runs (renderers add to them from
-// any thread). Work is counted in pixel passes: every pass over the image (the first
-// samples, an anti-aliasing pass) adds its pixels to the total when it starts.
+// Live counters a progress display (or the message of an interrupted render) reads while
+// a render runs (renderers add to them from any thread). Work is counted in pixel passes:
+// every pass over the image (the first samples, an anti-aliasing pass) adds its pixels to
+// the total when it starts.
 struct RenderProgress {
     std::atomic<uint64_t> pixels_done{0};
     std::atomic<uint64_t> pixels_total{0};
     std::atomic<uint64_t> rays{0};
+    // What comes before the first pass, which can take long on a large scene.
+    enum class Stage : uint8_t { Preparing, BuildingOctree, Tracing };
+    std::atomic<Stage> stage{Stage::Preparing};
+    // Preparing: the scene's top-level objects; BuildingOctree: the bounded primitives
+    // being sorted into it.
+    std::atomic<uint64_t> objects{0};
+
+    // A pass over `pixels` pixels begins.
+    void start_pass(uint64_t pixels) {
+        pixels_total += pixels;
+        stage = Stage::Tracing;
+    }
+    void reset() {
+        pixels_done = pixels_total = rays = objects = 0;
+        stage = Stage::Preparing;
+    }
 };
 
 struct RenderSettings {
