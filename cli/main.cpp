@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/interrupt.h"
 #include "cli/options.h"
 #include "distrib/tcp.h"
 #include "output/image_io.h"
@@ -243,14 +244,14 @@ int render_main(const std::vector<std::string>& args) {
 }  // namespace povwall::cli
 
 // SIGINT/SIGTERM: nothing half-written stays behind (outputs go through a temporary name
-// and a rename), and the user is told so. Only async-signal-safe calls here.
+// and a rename), and the user is told so, with what the render was doing. Only
+// async-signal-safe calls here.
 extern "C" void on_interrupt(int sig) {
     const bool removed = povwall::output::remove_partial_output();
-    const char* msg =
-        removed ? "\npovwall: interrupted: the partly written image was removed; "
-                  "no image written\n"
-                : "\npovwall: interrupted: no image written\n";
-    ssize_t written = write(2, msg, std::strlen(msg));
+    char msg[2 * povwall::PublishedPlace::kCapacity + 256];
+    const size_t n = povwall::cli::interrupt_message(povwall::cli::g_render_record,
+                                                     removed, msg, sizeof msg);
+    ssize_t written = write(2, msg, n);
     (void)written;
     _exit(128 + sig);
 }

@@ -11,6 +11,7 @@
 #include <optional>
 #include <thread>
 
+#include "cli/interrupt.h"
 #include "cli/options.h"
 #include "cli/progress_bar.h"
 #include "distrib/distribution_plan.h"
@@ -204,8 +205,22 @@ int run_render(RenderOptions o) {
         o.output += format_extension(o.format);
     }
     // #fopen ... write puts relative names beside the image.
-    const parser::ParseOptions popts =
+    parser::ParseOptions popts =
         render_parse_options(o, std::filesystem::path(o.output).parent_path().string());
+    // What this render is doing, for the message of an interrupt (cli/interrupt.h).
+    RenderRecord& record = g_render_record;
+    record.frame = o.frame ? o.frame->number : -1;
+    record.parse.set(o.scene, 0);  // the parser gives the line once it has read the file
+    record.output.set(o.output, 0);
+    record.progress.reset();
+    record.phase = RenderPhase::Parsing;
+    struct Finished {
+        ~Finished() {
+            g_render_record.phase = RenderPhase::None;
+            g_render_record.frame = -1;
+        }
+    } finished;
+    popts.place = &record.parse;
     auto load_scene = [&] {
         Scene scene = parser::parse_scene_file(o.scene, popts);
         if (o.max_trace_level) scene.settings.max_trace_level = *o.max_trace_level;
@@ -235,6 +250,8 @@ int run_render(RenderOptions o) {
         return 2;
     }
     auto t1 = Clock::now();
+    record.progress.objects = scene.objects.size();
+    record.phase = RenderPhase::Rendering;
     distrib::DistributionRequest request;
     request.mode = o.mode == "single"   ? distrib::RenderMode::Single
                    : o.mode == "space"  ? distrib::RenderMode::Space
@@ -274,10 +291,9 @@ int run_render(RenderOptions o) {
         std::fflush(stdout);
     }
     trace::RenderStats stats;
-    trace::RenderProgress progress;
-    o.render.progress = &progress;
+    o.render.progress = &record.progress;
     std::optional<ProgressBar> bar;
-    bar.emplace(progress, !o.quiet);
+    bar.emplace(record.progress, !o.quiet);
     distrib::SpaceOptions space = dplan.space;
     const bool use_boxes = dplan.mode == distrib::RenderMode::Space;
     distrib::SpaceStats space_stats;
@@ -389,7 +405,9 @@ int run_render(RenderOptions o) {
     try {
         std::string format;
         if (o.format_given) format = format_extension(o.format).substr(1);
+        record.phase = RenderPhase::Writing;
         output::write_image(image, o.output, encoding_for(scene, o), format);
+        record.phase = RenderPhase::Written;
     } catch (const output::ImageIoError& e) {
         std::cerr << "povwall: error: " << e.what() << "\n";
         return 2;

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <random>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -168,12 +169,20 @@ TEST(Interrupt, WorkersEndQuietlyAndOnlyTheCoordinatorSpeaks) {
             "sleep 0.5; /bin/kill -s INT -- -$(cat " + p + "); sleep 1.5'";
         ASSERT_EQ(std::system(cmd.c_str()), 0) << mode;
         const std::string said = slurp(err);
-        // One line, the coordinator's (it may have been writing a frame's image).
-        EXPECT_TRUE(
-            said == "\npovwall: interrupted: no image written\n" ||
-            said ==
-                "\npovwall: interrupted: the partly written image was removed; no "
-                "image written\n")
+        // One line, the coordinator's, naming the frame and the phase it was in (it may
+        // have been between frames, or writing or just written a frame's image).
+        const std::string phase =
+            R"((parsing .*/walls\.pov:[0-9]+|preparing the scene \([0-9,]+ objects?\)|)"
+            R"(building the octree \([0-9,]+ primitives?\)|)"
+            R"(tracing: [0-9,]+ of 76,800 pixels \([0-9.]+ %\)))";
+        const std::string image = R"(.*/interrupt[0-9]+\.png)";
+        EXPECT_TRUE(std::regex_match(
+            said, std::regex("\npovwall: (interrupted: no image written|frame [0-9]+: "
+                             "interrupted (while " +
+                             phase + "; no image written|while writing " + image +
+                             "(: the partly written image was removed)?; no image "
+                             "written|after writing " +
+                             image + ", which is complete))\n")))
             << mode << ": " << said;
         // Nothing of this render still runs (the bracket keeps pgrep's own shell, whose
         // command line holds the pattern, from matching it).
