@@ -154,6 +154,23 @@ std::string povwall_message(const std::string& log, const CorpusScene& scene) {
     return line;
 }
 
+// Where a render stopped at the time limit was, from the line its SIGTERM handler wrote
+// ("povwall: interrupted while tracing: 10 of 20 pixels (50.0 %); no image written"): "
+// while tracing: 10 of 20 pixels (50.0 %)", the scene named as listed; "" when none.
+std::string interrupted_phase(const std::string& log, const CorpusScene& scene) {
+    const std::string line = first_line_with(log, "interrupted while ");
+    const size_t at = line.find("interrupted while ");
+    if (at == std::string::npos) return {};
+    std::string phase = line.substr(at + std::string("interrupted").size());
+    for (const char* tail : {"; no image written", ": the partly written image"})
+        if (const size_t end = phase.find(tail); end != std::string::npos)
+            phase.resize(end);
+    const std::string abs = scene.path.string();
+    if (const size_t p = phase.find(abs); p != std::string::npos)
+        phase.replace(p, abs.size(), scene.name);
+    return phase;
+}
+
 // POV-Ray's console output starts with a banner; the line saying what failed has "Error"
 // in it ("File 'x.pov' line 1: Parse Error: ...").
 std::string povray_message(const PovrayRun& run) {
@@ -255,8 +272,11 @@ SceneResult run_scene(const CorpusSettings& s, const CorpusScene& scene, size_t 
     }
     const std::string our_log = stem + "-povwall.log";
     const auto t0 = Clock::now();
-    const int rc =
-        run_process(cmd, (logs / our_log).string(), s.timeout_seconds, our_dir.string());
+    // Past the limit the render gets SIGTERM first, to say where it was; its handler
+    // answers at once, the grace covers a loaded machine.
+    constexpr double kGraceSeconds = 2;
+    const int rc = run_process(cmd, (logs / our_log).string(), s.timeout_seconds,
+                               our_dir.string(), kGraceSeconds);
     result.povwall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     if (rc == 0) take_image(our_dir / our_png, our_png);
     if (rc != 0 || !fs::exists(images / our_png)) {
@@ -267,9 +287,10 @@ SceneResult run_scene(const CorpusSettings& s, const CorpusScene& scene, size_t 
             result.outcome = Outcome::Unsupported;
             result.note = message.substr(at + std::string("error: unsupported: ").size());
         } else if (rc == kProcessTimedOut) {
-            result.note =
-                "povwall timed out after " + format_seconds(s.timeout_seconds) + " s";
-            // A render killed while writing leaves its temporary file: remove it.
+            result.note = "povwall timed out after " + format_seconds(s.timeout_seconds) +
+                          " s" + interrupted_phase(slurp(logs / our_log), scene);
+            // A render killed (it ignored SIGTERM) while writing leaves its temporary
+            // file: remove it.
             const std::string partial = "." + stem + "-povwall";  // frame numbers too
             std::error_code ec;
             for (const auto& e : fs::directory_iterator(our_dir, ec))

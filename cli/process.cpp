@@ -68,7 +68,8 @@ bool wait_until(pid_t pid, Clock::time_point deadline, int& code) {
 }  // namespace
 
 int run_process(const std::vector<std::string>& args, const std::string& log,
-                double timeout_seconds, const std::string& working_dir) {
+                double timeout_seconds, const std::string& working_dir,
+                double grace_seconds) {
     std::vector<char*> argv;
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
@@ -89,6 +90,12 @@ int run_process(const std::vector<std::string>& args, const std::string& log,
                                       std::chrono::duration<double>(timeout_seconds));
     int code = 0;
     if (wait_until(pid, deadline, code)) return code;
+    if (grace_seconds > 0) {
+        kill(pid, SIGTERM);
+        const auto grace = std::chrono::duration_cast<Clock::duration>(
+            std::chrono::duration<double>(grace_seconds));
+        if (wait_until(pid, Clock::now() + grace, code)) return kProcessTimedOut;
+    }
     kill(pid, SIGKILL);
     wait_blocking(pid);  // reap it: no zombie left behind
     return kProcessTimedOut;

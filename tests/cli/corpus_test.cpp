@@ -117,7 +117,8 @@ TEST_F(Corpus, PrintsOneLinePerSceneAndExactCounts) {
             R"(scenes/syntax <error>.pov +failed .*scenes/syntax <error>.pov:2:\d+: error: )")))
         << out;
     EXPECT_TRUE(std::regex_search(
-        out, std::regex(R"(scenes/hang.pov +failed .*timed out after 4.00 s)")))
+        out, std::regex(R"(scenes/hang.pov +failed .*timed out after 4.00 s while )"
+                        R"(parsing scenes/hang.pov:4\n)")))
         << out;
     EXPECT_TRUE(
         std::regex_search(out, std::regex(R"(POV-Ray \d+\.\d\d s, povwall \d+\.\d\d s)")))
