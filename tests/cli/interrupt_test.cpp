@@ -144,9 +144,9 @@ double cpu_seconds(pid_t pid) {
 }
 
 // Runs povwall with `args` (stderr to `err`) and sends it `sig` once its stderr holds
-// `said` and it has used `cpu` seconds of processor time: progress a loaded machine can
-// delay but not fake, so the render is known to be in the phase under test. Returns its
-// exit code, or -1 if that never came within two minutes (it is then killed).
+// `said` and it has used `cpu` seconds of processor time since: progress a loaded machine
+// can delay but not fake, so the render is known to be in the phase under test. Returns
+// its exit code, or -1 if that never came within two minutes (it is then killed).
 int interrupt_when(const std::vector<std::string>& args, const fs::path& err,
                    const std::string& said, double cpu, int sig) {
     std::vector<std::string> all{POVWALL_BINARY};
@@ -167,6 +167,7 @@ int interrupt_when(const std::vector<std::string>& args, const fs::path& err,
     if (pid < 0) return -1;
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(2);
     int status = 0;
+    double cpu_when_said = -1;
     for (;;) {
         if (waitpid(pid, &status, WNOHANG) == pid) return -1;  // ended on its own
         if (std::chrono::steady_clock::now() > give_up) {
@@ -174,7 +175,9 @@ int interrupt_when(const std::vector<std::string>& args, const fs::path& err,
             waitpid(pid, &status, 0);
             return -1;
         }
-        if (slurp(err).find(said) != std::string::npos && cpu_seconds(pid) >= cpu) break;
+        if (cpu_when_said < 0 && slurp(err).find(said) != std::string::npos)
+            cpu_when_said = cpu_seconds(pid);
+        if (cpu_when_said >= 0 && cpu_seconds(pid) >= cpu_when_said + cpu) break;
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     kill(pid, sig);
