@@ -571,7 +571,8 @@ void Interpreter::parse_mesh(Object& out) {
                     if (k) accept_punct(',');
                     Token id = next();
                     const Value* v = id.kind == TokenKind::Word ? lookup(id) : nullptr;
-                    auto tex = v ? std::get_if<std::shared_ptr<LayeredTexture>>(v) : nullptr;
+                    auto tex =
+                        v ? std::get_if<std::shared_ptr<LayeredTexture>>(v) : nullptr;
                     if (!tex) expected("a texture identifier", id);
                     mesh.textures.push_back(**tex);
                     triple[size_t(k)] = int32_t(mesh.textures.size()) - 1;

@@ -377,32 +377,19 @@ bool pov_tests_own_bbox(const Object& o) {
 size_t pov_frame_object_count(const Object& o) {
     if (pov_splits_union(o)) {
         size_t n = 0;
-        for (const Object& c : std::get<Csg>(o.shape).children) n += pov_frame_object_count(c);
+        for (const Object& c : std::get<Csg>(o.shape).children)
+            n += pov_frame_object_count(c);
         return n;
     }
     return 1;
 }
-
-namespace {
-
-template <class Visit>
-void for_frame_objects(const Object& o, Visit&& visit) {
-    if (pov_splits_union(o)) {
-        for (const Object& c : std::get<Csg>(o.shape).children)
-            for_frame_objects(c, visit);
-        return;
-    }
-    visit(o);
-}
-
-}  // namespace
 
 bool pov_slab_root(const Scene& scene, PovBBox& root) {
     if (scene.objects_filtered()) return false;
     // Most scenes have a plane: their root is infinite, known without the other boxes.
     bool plane = false;
     for (const Object& o : scene.objects) {
-        for_frame_objects(o, [&](const Object& f) {
+        pov_for_frame_objects(o, [&](const Object& f) {
             plane = plane || std::holds_alternative<Plane>(f.shape);
         });
         if (plane) return false;
@@ -415,7 +402,7 @@ bool pov_slab_root(const Scene& scene, PovBBox& root) {
         if (!pov_bbox_finite(box)) finite = false;
         b.extend(pov_bbox_bounds(box));
     };
-    for (const Object& o : scene.objects) for_frame_objects(o, add);
+    for (const Object& o : scene.objects) pov_for_frame_objects(o, add);
     for (const Light& l : scene.lights) {
         if (!l.looks_like.empty()) add(l.looks_like.front());
     }

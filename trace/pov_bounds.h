@@ -111,4 +111,16 @@ size_t pov_frame_objects(const Scene& scene);
 // The frame-level objects one object becomes (1, or a plain union's children's).
 size_t pov_frame_object_count(const Object& o);
 
+// Calls visit(f) for each frame-level object `o` stands for, in order: a plain union is
+// opened into its children (pov_splits_union), recursively; anything else is one.
+template <class Visit>
+void pov_for_frame_objects(const Object& o, Visit&& visit) {
+    if (pov_splits_union(o)) {
+        for (const Object& c : std::get<Csg>(o.shape).children)
+            pov_for_frame_objects(c, visit);
+        return;
+    }
+    visit(o);
+}
+
 }  // namespace povwall::trace

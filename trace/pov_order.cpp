@@ -8,18 +8,6 @@
 namespace povwall::trace {
 namespace {
 
-// A plain union is opened into its children when POV-Ray links it to the frame
-// (pov_splits_union); anything else is one frame-level object.
-template <class Visit>
-void for_each_frame_object(const Object& o, Visit&& visit) {
-    if (pov_splits_union(o)) {
-        for (const Object& c : std::get<Csg>(o.shape).children)
-            for_each_frame_object(c, visit);
-        return;
-    }
-    visit(o);
-}
-
 // A node's box from its children's: the smallest and largest corners in double (corner
 // plus length), rounded to float again as POV-Ray's calc_bbox does.
 template <class Boxes>
@@ -55,7 +43,7 @@ PovFrameList pov_frame_list(const Scene& scene, size_t bounding_threshold) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         place_lights(i);
         list.first_of_object[i] = uint32_t(list.objects.size());
-        for_each_frame_object(scene.objects[i],
+        pov_for_frame_objects(scene.objects[i],
                               [&](const Object& f) { list.objects.push_back(&f); });
     }
     place_lights(~size_t(0));

@@ -666,7 +666,7 @@ Real corner_fraction(const Point3& q, const Point3& a, const Point3& b, const Po
     else if (dyz * dyz >= kEpsilon)
         s = (qa.y * ba.z - qa.z * ba.y) / dyz;
     else
-        return 0;  // q too close to a to tell
+        return 0;                                // q too close to a to tell
     const Vector3 side = (b + (c - b) * s) - a;  // from a to where the line meets b-c
     if (side.x * side.x >= kEpsilon) return qa.x / side.x;
     if (side.y * side.y >= kEpsilon) return qa.y / side.y;
@@ -678,13 +678,14 @@ Real corner_fraction(const Point3& q, const Point3& a, const Point3& b, const Po
 
 void blend_weights(const TextureBlend& b, const Point3& world, float (&w)[3]) {
     const Object& mesh = *b.mesh;
-    const Point3 q = mesh.transform.is_identity() ? world : mesh.transform.inverse_point(world);
+    const Point3 q =
+        mesh.transform.is_identity() ? world : mesh.transform.inverse_point(world);
     const Point3* p = b.points;
     // In POV-Ray's precision: the fractions and weights are single-precision colour
     // values.
     for (int k = 0; k < 3; ++k)
-        w[k] = float(1.0 - double(float(
-                               corner_fraction(q, p[k], p[(k + 1) % 3], p[(k + 2) % 3]))));
+        w[k] = float(1.0 - double(float(corner_fraction(q, p[k], p[(k + 1) % 3],
+                                                        p[(k + 2) % 3]))));
     const float inverse = float(1.0 / double(w[0] + w[1] + w[2]));
     for (float& x : w) x *= inverse;
 }

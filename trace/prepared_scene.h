@@ -239,7 +239,7 @@ class PreparedScene {
     std::vector<PovPrim> pov_;
     PatternEnv env_;
     bool alpha_background_ = false;
-    std::vector<Material> materials_;  // reserved up front: pointers stay valid
+    std::vector<Material> materials_;   // reserved up front: pointers stay valid
     std::vector<TextureBlend> blends_;  // the same
     // Per primitive id.
     std::vector<PrimKind> kind_;
