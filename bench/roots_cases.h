@@ -6,7 +6,8 @@
 #include <random>
 #include <vector>
 
-#include "trace/intersect.h"
+#include "trace/roots.h"
+#include "trace/shapes/shape.h"
 
 namespace povwall::bench {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "trace/intersect.h"
+#include "trace/shapes/shape.h"
 
 namespace povwall::trace {
 
@@ -131,12 +131,10 @@ bool is_similarity(const Transform& t, Real& scale) {
     return true;
 }
 
-namespace {
-
 // POV-Ray's canonical frame for a cylinder, cone or disc along `up` (unit): the images of
 // x and y under the rotation about (-up.y, up.x, 0) by acos(up.z) that takes z to `up`
 // (Compute_Coordinate_Transform, 3.7:source/backend/math/matrices.cpp:1027).
-void canonical_frame(Vector3 up, Vector3& ex, Vector3& ey) {
+void pov_canonical_frame(Vector3 up, Vector3& ex, Vector3& ey) {
     Vector3 k;
     if (std::fabs(up.z) > 1.0 - kPovEpsilon) {
         k = {1, 0, 0};
@@ -153,10 +151,8 @@ void canonical_frame(Vector3 up, Vector3& ex, Vector3& ey) {
     ey = rotate({0, 1, 0});
 }
 
-// Recompute_BBox: the eight corners of a box in the shape's canonical space, placed by
-// `local` (canonical -> object space) and the object's transform.
-template <class Place>
-Bounds3 corners_bounds(const Bounds3& canonical, Place&& place) {
+Bounds3 pov_corners_bounds(const Bounds3& canonical,
+                           const std::function<Point3(const Point3&)>& place) {
     Bounds3 r;
     for (int i = 0; i < 8; ++i) {
         const Point3 p{(i & 1) ? canonical.hi.x : canonical.lo.x,
@@ -171,132 +167,40 @@ Bounds3 corners_bounds(const Bounds3& canonical, Place&& place) {
     return r;
 }
 
-// A cylinder's or cone's box: its canonical box [-1,1]^2 x [z0,1] scaled by the radius
-// and the height of the frame along `axis` from `origin`.
-Bounds3 axial_bounds(const Object& o, const Point3& origin, const Vector3& axis,
-                     Real radius, Real height, Real z0) {
+PovBBox pov_transformed_bbox(const Bounds3& local, const CompactTransform& xf) {
+    return pov_bbox(
+        pov_corners_bounds(local, [&](const Point3& p) { return xf.point(p); }));
+}
+
+Bounds3 pov_axial_bounds(const CompactTransform& xf, const Point3& origin,
+                         const Vector3& axis, Real radius, Real height, Real z0) {
     Vector3 ex, ey;
-    canonical_frame(axis, ex, ey);
-    return corners_bounds(Bounds3{{-1, -1, z0}, {1, 1, 1}}, [&](const Point3& p) {
+    pov_canonical_frame(axis, ex, ey);
+    return pov_corners_bounds(Bounds3{{-1, -1, z0}, {1, 1, 1}}, [&](const Point3& p) {
         const Point3 local =
             origin + ex * (p.x * radius) + ey * (p.y * radius) + axis * (p.z * height);
-        return o.transform.point(local);
+        return xf.point(local);
     });
 }
 
-const PovBBox kInfiniteBox = [] {
+PovBBox pov_infinite_bbox() {
     PovBBox b;
     for (int a = 0; a < 3; ++a) {
         b.lo[a] = float(-kBoundHuge / 2);
         b.len[a] = float(kBoundHuge);
     }
     return b;
-}();
+}
+
+namespace {
+
+const PovBBox kInfiniteBox = pov_infinite_bbox();
 
 PovBBox csg_bbox(const Object& o, const Csg& csg);
 
 PovBBox shape_bbox(const Object& o) {
-    PovBBox box = kInfiniteBox;
-    std::visit(
-        [&](const auto& s) {
-            using T = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<T, Sphere>) {
-                // Translation, rotation and uniform scaling move the centre and the
-                // radius (no transform kept): the box is centre +- radius. Any other
-                // transform is kept and the box is the transformed cube's.
-                Real scale = 1;
-                if (o.transform.is_identity() || is_similarity(o.transform, scale)) {
-                    box = pov_sphere_bbox(o.transform.point(s.centre), s.radius * scale);
-                } else {
-                    box = pov_bbox(corners_bounds(
-                        {s.centre - Vector3(s.radius), s.centre + Vector3(s.radius)},
-                        [&](const Point3& p) { return o.transform.point(p); }));
-                }
-            } else if constexpr (std::is_same_v<T, Box>) {
-                box = pov_bbox(corners_bounds(
-                    {min(s.corner1, s.corner2), max(s.corner1, s.corner2)},
-                    [&](const Point3& p) { return o.transform.point(p); }));
-            } else if constexpr (std::is_same_v<T, Cylinder>) {
-                const Vector3 a = s.cap - s.base;
-                const Real len = length(a);
-                if (len > 0)
-                    box = pov_bbox(axial_bounds(o, s.base, a / len, s.radius, len, 0));
-            } else if constexpr (std::is_same_v<T, Cone>) {
-                // The wider end on top, the frame's origin at the apex of the full cone,
-                // the box as wide as the wider end all along (Compute_Cone_Data).
-                Point3 base = s.base, cap = s.cap;
-                Real r0 = s.base_radius, r1 = s.cap_radius;
-                if (r1 < r0) {
-                    std::swap(base, cap);
-                    std::swap(r0, r1);
-                }
-                const Vector3 a = cap - base;
-                const Real len = length(a);
-                if (!(len > 0)) return;
-                const Vector3 axis = a / len;
-                if (std::fabs(r1 - r0) < kPovEpsilon) {
-                    box = pov_bbox(axial_bounds(o, base, axis, r1, len, 0));
-                    return;
-                }
-                const Real below = r0 * len / (r1 - r0);
-                const Real height = below + len;
-                box = pov_bbox(axial_bounds(o, base - axis * below, axis, r1, height,
-                                            below / height));
-            } else if constexpr (std::is_same_v<T, Disc>) {
-                const Real nl = length(s.normal);
-                if (!(nl > 0)) return;
-                // The canonical box is [-r, r]^2 x [-SMALL_TOLERANCE, SMALL_TOLERANCE].
-                const Real r = s.radius;
-                Vector3 ex, ey;
-                canonical_frame(s.normal / nl, ex, ey);
-                const Vector3 n = s.normal / nl;
-                box = pov_bbox(corners_bounds(
-                    Bounds3{{-r, -r, -kSmallTolerance}, {r, r, kSmallTolerance}},
-                    [&](const Point3& p) {
-                        return o.transform.point(s.centre + ex * p.x + ey * p.y +
-                                                 n * p.z);
-                    }));
-            } else if constexpr (std::is_same_v<T, Torus>) {
-                const Real a = s.major + s.minor;
-                box = pov_bbox(corners_bounds(
-                    {{-a, -s.minor, -a}, {a, s.minor, a}},
-                    [&](const Point3& p) { return o.transform.point(p); }));
-            } else if constexpr (std::is_same_v<T, Triangle> ||
-                                 std::is_same_v<T, SmoothTriangle>) {
-                // Triangles keep no transform: their corners are moved. Padded by
-                // EPSILON.
-                Bounds3 b;
-                for (const Point3& p : s.p) b.extend(o.transform.point(p));
-                b.lo -= Vector3(kPovEpsilon);
-                b.hi += Vector3(kPovEpsilon);
-                box = pov_bbox(b);
-            } else if constexpr (std::is_same_v<T, Polygon>) {
-                Bounds3 b;
-                for (const Point3& p : s.points) b.extend(o.transform.point(p));
-                if (b.empty()) return;
-                box = pov_bbox(b);
-                // A box flat along an axis is widened by SMALL_TOLERANCE each way.
-                for (int a = 0; a < 3; ++a) {
-                    if (std::fabs(box.len[a]) < kSmallTolerance) {
-                        box.lo[a] = float(Real(box.lo[a]) - kSmallTolerance);
-                        box.len[a] = float(Real(box.len[a]) + 2 * kSmallTolerance);
-                    }
-                }
-            } else if constexpr (std::is_same_v<T, Mesh>) {
-                // Vertices are single precision; the box of the mesh's own space goes
-                // through the transform.
-                Bounds3 b;
-                for (const Point3& p : s.vertices) b.extend(single_precision(p));
-                if (b.empty()) return;
-                box = pov_bbox(corners_bounds(
-                    b, [&](const Point3& p) { return o.transform.point(p); }));
-            } else if constexpr (std::is_same_v<T, Csg>) {
-                box = csg_bbox(o, s);
-            }
-            // Plane: infinite.
-        },
-        o.shape);
-    return box;
+    if (const Csg* csg = std::get_if<Csg>(&o.shape)) return csg_bbox(o, *csg);
+    return leaf_pov_bbox(o);
 }
 
 PovBBox csg_bbox(const Object& o, const Csg& csg) {
@@ -367,11 +271,7 @@ PovBBox pov_mesh_triangle_bbox(const Point3 (&p)[3]) {
 }
 
 bool pov_tests_own_bbox(const Object& o) {
-    return !(std::holds_alternative<Box>(o.shape) ||
-             std::holds_alternative<Sphere>(o.shape) ||
-             std::holds_alternative<Plane>(o.shape) ||
-             std::holds_alternative<Triangle>(o.shape) ||
-             std::holds_alternative<SmoothTriangle>(o.shape));
+    return std::holds_alternative<Csg>(o.shape) || leaf_pov_tests_own_bbox(o);
 }
 
 size_t pov_frame_object_count(const Object& o) {

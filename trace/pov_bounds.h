@@ -21,6 +21,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "core/scene.h"
@@ -86,6 +87,22 @@ PovBBox pov_sphere_bbox(const Point3& centre, Real radius);
 // A mesh triangle's box in the mesh's own space (Mesh::get_triangle_bbox): its corners,
 // single precision like the mesh's vertices.
 PovBBox pov_mesh_triangle_bbox(const Point3 (&p)[3]);
+
+// The infinite box (BOUND_HUGE each way).
+PovBBox pov_infinite_bbox();
+// POV-Ray's canonical frame of a cylinder, cone or disc along `up` (unit): the images of
+// x and y under the rotation that takes z to `up` (Compute_Coordinate_Transform).
+void pov_canonical_frame(Vector3 up, Vector3& ex, Vector3& ey);
+// Recompute_BBox: the eight corners of a box in a shape's canonical space, placed by
+// `place` (canonical -> world), clipped at the largest box POV-Ray allows.
+Bounds3 pov_corners_bounds(const Bounds3& canonical,
+                           const std::function<Point3(const Point3&)>& place);
+// pov_bbox of a box in the shape's own space through its transform.
+PovBBox pov_transformed_bbox(const Bounds3& local, const CompactTransform& xf);
+// A cylinder's or cone's box: its canonical box [-1,1]^2 x [z0,1] scaled by the radius
+// and the height of the frame along `axis` from `origin`, through the transform.
+Bounds3 pov_axial_bounds(const CompactTransform& xf, const Point3& origin,
+                         const Vector3& axis, Real radius, Real height, Real z0);
 
 // Rotation and uniform scale (plus translation): a sphere stays a sphere.
 bool is_similarity(const Transform& t, Real& scale);

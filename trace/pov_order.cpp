@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "trace/intersect.h"
+#include "trace/shapes/shape.h"
 
 namespace povwall::trace {
 namespace {

@@ -6,8 +6,8 @@
 
 #include "octree/overlap.h"
 #include "octree/spatial_order.h"
-#include "trace/intersect.h"
 #include "trace/render.h"
+#include "trace/shapes/shape.h"
 #include "trace/sphere_lanes.h"
 
 namespace povwall::trace {
@@ -78,76 +78,16 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
         }
         return;
     }
-    Ray local = o.transform.is_identity() ? ray : o.transform.inverse_ray(ray);
-    Real len = length(local.direction);
-    if (!(len > 0)) return;
-    Vector3 dn = local.direction * (1.0 / len);  // POV-Ray's VInverseScaleEq
-    Crossings cs;
-    // The box works along the untouched direction: its crossings are world distances.
-    bool world_t = false;
-    std::visit(
-        [&](const auto& s) {
-            using T = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<T, Sphere>)
-                intersect_sphere(s, local.origin, dn, cs);
-            else if constexpr (std::is_same_v<T, Box>) {
-                intersect_box_pov(s, local.origin, local.direction, cs);
-                world_t = true;
-            } else if constexpr (std::is_same_v<T, Plane>)
-                intersect_plane(s, local.origin, dn, cs, kPlaneTolerance * len);
-            else if constexpr (std::is_same_v<T, Cylinder>)
-                intersect_cylinder(s, local.origin, dn, cs);
-            else if constexpr (std::is_same_v<T, Cone>)
-                intersect_cone(s, local.origin, dn, cs);
-            else if constexpr (std::is_same_v<T, Torus>)
-                intersect_torus(s, local.origin, dn, cs, kTorusTolerance * len);
-            else if constexpr (std::is_same_v<T, Disc>)
-                intersect_disc(s, local.origin, dn, cs, kPlaneTolerance * len);
-            else if constexpr (std::is_same_v<T, Triangle>) {
-                if (!degenerate_triangle(s.p))
-                    intersect_triangle(s.p, local.origin, dn, cs,
-                                       kTriangleTolerance * len);
-            } else if constexpr (std::is_same_v<T, SmoothTriangle>) {
-                if (!degenerate_triangle(s.p))
-                    intersect_triangle(s.p, local.origin, dn, cs,
-                                       kTriangleTolerance * len);
-            } else if constexpr (std::is_same_v<T, Polygon>) {
-                if (!degenerate_polygon(s)) intersect_polygon(s, local.origin, dn, cs);
-            }
-        },
-        o.shape);
-    for (int i = 0; i < cs.n; ++i) {
-        Point3 p = world_t ? local.origin + local.direction * cs.c[i].t
-                           : local.origin + dn * cs.c[i].t;
-        Vector3 n;
-        std::visit(
-            [&](const auto& s) {
-                using T = std::decay_t<decltype(s)>;
-                if constexpr (std::is_same_v<T, Sphere>)
-                    n = sphere_normal(s, p);
-                else if constexpr (std::is_same_v<T, Box>)
-                    n = box_normal(s, cs.c[i].face);
-                else if constexpr (std::is_same_v<T, Plane>)
-                    n = s.normal;
-                else if constexpr (std::is_same_v<T, Cylinder>)
-                    n = cylinder_normal(s, p, cs.c[i].face);
-                else if constexpr (std::is_same_v<T, Cone>)
-                    n = cone_normal(s, p, cs.c[i].face);
-                else if constexpr (std::is_same_v<T, Torus>)
-                    n = torus_normal(s, p);
-                else if constexpr (std::is_same_v<T, Disc>)
-                    n = s.normal;
-                else if constexpr (std::is_same_v<T, Triangle>)
-                    n = pov_triangle_normal(s.p);
-                else if constexpr (std::is_same_v<T, SmoothTriangle>)
-                    n = smooth_triangle_normal(s.p, s.n->data(), p);
-                else if constexpr (std::is_same_v<T, Polygon>)
-                    n = pov_polygon_normal(s);
-            },
-            o.shape);
+    const LocalRay local = leaf_ray(o, ray);
+    if (!(local.length > 0)) return;
+    thread_local ShapeHits hits;
+    hits.clear();
+    leaf_hits(o, local, hits);
+    for (const ShapeHit& h : hits) {
+        Vector3 n = leaf_normal(o, h);
         n = normalize(o.transform.is_identity() ? n : o.transform.normal(n));
         if (o.inverse) n = -n;
-        out.push_back({world_t ? cs.c[i].t : cs.c[i].t / len, n, &o});
+        out.push_back({h.t, n, &o});
     }
 }
 
@@ -223,27 +163,6 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
         if (o.inverse) {
             for (size_t k = start; k < out.size(); ++k) out[k].normal = -out[k].normal;
         }
-    } else if (std::holds_alternative<Mesh>(o.shape)) {
-        // Meshes are split into triangles at preparation; inside CSG they are surfaces,
-        // and solids for the other children's inside tests when they have an
-        // inside_vector.
-        const Mesh* m = std::get_if<Mesh>(&o.shape);
-        if (m) {
-            Ray local = o.transform.is_identity() ? ray : o.transform.inverse_ray(ray);
-            Real len = length(local.direction);
-            Vector3 dn = local.direction / len;
-            for (const auto& f : m->faces) {
-                Point3 p[3] = {single_precision(m->vertices[f.v[0]]),
-                               single_precision(m->vertices[f.v[1]]),
-                               single_precision(m->vertices[f.v[2]])};
-                Crossings cs;
-                intersect_triangle(p, local.origin, dn, cs);
-                if (cs.n) {
-                    Vector3 n = normalize(o.transform.normal(pov_triangle_normal(p)));
-                    out.push_back({cs.c[0].t / len, n, &o});
-                }
-            }
-        }
     } else {
         leaf_crossings(o, ray, out);
     }
@@ -257,70 +176,29 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
 }
 
 Bounds3 object_bounds(const Object& o) {
-    Bounds3 local;
-    bool infinite = false;
-    std::visit(
-        [&](const auto& s) {
-            using T = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<T, Sphere>) {
-                local = {s.centre - Vector3(s.radius), s.centre + Vector3(s.radius)};
-            } else if constexpr (std::is_same_v<T, Box>) {
-                local = {min(s.corner1, s.corner2), max(s.corner1, s.corner2)};
-            } else if constexpr (std::is_same_v<T, Plane>) {
-                infinite = true;
-            } else if constexpr (std::is_same_v<T, Cylinder>) {
-                local.extend(s.base);
-                local.extend(s.cap);
-                local.lo -= Vector3(s.radius);
-                local.hi += Vector3(s.radius);
-            } else if constexpr (std::is_same_v<T, Cone>) {
-                Real r = std::max(std::fabs(s.base_radius), std::fabs(s.cap_radius));
-                local.extend(s.base);
-                local.extend(s.cap);
-                local.lo -= Vector3(r);
-                local.hi += Vector3(r);
-            } else if constexpr (std::is_same_v<T, Torus>) {
-                Real a = s.major + s.minor;
-                local = {{-a, -s.minor, -a}, {a, s.minor, a}};
-                // A torus this thin gets POV-Ray's root elimination from afar
-                // (intersect.cpp): its crossings are the cubic's roots, off the surface
-                // but within about 1.3 (R + 2r) of the centre. Its bounds cover them, so
-                // that a black box holding it sees them too.
-                if (s.minor < 1e-3)
-                    local = {Vector3(-2 * (a + s.minor)), Vector3(2 * (a + s.minor))};
-            } else if constexpr (std::is_same_v<T, Disc>) {
-                local = {s.centre - Vector3(s.radius), s.centre + Vector3(s.radius)};
-            } else if constexpr (std::is_same_v<T, Triangle> ||
-                                 std::is_same_v<T, SmoothTriangle>) {
-                for (const auto& p : s.p) local.extend(p);
-            } else if constexpr (std::is_same_v<T, Polygon>) {
-                for (const auto& p : s.points) local.extend(p);
-            } else if constexpr (std::is_same_v<T, Mesh>) {
-                for (const auto& p : s.vertices) local.extend(p);
-            } else if constexpr (std::is_same_v<T, Csg>) {
-                // Children carry world transforms already.
-                Bounds3 b;
-                bool first = true;
-                for (const Object& c : s.children) {
-                    Bounds3 cb = object_bounds(c);
-                    if (s.kind == CsgKind::Intersection) {
-                        if (cb.infinite()) continue;
-                        b = first ? cb : intersection(b, cb);
-                        first = false;
-                    } else if (s.kind == CsgKind::Difference) {
-                        b = cb;
-                        break;
-                    } else {
-                        b.extend(cb);
-                    }
-                }
-                if (first && s.kind == CsgKind::Intersection) infinite = true;
-                local = b;
+    if (o.inverse) return Bounds3::everything();
+    if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
+        // Children carry world transforms already.
+        Bounds3 b;
+        bool first = true;
+        for (const Object& c : csg->children) {
+            Bounds3 cb = object_bounds(c);
+            if (csg->kind == CsgKind::Intersection) {
+                if (cb.infinite()) continue;
+                b = first ? cb : intersection(b, cb);
+                first = false;
+            } else if (csg->kind == CsgKind::Difference) {
+                b = cb;
+                break;
+            } else {
+                b.extend(cb);
             }
-        },
-        o.shape);
-    if (infinite || o.inverse) return Bounds3::everything();
-    if (std::holds_alternative<Csg>(o.shape)) return local;
+        }
+        if (first && csg->kind == CsgKind::Intersection) return Bounds3::everything();
+        return b;
+    }
+    const Bounds3 local = leaf_bounds(o);
+    if (!local.empty() && local.infinite()) return Bounds3::everything();
     Bounds3 world = o.transform.bounds(local);
     for (const Object& c : *o.clipped_by) {
         Bounds3 cb = object_bounds(c);
@@ -342,23 +220,6 @@ size_t count_leaves(const Object& o) {
     }
     if (auto m = std::get_if<Mesh>(&o.shape)) n += m->textures.size() + blend_faces(*m);
     return n;
-}
-
-// A mesh is solid only with an inside_vector (as in POV-Ray): a point is inside when a
-// ray from it along that vector crosses the triangles an odd number of times.
-bool inside_mesh(const Mesh& m, const Point3& q) {
-    if (!m.inside_vector || dot(*m.inside_vector, *m.inside_vector) == 0) return false;
-    const Vector3 dir = normalize(*m.inside_vector);
-    int crossed = 0;
-    for (const auto& f : m.faces) {
-        Point3 p[3] = {single_precision(m.vertices[f.v[0]]),
-                       single_precision(m.vertices[f.v[1]]),
-                       single_precision(m.vertices[f.v[2]])};
-        Crossings cs;
-        intersect_triangle(p, q, dir, cs);
-        crossed += cs.n;
-    }
-    return crossed % 2 == 1;
 }
 
 }  // namespace
@@ -383,28 +244,8 @@ bool inside_object(const Object& o, const Point3& p) {
                 break;
         }
     } else {
-        Point3 q = o.transform.is_identity() ? p : o.transform.inverse_point(p);
-        std::visit(
-            [&](const auto& s) {
-                using T = std::decay_t<decltype(s)>;
-                if constexpr (std::is_same_v<T, Sphere>)
-                    in = inside_sphere(s, q);
-                else if constexpr (std::is_same_v<T, Box>)
-                    in = inside_box(s, q);
-                else if constexpr (std::is_same_v<T, Plane>)
-                    in = inside_plane(s, q);
-                else if constexpr (std::is_same_v<T, Cylinder>)
-                    in = inside_cylinder(s, q);
-                else if constexpr (std::is_same_v<T, Cone>)
-                    in = inside_cone(s, q);
-                else if constexpr (std::is_same_v<T, Torus>)
-                    in = inside_torus(s, q);
-                else if constexpr (std::is_same_v<T, Mesh>)
-                    in = inside_mesh(s, q);
-                else
-                    in = false;
-            },
-            o.shape);
+        const Point3 q = o.transform.is_identity() ? p : o.transform.inverse_point(p);
+        in = leaf_inside(o, q);
     }
     if (in && !o.clipped_by->empty()) in = inside_clips(o, p);
     return in != o.inverse;
@@ -599,6 +440,12 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     pov_ = std::move(pov);
     unbounded_ = std::move(unbounded);
     lanes_.build(tree_.ids(), spheres_.data(), sphere_count_);
+    hides_ = {};
+    for (const Material& m : materials_) {
+        hides_[size_t(RayUse::Camera)] |= m.no_image;
+        hides_[size_t(RayUse::Reflection)] |= m.no_reflection;
+        hides_[size_t(RayUse::Shadow)] |= m.no_shadow;
+    }
     // A box's resident scene is what it keeps: drop the growth slack of push_back.
     spheres_.shrink_to_fit();
     triangles_.shrink_to_fit();
@@ -1066,7 +913,12 @@ bool PreparedScene::pov_takes(const Material& candidate, const Material& nearest
 bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use,
                                 Hit& hit, RayContext& ctx) const {
     bool found = false;
-    auto hidden = [use](const Material& m) {
+    // Materials are only looked at when some object hides from this kind of ray or at a
+    // tie: a sphere's candidate hit then costs no load of its (large) material.
+    const bool may_hide = hides_[size_t(use)];
+    auto hidden = [&](uint32_t material) {
+        if (!may_hide) return false;
+        const Material& m = materials_[material];
         return (use == RayUse::Camera && m.no_image) ||
                (use == RayUse::Reflection && m.no_reflection) ||
                (use == RayUse::Shadow && m.no_shadow);
@@ -1080,30 +932,34 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
     // (coincident faces) is met wherever its cell starts, and POV-Ray's order can choose
     // (pov_takes). Nothing beyond `best` is taken.
     Real best = t_max;
-    const Material* best_material = nullptr;
+    uint32_t best_material = ~0u;  // index into materials_
     Real reach = t_max;
     const Real probe = ctx.tie_tolerance;
     bool tie = false;        // tie probe: two leaves within `probe` of each other
     Real other = kInfinity;  // tie probe: the nearest hit on another leaf
-    auto widen = [&](Real t) {
-        const Real margin = std::fabs(t) * std::max(probe, Real(1e-12));
-        return std::min(t_max, std::nextafter(t + margin, kInfinity));
-    };
+    // Hits lie at t >= lo > 0, and a relative margin of at least 1e-12 is thousands of
+    // ulps: the product is strictly past t without a call to nextafter (it showed in
+    // the seed scene's profile).
+    const Real widen_factor = 1 + std::max(probe, Real(1e-12));
+    auto widen = [&](Real t) { return std::min(t_max, t * widen_factor); };
     // Whether a hit at `t` on `m` becomes the nearest.
-    auto offer = [&](Real t, const Material& m) {
+    auto same_object = [&](uint32_t a, uint32_t b) {
+        return materials_[a].object == materials_[b].object;
+    };
+    auto offer = [&](Real t, uint32_t m) {
         if (!found) return t < t_max;
         if (t < best) {
-            if (probe > 0 && m.object != best_material->object)
+            if (probe > 0 && !same_object(m, best_material))
                 other = std::min(other, best);
             return true;
         }
-        if (m.object == best_material->object) return false;
+        if (same_object(m, best_material)) return false;
         if (probe > 0) other = std::min(other, t);
-        return t == best && pov_takes(m, *best_material, ray);
+        return t == best && pov_takes(materials_[m], materials_[best_material], ray);
     };
-    auto accept = [&](Real t, const Material& m) {
+    auto accept = [&](Real t, uint32_t m) {
         best = t;
-        best_material = &m;
+        best_material = m;
         reach = widen(t);
         found = true;
     };
@@ -1111,7 +967,7 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
         ++ctx.tests;
         if (id < sphere_count_) {
             const Real t = sphere_distance(spheres_[id], ray, lo);
-            const Material& m = materials_[material_[id]];
+            const uint32_t m = material_[id];
             if (!(t < reach) || hidden(m) || !pov_accepts(id, ray) || !offer(t, m))
                 return;
             accept(t, m);
@@ -1121,12 +977,13 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
         Hit h;
         bool inner_tie = false;
         if (!test_primitive(id, ray, t_min, reach, h, probe,
-                            probe > 0 ? &inner_tie : nullptr) ||
-            hidden(*h.material))
+                            probe > 0 ? &inner_tie : nullptr))
             return;
+        const uint32_t m = uint32_t(h.material - materials_.data());
+        if (hidden(m)) return;
         tie = tie || inner_tie;
-        if (!offer(h.t, *h.material)) return;
-        accept(h.t, *h.material);
+        if (!offer(h.t, m)) return;
+        accept(h.t, m);
         hit = h;
         nearest_sphere = ~0u;
     };
@@ -1140,7 +997,7 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
             // mailbox check).
             const size_t spheres = leading_spheres(ids, n, sphere_count_);
             for_sphere_hits(ids, spheres, ray, lo, reach, ctx, [&](uint32_t id, Real t) {
-                const Material& m = materials_[material_[id]];
+                const uint32_t m = material_[id];
                 if (hidden(m) || !pov_accepts(id, ray) || !offer(t, m)) return false;
                 accept(t, m);
                 nearest_sphere = id;

@@ -2,6 +2,7 @@
 // octree over the bounded ones, and the ray queries (closest hit, shadow transmittance).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -207,8 +208,11 @@ class PreparedScene {
     // whose sphere is hit at t < below (`below` is read again before each call: it may
     // shrink) until on_hit returns true; returns whether it did.
     template <class OnHit>
-    bool for_sphere_hits(const uint32_t* ids, size_t spheres, const Ray& ray, Real lo,
-                         const Real& below, RayContext& ctx, OnHit&& on_hit) const;
+    [[gnu::always_inline]] inline bool for_sphere_hits(const uint32_t* ids,
+                                                       size_t spheres, const Ray& ray,
+                                                       Real lo, const Real& below,
+                                                       RayContext& ctx,
+                                                       OnHit&& on_hit) const;
     // The hit on sphere `id` at distance `t`.
     void fill_sphere_hit(uint32_t id, const Ray& ray, Real t, Hit& hit) const;
     const Material* material_for(const Object* leaf) const;
@@ -239,7 +243,9 @@ class PreparedScene {
     std::vector<PovPrim> pov_;
     PatternEnv env_;
     bool alpha_background_ = false;
-    std::vector<Material> materials_;   // reserved up front: pointers stay valid
+    std::vector<Material> materials_;  // reserved up front: pointers stay valid
+    // Per RayUse: whether any material hides from that kind of ray.
+    std::array<bool, 4> hides_{};
     std::vector<TextureBlend> blends_;  // the same
     // Per primitive id.
     std::vector<PrimKind> kind_;

@@ -4,6 +4,7 @@
 
 #include "octree/octree.h"
 #include "trace/prepared_scene.h"
+#include "trace/shapes/shape.h"
 
 namespace povwall::trace {
 namespace {
@@ -68,20 +69,7 @@ bool any_refracting(const Object& o, bool transparent_above) {
 // light: the segment toward the light leaves it at once. Affine transforms keep this.
 bool convex_surface(const Object& o) {
     if (o.inverse || !o.clipped_by->empty() || o.double_illuminate) return false;
-    return std::visit(
-        [](const auto& s) {
-            using S = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<S, Sphere> || std::is_same_v<S, Box> ||
-                          std::is_same_v<S, Plane> || std::is_same_v<S, Disc> ||
-                          std::is_same_v<S, Triangle> || std::is_same_v<S, Polygon>) {
-                return true;
-            } else if constexpr (std::is_same_v<S, Cylinder> || std::is_same_v<S, Cone>) {
-                return !s.open;
-            } else {
-                return false;
-            }
-        },
-        o.shape);
+    return !std::holds_alternative<Csg>(o.shape) && leaf_convex(o);
 }
 
 const char* light_kind(const Light& l) {

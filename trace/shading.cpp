@@ -7,7 +7,7 @@
 #include <deque>
 
 #include "core/noise.h"
-#include "trace/intersect.h"
+#include "trace/shapes/shape.h"
 
 namespace povwall::trace {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "core/math.h"
 #include "core/memory.h"
-#include "trace/intersect.h"
+#include "trace/shapes/common.h"
 
 namespace povwall::trace {
 

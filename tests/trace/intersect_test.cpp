@@ -1,6 +1,7 @@
 // Ray-primitive intersections through the prepared scene: exact distances and normals,
 // transforms, grazing rays, rays starting inside, POV-Ray's minimum depths.
-#include "trace/intersect.h"
+#include "trace/roots.h"
+#include "trace/shapes/shape.h"
 
 #include <gtest/gtest.h>
 

@@ -12,7 +12,7 @@
 
 #include "parser/parser.h"
 #include "trace/camera.h"
-#include "trace/intersect.h"
+#include "trace/shapes/shape.h"
 #include "trace/prepared_scene.h"
 #include "trace/roots.h"
 

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "trace/intersect.h"
+#include "trace/shapes/shape.h"
 #include "trace/oracle.h"
 
 namespace povwall::trace {

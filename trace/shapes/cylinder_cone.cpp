@@ -1,0 +1,268 @@
+#include "trace/shapes/cylinder_cone.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "trace/roots.h"
+#include "trace/shapes/oracle_math.h"
+
+namespace povwall::trace {
+
+namespace {
+
+struct AxisFrame {
+    Vector3 axis;
+    Real len;
+};
+AxisFrame axis_of(const Point3& base, const Point3& cap) {
+    Vector3 a = cap - base;
+    Real l = length(a);
+    return {l > 0 ? a / l : Vector3{0, 1, 0}, l};
+}
+
+}  // namespace
+
+void intersect_cylinder(const Cylinder& c, const Point3& o, const Vector3& dir,
+                        Crossings& out) {
+    // Zero radius (exporters write them): a line, never hit; its normal would be 0/0.
+    if (c.radius == 0) return;
+    AxisFrame f = axis_of(c.base, c.cap);
+    Vector3 u = o - c.base;
+    Real dp = dot(dir, f.axis), up = dot(u, f.axis);
+    Vector3 dperp = dir - f.axis * dp, uperp = u - f.axis * up;
+    Real roots[2];
+    Real tmp[4];
+    int faces[4];
+    int n = 0;
+    int k = solve_quadratic(dot(dperp, dperp), 2 * dot(dperp, uperp),
+                            dot(uperp, uperp) - c.radius * c.radius, roots);
+    for (int i = 0; i < k; ++i) {
+        Real h = up + roots[i] * dp;
+        if (h >= 0 && h <= f.len) {
+            tmp[n] = roots[i];
+            faces[n++] = 0;
+        }
+    }
+    if (!c.open && std::fabs(dp) > kPovEpsilon) {
+        for (int cap = 0; cap < 2; ++cap) {
+            Real t = ((cap ? f.len : 0) - up) / dp;
+            Vector3 q = uperp + dperp * t;
+            if (dot(q, q) <= c.radius * c.radius) {
+                tmp[n] = t;
+                faces[n++] = 1 + cap;
+            }
+        }
+    }
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 1; j < n; ++j)
+            if (tmp[j] < tmp[i]) {
+                std::swap(tmp[i], tmp[j]);
+                std::swap(faces[i], faces[j]);
+            }
+    for (int i = 0; i < n; ++i) {
+        if (tmp[i] > kConeTolerance) out.add(tmp[i], faces[i]);
+    }
+}
+
+Vector3 cylinder_normal(const Cylinder& c, const Point3& p, int face) {
+    AxisFrame f = axis_of(c.base, c.cap);
+    if (face == 1) return -f.axis;
+    if (face == 2) return f.axis;
+    Vector3 u = p - c.base;
+    return u - f.axis * dot(u, f.axis);
+}
+
+bool inside_cylinder(const Cylinder& c, const Point3& p) {
+    AxisFrame f = axis_of(c.base, c.cap);
+    Vector3 u = p - c.base;
+    Real h = dot(u, f.axis);
+    Vector3 perp = u - f.axis * h;
+    return h >= 0 && h <= f.len && dot(perp, perp) < c.radius * c.radius;
+}
+
+void intersect_cone(const Cone& c, const Point3& o, const Vector3& dir, Crossings& out) {
+    if (c.base_radius == 0 && c.cap_radius == 0)
+        return;  // a line, as a zero-radius cylinder
+    AxisFrame f = axis_of(c.base, c.cap);
+    Real k = (c.cap_radius - c.base_radius) / f.len;
+    Vector3 u = o - c.base;
+    Real dp = dot(dir, f.axis), up = dot(u, f.axis);
+    Vector3 dperp = dir - f.axis * dp, uperp = u - f.axis * up;
+    // |uperp + t dperp|^2 = (r0 + k (up + t dp))^2
+    Real r_at0 = c.base_radius + k * up;
+    Real a = dot(dperp, dperp) - k * k * dp * dp;
+    Real b = 2 * (dot(dperp, uperp) - r_at0 * k * dp);
+    Real cc = dot(uperp, uperp) - r_at0 * r_at0;
+    Real roots[2];
+    Real tmp[4];
+    int faces[4];
+    int n = 0;
+    int m = solve_quadratic(a, b, cc, roots);
+    for (int i = 0; i < m; ++i) {
+        Real h = up + roots[i] * dp;
+        if (h >= 0 && h <= f.len && c.base_radius + k * h >= 0) {
+            tmp[n] = roots[i];
+            faces[n++] = 0;
+        }
+    }
+    if (!c.open && std::fabs(dp) > kPovEpsilon) {
+        for (int cap = 0; cap < 2; ++cap) {
+            Real r = cap ? c.cap_radius : c.base_radius;
+            Real t = ((cap ? f.len : 0) - up) / dp;
+            Vector3 q = uperp + dperp * t;
+            if (dot(q, q) <= r * r) {
+                tmp[n] = t;
+                faces[n++] = 1 + cap;
+            }
+        }
+    }
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 1; j < n; ++j)
+            if (tmp[j] < tmp[i]) {
+                std::swap(tmp[i], tmp[j]);
+                std::swap(faces[i], faces[j]);
+            }
+    for (int i = 0; i < n; ++i) {
+        if (tmp[i] > kConeTolerance) out.add(tmp[i], faces[i]);
+    }
+}
+
+Vector3 cone_normal(const Cone& c, const Point3& p, int face) {
+    AxisFrame f = axis_of(c.base, c.cap);
+    if (face == 1) return -f.axis;
+    if (face == 2) return f.axis;
+    Real k = (c.cap_radius - c.base_radius) / f.len;
+    Vector3 u = p - c.base;
+    Real h = dot(u, f.axis);
+    Vector3 perp = u - f.axis * h;
+    Real r = c.base_radius + k * h;
+    Real pl = length(perp);
+    if (pl == 0) return -f.axis;
+    return perp / pl * 1.0 - f.axis * k * (r / std::max(r, 1e-300)) * 1.0;
+}
+
+bool inside_cone(const Cone& c, const Point3& p) {
+    AxisFrame f = axis_of(c.base, c.cap);
+    Real k = (c.cap_radius - c.base_radius) / f.len;
+    Vector3 u = p - c.base;
+    Real h = dot(u, f.axis);
+    if (h < 0 || h > f.len) return false;
+    Vector3 perp = u - f.axis * h;
+    Real r = c.base_radius + k * h;
+    return dot(perp, perp) < r * r;
+}
+
+void shape_hits(const Cylinder& c, const LocalRay& r, ShapeHits& out) {
+    Crossings cs;
+    intersect_cylinder(c, r.origin, r.unit, cs);
+    add_unit_crossings(cs, r, out);
+}
+
+Vector3 shape_normal(const Cylinder& c, const ShapeHit& h) {
+    return cylinder_normal(c, h.p, h.face);
+}
+
+bool shape_inside(const Cylinder& c, const Point3& p) { return inside_cylinder(c, p); }
+
+Bounds3 shape_bounds(const Cylinder& c) {
+    Bounds3 b;
+    b.extend(c.base);
+    b.extend(c.cap);
+    b.lo -= Vector3(c.radius);
+    b.hi += Vector3(c.radius);
+    return b;
+}
+
+PovBBox shape_pov_bbox(const Cylinder& c, const CompactTransform& xf) {
+    const Vector3 a = c.cap - c.base;
+    const Real len = length(a);
+    if (!(len > 0)) return pov_infinite_bbox();
+    return pov_bbox(pov_axial_bounds(xf, c.base, a / len, c.radius, len, 0));
+}
+
+void shape_hits(const Cone& c, const LocalRay& r, ShapeHits& out) {
+    Crossings cs;
+    intersect_cone(c, r.origin, r.unit, cs);
+    add_unit_crossings(cs, r, out);
+}
+
+Vector3 shape_normal(const Cone& c, const ShapeHit& h) {
+    return cone_normal(c, h.p, h.face);
+}
+
+bool shape_inside(const Cone& c, const Point3& p) { return inside_cone(c, p); }
+
+Bounds3 shape_bounds(const Cone& c) {
+    Real r = std::max(std::fabs(c.base_radius), std::fabs(c.cap_radius));
+    Bounds3 b;
+    b.extend(c.base);
+    b.extend(c.cap);
+    b.lo -= Vector3(r);
+    b.hi += Vector3(r);
+    return b;
+}
+
+PovBBox shape_pov_bbox(const Cone& c, const CompactTransform& xf) {
+    // The wider end on top, the frame's origin at the apex of the full cone, the box as
+    // wide as the wider end all along (Compute_Cone_Data).
+    Point3 base = c.base, cap = c.cap;
+    Real r0 = c.base_radius, r1 = c.cap_radius;
+    if (r1 < r0) {
+        std::swap(base, cap);
+        std::swap(r0, r1);
+    }
+    const Vector3 a = cap - base;
+    const Real len = length(a);
+    if (!(len > 0)) return pov_infinite_bbox();
+    const Vector3 axis = a / len;
+    if (std::fabs(r1 - r0) < kPovEpsilon)
+        return pov_bbox(pov_axial_bounds(xf, base, axis, r1, len, 0));
+    const Real below = r0 * len / (r1 - r0);
+    const Real height = below + len;
+    return pov_bbox(
+        pov_axial_bounds(xf, base - axis * below, axis, r1, height, below / height));
+}
+
+namespace {
+
+// Both shapes as a cone of radii r0 (base) to r1 (cap).
+void oracle_cone(const Point3& base, const Point3& cap, Real r0, Real r1, bool open,
+                 const OracleRay& r, OracleBest& best) {
+    const HP eps = kPovEpsilon;
+    V3 axis;
+    HP len = oracle_axis_frame(V3(base), V3(cap), axis);
+    HP k = (HP(r1) - r0) / len;
+    V3 u = r.o - V3(base);
+    HP dp = dot(r.d, axis), up = dot(u, axis);
+    V3 dperp = r.d - axis * dp, uperp = u - axis * up;
+    HP rat0 = HP(r0) + k * up;
+    auto on_side = [&](const HP& t) {
+        HP h = up + t * dp;
+        return h >= 0 && h <= len && HP(r0) + k * h >= 0;
+    };
+    oracle_quadratic(dot(dperp, dperp) - k * k * dp * dp,
+                     2 * (dot(dperp, uperp) - rat0 * k * dp),
+                     dot(uperp, uperp) - rat0 * rat0, best, kConeTolerance, on_side);
+    if (!open && abs(dp) > eps) {
+        for (int end = 0; end < 2; ++end) {
+            HP rr = end ? r1 : r0;
+            HP t = ((end ? len : HP(0)) - up) / dp;
+            V3 q = uperp + dperp * t;
+            if (dot(q, q) <= rr * rr) best.offer(t, kConeTolerance);
+        }
+    }
+}
+
+}  // namespace
+
+bool shape_oracle_first(const Cylinder& c, const OracleRay& r, OracleBest& best) {
+    oracle_cone(c.base, c.cap, c.radius, c.radius, c.open, r, best);
+    return true;
+}
+
+bool shape_oracle_first(const Cone& c, const OracleRay& r, OracleBest& best) {
+    oracle_cone(c.base, c.cap, c.base_radius, c.cap_radius, c.open, r, best);
+    return true;
+}
+
+}  // namespace povwall::trace

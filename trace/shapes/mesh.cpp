@@ -1,0 +1,70 @@
+#include "trace/shapes/mesh.h"
+
+#include "trace/shapes/oracle_math.h"
+#include "trace/shapes/triangle.h"
+
+namespace povwall::trace {
+
+void mesh_face_corners(const Mesh& m, const Mesh::Face& f, Point3 (&p)[3]) {
+    for (int k = 0; k < 3; ++k) p[k] = single_precision(m.vertices[f.v[k]]);
+}
+
+void shape_hits(const Mesh& m, const LocalRay& r, ShapeHits& out) {
+    // Divided (not multiplied by the reciprocal) as meshes in CSG always were.
+    const Vector3 dn = r.direction / r.length;
+    for (size_t i = 0; i < m.faces.size(); ++i) {
+        Point3 p[3];
+        mesh_face_corners(m, m.faces[i], p);
+        Crossings cs;
+        intersect_triangle(p, r.origin, dn, cs);
+        if (cs.n)
+            out.push_back({cs.c[0].t / r.length, r.origin + dn * cs.c[0].t, int(i)});
+    }
+}
+
+Vector3 shape_normal(const Mesh& m, const ShapeHit& h) {
+    Point3 p[3];
+    mesh_face_corners(m, m.faces[size_t(h.face)], p);
+    return pov_triangle_normal(p);
+}
+
+bool shape_inside(const Mesh& m, const Point3& q) {
+    if (!m.inside_vector || dot(*m.inside_vector, *m.inside_vector) == 0) return false;
+    const Vector3 dir = normalize(*m.inside_vector);
+    int crossed = 0;
+    for (const auto& f : m.faces) {
+        Point3 p[3];
+        mesh_face_corners(m, f, p);
+        Crossings cs;
+        intersect_triangle(p, q, dir, cs);
+        crossed += cs.n;
+    }
+    return crossed % 2 == 1;
+}
+
+Bounds3 shape_bounds(const Mesh& m) {
+    Bounds3 b;
+    for (const auto& p : m.vertices) b.extend(p);
+    return b;
+}
+
+PovBBox shape_pov_bbox(const Mesh& m, const CompactTransform& xf) {
+    // Vertices are single precision; the box of the mesh's own space goes through the
+    // transform.
+    Bounds3 b;
+    for (const Point3& p : m.vertices) b.extend(single_precision(p));
+    if (b.empty()) return pov_infinite_bbox();
+    return pov_transformed_bbox(b, xf);
+}
+
+bool shape_oracle_first(const Mesh& m, const OracleRay& r, OracleBest& best) {
+    for (const auto& f : m.faces) {
+        Point3 p[3];
+        mesh_face_corners(m, f, p);
+        V3 q[3] = {V3(p[0]), V3(p[1]), V3(p[2])};
+        oracle_triangle(q, r, best);
+    }
+    return true;
+}
+
+}  // namespace povwall::trace

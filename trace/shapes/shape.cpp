@@ -1,0 +1,68 @@
+#include "trace/shapes/shape.h"
+
+#include <cstdlib>
+#include <variant>
+
+namespace povwall::trace {
+namespace {
+
+// Calls f(shape) for a leaf; CSG has no leaf operations.
+template <class R, class F>
+R visit_leaf(const Object& leaf, F&& f) {
+    return std::visit(
+        [&](const auto& s) -> R {
+            using T = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<T, Csg>) {
+                std::abort();  // a programming error: callers open CSG themselves
+            } else {
+                return f(s);
+            }
+        },
+        leaf.shape);
+}
+
+}  // namespace
+
+LocalRay leaf_ray(const Object& leaf, const Ray& ray) {
+    const Ray local =
+        leaf.transform.is_identity() ? ray : leaf.transform.inverse_ray(ray);
+    const Real len = length(local.direction);
+    return {local.origin, local.direction, local.direction * (1.0 / len), len};
+}
+
+void leaf_hits(const Object& leaf, const LocalRay& r, ShapeHits& out) {
+    visit_leaf<void>(leaf, [&](const auto& s) { shape_hits(s, r, out); });
+}
+
+Vector3 leaf_normal(const Object& leaf, const ShapeHit& h) {
+    return visit_leaf<Vector3>(leaf, [&](const auto& s) { return shape_normal(s, h); });
+}
+
+bool leaf_inside(const Object& leaf, const Point3& p) {
+    return visit_leaf<bool>(leaf, [&](const auto& s) { return shape_inside(s, p); });
+}
+
+Bounds3 leaf_bounds(const Object& leaf) {
+    return visit_leaf<Bounds3>(leaf, [&](const auto& s) { return shape_bounds(s); });
+}
+
+PovBBox leaf_pov_bbox(const Object& leaf) {
+    return visit_leaf<PovBBox>(
+        leaf, [&](const auto& s) { return shape_pov_bbox(s, leaf.transform); });
+}
+
+bool leaf_pov_tests_own_bbox(const Object& leaf) {
+    return visit_leaf<bool>(leaf,
+                            [&](const auto& s) { return shape_pov_tests_own_bbox(s); });
+}
+
+bool leaf_convex(const Object& leaf) {
+    return visit_leaf<bool>(leaf, [&](const auto& s) { return shape_convex(s); });
+}
+
+bool leaf_oracle_first(const Object& leaf, const OracleRay& r, OracleBest& best) {
+    return visit_leaf<bool>(
+        leaf, [&](const auto& s) { return shape_oracle_first(s, r, best); });
+}
+
+}  // namespace povwall::trace

@@ -1,0 +1,45 @@
+// The shape layer: every operation the tracer, the octree, POV-Ray's bounding model and
+// the numerics oracle need of a leaf shape, dispatched over ShapeData.
+//
+// Each shape lives in its own file here (its kernels and its shape_* overloads); each
+// function below visits every alternative, so a shape that lacks an operation is a
+// compile error, not an object that silently vanishes. To add a shape: its data in
+// core/scene.h (ShapeData), a file here with the overloads, and the include below.
+// CSG is not a leaf: its operations combine its children's (trace/prepared_scene.cpp,
+// pov_bounds.cpp) and a leaf operation called on one is a programming error.
+#pragma once
+
+#include "trace/shapes/box.h"
+#include "trace/shapes/common.h"
+#include "trace/shapes/cylinder_cone.h"
+#include "trace/shapes/disc.h"
+#include "trace/shapes/mesh.h"
+#include "trace/shapes/plane.h"
+#include "trace/shapes/polygon.h"
+#include "trace/shapes/sphere.h"
+#include "trace/shapes/torus.h"
+#include "trace/shapes/triangle.h"
+
+namespace povwall::trace {
+
+// The world ray in the leaf's own space.
+LocalRay leaf_ray(const Object& leaf, const Ray& ray);
+// The leaf's surface crossings along `r`, in the order its shape finds them.
+void leaf_hits(const Object& leaf, const LocalRay& r, ShapeHits& out);
+// The outward normal at a hit, in the leaf's own space (not normalised).
+Vector3 leaf_normal(const Object& leaf, const ShapeHit& h);
+// `p` in the leaf's own space; surfaces (triangle, disc, polygon, a mesh without an
+// inside_vector) have no inside.
+bool leaf_inside(const Object& leaf, const Point3& p);
+// Bounds in the leaf's own space; Bounds3::everything() for an infinite shape.
+Bounds3 leaf_bounds(const Object& leaf);
+// POV-Ray's box of the leaf (its Compute_BBox through the leaf's transform).
+PovBBox leaf_pov_bbox(const Object& leaf);
+// Whether POV-Ray's Find_Intersection tests the leaf's own box first.
+bool leaf_pov_tests_own_bbox(const Object& leaf);
+// Whether the surface is convex or flat: it cannot shadow one of its own lit points.
+bool leaf_convex(const Object& leaf);
+// The oracle's first accepted object-space t (false: the shape has no oracle).
+bool leaf_oracle_first(const Object& leaf, const OracleRay& r, OracleBest& best);
+
+}  // namespace povwall::trace

@@ -1,0 +1,66 @@
+#include "trace/shapes/sphere.h"
+
+#include <cmath>
+
+#include "trace/shapes/oracle_math.h"
+
+namespace povwall::trace {
+
+void intersect_sphere(const Sphere& s, const Point3& o, const Vector3& dir,
+                      Crossings& out) {
+    Vector3 oc = s.centre - o;
+    Real tca = dot(oc, dir);
+    Real t2hc = s.radius * s.radius - dot(oc, oc) + tca * tca;
+    // POV-Ray needs a half chord above EPSILON: tangent rays miss.
+    if (!(t2hc > kPovEpsilon)) return;
+    Real th = std::sqrt(t2hc);
+    Real t1 = tca - th, t2 = tca + th;
+    if (t1 > kSphereTolerance) out.add(t1, 0);
+    if (t2 > kSphereTolerance) out.add(t2, 0);
+}
+
+Vector3 sphere_normal(const Sphere& s, const Point3& p) {
+    return (p - s.centre) / s.radius;
+}
+
+bool inside_sphere(const Sphere& s, const Point3& p) {
+    Vector3 d = p - s.centre;
+    return dot(d, d) < s.radius * s.radius;
+}
+
+void shape_hits(const Sphere& s, const LocalRay& r, ShapeHits& out) {
+    Crossings cs;
+    intersect_sphere(s, r.origin, r.unit, cs);
+    add_unit_crossings(cs, r, out);
+}
+
+Vector3 shape_normal(const Sphere& s, const ShapeHit& h) { return sphere_normal(s, h.p); }
+
+bool shape_inside(const Sphere& s, const Point3& p) { return inside_sphere(s, p); }
+
+Bounds3 shape_bounds(const Sphere& s) {
+    return {s.centre - Vector3(s.radius), s.centre + Vector3(s.radius)};
+}
+
+PovBBox shape_pov_bbox(const Sphere& s, const CompactTransform& xf) {
+    // Translation, rotation and uniform scaling move the centre and the radius (no
+    // transform kept): the box is centre +- radius. Any other transform is kept and the
+    // box is the transformed cube's.
+    Real scale = 1;
+    if (xf.is_identity() || is_similarity(xf, scale))
+        return pov_sphere_bbox(xf.point(s.centre), s.radius * scale);
+    return pov_transformed_bbox(shape_bounds(s), xf);
+}
+
+bool shape_oracle_first(const Sphere& s, const OracleRay& r, OracleBest& best) {
+    V3 oc = V3(s.centre) - r.o;
+    HP tca = dot(oc, r.d);
+    HP t2hc = HP(s.radius) * s.radius - dot(oc, oc) + tca * tca;
+    if (!(t2hc > HP(kPovEpsilon))) return true;
+    HP th = sqrt(t2hc);
+    best.offer(tca - th, kSphereTolerance);
+    best.offer(tca + th, kSphereTolerance);
+    return true;
+}
+
+}  // namespace povwall::trace
