@@ -157,6 +157,26 @@ TEST(Tcp, GlassCsgAndCameraInsideGlassInEveryModeEqualOneProcess) {
     }
 }
 
+// Every shape scene (scenes/golden/shape_*.pov: each shape alone, in each kind of CSG,
+// clipped, transparent; each matches POV-Ray in tests/golden) gives the one-process image
+// in every mode: a shape is in a black box exactly where it can be hit there.
+TEST(Tcp, ShapeScenesInEveryModeEqualOneProcess) {
+    std::vector<std::string> scenes;
+    for (const auto& entry : fs::directory_iterator(POVWALL_GOLDEN_DIR)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("shape_", 0) == 0 && entry.path().extension() == ".pov")
+            scenes.push_back(entry.path().string());
+    }
+    std::sort(scenes.begin(), scenes.end());
+    ASSERT_FALSE(scenes.empty());
+    for (const std::string& scene : scenes) {
+        SCOPED_TRACE(scene);
+        expect_same_images(scene, "-W 32 -H 24",
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents"});
+    }
+}
+
 // Quality levels change what is traced (no shadows, no refraction, pigments only): every
 // mode leaves out the same rays.
 TEST(Tcp, QualityLevelsInEveryModeEqualOneProcess) {
