@@ -248,11 +248,16 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
         mag = std::max({mag, std::fabs(bounds_.lo[a]), std::fabs(bounds_.hi[a])});
     }
     const Real pad = std::max({ext_max * 1e-6, mag * 1e-12, 1e-300});
+    // Every axis also grows by a few ulps of the coordinates: a ray that only touches
+    // the root (along an edge or at a corner, where the slab parameters computed with
+    // the reciprocal direction can cross by an ulp) must still reach the leaf there.
+    // A black box's tree ends where its region does, and rays leave one box and enter
+    // the next exactly on that wall; a surface crossing on the wall must be found.
+    const Real touch = std::max(mag * 1e-13, 1e-300);
     for (int a = 0; a < 3; ++a) {
-        if (ext[a] < pad) {
-            bounds_.lo[a] -= pad;
-            bounds_.hi[a] += pad;
-        }
+        const Real grow = ext[a] < pad ? pad : touch;
+        bounds_.lo[a] -= grow;
+        bounds_.hi[a] += grow;
     }
     BuildOptions opt = options;
     opt.max_depth = std::clamp(opt.max_depth, 0, kMaxDepth);
