@@ -312,6 +312,30 @@ struct Mesh {
     HeapOptional<Vector3> inside_vector;  // only a mesh with one is solid
 };
 
+// prism: closed 2-D curves in (x, z) swept along y from height1 to height2, straight
+// (linear_sweep) or scaled towards the origin (conic_sweep, the curve at y = 1). The
+// parser turns the points into cubic segments as POV-Ray's Compute_Prism does:
+// (u, v)(t) = a t^3 + b t^2 + c t + d for t in [0, 1]; trace/shapes/prism.cpp.
+struct PrismSegment {
+    Real a[2], b[2], c[2], d[2];  // [0]: u (x), [1]: v (z)
+    // The segment's rectangle in (x, z), scaled over the heights for conic_sweep, and
+    // the unscaled extent of the curve (x2, y1, y2 before scaling).
+    Real x1, x2, y1, y2;
+    Real u2, v1, v2;
+};
+struct Prism {
+    enum class Spline : uint8_t { Linear, Quadratic, Cubic, Bezier };
+    Spline spline = Spline::Linear;
+    bool conic = false;
+    bool open = false;
+    bool sturm = false;
+    bool degenerate = false;  // a curve left open: never hit (POV-Ray's DEGENERATE_FLAG)
+    Real height1 = 0, height2 = 1;
+    Real x1 = 0, x2 = 0, y1 = 0, y2 = 0;  // all segments' rectangle (conic: scaled)
+    Real u1 = 0, u2 = 0, v1 = 0, v2 = 0;  // the curves' own extent
+    std::vector<PrismSegment> segments;
+};
+
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
@@ -324,7 +348,7 @@ struct Csg {
 };
 
 using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                               SmoothTriangle, Polygon, Mesh, Csg>;
+                               SmoothTriangle, Polygon, Mesh, Prism, Csg>;
 
 struct Object {
     ShapeData shape;

@@ -181,6 +181,8 @@ class Interpreter {
     Fog parse_fog();
     void parse_mesh(Object& out);
     void parse_mesh2(Object& out);
+    // Shapes with a file of their own (parser/shape_*.cpp); `keyword` locates warnings.
+    void parse_prism(Object& out, const Token& keyword);
     int parse_count();
     template <class T>
     void reserve_list(std::vector<T>& list, int count);

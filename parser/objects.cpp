@@ -11,10 +11,10 @@ namespace {
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "text",           "lathe",         "sor",        "prism",       "blob",
-        "superellipsoid", "quadric",       "quartic",    "poly",        "cubic",
-        "height_field",   "bicubic_patch", "isosurface", "parametric",  "julia_fractal",
-        "sphere_sweep",   "ovus",          "lemon",      "light_group", "polynomial"};
+        "text",          "lathe",      "sor",         "blob",          "superellipsoid",
+        "quadric",       "quartic",    "poly",        "cubic",         "height_field",
+        "bicubic_patch", "isosurface", "parametric",  "julia_fractal", "sphere_sweep",
+        "ovus",          "lemon",      "light_group", "polynomial"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -273,8 +273,9 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         obj.double_illuminate = true;
     } else if (w == "sturm") {
         auto torus = std::get_if<Torus>(&obj.shape);
-        if (!torus) error(t, "'sturm' cannot be used with this object");
-        torus->sturm = parse_bool_opt();
+        auto prism = std::get_if<Prism>(&obj.shape);
+        if (!torus && !prism) error(t, "'sturm' cannot be used with this object");
+        (torus ? torus->sturm : prism->sturm) = parse_bool_opt();
     } else if (w == "open") {
         auto cyl = std::get_if<Cylinder>(&obj.shape);
         auto cone = std::get_if<Cone>(&obj.shape);
@@ -496,6 +497,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             }
             out.shape = poly;
         }
+    } else if (w == "prism") {
+        open();
+        if (!copy_identifier()) parse_prism(out, t);
     } else if (w == "mesh" || w == "mesh2") {
         open();
         if (!copy_identifier()) {

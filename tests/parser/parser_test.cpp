@@ -566,5 +566,46 @@ light_source { <0, 10, 0> rgb 1 looks_like { sphere { 0, 0.1 } } }
     EXPECT_TRUE(all.objects_filtered());
 }
 
+TEST(Prism, PointCountsAndClosureAsPovRay) {
+    EXPECT_EQ(error_of("prism { 0, 1, 2, <0,0>, <1,0> }"),
+              "test.pov:1:15: error: Prism with linear splines must have at least three "
+              "points.\n"
+              "prism { 0, 1, 2, <0,0>, <1,0> }\n"
+              "              ^");
+    EXPECT_EQ(error_of("prism { bezier_spline 0, 1, 6, 0,0,0,0,0,0 }").substr(0, 82),
+              "test.pov:1:29: error: Prism with Bezier splines must have four points per "
+              "segment.");
+    EXPECT_EQ(error_of("prism { 0, 1, 3, <0, 0, 1>, <1,0>, <0,1> }").substr(0, 78),
+              "test.pov:1:18: error: UV_Vector expected but vector or color expression "
+              "found.");
+    // A linear outline left open is closed with a warning; other splines are ignored.
+    std::string messages;
+    Scene s = parse("prism { 1, 0, 3, <0,0>, <1,0>, <0,1> }", &messages);
+    const Prism& p = std::get<Prism>(s.objects.at(0).shape);
+    EXPECT_EQ(p.segments.size(), 3u);
+    EXPECT_EQ(p.height1, 0);  // heights given high first are swapped
+    EXPECT_EQ(p.height2, 1);
+    EXPECT_FALSE(p.degenerate);
+    EXPECT_NE(messages.find("warning: Linear prism not closed. Closing it."),
+              std::string::npos);
+    s = parse("prism { bezier_spline 0, 1, 4, <0,0>, <1,0>, <1,1>, <0,1> }", &messages);
+    EXPECT_TRUE(std::get<Prism>(s.objects.at(0).shape).degenerate);
+    EXPECT_NE(messages.find("warning: Prism not closed. Ignoring it."),
+              std::string::npos);
+    EXPECT_EQ(error_of("prism { quadratic_spline 0, 1, 5, <0,0>, <1,0>, <1,1>, <0,1>, "
+                       "<2,2> }")
+                  .substr(0, 45),
+              "test.pov:1:1: error: Too few points in prism.");
+    // sturm is an object modifier of prisms; open only directly after the points.
+    s = parse(
+        "prism { cubic_spline 0, 1, 7, <0,-1>, <1,0>, <0,1>, <-1,0>, <0,-1>, <1,0>, "
+        "<0,1> "
+        "open sturm }");
+    EXPECT_TRUE(std::get<Prism>(s.objects.at(0).shape).sturm);
+    EXPECT_TRUE(std::get<Prism>(s.objects.at(0).shape).open);
+    EXPECT_EQ(error_of("sphere { 0, 1 sturm }").substr(0, 61),
+              "test.pov:1:15: error: 'sturm' cannot be used with this object");
+}
+
 }  // namespace
 }  // namespace povwall::parser

@@ -41,6 +41,7 @@ const StressCase kCases[] = {
     {"coincident_faces", {"box", "mesh"}, 1e-13},
     {"nested_tir", {"sphere", "plane"}, 1e-13},
     {"slivers", {"triangle"}, 1e-12},
+    {"prisms_edge_on", {"prism"}, 1e-12},
 };
 
 Scene load(const std::string& name) {

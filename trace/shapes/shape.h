@@ -16,6 +16,7 @@
 #include "trace/shapes/mesh.h"
 #include "trace/shapes/plane.h"
 #include "trace/shapes/polygon.h"
+#include "trace/shapes/prism.h"
 #include "trace/shapes/sphere.h"
 #include "trace/shapes/torus.h"
 #include "trace/shapes/triangle.h"
