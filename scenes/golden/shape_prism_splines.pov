@@ -15,7 +15,7 @@ prism { conic_sweep quadratic_spline 0.3, 1, 7,
   <-1, 0>, <0, -1>, <1, 0>, <0, 1>, <-1, 0>, <0, -1>, <1, 0>
   rotate 180*x translate <0, 1, 2.5> pigment { rgb <0.3, 0.5, 0.9> } }
 // Cubic through eight points, with its leading and trailing control points
-prism { cubic_spline -0.5, 0.6, 10,
+prism { linear_sweep cubic_spline -0.5, 0.6, 10,
   <0.5, -1>, <1, 0>, <0.6, 0.7>, <0, 1>, <-0.6, 0.7>, <-1, 0>, <-0.5, -1>, <0.5, -1>,
   <1, 0>, <0.6, 0.7>
   translate <3, 0.5, 2> pigment { rgb <0.3, 0.8, 0.4> } }
