@@ -15,6 +15,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/bicubic_patch.h"
 #include "core/colour.h"
 #include "core/compact_transform.h"
 #include "core/function.h"
@@ -336,6 +337,12 @@ struct Prism {
     std::vector<PrismSegment> segments;
 };
 
+// bicubic_patch: control points and pieces on the heap, shared by copies (a transform
+// makes new ones: core/bicubic_patch.h).
+struct BicubicPatch {
+    std::shared_ptr<const BicubicPatchData> data;
+};
+
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
@@ -348,7 +355,7 @@ struct Csg {
 };
 
 using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                               SmoothTriangle, Polygon, Mesh, Prism, Csg>;
+                               SmoothTriangle, Polygon, Mesh, Prism, BicubicPatch, Csg>;
 
 struct Object {
     ShapeData shape;

@@ -61,7 +61,16 @@ void Interpreter::transform_light(Light& l, const Transform& t) {
 }
 
 void Interpreter::apply_transform(Object& obj, const Transform& t) {
-    obj.transform = obj.transform.then(t);
+    if (auto patch = std::get_if<BicubicPatch>(&obj.shape)) {
+        // POV-Ray keeps no matrix for a patch: its control points move, and its flat
+        // pieces are cut again from them.
+        auto moved = std::make_shared<BicubicPatchData>(*patch->data);
+        for (Point3& p : moved->control) p = t.point(p);
+        build_patch_pieces(*moved);
+        patch->data = std::move(moved);
+    } else {
+        obj.transform = obj.transform.then(t);
+    }
     transform_textures(obj.texture, t);
     if (obj.interior_texture.allocated())
         transform_textures(obj.interior_texture.edit(), t);
@@ -256,6 +265,8 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
             }
         };
         pass_down(pass_down, obj);
+    } else if (w == "inverse" && std::holds_alternative<BicubicPatch>(obj.shape)) {
+        warn(t, "Cannot invert a patch object.");
     } else if (w == "inverse") {
         obj.inverse = !obj.inverse;
         // POV-Ray inverts a CSG by inverting its children and morphing every CSG of the
@@ -282,6 +293,9 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (!cyl && !cone) error(t, "'open' cannot be used with this object");
         if (cyl) cyl->open = true;
         if (cone) cone->open = true;
+    } else if (w == "clipped_by" && std::holds_alternative<BicubicPatch>(obj.shape)) {
+        // POV-Ray ignores the clip of a patch but still shrinks its bounding box by it.
+        unsupported(t, "clipped_by on a bicubic_patch");
     } else if (w == "clipped_by" || w == "bounded_by") {
         // As POV-Ray: `bounded_by { clipped_by }` bounds by the clip, `clipped_by {
         // bounded_by }` clips by the bound; the lists are then one, and neither grows.
@@ -497,6 +511,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             }
             out.shape = poly;
         }
+    } else if (w == "bicubic_patch") {
+        open();
+        if (!copy_identifier()) parse_bicubic_patch(out, t);
     } else if (w == "prism") {
         open();
         if (!copy_identifier()) parse_prism(out, t);

@@ -42,6 +42,7 @@ const StressCase kCases[] = {
     {"nested_tir", {"sphere", "plane"}, 1e-13},
     {"slivers", {"triangle"}, 1e-12},
     {"prisms_edge_on", {"prism"}, 1e-12},
+    {"patches_degenerate", {"bicubic_patch"}, 1e-12},
 };
 
 Scene load(const std::string& name) {

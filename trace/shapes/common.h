@@ -62,7 +62,9 @@ struct ShapeHit {
     Real t;    // world distance along the ray
     Point3 p;  // the point in the shape's space, computed in the shape's arithmetic
     int face;  // which surface part (for the normal)
-    Real s = 0;  // where on that part, when the normal needs it (a prism wall's spline t)
+    // Where on that part, when the normal needs it (a prism wall's spline t; a patch
+    // triangle's barycentric coordinates).
+    Real s = 0, s2 = 0;
 };
 using ShapeHits = std::vector<ShapeHit>;
 

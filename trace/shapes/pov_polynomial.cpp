@@ -146,7 +146,8 @@ bool regula_falsi(const Poly& p, Real a, Real b, Real& root) {
 }
 
 // Roots in [lo, hi], where the sequence changes sign at_lo and at_hi times.
-int bisect(const SturmSequence& seq, Real lo, Real hi, int at_lo, int at_hi, Real* roots) {
+int bisect(const SturmSequence& seq, Real lo, Real hi, int at_lo, int at_hi,
+           Real* roots) {
     if (at_lo - at_hi == 1 && regula_falsi(seq.s[0], lo, hi, roots[0])) return 1;
     Real mid = lo;
     for (int i = 0; i < kMaxIterations; ++i) {
@@ -315,7 +316,8 @@ int pov_solve_polynomial(int n, const Real* c, Real* roots, bool sturm, Real eps
         case 4:
             if (eps > 0 && k[3] != 0 && std::fabs(k[4] / k[3]) < eps)
                 return sturm ? pov_sturm_roots(3, k, roots) : pov_solve_cubic(k, roots);
-            if (sturm || difficult_coefficients(4, k)) return pov_sturm_roots(4, k, roots);
+            if (sturm || difficult_coefficients(4, k))
+                return pov_sturm_roots(4, k, roots);
             return pov_solve_quartic(k, roots);
         default:
             return pov_sturm_roots(m, k, roots);

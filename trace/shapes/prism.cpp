@@ -10,9 +10,9 @@
 namespace povwall::trace {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;         // POV-Ray's EPSILON
-constexpr Real kDepthTolerance = 1e-4;   // prism.cpp's DEPTH_TOLERANCE
-constexpr Real kHuge = 2e10;             // BOUND_HUGE
+constexpr Real kEpsilon = 1e-10;        // POV-Ray's EPSILON
+constexpr Real kDepthTolerance = 1e-4;  // prism.cpp's DEPTH_TOLERANCE
+constexpr Real kHuge = 2e10;            // BOUND_HUGE
 
 Real at(const PrismSegment& s, int axis, Real t) {
     return t * (t * (t * s.a[axis] + s.b[axis]) + s.c[axis]) + s.d[axis];
@@ -98,7 +98,8 @@ void shape_hits(const Prism& p, const LocalRay& r, ShapeHits& out) {
     // is within POV-Ray's depth range.
     auto push = [&](Real k, int face, Real s) {
         const Real w = k / len;
-        if (w > kDepthTolerance && w < kMaxDistance) out.push_back({w, P + D * k, face, s});
+        if (w > kDepthTolerance && w < kMaxDistance)
+            out.push_back({w, P + D * k, face, s});
     };
     const Real H1 = p.height1, H2 = p.height2;
     if (std::fabs(D.y) < kEpsilon) {
@@ -128,16 +129,18 @@ void shape_hits(const Prism& p, const LocalRay& r, ShapeHits& out) {
             if (leaves_rectangle(s.x1, s.x2, s.y1, s.y2, P, D)) continue;
             Real c[4];
             if (!p.conic) {
-                // Where the ray's (x, z) line crosses the curve: D.z (u - Px) = D.x (v - Pz).
+                // Where the ray's (x, z) line crosses the curve: D.z (u - Px) = D.x (v -
+                // Pz).
                 c[0] = s.a[0] * D.z - s.a[1] * D.x;
                 c[1] = s.b[0] * D.z - s.b[1] * D.x;
                 c[2] = s.c[0] * D.z - s.c[1] * D.x;
                 c[3] = D.z * (s.d[0] - P.x) - D.x * (s.d[1] - P.z);
-                const bool cubic = p.spline == Prism::Spline::Cubic ||
-                                   p.spline == Prism::Spline::Bezier;
+                const bool cubic =
+                    p.spline == Prism::Spline::Cubic || p.spline == Prism::Spline::Bezier;
                 if (cubic && !meets_rectangle(s, P, D)) continue;
             } else {
-                // Where the plane through the apex and the ray crosses the curve at y = 1.
+                // Where the plane through the apex and the ray crosses the curve at y
+                // = 1.
                 c[0] = s.a[0] * k1 + s.a[1] * k2;
                 c[1] = s.b[0] * k1 + s.b[1] * k2;
                 c[2] = s.c[0] * k1 + s.c[1] * k2;
@@ -246,7 +249,8 @@ bool shape_oracle_first(const Prism& p, const OracleRay& r, OracleBest& best) {
             } else {
                 const HP hx = r.d.x - U * r.d.y, hz = r.d.z - V * r.d.y;
                 if (hx == 0 && hz == 0) continue;
-                k = abs(hx) > abs(hz) ? (U * r.o.y - r.o.x) / hx : (V * r.o.y - r.o.z) / hz;
+                k = abs(hx) > abs(hz) ? (U * r.o.y - r.o.x) / hx
+                                      : (V * r.o.y - r.o.z) / hz;
             }
             const HP y = r.o.y + k * r.d.y;
             if (y >= H1 && y <= H2) best.offer(k, kDepthTolerance);

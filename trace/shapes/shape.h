@@ -9,6 +9,7 @@
 // pov_bounds.cpp) and a leaf operation called on one is a programming error.
 #pragma once
 
+#include "trace/shapes/bicubic_patch.h"
 #include "trace/shapes/box.h"
 #include "trace/shapes/common.h"
 #include "trace/shapes/cylinder_cone.h"
