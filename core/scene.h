@@ -343,6 +343,21 @@ struct BicubicPatch {
     std::shared_ptr<const BicubicPatchData> data;
 };
 
+// julia_fractal: the 3-D slice of a 4-D Julia set of q -> f(q) + c, quaternion or
+// hypercomplex, as POV-Ray 3.7's (trace/shapes/julia_fractal.cpp).
+struct JuliaFractal {
+    enum class Algebra : uint8_t { Quaternion, Hypercomplex };
+    enum class Function : uint8_t { Sqr, Cube, Reciprocal };
+    std::array<Real, 4> c{0, 0, 0, 0};
+    Algebra algebra = Algebra::Quaternion;
+    Function function = Function::Sqr;
+    int max_iteration = 20;
+    std::array<Real, 4> slice{0, 0, 0, 1};  // unit
+    Real slice_distance = 0;
+    Real precision = 1.0 / 20;  // the marching step: 1 / `precision`
+    Real radius2 = 4, exit_value = 16;  // bounding sphere and escape value (set up)
+};
+
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
@@ -355,7 +370,8 @@ struct Csg {
 };
 
 using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                               SmoothTriangle, Polygon, Mesh, Prism, BicubicPatch, Csg>;
+                               SmoothTriangle, Polygon, Mesh, Prism, BicubicPatch,
+                               JuliaFractal, Csg>;
 
 struct Object {
     ShapeData shape;

@@ -184,6 +184,7 @@ class Interpreter {
     // Shapes with a file of their own (parser/shape_*.cpp); `keyword` locates warnings.
     void parse_prism(Object& out, const Token& keyword);
     void parse_bicubic_patch(Object& out, const Token& keyword);
+    void parse_julia_fractal(Object& out, const Token& keyword);
     int parse_count();
     template <class T>
     void reserve_list(std::vector<T>& list, int count);

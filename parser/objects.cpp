@@ -71,6 +71,9 @@ void Interpreter::apply_transform(Object& obj, const Transform& t) {
     } else {
         obj.transform = obj.transform.then(t);
     }
+    // POV-Ray recomputes a julia_fractal's box at each transform, which clears its
+    // inverse flag.
+    if (std::holds_alternative<JuliaFractal>(obj.shape)) obj.inverse = false;
     transform_textures(obj.texture, t);
     if (obj.interior_texture.allocated())
         transform_textures(obj.interior_texture.edit(), t);
@@ -511,6 +514,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             }
             out.shape = poly;
         }
+    } else if (w == "julia_fractal") {
+        open();
+        if (!copy_identifier()) parse_julia_fractal(out, t);
     } else if (w == "bicubic_patch") {
         open();
         if (!copy_identifier()) parse_bicubic_patch(out, t);
@@ -594,6 +600,8 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         return false;
     }
     parse_object_modifiers(out);
+    // Its set-up after the modifiers clears the inverse flag (as a transform does).
+    if (std::holds_alternative<JuliaFractal>(out.shape)) out.inverse = false;
     return true;
 }
 

@@ -17,6 +17,11 @@ struct WorldCrossing {
     Real t;
     Vector3 normal;
     const Object* leaf;
+    // Where the shape says the crossing is, when that is not at distance t along the ray
+    // (a julia_fractal's later crossings: POV-Ray's depth there lags its point).
+    bool own_point = false;
+    Point3 point{0, 0, 0};
+    Point3 at(const Ray& ray) const { return own_point ? point : ray.at(t); }
 };
 
 }  // namespace
@@ -61,7 +66,8 @@ bool texture_opaque(const LayeredTexture& layers) {
 namespace {
 
 // Leaf shape crossings along a world ray, in world distances, with outward world normals.
-void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out) {
+void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
+                    std::vector<WorldCrossing>& out) {
     // A sphere moved, turned or scaled evenly is a sphere in world space, met by the
     // world ray as it is (POV-Ray moves its centre and radius; only an ellipsoid works in
     // its own space): the same last bits as a sphere outside CSG, which decide hits on a
@@ -78,8 +84,11 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
         }
         return;
     }
-    const LocalRay local = leaf_ray(o, ray);
+    LocalRay local = leaf_ray(o, ray);
     if (!(local.length > 0)) return;
+    // A clip filters the hits after the shape: a shape that stops at its first hit must
+    // go on past clipped ones, as POV-Ray's (which tests clips before it stops).
+    local.csg_child = csg_child || !o.clipped_by->empty();
     thread_local ShapeHits hits;
     hits.clear();
     leaf_hits(o, local, hits);
@@ -87,7 +96,8 @@ void leaf_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>&
         Vector3 n = leaf_normal(o, h);
         n = normalize(o.transform.is_identity() ? n : o.transform.normal(n));
         if (o.inverse) n = -n;
-        out.push_back({h.t, n, &o});
+        out.push_back(
+            {h.t, n, &o, h.own_point, h.own_point ? o.transform.point(h.p) : Point3{}});
     }
 }
 
@@ -98,7 +108,8 @@ bool inside_clips(const Object& o, const Point3& p) {
     return true;
 }
 
-void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out);
+void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out,
+                      bool csg_child = false);
 
 // POV-Ray's Ray_In_Bound: the ray passes when, for every bounding object, it meets it
 // somewhere ahead (MIN_ISECT_DEPTH on, as Find_Intersection; the bound's own bounds and
@@ -117,7 +128,8 @@ bool ray_in_bound(const std::vector<Object>& bound, const Ray& ray) {
     return true;
 }
 
-void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out) {
+void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out,
+                      bool csg_child) {
     size_t start = out.size();
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
         // In POV-Ray's push order: a plain union pushes its children's intersections as
@@ -133,10 +145,10 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             const Object& child = csg->children[i];
             if (!child.bounded_by->empty() && !ray_in_bound(*child.bounded_by, ray))
                 continue;
-            object_crossings(child, ray, tmp);
+            object_crossings(child, ray, tmp, true);
             if (reversed) std::reverse(tmp.begin(), tmp.end());
             for (WorldCrossing c : tmp) {
-                Point3 p = ray.at(c.t);
+                Point3 p = c.at(ray);
                 bool keep = true;
                 for (size_t j = 0; j < csg->children.size() && keep; ++j) {
                     if (j == i) continue;
@@ -164,12 +176,12 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             for (size_t k = start; k < out.size(); ++k) out[k].normal = -out[k].normal;
         }
     } else {
-        leaf_crossings(o, ray, out);
+        leaf_crossings(o, ray, csg_child, out);
     }
     if (!o.clipped_by->empty()) {
         size_t w = start;
         for (size_t k = start; k < out.size(); ++k) {
-            if (inside_clips(o, ray.at(out[k].t))) out[w++] = out[k];
+            if (inside_clips(o, out[k].at(ray))) out[w++] = out[k];
         }
         out.resize(w);
     }
@@ -855,7 +867,7 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, Real t_min, Real
             }
             hit.t = best->t;
             hit.prim = id;
-            hit.point = ray.at(best->t);
+            hit.point = best->at(ray);
             hit.normal = best->normal;
             hit.material = material_for(best->leaf);
             if (!hit.material) hit.material = &materials_[material_[id]];

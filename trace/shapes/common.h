@@ -52,9 +52,13 @@ inline Point3 single_precision(const Point3& p) {
 // A world ray in a leaf shape's own space (through the object's inverse transform).
 struct LocalRay {
     Point3 origin;
-    Vector3 direction;  // not normalised: its parameter is the world ray's
-    Vector3 unit;       // direction * (1 / length), as POV-Ray's VInverseScaleEq
-    Real length;        // |direction|: object units per world unit
+    Vector3 direction;        // not normalised: its parameter is the world ray's
+    Vector3 unit;             // direction * (1 / length), as POV-Ray's VInverseScaleEq
+    Real length;              // |direction|: object units per world unit
+    bool transformed = true;  // false: the object has no transform (the world ray)
+    // The object is a part of a CSG object. Some POV-Ray shapes stop at their first hit
+    // otherwise (the nearest but for its depth tolerances).
+    bool csg_child = false;
 };
 
 // One crossing of a leaf shape's surface.
@@ -65,6 +69,12 @@ struct ShapeHit {
     // Where on that part, when the normal needs it (a prism wall's spline t; a patch
     // triangle's barycentric coordinates).
     Real s = 0, s2 = 0;
+    // The normal, for shapes that find it with the hit (julia_fractal: it needs the
+    // iteration at the hit point).
+    Vector3 normal{0, 0, 0};
+    // p is where the crossing is, though not at distance t along the ray (julia_fractal's
+    // later crossings, whose depth lags in POV-Ray).
+    bool own_point = false;
 };
 using ShapeHits = std::vector<ShapeHit>;
 

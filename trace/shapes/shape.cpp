@@ -27,7 +27,8 @@ LocalRay leaf_ray(const Object& leaf, const Ray& ray) {
     const Ray local =
         leaf.transform.is_identity() ? ray : leaf.transform.inverse_ray(ray);
     const Real len = length(local.direction);
-    return {local.origin, local.direction, local.direction * (1.0 / len), len};
+    return {local.origin, local.direction, local.direction * (1.0 / len), len,
+            !leaf.transform.is_identity()};
 }
 
 void leaf_hits(const Object& leaf, const LocalRay& r, ShapeHits& out) {
