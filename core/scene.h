@@ -312,6 +312,23 @@ struct Mesh {
     HeapOptional<Vector3> inside_vector;  // only a mesh with one is solid
 };
 
+// One character of a `text` object: a TrueType outline in em units (x right, y up,
+// baseline y = 0) extruded from z = 0 to z = depth. The parser builds the outline as
+// POV-Ray reads it (parser/truetype_font.h); glyphs of one font share it.
+struct GlyphSegment {
+    Real x[3], y[3];  // start, control, end (a line: start x[0] and end x[1])
+    bool curve;
+};
+struct GlyphOutline {
+    std::vector<GlyphSegment> segments;  // every contour's, in file order
+    // POV-Ray's box of the glyph in em units: the header's, widened by the points.
+    Real xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+};
+struct Glyph {
+    std::shared_ptr<const GlyphOutline> outline;
+    Real depth = 1;
+};
+
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
@@ -324,7 +341,7 @@ struct Csg {
 };
 
 using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                               SmoothTriangle, Polygon, Mesh, Csg>;
+                               SmoothTriangle, Polygon, Mesh, Glyph, Csg>;
 
 struct Object {
     ShapeData shape;

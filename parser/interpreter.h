@@ -15,6 +15,8 @@
 
 namespace povwall::parser {
 
+class TrueTypeFont;
+
 // Limits that turn runaway scenes into located errors instead of exhausted memory or a
 // hang.
 constexpr int kMaxIncludeDepth =
@@ -261,6 +263,20 @@ class Interpreter {
     Binding* find_binding(uint32_t sym, int* scope_index = nullptr);
     void parse_top_level_item(const Token& t);
     std::string resolve_include(const std::string& name, int from_file) const;
+    // ---- text (shape_text.cpp)
+    void parse_text(Object& out);
+    // The font file POV-Ray would open for `name` ("" if none); `searched` lists the
+    // folders tried.
+    std::string resolve_font(const std::string& name, int from_file,
+                             std::string& searched) const;
+    std::shared_ptr<TrueTypeFont> load_font(const Token& at, const std::string& path,
+                                            const std::string& shown);
+    std::vector<uint16_t> text_codes(const Token& at, const std::string& s);
+    // global_settings { charset }: how string bytes become character codes.
+    enum class Charset : uint8_t { Ascii, Utf8, Sys } charset_ = Charset::Ascii;
+    // Fonts by the name written in the scene, as POV-Ray keeps them: the cmap choice and
+    // the glyphs loaded stay with the first use.
+    std::unordered_map<std::string, std::shared_ptr<TrueTypeFont>> fonts_;
     void finish_object(Object& obj);  // POV-Ray's post-processing of a placed object
     void place_object(Object& obj, const Object* parent,
                       std::unordered_map<uint32_t, Interior>& shared);

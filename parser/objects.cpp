@@ -11,10 +11,10 @@ namespace {
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "text",           "lathe",         "sor",        "prism",       "blob",
-        "superellipsoid", "quadric",       "quartic",    "poly",        "cubic",
-        "height_field",   "bicubic_patch", "isosurface", "parametric",  "julia_fractal",
-        "sphere_sweep",   "ovus",          "lemon",      "light_group", "polynomial"};
+        "lathe",         "sor",        "prism",       "blob",          "superellipsoid",
+        "quadric",       "quartic",    "poly",        "cubic",         "height_field",
+        "bicubic_patch", "isosurface", "parametric",  "julia_fractal", "sphere_sweep",
+        "ovus",          "lemon",      "light_group", "polynomial"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -435,6 +435,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 error(t, "degenerate cone, base point = cap point");
             out.shape = c;
         }
+    } else if (w == "text") {
+        open();
+        if (!copy_identifier()) parse_text(out);
     } else if (w == "torus") {
         open();
         if (!copy_identifier()) {

@@ -41,6 +41,7 @@ const StressCase kCases[] = {
     {"coincident_faces", {"box", "mesh"}, 1e-13},
     {"nested_tir", {"sphere", "plane"}, 1e-13},
     {"slivers", {"triangle"}, 1e-12},
+    {"text_extremes", {"glyph"}, 1e-11},
 };
 
 Scene load(const std::string& name) {
