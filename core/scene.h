@@ -338,6 +338,13 @@ struct Csg {
     // Light sources written inside the CSG move with it; the parser moves them to
     // Scene::lights when the object is placed in the scene.
     std::vector<Light> lights;
+    // A text object's box as POV-Ray keeps it (lower-left corner and lengths in single
+    // precision): the glyphs' boxes joined once after layout, then moved as a box by
+    // every transform, never rebuilt from the glyphs. min_extent/max_extent read it.
+    struct PovBox {
+        float lo[3], len[3];
+    };
+    std::optional<PovBox> text_box;
 };
 
 using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,

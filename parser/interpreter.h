@@ -17,6 +17,10 @@ namespace povwall::parser {
 
 class TrueTypeFont;
 
+// POV-Ray's Recompute_BBox: the box's corners through `t`, their bounding box clipped at
+// +-1e10 and kept in single precision.
+void move_pov_box(Csg::PovBox& box, const Transform& t);
+
 // Limits that turn runaway scenes into located errors instead of exhausted memory or a
 // hang.
 constexpr int kMaxIncludeDepth =
@@ -272,6 +276,9 @@ class Interpreter {
     std::shared_ptr<TrueTypeFont> load_font(const Token& at, const std::string& path,
                                             const std::string& shown);
     std::vector<uint16_t> text_codes(const Token& at, const std::string& s);
+    // min_extent / max_extent of an object identifier (`at` names it): POV-Ray's box,
+    // which the parser knows for text objects only.
+    Vector3 object_extent(const Token& at, const Object& o, bool max);
     // global_settings { charset }: how string bytes become character codes.
     enum class Charset : uint8_t { Ascii, Utf8, Sys } charset_ = Charset::Ascii;
     // Fonts by the name written in the scene, as POV-Ray keeps them: the cmap choice and

@@ -68,6 +68,7 @@ void Interpreter::apply_transform(Object& obj, const Transform& t) {
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
         for (Object& child : csg->children) apply_transform(child, t);
         for (Light& l : csg->lights) transform_light(l, t);
+        if (csg->text_box) move_pov_box(*csg->text_box, t);
     }
     if (auto mesh = std::get_if<Mesh>(&obj.shape)) {  // per-face textures move too
         for (LayeredTexture& tex : mesh->textures) transform_textures(tex, t);

@@ -2,6 +2,7 @@
 // a union of one extruded glyph per character laid out as its Parse_TrueType and
 // ProcessNewTTF do (metrics, kerning, the offset rule and the 0.001-degree rotation).
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -53,7 +54,96 @@ std::vector<uint32_t> decode_utf8(const std::string& s) {
     return out;
 }
 
+// POV-Ray's BOUND_HUGE and CRITICAL_LENGTH: the infinite box and the longest side a CSG
+// box may have before it counts as infinite.
+constexpr double kBoundHuge = 2e10, kCriticalLength = 1e6;
+
+Csg::PovBox infinite_pov_box() {
+    Csg::PovBox b;
+    for (int a = 0; a < 3; ++a) {
+        b.lo[a] = float(-kBoundHuge / 2);
+        b.len[a] = float(kBoundHuge);
+    }
+    return b;
+}
+
+// Make_BBox_from_min_max: the corner and the lengths (in double) rounded to float.
+Csg::PovBox pov_box(const double (&lo)[3], const double (&hi)[3]) {
+    Csg::PovBox b;
+    for (int a = 0; a < 3; ++a) {
+        b.lo[a] = float(lo[a]);
+        b.len[a] = float(hi[a] - lo[a]);
+    }
+    return b;
+}
+
+// Recompute_BBox with the corners mapped by `place`.
+template <class Place>
+void move_box_corners(Csg::PovBox& box, const Place& place) {
+    double lo[3] = {INFINITY, INFINITY, INFINITY},
+           hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < 8; ++i) {
+        Point3 c;
+        for (int a = 0; a < 3; ++a)
+            c[a] = double(box.lo[a]) + ((i >> a) & 1 ? double(box.len[a]) : 0.0);
+        const Point3 p = place(c);
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], p[a]);
+            hi[a] = std::max(hi[a], p[a]);
+        }
+    }
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::max(lo[a], -kBoundHuge / 2);
+        hi[a] = std::min(hi[a], kBoundHuge / 2);
+    }
+    box = pov_box(lo, hi);
+}
+
+// The text's box as Parse_TrueType leaves it before the 0.001-degree turn: each glyph's
+// header box (TTF_Tolerance around z) through its translation, joined as
+// CSG::Compute_BBox joins a union's children; no glyph leaves the constructor's infinite
+// box.
+Csg::PovBox laid_out_text_box(const Csg& text) {
+    constexpr double kTolerance = 1e-6;
+    double lo[3] = {kBoundHuge, kBoundHuge, kBoundHuge};
+    double hi[3] = {-kBoundHuge, -kBoundHuge, -kBoundHuge};
+    for (const Object& child : text.children) {
+        const Glyph& g = std::get<Glyph>(child.shape);
+        const GlyphOutline& o = *g.outline;
+        const double zmin = -kTolerance, zmax = g.depth + kTolerance;
+        const double glo[3] = {o.xmin, o.ymin, zmin}, ghi[3] = {o.xmax, o.ymax, zmax};
+        Csg::PovBox box = pov_box(glo, ghi);
+        move_box_corners(box, [&](const Point3& p) { return child.transform.point(p); });
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], double(box.lo[a]));
+            hi[a] = std::max(hi[a], double(box.lo[a]) + double(box.len[a]));
+        }
+    }
+    if (lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2]) return infinite_pov_box();
+    const Csg::PovBox box = pov_box(lo, hi);
+    for (int a = 0; a < 3; ++a)
+        if (box.len[a] > kCriticalLength) return infinite_pov_box();
+    return box;
+}
+
 }  // namespace
+
+void move_pov_box(Csg::PovBox& box, const Transform& t) {
+    move_box_corners(box, [&](const Point3& p) { return t.point(p); });
+}
+
+Vector3 Interpreter::object_extent(const Token& at, const Object& o, bool max) {
+    const Csg* csg = std::get_if<Csg>(&o.shape);
+    // Other objects' boxes, and a box bounded_by, clipped_by or inverse change, need
+    // trace/pov_bounds at parse time.
+    if (!csg || !csg->text_box || o.inverse || !o.clipped_by->empty() ||
+        !o.bounded_by->empty())
+        unsupported(at, max ? "max_extent" : "min_extent");
+    const Csg::PovBox& b = *csg->text_box;
+    Vector3 v;
+    for (int a = 0; a < 3; ++a) v[a] = max ? double(b.lo[a] + b.len[a]) : double(b.lo[a]);
+    return v;
+}
 
 std::string Interpreter::resolve_font(const std::string& name, int from_file,
                                       std::string& searched) const {
@@ -222,6 +312,7 @@ void Interpreter::parse_text(Object& out) {
     } catch (const FontError& e) {
         error(string_at, std::string("cannot read TrueType font: ") + e.what());
     }
+    text.text_box = laid_out_text_box(text);
     out.shape = std::move(text);
     // POV-Ray turns every text a little "to fix cracks in text that lies along an axis",
     // before any modifier.

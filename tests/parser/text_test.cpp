@@ -273,5 +273,25 @@ TEST(Text, Errors) {
     std::filesystem::remove(bad);
 }
 
+// The parser knows POV-Ray's box of text objects only (tests/lang/text_extents.pov
+// checks the values).
+TEST(Text, ExtentsOfOtherObjectsAreUnsupported) {
+    EXPECT_EQ(error_of("#declare B = sphere { 0, 1 }\nsphere { min_extent(B), 1 }"),
+              "test.pov:2:10: error: unsupported: min_extent\n"
+              "sphere { min_extent(B), 1 }\n"
+              "         ^~~~~~~~~~");
+    EXPECT_EQ(
+        error_of(
+            "#declare T = text { internal 1 \"a\" 1, 0 clipped_by { plane { y, 0 } } }\n"
+            "sphere { max_extent(T), 1 }"),
+        "test.pov:2:10: error: unsupported: max_extent\n"
+        "sphere { max_extent(T), 1 }\n"
+        "         ^~~~~~~~~~");
+    EXPECT_EQ(error_of("sphere { max_extent(3), 1 }"),
+              "test.pov:1:21: error: expected an object identifier but found '3'\n"
+              "sphere { max_extent(3), 1 }\n"
+              "                    ^");
+}
+
 }  // namespace
 }  // namespace povwall::parser
