@@ -78,8 +78,8 @@ TEST(Cli, ParseReportsContentsUnsupportedAndErrors) {
     EXPECT_EQ(j["shapes"]["cone"], 1);
     EXPECT_EQ(j["lights"], 1);
     EXPECT_DOUBLE_EQ(j["language_version"].get<double>(), 3.7);
-    fs::path unsupported = write_scene(
-        "parse_rainbow.pov", "sphere { 0, 1 }\n  rainbow { angle 42 }\n");
+    fs::path unsupported =
+        write_scene("parse_rainbow.pov", "sphere { 0, 1 }\n  rainbow { angle 42 }\n");
     r = run("parse " + unsupported.string() + " --json");
     EXPECT_EQ(r.code, 3);
     j = nlohmann::json::parse(r.out);
