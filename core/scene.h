@@ -354,8 +354,25 @@ struct JuliaFractal {
     int max_iteration = 20;
     std::array<Real, 4> slice{0, 0, 0, 1};  // unit
     Real slice_distance = 0;
-    Real precision = 1.0 / 20;  // the marching step: 1 / `precision`
+    Real precision = 1.0 / 20;          // the marching step: 1 / `precision`
     Real radius2 = 4, exit_value = 16;  // bounding sphere and escape value (set up)
+};
+
+// One character of a `text` object: a TrueType outline in em units (x right, y up,
+// baseline y = 0) extruded from z = 0 to z = depth. The parser builds the outline as
+// POV-Ray reads it (parser/truetype_font.h); glyphs of one font share it.
+struct GlyphSegment {
+    Real x[3], y[3];  // start, control, end (a line: start x[0] and end x[1])
+    bool curve;
+};
+struct GlyphOutline {
+    std::vector<GlyphSegment> segments;  // every contour's, in file order
+    // POV-Ray's box of the glyph in em units: the header's, widened by the points.
+    Real xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+};
+struct Glyph {
+    std::shared_ptr<const GlyphOutline> outline;
+    Real depth = 1;
 };
 
 struct Object;
@@ -367,11 +384,18 @@ struct Csg {
     // Light sources written inside the CSG move with it; the parser moves them to
     // Scene::lights when the object is placed in the scene.
     std::vector<Light> lights;
+    // A text object's box as POV-Ray keeps it (lower-left corner and lengths in single
+    // precision): the glyphs' boxes joined once after layout, then moved as a box by
+    // every transform, never rebuilt from the glyphs. min_extent/max_extent read it.
+    struct PovBox {
+        float lo[3], len[3];
+    };
+    std::optional<PovBox> text_box;
 };
 
 using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
                                SmoothTriangle, Polygon, Mesh, Prism, BicubicPatch,
-                               JuliaFractal, Csg>;
+                               JuliaFractal, Glyph, Csg>;
 
 struct Object {
     ShapeData shape;

@@ -533,6 +533,15 @@ Value ExpressionParser::word(const Token& t) {
         in_.expect_punct(')');
         return Numeric::scalar(length(v));
     }
+    if (w == "min_extent" || w == "max_extent") {
+        in_.expect_punct('(');
+        Token id = in_.next();
+        const Value* v = id.kind == TokenKind::Word ? in_.lookup(id) : nullptr;
+        auto object = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr;
+        if (!object) in_.expected("an object identifier", id);
+        in_.expect_punct(')');
+        return Numeric::vector(in_.object_extent(t, **object, w == "max_extent"));
+    }
     if (w == "vnormalize") {
         in_.expect_punct('(');
         Vector3 v = arg_vector();

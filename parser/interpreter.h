@@ -15,6 +15,12 @@
 
 namespace povwall::parser {
 
+class TrueTypeFont;
+
+// POV-Ray's Recompute_BBox: the box's corners through `t`, their bounding box clipped at
+// +-1e10 and kept in single precision.
+void move_pov_box(Csg::PovBox& box, const Transform& t);
+
 // Limits that turn runaway scenes into located errors instead of exhausted memory or a
 // hang.
 constexpr int kMaxIncludeDepth =
@@ -265,6 +271,23 @@ class Interpreter {
     Binding* find_binding(uint32_t sym, int* scope_index = nullptr);
     void parse_top_level_item(const Token& t);
     std::string resolve_include(const std::string& name, int from_file) const;
+    // ---- text (shape_text.cpp)
+    void parse_text(Object& out);
+    // The font file POV-Ray would open for `name` ("" if none); `searched` lists the
+    // folders tried.
+    std::string resolve_font(const std::string& name, int from_file,
+                             std::string& searched) const;
+    std::shared_ptr<TrueTypeFont> load_font(const Token& at, const std::string& path,
+                                            const std::string& shown);
+    std::vector<uint16_t> text_codes(const Token& at, const std::string& s);
+    // min_extent / max_extent of an object identifier (`at` names it): POV-Ray's box,
+    // which the parser knows for text objects only.
+    Vector3 object_extent(const Token& at, const Object& o, bool max);
+    // global_settings { charset }: how string bytes become character codes.
+    enum class Charset : uint8_t { Ascii, Utf8, Sys } charset_ = Charset::Ascii;
+    // Fonts by the name written in the scene, as POV-Ray keeps them: the cmap choice and
+    // the glyphs loaded stay with the first use.
+    std::unordered_map<std::string, std::shared_ptr<TrueTypeFont>> fonts_;
     void finish_object(Object& obj);  // POV-Ray's post-processing of a placed object
     void place_object(Object& obj, const Object* parent,
                       std::unordered_map<uint32_t, Interior>& shared);

@@ -11,10 +11,9 @@ namespace {
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "text",          "lathe",      "sor",         "blob",          "superellipsoid",
-        "quadric",       "quartic",    "poly",        "cubic",         "height_field",
-        "bicubic_patch", "isosurface", "parametric",  "julia_fractal", "sphere_sweep",
-        "ovus",          "lemon",      "light_group", "polynomial"};
+        "lathe", "sor",   "blob",         "superellipsoid", "quadric",    "quartic",
+        "poly",  "cubic", "height_field", "isosurface",     "parametric", "sphere_sweep",
+        "ovus",  "lemon", "light_group",  "polynomial"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -80,6 +79,7 @@ void Interpreter::apply_transform(Object& obj, const Transform& t) {
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
         for (Object& child : csg->children) apply_transform(child, t);
         for (Light& l : csg->lights) transform_light(l, t);
+        if (csg->text_box) move_pov_box(*csg->text_box, t);
     }
     if (auto mesh = std::get_if<Mesh>(&obj.shape)) {  // per-face textures move too
         for (LayeredTexture& tex : mesh->textures) transform_textures(tex, t);
@@ -453,6 +453,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 error(t, "degenerate cone, base point = cap point");
             out.shape = c;
         }
+    } else if (w == "text") {
+        open();
+        if (!copy_identifier()) parse_text(out);
     } else if (w == "torus") {
         open();
         if (!copy_identifier()) {

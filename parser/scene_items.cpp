@@ -435,7 +435,15 @@ void Interpreter::parse_global_settings() {
         } else if (w == "irid_wavelength") {
             g.irid_wavelength = parse_colour_value().rgb;
         } else if (w == "charset") {
-            next();
+            Token c = next();
+            if (is_word(c, "ascii"))
+                charset_ = Charset::Ascii;
+            else if (is_word(c, "utf8"))
+                charset_ = Charset::Utf8;
+            else if (is_word(c, "sys"))
+                charset_ = Charset::Sys;
+            else
+                expected("ascii, utf8 or sys", c);
         } else if (w == "hf_gray_16") {
             parse_bool_opt();
         } else if (w == "radiosity" || w == "photons" || w == "subsurface" ||
@@ -938,13 +946,13 @@ Value Interpreter::parse_item_value(const Token& t) {
             return a;
         }
         static constexpr std::string_view kUnsupportedItems[] = {
-            "media",          "density",      "rainbow",     "photons",
-            "radiosity",      "max_extent",   "min_extent",  "pigment_map",
-            "normal_map",     "texture_map",  "density_map", "slope_map",
-            "material_map",   "text",         "lathe",       "sor",
-            "blob",           "isosurface",   "parametric",  "height_field",
-            "superellipsoid", "quadric",      "quartic",     "poly",
-            "cubic",          "sphere_sweep", "ovus",        "lemon"};
+            "media",        "density",        "rainbow",      "photons",
+            "radiosity",    "pigment_map",    "normal_map",   "texture_map",
+            "density_map",  "slope_map",      "material_map", "lathe",
+            "sor",          "blob",           "isosurface",   "parametric",
+            "height_field", "superellipsoid", "quadric",      "quartic",
+            "poly",         "cubic",          "sphere_sweep", "ovus",
+            "lemon"};
         for (std::string_view item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }

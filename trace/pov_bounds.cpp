@@ -205,6 +205,14 @@ PovBBox shape_bbox(const Object& o) {
 
 PovBBox csg_bbox(const Object& o, const Csg& csg) {
     if (o.inverse) return kInfiniteBox;
+    if (csg.text_box) {  // a text keeps the box it was laid out with, moved
+        PovBBox b;
+        for (int a = 0; a < 3; ++a) {
+            b.lo[a] = csg.text_box->lo[a];
+            b.len[a] = csg.text_box->len[a];
+        }
+        return b;
+    }
     Bounds3 b;
     if (csg.kind == CsgKind::Intersection || csg.kind == CsgKind::Difference) {
         // The children's boxes intersected, inverted children (every child of a

@@ -78,13 +78,13 @@ TEST(Cli, ParseReportsContentsUnsupportedAndErrors) {
     EXPECT_EQ(j["shapes"]["cone"], 1);
     EXPECT_EQ(j["lights"], 1);
     EXPECT_DOUBLE_EQ(j["language_version"].get<double>(), 3.7);
-    fs::path unsupported = write_scene(
-        "parse_text.pov", "sphere { 0, 1 }\n  text { ttf \"a.ttf\" \"x\" 1, 0 }\n");
+    fs::path unsupported =
+        write_scene("parse_rainbow.pov", "sphere { 0, 1 }\n  rainbow { angle 42 }\n");
     r = run("parse " + unsupported.string() + " --json");
     EXPECT_EQ(r.code, 3);
     j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["status"], "unsupported");
-    EXPECT_EQ(j["message"], "unsupported: text");
+    EXPECT_EQ(j["message"], "unsupported: rainbow");
     EXPECT_EQ(j["line"], 2);
     EXPECT_EQ(j["column"], 3);
     fs::path bad = write_scene("parse_bad.pov", "sphere { 0, 1 ");

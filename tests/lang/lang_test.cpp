@@ -51,7 +51,8 @@ TEST_P(LangFixture, DebugOutputMatchesPovRay) {
 
 INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
                          ::testing::Values("expressions", "directives", "colours",
-                                           "splines", "functions", "fileio", "keywords"));
+                                           "splines", "functions", "fileio", "keywords",
+                                           "text_extents"));
 
 }  // namespace
 }  // namespace povwall::parser

@@ -436,11 +436,11 @@ TEST(Errors, MacroArgumentsRunningPastTheirBodysEndAreALocatedError) {
 
 TEST(Errors, UnsupportedFeatureIsNamed) {
     try {
-        parse("text { ttf \"a.ttf\" \"x\" 1, 0 }");
+        parse("rainbow { angle 42 }");
         FAIL();
     } catch (const ParseError& e) {
         EXPECT_EQ(e.kind(), ParseError::Kind::Unsupported);
-        EXPECT_EQ(e.message(), "unsupported: text");
+        EXPECT_EQ(e.message(), "unsupported: rainbow");
     }
 }
 

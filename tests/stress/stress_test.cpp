@@ -43,6 +43,7 @@ const StressCase kCases[] = {
     {"slivers", {"triangle"}, 1e-12},
     {"prisms_edge_on", {"prism"}, 1e-12},
     {"patches_degenerate", {"bicubic_patch"}, 1e-12},
+    {"text_extremes", {"glyph"}, 1e-11},
 };
 
 Scene load(const std::string& name) {

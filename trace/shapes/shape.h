@@ -20,6 +20,7 @@
 #include "trace/shapes/polygon.h"
 #include "trace/shapes/prism.h"
 #include "trace/shapes/sphere.h"
+#include "trace/shapes/text.h"
 #include "trace/shapes/torus.h"
 #include "trace/shapes/triangle.h"
 
