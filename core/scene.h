@@ -312,6 +312,12 @@ struct Mesh {
     HeapOptional<Vector3> inside_vector;  // only a mesh with one is solid
 };
 
+// superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1 in the unit
+// cube. POV-Ray keeps only the exponents 2/e and 2/n.
+struct Superellipsoid {
+    Real east_west = 1, north_south = 1;  // e and n as written
+};
+
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
@@ -324,7 +330,7 @@ struct Csg {
 };
 
 using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                               SmoothTriangle, Polygon, Mesh, Csg>;
+                               SmoothTriangle, Polygon, Mesh, Superellipsoid, Csg>;
 
 struct Object {
     ShapeData shape;

@@ -181,6 +181,8 @@ class Interpreter {
     Fog parse_fog();
     void parse_mesh(Object& out);
     void parse_mesh2(Object& out);
+    // The body of each shape after its '{' (parser/shape_<name>.cpp).
+    void parse_superellipsoid(Object& out);
     int parse_count();
     template <class T>
     void reserve_list(std::vector<T>& list, int count);

@@ -11,10 +11,10 @@ namespace {
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "text",           "lathe",         "sor",        "prism",       "blob",
-        "superellipsoid", "quadric",       "quartic",    "poly",        "cubic",
-        "height_field",   "bicubic_patch", "isosurface", "parametric",  "julia_fractal",
-        "sphere_sweep",   "ovus",          "lemon",      "light_group", "polynomial"};
+        "text",          "lathe",      "sor",         "prism",         "blob",
+        "quadric",       "quartic",    "poly",        "cubic",         "height_field",
+        "bicubic_patch", "isosurface", "parametric",  "julia_fractal", "sphere_sweep",
+        "ovus",          "lemon",      "light_group", "polynomial"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -444,6 +444,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             tor.minor = parse_float();
             out.shape = tor;
         }
+    } else if (w == "superellipsoid") {
+        open();
+        if (!copy_identifier()) parse_superellipsoid(out);
     } else if (w == "disc") {
         open();
         if (!copy_identifier()) {
