@@ -318,6 +318,18 @@ struct Superellipsoid {
     Real east_west = 1, north_south = 1;  // e and n as written
 };
 
+// ovus { B, T }: a sphere of radius B at the origin and one of radius T at (0, B, 0),
+// joined by a band of a spindle torus about y whose profile circle (radius Rc, centre
+// Hp across the axis, at height Vp) touches both spheres. Built by make_ovus.
+struct Ovus {
+    Real bottom_radius = 1, top_radius = 0.5;
+    Real band_radius = 0, band_offset = 0, band_height = 0;  // Rc, Hp, Vp
+    Real band_bottom = 0, band_top = 0;  // the band lies strictly between these heights
+    bool sturm = false;
+};
+// The band of an ovus, computed as POV-Ray's parser does (0 <= top < 2 bottom).
+Ovus make_ovus(Real bottom_radius, Real top_radius);
+
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
@@ -330,7 +342,7 @@ struct Csg {
 };
 
 using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                               SmoothTriangle, Polygon, Mesh, Superellipsoid, Csg>;
+                               SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Csg>;
 
 struct Object {
     ShapeData shape;

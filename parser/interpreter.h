@@ -183,6 +183,7 @@ class Interpreter {
     void parse_mesh2(Object& out);
     // The body of each shape after its '{' (parser/shape_<name>.cpp).
     void parse_superellipsoid(Object& out);
+    void parse_ovus(const Token& keyword, Object& out);
     int parse_count();
     template <class T>
     void reserve_list(std::vector<T>& list, int count);

@@ -272,9 +272,11 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
     } else if (w == "double_illuminate") {
         obj.double_illuminate = true;
     } else if (w == "sturm") {
-        auto torus = std::get_if<Torus>(&obj.shape);
-        if (!torus) error(t, "'sturm' cannot be used with this object");
-        torus->sturm = parse_bool_opt();
+        bool* sturm = nullptr;
+        if (auto torus = std::get_if<Torus>(&obj.shape)) sturm = &torus->sturm;
+        if (auto ovus = std::get_if<Ovus>(&obj.shape)) sturm = &ovus->sturm;
+        if (!sturm) error(t, "'sturm' cannot be used with this object");
+        *sturm = parse_bool_opt();
     } else if (w == "open") {
         auto cyl = std::get_if<Cylinder>(&obj.shape);
         auto cone = std::get_if<Cone>(&obj.shape);
@@ -447,6 +449,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "superellipsoid") {
         open();
         if (!copy_identifier()) parse_superellipsoid(out);
+    } else if (w == "ovus") {
+        open();
+        if (!copy_identifier()) parse_ovus(t, out);
     } else if (w == "disc") {
         open();
         if (!copy_identifier()) {

@@ -110,7 +110,7 @@ std::string shape_kind_name(const Object& leaf) {
     static const char* names[] = {
         "sphere", "box",      "plane",           "cylinder", "cone", "torus",
         "disc",   "triangle", "smooth_triangle", "polygon",  "mesh", "superellipsoid",
-        "csg"};
+        "ovus",   "csg"};
     static_assert(std::variant_size_v<ShapeData> == std::size(names),
                   "one name per shape alternative");
     return names[leaf.shape.index()];

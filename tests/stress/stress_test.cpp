@@ -44,6 +44,10 @@ const StressCase kCases[] = {
     // POV-Ray's search stops where |F| < 1e-10 (or after 20 secant/bisection steps):
     // near the sharp edges of exponent-100 shapes its distances are ~2e-9 off.
     {"superellipsoids_stiff", {"superellipsoid"}, 1e-8},
+    // The band's roots come from POV-Ray's closed-form quartic, unpolished as there:
+    // near grazing it is ~2e-6 off (the same pixels as POV-Ray's, checked with
+    // `povwall check-numerics --povray`), 2e-11 on this 32x24 grid.
+    {"ovus_stiff", {"ovus"}, 1e-10},
 };
 
 Scene load(const std::string& name) {

@@ -14,6 +14,7 @@
 #include "trace/shapes/cylinder_cone.h"
 #include "trace/shapes/disc.h"
 #include "trace/shapes/mesh.h"
+#include "trace/shapes/ovus.h"
 #include "trace/shapes/plane.h"
 #include "trace/shapes/polygon.h"
 #include "trace/shapes/sphere.h"

@@ -180,7 +180,9 @@ void intersect_superellipsoid(const Superellipsoid& s, const Point3& o, const Ve
         const Real t = -(o.x * c[0] + o.y * c[1] + o.z * c[2]) / den;
         if (t >= t1 - slack && t <= t2 + slack) dists[n++] = t;
     }
-    std::sort(dists, dists + n);
+    for (int i = 1; i < n; ++i)  // at most 11: insertion sort
+        for (int j = i; j > 0 && dists[j] < dists[j - 1]; --j)
+            std::swap(dists[j], dists[j - 1]);
     const Exponents e = exponents(s);
     const size_t first = out.size();
     // POV-Ray's insert_hit: world depth in (1e-4, 1e7); the clip test is the tracer's.
