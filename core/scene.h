@@ -330,6 +330,44 @@ struct Ovus {
 // The band of an ovus, computed as POV-Ray's parser does (0 <= top < 2 bottom).
 Ovus make_ovus(Real bottom_radius, Real top_radius);
 
+// A profile point of a lathe or sor: x is the radius, y the height.
+struct ProfilePoint {
+    Real x = 0, y = 0;
+};
+
+// POV-Ray's bounding cylinders of a lathe's or sor's segments (its BCyl): the distinct
+// squared radii and heights, and per segment the indices of its inner and outer radius
+// and of its bottom and top height. Built by make_bounding_cylinders.
+struct BoundingCylinders {
+    std::vector<Real> radii2, heights;
+    struct Segment {
+        uint32_t r1, r2, h1, h2;
+    };
+    std::vector<Segment> segments;
+};
+BoundingCylinders make_bounding_cylinders(const std::vector<Real>& r1,
+                                          const std::vector<Real>& r2,
+                                          const std::vector<Real>& h1,
+                                          const std::vector<Real>& h2);
+
+// sor { N, <r, h>... }: per segment, r^2 as a cubic in height.
+struct SorSpline {
+    struct Segment {
+        Real a, b, c, d;  // r^2 = a h^3 + b h^2 + c h + d
+    };
+    std::vector<Segment> segments;
+    BoundingCylinders cylinders;
+    Real radius1 = 0, radius2 = 0, height1 = 0, height2 = 0;  // overall bounds
+    Real base_radius2 = 0, cap_radius2 = 0;                   // the end caps
+};
+struct Sor {
+    std::shared_ptr<const SorSpline> spline;  // shared by copies, as in POV-Ray
+    bool open = false, sturm = false;
+};
+// The spline through `points` as POV-Ray's Compute_Sor builds it, or POV-Ray's error
+// message (a segment without height, a singular interpolation matrix).
+std::string make_sor_spline(const std::vector<ProfilePoint>& points, SorSpline& out);
+
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
@@ -341,8 +379,9 @@ struct Csg {
     std::vector<Light> lights;
 };
 
-using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                               SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Csg>;
+using ShapeData =
+    std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
+                 SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor, Csg>;
 
 struct Object {
     ShapeData shape;

@@ -184,6 +184,9 @@ class Interpreter {
     // The body of each shape after its '{' (parser/shape_<name>.cpp).
     void parse_superellipsoid(Object& out);
     void parse_ovus(const Token& keyword, Object& out);
+    void parse_sor(const Token& keyword, Object& out);
+    // POV-Ray's UV vector: a float stands for both; 3 or more components are an error.
+    ProfilePoint parse_uv_vector();
     int parse_count();
     template <class T>
     void reserve_list(std::vector<T>& list, int count);

@@ -275,6 +275,7 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         bool* sturm = nullptr;
         if (auto torus = std::get_if<Torus>(&obj.shape)) sturm = &torus->sturm;
         if (auto ovus = std::get_if<Ovus>(&obj.shape)) sturm = &ovus->sturm;
+        if (auto sor = std::get_if<Sor>(&obj.shape)) sturm = &sor->sturm;
         if (!sturm) error(t, "'sturm' cannot be used with this object");
         *sturm = parse_bool_opt();
     } else if (w == "open") {
@@ -452,6 +453,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "ovus") {
         open();
         if (!copy_identifier()) parse_ovus(t, out);
+    } else if (w == "sor") {
+        open();
+        if (!copy_identifier()) parse_sor(t, out);
     } else if (w == "disc") {
         open();
         if (!copy_identifier()) {

@@ -4,15 +4,10 @@
 namespace povwall::parser {
 
 void Interpreter::parse_superellipsoid(Object& out) {
-    // POV-Ray reads a UV vector: a float stands for both; e, n <= 0 are not checked.
+    // e, n <= 0 are not checked, as in POV-Ray.
     require_operand("the superellipsoid's exponents");
-    Token at = peek();
-    Numeric v = parse_express();
-    if (v.size > 2) error(at, "UV_Vector expected but vector or color expression found");
-    Superellipsoid s;
-    s.east_west = v.c[0];
-    s.north_south = v.size == 1 ? v.c[0] : v.c[1];
-    out.shape = s;
+    const ProfilePoint e = parse_uv_vector();
+    out.shape = Superellipsoid{e.x, e.y};
 }
 
 }  // namespace povwall::parser

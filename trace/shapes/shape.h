@@ -17,6 +17,7 @@
 #include "trace/shapes/ovus.h"
 #include "trace/shapes/plane.h"
 #include "trace/shapes/polygon.h"
+#include "trace/shapes/sor.h"
 #include "trace/shapes/sphere.h"
 #include "trace/shapes/superellipsoid.h"
 #include "trace/shapes/torus.h"
