@@ -368,6 +368,28 @@ struct Sor {
 // message (a segment without height, a singular interpolation matrix).
 std::string make_sor_spline(const std::vector<ProfilePoint>& points, SorSpline& out);
 
+// lathe { SPLINE N, <r, h>... }: per segment, the radius and the height as cubics in a
+// parameter t in [0, 1].
+enum class LatheSplineKind : uint8_t { Linear, Quadratic, Cubic, Bezier };
+struct LatheSpline {
+    struct Segment {
+        Real ar, br, cr, dr;  // r(t) = ((ar t + br) t + cr) t + dr
+        Real aw, bw, cw, dw;  // the height w(t) likewise
+    };
+    LatheSplineKind kind = LatheSplineKind::Linear;
+    std::vector<Segment> segments;
+    BoundingCylinders cylinders;
+    Real radius1 = 0, radius2 = 0, height1 = 0, height2 = 0;  // overall bounds (signed r)
+};
+struct Lathe {
+    std::shared_ptr<const LatheSpline> spline;  // shared by copies, as in POV-Ray
+    bool sturm = false;
+};
+// The spline through `points` as POV-Ray's Compute_Lathe builds it (the point count
+// suits the kind: the parser checks it).
+LatheSpline make_lathe_spline(LatheSplineKind kind,
+                              const std::vector<ProfilePoint>& points);
+
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
@@ -381,7 +403,7 @@ struct Csg {
 
 using ShapeData =
     std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                 SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor, Csg>;
+                 SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor, Lathe, Csg>;
 
 struct Object {
     ShapeData shape;

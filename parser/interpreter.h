@@ -185,6 +185,7 @@ class Interpreter {
     void parse_superellipsoid(Object& out);
     void parse_ovus(const Token& keyword, Object& out);
     void parse_sor(const Token& keyword, Object& out);
+    void parse_lathe(Object& out);
     // POV-Ray's UV vector: a float stands for both; 3 or more components are an error.
     ProfilePoint parse_uv_vector();
     int parse_count();

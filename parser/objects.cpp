@@ -11,10 +11,10 @@ namespace {
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "text",          "lathe",      "sor",         "prism",         "blob",
-        "quadric",       "quartic",    "poly",        "cubic",         "height_field",
-        "bicubic_patch", "isosurface", "parametric",  "julia_fractal", "sphere_sweep",
-        "ovus",          "lemon",      "light_group", "polynomial"};
+        "text",          "prism",      "blob",        "quadric",
+        "quartic",       "poly",       "cubic",       "height_field",
+        "bicubic_patch", "isosurface", "parametric",  "julia_fractal",
+        "sphere_sweep",  "lemon",      "light_group", "polynomial"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -276,6 +276,7 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (auto torus = std::get_if<Torus>(&obj.shape)) sturm = &torus->sturm;
         if (auto ovus = std::get_if<Ovus>(&obj.shape)) sturm = &ovus->sturm;
         if (auto sor = std::get_if<Sor>(&obj.shape)) sturm = &sor->sturm;
+        if (auto lathe = std::get_if<Lathe>(&obj.shape)) sturm = &lathe->sturm;
         if (!sturm) error(t, "'sturm' cannot be used with this object");
         *sturm = parse_bool_opt();
     } else if (w == "open") {
@@ -456,6 +457,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "sor") {
         open();
         if (!copy_identifier()) parse_sor(t, out);
+    } else if (w == "lathe") {
+        open();
+        if (!copy_identifier()) parse_lathe(out);
     } else if (w == "disc") {
         open();
         if (!copy_identifier()) {

@@ -938,13 +938,13 @@ Value Interpreter::parse_item_value(const Token& t) {
             return a;
         }
         static constexpr std::string_view kUnsupportedItems[] = {
-            "media",        "density",       "rainbow",      "photons",
-            "radiosity",    "max_extent",    "min_extent",   "pigment_map",
-            "normal_map",   "texture_map",   "density_map",  "slope_map",
-            "material_map", "text",          "lathe",        "prism",
-            "blob",         "isosurface",    "parametric",   "julia_fractal",
-            "height_field", "bicubic_patch", "quadric",      "quartic",
-            "poly",         "cubic",         "sphere_sweep", "lemon"};
+            "media",         "density",      "rainbow",       "photons",
+            "radiosity",     "max_extent",   "min_extent",    "pigment_map",
+            "normal_map",    "texture_map",  "density_map",   "slope_map",
+            "material_map",  "text",         "prism",         "blob",
+            "isosurface",    "parametric",   "julia_fractal", "height_field",
+            "bicubic_patch", "quadric",      "quartic",       "poly",
+            "cubic",         "sphere_sweep", "lemon"};
         for (std::string_view item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }

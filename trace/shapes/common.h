@@ -59,9 +59,10 @@ struct LocalRay {
 
 // One crossing of a leaf shape's surface.
 struct ShapeHit {
-    Real t;    // world distance along the ray
-    Point3 p;  // the point in the shape's space, computed in the shape's arithmetic
-    int face;  // which surface part (for the normal)
+    Real t;          // world distance along the ray
+    Point3 p;        // the point in the shape's space, computed in the shape's arithmetic
+    int face;        // which surface part (for the normal)
+    Real param = 0;  // a shape's own surface parameter there (a lathe's spline t)
 };
 using ShapeHits = std::vector<ShapeHit>;
 

@@ -13,6 +13,7 @@
 #include "trace/shapes/common.h"
 #include "trace/shapes/cylinder_cone.h"
 #include "trace/shapes/disc.h"
+#include "trace/shapes/lathe.h"
 #include "trace/shapes/mesh.h"
 #include "trace/shapes/ovus.h"
 #include "trace/shapes/plane.h"
