@@ -374,6 +374,83 @@ struct Glyph {
     std::shared_ptr<const GlyphOutline> outline;
     Real depth = 1;
 };
+// superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1 in the unit
+// cube. POV-Ray keeps only the exponents 2/e and 2/n.
+struct Superellipsoid {
+    Real east_west = 1, north_south = 1;  // e and n as written
+};
+
+// ovus { B, T }: a sphere of radius B at the origin and one of radius T at (0, B, 0),
+// joined by a band of a spindle torus about y whose profile circle (radius Rc, centre
+// Hp across the axis, at height Vp) touches both spheres. Built by make_ovus.
+struct Ovus {
+    Real bottom_radius = 1, top_radius = 0.5;
+    Real band_radius = 0, band_offset = 0, band_height = 0;  // Rc, Hp, Vp
+    Real band_bottom = 0, band_top = 0;  // the band lies strictly between these heights
+    bool sturm = false;
+};
+// The band of an ovus, computed as POV-Ray's parser does (0 <= top < 2 bottom).
+Ovus make_ovus(Real bottom_radius, Real top_radius);
+
+// A profile point of a lathe or sor: x is the radius, y the height.
+struct ProfilePoint {
+    Real x = 0, y = 0;
+};
+
+// POV-Ray's bounding cylinders of a lathe's or sor's segments (its BCyl): the distinct
+// squared radii and heights, and per segment the indices of its inner and outer radius
+// and of its bottom and top height. Built by make_bounding_cylinders.
+struct BoundingCylinders {
+    std::vector<Real> radii2, heights;
+    struct Segment {
+        uint32_t r1, r2, h1, h2;
+    };
+    std::vector<Segment> segments;
+};
+BoundingCylinders make_bounding_cylinders(const std::vector<Real>& r1,
+                                          const std::vector<Real>& r2,
+                                          const std::vector<Real>& h1,
+                                          const std::vector<Real>& h2);
+
+// sor { N, <r, h>... }: per segment, r^2 as a cubic in height.
+struct SorSpline {
+    struct Segment {
+        Real a, b, c, d;  // r^2 = a h^3 + b h^2 + c h + d
+    };
+    std::vector<Segment> segments;
+    BoundingCylinders cylinders;
+    Real radius1 = 0, radius2 = 0, height1 = 0, height2 = 0;  // overall bounds
+    Real base_radius2 = 0, cap_radius2 = 0;                   // the end caps
+};
+struct Sor {
+    std::shared_ptr<const SorSpline> spline;  // shared by copies, as in POV-Ray
+    bool open = false, sturm = false;
+};
+// The spline through `points` as POV-Ray's Compute_Sor builds it, or POV-Ray's error
+// message (a segment without height, a singular interpolation matrix).
+std::string make_sor_spline(const std::vector<ProfilePoint>& points, SorSpline& out);
+
+// lathe { SPLINE N, <r, h>... }: per segment, the radius and the height as cubics in a
+// parameter t in [0, 1].
+enum class LatheSplineKind : uint8_t { Linear, Quadratic, Cubic, Bezier };
+struct LatheSpline {
+    struct Segment {
+        Real ar, br, cr, dr;  // r(t) = ((ar t + br) t + cr) t + dr
+        Real aw, bw, cw, dw;  // the height w(t) likewise
+    };
+    LatheSplineKind kind = LatheSplineKind::Linear;
+    std::vector<Segment> segments;
+    BoundingCylinders cylinders;
+    Real radius1 = 0, radius2 = 0, height1 = 0, height2 = 0;  // overall bounds (signed r)
+};
+struct Lathe {
+    std::shared_ptr<const LatheSpline> spline;  // shared by copies, as in POV-Ray
+    bool sturm = false;
+};
+// The spline through `points` as POV-Ray's Compute_Lathe builds it (the point count
+// suits the kind: the parser checks it).
+LatheSpline make_lathe_spline(LatheSplineKind kind,
+                              const std::vector<ProfilePoint>& points);
 
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
@@ -394,8 +471,8 @@ struct Csg {
 };
 
 using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                               SmoothTriangle, Polygon, Mesh, Prism, BicubicPatch,
-                               JuliaFractal, Glyph, Csg>;
+                               SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor,
+                               Lathe, Prism, BicubicPatch, JuliaFractal, Glyph, Csg>;
 
 struct Object {
     ShapeData shape;

@@ -735,6 +735,14 @@ double Interpreter::parse_condition() {
 
 Vector3 Interpreter::parse_vector() { return parse_numeric().vec3(); }
 
+ProfilePoint Interpreter::parse_uv_vector() {
+    const Token at = peek();
+    // POV-Ray's Parse_Rel_Factor: no comparisons, so `<0, 0> <1, 0>` is two points.
+    const Numeric v = parse_numeric();
+    if (v.size > 2) error(at, "UV_Vector expected but vector or color expression found");
+    return {v.c[0], v.size == 1 ? v.c[0] : v.c[1]};
+}
+
 std::string Interpreter::parse_string() {
     Token t = next();
     if (t.kind == TokenKind::String) return std::string(t.text);

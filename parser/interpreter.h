@@ -191,6 +191,13 @@ class Interpreter {
     void parse_prism(Object& out, const Token& keyword);
     void parse_bicubic_patch(Object& out, const Token& keyword);
     void parse_julia_fractal(Object& out, const Token& keyword);
+    // The body of each shape after its '{' (parser/shape_<name>.cpp).
+    void parse_superellipsoid(Object& out);
+    void parse_ovus(const Token& keyword, Object& out);
+    void parse_sor(const Token& keyword, Object& out);
+    void parse_lathe(Object& out);
+    // POV-Ray's UV vector: a float stands for both; 3 or more components are an error.
+    ProfilePoint parse_uv_vector();
     int parse_count();
     template <class T>
     void reserve_list(std::vector<T>& list, int count);

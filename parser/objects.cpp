@@ -11,9 +11,9 @@ namespace {
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "lathe", "sor",   "blob",         "superellipsoid", "quadric",    "quartic",
-        "poly",  "cubic", "height_field", "isosurface",     "parametric", "sphere_sweep",
-        "ovus",  "lemon", "light_group",  "polynomial"};
+        "blob",         "quadric",      "quartic",     "poly",
+        "cubic",        "height_field", "isosurface",  "parametric",
+        "sphere_sweep", "lemon",        "light_group", "polynomial"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -286,10 +286,14 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
     } else if (w == "double_illuminate") {
         obj.double_illuminate = true;
     } else if (w == "sturm") {
-        auto torus = std::get_if<Torus>(&obj.shape);
-        auto prism = std::get_if<Prism>(&obj.shape);
-        if (!torus && !prism) error(t, "'sturm' cannot be used with this object");
-        (torus ? torus->sturm : prism->sturm) = parse_bool_opt();
+        bool* sturm = nullptr;
+        if (auto torus = std::get_if<Torus>(&obj.shape)) sturm = &torus->sturm;
+        if (auto prism = std::get_if<Prism>(&obj.shape)) sturm = &prism->sturm;
+        if (auto ovus = std::get_if<Ovus>(&obj.shape)) sturm = &ovus->sturm;
+        if (auto sor = std::get_if<Sor>(&obj.shape)) sturm = &sor->sturm;
+        if (auto lathe = std::get_if<Lathe>(&obj.shape)) sturm = &lathe->sturm;
+        if (!sturm) error(t, "'sturm' cannot be used with this object");
+        *sturm = parse_bool_opt();
     } else if (w == "open") {
         auto cyl = std::get_if<Cylinder>(&obj.shape);
         auto cone = std::get_if<Cone>(&obj.shape);
@@ -465,6 +469,18 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             tor.minor = parse_float();
             out.shape = tor;
         }
+    } else if (w == "superellipsoid") {
+        open();
+        if (!copy_identifier()) parse_superellipsoid(out);
+    } else if (w == "ovus") {
+        open();
+        if (!copy_identifier()) parse_ovus(t, out);
+    } else if (w == "sor") {
+        open();
+        if (!copy_identifier()) parse_sor(t, out);
+    } else if (w == "lathe") {
+        open();
+        if (!copy_identifier()) parse_lathe(out);
     } else if (w == "disc") {
         open();
         if (!copy_identifier()) {

@@ -1,4 +1,4 @@
-// Sturm-sequence root isolation for polynomials of degree <= 4, generic over the scalar
+// Sturm-sequence root isolation for polynomials of degree <= 6, generic over the scalar
 // type: the tracer instantiates it with double, the numerics oracle with 50-digit binary
 // floats.
 //
@@ -17,7 +17,7 @@ namespace povwall::trace {
 template <class T>
 struct SturmPoly {
     int degree = -1;  // -1: the zero polynomial
-    T c[5];           // c[i]: coefficient of x^i
+    T c[7];           // c[i]: coefficient of x^i
 
     T operator()(const T& x) const {
         T v = 0;
@@ -64,7 +64,7 @@ class SturmSequence {
         seq_[1].degree = p.degree - 1;
         for (int i = 1; i <= p.degree; ++i) seq_[1].c[i - 1] = T(i) * p.c[i];
         n_ = 2;
-        while (n_ < 6 && seq_[n_ - 1].degree > 0) {
+        while (n_ < 8 && seq_[n_ - 1].degree > 0) {
             SturmPoly<T> r =
                 sturm_detail::negated_remainder(seq_[n_ - 2], seq_[n_ - 1], rel_eps);
             if (r.degree < 0) break;  // multiple roots: the last entry is the gcd
@@ -86,7 +86,7 @@ class SturmSequence {
     }
 
   private:
-    SturmPoly<T> seq_[6];
+    SturmPoly<T> seq_[8];
     int n_ = 0;
 };
 

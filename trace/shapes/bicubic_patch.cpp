@@ -64,8 +64,8 @@ void shape_hits(const BicubicPatch& p, const LocalRay& r, ShapeHits& out) {
 Vector3 shape_normal(const BicubicPatch& p, const ShapeHit& h) {
     const BicubicPatchData::Triangle& t =
         p.data->leaves[size_t(h.face / 2)][size_t(h.face % 2)];
-    const Real r = 1 - h.s - h.s2;
-    const Vector3 n = t.normal[0] * r + t.normal[1] * h.s + t.normal[2] * h.s2;
+    const Real r = 1 - h.param - h.param2;
+    const Vector3 n = t.normal[0] * r + t.normal[1] * h.param + t.normal[2] * h.param2;
     if (dot(n, n) <= kEpsilon) return {1, 0, 0};
     return n / length(n);
 }

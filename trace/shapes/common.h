@@ -66,9 +66,9 @@ struct ShapeHit {
     Real t;    // world distance along the ray
     Point3 p;  // the point in the shape's space, computed in the shape's arithmetic
     int face;  // which surface part (for the normal)
-    // Where on that part, when the normal needs it (a prism wall's spline t; a patch
-    // triangle's barycentric coordinates).
-    Real s = 0, s2 = 0;
+    // Where on that part, when the normal needs it (a lathe's or prism wall's spline t;
+    // a patch triangle's barycentric coordinates).
+    Real param = 0, param2 = 0;
     // The normal, for shapes that find it with the hit (julia_fractal: it needs the
     // iteration at the hit point).
     Vector3 normal{0, 0, 0};

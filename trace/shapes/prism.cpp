@@ -180,7 +180,7 @@ Vector3 shape_normal(const Prism& p, const ShapeHit& h) {
     // Base and cap alike: +y (the tracer faces normals towards the ray).
     if (h.face < 0) return {0, 1, 0};
     const PrismSegment& s = p.segments[size_t(h.face)];
-    const Real du = slope(s, 0, h.s), dv = slope(s, 1, h.s);
+    const Real du = slope(s, 0, h.param), dv = slope(s, 1, h.param);
     if (!p.conic) return {dv, 0, -du};
     if (!(std::fabs(h.p.y) > kEpsilon)) return {0, 1, 0};
     return {dv, -(h.p.x * dv - h.p.z * du) / h.p.y, -du};

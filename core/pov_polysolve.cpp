@@ -1,0 +1,333 @@
+#include "core/pov_polysolve.h"
+
+#include <cmath>
+
+namespace povwall {
+
+namespace {
+
+constexpr Real kSmallEnough = 1e-10;  // a coefficient or discriminant this small is 0
+constexpr Real kRelError = 1e-12;     // Sturm bisection and regula falsi convergence
+constexpr int kMaxIterations = 50;
+constexpr Real kBracketEnd = 1e7;       // MAX_DISTANCE: Sturm searches [0, 1e7]
+constexpr Real kDifficultRatio = 1e12;  // coefficient spread that forces Sturm
+
+// a x^2 + b x + c (x[0..2]). A discriminant within 1e-10 of 0 gives one root.
+int quadratic(const Real* x, Real* y) {
+    Real a = x[0], b = -x[1], c = x[2];
+    if (a == 0) {
+        if (b == 0) return 0;
+        y[0] = c / b;
+        return 1;
+    }
+    b /= a;
+    c /= a;
+    Real d = b * b - 4.0 * c;
+    if (d > -kSmallEnough && d < kSmallEnough) {
+        y[0] = 0.5 * b;
+        return 1;
+    }
+    if (d < 0) return 0;
+    d = std::sqrt(d);
+    y[0] = (b + d) / 2;
+    y[1] = (b - d) / 2;
+    return 2;
+}
+
+// x[0] t^3 + ... (x[0..3]): trigonometric form for three real roots, else Cardano. A
+// triple root (Q = 0) gives 0/0 = NaN, as in POV-Ray; NaN roots fail every range test.
+int cubic(const Real* x, Real* y) {
+    const Real a0 = x[0];
+    if (a0 == 0) return quadratic(x + 1, y);
+    Real a1 = x[1], a2 = x[2], a3 = x[3];
+    if (a0 != 1) {
+        a1 = x[1] / a0;
+        a2 = x[2] / a0;
+        a3 = x[3] / a0;
+    }
+    const Real a1_2 = a1 * a1;
+    const Real q = (a1_2 - 3.0 * a2) / 9.0;
+    const Real r = (a1 * (a1_2 - 4.5 * a2) + 13.5 * a3) / 27.0;
+    const Real q3 = q * q * q, r2 = r * r;
+    const Real shift = a1 / 3.0;
+    if (q3 - r2 >= 0) {
+        const Real theta = std::acos(r / std::sqrt(q3)) / 3.0;
+        const Real s = -2.0 * std::sqrt(q);
+        y[0] = s * std::cos(theta) - shift;
+        y[1] = s * std::cos(theta + 2.0943951023931954923084) - shift;
+        y[2] = s * std::cos(theta + 4.1887902047863909846168) - shift;
+        return 3;
+    }
+    const Real s = std::pow(std::sqrt(r2 - q3) + std::fabs(r), 1.0 / 3.0);
+    y[0] = r < 0 ? (s + q / s) - shift : -(s + q / s) - shift;
+    return 1;
+}
+
+// The quartic x[0..4] through the depressed form and its resolvent cubic (POV-Ray's
+// compiled "Vieta" variant, with its sign asymmetry in the single-root factors).
+int quartic(const Real* x, Real* out) {
+    Real c1 = x[1], c2 = x[2], c3 = x[3], c4 = x[4];
+    if (x[0] != 1) {
+        c1 = x[1] / x[0];
+        c2 = x[2] / x[0];
+        c3 = x[3] / x[0];
+        c4 = x[4] / x[0];
+    }
+    const Real c1_2 = c1 * c1;
+    Real p = -0.375 * c1_2 + c2;
+    const Real q = 0.125 * c1_2 * c1 - 0.5 * c1 * c2 + c3;
+    const Real r = -0.01171875 * c1_2 * c1_2 + 0.0625 * c1_2 * c2 - 0.25 * c1 * c3 + c4;
+    const Real resolvent[4] = {1.0, -0.5 * p, -r, 0.5 * r * p - 0.125 * q * q};
+    Real zs[3];
+    if (cubic(resolvent, zs) == 0) return 0;
+    const Real z = zs[0];
+    Real d1 = 2.0 * z - p, d2;
+    if (d1 < 0) {
+        if (!(d1 > -kSmallEnough)) return 0;
+        d1 = 0;
+    }
+    if (d1 < kSmallEnough) {
+        d2 = z * z - r;
+        if (d2 < 0) return 0;
+        d2 = std::sqrt(d2);
+    } else {
+        d1 = std::sqrt(d1);
+        d2 = 0.5 * q / d1;
+    }
+    const Real q1 = d1 * d1, q2 = -0.25 * c1;
+    int n = 0;
+    p = q1 - 4.0 * (z - d2);
+    if (p == 0) {
+        out[n++] = -0.5 * d1 - q2;
+    } else if (p > 0) {
+        p = std::sqrt(p);
+        out[n++] = -0.5 * (d1 + p) + q2;
+        out[n++] = -0.5 * (d1 - p) + q2;
+    }
+    p = q1 - 4.0 * (z + d2);
+    if (p == 0) {
+        out[n++] = 0.5 * d1 - q2;
+    } else if (p > 0) {
+        p = std::sqrt(p);
+        out[n++] = 0.5 * (d1 + p) + q2;
+        out[n++] = 0.5 * (d1 - p) + q2;
+    }
+    return n;
+}
+
+// Whether the quartic's coefficients spread over more than 1e12. As POV-Ray, the
+// largest is tracked by magnitude but stored signed: once it is negative, any later
+// coefficient replaces it.
+bool difficult(const Real* x) {
+    Real big = 0;
+    for (int i = 0; i <= 4; ++i)
+        if (std::fabs(x[i]) > big) big = x[i];
+    if (big == 0) return false;
+    for (int i = 0; i <= 4; ++i)
+        if (x[i] != 0 && std::fabs(big / x[i]) > kDifficultRatio) return true;
+    return false;
+}
+
+// ---- Sturm bisection on [0, 1e7]
+
+struct Poly {
+    int degree;
+    Real c[kPovMaxDegree + 1];  // ascending powers
+
+    Real operator()(Real x) const {
+        Real v = c[degree];
+        for (int i = degree - 1; i >= 0; --i) v = v * x + c[i];
+        return v;
+    }
+};
+
+// The remainder of u divided by v, whose leading coefficient is +1 or -1; remainder
+// coefficients below 1e-10 are cleared from the top. Returns the remainder's degree.
+int remainder(const Poly& u, const Poly& v, Poly& r) {
+    r = u;
+    const int top = v.degree;
+    if (v.c[top] < 0) {
+        // Dividing by -1 leading: alternate quotient signs folded into the update.
+        for (int k = u.degree - top - 1; k >= 0; k -= 2) r.c[k] = -r.c[k];
+        for (int k = u.degree - top; k >= 0; --k)
+            for (int j = top + k - 1; j >= k; --j)
+                r.c[j] = -r.c[j] - r.c[top + k] * v.c[j - k];
+    } else {
+        for (int k = u.degree - top; k >= 0; --k)
+            for (int j = top + k - 1; j >= k; --j) r.c[j] -= r.c[top + k] * v.c[j - k];
+    }
+    int k = top - 1;
+    while (k >= 0 && std::fabs(r.c[k]) < kSmallEnough) r.c[k--] = 0;
+    r.degree = k < 0 ? 0 : k;
+    return r.degree;
+}
+
+struct SturmChain {
+    Poly s[kPovMaxDegree + 2];
+    int last;  // index of the final (constant) element
+
+    // s[0] is the monic polynomial; then its derivative scaled to a unit leading
+    // coefficient, then negated remainders scaled to leading -1, down to a constant,
+    // which is negated unscaled.
+    explicit SturmChain(const Poly& p) {
+        s[0] = p;
+        const int n = p.degree;
+        s[1].degree = n - 1;
+        const Real f = std::fabs(p.c[n] * n);
+        for (int i = 1; i <= n; ++i) s[1].c[i - 1] = p.c[i] * i / f;
+        int k = 2;
+        while (remainder(s[k - 2], s[k - 1], s[k]) != 0) {
+            const Real g = -std::fabs(s[k].c[s[k].degree]);
+            for (int i = s[k].degree; i >= 0; --i) s[k].c[i] /= g;
+            ++k;
+        }
+        s[k].c[0] = -s[k].c[0];
+        last = k;
+    }
+
+    // Sign changes along the chain at x; a zero value counts as a change after it.
+    int changes(Real x) const {
+        int n = 0;
+        Real prev = s[0](x);
+        for (int i = 1; i <= last; ++i) {
+            const Real v = s[i](x);
+            if (prev == 0 || prev * v < 0) ++n;
+            prev = v;
+        }
+        return n;
+    }
+    // The same with each element's leading (x -> +inf) or constant (x = 0) coefficient.
+    int changes_at(bool infinity) const {
+        int n = 0;
+        Real prev = infinity ? s[0].c[s[0].degree] : s[0].c[0];
+        for (int i = 1; i <= last; ++i) {
+            const Real v = infinity ? s[i].c[s[i].degree] : s[i].c[0];
+            if (prev == 0 || prev * v < 0) ++n;
+            prev = v;
+        }
+        return n;
+    }
+};
+
+bool converged(Real lo, Real hi, Real x) {
+    return std::fabs(x) > kRelError ? std::fabs((hi - lo) / x) < kRelError
+                                    : std::fabs(hi - lo) < kRelError;
+}
+
+// Illinois regula falsi on [a, b] for a single root of p.
+bool regula_falsi(const Poly& p, Real a, Real b, Real& root) {
+    Real fa = p(a), fb = p(b);
+    if (fa * fb > 0) return false;
+    if (std::fabs(fa) < kSmallEnough) {
+        root = a;
+        return true;
+    }
+    if (std::fabs(fb) < kSmallEnough) {
+        root = b;
+        return true;
+    }
+    Real last_fx = fa;
+    for (int i = 0; i < kMaxIterations; ++i) {
+        const Real x = (fb * a - fa * b) / (fb - fa);
+        const Real fx = p(x);
+        if (std::fabs(x) > kRelError ? std::fabs(fx / x) < kRelError
+                                     : std::fabs(fx) < kRelError) {
+            root = x;
+            return true;
+        }
+        // Replace the end whose value has fx's sign; when the same end is replaced
+        // twice running, halve the kept end's value.
+        const bool replace_a = fa < 0 ? fx < 0 : !(fx < 0);
+        const bool same_side = last_fx * fx > 0;
+        if (replace_a) {
+            a = x;
+            fa = fx;
+            if (same_side) fb /= 2;
+        } else {
+            b = x;
+            fb = fx;
+            if (same_side) fa /= 2;
+        }
+        if (std::fabs(b - a) < kRelError) {
+            root = x;
+            return true;
+        }
+        last_fx = fx;
+    }
+    return false;
+}
+
+int bisect(const SturmChain& chain, Real lo, Real hi, int at_lo, int at_hi, Real* roots) {
+    if (at_lo - at_hi == 1 && regula_falsi(chain.s[0], lo, hi, roots[0])) return 1;
+    const bool single = at_lo - at_hi == 1;
+    Real mid = lo;
+    for (int i = 0; i < kMaxIterations; ++i) {
+        mid = (lo + hi) / 2;
+        const int at_mid = chain.changes(mid);
+        if (at_mid < at_hi || at_mid > at_lo) return 0;  // inconsistent counts: give up
+        if (converged(lo, hi, mid)) {
+            roots[0] = mid;
+            return 1;
+        }
+        const int left = at_lo - at_mid, right = at_mid - at_hi;
+        if (!single && left != 0 && right != 0) {
+            const int n = bisect(chain, lo, mid, at_lo, at_mid, roots);
+            return n + bisect(chain, mid, hi, at_mid, at_hi, roots + n);
+        }
+        if (left == 0) {
+            lo = mid;
+            at_lo = at_mid;
+        } else {
+            hi = mid;
+            at_hi = at_mid;
+        }
+    }
+    roots[0] = mid;
+    return 1;
+}
+
+int sturm_roots(int n, const Real* c, Real* roots) {
+    Poly p;
+    p.degree = n;
+    for (int i = 0; i <= n; ++i) p.c[n - i] = c[i] / c[0];
+    const SturmChain chain(p);
+    if (chain.changes_at(false) == chain.changes_at(true)) return 0;
+    const int at_lo = chain.changes(0), at_hi = chain.changes(kBracketEnd);
+    if (at_lo == at_hi) return 0;
+    return bisect(chain, 0, kBracketEnd, at_lo, at_hi, roots);
+}
+
+}  // namespace
+
+int pov_solve_polynomial(int n, const Real* c, Real* roots, bool sturm,
+                         Real root_elimination) {
+    int skip = 0;
+    while (skip < n && std::fabs(c[skip]) < kSmallEnough) ++skip;
+    n -= skip;
+    c += skip;
+    const bool eliminate = n >= 3 && root_elimination > 0 && c[n - 1] != 0 &&
+                           std::fabs(c[n] / c[n - 1]) < root_elimination;
+    switch (n) {
+        case 0:
+            return 0;
+        case 1:
+            if (c[0] == 0) return 0;
+            roots[0] = -c[1] / c[0];
+            return 1;
+        case 2:
+            return quadratic(c, roots);
+        case 3:
+            if (eliminate) return quadratic(c, roots);
+            return sturm ? sturm_roots(3, c, roots) : cubic(c, roots);
+        case 4:
+            if (eliminate) return sturm ? sturm_roots(3, c, roots) : cubic(c, roots);
+            if (sturm || difficult(c)) return sturm_roots(4, c, roots);
+            return quartic(c, roots);
+        default:
+            // POV-Ray also solves the eliminated polynomial here, then overwrites the
+            // result.
+            return sturm_roots(n, c, roots);
+    }
+}
+
+}  // namespace povwall

@@ -1,0 +1,41 @@
+// sor in each kind of CSG (all crossings along the ray and the inside test), clipped,
+// inverse, and as glass.
+#version 3.7;
+global_settings { assumed_gamma 1 max_trace_level 8 }
+camera { location <0, 5, -9> look_at <0, 0.3, 0> angle 50 }
+light_source { <-4, 9, -6> color rgb 1 }
+light_source { <5, 4, -3> color rgb 0.4 }
+plane { y, -1 pigment { checker rgb 0.9 rgb 0.5 scale 0.7 } }
+#declare Glass = material { texture { pigment { rgbf <0.9, 1, 0.9, 0.85> }
+                                      finish { specular 0.6 reflection 0.05 } }
+                            interior { ior 1.45 } }
+#declare Pot = sor { 7, <0, -1>, <0.5, -0.9>, <0.9, -0.5>, <0.6, 0.1>, <0.8, 0.6>,
+                        <0.7, 0.9>, <0.5, 1> }
+intersection {
+  object { Pot rotate <20, 30, 0> }
+  box { -0.7, 0.7 }
+  pigment { rgb <0.9, 0.4, 0.3> } translate <-3, 0, 1.5>
+}
+difference {
+  object { Pot }
+  object { Pot scale <0.8, 1, 0.8> translate 0.2*y }
+  sphere { <0.5, 0.5, -0.5>, 0.45 }
+  pigment { rgb <0.3, 0.7, 0.9> } translate <0, 0, 1.5>
+}
+merge {
+  object { Pot sturm }
+  object { Pot rotate 90*z scale 0.6 }
+  material { Glass } translate <3, 0, 1.5>
+}
+union {
+  object { Pot rotate <30, 40, 10> }
+  box { <-1.2, -0.2, -0.2>, <1.2, 0.2, 0.2> }
+  clipped_by { plane { z, 0.2 } }
+  pigment { rgb <0.4, 0.9, 0.4> } translate <-3, 0, -1.5>
+}
+intersection {
+  box { -0.9, 0.9 rotate <10, 20, 0> }
+  object { Pot scale 0.6 inverse }
+  pigment { rgb <0.8, 0.5, 0.9> } translate <0, 0, -1.5>
+}
+object { Pot rotate <-20, 10, 0> material { Glass } translate <3, 0, -1.5> }

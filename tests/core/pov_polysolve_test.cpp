@@ -1,0 +1,73 @@
+// POV-Ray's polynomial solver as reproduced (core/pov_polysolve.h): its root counts and
+// order, and the quirks that decide pixels.
+#include "core/pov_polysolve.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace povwall {
+namespace {
+
+TEST(PovPolysolve, QuadraticOrderAndTangentWindow) {
+    Real r[2];
+    const Real two[3] = {1, -3, 2};  // (x - 1)(x - 2): larger root first
+    ASSERT_EQ(pov_solve_polynomial(2, two, r, false), 2);
+    EXPECT_EQ(r[0], 2);
+    EXPECT_EQ(r[1], 1);
+    // A discriminant within 1e-10 of zero: one root.
+    const Real tangent[3] = {1, -2, 1 + 2e-11};
+    ASSERT_EQ(pov_solve_polynomial(2, tangent, r, false), 1);
+    EXPECT_EQ(r[0], 1);
+    // Leading coefficients below 1e-10 are dropped: a linear equation.
+    const Real linear[3] = {1e-11, 2, -4};
+    ASSERT_EQ(pov_solve_polynomial(2, linear, r, false), 1);
+    EXPECT_EQ(r[0], 2);
+}
+
+TEST(PovPolysolve, CubicClosedFormAndItsTripleRoot) {
+    Real r[3];
+    const Real three[4] = {1, -6, 11, -6};  // roots 1, 2, 3
+    ASSERT_EQ(pov_solve_polynomial(3, three, r, false), 3);
+    Real sorted[3] = {r[0], r[1], r[2]};
+    std::sort(sorted, sorted + 3);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(sorted[i], i + 1, 1e-12);
+    // (x - 1)^3: Q = R = 0 gives 0/0 in the trigonometric form: NaN roots.
+    const Real triple[4] = {1, -3, 3, -1};
+    ASSERT_EQ(pov_solve_polynomial(3, triple, r, false), 3);
+    EXPECT_TRUE(std::isnan(r[0]));
+}
+
+TEST(PovPolysolve, SturmFindsOnlyRootsFromZeroToMaxDistance) {
+    Real r[4];
+    const Real three[4] = {1, -6, 11, -6};
+    ASSERT_EQ(pov_solve_polynomial(3, three, r, true), 3);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(r[i], i + 1, 1e-11);  // ascending
+    const Real signs[4] = {1, 0, -1, 0};  // x (x - 1)(x + 1): -1 is never reported
+    const int n = pov_solve_polynomial(3, signs, r, true);
+    for (int i = 0; i < n; ++i) EXPECT_GE(r[i], 0);
+    // A sixth degree always goes through Sturm: (x^2 - 1)(x - 2)(x - 3)(x - 4)(x + 5).
+    const Real six[7] = {1, -4, -20, 110, -101, -106, 120};
+    Real r6[6];
+    ASSERT_EQ(pov_solve_polynomial(6, six, r6, false), 4);
+    const Real expect[4] = {1, 2, 3, 4};
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(r6[i], expect[i], 1e-10);
+}
+
+TEST(PovPolysolve, QuarticRootEliminationAndDifficultCoefficients) {
+    Real r[4];
+    // (x - 1)(x - 2)(x - 3)(x - 4) by the closed form.
+    const Real four[5] = {1, -10, 35, -50, 24};
+    ASSERT_EQ(pov_solve_polynomial(4, four, r, false), 4);
+    Real sorted[4] = {r[0], r[1], r[2], r[3]};
+    std::sort(sorted, sorted + 4);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(sorted[i], i + 1, 1e-9);
+    // A root near 0 (constant / linear below 1e-4) is eliminated: the cubic is solved.
+    const Real near_zero[5] = {1, -6, 11, -6, 1e-6};
+    EXPECT_EQ(pov_solve_polynomial(4, near_zero, r, false, 1e-4), 3);
+    EXPECT_EQ(pov_solve_polynomial(4, near_zero, r, false, 0), 4);
+}
+
+}  // namespace
+}  // namespace povwall
