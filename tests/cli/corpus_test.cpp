@@ -61,10 +61,11 @@ class Corpus : public ::testing::Test {
         for (const char* name : {"csg.pov", "camera_look_at.pov"})
             fs::copy_file(fs::path(POVWALL_SOURCE_DIR) / "scenes/golden" / name,
                           scenes / "golden" / name);
-        std::ofstream(scenes / "prism.pov")
-            << "camera { location <0, 1, -4> look_at 0 }\n"
+        std::ofstream(scenes / "radiosity.pov")
+            << "global_settings { radiosity { } }\n"
+               "camera { location <0, 1, -4> look_at 0 }\n"
                "light_source { <2, 4, -3> color rgb 1 }\n"
-               "prism { 0, 1, 3, <0, 0>, <1, 0>, <1, 1> pigment { rgb 1 } }\n";
+               "sphere { 0, 1 pigment { rgb 1 } }\n";
         std::ofstream(scenes / "syntax <error>.pov")
             << "camera { location <0, 0, -3> }\nsphere { 0, 1 pigment { colr rgb 1 } }\n";
         // Each loop stays under the parser's runaway-loop limit; together they never end.
@@ -76,7 +77,7 @@ class Corpus : public ::testing::Test {
         std::ofstream(work_dir() / "list.txt")
             << "# tiny "
                "corpus\nscenes/golden/csg.pov\n\nscenes/golden/camera_look_at.pov\n"
-               "scenes/prism.pov\nscenes/syntax <error>.pov\nscenes/hang.pov\n";
+               "scenes/radiosity.pov\nscenes/syntax <error>.pov\nscenes/hang.pov\n";
         run_ = new RunResult(run_shell(std::string(POVWALL_BINARY) + " corpus " +
                                            (work_dir() / "list.txt").string() +
                                            " -W 32 -H 24 --timeout 4 --html " +
@@ -107,8 +108,8 @@ TEST_F(Corpus, PrintsOneLinePerSceneAndExactCounts) {
         << out;
     EXPECT_TRUE(std::regex_search(out, std::regex(R"(scenes/golden/csg.pov +matched )")))
         << out;
-    EXPECT_TRUE(
-        std::regex_search(out, std::regex(R"(scenes/prism.pov +unsupported .* prism\n)")))
+    EXPECT_TRUE(std::regex_search(
+        out, std::regex(R"(scenes/radiosity.pov +unsupported .* radiosity\n)")))
         << out;
     // The first line of povwall's diagnostic, with the scene named as listed.
     EXPECT_TRUE(std::regex_search(
