@@ -132,7 +132,7 @@ bool difficult(const Real* x) {
 
 struct Poly {
     int degree;
-    Real c[kPovMaxDegree + 1];  // ascending powers
+    Real c[kPovMaxOrder + 1];  // ascending powers
 
     Real operator()(Real x) const {
         Real v = c[degree];
@@ -163,7 +163,7 @@ int remainder(const Poly& u, const Poly& v, Poly& r) {
 }
 
 struct SturmChain {
-    Poly s[kPovMaxDegree + 2];
+    Poly s[kPovMaxOrder + 2];
     int last;  // index of the final (constant) element
 
     // s[0] is the monic polynomial; then its derivative scaled to a unit leading

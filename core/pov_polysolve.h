@@ -11,10 +11,10 @@
 
 namespace povwall {
 
-// The largest degree the shapes need (a lathe's cubic and Bezier segments).
-constexpr int kPovMaxDegree = 6;
+// The largest degree POV-Ray 3.7 solves (its MAX_ORDER, for poly).
+constexpr int kPovMaxOrder = 35;
 
-// Real roots of c[0] x^n + ... + c[n] (highest power first, n <= kPovMaxDegree), in
+// Real roots of c[0] x^n + ... + c[n] (highest power first, n <= kPovMaxOrder), in
 // POV-Ray's order, into roots[0..n-1]. `sturm` selects Sturm bisection for degrees 3
 // and 4; `root_elimination` > 0 drops the constant term when it is below that fraction
 // of the linear one (a root near 0). Sturm only returns roots in [0, 1e7].

@@ -69,5 +69,22 @@ TEST(PovPolysolve, QuarticRootEliminationAndDifficultCoefficients) {
     EXPECT_EQ(pov_solve_polynomial(4, near_zero, r, false, 0), 4);
 }
 
+TEST(PovPolysolve, HighDegreesUpToPovRaysMaxOrderGoThroughSturm) {
+    // (x - 1)(x - 2)...(x - 8): the coefficients built exactly in doubles.
+    Real c[kPovMaxOrder + 1] = {1};
+    for (int k = 1; k <= 8; ++k)
+        for (int i = k; i >= 1; --i) c[i] -= k * c[i - 1];
+    Real r[kPovMaxOrder];
+    ASSERT_EQ(pov_solve_polynomial(8, c, r, false), 8);
+    for (int i = 0; i < 8; ++i) EXPECT_NEAR(r[i], i + 1, 1e-7);  // ascending
+    // x^35 - 2^35 (c[0] = 1, c[35] = -2^35): one real root, 2.
+    Real big[kPovMaxOrder + 1] = {1};
+    big[kPovMaxOrder] = -std::ldexp(1.0, 35);
+    // POV-Ray 3.7's own Solve_Polynomial returns this value too: its regula falsi stops
+    // when |f(x) / x| < 1e-12, which at this slope (35 * 2^34) is 3e-9 short of 2.
+    ASSERT_EQ(pov_solve_polynomial(kPovMaxOrder, big, r, false), 1);
+    EXPECT_EQ(r[0], 1.9999999967268423);
+}
+
 }  // namespace
 }  // namespace povwall

@@ -1,12 +1,10 @@
-// prism: exact crossings, normals and inside tests of the kernel, and the POV-Ray
-// polynomial rules it solves with (trace/shapes/pov_polynomial.h).
+// prism: exact crossings, normals and inside tests of the kernel.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "parser/parser.h"
-#include "trace/shapes/pov_polynomial.h"
 #include "trace/shapes/shape.h"
 
 namespace povwall::trace {
@@ -110,49 +108,6 @@ TEST(Prism, CubicAndBezierOutlinesMatchTheirPoints) {
     // Elsewhere each crossing once: at z = 0.75 the upper curve z = 1.5 t (1 - t) * ...
     h = hits_of(o, {-5, 0.5, 0.5}, {1, 0, 0});
     EXPECT_EQ(h.size(), 2u);
-}
-
-TEST(PovPolynomial, QuadraticGrazingGivesOneRoot) {
-    Real r[2];
-    const Real tangent[3] = {1, -2, 1 + 1e-12};  // discriminant -4e-12: within 1e-10
-    ASSERT_EQ(pov_solve_quadratic(tangent, r), 1);
-    EXPECT_DOUBLE_EQ(r[0], 1);
-    const Real two[3] = {1, -3, 2};
-    ASSERT_EQ(pov_solve_quadratic(two, r), 2);
-    EXPECT_DOUBLE_EQ(r[0], 2);  // (B + sqrt d) / 2 first
-    EXPECT_DOUBLE_EQ(r[1], 1);
-}
-
-TEST(PovPolynomial, CubicClosedFormAndSturmAgree) {
-    const Real c[4] = {1, -6, 11, -6};  // (x - 1)(x - 2)(x - 3)
-    Real a[3], b[3];
-    ASSERT_EQ(pov_solve_cubic(c, a), 3);
-    ASSERT_EQ(pov_sturm_roots(3, c, b), 3);
-    std::sort(a, a + 3);
-    for (int i = 0; i < 3; ++i) {
-        EXPECT_NEAR(a[i], i + 1, 1e-12);
-        EXPECT_NEAR(b[i], i + 1, 1e-11);  // ascending from the bisection
-    }
-}
-
-TEST(PovPolynomial, SturmFindsOnlyRootsInZeroToMaxDistance) {
-    const Real c[4] = {1, 0, -7, 6};  // (x - 1)(x - 2)(x + 3)
-    Real r[3];
-    ASSERT_EQ(pov_sturm_roots(3, c, r), 2);
-    EXPECT_NEAR(r[0], 1, 1e-11);
-    EXPECT_NEAR(r[1], 2, 1e-11);
-    // Degree 6 always goes to Sturm: (x^2 - 1)(x^2 - 4)(x^2 - 9) has three roots >= 0.
-    const Real c6[7] = {1, 0, -14, 0, 49, 0, -36};
-    Real r6[6];
-    ASSERT_EQ(pov_solve_polynomial(6, c6, r6, false), 3);
-    EXPECT_NEAR(r6[2], 3, 1e-10);
-}
-
-TEST(PovPolynomial, LeadingSmallCoefficientsLowerTheDegree) {
-    const Real c[4] = {1e-12, 0, 2, -4};  // effectively 2x - 4
-    Real r[3];
-    ASSERT_EQ(pov_solve_polynomial(3, c, r, false), 1);
-    EXPECT_DOUBLE_EQ(r[0], 2);
 }
 
 }  // namespace

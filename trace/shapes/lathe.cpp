@@ -93,7 +93,7 @@ void intersect_lathe(const Lathe& s, const Point3& p, const Vector3& d, Real dir
     };
     for (const SegmentInterval& in : intervals) {
         const Seg& e = sp.segments[in.segment];
-        Real x[kPovMaxDegree + 1], roots[kPovMaxDegree];
+        Real x[7], roots[6];  // degree 6 at most (cubic and Bezier segments)
         segment_polynomial(sp.kind, e, p, d, rho, m, dy2, x);
         int n = pov_solve_polynomial(degree, x, roots, sturm);
         const int seg = int(in.segment);

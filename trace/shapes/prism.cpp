@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/pov_polysolve.h"
 #include "trace/roots_sturm.h"
 #include "trace/shapes/oracle_math.h"
-#include "trace/shapes/pov_polynomial.h"
 
 namespace povwall::trace {
 namespace {
