@@ -121,7 +121,14 @@ class Builder {
     bool split(const std::vector<uint32_t>& ids, const Bounds3& box, int depth,
                std::array<std::vector<uint32_t>, 8>& kids) {
         const size_t n = ids.size();
-        if (n <= size_t(opt_.leaf_primitives) || depth >= opt_.max_depth) return false;
+        auto cost_of = [&](uint32_t id) {
+            return in_.cost.empty() ? Real(1) : Real(in_.cost[id]);
+        };
+        Real cost = 0;
+        for (uint32_t id : ids) cost += cost_of(id);
+        if ((n <= size_t(opt_.leaf_primitives) && cost <= Real(opt_.leaf_primitives)) ||
+            n <= 1 || depth >= opt_.max_depth)
+            return false;
         const Vector3 size = box.diagonal();
         if (std::min({size.x, size.y, size.z}) <= min_cell_) return false;
         if (copies(ids)) {
@@ -131,6 +138,7 @@ class Builder {
         const Point3 mid = box.centre();
         uint64_t tests = 0, rejected = 0;
         size_t total = 0;
+        Real total_cost = 0;
         for (uint32_t id : ids) {
             const Bounds3& b = in_.bounds[id];
             // Closed cells: a primitive touching the mid-plane belongs to both sides.
@@ -163,6 +171,7 @@ class Builder {
                 }
                 kids[c].push_back(id);
                 ++total;
+                total_cost += cost_of(id);
             }
         }
         exact_tests_ += tests;
@@ -193,8 +202,8 @@ class Builder {
             ++inseparable_;
             return stay_leaf();
         }
-        const Real leaf_cost = Real(n);
-        const Real split_cost = opt_.traversal_cost * 2 + 0.25 * Real(total);
+        const Real leaf_cost = cost;
+        const Real split_cost = opt_.traversal_cost * 2 + 0.25 * total_cost;
         const bool pays = split_cost < leaf_cost;
         const bool breaks_even = split_cost < leaf_cost * 1.25 && max_child * 4 <= n * 3;
         if (!pays && !breaks_even) return stay_leaf();
@@ -259,6 +268,15 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
         bounds_.lo[a] -= grow;
         bounds_.hi[a] += grow;
     }
+    // The root is a cube: every split halves all three axes, so a thin axis of a root
+    // shaped like the scene (a floor of objects 100 wide and 1 high) would be cut into
+    // slivers long before the wide ones separate anything, each object copied into every
+    // sliver. The cube grows up from the scene's low corner, so the scene does not sit on
+    // the new mid-planes.
+    const Real side = std::max({bounds_.hi.x - bounds_.lo.x, bounds_.hi.y - bounds_.lo.y,
+                                bounds_.hi.z - bounds_.lo.z});
+    for (int a = 0; a < 3; ++a)
+        bounds_.hi[a] = std::max(bounds_.hi[a], bounds_.lo[a] + side);
     BuildOptions opt = options;
     opt.max_depth = std::clamp(opt.max_depth, 0, kMaxDepth);
     if (int(all.size()) < opt.flat_threshold) {

@@ -66,6 +66,10 @@ struct BuildInput {
     /// Called only for primitives whose bounds straddle several children, possibly from
     /// several build threads at once, so it must be thread-safe.
     std::function<bool(uint32_t id, const Bounds3& cell)> overlaps;
+    /// Cost of testing each primitive, in units of one simple primitive test (a
+    /// triangle's); empty: 1 each. The split decision weighs references by it, so cells
+    /// of costly shapes (CSG, lathes, text) are cut finer.
+    std::vector<float> cost;
 };
 
 struct BuildStats {

@@ -22,6 +22,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "core/scene.h"
@@ -59,6 +60,29 @@ struct PovRay {
     float inv[3];
     bool nonzero[3];
     explicit PovRay(const Ray& ray);
+};
+
+// One ray's PovRay, made when first asked for (most rays meet no primitive whose POV-Ray
+// boxes are checked), and the answer of the root box, asked once: the tests of every
+// candidate along the ray share them.
+class PovRayOnce {
+  public:
+    explicit PovRayOnce(const Ray& ray) : ray_(ray) {}
+    const Ray& ray() const { return ray_; }
+    const PovRay& get() const {
+        if (!made_) made_.emplace(ray_);
+        return *made_;
+    }
+    template <class Test>
+    bool root_accepts(Test&& test) const {
+        if (root_ < 0) root_ = test(get()) ? 1 : 0;
+        return root_ == 1;
+    }
+
+  private:
+    const Ray& ray_;
+    mutable std::optional<PovRay> made_;
+    mutable int8_t root_ = -1;
 };
 
 // The bounding-slab tree's test of a leaf's box (Check_And_Enqueue): per axis the entry

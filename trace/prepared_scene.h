@@ -188,15 +188,16 @@ class PreparedScene {
     uint32_t add_material(const Object& obj);
     // `tie`, when given: set when the object's nearest crossing has a crossing of another
     // of its leaves within `tie_tolerance` (relative) of it (CSG objects only).
-    bool test_primitive(uint32_t id, const Ray& ray, Real t_min, Real t_max, Hit& hit,
-                        Real tie_tolerance = 0, bool* tie = nullptr) const;
+    bool test_primitive(uint32_t id, const Ray& ray, const PovRayOnce& pov_ray,
+                        Real t_min, Real t_max, Hit& hit, Real tie_tolerance = 0,
+                        bool* tie = nullptr) const;
     // On an exact tie in depth: whether POV-Ray would see `candidate`'s surface rather
     // than `nearest`'s (trace/pov_order.h).
     bool pov_takes(const Material& candidate, const Material& nearest,
                    const Ray& ray) const;
     // POV-Ray's float bounding-box tests of primitive `id` (trace/pov_bounds.h): false
     // when POV-Ray would not intersect it with this ray at all. Asked only of hits.
-    bool pov_accepts(uint32_t id, const Ray& ray) const;
+    bool pov_accepts(uint32_t id, const PovRayOnce& pov_ray) const;
     // The tests a primitive's POV-Ray object gets, and its box.
     enum : uint8_t { kPovSlabTree = 1, kPovOwnBox = 2, kPovMeshTriangle = 4 };
     struct PovPrim {
