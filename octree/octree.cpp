@@ -268,15 +268,18 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
         bounds_.lo[a] -= grow;
         bounds_.hi[a] += grow;
     }
-    // The root is a cube: every split halves all three axes, so a thin axis of a root
-    // shaped like the scene (a floor of objects 100 wide and 1 high) would be cut into
-    // slivers long before the wide ones separate anything, each object copied into every
-    // sliver. The cube grows up from the scene's low corner, so the scene does not sit on
-    // the new mid-planes.
+    // No axis of the root is shorter than a quarter of the longest: every split halves
+    // all three axes, so a thin axis of a root shaped like the scene (a floor of objects
+    // 100 wide and 1 high) would be cut into slivers long before the wide ones separate
+    // anything, each object copied into every sliver. A quarter, not a cube: roots up to
+    // that flat keep their complete top levels (the dense top walk), which the seed
+    // scene's (3:1) needs; the lathe and text fields gain the same from 4 as from 1
+    // (docs/performance.md). The root grows up from the scene's low corner, so the scene
+    // does not sit on the new mid-planes.
     const Real side = std::max({bounds_.hi.x - bounds_.lo.x, bounds_.hi.y - bounds_.lo.y,
                                 bounds_.hi.z - bounds_.lo.z});
     for (int a = 0; a < 3; ++a)
-        bounds_.hi[a] = std::max(bounds_.hi[a], bounds_.lo[a] + side);
+        bounds_.hi[a] = std::max(bounds_.hi[a], bounds_.lo[a] + side / 4);
     BuildOptions opt = options;
     opt.max_depth = std::clamp(opt.max_depth, 0, kMaxDepth);
     if (int(all.size()) < opt.flat_threshold) {
