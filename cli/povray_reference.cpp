@@ -1,7 +1,10 @@
 #include "cli/povray_reference.h"
 
+#include <unistd.h>
+
 #include <charconv>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -36,7 +39,21 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
     popts.image_height = o.height;
     popts.declares = o.declares;
     popts.language_version = o.language_version;
-    popts.write_user_files = false;  // only reads which files the scene uses
+    // Files the scene writes go to a folder of their own, removed after: a scene that
+    // reads back what it wrote (fileio.pov) parses as it does in a render.
+    std::error_code dir_error;
+    const fs::path written = fs::temp_directory_path(dir_error) /
+                             ("povwall-cache-key-" + std::to_string(::getpid()) + "-" +
+                              std::to_string(reinterpret_cast<uintptr_t>(&popts)));
+    fs::create_directories(written, dir_error);
+    struct RemoveAfter {
+        fs::path dir;
+        ~RemoveAfter() {
+            std::error_code ignored;
+            fs::remove_all(dir, ignored);
+        }
+    } remove_after{written};
+    popts.output_dir = written.string();
     popts.function_hooks = trace::parse_time_function_hooks();
     // The values of the frame rendered: an animation's first (of the subset), as
     // run_render has them; a scene may read a different set of files in another frame.
