@@ -290,10 +290,17 @@ const Value* Interpreter::lookup(std::string_view name) const {
 void Interpreter::declare_symbol(uint32_t sym, Value v, bool local, const Token& at) {
     (void)at;
     if (local) {
-        Binding& b = bind(scopes_.back(), sym);
-        b.value = std::move(v);
-        b.ref_scope = -1;
-        return;
+        // #local of a parameter passed by reference, in its own macro's scope, writes
+        // through to the caller's variable as #declare does (POV-Ray's parameter entry
+        // points at the caller's data; macro4.pov's Inc(V)). Anything else is a new
+        // local.
+        const auto it = scopes_.back().find(sym);
+        if (it == scopes_.back().end() || it->second.ref_scope < 0) {
+            Binding& b = bind(scopes_.back(), sym);
+            b.value = std::move(v);
+            b.ref_scope = -1;
+            return;
+        }
     }
     // #declare: an existing macro parameter passed by reference writes through to the
     // caller's variable; otherwise the identifier is global.

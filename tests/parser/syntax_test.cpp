@@ -63,6 +63,16 @@ TEST(Commas, MacroParametersAndArguments) {
     EXPECT_EQ(debug_of("#declare K = 5;\n#macro Add(P Q) #declare P = P + 10; #end\n"
                        "Add(K -2 3) #debug str(K, 0, 0)"),
               "5");  // K - 2 is an expression: passed by value
+    // #local of such a parameter in its own macro writes through too (macro4.pov), also
+    // from a macro it is passed on to; a #local of another name stays local.
+    EXPECT_EQ(debug_of("#declare K = 5;\n#macro Inc(V) #local V = V + 1; #end\n"
+                       "Inc(K) Inc(K + 0) Inc(+K) #debug str(K, 0, 0)"),
+              "6");
+    EXPECT_EQ(
+        debug_of("#declare K = 0;\n#macro Inc(V) #while (V < 3) #local V = V + 1; "
+                 "#end #end\n#macro Outer(W) Inc(W) #end\n#macro SetL(P) #local Q = "
+                 "P; #local Q = 9; #end\nOuter(K) SetL(K) #debug str(K, 0, 0)"),
+        "3");
     EXPECT_EQ(error_of(m + "M(1 -2)"),
               "test.pov:3:7: error: macro 'M' expects 2 parameters but only 1 was found");
     EXPECT_EQ(error_of(m + "M(1,,2)"),
