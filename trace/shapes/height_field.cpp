@@ -353,7 +353,9 @@ Bounds3 shape_bounds(const HeightField& h) {
 }
 
 PovBBox shape_pov_bbox(const HeightField& h, const CompactTransform& xf) {
-    return pov_transformed_bbox(shape_bounds(h), xf);
+    // POV-Ray stores the box in single precision before it transforms it: the margin of
+    // 0.001 is below the float spacing of large heights (0.0039 at 65535).
+    return pov_transformed_bbox(pov_bbox_bounds(pov_bbox(shape_bounds(h))), xf);
 }
 
 bool shape_oracle_first(const HeightField& h, const OracleRay& r, OracleBest& best) {
