@@ -360,7 +360,7 @@ PovBBox shape_pov_bbox(const HeightField& h, const CompactTransform& xf) {
 
 bool shape_oracle_first(const HeightField& h, const OracleRay& r, OracleBest& best) {
     // Every cell's two triangles whose box the ray's line passes near (a double slab test
-    // with a margin; the crossing itself in 50 digits).
+    // with a margin; the crossing itself in 50 digits), above the box's floor.
     const HeightFieldData& d = *h.data;
     const Point3 o{double(r.o.x), double(r.o.y), double(r.o.z)};
     const Vector3 dir{double(r.d.x), double(r.d.y), double(r.d.z)};
@@ -389,8 +389,14 @@ bool shape_oracle_first(const HeightField& h, const OracleRay& r, OracleBest& be
             const V3 a{HP(x), HP(h1), HP(z)}, b{HP(x + 1), HP(h2), HP(z)},
                 c{HP(x), HP(h3), HP(z + 1)}, e{HP(x + 1), HP(h4), HP(z + 1)};
             const V3 lower[3] = {a, b, c}, upper[3] = {e, c, b};
-            oracle_triangle(lower, r, best);
-            oracle_triangle(upper, r, best);
+            // Below the box's floor (a water level) the triangles are never reached.
+            for (const V3* tri : {lower, upper}) {
+                OracleBest one;
+                one.floor = best.floor;
+                oracle_triangle(tri, r, one);
+                if (isfinite(one.t) && r.o.y + one.t * r.d.y >= HP(d.floor_y))
+                    best.offer(one.t, 0);
+            }
         }
     }
     return true;
