@@ -19,7 +19,11 @@ struct Fake {
     StoredImage image;
     fs::path dir;
     explicit Fake(StoredImage s) : image(std::move(s)) {
-        dir = fs::temp_directory_path() / "povwall_height_field_test";
+        // One folder per test: ctest runs the tests of this file side by side.
+        dir = fs::temp_directory_path() /
+              ("povwall_height_field_test_" +
+               std::string(
+                   ::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::create_directories(dir);
         for (const char* f : {"a.png", "a.pgm", "a.tga", "a.gif"})
             std::ofstream(dir / f) << "x";
