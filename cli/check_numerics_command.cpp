@@ -53,6 +53,7 @@ int run_check_numerics(int argc, char** argv) {
     popts.library_paths = library_paths;
     popts.write_user_files = false;
     popts.function_hooks = trace::parse_time_function_hooks();
+    popts.image_reader = output::read_stored_image;  // height fields need the pixels
     popts.image_width = width;
     popts.image_height = height;
     Scene scene;

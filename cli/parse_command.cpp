@@ -10,17 +10,11 @@
 #include "cli/options.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
+#include "trace/oracle.h"
 #include "trace/pattern.h"
 
 namespace povwall::cli {
 namespace {
-
-const char* shape_name(const ShapeData& s) {
-    static const char* kNames[] = {
-        "sphere", "box",      "plane",           "cylinder", "cone", "torus",
-        "disc",   "triangle", "smooth_triangle", "polygon",  "mesh", "csg"};
-    return kNames[s.index()];
-}
 
 void count_shapes(const Object& o, std::map<std::string, int>& counts) {
     if (auto c = std::get_if<Csg>(&o.shape)) {
@@ -29,7 +23,7 @@ void count_shapes(const Object& o, std::map<std::string, int>& counts) {
         for (const Object& ch : c->children) count_shapes(ch, counts);
         return;
     }
-    ++counts[shape_name(o.shape)];
+    ++counts[trace::shape_kind_name(o)];  // every shape kind's name, in one place
 }
 
 }  // namespace

@@ -49,6 +49,11 @@ struct StoredImage {
     // and names each colour once (output/palette.h); else empty.
     std::vector<uint8_t> indices;
     int palette_size = 0;
+    // How the file stores its samples (height_field takes its heights from them).
+    int channels = 0;         // 1 grey, 2 grey+alpha, 3 RGB, 4 RGBA
+    int bits = 0;             // bits per sample
+    bool float_data = false;  // floating-point samples (EXR, HDR)
+    int pnm_maxval = 0;       // a Netpbm file's maxval (0: not Netpbm, or a bitmap)
 };
 
 // Reads an image file; throws std::runtime_error with a message naming the problem. The

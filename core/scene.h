@@ -20,6 +20,7 @@
 #include "core/compact_transform.h"
 #include "core/function.h"
 #include "core/heap_optional.h"
+#include "core/height_field.h"
 #include "core/math.h"
 #include "core/source_loc.h"
 
@@ -452,6 +453,16 @@ struct Lathe {
 LatheSpline make_lathe_spline(LatheSplineKind kind,
                               const std::vector<ProfilePoint>& points);
 
+// height_field: its grid shared by copies, as POV-Ray's (core/height_field.h). The
+// object's transform starts with the scale that maps the grid to the unit square.
+struct HeightField {
+    std::shared_ptr<const HeightFieldData> data;
+    bool smooth = false;
+    // The `hierarchy` modifier as last given; the grid's blocks were built with the value
+    // it had when the height_field block closed (later ones, on a copy, change nothing).
+    bool hierarchy = true;
+};
+
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
@@ -470,9 +481,10 @@ struct Csg {
     std::optional<PovBox> text_box;
 };
 
-using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                               SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor,
-                               Lathe, Prism, BicubicPatch, JuliaFractal, Glyph, Csg>;
+using ShapeData =
+    std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
+                 SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor, Lathe, Prism,
+                 BicubicPatch, JuliaFractal, Glyph, HeightField, Csg>;
 
 struct Object {
     ShapeData shape;

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <mutex>
@@ -78,6 +80,35 @@ const ImageBackend* load_backend(std::string& error) {
 std::once_flag g_backend_once;
 const ImageBackend* g_backend = nullptr;
 std::string g_backend_error;
+
+// The maxval of a Netpbm grey map or pixmap (P2, P3, P5, P6): the image library scales
+// samples by it without saying what it was. 0 for bitmaps and unreadable headers.
+int pnm_maxval(const std::string& path) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) return 0;
+    char head[512];
+    const size_t n = std::fread(head, 1, sizeof head, f);
+    std::fclose(f);
+    if (n < 2 || head[0] != 'P' || !std::strchr("2356", head[1])) return 0;
+    size_t i = 2;
+    long values[3];
+    for (long& v : values) {
+        // Whitespace and comments up to the next number.
+        for (;;) {
+            while (i < n && std::isspace(static_cast<unsigned char>(head[i]))) ++i;
+            if (i < n && head[i] == '#') {
+                while (i < n && head[i] != '\n') ++i;
+            } else {
+                break;
+            }
+        }
+        if (i >= n || !std::isdigit(static_cast<unsigned char>(head[i]))) return 0;
+        v = 0;
+        while (i < n && std::isdigit(static_cast<unsigned char>(head[i])) && v < 1000000)
+            v = v * 10 + (head[i++] - '0');
+    }
+    return int(values[2]);
+}
 
 const ImageBackend& backend() {
     std::call_once(g_backend_once, [] { g_backend = load_backend(g_backend_error); });
@@ -210,6 +241,10 @@ StoredImage read_stored_image(const std::string& path) {
     stored.format = info.format;
     stored.declared_gamma = info.declared_gamma;
     stored.has_alpha = info.has_alpha;
+    stored.channels = info.channels;
+    stored.bits = info.bits;
+    stored.float_data = info.float_data;
+    if (info.format == "pnm") stored.pnm_maxval = pnm_maxval(path);
     stored.colour_mapped = colour_mapped_file(path, info.format);
     if (stored.colour_mapped) {
         const auto palette = read_palette(path, info.format);

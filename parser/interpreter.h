@@ -196,6 +196,15 @@ class Interpreter {
     void parse_ovus(const Token& keyword, Object& out);
     void parse_sor(const Token& keyword, Object& out);
     void parse_lathe(Object& out);
+    // A height field's grid as read, built into the shape by finish_height_field after
+    // the object's modifiers (POV-Ray's Compute_HField runs then: `hierarchy` counts).
+    struct PendingHeightField {
+        int width = 0, depth = 0;
+        std::vector<uint16_t> heights;  // [z * width + x]
+        Real water = 0;                 // 65536 * water_level
+    };
+    PendingHeightField parse_height_field(Object& out);
+    void finish_height_field(Object& out, PendingHeightField pending);
     // POV-Ray's UV vector: a float stands for both; 3 or more components are an error.
     ProfilePoint parse_uv_vector();
     int parse_count();

@@ -11,9 +11,8 @@ namespace {
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "blob",         "quadric",      "quartic",     "poly",
-        "cubic",        "height_field", "isosurface",  "parametric",
-        "sphere_sweep", "lemon",        "light_group", "polynomial"};
+        "blob",       "quadric",      "quartic", "poly",        "cubic",     "isosurface",
+        "parametric", "sphere_sweep", "lemon",   "light_group", "polynomial"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -246,10 +245,15 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
     } else if (w == "dtag") {
         parse_string();  // a debugging tag: POV-Ray's release builds drop it
     } else if (w == "hierarchy") {
-        // Bounding inside meshes (blobs, height fields): the image is the same.
-        if (!std::holds_alternative<Mesh>(obj.shape))
-            error(t, "'hierarchy' cannot be used with this object");
-        parse_bool_opt();
+        // Bounding inside meshes: the image is the same. A height field's blocks decide
+        // which of close hits it reports.
+        if (auto hf = std::get_if<HeightField>(&obj.shape)) {
+            hf->hierarchy = parse_bool_opt();
+        } else {
+            if (!std::holds_alternative<Mesh>(obj.shape))
+                error(t, "'hierarchy' cannot be used with this object");
+            parse_bool_opt();
+        }
     } else if (w == "hollow") {
         obj.hollow = parse_bool_opt();
         obj.hollow_given = true;
@@ -379,6 +383,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     out = Object{};
     out.loc = sources_.location(t);
     auto open = [&] { expect_punct('{', "after ", w); };
+    std::optional<PendingHeightField> pending_height_field;
     // `sphere { ID ... }`: an object identifier first in the body copies it.
     auto copy_identifier = [&]() -> bool {
         const Token& p = peek();
@@ -542,6 +547,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "prism") {
         open();
         if (!copy_identifier()) parse_prism(out, t);
+    } else if (w == "height_field") {
+        open();
+        if (!copy_identifier()) pending_height_field = parse_height_field(out);
     } else if (w == "mesh" || w == "mesh2") {
         open();
         if (!copy_identifier()) {
@@ -619,6 +627,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         return false;
     }
     parse_object_modifiers(out);
+    if (pending_height_field) finish_height_field(out, std::move(*pending_height_field));
     // Its set-up after the modifiers clears the inverse flag (as a transform does).
     if (std::holds_alternative<JuliaFractal>(out.shape)) out.inverse = false;
     return true;

@@ -946,11 +946,10 @@ Value Interpreter::parse_item_value(const Token& t) {
             return a;
         }
         static constexpr std::string_view kUnsupportedItems[] = {
-            "media",        "density",    "rainbow",     "photons",     "radiosity",
-            "pigment_map",  "normal_map", "texture_map", "density_map", "slope_map",
-            "material_map", "blob",       "isosurface",  "parametric",  "height_field",
-            "quadric",      "quartic",    "poly",        "cubic",       "sphere_sweep",
-            "lemon"};
+            "media",        "density",    "rainbow",     "photons",      "radiosity",
+            "pigment_map",  "normal_map", "texture_map", "density_map",  "slope_map",
+            "material_map", "blob",       "isosurface",  "parametric",   "quadric",
+            "quartic",      "poly",       "cubic",       "sphere_sweep", "lemon"};
         for (std::string_view item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }

@@ -216,13 +216,15 @@ PovBBox csg_bbox(const Object& o, const Csg& csg) {
     Bounds3 b;
     if (csg.kind == CsgKind::Intersection || csg.kind == CsgKind::Difference) {
         // The children's boxes intersected, inverted children (every child of a
-        // difference but the first) left out.
+        // difference but the first) and height fields left out.
         b = {{-kBoundHuge, -kBoundHuge, -kBoundHuge},
              {kBoundHuge, kBoundHuge, kBoundHuge}};
         for (size_t i = 0; i < csg.children.size(); ++i) {
             const Object& c = csg.children[i];
             if (c.inverse || (csg.kind == CsgKind::Difference && i > 0)) continue;
             if (std::holds_alternative<Plane>(c.shape)) continue;
+            // POV-Ray leaves height fields out too: their inside reaches below the box.
+            if (std::holds_alternative<HeightField>(c.shape)) continue;
             b = intersection(b, pov_bbox_bounds(pov_object_bbox(c)));
         }
     } else {

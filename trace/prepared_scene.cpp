@@ -93,8 +93,7 @@ void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
     hits.clear();
     leaf_hits(o, local, hits);
     for (const ShapeHit& h : hits) {
-        Vector3 n = leaf_normal(o, h);
-        n = normalize(o.transform.is_identity() ? n : o.transform.normal(n));
+        Vector3 n = leaf_world_normal(o, h);
         if (o.inverse) n = -n;
         out.push_back(
             {h.t, n, &o, h.own_point, h.own_point ? o.transform.point(h.p) : Point3{}});
@@ -194,7 +193,13 @@ Bounds3 object_bounds(const Object& o) {
         Bounds3 b;
         bool first = true;
         for (const Object& c : csg->children) {
-            Bounds3 cb = object_bounds(c);
+            // A height field is solid down to -infinity below its box: the other
+            // children's crossings there count.
+            Bounds3 cb = std::holds_alternative<HeightField>(c.shape) &&
+                                 csg->kind != CsgKind::Union &&
+                                 csg->kind != CsgKind::Merge
+                             ? Bounds3::everything()
+                             : object_bounds(c);
             if (csg->kind == CsgKind::Intersection) {
                 if (cb.infinite()) continue;
                 b = first ? cb : intersection(b, cb);

@@ -57,6 +57,7 @@ const StressCase kCases[] = {
     // POV-Ray's Sturm stops at |p(t)/t| < 1e-12, a residual, not a distance: ~5e-9 off
     // (pixel-identical to POV-Ray at 160x120).
     {"lathe_stiff", {"lathe"}, 1e-8},
+    {"height_fields_edge_on", {"height_field"}, 1e-12},
 };
 
 Scene load(const std::string& name) {

@@ -39,6 +39,13 @@ Vector3 leaf_normal(const Object& leaf, const ShapeHit& h) {
     return visit_leaf<Vector3>(leaf, [&](const auto& s) { return shape_normal(s, h); });
 }
 
+Vector3 leaf_world_normal(const Object& leaf, const ShapeHit& h) {
+    if (const HeightField* hf = std::get_if<HeightField>(&leaf.shape))
+        return height_field_world_normal(*hf, h, leaf.transform);
+    const Vector3 n = leaf_normal(leaf, h);
+    return normalize(leaf.transform.is_identity() ? n : leaf.transform.normal(n));
+}
+
 bool leaf_inside(const Object& leaf, const Point3& p) {
     return visit_leaf<bool>(leaf, [&](const auto& s) { return shape_inside(s, p); });
 }

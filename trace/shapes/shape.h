@@ -14,6 +14,7 @@
 #include "trace/shapes/common.h"
 #include "trace/shapes/cylinder_cone.h"
 #include "trace/shapes/disc.h"
+#include "trace/shapes/height_field.h"
 #include "trace/shapes/julia_fractal.h"
 #include "trace/shapes/lathe.h"
 #include "trace/shapes/mesh.h"
@@ -21,11 +22,10 @@
 #include "trace/shapes/plane.h"
 #include "trace/shapes/polygon.h"
 #include "trace/shapes/prism.h"
-#include "trace/shapes/sphere.h"
-#include "trace/shapes/text.h"
 #include "trace/shapes/sor.h"
 #include "trace/shapes/sphere.h"
 #include "trace/shapes/superellipsoid.h"
+#include "trace/shapes/text.h"
 #include "trace/shapes/torus.h"
 #include "trace/shapes/triangle.h"
 
@@ -37,6 +37,9 @@ LocalRay leaf_ray(const Object& leaf, const Ray& ray);
 void leaf_hits(const Object& leaf, const LocalRay& r, ShapeHits& out);
 // The outward normal at a hit, in the leaf's own space (not normalised).
 Vector3 leaf_normal(const Object& leaf, const ShapeHit& h);
+// The unit outward normal at a hit in world space (the leaf's normal through its
+// transform; a smooth height field blends normals already transformed, as POV-Ray's).
+Vector3 leaf_world_normal(const Object& leaf, const ShapeHit& h);
 // `p` in the leaf's own space; surfaces (triangle, disc, polygon, a mesh without an
 // inside_vector) have no inside.
 bool leaf_inside(const Object& leaf, const Point3& p);
