@@ -949,8 +949,7 @@ Value Interpreter::parse_item_value(const Token& t) {
             "media",        "density",    "rainbow",     "photons",     "radiosity",
             "pigment_map",  "normal_map", "texture_map", "density_map", "slope_map",
             "material_map", "blob",       "isosurface",  "parametric",  "height_field",
-            "quadric",      "quartic",    "poly",        "cubic",       "sphere_sweep",
-            "lemon"};
+            "quadric",      "quartic",    "poly",        "cubic",       "lemon"};
         for (std::string_view item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }

@@ -107,26 +107,13 @@ void object_first(const Object& o, const Ray& ray, Real t_min, OracleHit& out,
 }  // namespace
 
 std::string shape_kind_name(const Object& leaf) {
-    static const char* names[] = {"sphere",
-                                  "box",
-                                  "plane",
-                                  "cylinder",
-                                  "cone",
-                                  "torus",
-                                  "disc",
-                                  "triangle",
-                                  "smooth_triangle",
-                                  "polygon",
-                                  "mesh",
-                                  "superellipsoid",
-                                  "ovus",
-                                  "sor",
-                                  "lathe",
-                                  "prism",
-                                  "bicubic_patch",
-                                  "julia_fractal",
-                                  "glyph",
-                                  "csg"};
+    static const char* names[] = {"sphere",   "box",           "plane",
+                                  "cylinder", "cone",          "torus",
+                                  "disc",     "triangle",      "smooth_triangle",
+                                  "polygon",  "mesh",          "superellipsoid",
+                                  "ovus",     "sor",           "lathe",
+                                  "prism",    "bicubic_patch", "julia_fractal",
+                                  "glyph",    "sphere_sweep",  "csg"};
     static_assert(std::variant_size_v<ShapeData> == std::size(names),
                   "one name per shape alternative");
     return names[leaf.shape.index()];
