@@ -57,6 +57,8 @@ const StressCase kCases[] = {
     // POV-Ray's Sturm stops at |p(t)/t| < 1e-12, a residual, not a distance: ~5e-9 off
     // (pixel-identical to POV-Ray at 160x120).
     {"lathe_stiff", {"lathe"}, 1e-8},
+    // POV-Ray's Sturm residual stop again (the B-spline's degree-10 envelope): ~1e-12.
+    {"sphere_sweep_stiff", {"sphere_sweep"}, 1e-11},
 };
 
 Scene load(const std::string& name) {
