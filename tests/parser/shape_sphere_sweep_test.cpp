@@ -91,6 +91,14 @@ TEST(ShapeSphereSweep, TransformsMoveTheSpheresUntilAMatrixIsKept) {
     const Object& child = std::get<Csg>(sc.objects[0].shape).children[0];
     EXPECT_EQ(std::get<SphereSweep>(child.shape).data->modeling[0].centre.y, 1.0);
     EXPECT_TRUE(child.transform.is_identity());
+    // A light moves its looks_like object by translate too.
+    sc = parse(std::string("light_source { <0, 1, 0>, rgb 1 looks_like { ") + base +
+               "} } translate z }");
+    const Object& look = sc.lights.at(0).looks_like.at(0);
+    const auto& moved = std::get<SphereSweep>(look.shape);
+    EXPECT_FALSE(moved.has_matrix);
+    EXPECT_EQ(moved.data->modeling[0].centre.y, 1.0);
+    EXPECT_EQ(moved.data->modeling[0].centre.z, 1.0);
 }
 
 TEST(ShapeSphereSweep, Errors) {
