@@ -462,6 +462,42 @@ struct HeightField {
     // it had when the height_field block closed (later ones, on a copy, change nothing).
     bool hierarchy = true;
 };
+// sphere_sweep { SPLINE N, <centre>, radius ... [tolerance T] }: a sphere moved along a
+// spline, its radius interpolated too. Per segment the centre and the radius are
+// polynomials in u in [0, 1] (linear: degree 1; Catmull-Rom and B-spline: degree 3).
+enum class SweepSpline : uint8_t { Linear, CatmullRom, BSpline };
+struct SweepSphere {
+    Point3 centre;
+    Real radius;  // negative after a negative uniform scale, as in POV-Ray
+};
+struct SweepSegment {
+    int coefficients = 2;  // 2 (linear) or 4 (cubic)
+    // centre(u) = sum centre_coef[k] u^k, radius(u) likewise.
+    Vector3 centre_coef[4] = {};
+    Real radius_coef[4] = {};
+    // The spheres at u = 0 and u = 1 and the derivatives there (the end caps' planes).
+    SweepSphere closing[2] = {};
+    Vector3 centre_deriv[2] = {};
+    Real radius_deriv[2] = {};
+};
+struct SphereSweepData {
+    SweepSpline spline = SweepSpline::Linear;
+    std::vector<SweepSphere> modeling;  // as given, then moved by baked transforms
+    std::vector<SweepSegment> segments;
+    std::vector<SweepSphere>
+        joints;  // each segment's first sphere, and the last one's end
+};
+struct SphereSweep {
+    std::shared_ptr<const SphereSweepData> data;  // shared by copies
+    Real tolerance = 1e-6;                        // the depth tolerance (world distance)
+    // POV-Ray moves the spheres themselves for translate, rotate and uniform scale until
+    // another transform makes it keep a matrix (Object::transform); from then on every
+    // transform goes into the matrix, and rays are met in its space.
+    bool has_matrix = false;
+};
+// The segments and joint spheres as POV-Ray's SphereSweep::Compute builds them from the
+// modeling spheres (their count suits the spline: the parser checks it).
+SphereSweepData make_sphere_sweep(SweepSpline spline, std::vector<SweepSphere> modeling);
 
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
@@ -484,7 +520,7 @@ struct Csg {
 using ShapeData =
     std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
                  SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor, Lathe, Prism,
-                 BicubicPatch, JuliaFractal, Glyph, HeightField, Csg>;
+                 BicubicPatch, JuliaFractal, Glyph, HeightField, SphereSweep, Csg>;
 
 struct Object {
     ShapeData shape;

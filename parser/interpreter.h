@@ -43,6 +43,15 @@ inline int saturating_int(double v) {
 // Composes `t` into every pattern transform of the layers (textures move with objects).
 void transform_textures(LayeredTexture& layers, const Transform& t);
 
+// Which of POV-Ray's transform methods a keyword calls on an object: a sphere_sweep
+// moves its spheres for translate, rotate and a uniform scale (until it keeps a
+// matrix) and keeps a matrix for anything else.
+struct TransformStep {
+    enum class Kind : uint8_t { Translate, Rotate, Scale, Matrix };
+    Kind kind = Kind::Matrix;
+    Vector3 amount{0, 0, 0};  // the keyword's vector
+};
+
 class Interpreter {
   public:
     Interpreter(const ParseOptions& options, SourceManager& sources);
@@ -132,10 +141,10 @@ class Interpreter {
     bool try_parse_object(const Token& t, Object& out);
     void parse_object_modifiers(Object& obj);
     bool try_object_modifier(Object& obj, const Token& t);
-    bool try_transform(const Token& t, Transform& out);
+    bool try_transform(const Token& t, Transform& out, TransformStep* step = nullptr);
     Transform parse_transform_block();
-    void apply_transform(Object& obj, const Transform& t);
-    void transform_light(Light& l, const Transform& t);
+    void apply_transform(Object& obj, const Transform& t, const TransformStep& step = {});
+    void transform_light(Light& l, const Transform& t, const TransformStep& step = {});
     // Moves light sources written inside CSG objects into the scene.
     void collect_lights(Object& obj);
     LayeredTexture parse_texture_block();  // after 'texture'
@@ -205,6 +214,7 @@ class Interpreter {
     };
     PendingHeightField parse_height_field(Object& out);
     void finish_height_field(Object& out, PendingHeightField pending);
+    void parse_sphere_sweep(Object& out);
     // POV-Ray's UV vector: a float stands for both; 3 or more components are an error.
     ProfilePoint parse_uv_vector();
     int parse_count();

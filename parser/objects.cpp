@@ -11,8 +11,8 @@ namespace {
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "blob",       "quadric",      "quartic", "poly",        "cubic",     "isosurface",
-        "parametric", "sphere_sweep", "lemon",   "light_group", "polynomial"};
+        "blob",       "quadric",    "quartic", "poly",        "cubic",
+        "isosurface", "parametric", "lemon",   "light_group", "polynomial"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -48,18 +48,48 @@ void transform_textures(LayeredTexture& layers, const Transform& t) {
     }
 }
 
-void Interpreter::transform_light(Light& l, const Transform& t) {
+void Interpreter::transform_light(Light& l, const Transform& t,
+                                  const TransformStep& step) {
     l.location = t.point(l.location);
     l.point_at = t.point(l.point_at);
     if (l.area) {
         l.area->axis1 = t.vector(l.area->axis1);
         l.area->axis2 = t.vector(l.area->axis2);
     }
-    for (Object& o : l.looks_like) apply_transform(o, t);
+    for (Object& o : l.looks_like) apply_transform(o, t, step);
 }
 
-void Interpreter::apply_transform(Object& obj, const Transform& t) {
-    if (auto patch = std::get_if<BicubicPatch>(&obj.shape)) {
+namespace {
+
+// POV-Ray's sphere_sweep without a matrix moves its modeling spheres for translate,
+// rotate and a uniform scale (radii scaled too) and rebuilds its segments; any other
+// transform makes it keep one, into which every later transform goes.
+bool move_sweep_spheres(SphereSweep& sweep, const Transform& t,
+                        const TransformStep& step) {
+    using Kind = TransformStep::Kind;
+    const Vector3& v = step.amount;
+    const bool uniform = step.kind != Kind::Scale || (v.x == v.y && v.x == v.z);
+    if (sweep.has_matrix || step.kind == Kind::Matrix || !uniform) {
+        sweep.has_matrix = true;
+        return false;
+    }
+    std::vector<SweepSphere> moved = sweep.data->modeling;
+    for (SweepSphere& m : moved) {
+        m.centre = t.point(m.centre);
+        if (step.kind == Kind::Scale) m.radius *= v.x;
+    }
+    sweep.data = std::make_shared<SphereSweepData>(
+        make_sphere_sweep(sweep.data->spline, std::move(moved)));
+    return true;
+}
+
+}  // namespace
+
+void Interpreter::apply_transform(Object& obj, const Transform& t,
+                                  const TransformStep& step) {
+    if (auto sweep = std::get_if<SphereSweep>(&obj.shape);
+        sweep && move_sweep_spheres(*sweep, t, step)) {
+    } else if (auto patch = std::get_if<BicubicPatch>(&obj.shape)) {
         // POV-Ray keeps no matrix for a patch: its control points move, and its flat
         // pieces are cut again from them.
         auto moved = std::make_shared<BicubicPatchData>(*patch->data);
@@ -76,28 +106,31 @@ void Interpreter::apply_transform(Object& obj, const Transform& t) {
     if (obj.interior_texture.allocated())
         transform_textures(obj.interior_texture.edit(), t);
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
-        for (Object& child : csg->children) apply_transform(child, t);
-        for (Light& l : csg->lights) transform_light(l, t);
+        for (Object& child : csg->children) apply_transform(child, t, step);
+        for (Light& l : csg->lights) transform_light(l, t, step);
         if (csg->text_box) move_pov_box(*csg->text_box, t);
     }
     if (auto mesh = std::get_if<Mesh>(&obj.shape)) {  // per-face textures move too
         for (LayeredTexture& tex : mesh->textures) transform_textures(tex, t);
     }
     if (obj.clipped_by.allocated()) {
-        for (Object& o : obj.clipped_by.edit()) apply_transform(o, t);
+        for (Object& o : obj.clipped_by.edit()) apply_transform(o, t, step);
     }
     if (obj.bounded_by.allocated()) {
-        for (Object& o : obj.bounded_by.edit()) apply_transform(o, t);
+        for (Object& o : obj.bounded_by.edit()) apply_transform(o, t, step);
     }
 }
 
-bool Interpreter::try_transform(const Token& t, Transform& out) {
+bool Interpreter::try_transform(const Token& t, Transform& out, TransformStep* step) {
     if (t.kind != TokenKind::Word) return false;
     std::string_view w = t.text;
+    TransformStep kind;
     if (w == "translate") {
-        out = Transform::translate(parse_vector());
+        kind = {TransformStep::Kind::Translate, parse_vector()};
+        out = Transform::translate(kind.amount);
     } else if (w == "rotate") {
-        out = Transform::rotate(parse_vector());
+        kind = {TransformStep::Kind::Rotate, parse_vector()};
+        out = Transform::rotate(kind.amount);
     } else if (w == "scale") {
         Token at = peek();
         Vector3 s = parse_vector();
@@ -110,6 +143,7 @@ bool Interpreter::try_transform(const Token& t, Transform& out) {
                               " (the object would be flattened)");
         }
         out = Transform::scale(s);
+        kind = {TransformStep::Kind::Scale, s};
     } else if (w == "matrix") {
         expect_punct('<', "to start the 12 matrix values");
         Real m[12];
@@ -138,6 +172,7 @@ bool Interpreter::try_transform(const Token& t, Transform& out) {
     } else {
         return false;
     }
+    if (step) *step = kind;
     return true;
 }
 
@@ -175,8 +210,9 @@ void Interpreter::link_textures(LayeredTexture& onto, LayeredTexture&& layers,
 
 bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
     Transform tr;
-    if (try_transform(t, tr)) {
-        apply_transform(obj, tr);
+    TransformStep step;
+    if (try_transform(t, tr, &step)) {
+        apply_transform(obj, tr, step);
         return true;
     }
     if (t.kind != TokenKind::Word) return false;
@@ -486,6 +522,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "lathe") {
         open();
         if (!copy_identifier()) parse_lathe(out);
+    } else if (w == "sphere_sweep") {
+        open();
+        if (!copy_identifier()) parse_sphere_sweep(out);
     } else if (w == "disc") {
         open();
         if (!copy_identifier()) {
@@ -606,8 +645,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 Token m = next();
                 if (is_punct(m, '}')) break;
                 Transform tr;
-                if (!try_transform(m, tr)) expected("a transformation or '}'", m);
-                apply_transform(out, tr);
+                TransformStep step;
+                if (!try_transform(m, tr, &step)) expected("a transformation or '}'", m);
+                apply_transform(out, tr, step);
             }
             return true;
         }

@@ -294,8 +294,9 @@ Light Interpreter::parse_light_block() {
         Token t = next();
         if (is_punct(t, '}')) break;
         Transform tr;
-        if (try_transform(t, tr)) {
-            transform_light(l, tr);
+        TransformStep step;
+        if (try_transform(t, tr, &step)) {
+            transform_light(l, tr, step);
             continue;
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
@@ -379,7 +380,8 @@ Light Interpreter::parse_light_block() {
             finish_object(obj);
             obj.no_shadow = true;
             obj.transform = obj.transform;
-            apply_transform(obj, Transform::translate(l.location));
+            apply_transform(obj, Transform::translate(l.location),
+                            {TransformStep::Kind::Translate, l.location});
             l.looks_like.push_back(std::move(obj));
         } else if (w == "photons") {
             unsupported(t, "photons");
@@ -946,10 +948,10 @@ Value Interpreter::parse_item_value(const Token& t) {
             return a;
         }
         static constexpr std::string_view kUnsupportedItems[] = {
-            "media",        "density",    "rainbow",     "photons",      "radiosity",
-            "pigment_map",  "normal_map", "texture_map", "density_map",  "slope_map",
-            "material_map", "blob",       "isosurface",  "parametric",   "quadric",
-            "quartic",      "poly",       "cubic",       "sphere_sweep", "lemon"};
+            "media",        "density",    "rainbow",     "photons",     "radiosity",
+            "pigment_map",  "normal_map", "texture_map", "density_map", "slope_map",
+            "material_map", "blob",       "isosurface",  "parametric",  "quadric",
+            "quartic",      "poly",       "cubic",       "lemon"};
         for (std::string_view item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }

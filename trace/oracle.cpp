@@ -113,7 +113,8 @@ std::string shape_kind_name(const Object& leaf) {
                                   "polygon",  "mesh",          "superellipsoid",
                                   "ovus",     "sor",           "lathe",
                                   "prism",    "bicubic_patch", "julia_fractal",
-                                  "glyph",    "height_field",  "csg"};
+                                  "glyph",    "height_field",  "sphere_sweep",
+                                  "csg"};
     static_assert(std::variant_size_v<ShapeData> == std::size(names),
                   "one name per shape alternative");
     return names[leaf.shape.index()];

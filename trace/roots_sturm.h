@@ -1,6 +1,6 @@
-// Sturm-sequence root isolation for polynomials of degree <= 6, generic over the scalar
-// type: the tracer instantiates it with double, the numerics oracle with 50-digit binary
-// floats.
+// Sturm-sequence root isolation for polynomials of degree <= N (6 unless asked: a
+// sphere_sweep's envelope has degree 10), generic over the scalar type: the tracer
+// instantiates it with double, the numerics oracle with 50-digit binary floats.
 //
 // Sturm's theorem counts the distinct real roots in (a, b] exactly from sign changes, so
 // the isolation never loses a root of a stiff (thin-torus) quartic the way a closed form
@@ -14,10 +14,10 @@
 
 namespace povwall::trace {
 
-template <class T>
+template <class T, int N = 6>
 struct SturmPoly {
     int degree = -1;  // -1: the zero polynomial
-    T c[7];           // c[i]: coefficient of x^i
+    T c[N + 1];       // c[i]: coefficient of x^i
 
     T operator()(const T& x) const {
         T v = 0;
@@ -32,8 +32,9 @@ using std::abs;
 
 // -(a mod b), with remainder coefficients below `rel_eps` of the dividend's scale set to
 // zero (they are rounding noise; keeping them would invent sign changes).
-template <class T>
-SturmPoly<T> negated_remainder(SturmPoly<T> a, const SturmPoly<T>& b, const T& rel_eps) {
+template <class T, int N>
+SturmPoly<T, N> negated_remainder(SturmPoly<T, N> a, const SturmPoly<T, N>& b,
+                                  const T& rel_eps) {
     T scale = 0;
     for (int i = 0; i <= a.degree; ++i) scale = std::max(scale, T(abs(a.c[i])));
     for (int k = a.degree - b.degree; k >= 0; --k) {
@@ -41,7 +42,7 @@ SturmPoly<T> negated_remainder(SturmPoly<T> a, const SturmPoly<T>& b, const T& r
         for (int i = 0; i <= b.degree; ++i) a.c[k + i] -= f * b.c[i];
         a.c[k + b.degree] = 0;
     }
-    SturmPoly<T> r;
+    SturmPoly<T, N> r;
     r.degree = -1;
     for (int i = b.degree - 1; i >= 0; --i) {
         if (abs(a.c[i]) > rel_eps * scale) {
@@ -55,23 +56,23 @@ SturmPoly<T> negated_remainder(SturmPoly<T> a, const SturmPoly<T>& b, const T& r
 
 }  // namespace sturm_detail
 
-template <class T>
+template <class T, int N = 6>
 class SturmSequence {
   public:
-    explicit SturmSequence(const SturmPoly<T>& p) {
+    explicit SturmSequence(const SturmPoly<T, N>& p) {
         const T rel_eps = T(64) * std::numeric_limits<T>::epsilon();
         seq_[0] = p;
         seq_[1].degree = p.degree - 1;
         for (int i = 1; i <= p.degree; ++i) seq_[1].c[i - 1] = T(i) * p.c[i];
         n_ = 2;
-        while (n_ < 8 && seq_[n_ - 1].degree > 0) {
-            SturmPoly<T> r =
+        while (n_ < N + 2 && seq_[n_ - 1].degree > 0) {
+            SturmPoly<T, N> r =
                 sturm_detail::negated_remainder(seq_[n_ - 2], seq_[n_ - 1], rel_eps);
             if (r.degree < 0) break;  // multiple roots: the last entry is the gcd
             seq_[n_++] = r;
         }
     }
-    const SturmPoly<T>& poly() const { return seq_[0]; }
+    const SturmPoly<T, N>& poly() const { return seq_[0]; }
     // Sign changes along the sequence at x (zeros skipped).
     int sign_changes(const T& x) const {
         int changes = 0, last = 0;
@@ -86,20 +87,20 @@ class SturmSequence {
     }
 
   private:
-    SturmPoly<T> seq_[8];
+    SturmPoly<T, N> seq_[N + 2];
     int n_ = 0;
 };
 
-template <class T>
-T refine_single_root(const SturmSequence<T>& seq, T a, T b, int va);
+template <class T, int N>
+T refine_single_root(const SturmSequence<T, N>& seq, T a, T b, int va);
 
 // Distinct real roots of p in (lo, hi], ascending, at most `max_roots`. A cluster
 // narrower than the working precision is reported once per root it holds.
-template <class T>
-int sturm_real_roots(const SturmPoly<T>& p, T lo, T hi, T* roots, int max_roots) {
+template <class T, int N>
+int sturm_real_roots(const SturmPoly<T, N>& p, T lo, T hi, T* roots, int max_roots) {
     using std::abs;
     if (p.degree <= 0 || !(lo < hi)) return 0;
-    const SturmSequence<T> seq(p);
+    const SturmSequence<T, N> seq(p);
     const T eps = std::numeric_limits<T>::epsilon();
     struct Span {
         T a, b;
@@ -134,11 +135,11 @@ int sturm_real_roots(const SturmPoly<T>& p, T lo, T hi, T* roots, int max_roots)
 // The one distinct root in (a, b] (va = sign changes at a). Newton steps while they stay
 // in the bracket and shrink it; bisection (on the sign of p, or on Sturm counts for a
 // root of even multiplicity) otherwise.
-template <class T>
-T refine_single_root(const SturmSequence<T>& seq, T a, T b, int va) {
+template <class T, int N>
+T refine_single_root(const SturmSequence<T, N>& seq, T a, T b, int va) {
     using std::abs;
-    const SturmPoly<T>& p = seq.poly();
-    SturmPoly<T> dp;
+    const SturmPoly<T, N>& p = seq.poly();
+    SturmPoly<T, N> dp;
     dp.degree = p.degree - 1;
     for (int i = 1; i <= p.degree; ++i) dp.c[i - 1] = T(i) * p.c[i];
     const T eps = std::numeric_limits<T>::epsilon();

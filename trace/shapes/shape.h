@@ -24,6 +24,7 @@
 #include "trace/shapes/prism.h"
 #include "trace/shapes/sor.h"
 #include "trace/shapes/sphere.h"
+#include "trace/shapes/sphere_sweep.h"
 #include "trace/shapes/superellipsoid.h"
 #include "trace/shapes/text.h"
 #include "trace/shapes/torus.h"
