@@ -370,6 +370,23 @@ struct GlyphOutline {
     std::vector<GlyphSegment> segments;  // every contour's, in file order
     // POV-Ray's box of the glyph in em units: the header's, widened by the points.
     Real xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+    // The box of the segments' points (in the segments' units): no segment leaves it, so
+    // rays and points outside it skip the per-segment work. Unbounded until
+    // set_point_box() (an outline built without it skips nothing).
+    Real point_xmin = -kInfinity, point_xmax = kInfinity;
+    Real point_ymin = -kInfinity, point_ymax = kInfinity;
+    void set_point_box() {
+        point_xmin = point_ymin = kInfinity;
+        point_xmax = point_ymax = -kInfinity;
+        for (const GlyphSegment& s : segments) {
+            for (int k = 0; k < (s.curve ? 3 : 2); ++k) {
+                point_xmin = std::min(point_xmin, s.x[k]);
+                point_xmax = std::max(point_xmax, s.x[k]);
+                point_ymin = std::min(point_ymin, s.y[k]);
+                point_ymax = std::max(point_ymax, s.y[k]);
+            }
+        }
+    }
 };
 struct Glyph {
     std::shared_ptr<const GlyphOutline> outline;

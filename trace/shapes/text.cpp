@@ -83,6 +83,11 @@ int glyph_solve_quad(Real a, Real b, Real c, Real roots[2]) {
 }
 
 bool inside_glyph_outline(const GlyphOutline& g, Real x, Real y) {
+    // Above, below or right of every point, each segment's count below is exactly 0 (a
+    // curve lies in its points' hull; the comparisons are against the points themselves
+    // or a convex combination of them, which cannot exceed their largest). Left of them
+    // it is not: every crossing counts there, so the loop decides.
+    if (y > g.point_ymax || y < g.point_ymin || x > g.point_xmax) return false;
     int crossings = 0;
     for (const GlyphSegment& s : g.segments)
         crossings += s.curve ? curve_crossings(s, x, y) : line_crossing(s, x, y);
@@ -158,9 +163,37 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
         if (z >= 0 && z <= depth && t > kGlyphTolerance)
             out.push_back({t, {x, y, z}, index});
     };
+    // The projected line's value at a point, and a margin far above the rounding of the
+    // coefficients below (relative 1e-16) yet far below any real crossing's: a segment
+    // whose points all lie further than it on one side has no crossing, nor does an
+    // outline whose box does (a curve lies in its points' hull, where the line's value
+    // is a convex combination of its values at the points).
+    auto side = [&](Real x, Real y) { return a * x + b * y + c; };
+    const Real margin = 1e-9 * (std::fabs(a) * std::max(std::fabs(outline.point_xmin),
+                                                        std::fabs(outline.point_xmax)) +
+                                std::fabs(b) * std::max(std::fabs(outline.point_ymin),
+                                                        std::fabs(outline.point_ymax)) +
+                                std::fabs(c));
+    auto clear_of = [&](const Real* xs, const Real* ys, int count) {
+        bool above = true, below = true;
+        for (int k = 0; k < count; ++k) {
+            const Real v = side(xs[k], ys[k]);
+            above = above && v > margin;
+            below = below && v < -margin;
+        }
+        return above || below;
+    };
+    if (std::isfinite(margin)) {
+        const Real bx[4] = {outline.point_xmin, outline.point_xmax, outline.point_xmin,
+                            outline.point_xmax};
+        const Real by[4] = {outline.point_ymin, outline.point_ymin, outline.point_ymax,
+                            outline.point_ymax};
+        if (clear_of(bx, by, 4)) return;
+    }
     const int n = int(outline.segments.size());
     for (int i = 0; i < n; ++i) {
         const GlyphSegment& s = outline.segments[i];
+        if (clear_of(s.x, s.y, s.curve ? 3 : 2)) continue;
         if (!s.curve) {
             const Real d0 = s.x[1] - s.x[0], d1 = s.y[1] - s.y[0];
             const Real den = d1 * D.x - d0 * D.y;
