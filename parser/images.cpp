@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "parser/image_file_types.h"
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
@@ -30,25 +31,15 @@ struct Curve {
 
 Curve power(float exponent) { return {Curve::Kind::Power, exponent}; }
 
-// The file types POV-Ray names before the file name, and the extensions it tries.
-struct FileType {
-    const char* keyword;
-    const char* extension;
-};
-constexpr FileType kFileTypes[] = {
-    {"png", ".png"},  {"tga", ".tga"},  {"ppm", ".ppm"}, {"pgm", ".pgm"}, {"gif", ".gif"},
-    {"jpeg", ".jpg"}, {"tiff", ".tif"}, {"bmp", ".bmp"}, {"exr", ".exr"}, {"hdr", ".hdr"},
-    {"iff", ".iff"},  {"sys", ""},      {"pot", ".pot"}};
-
 }  // namespace
 
 std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& keyword,
                                                                    Normal* bump) {
     expect_punct('{', bump ? "after 'bump_map'" : "after 'image_map'");
     const bool is_bump = bump != nullptr;
-    const FileType* type = nullptr;
+    const ImageFileType* type = nullptr;
     const Token& first = peek();
-    for (const FileType& ft : kFileTypes) {
+    for (const ImageFileType& ft : kImageFileTypes) {
         if (is_word(first, ft.keyword)) type = &ft;
     }
     if (type) {

@@ -5,22 +5,13 @@
 #include <cmath>
 #include <filesystem>
 
+#include "parser/image_file_types.h"
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The file types POV-Ray names before a height field's file, and their extensions.
-struct FileType {
-    const char* keyword;
-    const char* extension;
-};
-constexpr FileType kFileTypes[] = {
-    {"png", ".png"},  {"tga", ".tga"},  {"ppm", ".ppm"}, {"pgm", ".pgm"}, {"gif", ".gif"},
-    {"jpeg", ".jpg"}, {"tiff", ".tif"}, {"bmp", ".bmp"}, {"exr", ".exr"}, {"hdr", ".hdr"},
-    {"iff", ".iff"},  {"sys", ""},      {"pot", ".pot"}};
 
 // A grey container's height: its value as a float in [0, 1] times 65535 in single
 // precision, truncated (an 8-bit v gives v * 257, a 16-bit one itself).
@@ -107,8 +98,8 @@ Interpreter::PendingHeightField Interpreter::parse_height_field(Object& out) {
             }
         }
     } else {
-        const FileType* type = nullptr;
-        for (const FileType& ft : kFileTypes) {
+        const ImageFileType* type = nullptr;
+        for (const ImageFileType& ft : kImageFileTypes) {
             if (is_word(first, ft.keyword)) type = &ft;
         }
         if (type) {
@@ -123,7 +114,7 @@ Interpreter::PendingHeightField Interpreter::parse_height_field(Object& out) {
         if (!type) {
             const std::string ext = fs::path(name).extension().string();
             bool known = false;
-            for (const FileType& ft : kFileTypes)
+            for (const ImageFileType& ft : kImageFileTypes)
                 known = known || (*ft.extension && ext == ft.extension);
             if (ext.empty())
                 unsupported(name_token, "height_field file without an extension");
