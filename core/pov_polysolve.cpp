@@ -1,5 +1,6 @@
 #include "core/pov_polysolve.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace povwall {
@@ -144,7 +145,8 @@ struct Poly {
 // The remainder of u divided by v, whose leading coefficient is +1 or -1; remainder
 // coefficients below 1e-10 are cleared from the top. Returns the remainder's degree.
 int remainder(const Poly& u, const Poly& v, Poly& r) {
-    r = u;
+    r.degree = u.degree;  // only the used coefficients: a whole Poly is 37 doubles
+    std::copy(u.c, u.c + u.degree + 1, r.c);
     const int top = v.degree;
     if (v.c[top] < 0) {
         // Dividing by -1 leading: alternate quotient signs folded into the update.
@@ -170,7 +172,8 @@ struct SturmChain {
     // coefficient, then negated remainders scaled to leading -1, down to a constant,
     // which is negated unscaled.
     explicit SturmChain(const Poly& p) {
-        s[0] = p;
+        s[0].degree = p.degree;
+        std::copy(p.c, p.c + p.degree + 1, s[0].c);
         const int n = p.degree;
         s[1].degree = n - 1;
         const Real f = std::fabs(p.c[n] * n);
@@ -183,6 +186,36 @@ struct SturmChain {
         }
         s[k].c[0] = -s[k].c[0];
         last = k;
+    }
+
+    // Above this x every element, evaluated by Horner's rule in doubles, has the sign of
+    // its leading coefficient, so changes(x) is changes_at(true) without evaluating. The
+    // computed value is the exact value of the element with each coefficient off by at
+    // most gamma = 2 m u (m its degree, u the unit roundoff); Fujiwara's bound of that
+    // perturbed polynomial (every complex root within 2 max |c_(m-i) / c_m|^(1/i)) is
+    // taken with gamma (and the ratio's own rounding), each i-th root rounded up to a
+    // power of two (frexp, not pow: this runs once per polynomial).
+    Real sign_settled_above() const {
+        int bound_exponent = 0;  // the bound is 2^bound_exponent, at least 1
+        for (int k = 0; k <= last; ++k) {
+            const Poly& e = s[k];
+            const int m = e.degree;
+            if (m == 0) continue;
+            const Real gamma = (4.0 * m + 4) * 0x1p-53;
+            const Real lead = std::fabs(e.c[m]) * (1 - gamma);
+            if (!(lead > 0)) return kBracketEnd * 2;  // never settled: always evaluate
+            for (int i = 1; i <= m; ++i) {
+                const Real ratio = std::fabs(e.c[m - i]) * (1 + gamma) / lead;
+                if (ratio == 0) continue;
+                if (!std::isfinite(ratio)) return kBracketEnd * 2;
+                int exponent;  // ratio < 2^exponent, so ratio^(1/i) < 2^ceil(exponent/i)
+                std::frexp(ratio, &exponent);
+                const int root_exponent =
+                    exponent > 0 ? (exponent + i - 1) / i : -((-exponent) / i);
+                bound_exponent = std::max(bound_exponent, 1 + root_exponent);
+            }
+        }
+        return std::ldexp(1.0, bound_exponent);
     }
 
     // Sign changes along the chain at x; a zero value counts as a change after it.
@@ -257,50 +290,73 @@ bool regula_falsi(const Poly& p, Real a, Real b, Real& root) {
     return false;
 }
 
-int bisect(const SturmChain& chain, Real lo, Real hi, int at_lo, int at_hi, Real* roots) {
-    if (at_lo - at_hi == 1 && regula_falsi(chain.s[0], lo, hi, roots[0])) return 1;
-    const bool single = at_lo - at_hi == 1;
-    Real mid = lo;
-    for (int i = 0; i < kMaxIterations; ++i) {
-        mid = (lo + hi) / 2;
-        const int at_mid = chain.changes(mid);
-        if (at_mid < at_hi || at_mid > at_lo) return 0;  // inconsistent counts: give up
-        if (converged(lo, hi, mid)) {
-            roots[0] = mid;
-            return 1;
-        }
-        const int left = at_lo - at_mid, right = at_mid - at_hi;
-        if (!single && left != 0 && right != 0) {
-            const int n = bisect(chain, lo, mid, at_lo, at_mid, roots);
-            return n + bisect(chain, mid, hi, at_mid, at_hi, roots + n);
-        }
-        if (left == 0) {
-            lo = mid;
-            at_lo = at_mid;
-        } else {
-            hi = mid;
-            at_hi = at_mid;
-        }
-    }
-    roots[0] = mid;
-    return 1;
-}
+// The part of POV-Ray's bisection that finds roots up to `wanted`, with the same results
+// there: an interval starting above `wanted` (roots the caller drops) is not searched,
+// and above `settled` the sign changes are known without evaluating the chain. The path
+// of the search (which intervals recurse, the regula falsi tried on entry, the iteration
+// count) stays POV-Ray's, so the roots it keeps are bit for bit its roots.
+struct Bisection {
+    const SturmChain& chain;
+    Real wanted;   // largest root the caller keeps, with a margin for rounding
+    Real settled;  // sign_settled_above()
+    int at_infinity;
 
-int sturm_roots(int n, const Real* c, Real* roots) {
+    int changes(Real x) const { return x > settled ? at_infinity : chain.changes(x); }
+
+    int run(Real lo, Real hi, int at_lo, int at_hi, Real* roots) const {
+        if (lo > wanted) return 0;
+        if (at_lo - at_hi == 1 && regula_falsi(chain.s[0], lo, hi, roots[0])) return 1;
+        const bool single = at_lo - at_hi == 1;
+        Real mid = lo;
+        for (int i = 0; i < kMaxIterations; ++i) {
+            mid = (lo + hi) / 2;
+            const int at_mid = changes(mid);
+            if (at_mid < at_hi || at_mid > at_lo)
+                return 0;  // inconsistent counts: give up
+            if (converged(lo, hi, mid)) {
+                roots[0] = mid;
+                return 1;
+            }
+            const int left = at_lo - at_mid, right = at_mid - at_hi;
+            if (!single && left != 0 && right != 0) {
+                const int n = run(lo, mid, at_lo, at_mid, roots);
+                return n + run(mid, hi, at_mid, at_hi, roots + n);
+            }
+            if (left == 0) {
+                if (mid > wanted) return 0;
+                lo = mid;
+                at_lo = at_mid;
+            } else {
+                hi = mid;
+                at_hi = at_mid;
+            }
+        }
+        roots[0] = mid;
+        return 1;
+    }
+};
+
+int sturm_roots(int n, const Real* c, Real* roots, Real wanted) {
     Poly p;
     p.degree = n;
     for (int i = 0; i <= n; ++i) p.c[n - i] = c[i] / c[0];
     const SturmChain chain(p);
-    if (chain.changes_at(false) == chain.changes_at(true)) return 0;
-    const int at_lo = chain.changes(0), at_hi = chain.changes(kBracketEnd);
+    const int at_infinity = chain.changes_at(true);
+    if (chain.changes_at(false) == at_infinity) return 0;
+    // A root returned from [lo, hi] lies there up to regula falsi's rounding; the margin
+    // keeps every root at or below `wanted` that POV-Ray's whole search would return.
+    const Bisection search{
+        chain, wanted < kBracketEnd ? wanted * (1 + 1e-6) + 1e-300 : kBracketEnd,
+        chain.sign_settled_above(), at_infinity};
+    const int at_lo = chain.changes(0), at_hi = search.changes(kBracketEnd);
     if (at_lo == at_hi) return 0;
-    return bisect(chain, 0, kBracketEnd, at_lo, at_hi, roots);
+    return search.run(0, kBracketEnd, at_lo, at_hi, roots);
 }
 
 }  // namespace
 
 int pov_solve_polynomial(int n, const Real* c, Real* roots, bool sturm,
-                         Real root_elimination) {
+                         Real root_elimination, Real wanted) {
     int skip = 0;
     while (skip < n && std::fabs(c[skip]) < kSmallEnough) ++skip;
     n -= skip;
@@ -318,15 +374,16 @@ int pov_solve_polynomial(int n, const Real* c, Real* roots, bool sturm,
             return quadratic(c, roots);
         case 3:
             if (eliminate) return quadratic(c, roots);
-            return sturm ? sturm_roots(3, c, roots) : cubic(c, roots);
+            return sturm ? sturm_roots(3, c, roots, wanted) : cubic(c, roots);
         case 4:
-            if (eliminate) return sturm ? sturm_roots(3, c, roots) : cubic(c, roots);
-            if (sturm || difficult(c)) return sturm_roots(4, c, roots);
+            if (eliminate)
+                return sturm ? sturm_roots(3, c, roots, wanted) : cubic(c, roots);
+            if (sturm || difficult(c)) return sturm_roots(4, c, roots, wanted);
             return quartic(c, roots);
         default:
             // POV-Ray also solves the eliminated polynomial here, then overwrites the
             // result.
-            return sturm_roots(n, c, roots);
+            return sturm_roots(n, c, roots, wanted);
     }
 }
 

@@ -17,8 +17,10 @@ constexpr int kPovMaxOrder = 35;
 // Real roots of c[0] x^n + ... + c[n] (highest power first, n <= kPovMaxOrder), in
 // POV-Ray's order, into roots[0..n-1]. `sturm` selects Sturm bisection for degrees 3
 // and 4; `root_elimination` > 0 drops the constant term when it is below that fraction
-// of the linear one (a root near 0). Sturm only returns roots in [0, 1e7].
+// of the linear one (a root near 0). Sturm only returns roots in [0, 1e7]; with
+// `wanted` below that, it may leave out roots above `wanted` (the caller drops them) and
+// returns the others exactly as POV-Ray (in its order, without the left-out ones).
 int pov_solve_polynomial(int n, const Real* c, Real* roots, bool sturm,
-                         Real root_elimination = 0);
+                         Real root_elimination = 0, Real wanted = 1e7);
 
 }  // namespace povwall

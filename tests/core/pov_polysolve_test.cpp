@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace povwall {
 namespace {
@@ -84,6 +86,64 @@ TEST(PovPolysolve, HighDegreesUpToPovRaysMaxOrderGoThroughSturm) {
     // when |f(x) / x| < 1e-12, which at this slope (35 * 2^34) is 3e-9 short of 2.
     ASSERT_EQ(pov_solve_polynomial(kPovMaxOrder, big, r, false), 1);
     EXPECT_EQ(r[0], 1.9999999967268423);
+}
+
+// With `wanted`, Sturm may leave out roots above it; the roots at or below it are the
+// whole search's, bit for bit and in its order (the search's path is kept: which
+// intervals recurse, the regula falsi on entry, the iteration count). Polynomials with
+// roots on both sides of 1, clusters, and random coefficients of every degree.
+TEST(PovPolysolve, RootsUpToWantedAreTheWholeSearchsRoots) {
+    auto expand = [](const std::vector<Real>& roots, Real scale) {
+        std::vector<Real> c{scale};  // highest power first
+        for (const Real r : roots) {
+            c.push_back(0);
+            for (size_t i = c.size() - 1; i > 0; --i) c[i] -= r * c[i - 1];
+        }
+        return c;
+    };
+    std::vector<std::vector<Real>> polys{
+        expand({0.3, 0.7, 5, 20, 3000, -2}, 1),
+        expand({0.999999, 1.000001, 1.5, 0.25, 40, 41}, -3e-4),
+        expand({1e-3, 2e-3, 0.9, 7e5, 9e6, 12}, 2),
+        expand({0.5, 0.5000001, 0.5000002, 2, 3, 4, 5, 6, 7, 8}, 1),
+    };
+    uint64_t state = 12345;
+    auto uniform = [&] {  // reproducible on every platform
+        state = state * 6364136223846793005u + 1442695040888963407u;
+        return Real(state >> 11) * 0x1p-53 * 2 - 1;
+    };
+    for (int k = 0; k < 3000; ++k) {
+        const int n = 3 + k % 8;
+        std::vector<Real> c(size_t(n) + 1);
+        for (Real& x : c) x = uniform() * std::pow(10.0, 3 * uniform());
+        polys.push_back(c);
+    }
+    int kept = 0;
+    for (const auto& c : polys) {
+        const int n = int(c.size()) - 1;
+        for (const Real wanted : {1.0, 0.5, 10.0}) {
+            Real all[40], some[40];
+            const int na = pov_solve_polynomial(n, c.data(), all, true);
+            const int ns = pov_solve_polynomial(n, c.data(), some, true, 0, wanted);
+            std::vector<Real> a, s;
+            for (int i = 0; i < na; ++i)
+                if (all[i] <= wanted) a.push_back(all[i]);
+            for (int i = 0; i < ns; ++i)
+                if (some[i] <= wanted) s.push_back(some[i]);
+            ASSERT_EQ(a, s) << "degree " << n << ", wanted " << wanted;
+            kept += int(a.size());
+        }
+    }
+    EXPECT_GT(kept, 2000);  // the comparison saw roots
+    // The first polynomial's roots up to 1, found with wanted = 1: exactly two.
+    Real r[6];
+    const int n = pov_solve_polynomial(6, polys[0].data(), r, true, 0, 1.0);
+    std::vector<Real> low;
+    for (int i = 0; i < n; ++i)
+        if (r[i] <= 1) low.push_back(r[i]);
+    ASSERT_EQ(low.size(), 2u);
+    EXPECT_NEAR(low[0], 0.3, 1e-12);
+    EXPECT_NEAR(low[1], 0.7, 1e-12);
 }
 
 }  // namespace

@@ -95,7 +95,8 @@ void intersect_lathe(const Lathe& s, const Point3& p, const Vector3& d, Real dir
         const Seg& e = sp.segments[in.segment];
         Real x[7], roots[6];  // degree 6 at most (cubic and Bezier segments)
         segment_polynomial(sp.kind, e, p, d, rho, m, dy2, x);
-        int n = pov_solve_polynomial(degree, x, roots, sturm);
+        // Only spline parameters w in [0, 1] are kept: Sturm need not search above.
+        int n = pov_solve_polynomial(degree, x, roots, sturm, 0, 1.0);
         const int seg = int(in.segment);
         while (n--) {
             const Real w = roots[n];
@@ -142,7 +143,7 @@ bool inside_lathe(const Lathe& s, const Point3& p) {
         const Seg& e = sp.segments[i];
         const Real c[4] = {e.aw, e.bw, e.cw, e.dw - p.y};
         Real roots[3];
-        int n = pov_solve_polynomial(3, c, roots, s.sturm);
+        int n = pov_solve_polynomial(3, c, roots, s.sturm, 0, 1.0);
         while (n--)
             if (roots[n] >= 0.0 && roots[n] <= 1.0 && radius_at(e, roots[n]) - r >= 0)
                 ++crossings;

@@ -64,7 +64,8 @@ int wall_roots(const Prism& p, const Real c[4], Real roots[3]) {
             return pov_solve_polynomial(2, c + 1, roots, false);
         case Prism::Spline::Cubic:
         case Prism::Spline::Bezier:
-            return pov_solve_polynomial(3, c, roots, p.sturm);
+            return pov_solve_polynomial(3, c, roots, p.sturm, 0,
+                                        1.0);  // t in [0, 1] kept
     }
     return 0;
 }
@@ -78,7 +79,7 @@ bool prism_in_curve(const Prism& p, Real u, Real v) {
         if (v < s.v1 || v > s.v2 || u > s.u2) continue;
         const Real c[4] = {s.a[1], s.b[1], s.c[1], s.d[1] - v};
         Real roots[3];
-        const int n = pov_solve_polynomial(3, c, roots, p.sturm);
+        const int n = pov_solve_polynomial(3, c, roots, p.sturm, 0, 1.0);
         for (int i = 0; i < n; ++i) {
             const Real t = roots[i];
             if (t >= 0 && t <= 1 && at(s, 0, t) - u >= 0) ++crossings;
