@@ -915,6 +915,7 @@ Image render_space(const Scene& scene, const trace::RenderSettings& settings,
                       : int(std::max(1u, std::thread::hardware_concurrency()));
     host.run(threads, true);
     Image image = host.image(settings.width, settings.height, settings.alpha);
+    trace::finish_pixels_without_camera_ray(image, scene.camera, settings);
     if (stats) {
         stats->parent_tracking = host.parent_tracking();
         stats->boxes = host.box_stats();

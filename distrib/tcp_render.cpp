@@ -1491,6 +1491,7 @@ class TcpCoordinator {
         ++frames_;
         Image image =
             image_from_sums(sums_, settings.width, settings.height, settings.alpha);
+        trace::finish_pixels_without_camera_ray(image, scene.camera, settings);
         if (stats) {
             stats->parent_tracking = emitter_->parent_tracking();
             stats->boxes = box_stats_;

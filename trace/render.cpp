@@ -69,6 +69,19 @@ void trace_camera_sample(Tracer& tracer, const Camera& camera,
     out[3] = settings.alpha ? 1.0f - std::clamp(res.transmit, 0.0f, 1.0f) : 1.0f;
 }
 
+void finish_pixels_without_camera_ray(Image& image, const Camera& camera,
+                                      const RenderSettings& settings) {
+    if (!settings.alpha) return;  // black and opaque already: nothing added up there
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            if (camera_ray(camera, x + 0.5, y + 0.5, settings.width, settings.height))
+                continue;
+            float* p = image.pixel(x, y);
+            p[0] = p[1] = p[2] = p[3] = 0;
+        }
+    }
+}
+
 Image render_scene(const Scene& scene, const RenderSettings& settings,
                    RenderStats* stats) {
     auto t0 = Clock::now();

@@ -80,6 +80,12 @@ void trace_camera_sample(Tracer& tracer, const Camera& camera,
                          const CameraInteriors& interiors, Real px, Real py,
                          const RenderSettings& settings, float* out);
 
+// Pixels whose centre has no camera ray (a fisheye's corners): black, and transparent
+// with +UA, as trace_camera_sample gives them. The black-box drivers, which add up what
+// the rays they emitted bring back, finish their images with this.
+void finish_pixels_without_camera_ray(Image& image, const Camera& camera,
+                                      const RenderSettings& settings);
+
 Image render_scene(const Scene& scene, const RenderSettings& settings,
                    RenderStats* stats = nullptr);
 

@@ -259,6 +259,14 @@ sphere { <1.2, 0.4, 0.5>, 0.4 pigment { color rgb <0.2, 0.5, 0.9> } }
     expect_same_images(
         scene.string(), "-W 40 -H 30",
         {"--boxes 2x2x2 --procs 3", "--boxes 2x1x1 --procs 2 --results parents"});
+    // With +UA the corners are transparent in every mode (boxes made them opaque).
+    expect_same_images(
+        scene.string(), "-W 40 -H 30 +UA",
+        {"--boxes 2x2x2", "--boxes 2x1x1 --procs 2", "--mode screen --procs 2"});
+    const povwall::Image ref =
+        povwall::output::read_image((scratch() / "ref.exr").string());
+    EXPECT_EQ(ref.pixel(0, 0)[3], 0.0f);    // a corner: no camera ray
+    EXPECT_EQ(ref.pixel(20, 15)[3], 1.0f);  // the floor and spheres fill the middle
 }
 
 // Spheres only on the left (x < -3) cast shadows far over the floor, lit from the far
