@@ -49,7 +49,7 @@ constexpr Key kKeys[] = {
     {"Antialias_Depth", Use::Act, Type::Int},
     {"Antialias", Use::Act, Type::Bool},
     {"Antialias_Threshold", Use::Act, Type::Float},
-    {"Antialias_Gamma", Use::Warn, Type::Special, "2.5"},
+    {"Antialias_Gamma", Use::Act, Type::Float},
     {"Append_File", Use::Silent, Type::Bool},
     {"Bits_Per_Color", Use::Act, Type::Int},
     {"Bits_Per_Colour", Use::Act, Type::Int},
@@ -129,7 +129,7 @@ constexpr Key kKeys[] = {
     {"Radiosity_Vain_Pretrace", Use::Warn, Type::Bool, "on"},
     {"Real_Time_Raytracing", Use::Silent, Type::Bool},
     {"Remove_Bounds", Use::Warn, Type::Bool, "on"},
-    {"Render_Block_Size", Use::Silent, Type::Int},
+    {"Render_Block_Size", Use::Act, Type::Int},
     {"Render_Block_Step", Use::Silent, Type::Int},
     {"Render_Console", Use::Silent, Type::Bool},
     {"Render_File", Use::Silent, Type::String},
@@ -443,6 +443,10 @@ class IniReader {
             o_.render.aa_jitter = is_true(value);
         } else if (k == "jitter_amount") {
             o_.render.aa_jitter_amount = *f;
+        } else if (k == "antialias_gamma") {
+            o_.render.aa_gamma = *f;
+        } else if (k == "render_block_size") {
+            apply_switch("+BS" + std::to_string(*i));
         } else if (k == "antialias_depth") {
             apply_switch("+R" + std::to_string(*i));
         } else if (k == "sampling_method") {

@@ -88,6 +88,14 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
         o.render.alpha = on;
     } else if (starts_with_ci(arg, 1, "AM")) {
         o.render.aa_method = int(number(arg, arg.substr(3)));
+    } else if (starts_with_ci(arg, 1, "AG")) {
+        o.render.aa_gamma = number(arg, arg.substr(3));
+    } else if (starts_with_ci(arg, 1, "BS")) {
+        // POV-Ray's front end refuses blocks smaller than 4 pixels.
+        const int size = int(number(arg, arg.substr(3)));
+        if (size < 4)
+            throw UsageError("render block size in '" + arg + "' must be at least 4");
+        o.render.block_size = size;
     } else if (starts_with_ci(arg, 1, "KFI")) {
         o.animation.initial_frame = int(number(arg, arg.substr(4)));
     } else if (starts_with_ci(arg, 1, "KFF")) {

@@ -138,7 +138,10 @@ std::vector<std::string> povray_command(const RenderOptions& o,
         cmd.push_back("+A" + threshold);
         cmd.push_back("+AM" + std::to_string(o.render.aa_method));
         cmd.push_back("+R" + std::to_string(o.render.aa_depth));
-        cmd.push_back(o.render.aa_jitter ? "+J" : "-J");
+        cmd.push_back(o.render.aa_jitter ? "+J" + shortest(o.render.aa_jitter_amount)
+                                         : std::string("-J"));
+        cmd.push_back("+AG" + shortest(o.render.aa_gamma));
+        cmd.push_back("+BS" + std::to_string(o.render.block_size));
     } else {
         cmd.push_back("-A");
     }

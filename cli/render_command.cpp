@@ -68,6 +68,17 @@ std::vector<std::string> tile_worker_command(const RenderOptions& o) {
     }
     if (o.render.alpha) cmd.push_back("+UA");
     cmd.push_back("+Q" + std::to_string(o.render.quality));
+    if (o.render.antialias) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "+A%.17g", o.render.aa_threshold);
+        cmd.push_back(buf);
+        cmd.push_back("+AM" + std::to_string(o.render.aa_method));
+        cmd.push_back("+R" + std::to_string(o.render.aa_depth));
+        std::snprintf(buf, sizeof buf, "+J%.17g", o.render.aa_jitter_amount);
+        cmd.push_back(o.render.aa_jitter ? std::string(buf) : std::string("-J"));
+        std::snprintf(buf, sizeof buf, "+AG%.17g", o.render.aa_gamma);
+        cmd.push_back(buf);
+    }
     if (o.language_version)
         cmd.push_back("+MV" + std::to_string(*o.language_version / 100) + "." +
                       std::to_string(*o.language_version % 100 / 10) +
@@ -382,10 +393,11 @@ int run_render(RenderOptions o) {
         stats.trace_seconds = space_stats.seconds;
         for (const auto& b : space_stats.boxes) stats.rays += b.rays;
     } else if (dplan.mode == distrib::RenderMode::Screen) {
-        if (o.render.antialias)
-            throw UsageError("anti-aliasing is not available with --mode screen yet");
         distrib::ScreenOptions screen;
         screen.workers = dplan.procs;
+        // Tiles are POV-Ray's render blocks, which decide the anti-aliasing.
+        screen.tile =
+            trace::clamped_block_size(o.render.block_size, trace::render_area(o.render));
         screen.worker_command = tile_worker_command(o);
         screen.recover = o.recover;
         distrib::ScreenStats screen_stats;

@@ -12,15 +12,31 @@ namespace povwall::trace {
 // The primary ray through image position (px, py), in pixels from the top-left corner
 // (pixel centres are at +0.5), with a unit direction; none where the camera sees nothing
 // (outside the fisheye circle), which POV-Ray renders black and fully transparent.
+// POV-Ray's own form: its pixel position (x, y) (pixel i's centre at i), which it moves
+// to (x + 0.5, y - 0.5) before scaling; `shifted` is that moved position.
+inline std::optional<Ray> camera_ray_shifted(const Camera& cam, Real shifted_x,
+                                             Real shifted_y, int width, int height);
+
 inline std::optional<Ray> camera_ray(const Camera& cam, Real px, Real py, int width,
                                      int height) {
+    return camera_ray_shifted(cam, px, py - 1.0, width, height);
+}
+
+// The ray of POV-Ray's pixel position (x, y) (pixel (i, j)'s centre at (i, j)), rounded
+// as POV-Ray rounds it, for anti-aliasing's sub-pixel samples.
+inline std::optional<Ray> camera_ray_pov(const Camera& cam, Real x, Real y, int width,
+                                         int height) {
+    return camera_ray_shifted(cam, x + 0.5, y - 0.5, width, height);
+}
+
+inline std::optional<Ray> camera_ray_shifted(const Camera& cam, Real shifted_x,
+                                             Real shifted_y, int width, int height) {
     using Kind = Camera::Kind;
-    // Image position from -0.5 to 0.5, right and up, rounded as POV-Ray computes it: its
-    // pixel position is (px - 0.5, py - 0.5), which it moves to (px, py - 1) before
-    // taking y from the bottom row. The last bits decide which side of a surface lying on
-    // a pattern's edge (an onion's r = 1 on a unit sphere) a hit falls.
-    const Real x0 = px / width - 0.5;
-    const Real y0 = ((height - 1) - (py - 1.0)) / height - 0.5;
+    // Image position from -0.5 to 0.5, right and up, rounded as POV-Ray computes it
+    // (y from the bottom row). The last bits decide which side of a surface lying on a
+    // pattern's edge (an onion's r = 1 on a unit sphere) a hit falls.
+    const Real x0 = shifted_x / width - 0.5;
+    const Real y0 = ((height - 1) - shifted_y) / height - 0.5;
     switch (cam.kind) {
         case Kind::Perspective:
             break;

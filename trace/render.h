@@ -1,11 +1,13 @@
 // The single-process renderer: a scene and output settings in, a working-space image out.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 
 #include "core/image.h"
 #include "core/scene.h"
+#include "trace/pixel_sampler.h"
 #include "trace/tracer.h"
 
 namespace povwall::trace {
@@ -45,8 +47,10 @@ struct RenderSettings {
     int aa_method = 1, aa_depth = 3;
     bool aa_jitter = true;  // POV-Ray jitters AA samples unless -J
     double aa_jitter_amount = 1.0;
-    bool alpha = false;  // +UA: background contributes transparency
-    int quality = 9;     // +Q (trace::Quality)
+    double aa_gamma = 2.5;  // +AG: colours compared after this gamma (<= 0: none)
+    int block_size = 32;    // +BS: anti-aliasing is decided per block of this size
+    bool alpha = false;     // +UA: background contributes transparency
+    int quality = 9;        // +Q (trace::Quality)
     // Partial render (+SR/+ER/+SC/+EC), 0-based inclusive rows/columns; -1: to the end.
     int first_row = 0, last_row = -1, first_col = 0, last_col = -1;
     // --plan all: leave nothing out (tests that the render plan changes no pixel).
@@ -65,13 +69,32 @@ struct RenderStats {
     size_t resident_bytes = 0;
 };
 
-// The jitter of an anti-aliasing sample at image position (px, py): each component in
-// [-0.5, 0.5), a fixed function of the position (scaled by the jitter amount over the
-// sample spacing before use).
-void aa_jitter_offset(Real px, Real py, Real& jx, Real& jy);
-
 class Tracer;
 class CameraInteriors;
+
+// Camera samples traced with `tracer`: red, green, blue and the background's transmit
+// (only with +UA; 1 where the camera sees nothing, as POV-Ray).
+class CameraSamples final : public SampleSource {
+  public:
+    CameraSamples(Tracer& tracer, const Camera& camera, const CameraInteriors& interiors,
+                  const RenderSettings& settings)
+        : tracer_(tracer), camera_(camera), interiors_(interiors), settings_(settings) {}
+    void sample(Real x, Real y, float* rgbt) override;
+
+  private:
+    Tracer& tracer_;
+    const Camera& camera_;
+    const CameraInteriors& interiors_;
+    const RenderSettings& settings_;
+};
+
+// A pixel as written: rgbt to rgba (alpha 1 - transmit with +UA, else opaque).
+inline void finish_pixel(const float* rgbt, bool alpha, float* rgba) {
+    rgba[0] = rgbt[0];
+    rgba[1] = rgbt[1];
+    rgba[2] = rgbt[2];
+    rgba[3] = alpha ? 1.0f - std::clamp(rgbt[3], 0.0f, 1.0f) : 1.0f;
+}
 // One camera sample at image position (px, py): RGBA into `out`, as every renderer writes
 // it (nothing seen, e.g. a fisheye's corners: black and transparent; background transmit
 // only with +UA).

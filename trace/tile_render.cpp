@@ -1,9 +1,6 @@
 #include "trace/tile_render.h"
 
 #include <algorithm>
-#include <optional>
-
-#include "trace/camera.h"
 
 namespace povwall::trace {
 
@@ -13,16 +10,18 @@ TileRenderer::TileRenderer(const Scene& scene, const RenderSettings& settings)
       plan_(make_render_plan(scene, settings.plan_everything_on, settings.quality)),
       prepared_(scene, &plan_, PrepareOptions{settings.threads, true}),
       camera_interiors_(scene),
-      tracer_(prepared_) {
+      tracer_(prepared_),
+      samples_(tracer_, scene.camera, camera_interiors_, settings_),
+      sampler_(sampler_settings(settings, scene)) {
     prepared_.set_alpha_background(settings.alpha);
 }
 
 void TileRenderer::render(int x0, int y0, int x1, int y1, float* out) {
-    for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; ++x, out += 4)
-            trace_camera_sample(tracer_, scene_.camera, camera_interiors_, x + 0.5,
-                                y + 0.5, settings_, out);
-    }
+    const PixelBlock block{x0, y0, x1, y1};
+    rgbt_.resize(size_t(std::max(0, block.pixels())) * 4);
+    sampler_.render_block(block, samples_, rgbt_.data());
+    for (size_t p = 0; p < rgbt_.size(); p += 4)
+        finish_pixel(&rgbt_[p], settings_.alpha, out + p);
 }
 
 }  // namespace povwall::trace

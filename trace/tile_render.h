@@ -3,6 +3,8 @@
 // one).
 #pragma once
 
+#include <vector>
+
 #include "core/scene.h"
 #include "trace/camera_interiors.h"
 #include "trace/prepared_scene.h"
@@ -16,7 +18,8 @@ class TileRenderer {
   public:
     TileRenderer(const Scene& scene, const RenderSettings& settings);
     // Pixels [x0, x1) x [y0, y1) into `out` (RGBA floats, row-major, (x1-x0)*(y1-y0)*4),
-    // exactly as render_scene() computes them without anti-aliasing.
+    // exactly as render_scene() computes them when the rectangle is one of its render
+    // blocks (anti-aliasing is decided per block).
     void render(int x0, int y0, int x1, int y1, float* out);
     const TraceCounters& counters() const { return tracer_.counters(); }
 
@@ -27,6 +30,9 @@ class TileRenderer {
     PreparedScene prepared_;
     CameraInteriors camera_interiors_;
     Tracer tracer_;
+    CameraSamples samples_;
+    PixelSampler sampler_;
+    std::vector<float> rgbt_;
 };
 
 }  // namespace povwall::trace

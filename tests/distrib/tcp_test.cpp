@@ -157,6 +157,29 @@ TEST(Tcp, GlassCsgAndCameraInsideGlassInEveryModeEqualOneProcess) {
     }
 }
 
+// Anti-aliasing is decided per POV-Ray render block (each block traces its own border),
+// so screen workers, whose tiles are those blocks, give the one-process image exactly:
+// both methods, jitter, block sizes, alpha, a fisheye, glass in CSG.
+TEST(Tcp, AntialiasingInScreenModeEqualsOneProcess) {
+    const std::string golden = std::string(POVWALL_GOLDEN_DIR) + "/";
+    fs::path glass = scratch() / "glass_aa.pov";
+    std::ofstream(glass) << kGlassCsgScene;
+    struct Case {
+        std::string scene, args;
+    };
+    for (const Case& c :
+         {Case{golden + "antialias_jitter_blocks.pov",
+               "+A0.2 +AM1 +R2 +J0.5 +BS8 +AG1.8"},
+          Case{golden + "antialias_recursive_jitter_alpha.pov", "+A0.1 +AM2 +R4 +J +UA"},
+          Case{golden + "antialias_fisheye.pov", "+UA +A0.3 +BS5"},
+          Case{glass.string(), "+A0.1 +AM1 +R3"},
+          Case{glass.string(), "+A0.1 +AM2 -J"}}) {
+        SCOPED_TRACE(c.scene + " " + c.args);
+        expect_same_images(c.scene, "-W 45 -H 33 " + c.args,
+                           {"--mode screen --procs 2", "--mode screen --procs 3"});
+    }
+}
+
 // A wall of --boxes 3x1x1 lies at x = 2 (the objects span x -6..6); the shadow ray from a
 // point on the see-through box's back face leaves its top face (y = 2) exactly where it
 // crosses the wall (x = y along it). The next box's tree ends at that wall and at the

@@ -190,34 +190,30 @@ TEST(AntiAliasRecursive, SubdividesOnlyWhereCornersDiffer) {
     EXPECT_LT(stats.rays.camera, corners + 21 * 32 * 24);
 }
 
-TEST(AntiAliasJitter, OffsetsAreRepeatableAndUniform) {
-    double sum_x = 0, sum_y = 0, sq_x = 0, sq_y = 0, cross = 0;
-    const int n = 200;
-    for (int j = 0; j < n; ++j) {
-        for (int i = 0; i < n; ++i) {
-            Real jx, jy, kx, ky;
-            aa_jitter_offset(i * 0.125, j * 0.125, jx, jy);
-            aa_jitter_offset(i * 0.125, j * 0.125, kx, ky);
-            ASSERT_EQ(jx, kx);
-            ASSERT_EQ(jy, ky);
-            ASSERT_GE(jx, -0.5);
-            ASSERT_LT(jx, 0.5);
-            ASSERT_GE(jy, -0.5);
-            ASSERT_LT(jy, 0.5);
-            sum_x += jx;
-            sum_y += jy;
-            sq_x += jx * jx;
-            sq_y += jy * jy;
-            cross += jx * jy;
-        }
+// POV-Ray's jitter: its table's values (15-bit fractions printed to 6 decimals and read
+// as floats) picked through its hash table by the sample's nominal position.
+TEST(AntiAliasJitter, PovRaysTablesAndPositions) {
+    struct Case {
+        Real x, y;
+        float jx, jy;
+    };
+    for (const Case& c :
+         {Case{9.5, 20.0, -0.138641f, -0.134766f}, Case{10.0, 19.5, 0.390625f, 0.441437f},
+          Case{-1.0, 5.0, 0.384796f, 0.378906f},
+          Case{-0.33333333333333337, -0.33333333333333337, -0.400391f, 0.310577f}}) {
+        Real jx, jy;
+        pov_jitter(c.x, c.y, jx, jy);
+        EXPECT_EQ(jx, Real(c.jx)) << c.x << ", " << c.y;
+        EXPECT_EQ(jy, Real(c.jy)) << c.x << ", " << c.y;
     }
-    const double m = double(n) * n;
-    // Uniform on [-0.5, 0.5): mean 0, variance 1/12, x and y uncorrelated.
-    EXPECT_NEAR(sum_x / m, 0, 0.005);
-    EXPECT_NEAR(sum_y / m, 0, 0.005);
-    EXPECT_NEAR(sq_x / m, 1.0 / 12, 0.002);
-    EXPECT_NEAR(sq_y / m, 1.0 / 12, 0.002);
-    EXPECT_NEAR(cross / m, 0, 0.002);
+    // Every value lies in [-0.5, 0.5) and is a float printed with 6 decimals.
+    for (int i = 0; i < 4096; ++i) {
+        Real jx, jy;
+        pov_jitter(i / 1021.0 + 1e-9, 0, jx, jy);
+        ASSERT_GE(jx, -0.5);
+        ASSERT_LT(jx, 0.5);
+        EXPECT_EQ(float(jx), float(std::round(jx * 1e6) / 1e6));
+    }
 }
 
 TEST(AntiAliasJitter, MovesOnlySupersampledPixelsAndRepeats) {
