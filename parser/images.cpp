@@ -62,6 +62,7 @@ Interpreter::ImageFileRef Interpreter::parse_image_file_ref(bool height_field) {
     const std::string_view kind = ref.type->keyword;
     if (kind == (height_field ? "iff" : "pot"))
         error(ref.type_token, "File type not supported here.");
+    if (kind == "iff") unsupported(ref.type_token, "image file type iff");
     for (const std::string& candidate : image_file_candidates(name, *ref.type)) {
         ref.path = resolve_include(candidate, frames_.back().file, false);
         if (!ref.path.empty()) break;
@@ -71,7 +72,6 @@ Interpreter::ImageFileRef Interpreter::parse_image_file_ref(bool height_field) {
     // Unix builds of POV-Ray 3.7 define no system image format.
     if (kind == "sys")
         error(ref.type_token, "This platform has not defined a SYS file type");
-    if (kind == "iff") unsupported(ref.type_token, "image file type iff");
     return ref;
 }
 
