@@ -39,6 +39,7 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
     popts.image_height = o.height;
     popts.declares = o.declares;
     popts.language_version = o.language_version;
+    popts.output_file_type = o.format;
     // Files the scene writes go to a folder of their own, removed after: a scene that
     // reads back what it wrote (fileio.pov) parses as it does in a render.
     std::error_code dir_error;

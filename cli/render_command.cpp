@@ -162,6 +162,7 @@ parser::ParseOptions render_parse_options(const RenderOptions& o,
     popts.image_height = o.height;
     popts.declares = o.declares;
     popts.language_version = o.language_version;
+    popts.output_file_type = o.format;
     popts.image_reader = output::read_stored_image;
     popts.function_hooks = trace::parse_time_function_hooks();
     popts.initial_frame = o.animation.initial_frame;
@@ -329,6 +330,7 @@ int run_render(RenderOptions o) {
             source.library_paths = o.library_paths;
             source.declares = o.declares;
             source.language_version = o.language_version;
+            source.output_file_type = o.format;
             source.clock = popts.clock, source.clock_delta = popts.clock_delta;
             source.initial_clock = popts.initial_clock,
             source.final_clock = popts.final_clock;

@@ -31,6 +31,7 @@ struct SceneSource {
     std::vector<std::string> library_paths;
     std::map<std::string, double> declares;
     std::optional<int> language_version;  // +MV (ParseOptions::language_version)
+    char output_file_type = 'N';          // +F (ParseOptions::output_file_type)
     // Animation values the language exposes (clock, frame_number, ...).
     double clock = 0, clock_delta = 0, initial_clock = 0, final_clock = 0;
     int frame_number = 0, initial_frame = 1, final_frame = 1;

@@ -870,6 +870,7 @@ class Worker {
         popts.declares = j.at("declares").get<std::map<std::string, double>>();
         if (!j.at("language_version").is_null())
             popts.language_version = j.at("language_version").get<int>();
+        popts.output_file_type = j.at("output_file_type").get<std::string>().at(0);
         const json& anim = j.at("animation");
         popts.clock = anim.at(0), popts.clock_delta = anim.at(1);
         popts.initial_clock = anim.at(2), popts.final_clock = anim.at(3);
@@ -1356,6 +1357,7 @@ json fixed_job(const SceneSource& source, const trace::RenderSettings& settings,
             {"declares", source.declares},
             {"language_version",
              source.language_version ? json(*source.language_version) : json()},
+            {"output_file_type", std::string(1, source.output_file_type)},
             {"max_loop_iterations", source.max_loop_iterations},
             {"max_trace_level",
              source.max_trace_level ? json(*source.max_trace_level) : json()},

@@ -19,9 +19,10 @@ struct ImageFileInfo {
     std::string format;        // OIIO's format name: "png", "targa", "pnm", "jpeg", ...
     float declared_gamma = 0;  // PNG gAMA chunk as a decoding exponent; 0: none
     bool has_alpha = false;
-    int channels = 0;         // as stored in the file (1 grey, 2 grey+alpha, 3, 4)
-    int bits = 0;             // bits per stored sample (oiio:BitsPerSample)
-    bool float_data = false;  // samples are floating point (EXR, HDR)
+    int channels = 0;           // as stored in the file (1 grey, 2 grey+alpha, 3, 4)
+    int bits = 0;               // bits per stored sample (oiio:BitsPerSample)
+    bool float_data = false;    // samples are floating point (EXR, HDR)
+    bool tiff_palette = false;  // a TIFF of palette indices (photometric "palette")
 };
 
 struct ImageBackend {

@@ -16,6 +16,7 @@
 #include "output/image_backend.h"
 #include "output/palette.h"
 #include "output/png_writer.h"
+#include "output/radiance_rgbe.h"
 
 namespace povwall::output {
 namespace {
@@ -219,9 +220,23 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
     }
 }
 
-Image read_image(const std::string& path) { return read_stored_image(path).pixels; }
+namespace {
 
-StoredImage read_stored_image(const std::string& path) {
+// The nearest half-precision value (ties to even, as OpenEXR's conversion; beyond the
+// largest half, infinity).
+float round_to_half(float f) {
+    if (!std::isfinite(f)) return f;
+    const float a = std::fabs(f);
+    if (a >= 65520.0f) return std::copysign(INFINITY, f);
+    int e = 0;
+    std::frexp(a, &e);  // a = m * 2^e, m in [0.5, 1)
+    // 10 mantissa bits below the leading one; subnormal below 2^-14.
+    const double step = std::ldexp(1.0, std::max(e - 1, -14) - 10);
+    return std::copysign(float(std::nearbyint(double(a) / step) * step), f);
+}
+
+// The file as OpenImageIO reads it.
+StoredImage read_with_backend(const std::string& path) {
     int width = 0, height = 0, nc = 0;
     std::vector<float> pixels;
     ImageFileInfo info;
@@ -245,10 +260,38 @@ StoredImage read_stored_image(const std::string& path) {
     stored.bits = info.bits;
     stored.float_data = info.float_data;
     if (info.format == "pnm") stored.pnm_maxval = pnm_maxval(path);
-    stored.colour_mapped = colour_mapped_file(path, info.format);
-    if (stored.colour_mapped) {
-        const auto palette = read_palette(path, info.format);
-        stored.indices = palette_indices(path, info.format, stored.pixels, palette);
+    stored.colour_mapped = info.tiff_palette;  // its indices are not recovered
+    return stored;
+}
+
+}  // namespace
+
+Image read_image(const std::string& path) { return read_with_backend(path).pixels; }
+
+StoredImage read_stored_image(const std::string& path) {
+    StoredImage stored = read_with_backend(path);
+    if (stored.format == "hdr") {
+        // A scene's RGBE file as POV-Ray decodes it (OpenImageIO's values are lower by
+        // half a mantissa step).
+        int w = 0, h = 0;
+        std::vector<float> rgb;
+        const std::string err = read_rgbe_as_povray(path, w, h, rgb);
+        if (!err.empty()) throw ImageIoError("cannot read '" + path + "': " + err);
+        stored.pixels = Image(w, h);
+        for (size_t i = 0; i < size_t(w) * size_t(h); ++i) {
+            for (int c = 0; c < 3; ++c)
+                stored.pixels.rgba[i * 4 + size_t(c)] = rgb[i * 3 + size_t(c)];
+            stored.pixels.rgba[i * 4 + 3] = 1.0f;
+        }
+    }
+    if (stored.format == "openexr" && stored.bits > 16) {
+        // POV-Ray reads EXR files through OpenEXR's RGBA interface, in half precision.
+        for (float& v : stored.pixels.rgba) v = round_to_half(v);
+    }
+    if (!stored.colour_mapped && colour_mapped_file(path, stored.format)) {
+        stored.colour_mapped = true;
+        const auto palette = read_palette(path, stored.format);
+        stored.indices = palette_indices(path, stored.format, stored.pixels, palette);
         stored.palette_size = int(palette.size());
     }
     return stored;

@@ -34,8 +34,10 @@ bool remove_partial_output() noexcept;
 // Reads an image as stored (encoded values scaled to 0..1), RGBA; throws ImageIoError.
 Image read_image(const std::string& path);
 
-// Reads an image file as stored plus its format and declared gamma (for image_map and
-// bump_map, decoded by the parser with POV-Ray's input gamma rules); throws ImageIoError.
+// Reads an image file a scene names, as stored plus its format and declared gamma (for
+// image_map, bump_map and height_field, decoded by the parser with POV-Ray's input gamma
+// rules); values as POV-Ray's readers give them where they differ from OpenImageIO's
+// (RGBE mantissas plus a half step, EXR in half precision); throws ImageIoError.
 StoredImage read_stored_image(const std::string& path);
 
 }  // namespace povwall::output

@@ -40,6 +40,8 @@ std::string read_oiio(const std::string& path, int& width, int& height, int& cha
     info.has_alpha = spec.alpha_channel >= 0 || channels == 2 || channels >= 4;
     info.channels = channels;
     info.float_data = spec.format.is_floating_point();
+    info.tiff_palette = info.format == "tiff" &&
+                        spec.get_int_attribute("tiff:PhotometricInterpretation", -1) == 3;
     info.bits = spec.get_int_attribute("oiio:BitsPerSample", int(spec.format.size() * 8));
     // OIIO reports a PNG gAMA chunk as oiio:Gamma (the decoding exponent); an sRGB chunk,
     // or none, as the sRGB colour space, which is what POV-Ray assumes then too.

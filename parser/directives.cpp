@@ -541,7 +541,8 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
     ++macro_depth_;
 }
 
-std::string Interpreter::resolve_include(const std::string& name, int from_file) const {
+std::string Interpreter::resolve_include(const std::string& name, int from_file,
+                                         bool try_inc) const {
     auto exists = [](const fs::path& p) {
         std::error_code ec;
         return fs::is_regular_file(p, ec);
@@ -556,6 +557,7 @@ std::string Interpreter::resolve_include(const std::string& name, int from_file)
     for (const auto& d : dirs) {
         fs::path c = d.empty() ? p : d / p;
         if (exists(c)) return c.string();
+        if (!try_inc) continue;
         // POV-Ray also tries the name with ".inc" appended.
         fs::path inc = c;
         inc += ".inc";

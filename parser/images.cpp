@@ -33,37 +33,57 @@ Curve power(float exponent) { return {Curve::Kind::Power, exponent}; }
 
 }  // namespace
 
+Interpreter::ImageFileRef Interpreter::parse_image_file_ref(bool height_field) {
+    ImageFileRef ref;
+    ref.type_token = peek();
+    ref.type = image_type_for_keyword(ref.type_token.kind == TokenKind::Word
+                                          ? ref.type_token.text
+                                          : std::string_view());
+    if (ref.type) next();
+    ref.name_token = peek();
+    if (!ref.type) ref.type_token = ref.name_token;
+    const std::string name = parse_string();
+    if (!ref.type) {
+        const std::string extension = fs::path(name).extension().string();
+        if (!extension.empty()) {
+            ref.type = image_type_for_extension(extension);
+            if (!ref.type)
+                error(ref.name_token,
+                      "Could not determine valid image file type from extension.");
+        } else {
+            ref.type = image_type_for_output_letter(options_.output_file_type);
+            if (!ref.type)
+                error(ref.name_token,
+                      "Could not determine valid input file type from output type.");
+        }
+    }
+    // POV-Ray's masks of legal types: height fields take `pot` but not `iff`, images the
+    // other way round.
+    const std::string_view kind = ref.type->keyword;
+    if (kind == (height_field ? "iff" : "pot"))
+        error(ref.type_token, "File type not supported here.");
+    if (kind == "iff") unsupported(ref.type_token, "image file type iff");
+    for (const std::string& candidate : image_file_candidates(name, *ref.type)) {
+        ref.path = resolve_include(candidate, frames_.back().file, false);
+        if (!ref.path.empty()) break;
+    }
+    if (ref.path.empty())
+        error(ref.name_token, "cannot find image file \"" + name + "\"");
+    // Unix builds of POV-Ray 3.7 define no system image format.
+    if (kind == "sys")
+        error(ref.type_token, "This platform has not defined a SYS file type");
+    return ref;
+}
+
 std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& keyword,
                                                                    Normal* bump) {
     expect_punct('{', bump ? "after 'bump_map'" : "after 'image_map'");
     const bool is_bump = bump != nullptr;
-    const ImageFileType* type = nullptr;
-    const Token& first = peek();
-    for (const ImageFileType& ft : kImageFileTypes) {
-        if (is_word(first, ft.keyword)) type = &ft;
-    }
-    if (type) {
-        if (std::string_view(type->keyword) == "iff" ||
-            std::string_view(type->keyword) == "sys" ||
-            std::string_view(type->keyword) == "pot")
-            unsupported(first, std::string("image file type ") + type->keyword);
-        next();
-    } else if (first.kind == TokenKind::Word && first.text == "function") {
+    if (const Token& first = peek(); is_word(first, "function"))
         unsupported(first, std::string(keyword.text) + " function");
-    }
-    Token name_token = peek();
-    std::string name = parse_string();
-
-    // POV-Ray looks for image files where it looks for include files, also with the
-    // type's extension appended when the name has none.
-    std::string path = resolve_include(name, frames_.back().file);
-    if ((path.empty() || fs::path(path).extension() == ".inc") && type &&
-        fs::path(name).extension().empty() && *type->extension) {
-        path = resolve_include(name + type->extension, frames_.back().file);
-    }
-    if (path.empty() || fs::path(path).extension() == ".inc") {
-        error(name_token, "cannot find image file \"" + name + "\"");
-    }
+    const ImageFileRef ref = parse_image_file_ref(false);
+    const std::string& path = ref.path;
+    const Token& name_token = ref.name_token;
 
     // Optional decoding gamma and premultiplication right after the name.
     std::optional<Curve> explicit_gamma;
@@ -97,6 +117,10 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         } catch (const std::exception& e) {
             error(name_token, e.what());
         }
+        if (!image_format_matches(*ref.type, stored.format))
+            error(name_token, "Cannot read image: not a " +
+                                  std::string(ref.type->keyword) + " file (it reads as " +
+                                  stored.format + ")");
         // POV-Ray 3.7's gamma modes, as the parse has them when the file is read:
         // legacy scenes (no assumed_gamma, effective version < 3.7) read images raw; 3.6
         // scenes with assumed_gamma take files to be in the working gamma; 3.7 scenes

@@ -16,6 +16,7 @@
 namespace povwall::parser {
 
 class TrueTypeFont;
+struct ImageFileType;
 
 // POV-Ray's Recompute_BBox: the box's corners through `t`, their bounding box clipped at
 // +-1e10 and kept in single precision.
@@ -171,6 +172,16 @@ class Interpreter {
     ColourMap parse_colour_map_block();  // after 'color_map'
     bool try_pattern_keyword(const Token& t, PatternSpec& spec);
     bool try_pattern_keyword(const Token& t, HeapValue<PatternSpec>& spec);
+    // An image file named in a scene: `[TYPE] "name"` (POV-Ray's Parse_Image), its type
+    // (from the keyword, else the name's extension, else the output file type) and the
+    // file found for it (images.cpp). `height_field` selects the types legal there.
+    struct ImageFileRef {
+        const ImageFileType* type = nullptr;
+        Token type_token;  // the type keyword, else the name
+        Token name_token;
+        std::string path;
+    };
+    ImageFileRef parse_image_file_ref(bool height_field);
     // After image_map / bump_map (`bump` receives bump_size): the mapping, pixels loaded.
     std::shared_ptr<const ImageMapping> parse_image_block(const Token& keyword,
                                                           Normal* bump);
@@ -213,6 +224,12 @@ class Interpreter {
         Real water = 0;                 // 65536 * water_level
     };
     PendingHeightField parse_height_field(Object& out);
+    // The heights of an image file of type `kind` (rows top first, as stored), as POV-Ray
+    // 3.7 takes them from each kind of image; refuses what it cannot reproduce.
+    std::vector<uint16_t> height_field_image_heights(const StoredImage& stored,
+                                                     std::string_view kind,
+                                                     const Token& at, int& width,
+                                                     int& depth);
     void finish_height_field(Object& out, PendingHeightField pending);
     void parse_sphere_sweep(Object& out);
     // POV-Ray's UV vector: a float stands for both; 3 or more components are an error.
@@ -296,7 +313,11 @@ class Interpreter {
     size_t find_matching_end(const Token& at);
     Binding* find_binding(uint32_t sym, int* scope_index = nullptr);
     void parse_top_level_item(const Token& t);
-    std::string resolve_include(const std::string& name, int from_file) const;
+    // Where POV-Ray finds the file `name` read from file `from_file` ("" if nowhere): the
+    // reading file's folder, the scene's, the library paths, the standard includes; in
+    // each also `name` with ".inc" appended unless !try_inc.
+    std::string resolve_include(const std::string& name, int from_file,
+                                bool try_inc = true) const;
     // ---- text (shape_text.cpp)
     void parse_text(Object& out);
     // The font file POV-Ray would open for `name` ("" if none); `searched` lists the

@@ -31,6 +31,9 @@ struct ParseOptions {
     // The language version given with +MV / Version= (times 100): the scene starts as if
     // it began with that #version. Absent: POV-Ray's default state (parser/README.md).
     std::optional<int> language_version;
+    // The output file type (POV-Ray's +F letter: N png, T tga, P ppm, E exr, ...): an
+    // image file named with neither type keyword nor extension is read as this type.
+    char output_file_type = 'N';
     // Where #debug/#warning/#render text goes (POV-Ray's console streams); null:
     // discarded.
     std::ostream* messages = nullptr;

@@ -3,15 +3,12 @@
 // Parse_Image, image_height_at in 3.7:source/backend/support/imageutil.cpp), in the
 // unit square through the scale POV-Ray starts the object's transform with.
 #include <cmath>
-#include <filesystem>
 
 #include "parser/image_file_types.h"
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
 namespace {
-
-namespace fs = std::filesystem;
 
 // A grey container's height: its value as a float in [0, 1] times 65535 in single
 // precision, truncated (an 8-bit v gives v * 257, a 16-bit one itself).
@@ -39,7 +36,106 @@ bool stored_16(double value, uint16_t& out) {
     return true;
 }
 
+// POV-Ray's cast of a double to its 16-bit height as x86 code makes it: through a 32-bit
+// int (wrapping; out of that range, or NaN, the int is its minimum, whose low half is 0).
+uint16_t height_cast(double v) {
+    if (!(std::fabs(v) < 2147483648.0)) return 0;
+    return uint16_t(int32_t(v));
+}
+
+// A container of 8-bit colour (or float colour, which reports the same maximum): red is
+// the high byte, green the low one, blue unused.
+uint16_t red_green_height(double r, double g) {
+    return height_cast((r * 256.0 + g) * 255.0);
+}
+
+// An 8-bit sample as POV-Ray's 8-bit containers give it back.
+double byte_value(uint32_t v) { return double(float(v) / 255.0f); }
+
 }  // namespace
+
+std::vector<uint16_t> Interpreter::height_field_image_heights(const StoredImage& stored,
+                                                              std::string_view kind,
+                                                              const Token& at, int& width,
+                                                              int& depth) {
+    width = stored.pixels.width;
+    depth = stored.pixels.height;
+    const auto index = [&](int x, int y) {
+        return stored.indices[size_t(y) * size_t(stored.pixels.width) + size_t(x)];
+    };
+    if (kind == "pot") {
+        // A GIF twice as wide as the grid: the left half's indices are the heights' high
+        // bytes, the right half's their low bytes (the palette unused).
+        if (stored.indices.empty())
+            unsupported(at, "height_field pot file whose palette repeats a colour");
+        if (width % 2 != 0) error(at, "Invalid width for POT file");
+        width /= 2;
+    }
+    if (width < 2 || depth < 2) unsupported(at, "height_field image smaller than 2 x 2");
+    std::vector<uint16_t> heights(size_t(width) * size_t(depth));
+    if (kind == "pot") {
+        for (int y = 0; y < depth; ++y) {
+            for (int x = 0; x < width; ++x)
+                heights[size_t(y) * size_t(width) + size_t(x)] =
+                    uint16_t(index(x, y) << 8 | index(x + width, y));
+        }
+        return heights;
+    }
+    if (stored.has_alpha && !stored.colour_mapped)
+        unsupported(at, "height_field image with an alpha channel");
+    if (stored.colour_mapped && stored.indices.empty())
+        unsupported(at, stored.format == "tiff"
+                            ? "height_field on a palette TIFF"
+                            : "height_field on a palette image that repeats a colour");
+    const int bits = stored.bits;
+    const bool tiff = stored.format == "tiff";
+    const bool pnm = stored.format == "pnm";
+    if (pnm && stored.pnm_maxval != 255 && stored.pnm_maxval != 65535)
+        unsupported(at, "height_field Netpbm file of maxval " +
+                            std::to_string(stored.pnm_maxval));
+    const bool grey = stored.channels <= 2;
+    const bool png_palette_path = grey && stored.format == "png" && bits <= 8;
+    if (!stored.float_data && !stored.colour_mapped && !png_palette_path && bits != 8 &&
+        bits != 16)
+        unsupported(at,
+                    "height_field image of " + std::to_string(bits) + " bits per sample");
+    for (size_t i = 0; i < heights.size(); ++i) {
+        const float* px = &stored.pixels.rgba[i * 4];
+        uint16_t& h = heights[i];
+        if (stored.colour_mapped) {
+            h = uint16_t(stored.indices[i] * 256);  // POV-Ray's index * 256
+        } else if (stored.float_data) {
+            // HDR and EXR: float colour, taken as if 8-bit (values above 1 wrap).
+            h = red_green_height(double(px[0]), double(px[1]));
+        } else if (tiff) {
+            // Read through libtiff's 8-bit RGBA interface: a 16-bit grey keeps its high
+            // byte, 16-bit colour rounds to the nearest byte.
+            uint32_t r = sample(px[0], 255), g = sample(px[1], 255);
+            if (bits == 16) {
+                r = sample(px[0], 65535);
+                g = sample(px[1], 65535);
+                r = grey ? r >> 8 : (r + 128) / 257;
+                g = grey ? g >> 8 : (g + 128) / 257;
+            }
+            h = red_green_height(byte_value(r), byte_value(g));
+        } else if (png_palette_path) {
+            const uint32_t max = (1u << bits) - 1;
+            h = grey_height(png_palette_grey(sample(px[0], max), max), 255);
+        } else if (grey) {
+            const uint32_t max = bits == 16 ? 65535 : 255;
+            h = grey_height(sample(px[0], max), max);
+        } else if (bits == 16) {
+            double c[3];
+            for (int k = 0; k < 3; ++k)
+                c[k] = double(float(sample(px[k], 65535)) / 65535.0f);
+            h = uint16_t((0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2]) * double(65535.0f));
+        } else {
+            h = red_green_height(byte_value(sample(px[0], 255)),
+                                 byte_value(sample(px[1], 255)));
+        }
+    }
+    return heights;
+}
 
 Interpreter::PendingHeightField Interpreter::parse_height_field(Object& out) {
     HeightField hf;
@@ -98,46 +194,21 @@ Interpreter::PendingHeightField Interpreter::parse_height_field(Object& out) {
             }
         }
     } else {
-        const ImageFileType* type = nullptr;
-        for (const ImageFileType& ft : kImageFileTypes) {
-            if (is_word(first, ft.keyword)) type = &ft;
+        const ImageFileRef file = parse_image_file_ref(true);
+        const std::string_view kind = file.type->keyword;
+        const Token& name_token = file.name_token;
+        for (;;) {
+            if (const Token& t = peek(); is_word(t, "gamma")) {
+                unsupported(t, "height_field image gamma");
+            } else if (accept_word("premultiplied")) {
+                // Changes only how alpha is kept, and images with alpha are refused
+                // below: without alpha, no effect on the heights.
+                parse_float();
+            } else {
+                break;
+            }
         }
-        if (type) {
-            const std::string_view k = type->keyword;
-            if (k == "iff") error(first, "File type not supported here.");
-            if (k == "sys" || k == "pot" || k == "tiff" || k == "exr" || k == "hdr")
-                unsupported(first, "height_field " + std::string(k) + " file");
-            next();
-        }
-        const Token name_token = peek();
-        const std::string name = parse_string();
-        if (!type) {
-            const std::string ext = fs::path(name).extension().string();
-            bool known = false;
-            for (const ImageFileType& ft : kImageFileTypes)
-                known = known || (*ft.extension && ext == ft.extension);
-            if (ext.empty())
-                unsupported(name_token, "height_field file without an extension");
-            if (!known && ext != ".jpeg" && ext != ".tiff")
-                error(name_token,
-                      "Could not determine valid image file type from extension.");
-            if (ext == ".iff") error(name_token, "File type not supported here.");
-            if (ext == ".pot" || ext == ".tif" || ext == ".tiff" || ext == ".exr" ||
-                ext == ".hdr")
-                unsupported(name_token, "height_field " + ext.substr(1) + " file");
-        }
-        std::string path = resolve_include(name, frames_.back().file);
-        if ((path.empty() || fs::path(path).extension() == ".inc") && type &&
-            fs::path(name).extension().empty() && *type->extension) {
-            path = resolve_include(name + type->extension, frames_.back().file);
-        }
-        if (path.empty() || fs::path(path).extension() == ".inc")
-            error(name_token, "cannot find image file \"" + name + "\"");
-        if (const Token& t = peek(); is_word(t, "gamma"))
-            unsupported(t, "height_field image gamma");
-        if (const Token& t = peek(); is_word(t, "premultiplied"))
-            unsupported(t, "height_field premultiplied");
-        image_files_.push_back(path);
+        image_files_.push_back(file.path);
         if (!options_.image_reader) {
             // Parsing only (which files a scene reads, as image_map records just the
             // reference): a flat grid stands in.
@@ -146,56 +217,14 @@ Interpreter::PendingHeightField Interpreter::parse_height_field(Object& out) {
         } else {
             StoredImage stored;
             try {
-                stored = options_.image_reader(path);
+                stored = options_.image_reader(file.path);
             } catch (const std::exception& e) {
                 error(name_token, e.what());
             }
-            width = stored.pixels.width;
-            depth = stored.pixels.height;
-            if (width < 2 || depth < 2)
-                unsupported(name_token, "height_field image smaller than 2 x 2");
-            if (stored.float_data)
-                unsupported(name_token, "height_field from a floating-point image");
-            if (stored.has_alpha && !stored.colour_mapped)
-                unsupported(name_token, "height_field image with an alpha channel");
-            if (stored.colour_mapped && stored.indices.empty())
-                unsupported(name_token,
-                            "height_field on a palette image that repeats a colour");
-            const int bits = stored.bits;
-            const bool pnm = stored.format == "pnm";
-            if (pnm && stored.pnm_maxval != 255 && stored.pnm_maxval != 65535)
-                unsupported(name_token, "height_field Netpbm file of maxval " +
-                                            std::to_string(stored.pnm_maxval));
-            const bool grey = stored.channels <= 2;
-            const bool png_palette_path = grey && stored.format == "png" && bits <= 8;
-            if (!stored.colour_mapped && !png_palette_path && bits != 8 && bits != 16)
-                unsupported(name_token, "height_field image of " + std::to_string(bits) +
-                                            " bits per sample");
-            heights.resize(size_t(width) * size_t(depth));
-            for (size_t i = 0; i < heights.size(); ++i) {
-                const float* px = &stored.pixels.rgba[i * 4];
-                uint16_t& h = heights[i];
-                if (stored.colour_mapped) {
-                    h = uint16_t(stored.indices[i] * 256);  // POV-Ray's index * 256
-                } else if (png_palette_path) {
-                    const uint32_t max = (1u << bits) - 1;
-                    h = grey_height(png_palette_grey(sample(px[0], max), max), 255);
-                } else if (grey) {
-                    const uint32_t max = bits == 16 ? 65535 : 255;
-                    h = grey_height(sample(px[0], max), max);
-                } else if (bits == 16) {
-                    double c[3];
-                    for (int k = 0; k < 3; ++k)
-                        c[k] = double(float(sample(px[k], 65535)) / 65535.0f);
-                    h = uint16_t((0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2]) *
-                                 double(65535.0f));
-                } else {
-                    // Red the high byte, green the low one (blue unused).
-                    const double r = double(float(sample(px[0], 255)) / 255.0f);
-                    const double g = double(float(sample(px[1], 255)) / 255.0f);
-                    h = uint16_t((r * 256.0 + g) * 255.0);
-                }
-            }
+            if (!image_format_matches(*file.type, stored.format))
+                error(name_token, "Cannot read image: not a " + std::string(kind) +
+                                      " file (it reads as " + stored.format + ")");
+            heights = height_field_image_heights(stored, kind, name_token, width, depth);
         }
     }
     // Image rows run top down; the grid's z = 0 is the image's bottom row.

@@ -19,6 +19,17 @@ Scene parse_with_images(const std::string& text) {
     return parse_scene_text(text, "test.pov", o);
 }
 
+// The first line of the error parsing `text` with images gives ("(no error)" if none).
+std::string image_error(const std::string& text) {
+    try {
+        parse_with_images(text);
+    } catch (const ParseError& e) {
+        const std::string what = e.what();
+        return what.substr(0, what.find('\n'));
+    }
+    return "(no error)";
+}
+
 TEST(ShapeHeightField, ImageGridTransformAndOptions) {
     Scene s = parse_with_images("height_field { png \"" + kImages +
                                 "hf_grey16.png\" water_level 0.25 smooth "
@@ -71,6 +82,16 @@ TEST(ShapeHeightField, Errors) {
     EXPECT_EQ(error_of("height_field { function 4, 4 { 0.5 } texture { } smooth }"),
               "test.pov:1:50: error: expected an object modifier or '}' but found "
               "'smooth'");
+    // The type from the extension, without case; `pot` only by its keyword.
+    EXPECT_EQ(error_of("height_field { \"a.pot\" }"),
+              "test.pov:1:16: error: Could not determine valid image file type from "
+              "extension.");
+    EXPECT_EQ(error_of("height_field { \"a.PNG\" }"),
+              "test.pov:1:16: error: cannot find image file \"a.PNG\"");
+    EXPECT_EQ(error_of("height_field { pot \"a\" }"),
+              "test.pov:1:20: error: cannot find image file \"a\"");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { image_map { pot \"a.gif\" } } }"),
+              "test.pov:1:37: error: File type not supported here.");
     EXPECT_EQ(error_of("sphere { 0, 1 hierarchy }"),
               "test.pov:1:15: error: 'hierarchy' cannot be used with this object");
 }
@@ -82,13 +103,6 @@ TEST(ShapeHeightField, Refusals) {
     EXPECT_EQ(error_of("height_field { function 4, 4 { 70000 } }"),
               "test.pov:1:30: error: unsupported: height_field function value out of "
               "range");
-    EXPECT_EQ(error_of("height_field { sys \"a\" }"),
-              "test.pov:1:16: error: unsupported: height_field sys file");
-    EXPECT_EQ(error_of("height_field { pot \"a.pot\" }"),
-              "test.pov:1:16: error: unsupported: height_field pot file");
-    EXPECT_EQ(
-        error_of("height_field { \"a\" }"),
-        "test.pov:1:16: error: unsupported: height_field file without an extension");
     const std::string png = "\"" + kImages + "hf_grey8.png\"";
     auto refusal = [](const std::string& text) {
         try {
@@ -102,13 +116,50 @@ TEST(ShapeHeightField, Refusals) {
     const std::string at = "test.pov:1:" + std::to_string(21 + png.size()) + ": error: ";
     EXPECT_EQ(refusal("height_field { png " + png + " gamma 2 }"),
               at + "unsupported: height_field image gamma");
-    EXPECT_EQ(refusal("height_field { png " + png + " premultiplied on }"),
-              at + "unsupported: height_field premultiplied");
-    EXPECT_EQ(refusal("height_field { \"" + kImages + "card.exr\" }"),
-              "test.pov:1:16: error: unsupported: height_field exr file");
+    // Only alpha is kept differently: without alpha, no effect.
+    EXPECT_EQ(refusal("height_field { png " + png + " premultiplied on }"), "(no error)");
+    EXPECT_EQ(
+        refusal("height_field { png \"" + kImages + "card_alpha.png\" premultiplied 0 }"),
+        "test.pov:1:20: error: unsupported: height_field image with an alpha channel");
     EXPECT_EQ(
         refusal("height_field { png \"" + kImages + "card_alpha.png\" }"),
         "test.pov:1:20: error: unsupported: height_field image with an alpha channel");
+}
+
+// Files named without extension (the type's extensions tried, or with no type keyword the
+// output file type's), POT, TIFF and float images, and POV-Ray's errors for them.
+TEST(ShapeHeightField, FileTypesAndNames) {
+    auto grid = [](const std::string& spec, char output_type = 'N') {
+        ParseOptions o;
+        o.image_reader = output::read_stored_image;
+        o.output_file_type = output_type;
+        const Scene s = parse_scene_text("height_field { " + spec + " }", "test.pov", o);
+        return *std::get<HeightField>(s.objects.at(0).shape).data;
+    };
+    const std::string dir = "\"" + kImages;
+    EXPECT_EQ(grid(dir + "hf_grey8\"").width, 33);            // .png, the default +FN
+    EXPECT_EQ(grid(dir + "hf_rgb8\"", 'T').width, 30);        // .tga for +FT
+    EXPECT_EQ(grid("tiff " + dir + "hf_grey8\"").width, 33);  // .tif
+    // POT: 16-bit heights, the grid half the GIF's width; each height's high byte left.
+    const HeightFieldData pot = grid("pot " + dir + "hf_heights.pot\"");
+    EXPECT_EQ(pot.width, 30);
+    EXPECT_EQ(pot.depth, 26);
+    bool low_bytes = false;
+    for (uint16_t h : pot.heights) low_bytes = low_bytes || (h & 255) != 0;
+    EXPECT_TRUE(low_bytes);
+    // An 8-bit grey TIFF: v * 257 (red * 256 + green); a 16-bit one keeps its high byte.
+    for (const char* name : {"hf_grey8.tif", "hf_grey16.tif"}) {
+        for (uint16_t h : grid(dir + name + "\"").heights) EXPECT_EQ(h % 257, 0) << name;
+    }
+    // Float images: red * 256 + green, as if 8-bit.
+    EXPECT_EQ(grid(dir + "hf_rgbe.hdr\"").width, 20);
+    EXPECT_EQ(grid("exr " + dir + "hf_half\"").depth, 26);
+    EXPECT_EQ(image_error("height_field { sys " + dir + "hf_grey8.png\" }"),
+              "test.pov:1:16: error: This platform has not defined a SYS file type");
+    // POV-Ray picks the reader by the type, not by the file's content.
+    EXPECT_EQ(
+        image_error("height_field { pot " + dir + "hf_grey8.png\" }"),
+        "test.pov:1:20: error: Cannot read image: not a pot file (it reads as png)");
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
-"""Writes the small height_field test images (hf_*.png, hf_*.ppm, hf_*.tga) beside this
-script: deterministic terrains in each container POV-Ray 3.7 derives heights from
-differently (8- and 16-bit grey, palette, 8- and 16-bit colour, Targa, Netpbm)."""
+"""Writes the small height_field test images (hf_*.png, hf_*.ppm, hf_*.tga, hf_*.pot,
+and with oiiotool hf_*.tif, hf_*.exr, hf_*.hdr) beside this script: deterministic terrains
+in each container POV-Ray 3.7 derives heights from differently (8- and 16-bit grey,
+palette, 8- and 16-bit colour, Targa, Netpbm, POT, TIFF, float)."""
 import math
 import os
 import struct
+import subprocess
 import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -112,6 +114,50 @@ def spikes(name, w, h):
     png(name, w, h, 0, 16, rows)
 
 
+def gif(name, w, h, indices, palette):
+    # 8-bit LZW codes kept at 9 bits by a clear code before the table would grow.
+    codes, bits = [256], []
+    for n, i in enumerate(indices):
+        if n % 250 == 249:
+            codes.append(256)
+        codes.append(i)
+    codes.append(257)
+    acc = nbits = 0
+    data = b""
+    for c in codes:
+        acc |= c << nbits
+        nbits += 9
+        while nbits >= 8:
+            data += bytes([acc & 255])
+            acc >>= 8
+            nbits -= 8
+    if nbits:
+        data += bytes([acc & 255])
+    blocks = b"".join(bytes([len(data[i:i + 255])]) + data[i:i + 255]
+                      for i in range(0, len(data), 255))
+    out = b"GIF87a" + struct.pack("<HHBBB", w, h, 0xF7, 0, 0)
+    out += b"".join(bytes(c) for c in palette)
+    out += b"," + struct.pack("<HHHHB", 0, 0, w, h, 0) + b"\x08" + blocks + b"\x00;"
+    with open(os.path.join(HERE, name), "wb") as f:
+        f.write(out)
+
+
+def pot(name, w, h):
+    # POV-Ray's 16-bit heights in a GIF twice as wide: high bytes left, low bytes right.
+    # The palette names 256 different colours (povwall recovers indices from colours).
+    palette = [(i, 255 - i, (i * 7) % 256) for i in range(256)]
+    indices = []
+    for z in range(h):
+        row = [int(terrain(x, z, w, h) * 65535) ^ (x * 91 % 256) for x in range(w)]
+        indices += [v >> 8 for v in row] + [v & 255 for v in row]
+    gif(name, 2 * w, h, indices, palette)
+
+
+def oiio(source, name, *options):
+    subprocess.run(["oiiotool", os.path.join(HERE, source), *options, "-o",
+                    os.path.join(HERE, name)], check=True)
+
+
 grey8("hf_grey8.png", 33, 25)
 grey16("hf_grey16.png", 40, 40)
 palette8("hf_palette.png", 24, 30)
@@ -121,3 +167,11 @@ tga("hf_rgb8.tga", 30, 22)
 pgm("hf_grey8.pgm", 26, 34)
 spikes("hf_spikes.png", 64, 64)
 png("hf_flat.png", 16, 16, 0, 8, [bytes([128] * 16)] * 16)
+pot("hf_heights.pot", 30, 26)
+oiio("hf_grey8.png", "hf_grey8.tif")
+oiio("hf_grey16.png", "hf_grey16.tif")
+oiio("hf_rgb8.png", "hf_rgb8.tif")
+oiio("hf_rgb16.png", "hf_rgb16.tif")
+oiio("hf_grey16.png", "hf_float.exr", "-d", "float")
+oiio("hf_rgb16.png", "hf_half.exr", "-d", "half")
+oiio("hf_rgb16.png", "hf_rgbe.hdr")
