@@ -502,12 +502,16 @@ int run_render(RenderOptions o) {
         } else {
             j["boxes"] = 1;
         }
-        std::string tmp = o.stats_file + ".tmp";
-        {
-            std::ofstream out(tmp);
-            out << j.dump(2) << "\n";
+        if (o.stats_file == "-") {  // as usual for a file name: standard output
+            std::cout << j.dump(2) << "\n" << std::flush;
+        } else {
+            std::string tmp = o.stats_file + ".tmp";
+            {
+                std::ofstream out(tmp);
+                out << j.dump(2) << "\n";
+            }
+            std::filesystem::rename(tmp, o.stats_file);
         }
-        std::filesystem::rename(tmp, o.stats_file);
     }
     return 0;
 }

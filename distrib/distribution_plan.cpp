@@ -476,7 +476,7 @@ DistributionPlan plan_distribution(const Scene& scene,
                  ? "--mode single"
                  : "scene " + size + " fits the " + budget + " worker budget") +
             std::string(": one process, no walls; ") + threads +
-            " take image rows as they finish (screen subdivision, one shared scene)");
+            " take render blocks as they finish (screen subdivision, one shared scene)");
         return plan;
     }
     plan.mode = RenderMode::Space;

@@ -566,8 +566,14 @@ sphere { 0, 1 pigment { color rgb <1, 0.6, 0.3> } }
             "  shading is linear: contributions go straight to the pixel, no parent "
             "table\n"
             "  scene 0.8 KB fits the 1.0 GB worker budget: one process, no walls; 2 "
-            "threads take image rows as they finish (screen subdivision, one shared "
+            "threads take render blocks as they finish (screen subdivision, one shared "
             "scene)\n");
+    // "--stats -": the same JSON on standard output.
+    RunResult piped = run("render " + scene.string() + " -W 16 -H 12 -q -o " +
+                          out.string() + " --stats -");
+    ASSERT_EQ(piped.code, 0) << piped.err;
+    EXPECT_EQ(nlohmann::json::parse(piped.out)["rays"]["shadow"], 0);
+    EXPECT_FALSE(fs::exists(fs::current_path() / "-"));
     std::ifstream in(stats);
     auto j = nlohmann::json::parse(in);
     EXPECT_EQ(j["rays"]["shadow"], 0);
