@@ -351,12 +351,9 @@ Light Interpreter::parse_light_block() {
         } else if (w == "adaptive" && l.area)
             l.area->adaptive = parse_int();
         // These may come before area_light; kept and applied at the end.
-        else if (w == "jitter") {
+        else if (w == "jitter")
             jitter = true;
-            warn(t,
-                 "area-light jitter is rendered without jitter (povwall samples the "
-                 "fixed grid; soft shadows lose their noise)");
-        } else if (w == "circular")
+        else if (w == "circular")
             circular = true;
         else if (w == "orient")
             orient = true;

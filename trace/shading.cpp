@@ -2,6 +2,7 @@
 #include "trace/shading.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <deque>
@@ -957,6 +958,7 @@ Rgb adaptive_average(const AreaLight& area, const Rgb& light_colour, int u1, int
 
 AreaGrid::AreaGrid(const Scene& scene, const ChildRay& shadow)
     : light(scene.lights[size_t(shadow.light)]),
+      light_index(shadow.light),
       area(*light.area),
       at(shadow.trace.ray.origin),
       n1(std::max(1, area.size1)),
@@ -976,9 +978,37 @@ AreaGrid::AreaGrid(const Scene& scene, const ChildRay& shadow)
     }
 }
 
+namespace {
+
+// Two numbers in [0, 1) from the lit point, the light and the sample (splitmix64 over
+// their bits): the same for the same sample of the same point in every render mode.
+void area_jitter(const Point3& at, int light, int u, int v, Real& a, Real& b) {
+    auto mix = [](uint64_t z) {
+        z += 0x9e3779b97f4a7c15ull;
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    };
+    uint64_t h = mix(std::bit_cast<uint64_t>(at.x));
+    h = mix(h ^ std::bit_cast<uint64_t>(at.y));
+    h = mix(h ^ std::bit_cast<uint64_t>(at.z));
+    h = mix(h ^ (uint64_t(uint32_t(light)) << 32 | uint64_t(uint16_t(u)) << 16 |
+                 uint64_t(uint16_t(v))));
+    a = Real(h >> 11) * 0x1p-53;
+    b = Real(mix(h) >> 11) * 0x1p-53;
+}
+
+}  // namespace
+
 bool AreaGrid::sample_ray(int u, int v, Ray& ray, Real& distance) const {
     Vector3 offset{0, 0, 0};
     Real ju = u, jv = v;
+    if (area.jitter) {
+        Real a, b;
+        area_jitter(at, light_index, u, v, a, b);
+        ju += a - 0.5;
+        jv += b - 0.5;
+    }
     if (area.circular && n1 > 1 && n2 > 1) {
         ju = ju / (n1 - 1) - 0.5 + 0.001;
         jv = jv / (n2 - 1) - 0.5 + 0.001;

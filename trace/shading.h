@@ -161,12 +161,16 @@ struct AreaGrid {
     AreaGrid(const Scene& scene, const ChildRay& shadow);
     size_t samples() const { return size_t(n1) * size_t(n2); }
     // The shadow ray toward sample (u, v) and the distance to it; false when the point
-    // is the sample itself (transmittance 1).
+    // is the sample itself (transmittance 1). With `jitter` the sample moves within its
+    // cell by up to half a cell each way, as POV-Ray's; POV-Ray draws the offsets from a
+    // per-thread random sequence (no two of its renders agree), ours are a hash of the
+    // lit point, the light and the sample, so every render mode gives the same image.
     bool sample_ray(int u, int v, Ray& ray, Real& distance) const;
     // The adaptive average of `samples` (u-major, n1 x n2).
     Rgb average(const Rgb* samples) const;
 
     const Light& light;
+    int light_index;
     const AreaLight& area;
     Point3 at;
     int n1, n2;

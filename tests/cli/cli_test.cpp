@@ -537,6 +537,39 @@ sphere { <clock, 0, 0>, Radius pigment { Colours[frame_number - 1] } }
     EXPECT_NE(r.err.find("povray failed"), std::string::npos) << r.err;
 }
 
+// Area-light jitter moves each sample within its cell: the penumbra changes (the
+// light's grid alone would band), the lit and shadowed parts do not, and a render
+// repeats exactly (the offsets depend on the point, the light and the sample only).
+TEST(Cli, AreaLightJitterMovesThePenumbraAndRepeats) {
+    const std::string light =
+        "light_source { <-2, 5, -2> color rgb 1 area_light x * 3, z * 3, 4, 4 ";
+    const std::string rest = R"(}
+camera { location <0, 3, -5> look_at 0 angle 45 }
+plane { y, -1 pigment { rgb 0.9 } }
+sphere { 0, 1 pigment { rgb <0.8, 0.4, 0.2> } }
+)";
+    const fs::path fixed = write_scene("area_fixed.pov", light + rest),
+                   jittered = write_scene("area_jitter.pov", light + "jitter" + rest);
+    std::vector<povwall::Image> images;
+    for (const fs::path& scene : {fixed, jittered, jittered}) {
+        const fs::path out =
+            scratch() / ("area" + std::to_string(images.size()) + ".exr");
+        ASSERT_EQ(
+            run("render " + scene.string() + " -W 48 -H 36 -q -o " + out.string()).code,
+            0);
+        images.push_back(povwall::output::read_image(out.string()));
+    }
+    EXPECT_EQ(images[1].rgba, images[2].rgba);
+    int moved = 0;
+    for (size_t i = 0; i < images[0].rgba.size(); ++i) {
+        const float d = std::fabs(images[0].rgba[i] - images[1].rgba[i]);
+        moved += d > 1e-4f;
+        EXPECT_LT(d, 0.2f) << i;
+    }
+    EXPECT_GT(moved, 20);
+    EXPECT_LT(moved, int(images[0].rgba.size() / 4));
+}
+
 }  // namespace
 
 namespace povwall_cli_plan {

@@ -231,7 +231,8 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
          {"version_include", "version_switch", "version_background_first",
           "legacy_version36", "reflection_bumped_normals", "caustics_bumped",
           "irid_reflection", "inverse_csg", "map_entries", "palette_images",
-          "mesh_corner_textures", "object_flags", "image_map_file_types"}) {
+          "mesh_corner_textures", "object_flags", "image_map_file_types",
+          "area_light_jitter"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(scene, "-W 40 -H 30",
