@@ -23,7 +23,8 @@ Matrix34 invert(const Matrix34& a) {
     Real det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
     Matrix34 r;
     if (det == 0) {
-        // Singular (e.g. scale 0): keep it finite; POV-Ray warns and clamps scale to 1e-10.
+        // Singular (e.g. scale 0): keep it finite; POV-Ray warns and clamps scale to
+        // 1e-10.
         det = 1e-300;
     }
     Real id = 1 / det;
@@ -72,7 +73,17 @@ Transform Transform::scale(const Vector3& s) {
     f.m[0][0] = s.x;
     f.m[1][1] = s.y;
     f.m[2][2] = s.z;
-    return from_matrix(f);
+    if (s.x == 0 || s.y == 0 || s.z == 0) return from_matrix(f);  // kept finite there
+    // The inverse holds 1/s as POV-Ray's Compute_Scaling_Transform does: the general
+    // inversion gives s*s/(s*s*s), an ulp off for most s, and that ulp flips decisions
+    // in chaotic shapes (julia_fractal's dust).
+    Transform t;
+    t.fwd_ = f;
+    t.inv_.m[0][0] = 1 / s.x;
+    t.inv_.m[1][1] = 1 / s.y;
+    t.inv_.m[2][2] = 1 / s.z;
+    t.identity_ = false;
+    return t;
 }
 
 Transform Transform::rotate(const Vector3& deg) {
@@ -125,7 +136,8 @@ Bounds3 Transform::bounds(const Bounds3& b) const {
     if (b.infinite()) return Bounds3::everything();
     Bounds3 r;
     for (int i = 0; i < 8; ++i) {
-        Point3 p{(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z};
+        Point3 p{(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y,
+                 (i & 4) ? b.hi.z : b.lo.z};
         r.extend(point(p));
     }
     return r;

@@ -348,8 +348,30 @@ struct BicubicPatch {
 // hypercomplex, as POV-Ray 3.7's (trace/shapes/julia_fractal.cpp).
 struct JuliaFractal {
     enum class Algebra : uint8_t { Quaternion, Hypercomplex };
-    enum class Function : uint8_t { Sqr, Cube, Reciprocal };
+    // Hypercomplex only past Reciprocal: a complex function applied to both parts of the
+    // duplex form (POV-Ray's hcmplx functions); Pwr raises to the complex `exponent`.
+    enum class Function : uint8_t {
+        Sqr,
+        Cube,
+        Reciprocal,
+        Exp,
+        Ln,
+        Sin,
+        Asin,
+        Cos,
+        Acos,
+        Tan,
+        Atan,
+        Sinh,
+        Asinh,
+        Cosh,
+        Acosh,
+        Tanh,
+        Atanh,
+        Pwr
+    };
     std::array<Real, 4> c{0, 0, 0, 0};
+    std::array<Real, 2> exponent{0, 0};  // pwr's (re, im)
     Algebra algebra = Algebra::Quaternion;
     Function function = Function::Sqr;
     int max_iteration = 20;

@@ -1,11 +1,29 @@
 // julia_fractal { C [max_iteration N | slice V, D | precision P | quaternion |
-// hypercomplex | sqr | cube | reciprocal]... }, as POV-Ray 3.7's Parse_Julia_Fractal and
-// its set-up (bounding radius, escape value).
+// hypercomplex | sqr | cube | reciprocal | pwr(X, Y) | exp | ln | sin | asin | cos | acos
+// | tan | atan | sinh | asinh | cosh | acosh | tanh | atanh]... }, as POV-Ray 3.7's
+// Parse_Julia_Fractal and its set-up (bounding radius, escape value).
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <utility>
 
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
+namespace {
+
+using Function = JuliaFractal::Function;
+
+// The float functions POV-Ray takes as hypercomplex functions.
+constexpr std::pair<std::string_view, Function> kComplexFunctions[] = {
+    {"exp", Function::Exp},     {"ln", Function::Ln},       {"sin", Function::Sin},
+    {"asin", Function::Asin},   {"cos", Function::Cos},     {"acos", Function::Acos},
+    {"tan", Function::Tan},     {"atan", Function::Atan},   {"sinh", Function::Sinh},
+    {"asinh", Function::Asinh}, {"cosh", Function::Cosh},   {"acosh", Function::Acosh},
+    {"tanh", Function::Tanh},   {"atanh", Function::Atanh},
+};
+
+}  // namespace
 
 void Interpreter::parse_julia_fractal(Object& out, const Token& keyword) {
     JuliaFractal j;
@@ -15,6 +33,9 @@ void Interpreter::parse_julia_fractal(Object& out, const Token& keyword) {
     }
     for (;;) {
         const Token t = peek();
+        // POV-Ray reads a float here as a wrong fractal keyword (its float functions too,
+        // below).
+        if (t.kind == TokenKind::Number) expected("fractal keyword", t);
         if (t.kind != TokenKind::Word) break;
         const std::string_view w = t.text;
         if (w == "max_iteration") {
@@ -51,17 +72,29 @@ void Interpreter::parse_julia_fractal(Object& out, const Token& keyword) {
         } else if (w == "reciprocal") {
             next();
             j.function = JuliaFractal::Function::Reciprocal;
-        } else if (w == "exp" || w == "ln" || w == "sin" || w == "asin" || w == "cos" ||
-                   w == "acos" || w == "tan" || w == "atan" || w == "sinh" ||
-                   w == "asinh" || w == "cosh" || w == "acosh" || w == "tanh" ||
-                   w == "atanh" || w == "pwr") {
-            unsupported(t, "julia_fractal " + std::string(w));
+        } else if (w == "pwr") {
+            next();
+            expect_punct('(');
+            j.exponent[0] = parse_float();
+            accept_punct(',');
+            j.exponent[1] = parse_float();
+            expect_punct(')');
+            j.function = Function::Pwr;
         } else {
+            const auto* f =
+                std::find_if(std::begin(kComplexFunctions), std::end(kComplexFunctions),
+                             [&](const auto& e) { return e.first == w; });
+            if (f != std::end(kComplexFunctions)) {
+                next();
+                j.function = f->second;
+                continue;
+            }
+            if (starts_float(t)) expected("fractal keyword", t);
             break;
         }
     }
-    if (j.algebra == JuliaFractal::Algebra::Quaternion &&
-        j.function == JuliaFractal::Function::Reciprocal)
+    if (j.algebra == JuliaFractal::Algebra::Quaternion && j.function != Function::Sqr &&
+        j.function != Function::Cube)
         error(keyword, "Illegal function: quaternion only supports sqr and cube");
     if (j.algebra == JuliaFractal::Algebra::Quaternion) {
         const Real r = std::min(2.0, 1 +

@@ -182,6 +182,10 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
         for (size_t k = start; k < out.size(); ++k) {
             if (inside_clips(o, out[k].at(ray))) out[w++] = out[k];
         }
+        // Outside CSG a julia_fractal stops at its first hit the clip keeps (POV-Ray
+        // breaks after pushing it): a ray leaving its surface must not see the next.
+        if (!csg_child && std::holds_alternative<JuliaFractal>(o.shape))
+            w = std::min(w, start + 1);
         out.resize(w);
     }
 }

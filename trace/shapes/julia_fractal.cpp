@@ -3,6 +3,8 @@
 #include <cmath>
 #include <vector>
 
+#include "trace/shapes/julia_complex.h"
+
 namespace povwall::trace {
 namespace {
 
@@ -10,7 +12,13 @@ constexpr Real kFractalTolerance = 1e-7;  // marching, bisection and bound (FT)
 constexpr Real kHyperTolerance = 1e-8;    // the hypercomplex distance estimate (FTh)
 constexpr Real kEpsilon = 1e-10;
 
-using Q = std::array<Real, 4>;  // x, y, z, w
+using Q = Quad;
+
+// exp ... atanh and pwr: the hypercomplex functions built from complex ones.
+bool is_function_family(const JuliaFractal& j) {
+    return j.algebra == JuliaFractal::Algebra::Hypercomplex &&
+           j.function >= JuliaFractal::Function::Exp;
+}
 
 Real norm2(const Q& q) { return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]; }
 
@@ -25,6 +33,8 @@ Q step(const JuliaFractal& j, const Q& q) {
         } else {
             r = {x * x - (y * y + z * z + w * w), 2 * x * y, 2 * x * z, 2 * x * w};
         }
+    } else if (is_function_family(j)) {
+        r = hypercomplex_function(j, q);
     } else if (j.function == JuliaFractal::Function::Reciprocal) {
         const Real det = ((x - w) * (x - w) + (y + z) * (y + z)) *
                          ((x + w) * (x + w) + (y - z) * (y - z));
@@ -58,9 +68,11 @@ struct Stack {
     }
 };
 
-// The plain iteration: inside when it never escapes. Fills the stack.
+// The plain iteration: inside when it never escapes. Fills the stack. For the function
+// family POV-Ray starts it from (x, y, y) (its Iteration_HCompl_Func reads y for z), so
+// the bisection and the inside test see another set than the march: replicated.
 bool iterate(const JuliaFractal& j, const Point3& p, Stack& st) {
-    st.q[0] = start(j, p);
+    st.q[0] = start(j, is_function_family(j) ? Point3{p.x, p.y, p.y} : p);
     for (int i = 1; i <= j.max_iteration; ++i) {
         if (norm2(st.q[size_t(i - 1)]) > j.exit_value) return false;
         st.q[size_t(i)] = step(j, st.q[size_t(i - 1)]);
@@ -93,6 +105,9 @@ Vector3 hyper_normal(const JuliaFractal& j, const Stack& st, int n) {
             Q h = hyper_square(step(plain, qi));
             for (Real& k : h) k = -k;
             v = hyper_product(v, h);
+        } else if (is_function_family(j)) {
+            // f(q_i), not its derivative, as POV-Ray's Normal_Calc_HCompl_Func
+            v = hyper_product(hypercomplex_function(j, qi), v);
         } else {
             v = hyper_product(qi, v);
         }
