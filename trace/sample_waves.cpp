@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
-#include <unordered_map>
 
 namespace povwall::trace {
 namespace {
@@ -40,27 +39,83 @@ class SampleCache final : public SampleSource {
         return wave_.size();
     }
 
-  private:
-    struct Key {
-        uint64_t x, y;
-        bool operator==(const Key&) const = default;
-    };
-    struct KeyHash {
-        size_t operator()(const Key& k) const {
-            // The bits of two doubles mixed (splitmix64's finaliser).
-            uint64_t h = k.x * 0x9e3779b97f4a7c15ull ^ (k.y + 0x632be59bd9b4e019ull);
-            h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-            h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-            return size_t(h ^ (h >> 31));
-        }
-    };
-    const float* traced(Real x, Real y) const {
-        const auto it =
-            index_.find(Key{std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(y)});
-        return it != index_.end() && it->second < traced_ ? &rgbt_[it->second * 4]
-                                                          : nullptr;
+    // The first wave's lattice (pixel centres, or +AM2's corners: `offset` -0.5) over
+    // `area` grown by one on each side, in a dense table; the other positions hashed.
+    void set_lattice(const PixelBlock& area, Real offset) {
+        offset_ = offset;
+        gx0_ = area.x0 - 1, gy0_ = area.y0 - 1;
+        gw_ = area.width() + 3, gh_ = area.height() + 3;
+        lattice_.assign(size_t(gw_) * size_t(gh_), kNone);
     }
-    bool estimate(Real x, Real y, float* rgbt) const {
+
+  private:
+    static constexpr uint32_t kNone = ~uint32_t(0);
+    // The lattice entry of (x, y), or null when it lies off the lattice.
+    uint32_t* on_lattice(Real x, Real y) {
+        const Real gx = x - offset_, gy = y - offset_;
+        if (gx != std::floor(gx) || gy != std::floor(gy)) return nullptr;
+        const Real i = gx - gx0_, j = gy - gy0_;
+        if (i < 0 || j < 0 || i >= gw_ || j >= gh_) return nullptr;
+        return &lattice_[size_t(j) * size_t(gw_) + size_t(i)];
+    }
+    // Open addressing, linear probing, on the bits of the two doubles.
+    struct Slot {
+        uint64_t x = 0, y = 0;
+        uint32_t index = kNone;
+    };
+    static size_t hash(uint64_t x, uint64_t y) {
+        // splitmix64's finaliser over the two words mixed.
+        uint64_t h = x * 0x9e3779b97f4a7c15ull ^ (y + 0x632be59bd9b4e019ull);
+        h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+        h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+        return size_t(h ^ (h >> 31));
+    }
+    // The entry of (x, y), new (kNone) if absent: find_or_add() fills it at once.
+    uint32_t& hashed(Real x, Real y) {
+        if ((hashed_count_ + 1) * 2 > slots_.size()) grow();
+        const uint64_t bx = std::bit_cast<uint64_t>(x), by = std::bit_cast<uint64_t>(y);
+        const size_t mask = slots_.size() - 1;
+        for (size_t k = hash(bx, by) & mask;; k = (k + 1) & mask) {
+            Slot& s = slots_[k];
+            if (s.index == kNone) {
+                s.x = bx, s.y = by;
+                ++hashed_count_;
+                return s.index;
+            }
+            if (s.x == bx && s.y == by) return s.index;
+        }
+    }
+    void grow() {
+        std::vector<Slot> old = std::move(slots_);
+        slots_.assign(std::max<size_t>(1024, old.size() * 2), Slot{});
+        const size_t mask = slots_.size() - 1;
+        for (const Slot& s : old) {
+            if (s.index == kNone) continue;
+            size_t k = hash(s.x, s.y) & mask;
+            while (slots_[k].index != kNone) k = (k + 1) & mask;
+            slots_[k] = s;
+        }
+    }
+    uint32_t& entry(Real x, Real y) {
+        if (uint32_t* e = on_lattice(x, y)) return *e;
+        return hashed(x, y);
+    }
+    uint32_t find(Real x, Real y) {
+        if (const uint32_t* e = on_lattice(x, y)) return *e;
+        if (slots_.empty()) return kNone;
+        const uint64_t bx = std::bit_cast<uint64_t>(x), by = std::bit_cast<uint64_t>(y);
+        const size_t mask = slots_.size() - 1;
+        for (size_t k = hash(bx, by) & mask;; k = (k + 1) & mask) {
+            const Slot& s = slots_[k];
+            if (s.index == kNone) return kNone;
+            if (s.x == bx && s.y == by) return s.index;
+        }
+    }
+    const float* traced(Real x, Real y) {
+        const uint32_t i = find(x, y);
+        return i < traced_ ? &rgbt_[size_t(i) * 4] : nullptr;
+    }
+    bool estimate(Real x, Real y, float* rgbt) {
         const Real x0 = std::floor(x), y0 = std::floor(y);
         const float fx = float(x - x0), fy = float(y - y0);
         const float* c[4] = {traced(x0, y0), traced(x0 + 1, y0), traced(x0, y0 + 1),
@@ -78,13 +133,18 @@ class SampleCache final : public SampleSource {
         return true;
     }
     size_t find_or_add(Real x, Real y) {
-        const auto [it, added] = index_.try_emplace(
-            Key{std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(y)},
-            positions_.size());
-        if (added) positions_.push_back({x, y});
-        return it->second;
+        uint32_t& e = entry(x, y);
+        if (e == kNone) {
+            e = uint32_t(positions_.size());
+            positions_.push_back({x, y});
+        }
+        return e;
     }
-    std::unordered_map<Key, size_t, KeyHash> index_;
+    Real offset_ = 0;
+    int gx0_ = 0, gy0_ = 0, gw_ = 0, gh_ = 0;
+    std::vector<uint32_t> lattice_;
+    std::vector<Slot> slots_;
+    size_t hashed_count_ = 0;
     std::vector<SamplePosition> positions_;
     std::vector<float> rgbt_;  // of the first traced_ positions
     size_t traced_ = 0;
@@ -100,6 +160,7 @@ Image render_in_waves(const RenderSettings& settings, const SamplerSettings& sam
     const std::vector<PixelBlock> blocks = render_blocks(area, settings.block_size);
     PixelSampler sampler(sampling);
     SampleCache cache;
+    cache.set_lattice(area, sampling.method == 2 ? -0.5 : 0.0);
     {
         std::vector<SamplePosition> first;
         sampler.first_samples(area, first);
