@@ -313,8 +313,6 @@ int run_render(RenderOptions o) {
     bool workers_forked = false;
     Image image;
     if (use_boxes) {
-        if (o.render.antialias)
-            throw UsageError("anti-aliasing is not available with --boxes yet");
         space.results = o.results == "forward"   ? distrib::SpaceOptions::Results::Forward
                         : o.results == "parents" ? distrib::SpaceOptions::Results::Parents
                                                  : distrib::SpaceOptions::Results::Auto;
@@ -323,6 +321,11 @@ int run_render(RenderOptions o) {
         // Worker processes: --procs, --workers, or as many as auto mode needs for the
         // memory budget.
         if (dplan.procs > 0 || !o.workers.empty()) {
+            if (o.render.antialias)
+                throw UsageError(
+                    "anti-aliasing is not available with --boxes over worker processes "
+                    "(--procs, --workers) yet; --boxes in one process or --mode screen "
+                    "take it");
             distrib::SceneSource source;
             std::ifstream in(o.scene, std::ios::binary);
             source.text.assign(std::istreambuf_iterator<char>(in), {});
@@ -475,6 +478,9 @@ int run_render(RenderOptions o) {
         }
         if (use_boxes) {
             j["results"] = space_stats.parent_tracking ? "parents" : "forward";
+            // Anti-aliasing: the camera samples each wave traced.
+            if (!space_stats.wave_samples.empty())
+                j["antialias_wave_samples"] = space_stats.wave_samples;
             nlohmann::json boxes = nlohmann::json::array();
             for (const auto& b : space_stats.boxes) {
                 auto lim = [](double v) {

@@ -33,7 +33,8 @@ struct RayItem {
     Real t_from = 0;
     Real light_distance = kInfinity;
     trace::ShadowState shadow_state;
-    // Where the result goes: a waiting parent (parent tracking) or the pixel.
+    // Where the result goes: a waiting parent (parent tracking) or the pixel (the
+    // camera sample's slot when the run traces a list of samples: set_samples()).
     uint64_t parent = 0;
     int32_t parent_box = -1;
     uint16_t slot = 0;
@@ -141,8 +142,17 @@ class BoxHost {
     }
     bool parent_tracking() const { return parents_; }
 
-    // Camera ray of pixel p and the box it starts in; -1 where the camera sees nothing.
+    // The camera samples the next runs trace, one slot each in place of the pixels
+    // (anti-aliasing waves): POV-Ray pixel positions (pixel (i, j)'s centre at (i, j)).
+    // Empty: every pixel's centre, slot = pixel.
+    void set_samples(std::vector<trace::SamplePosition> samples);
+    // After a run of samples, summed here (in-process): each slot's rgbt as
+    // trace::CameraSamples gives it (sample_colour()).
+    void sample_colours(std::vector<float>& rgbt) const;
+    // Camera ray of slot p (a pixel, or a sample of set_samples()) and the box it starts
+    // in; -1 where the camera sees nothing.
     int camera_item(int pixel, Item& item) const;
+    bool has_camera_ray(int slot) const;
     // Items that arrived from another process for hosted box `box`, at once (one lock,
     // one wake-up): `fill(item)` decodes
     // the next item into place and returns its encoded size, or 0 when there is no
@@ -276,7 +286,8 @@ class BoxHost {
     };
     std::vector<PixelBand> bands_;
     int pixels_sent() const;
-    int total_pixels_ = 0;
+    int total_pixels_ = 0;  // slots: the image's pixels, or samples_.size()
+    std::vector<trace::SamplePosition> samples_;
     // Progress (settings.progress): pixels sent, scaled by the share of items finished.
     std::atomic<uint64_t> progress_reported_{0};
     void report_progress();

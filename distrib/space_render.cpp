@@ -10,6 +10,7 @@
 #include "distrib/box_host.h"
 #include "distrib/shared_pixel_sums.h"
 #include "trace/camera.h"
+#include "trace/sample_waves.h"
 #include "trace/shading.h"
 
 namespace povwall::distrib {
@@ -611,11 +612,38 @@ void BoxHost::process(Box& box, Item& item, int thread) {
     }
 }
 
+void BoxHost::set_samples(std::vector<trace::SamplePosition> samples) {
+    samples_ = std::move(samples);
+    total_pixels_ =
+        samples_.empty() ? settings_.width * settings_.height : int(samples_.size());
+}
+
+namespace {
+std::optional<Ray> sample_ray(const Camera& camera, const trace::SamplePosition& p,
+                              const trace::RenderSettings& s) {
+    return trace::camera_ray_pov(camera, p.x, p.y, s.width, s.height);
+}
+}  // namespace
+
+bool BoxHost::has_camera_ray(int slot) const {
+    if (!samples_.empty())
+        return sample_ray(scene_.camera, samples_[size_t(slot)], settings_).has_value();
+    const int x = slot % settings_.width, y = slot / settings_.width;
+    return trace::camera_ray(scene_.camera, x + 0.5, y + 0.5, settings_.width,
+                             settings_.height)
+        .has_value();
+}
+
 int BoxHost::camera_item(int pixel, Item& item) const {
     RayItem& r = item.ray;
-    int x = pixel % settings_.width, y = pixel / settings_.width;
-    std::optional<Ray> ray = trace::camera_ray(scene_.camera, x + 0.5, y + 0.5,
-                                               settings_.width, settings_.height);
+    std::optional<Ray> ray;
+    if (!samples_.empty()) {
+        ray = sample_ray(scene_.camera, samples_[size_t(pixel)], settings_);
+    } else {
+        const int x = pixel % settings_.width, y = pixel / settings_.width;
+        ray = trace::camera_ray(scene_.camera, x + 0.5, y + 0.5, settings_.width,
+                                settings_.height);
+    }
     if (!ray) return -1;  // nothing seen there (fisheye corners): the pixel stays black
     r.trace.ray = *ray;
     camera_interiors_.seed(r.trace.ray.origin, r.trace.interiors);
@@ -779,8 +807,20 @@ void BoxHost::report_progress() {
     if (done > before) settings_.progress->pixels_done += done - before;
 }
 
+namespace {
+// What a box's lane counted, added to `into` (box_stats(), and a new run's lanes).
+void add_lane_counts(BoxStats& into, const BoxStats& x) {
+    into.rays += x.rays;
+    into.rays_received += x.rays_received, into.results_received += x.results_received;
+    into.messages_sent += x.messages_sent, into.messages_received += x.messages_received;
+    into.bytes_sent += x.bytes_sent, into.bytes_received += x.bytes_received;
+}
+}  // namespace
+
 int BoxHost::begin_run(int threads) {
-    run_start_ = Clock::now();
+    // Runs after the first (anti-aliasing waves) add to the first's statistics.
+    if (run_start_ == Clock::time_point{}) run_start_ = Clock::now();
+    progress_reported_ = 0;
     // With parent tracking a box is worked on by one thread at a time: threads beyond
     // the boxes that hold something only fill inboxes and spin (one box on two threads
     // took twice as long).
@@ -791,6 +831,7 @@ int BoxHost::begin_run(int threads) {
     threads = std::max(threads, 1);
     for (auto& b : boxes_) {
         if (!b->scene) continue;
+        for (const Box::Lane& l : b->lanes) add_lane_counts(b->stats, l.stats);
         b->lanes = std::vector<Box::Lane>(size_t(threads));
         for (Box::Lane& l : b->lanes) b->scene->init_context(l.ctx);
     }
@@ -849,15 +890,7 @@ std::vector<BoxStats> BoxHost::box_stats() const {
     std::vector<BoxStats> out;
     for (const auto& b : boxes_) {
         BoxStats st = b->stats;
-        for (const Box::Lane& l : b->lanes) {
-            const BoxStats& x = l.stats;
-            st.rays += x.rays;
-            st.rays_received += x.rays_received,
-                st.results_received += x.results_received;
-            st.messages_sent += x.messages_sent,
-                st.messages_received += x.messages_received;
-            st.bytes_sent += x.bytes_sent, st.bytes_received += x.bytes_received;
-        }
+        for (const Box::Lane& l : b->lanes) add_lane_counts(st, l.stats);
         out.push_back(st);
     }
     return out;
@@ -881,6 +914,29 @@ Image image_from_sums(std::span<const double> sums, int width, int height, bool 
         set_pixel(image, p, s, alpha);
     }
     return image;
+}
+
+void sample_colour(const double* sums, bool alpha, bool camera_ray, float* rgbt) {
+    if (!camera_ray) {
+        rgbt[0] = rgbt[1] = rgbt[2] = 0;
+        rgbt[3] = 1;
+        return;
+    }
+    for (int c = 0; c < 3; ++c) rgbt[c] = float(sums[c]);
+    rgbt[3] = alpha ? std::clamp(float(sums[3]), 0.0f, 1.0f) : 0.0f;
+}
+
+void BoxHost::sample_colours(std::vector<float>& rgbt) const {
+    rgbt.assign(size_t(total_pixels_) * 4, 0.0f);
+    for (size_t p = 0; p < size_t(total_pixels_); ++p) {
+        double s[4] = {0, 0, 0, 0};
+        for (const PixelSums& a : accum_) {
+            if (!a.written[p >> kSumRunShift]) continue;
+            for (int c = 0; c < sum_channels_; ++c)
+                s[c] += a.values[p * size_t(sum_channels_) + size_t(c)];
+        }
+        sample_colour(s, settings_.alpha, has_camera_ray(int(p)), &rgbt[p * 4]);
+    }
 }
 
 Image BoxHost::image(int width, int height, bool alpha) const {
@@ -908,14 +964,31 @@ Image render_space(const Scene& scene, const trace::RenderSettings& settings,
     std::vector<int> all(host.walls().box_count());
     for (size_t b = 0; b < all.size(); ++b) all[b] = int(b);
     host.build_boxes(all);
-    if (settings.progress)
-        settings.progress->start_pass(uint64_t(settings.width) * settings.height);
     int threads = settings.threads > 0
                       ? settings.threads
                       : int(std::max(1u, std::thread::hardware_concurrency()));
-    host.run(threads, true);
-    Image image = host.image(settings.width, settings.height, settings.alpha);
-    trace::finish_pixels_without_camera_ray(image, scene.camera, settings);
+    const trace::SamplerSettings sampling = trace::sampler_settings(settings, scene);
+    Image image;
+    if (sampling.method != 0) {
+        // Anti-aliasing: the samples go through the boxes in waves, every block's
+        // decisions replayed here (trace/sample_waves.h).
+        auto trace_wave = [&](const std::vector<trace::SamplePosition>& wave,
+                              std::vector<float>& rgbt) {
+            if (settings.progress) settings.progress->start_pass(wave.size());
+            host.set_samples(wave);
+            host.run(threads, true);
+            host.sample_colours(rgbt);
+        };
+        trace::WaveStats waves;
+        image = trace::render_in_waves(settings, sampling, trace_wave, &waves);
+        if (stats) stats->wave_samples = waves.samples;
+    } else {
+        if (settings.progress)
+            settings.progress->start_pass(uint64_t(settings.width) * settings.height);
+        host.run(threads, true);
+        image = host.image(settings.width, settings.height, settings.alpha);
+        trace::finish_pixels_without_camera_ray(image, scene.camera, settings);
+    }
     if (stats) {
         stats->parent_tracking = host.parent_tracking();
         stats->boxes = host.box_stats();

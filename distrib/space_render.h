@@ -86,6 +86,8 @@ struct SpaceStats {
     // group; empty when the system placed them.
     std::vector<int> worker_cores;
     int teams = 1;  // SpaceOptions::teams as used (fewer after a lost worker)
+    // Anti-aliasing: the camera samples traced in each wave (trace/sample_waves.h).
+    std::vector<size_t> wave_samples;
 };
 
 using trace::shading_is_linear;  // trace/render_plan.h
@@ -93,6 +95,10 @@ using trace::shading_is_linear;  // trace/render_plan.h
 // The image from per-pixel sums of r, g, b, and with `alpha` (+UA) background transmit,
 // from which alpha comes: 3 or 4 values per pixel.
 Image image_from_sums(std::span<const double> sums, int width, int height, bool alpha);
+// A camera sample's rgbt from its sums (3 or 4 values, as image_from_sums), as
+// trace::CameraSamples gives it: transmit clamped with `alpha`, else 0; (0, 0, 0, 1)
+// without a camera ray.
+void sample_colour(const double* sums, bool alpha, bool camera_ray, float* rgbt);
 
 Image render_space(const Scene& scene, const trace::RenderSettings& settings,
                    const SpaceOptions& options, SpaceStats* stats = nullptr);

@@ -137,49 +137,102 @@ float PixelSampler::distance(const float* a, const float* b) const {
     return d + std::fabs(a[3] - b[3]);
 }
 
-void PixelSampler::render_block(const PixelBlock& block, SampleSource& source,
+bool PixelSampler::render_block(const PixelBlock& block, SampleSource& source,
                                 float* out) {
     switch (s_.method) {
         case 1:
-            method1(block, source, out);
-            return;
+            return method1(block, source, out);
         case 2:
-            method2(block, source, out);
-            return;
+            return method2(block, source, out);
         default:
-            method0(block, source, out);
+            return method0(block, source, out);
     }
 }
 
-void PixelSampler::method0(const PixelBlock& b, SampleSource& src, float* out) {
+void PixelSampler::first_samples(const PixelBlock& area,
+                                 std::vector<SamplePosition>& out) const {
+    if (s_.method == 2) {
+        for (int j = area.y0; j <= area.y1; ++j)
+            for (int i = area.x0; i <= area.x1; ++i) out.push_back({i - 0.5, j - 0.5});
+        return;
+    }
+    for (int j = area.y0; j < area.y1; ++j)
+        for (int i = area.x0; i < area.x1; ++i) out.push_back({Real(i), Real(j)});
+    if (s_.method != 1) return;
+    for (int i = area.x0; i < area.x1; ++i) out.push_back({Real(i), Real(area.y0 - 1)});
+    for (int j = area.y0; j < area.y1; ++j) out.push_back({Real(area.x0 - 1), Real(j)});
+}
+
+void PixelSampler::ask_likely_samples(const PixelBlock& b, SampleSource& src) {
+    if (s_.method != 1) return;
+    // Raw centres, the block's and its border's, as the block's first comparisons see
+    // them: a pixel is supersampled when it differs from its left or upper neighbour,
+    // or from its right or lower one inside the block (it is their left or upper
+    // neighbour).
+    const int w = b.width(), h = b.height(), stride = w + 1;
+    cells_.resize(size_t(stride) * size_t(h + 1) * 4);
+    done_.assign(size_t(stride) * size_t(h + 1), 0);  // here: centre at hand
+    auto cell = [&](int i, int j) {
+        return size_t(j - b.y0 + 1) * size_t(stride) + size_t(i - b.x0 + 1);
+    };
+    for (int j = b.y0 - 1; j < b.y1; ++j)
+        for (int i = b.x0 - 1; i < b.x1; ++i)
+            if (i >= b.x0 || j >= b.y0)
+                done_[cell(i, j)] = src.sample(i, j, &cells_[cell(i, j) * 4]);
+    auto differ = [&](int i, int j, int ni, int nj) {
+        return done_[cell(ni, nj)] &&
+               double(distance(&cells_[cell(ni, nj) * 4], &cells_[cell(i, j) * 4])) >=
+                   s_.threshold;
+    };
+    for (int j = b.y0; j < b.y1; ++j) {
+        for (int i = b.x0; i < b.x1; ++i) {
+            if (!done_[cell(i, j)]) continue;
+            float scratch[4] = {0, 0, 0, 0};  // the samples are only asked for
+            if (differ(i, j, i - 1, j) || differ(i, j, i, j - 1) ||
+                (i + 1 < b.x1 && differ(i, j, i + 1, j)) ||
+                (j + 1 < b.y1 && differ(i, j, i, j + 1)))
+                supersample(i, j, src, scratch);
+        }
+    }
+}
+
+bool PixelSampler::method0(const PixelBlock& b, SampleSource& src, float* out) {
+    bool complete = true;
     for (int j = b.y0; j < b.y1; ++j)
-        for (int i = b.x0; i < b.x1; ++i, out += 4) src.sample(i, j, out);
+        for (int i = b.x0; i < b.x1; ++i, out += 4) complete &= src.sample(i, j, out);
+    return complete;
 }
 
 // The D x D sub-samples of pixel (i, j) added to its centre sample in `colour`, then
-// averaged: offsets built by repeated addition, jittered by the nominal position.
-void PixelSampler::supersample(int i, int j, SampleSource& src, float* colour) {
+// averaged: offsets built by repeated addition, jittered by the nominal position. Every
+// sub-sample is asked for; false when one was missing.
+bool PixelSampler::supersample(int i, int j, SampleSource& src, float* colour) {
     const int D = s_.depth;
     const double step = 1.0 / D, range = 0.5 - step * 0.5;
     const double js = s_.jitter / D;
     float c[4];
+    bool complete = true;
     for (double yy = -range; yy <= range + 1e-10; yy += step) {
         for (double xx = -range; xx <= range + 1e-10; xx += step) {
             const double sx = i + xx, sy = j + yy;
+            bool have;
             if (js > 0) {
                 Real rx, ry;
                 pov_jitter(sx, sy, rx, ry);
-                src.sample(sx + rx * js, sy + ry * js, c);
+                have = src.sample(sx + rx * js, sy + ry * js, c);
             } else {
-                src.sample(sx, sy, c);
+                have = src.sample(sx, sy, c);
             }
-            for (int k = 0; k < 4; ++k) colour[k] += c[k];
+            complete &= have;
+            if (have)
+                for (int k = 0; k < 4; ++k) colour[k] += c[k];
         }
     }
     divide(colour, double(D * D + 1));
+    return complete;
 }
 
-void PixelSampler::method1(const PixelBlock& b, SampleSource& src, float* out) {
+bool PixelSampler::method1(const PixelBlock& b, SampleSource& src, float* out) {
     // Cells (w + 1) x (h + 1): row 0 and column 0 are the border above and to the left,
     // traced again by this block and never supersampled.
     const int w = b.width(), h = b.height(), stride = w + 1;
@@ -192,24 +245,28 @@ void PixelSampler::method1(const PixelBlock& b, SampleSource& src, float* out) {
     auto done = [&](int i, int j) -> uint8_t& {
         return done_[size_t(j - b.y0 + 1) * size_t(stride) + size_t(i - b.x0 + 1)];
     };
+    // Without a sample, the block stops where a decision needs it.
+    bool complete = true;
     for (int i = b.x0; i < b.x1; ++i) {
-        src.sample(i, b.y0 - 1, at(i, b.y0 - 1));
+        complete &= src.sample(i, b.y0 - 1, at(i, b.y0 - 1));
         done(i, b.y0 - 1) = 1;
     }
     for (int j = b.y0; j < b.y1; ++j) {
-        src.sample(b.x0 - 1, j, at(b.x0 - 1, j));
+        complete &= src.sample(b.x0 - 1, j, at(b.x0 - 1, j));
         done(b.x0 - 1, j) = 1;
         for (int i = b.x0; i < b.x1; ++i) {
             float* centre = at(i, j);
-            src.sample(i, j, centre);
+            complete &= src.sample(i, j, centre);
+            if (!complete) return false;
             // Compared with the neighbours as they are now (perhaps already averaged).
             const bool left = double(distance(at(i - 1, j), centre)) >= s_.threshold;
             const bool up = double(distance(at(i, j - 1), centre)) >= s_.threshold;
             const bool do_left = left && !done(i - 1, j);
             const bool do_up = up && !done(i, j - 1);
-            if (do_left) supersample(i - 1, j, src, at(i - 1, j));
-            if (do_up) supersample(i, j - 1, src, at(i, j - 1));
-            if (left || up) supersample(i, j, src, centre);
+            if (do_left) complete &= supersample(i - 1, j, src, at(i - 1, j));
+            if (do_up) complete &= supersample(i, j - 1, src, at(i, j - 1));
+            if (left || up) complete &= supersample(i, j, src, centre);
+            if (!complete) return false;
             if (do_left) done(i - 1, j) = 1;
             if (do_up) done(i, j - 1) = 1;
             if (left || up) done(i, j) = 1;
@@ -217,9 +274,10 @@ void PixelSampler::method1(const PixelBlock& b, SampleSource& src, float* out) {
     }
     for (int j = b.y0; j < b.y1; ++j)
         for (int i = b.x0; i < b.x1; ++i, out += 4) std::copy_n(at(i, j), 4, out);
+    return true;
 }
 
-void PixelSampler::method2(const PixelBlock& b, SampleSource& src, float* out) {
+bool PixelSampler::method2(const PixelBlock& b, SampleSource& src, float* out) {
     // Every pixel corner of the block, unjittered (a neighbouring block traces its own,
     // with the same values).
     const int w = b.width(), h = b.height(), stride = w + 1;
@@ -227,8 +285,11 @@ void PixelSampler::method2(const PixelBlock& b, SampleSource& src, float* out) {
     auto corner = [&](int i, int j) {
         return &cells_[(size_t(j - b.y0) * size_t(stride) + size_t(i - b.x0)) * 4];
     };
+    bool complete = true;
     for (int j = b.y0; j <= b.y1; ++j)
-        for (int i = b.x0; i <= b.x1; ++i) src.sample(i - 0.5, j - 0.5, corner(i, j));
+        for (int i = b.x0; i <= b.x1; ++i)
+            complete &= src.sample(i - 0.5, j - 0.5, corner(i, j));
+    if (!complete) return false;
     const int D = s_.depth;
     const size_t full = size_t(1) << D, side = full + 1;
     const double js = s_.jitter / double(full + 1);
@@ -236,21 +297,24 @@ void PixelSampler::method2(const PixelBlock& b, SampleSource& src, float* out) {
     traced_.resize(side * side, 0);
     auto point = [&](size_t x, size_t y) { return &lattice_[(y * side + x) * 4]; };
     auto ensure = [&](size_t x, size_t y, double nx, double ny) {
-        if (traced_[y * side + x] == stamp_) return;
+        if (traced_[y * side + x] == stamp_) return true;
+        bool have;
         if (js > 0) {
             Real rx, ry;
             pov_jitter(nx, ny, rx, ry);
-            src.sample(nx + rx * js, ny + ry * js, point(x, y));
+            have = src.sample(nx + rx * js, ny + ry * js, point(x, y));
         } else {
-            src.sample(nx, ny, point(x, y));
+            have = src.sample(nx, ny, point(x, y));
         }
-        traced_[y * side + x] = stamp_;
+        if (have) traced_[y * side + x] = stamp_;
+        return have;
     };
     // The square centred at (cx, cy) with half side d, lattice corner (bx, by) and
     // lattice side `step`: its four corners' mean, or its quarters' when two corners
-    // differ by the threshold and levels remain.
+    // differ by the threshold and levels remain. False when a square that splits lacks
+    // one of its new samples (all of them are asked for; its quarters are not entered).
     auto subdivide = [&](auto&& self, double cx, double cy, double d, size_t bx,
-                         size_t by, size_t step, int level, float* result) -> void {
+                         size_t by, size_t step, int level, float* result) -> bool {
         const float* c[4] = {point(bx, by), point(bx, by + step), point(bx + step, by),
                              point(bx + step, by + step)};  // TL, BL, TR, BR
         bool split = false;
@@ -260,22 +324,25 @@ void PixelSampler::method2(const PixelBlock& b, SampleSource& src, float* out) {
         if (!split) {
             for (int k = 0; k < 4; ++k) result[k] = c[0][k] + c[1][k] + c[2][k] + c[3][k];
             divide(result, 4.0);
-            return;
+            return true;
         }
         const size_t half = step / 2;
-        ensure(bx, by + half, cx - d, cy);
-        ensure(bx + half, by, cx, cy - d);
-        ensure(bx + step, by + half, cx + d, cy);
-        ensure(bx + half, by + step, cx, cy + d);
-        ensure(bx + half, by + half, cx, cy);
+        bool have = ensure(bx, by + half, cx - d, cy);
+        have &= ensure(bx + half, by, cx, cy - d);
+        have &= ensure(bx + step, by + half, cx + d, cy);
+        have &= ensure(bx + half, by + step, cx, cy + d);
+        have &= ensure(bx + half, by + half, cx, cy);
+        if (!have) return false;
         const double d2 = d / 2;
         float q[4][4];
-        self(self, cx - d2, cy - d2, d2, bx, by, half, level - 1, q[0]);
-        self(self, cx - d2, cy + d2, d2, bx, by + half, half, level - 1, q[1]);
-        self(self, cx + d2, cy - d2, d2, bx + half, by, half, level - 1, q[2]);
-        self(self, cx + d2, cy + d2, d2, bx + half, by + half, half, level - 1, q[3]);
+        bool done = self(self, cx - d2, cy - d2, d2, bx, by, half, level - 1, q[0]);
+        done &= self(self, cx - d2, cy + d2, d2, bx, by + half, half, level - 1, q[1]);
+        done &= self(self, cx + d2, cy - d2, d2, bx + half, by, half, level - 1, q[2]);
+        done &=
+            self(self, cx + d2, cy + d2, d2, bx + half, by + half, half, level - 1, q[3]);
         for (int k = 0; k < 4; ++k) result[k] = q[0][k] + q[1][k] + q[2][k] + q[3][k];
         divide(result, 4.0);
+        return done;
     };
     for (int j = b.y0; j < b.y1; ++j) {
         for (int i = b.x0; i < b.x1; ++i, out += 4) {
@@ -289,9 +356,10 @@ void PixelSampler::method2(const PixelBlock& b, SampleSource& src, float* out) {
             std::copy_n(corner(i + 1, j + 1), 4, point(full, full));
             traced_[0] = traced_[full] = traced_[full * side] =
                 traced_[full * side + full] = stamp_;
-            subdivide(subdivide, i, j, 0.5, 0, 0, full, D - 1, out);
+            complete &= subdivide(subdivide, i, j, 0.5, 0, 0, full, D - 1, out);
         }
     }
+    return complete;
 }
 
 }  // namespace povwall::trace

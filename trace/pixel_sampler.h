@@ -50,11 +50,19 @@ AaEncoding aa_encoding(float antialias_gamma, const Scene& scene);
 // pixel i's centre at i): each component in [-0.5, 0.5), from its hash and jitter tables.
 void pov_jitter(Real x, Real y, Real& jx, Real& jy);
 
-// Traces one camera sample at POV-Ray pixel position (x, y) (pixel (i, j)'s centre is
-// (i, j)) into rgbt: red, green, blue, transmit.
+// A camera sample's position in POV-Ray's pixel coordinates (pixel (i, j)'s centre is
+// (i, j)). The sampler computes every position the same way whichever block or pixel
+// asks, so equal positions are equal bit for bit.
+struct SamplePosition {
+    Real x = 0, y = 0;
+};
+
+// Traces one camera sample at POV-Ray pixel position (x, y) into rgbt: red, green, blue,
+// transmit. False when the sample is not at hand (a source filled in waves, which notes
+// the position as wanted); rgbt is then unspecified.
 class SampleSource {
   public:
-    virtual void sample(Real x, Real y, float* rgbt) = 0;
+    virtual bool sample(Real x, Real y, float* rgbt) = 0;
 
   protected:
     ~SampleSource() = default;
@@ -75,14 +83,29 @@ class PixelSampler {
   public:
     explicit PixelSampler(const SamplerSettings& settings) : s_(settings) {}
     // The block's pixels, row by row, as rgbt into `out` (block.pixels() * 4 floats).
-    void render_block(const PixelBlock& block, SampleSource& source, float* out);
+    // False when a sample the block needs is missing from `source` (`out` is then
+    // unspecified): +AM1 stops at the first decision that needs it, after asking for
+    // every sample already decided on; +AM2 asks for all the samples of the next level
+    // of every square that splits, and finishes no pixel that lacks one.
+    bool render_block(const PixelBlock& block, SampleSource& source, float* out);
+
+    // For renderers that trace samples in waves (sample_waves.h). The samples every
+    // block of `area` starts with: pixel centres (+AM1 also the row above and the column
+    // left of the area, which the first blocks take as borders), or +AM2's pixel
+    // corners.
+    void first_samples(const PixelBlock& area, std::vector<SamplePosition>& out) const;
+    // Asks `source` for the samples the block probably needs beyond those it holds:
+    // +AM1's supersamples of each pixel whose centre differs from a neighbour's centre
+    // that the block compares it with (the comparisons with neighbours already averaged
+    // are left to the replay). Nothing for the other methods.
+    void ask_likely_samples(const PixelBlock& block, SampleSource& source);
 
   private:
     float distance(const float* a, const float* b) const;
-    void method0(const PixelBlock& b, SampleSource& src, float* out);
-    void method1(const PixelBlock& b, SampleSource& src, float* out);
-    void method2(const PixelBlock& b, SampleSource& src, float* out);
-    void supersample(int i, int j, SampleSource& src, float* colour);
+    bool method0(const PixelBlock& b, SampleSource& src, float* out);
+    bool method1(const PixelBlock& b, SampleSource& src, float* out);
+    bool method2(const PixelBlock& b, SampleSource& src, float* out);
+    bool supersample(int i, int j, SampleSource& src, float* colour);
     SamplerSettings s_;
     std::vector<float> cells_;    // method 1: the block and its border; method 2: corners
     std::vector<uint8_t> done_;   // method 1: supersampled (or border)

@@ -19,13 +19,13 @@ using Clock = std::chrono::steady_clock;
 
 }  // namespace
 
-void CameraSamples::sample(Real x, Real y, float* rgbt) {
+bool CameraSamples::sample(Real x, Real y, float* rgbt) {
     std::optional<Ray> ray =
         camera_ray_pov(camera_, x, y, settings_.width, settings_.height);
     if (!ray) {
         rgbt[0] = rgbt[1] = rgbt[2] = 0;
         rgbt[3] = 1;
-        return;
+        return true;
     }
     TraceRay r;
     r.ray = *ray;
@@ -36,6 +36,7 @@ void CameraSamples::sample(Real x, Real y, float* rgbt) {
     rgbt[2] = res.colour.b;
     // Background transmit counts only when writing alpha (POV-Ray drops it otherwise).
     rgbt[3] = settings_.alpha ? std::clamp(res.transmit, 0.0f, 1.0f) : 0.0f;
+    return true;
 }
 
 void trace_camera_sample(Tracer& tracer, const Camera& camera,

@@ -79,7 +79,7 @@ class CameraSamples final : public SampleSource {
     CameraSamples(Tracer& tracer, const Camera& camera, const CameraInteriors& interiors,
                   const RenderSettings& settings)
         : tracer_(tracer), camera_(camera), interiors_(interiors), settings_(settings) {}
-    void sample(Real x, Real y, float* rgbt) override;
+    bool sample(Real x, Real y, float* rgbt) override;  // always true
 
   private:
     Tracer& tracer_;

@@ -180,6 +180,42 @@ TEST(Tcp, AntialiasingInScreenModeEqualsOneProcess) {
     }
 }
 
+// Black boxes trace anti-aliasing samples in waves and replay POV-Ray's blocks on the
+// coordinator (trace/sample_waves.h): the one-process image, whichever way colours come
+// back (forward contributions or parent tracking).
+TEST(Tcp, AntialiasingWithBoxesEqualsOneProcess) {
+    const std::string golden = std::string(POVWALL_GOLDEN_DIR) + "/";
+    fs::path glass = scratch() / "glass_aa.pov";
+    std::ofstream(glass) << kGlassCsgScene;
+    struct Case {
+        std::string scene, args;
+    };
+    for (const Case& c :
+         {Case{golden + "antialias_jitter_blocks.pov",
+               "+A0.2 +AM1 +R2 +J0.5 +BS8 +AG1.8"},
+          Case{golden + "antialias_recursive_jitter_alpha.pov", "+A0.1 +AM2 +R4 +J +UA"},
+          Case{golden + "antialias_fisheye.pov", "+UA +A0.3 +BS5"},
+          Case{glass.string(), "+A0.1 +AM1 +R3"},
+          Case{glass.string(), "+A0.1 +AM2 -J"}}) {
+        SCOPED_TRACE(c.scene + " " + c.args);
+        expect_same_images(c.scene, "-W 45 -H 33 " + c.args,
+                           {"--boxes 2x2x2", "--boxes 3x1x2 --results parents"});
+    }
+}
+
+TEST(Tcp, AntialiasingWithBoxesOverWorkerProcessesIsRefused) {
+    const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/antialias_fisheye.pov";
+    RunResult r =
+        run("render " + scene + " -W 45 -H 33 +A0.3 --boxes 2x2x2 --procs 2 -o " +
+            (scratch() / "refused.png").string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("anti-aliasing is not available with --boxes over worker "
+                         "processes (--procs, --workers) yet; --boxes in one process or "
+                         "--mode screen take it"),
+              std::string::npos)
+        << r.err;
+}
+
 // A wall of --boxes 3x1x1 lies at x = 2 (the objects span x -6..6); the shadow ray from a
 // point on the see-through box's back face leaves its top face (y = 2) exactly where it
 // crosses the wall (x = y along it). The next box's tree ends at that wall and at the
