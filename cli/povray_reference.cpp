@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cstdint>
@@ -32,7 +33,8 @@ uint64_t fnv1a(uint64_t h, std::string_view bytes) {
 
 // Hash of every file the scene reads and of the POV-Ray command line: a cached reference
 // render is reused only when none of them changed. Empty when the scene does not parse.
-std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cmd) {
+std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cmd,
+                      bool& random) {
     parser::ParseOptions popts;
     popts.library_paths = o.library_paths;
     popts.image_width = o.width;
@@ -79,6 +81,8 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
         std::cerr << e.what() << "\n";
         return {};
     }
+    random = std::any_of(scene.lights.begin(), scene.lights.end(),
+                         [](const Light& l) { return l.area && l.area->jitter; });
     uint64_t h = 1469598103934665603ull;
     for (const std::string& f : scene.files) {
         std::ifstream in(f, std::ios::binary);
@@ -203,7 +207,7 @@ PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd
     }
     std::string cached;
     if (!cache_dir.empty()) {
-        std::string key = cache_key(o, cmd);
+        const std::string key = cache_key(o, cmd, run.random);
         if (key.empty()) {
             run.status = PovrayRun::Status::SceneError;
             return run;

@@ -211,6 +211,34 @@ TEST(CorpusFolder, StricterThresholdsMismatchAndCachedReferencesKeepTheirTime) {
     fs::remove_all(dir);
 }
 
+// POV-Ray's jittered area lights are random per run: such a scene is compared by 8x8
+// block means, and the report says so; other scenes stay pixel for pixel.
+TEST(CorpusFolder, RandomPovRayImagesAreComparedAsBlockMeans) {
+    if (!on_path("povray"))
+        GTEST_SKIP() << "povray is not on PATH: nothing to compare with";
+    const fs::path dir = work_dir() / "random";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "scenes");
+    fs::copy_file(fs::path(POVWALL_SOURCE_DIR) / "scenes/golden/area_light_jitter.pov",
+                  dir / "scenes/jitter.pov");
+    fs::copy_file(fs::path(POVWALL_SOURCE_DIR) / "scenes/golden/csg.pov",
+                  dir / "scenes/csg.pov");
+    RunResult r =
+        run_shell(std::string(POVWALL_BINARY) + " corpus " + (dir / "scenes").string() +
+                      " -W 64 -H 48 --html " + (dir / "report").string(),
+                  "random");
+    ASSERT_EQ(r.code, 0) << r.out << r.err;
+    EXPECT_TRUE(std::regex_search(
+        r.out,
+        std::regex(R"(jitter\.pov +matched .*compared as 8x8 block means \(POV-Ray's )"
+                   R"(area-light jitter is random\)\n)")))
+        << r.out;
+    EXPECT_TRUE(
+        std::regex_search(r.out, std::regex(R"(csg\.pov +matched [^\n]*[0-9] *\n)")))
+        << r.out;
+    fs::remove_all(dir);
+}
+
 // A scene with an .ini of its name is rendered as a user renders it: the .ini's
 // animation on its first frame (frame_number 1 here: frame 0 is a negative subscript),
 // under the report's size (not the .ini's Width/Height) and without its anti-aliasing.
