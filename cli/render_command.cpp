@@ -264,6 +264,9 @@ int run_render(RenderOptions o) {
     auto t1 = Clock::now();
     record.progress.objects = scene.objects.size();
     record.phase = RenderPhase::Rendering;
+    // What the scene needs traced, made once for every driver, --explain and --stats.
+    const trace::RenderPlan plan =
+        trace::make_render_plan(scene, o.render.plan_everything_on, o.render.quality);
     distrib::DistributionRequest request;
     request.mode = o.mode == "single"   ? distrib::RenderMode::Single
                    : o.mode == "space"  ? distrib::RenderMode::Space
@@ -294,8 +297,6 @@ int run_render(RenderOptions o) {
         throw UsageError(e.what());
     }
     if (o.explain) {
-        const trace::RenderPlan plan =
-            trace::make_render_plan(scene, o.render.plan_everything_on, o.render.quality);
         std::printf("render plan for %s:\n", o.scene.c_str());
         for (const auto& line : trace::explain_plan(plan, scene))
             std::printf("  %s\n", line.c_str());
@@ -361,7 +362,8 @@ int run_render(RenderOptions o) {
                 o.frame_workers ? *o.frame_workers : one_frame;
             if (!session) session = std::make_unique<distrib::TcpSession>(tcp);
             try {
-                image = session->render(scene, source, o.render, space, &space_stats);
+                image =
+                    session->render(scene, source, o.render, space, &space_stats, &plan);
                 worker_frames = session->frames_on_these_workers();
                 worker_processes = session->processes_started();
                 workers_forked = session->workers_forked();
@@ -393,7 +395,7 @@ int run_render(RenderOptions o) {
                 return 3;
             }
         } else {
-            image = distrib::render_space(scene, o.render, space, &space_stats);
+            image = distrib::render_space(scene, o.render, space, &space_stats, &plan);
         }
         stats.trace_seconds = space_stats.seconds;
         for (const auto& b : space_stats.boxes) stats.rays += b.rays;
@@ -415,7 +417,7 @@ int run_render(RenderOptions o) {
         stats.trace_seconds = screen_stats.seconds;
         stats.rays = screen_stats.rays;
     } else {
-        image = trace::render_scene(scene, o.render, &stats);
+        image = trace::render_scene(scene, o.render, &stats, &plan);
     }
     bar.reset();
     auto t2 = Clock::now();
@@ -451,8 +453,6 @@ int run_render(RenderOptions o) {
         j["rays"] = distrib::rays_json(stats.rays);
         j["intersection_tests"] = stats.intersection_tests;
         // What the plan left out, with the counters that show it cost nothing.
-        const trace::RenderPlan plan =
-            trace::make_render_plan(scene, o.render.plan_everything_on, o.render.quality);
         nlohmann::json lights = nlohmann::json::array();
         for (const auto& l : plan.lights)
             lights.push_back({{"shadow_rays", l.shadow_rays}, {"why", l.reason}});

@@ -957,9 +957,10 @@ Image BoxHost::image(int width, int height, bool alpha) const {
 }
 
 Image render_space(const Scene& scene, const trace::RenderSettings& settings,
-                   const SpaceOptions& options, SpaceStats* stats) {
+                   const SpaceOptions& options, SpaceStats* stats,
+                   const trace::RenderPlan* plan) {
     auto t0 = Clock::now();
-    BoxHost host(scene, settings, options);
+    BoxHost host(scene, settings, options, plan);
     host.place_walls();
     std::vector<int> all(host.walls().box_count());
     for (size_t b = 0; b < all.size(); ++b) all[b] = int(b);

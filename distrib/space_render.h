@@ -100,7 +100,9 @@ Image image_from_sums(std::span<const double> sums, int width, int height, bool 
 // without a camera ray.
 void sample_colour(const double* sums, bool alpha, bool camera_ray, float* rgbt);
 
+// `plan`: the scene's render plan when the caller made it already (else made here).
 Image render_space(const Scene& scene, const trace::RenderSettings& settings,
-                   const SpaceOptions& options, SpaceStats* stats = nullptr);
+                   const SpaceOptions& options, SpaceStats* stats = nullptr,
+                   const trace::RenderPlan* plan = nullptr);
 
 }  // namespace povwall::distrib

@@ -91,9 +91,10 @@ class TcpSession {
     // One frame. A lost local worker with `recover` on: the frame is traced again on new
     // processes, one fewer (WorkerLost when none is left to lose); other failures throw
     // DistribError and end the session's workers.
+    // `plan`: the scene's render plan when the caller made it already.
     Image render(const Scene& scene, const SceneSource& source,
                  const trace::RenderSettings& settings, const SpaceOptions& options,
-                 SpaceStats* stats = nullptr);
+                 SpaceStats* stats = nullptr, const trace::RenderPlan* plan = nullptr);
 
     // Ends the workers of the last frame (each exits when its connection closes) without
     // waiting for them: they wind down on the other cores while this process writes the

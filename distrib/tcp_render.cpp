@@ -1416,11 +1416,11 @@ class TcpCoordinator {
 
     Image render(const Scene& scene, const SceneSource& source,
                  const trace::RenderSettings& settings, const SpaceOptions& options,
-                 SpaceStats* stats) {
+                 SpaceStats* stats, const trace::RenderPlan* plan) {
         auto t0 = Clock::now();
         settings_ = &settings;
         options_ = &options;
-        emitter_ = std::make_unique<BoxHost>(scene, settings, options);
+        emitter_ = std::make_unique<BoxHost>(scene, settings, options, plan);
         numbers_ = std::make_unique<ObjectNumbers>(scene);
         scene_ = &scene;
         in_frame_ = true;
@@ -2008,7 +2008,8 @@ void TcpSession::release_workers() {
 
 Image TcpSession::render(const Scene& scene, const SceneSource& source,
                          const trace::RenderSettings& settings,
-                         const SpaceOptions& options, SpaceStats* stats) {
+                         const SpaceOptions& options, SpaceStats* stats,
+                         const trace::RenderPlan* plan) {
     json fixed = fixed_job(source, settings, options);
     auto retire = [&] {
         if (!coordinator_) return;
@@ -2021,7 +2022,7 @@ Image TcpSession::render(const Scene& scene, const SceneSource& source,
     for (;;) {
         if (!coordinator_) coordinator_ = std::make_unique<TcpCoordinator>(tcp_, fixed);
         try {
-            return coordinator_->render(scene, source, settings, options, stats);
+            return coordinator_->render(scene, source, settings, options, stats, plan);
         } catch (const WorkerLost& e) {
             retire();
             if (!tcp_.recover) throw;

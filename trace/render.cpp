@@ -60,15 +60,18 @@ void finish_pixels_without_camera_ray(Image& image, const Camera& camera,
     }
 }
 
-Image render_scene(const Scene& scene, const RenderSettings& settings,
-                   RenderStats* stats) {
+Image render_scene(const Scene& scene, const RenderSettings& settings, RenderStats* stats,
+                   const RenderPlan* given_plan) {
     auto t0 = Clock::now();
     if (settings.progress) {
         settings.progress->objects = scene.objects.size();
         settings.progress->stage = RenderProgress::Stage::Preparing;
     }
-    const RenderPlan plan =
-        make_render_plan(scene, settings.plan_everything_on, settings.quality);
+    std::optional<RenderPlan> own_plan;
+    const RenderPlan& plan =
+        given_plan ? *given_plan
+                   : own_plan.emplace(make_render_plan(scene, settings.plan_everything_on,
+                                                       settings.quality));
     PrepareOptions prepare;
     prepare.threads = settings.threads;
     prepare.progress = settings.progress;

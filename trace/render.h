@@ -8,6 +8,7 @@
 #include "core/image.h"
 #include "core/scene.h"
 #include "trace/pixel_sampler.h"
+#include "trace/render_plan.h"
 #include "trace/tracer.h"
 
 namespace povwall::trace {
@@ -109,7 +110,8 @@ void trace_camera_sample(Tracer& tracer, const Camera& camera,
 void finish_pixels_without_camera_ray(Image& image, const Camera& camera,
                                       const RenderSettings& settings);
 
+// `plan`: the scene's render plan when the caller made it already (else made here).
 Image render_scene(const Scene& scene, const RenderSettings& settings,
-                   RenderStats* stats = nullptr);
+                   RenderStats* stats = nullptr, const RenderPlan* plan = nullptr);
 
 }  // namespace povwall::trace
