@@ -226,4 +226,40 @@ void quadric_compute_bbox(Quadric& q, const Vector3& clip_min, const Vector3& cl
     }
 }
 
+bool quadric_csg_bounds_impl(std::vector<Object>& children,
+                             const std::vector<bool>& inverted) {
+    Vector3 lo(-2e10), hi(2e10);
+    for (size_t i = 0; i < children.size(); ++i) {
+        const Object& c = children[i];
+        if (inverted[i] || std::holds_alternative<HeightField>(c.shape) ||
+            std::holds_alternative<Quadric>(c.shape))
+            continue;
+        const Plane* plane = std::get_if<Plane>(&c.shape);
+        if (!plane) return false;
+        // Compute_Plane_Min_Max: an axis-aligned plane bounds its axis by its offset.
+        const Vector3 n = normalize(c.transform.normal(plane->normal));
+        const Point3 on = c.transform.point(plane->normal * plane->distance);
+        const Real d = dot(n, on);
+        for (int a = 0; a < 3; ++a) {
+            if (std::fabs(n[(a + 1) % 3]) < kEpsilon &&
+                std::fabs(n[(a + 2) % 3]) < kEpsilon) {
+                if (n[a] > 0)
+                    hi[a] = std::min(hi[a], d);
+                else
+                    lo[a] = std::max(lo[a], -d);
+            }
+        }
+    }
+    for (size_t i = 0; i < children.size(); ++i) {
+        Quadric* q = std::get_if<Quadric>(&children[i].shape);
+        if (!q || inverted[i]) continue;
+        quadric_compute_bbox(*q, lo, hi);
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::max(lo[a], Real(q->box_lo[a]));
+            hi[a] = std::min(hi[a], Real(q->box_lo[a]) + Real(q->box_len[a]));
+        }
+    }
+    return true;
+}
+
 }  // namespace povwall

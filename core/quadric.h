@@ -17,4 +17,22 @@ void quadric_transform(Quadric& q, const Transform& t);
 // |J| = 1), within the clip range, kept when smaller than the current box.
 void quadric_compute_bbox(Quadric& q, const Vector3& clip_min, const Vector3& clip_max);
 
+// CSG::Compute_BBox of an intersection (or difference) for its quadrics: the running
+// range starts at BOUND_HUGE each way and is cut by every non-inverted non-quadric
+// child (an axis-aligned plane by its half-space, Compute_Plane_Min_Max), then each
+// non-inverted quadric in turn gets Compute_BBox(range) and cuts the range by its new
+// box. False (nothing changed) when a non-inverted child is neither a plane, a quadric
+// nor a height field: povwall's parser does not know POV-Ray's boxes of the others.
+// `inverted(i)` says whether POV-Ray sees child i inverted.
+template <class Inverted>
+bool quadric_csg_bounds(std::vector<Object>& children, Inverted&& inverted);
+bool quadric_csg_bounds_impl(std::vector<Object>& children,
+                             const std::vector<bool>& inverted);
+template <class Inverted>
+bool quadric_csg_bounds(std::vector<Object>& children, Inverted&& inverted) {
+    std::vector<bool> flags(children.size());
+    for (size_t i = 0; i < children.size(); ++i) flags[i] = inverted(i);
+    return quadric_csg_bounds_impl(children, flags);
+}
+
 }  // namespace povwall

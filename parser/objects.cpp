@@ -644,14 +644,21 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             break;
         }
         if (csg.kind == CsgKind::Intersection || csg.kind == CsgKind::Difference) {
-            for (size_t i = 0; i < csg.children.size(); ++i) {
-                const Object& c = csg.children[i];
-                // POV-Ray bounds such a quadric by its siblings' boxes
-                // (CSG::Compute_BBox).
-                if (std::holds_alternative<Quadric>(c.shape) &&
-                    c.inverse == (csg.kind == CsgKind::Difference && i > 0))
-                    unsupported(t, "a quadric in an intersection or difference");
-            }
+            // POV-Ray sees every child of a difference but the first inverted.
+            auto inverted = [&](size_t i) {
+                return csg.children[i].inverse !=
+                       (csg.kind == CsgKind::Difference && i > 0);
+            };
+            bool bounds_quadric = false;
+            for (size_t i = 0; i < csg.children.size(); ++i)
+                bounds_quadric =
+                    bounds_quadric ||
+                    (std::holds_alternative<Quadric>(csg.children[i].shape) &&
+                     !inverted(i));
+            if (bounds_quadric && !quadric_csg_bounds(csg.children, inverted))
+                unsupported(t,
+                            "a quadric in an intersection or difference with shapes "
+                            "other than planes and quadrics");
         }
         out.shape = std::move(csg);
     } else if (w == "object") {

@@ -100,12 +100,28 @@ TEST(ShapeQuadric, CoefficientsTransformsAndBox) {
     EXPECT_GT(c.box_len[1], 1e9f);
 }
 
+TEST(ShapeQuadric, BoundedByPlanesInAnIntersection) {
+    // Cylinder_Y between y = 0 and y = 1 (the inverse plane counts as not inverted in a
+    // difference's later children... here, an intersection, it is left out).
+    Scene s = parse(
+        "intersection { quadric { <1, 0, 1>, 0, 0, -1 } plane { y, 1 } plane { -y, 0 }"
+        " plane { x, 5 inverse } translate 2*z }");
+    const auto& c = std::get<Csg>(s.objects.at(0).shape);
+    const auto& q = std::get<Quadric>(c.children.at(0).shape);
+    EXPECT_EQ(q.box_lo[0], -1.0f);
+    EXPECT_EQ(q.box_len[0], 2.0f);
+    EXPECT_EQ(q.box_lo[1], 0.0f);
+    EXPECT_EQ(q.box_len[1], 1.0f);
+    EXPECT_EQ(q.box_lo[2], 1.0f);  // moved with the intersection
+}
+
 TEST(ShapeQuadric, RefusedWhereItsBoxComesFromOtherObjects) {
     EXPECT_EQ(error_of("quadric { 1, 0, 0, -1 clipped_by { box { -1, 1 } } }"),
               "test.pov:1:1: error: unsupported: clipped_by on a quadric");
     EXPECT_EQ(
         error_of("intersection { quadric { 1, 0, 0, -1 } box { -1, 1 } }"),
-        "test.pov:1:1: error: unsupported: a quadric in an intersection or difference");
+        "test.pov:1:1: error: unsupported: a quadric in an intersection or difference "
+        "with shapes other than planes and quadrics");
     EXPECT_EQ(error_of("intersection { box { -1, 1 } quadric { 1, 0, 0, -1 inverse } }"),
               "(no error)");
 }
