@@ -226,38 +226,86 @@ void quadric_compute_bbox(Quadric& q, const Vector3& clip_min, const Vector3& cl
     }
 }
 
+namespace {
+
+// Compute_Plane_Min_Max: an axis-aligned plane bounds its axis by its offset.
+void cut_by_plane(const Object& c, const Plane& plane, Vector3& lo, Vector3& hi) {
+    const Vector3 n = normalize(c.transform.normal(plane.normal));
+    const Point3 on = c.transform.point(plane.normal * plane.distance);
+    const Real d = dot(n, on);
+    for (int a = 0; a < 3; ++a) {
+        if (std::fabs(n[(a + 1) % 3]) < kEpsilon &&
+            std::fabs(n[(a + 2) % 3]) < kEpsilon) {
+            if (n[a] > 0)
+                hi[a] = std::min(hi[a], d);
+            else
+                lo[a] = std::max(lo[a], -d);
+        }
+    }
+}
+
+// Cuts [lo, hi] by a float box read back as POV-Ray reads it (lo, lo + len).
+void cut_by_box(const float box_lo[3], const float box_len[3], Vector3& lo, Vector3& hi) {
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::max(lo[a], Real(box_lo[a]));
+        hi[a] = std::min(hi[a], Real(box_lo[a]) + Real(box_len[a]));
+    }
+}
+
+}  // namespace
+
+bool quadric_clip_bounds(Quadric& q, const std::vector<Object>& clips) {
+    Vector3 lo(-2e10), hi(2e10);
+    for (const Object& c : clips) {
+        if (c.inverse) continue;
+        if (const Plane* plane = std::get_if<Plane>(&c.shape)) {
+            cut_by_plane(c, *plane, lo, hi);
+        } else if (const Quadric* other = std::get_if<Quadric>(&c.shape)) {
+            cut_by_box(other->box_lo, other->box_len, lo, hi);
+        } else if (const Box* box = std::get_if<Box>(&c.shape);
+                   box && c.transform.is_identity() && c.clipped_by->empty() &&
+                   c.bounded_by->empty()) {
+            // An untransformed box's BBox: its corners.
+            Vector3 bmin, bmax;
+            for (int a = 0; a < 3; ++a) {
+                bmin[a] = std::min(box->corner1[a], box->corner2[a]);
+                bmax[a] = std::max(box->corner1[a], box->corner2[a]);
+            }
+            float blo[3], blen[3];
+            for (int a = 0; a < 3; ++a) {
+                blo[a] = float(bmin[a]);
+                blen[a] = float(bmax[a] - bmin[a]);
+            }
+            cut_by_box(blo, blen, lo, hi);
+        } else {
+            return false;
+        }
+    }
+    // Compute_BBox's step 1 (the clips cut the BOUND_HUGE range), then the rest.
+    quadric_compute_bbox(q, lo, hi);
+    return true;
+}
+
 bool quadric_csg_bounds_impl(std::vector<Object>& children,
                              const std::vector<bool>& inverted) {
     Vector3 lo(-2e10), hi(2e10);
     for (size_t i = 0; i < children.size(); ++i) {
         const Object& c = children[i];
-        if (inverted[i] || std::holds_alternative<HeightField>(c.shape) ||
-            std::holds_alternative<Quadric>(c.shape))
+        if (std::holds_alternative<Quadric>(c.shape)) {
+            // Its own clips would cut its box again there.
+            if (!inverted[i] && !c.clipped_by->empty()) return false;
             continue;
+        }
+        if (inverted[i] || std::holds_alternative<HeightField>(c.shape)) continue;
         const Plane* plane = std::get_if<Plane>(&c.shape);
         if (!plane) return false;
-        // Compute_Plane_Min_Max: an axis-aligned plane bounds its axis by its offset.
-        const Vector3 n = normalize(c.transform.normal(plane->normal));
-        const Point3 on = c.transform.point(plane->normal * plane->distance);
-        const Real d = dot(n, on);
-        for (int a = 0; a < 3; ++a) {
-            if (std::fabs(n[(a + 1) % 3]) < kEpsilon &&
-                std::fabs(n[(a + 2) % 3]) < kEpsilon) {
-                if (n[a] > 0)
-                    hi[a] = std::min(hi[a], d);
-                else
-                    lo[a] = std::max(lo[a], -d);
-            }
-        }
+        cut_by_plane(c, *plane, lo, hi);
     }
     for (size_t i = 0; i < children.size(); ++i) {
         Quadric* q = std::get_if<Quadric>(&children[i].shape);
         if (!q || inverted[i]) continue;
         quadric_compute_bbox(*q, lo, hi);
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::max(lo[a], Real(q->box_lo[a]));
-            hi[a] = std::min(hi[a], Real(q->box_lo[a]) + Real(q->box_len[a]));
-        }
+        cut_by_box(q->box_lo, q->box_len, lo, hi);
     }
     return true;
 }

@@ -17,6 +17,12 @@ void quadric_transform(Quadric& q, const Transform& t);
 // |J| = 1), within the clip range, kept when smaller than the current box.
 void quadric_compute_bbox(Quadric& q, const Vector3& clip_min, const Vector3& clip_max);
 
+// Compute_BBox after a quadric's clipped_by list is read: the non-inverted clip objects
+// cut the range (a plane by Compute_Plane_Min_Max, a quadric or an untransformed box by
+// its box). False (nothing changed) for other clip objects, whose POV-Ray boxes the
+// parser does not know.
+bool quadric_clip_bounds(Quadric& q, const std::vector<Object>& clips);
+
 // CSG::Compute_BBox of an intersection (or difference) for its quadrics: the running
 // range starts at BOUND_HUGE each way and is cut by every non-inverted non-quadric
 // child (an axis-aligned plane by its half-space, Compute_Plane_Min_Max), then each

@@ -222,7 +222,7 @@ class Interpreter {
     void parse_quadric(Object& out);
     int parse_poly_order(std::string_view message);
     double parse_poly_coefficient();
-    // The clipped quadric and poly set-ups whose POV-Ray boxes povwall cannot follow.
+    // The clipped poly set-up whose POV-Ray box povwall does not follow.
     void check_algebraic_bounds(const Object& obj, const Token& keyword);
     // A height field's grid as read, built into the shape by finish_height_field after
     // the object's modifiers (POV-Ray's Compute_HField runs then: `hierarchy` counts).

@@ -371,6 +371,12 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
                 if (!try_parse_object(o, child)) expected("an object or '}'", o);
                 list.push_back(std::move(child));
             }
+            // POV-Ray computes a quadric's box again from its clips.
+            if (Quadric* q = std::get_if<Quadric>(&obj.shape);
+                q && clip && !quadric_clip_bounds(*q, list))
+                unsupported(t,
+                            "clipped_by on a quadric by shapes other than boxes, "
+                            "planes and quadrics");
         }
     } else if (w == "photons" || w == "radiosity") {
         // Photon and radiosity hints on an object do not change a render without them.

@@ -94,10 +94,6 @@ void Interpreter::parse_quadric(Object& out) {
 }
 
 void Interpreter::check_algebraic_bounds(const Object& obj, const Token& keyword) {
-    if (std::holds_alternative<Quadric>(obj.shape) && !obj.clipped_by->empty()) {
-        // POV-Ray computes the quadric's box again from its clip objects' boxes.
-        unsupported(keyword, "clipped_by on a quadric");
-    }
     if (std::holds_alternative<Poly>(obj.shape) && !obj.clipped_by->empty() &&
         obj.clipped_by->front().inverse) {
         // POV-Ray gives a transformed poly the first clip object's box, inverse or not.

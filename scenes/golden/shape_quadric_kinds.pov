@@ -43,3 +43,10 @@ union {
   clipped_by { sphere { 0, 1 } }
   translate <3.3, 0, -1.6> pigment { rgb <0.4, 0.9, 0.9> }
 }
+// A paraboloid clipped by a box (its box from the clip), then scaled and turned, as in
+// textures/pigments/mappr2.pov, and Cylinder_Z clipped by planes.
+object { Paraboloid_Y clipped_by { box { <-2, 0, -2>, <2, 1, 2> } }
+         translate -0.5*y scale <0.5, 1, 0.5> rotate <-40, 0, 0> translate <1.6, 2.2, 3>
+         pigment { rgb <0.95, 0.6, 0.6> } }
+object { Cylinder_Z clipped_by { plane { z, 1 } plane { -z, 1 } } scale 0.3
+         rotate <0, 30, 0> translate <-1.6, 2, 3> pigment { rgb <0.6, 0.95, 0.6> } }

@@ -115,9 +115,22 @@ TEST(ShapeQuadric, BoundedByPlanesInAnIntersection) {
     EXPECT_EQ(q.box_lo[2], 1.0f);  // moved with the intersection
 }
 
+TEST(ShapeQuadric, ClippedByABoxOrPlanes) {
+    // The saddle of shapes.inc matches no case: its box is the clip's.
+    auto q = only_shape<Quadric>(
+        parse("quadric { <-1, 0, 1>, 0, <0, 1, 0>, 0 clipped_by { box { <2, 1, 0>, "
+              "<-2, -1, 0.5> } plane { z, 0.25 } } translate x }"));
+    EXPECT_EQ(q.box_lo[0], -1.0f);
+    EXPECT_EQ(q.box_len[0], 4.0f);
+    EXPECT_EQ(q.box_lo[2], 0.0f);
+    EXPECT_EQ(q.box_len[2], 0.25f);
+}
+
 TEST(ShapeQuadric, RefusedWhereItsBoxComesFromOtherObjects) {
-    EXPECT_EQ(error_of("quadric { 1, 0, 0, -1 clipped_by { box { -1, 1 } } }"),
-              "test.pov:1:1: error: unsupported: clipped_by on a quadric");
+    EXPECT_EQ(
+        error_of("quadric { 1, 0, 0, -1 clipped_by { sphere { 0, 1 } } }"),
+        "test.pov:1:23: error: unsupported: clipped_by on a quadric by shapes other "
+        "than boxes, planes and quadrics");
     EXPECT_EQ(
         error_of("intersection { quadric { 1, 0, 0, -1 } box { -1, 1 } }"),
         "test.pov:1:1: error: unsupported: a quadric in an intersection or difference "
