@@ -538,6 +538,28 @@ struct SphereSweep {
 // modeling spheres (their count suits the spline: the parser checks it).
 SphereSweepData make_sphere_sweep(SweepSpline spline, std::vector<SweepSphere> modeling);
 
+// poly { N, <coefficients> } (cubic: N = 3, quartic: N = 4, polynomial: by terms):
+// F(x, y, z) = sum of coeffs[k] x^i y^j z^l = 0, the terms in POV-Ray's order (i from N
+// down, then j, then l; trace/shapes/poly.h). Inside is F < 1e-4.
+struct Poly {
+    int order = 2;
+    std::vector<Real> coeffs;  // (N+1)(N+2)(N+3)/6 of them
+    bool sturm = false;
+};
+
+// quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }: A x^2 + B y^2 + C z^2 + D xy + E xz + F yz
+// + G x + H y + I z + J = 0 in WORLD space: as POV-Ray, every transform is folded into
+// the coefficients (the object's transform stays the identity), and the quadric keeps
+// POV-Ray's own single-precision box, computed and moved as POV-Ray does
+// (trace/shapes/quadric.h).
+struct Quadric {
+    Vector3 square{1, 1, 1}, mixed{0, 0, 0}, linear{0, 0, 0};
+    Real constant = -1;
+    float box_lo[3] = {-1e10f, -1e10f, -1e10f};
+    float box_len[3] = {2e10f, 2e10f, 2e10f};
+    bool automatic_bounds = false;
+};
+
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
@@ -556,10 +578,10 @@ struct Csg {
     std::optional<PovBox> text_box;
 };
 
-using ShapeData =
-    std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                 SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor, Lathe, Prism,
-                 BicubicPatch, JuliaFractal, Glyph, HeightField, SphereSweep, Csg>;
+using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
+                               SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor,
+                               Lathe, Prism, BicubicPatch, JuliaFractal, Glyph,
+                               HeightField, SphereSweep, Poly, Quadric, Csg>;
 
 struct Object {
     ShapeData shape;
@@ -598,11 +620,15 @@ inline bool pov_splits_union(const Object& o) {
 }
 
 // Whether an object linked to the scene keeps its bounded_by (Link_To_Frame with
-// Remove_Bounds on, POV-Ray's default): only CSG objects do; a shape's bound is removed
-// as unnecessary. CSG children always keep theirs.
+// Remove_Bounds on, POV-Ray's default): CSG objects and polys do, and a quadric whose
+// box did not come from its coefficients; another shape's bound is removed as
+// unnecessary. CSG children always keep theirs.
 inline bool pov_keeps_bound(const Object& frame_object) {
-    return !frame_object.bounded_by->empty() &&
-           std::holds_alternative<Csg>(frame_object.shape);
+    if (frame_object.bounded_by->empty()) return false;
+    if (const Quadric* q = std::get_if<Quadric>(&frame_object.shape))
+        return !q->automatic_bounds;
+    return std::holds_alternative<Csg>(frame_object.shape) ||
+           std::holds_alternative<Poly>(frame_object.shape);
 }
 
 // ---------------------------------------------------------------- lights, camera,

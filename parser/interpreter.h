@@ -216,6 +216,14 @@ class Interpreter {
     void parse_ovus(const Token& keyword, Object& out);
     void parse_sor(const Token& keyword, Object& out);
     void parse_lathe(Object& out);
+    // parser/shape_poly.cpp: cubic (order 3), quartic (4), poly (0: the order is read).
+    void parse_poly(Object& out, int order);
+    void parse_polynomial(Object& out);
+    void parse_quadric(Object& out);
+    int parse_poly_order(std::string_view message);
+    double parse_poly_coefficient();
+    // The clipped poly set-up whose POV-Ray box povwall does not follow.
+    void check_algebraic_bounds(const Object& obj, const Token& keyword);
     // A height field's grid as read, built into the shape by finish_height_field after
     // the object's modifiers (POV-Ray's Compute_HField runs then: `hierarchy` counts).
     struct PendingHeightField {

@@ -3,6 +3,7 @@
 #include <iterator>
 #include <unordered_map>
 
+#include "core/quadric.h"
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
@@ -10,9 +11,8 @@ namespace {
 
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
-    static constexpr std::string_view kNames[] = {
-        "blob",       "quadric",    "quartic", "poly",        "cubic",
-        "isosurface", "parametric", "lemon",   "light_group", "polynomial"};
+    static constexpr std::string_view kNames[] = {"blob", "isosurface", "parametric",
+                                                  "lemon", "light_group"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -96,6 +96,9 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
         for (Point3& p : moved->control) p = t.point(p);
         build_patch_pieces(*moved);
         patch->data = std::move(moved);
+    } else if (auto quadric = std::get_if<Quadric>(&obj.shape)) {
+        // POV-Ray keeps no matrix for a quadric: each step goes into its coefficients.
+        quadric_transform(*quadric, t);
     } else {
         obj.transform = obj.transform.then(t);
     }
@@ -332,6 +335,7 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (auto ovus = std::get_if<Ovus>(&obj.shape)) sturm = &ovus->sturm;
         if (auto sor = std::get_if<Sor>(&obj.shape)) sturm = &sor->sturm;
         if (auto lathe = std::get_if<Lathe>(&obj.shape)) sturm = &lathe->sturm;
+        if (auto poly = std::get_if<Poly>(&obj.shape)) sturm = &poly->sturm;
         if (!sturm) error(t, "'sturm' cannot be used with this object");
         *sturm = parse_bool_opt();
     } else if (w == "open") {
@@ -367,6 +371,12 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
                 if (!try_parse_object(o, child)) expected("an object or '}'", o);
                 list.push_back(std::move(child));
             }
+            // POV-Ray computes a quadric's box again from its clips.
+            if (Quadric* q = std::get_if<Quadric>(&obj.shape);
+                q && clip && !quadric_clip_bounds(*q, list))
+                unsupported(t,
+                            "clipped_by on a quadric by shapes other than boxes, "
+                            "planes and quadrics");
         }
     } else if (w == "photons" || w == "radiosity") {
         // Photon and radiosity hints on an object do not change a render without them.
@@ -510,6 +520,16 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             tor.minor = parse_float();
             out.shape = tor;
         }
+    } else if (w == "cubic" || w == "quartic" || w == "poly") {
+        open();
+        if (!copy_identifier())
+            parse_poly(out, w == "cubic" ? 3 : w == "quartic" ? 4 : 0);
+    } else if (w == "polynomial") {
+        open();
+        if (!copy_identifier()) parse_polynomial(out);
+    } else if (w == "quadric") {
+        open();
+        if (!copy_identifier()) parse_quadric(out);
     } else if (w == "superellipsoid") {
         open();
         if (!copy_identifier()) parse_superellipsoid(out);
@@ -629,6 +649,23 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             }
             break;
         }
+        if (csg.kind == CsgKind::Intersection || csg.kind == CsgKind::Difference) {
+            // POV-Ray sees every child of a difference but the first inverted.
+            auto inverted = [&](size_t i) {
+                return csg.children[i].inverse !=
+                       (csg.kind == CsgKind::Difference && i > 0);
+            };
+            bool bounds_quadric = false;
+            for (size_t i = 0; i < csg.children.size(); ++i)
+                bounds_quadric =
+                    bounds_quadric ||
+                    (std::holds_alternative<Quadric>(csg.children[i].shape) &&
+                     !inverted(i));
+            if (bounds_quadric && !quadric_csg_bounds(csg.children, inverted))
+                unsupported(t,
+                            "a quadric in an intersection or difference with shapes "
+                            "other than planes and quadrics");
+        }
         out.shape = std::move(csg);
     } else if (w == "object") {
         open();
@@ -667,6 +704,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         return false;
     }
     parse_object_modifiers(out);
+    check_algebraic_bounds(out, t);
     if (pending_height_field) finish_height_field(out, std::move(*pending_height_field));
     // Its set-up after the modifiers clears the inverse flag (as a transform does).
     if (std::holds_alternative<JuliaFractal>(out.shape)) out.inverse = false;
