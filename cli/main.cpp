@@ -94,7 +94,8 @@ int render_main(const std::vector<std::string>& args) {
     app.add_option("-L,--library-path", o.library_paths, "include folder (repeatable)");
     app.add_option("--threads", o.render.threads, "threads (0: all cores)")
         ->capture_default_str();
-    app.add_option("--stats", o.stats_file, "write render statistics as JSON (-: stdout)");
+    app.add_option("--stats", o.stats_file,
+                   "write render statistics as JSON (-: stdout)");
     app.add_flag("-q,--quiet", o.quiet, "no timing summary, no #debug output");
     app.add_option("--boxes", o.boxes,
                    "black boxes: NxNxN equal slabs, N (balanced, N x N x N) or auto");

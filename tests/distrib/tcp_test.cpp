@@ -157,23 +157,26 @@ TEST(Tcp, GlassCsgAndCameraInsideGlassInEveryModeEqualOneProcess) {
     }
 }
 
-// Anti-aliasing is decided per POV-Ray render block (each block traces its own border),
-// so screen workers, whose tiles are those blocks, give the one-process image exactly:
-// both methods, jitter, block sizes, alpha, a fisheye, glass in CSG.
-TEST(Tcp, AntialiasingInScreenModeEqualsOneProcess) {
+// Anti-aliasing cases for the every-mode tests: both methods, jitter, block sizes, alpha,
+// a fisheye, glass in CSG.
+struct AntialiasCase {
+    std::string scene, args;
+};
+std::vector<AntialiasCase> antialias_cases() {
     const std::string golden = std::string(POVWALL_GOLDEN_DIR) + "/";
-    fs::path glass = scratch() / "glass_aa.pov";
+    const fs::path glass = scratch() / "glass_aa.pov";
     std::ofstream(glass) << kGlassCsgScene;
-    struct Case {
-        std::string scene, args;
-    };
-    for (const Case& c :
-         {Case{golden + "antialias_jitter_blocks.pov",
-               "+A0.2 +AM1 +R2 +J0.5 +BS8 +AG1.8"},
-          Case{golden + "antialias_recursive_jitter_alpha.pov", "+A0.1 +AM2 +R4 +J +UA"},
-          Case{golden + "antialias_fisheye.pov", "+UA +A0.3 +BS5"},
-          Case{glass.string(), "+A0.1 +AM1 +R3"},
-          Case{glass.string(), "+A0.1 +AM2 -J"}}) {
+    return {{golden + "antialias_jitter_blocks.pov", "+A0.2 +AM1 +R2 +J0.5 +BS8 +AG1.8"},
+            {golden + "antialias_recursive_jitter_alpha.pov", "+A0.1 +AM2 +R4 +J +UA"},
+            {golden + "antialias_fisheye.pov", "+UA +A0.3 +BS5"},
+            {glass.string(), "+A0.1 +AM1 +R3"},
+            {glass.string(), "+A0.1 +AM2 -J"}};
+}
+
+// Anti-aliasing is decided per POV-Ray render block (each block traces its own border),
+// so screen workers, whose tiles are those blocks, give the one-process image exactly.
+TEST(Tcp, AntialiasingInScreenModeEqualsOneProcess) {
+    for (const AntialiasCase& c : antialias_cases()) {
         SCOPED_TRACE(c.scene + " " + c.args);
         expect_same_images(c.scene, "-W 45 -H 33 " + c.args,
                            {"--mode screen --procs 2", "--mode screen --procs 3"});
@@ -184,19 +187,7 @@ TEST(Tcp, AntialiasingInScreenModeEqualsOneProcess) {
 // coordinator (trace/sample_waves.h): the one-process image, whichever way colours come
 // back (forward contributions or parent tracking).
 TEST(Tcp, AntialiasingWithBoxesEqualsOneProcess) {
-    const std::string golden = std::string(POVWALL_GOLDEN_DIR) + "/";
-    fs::path glass = scratch() / "glass_aa.pov";
-    std::ofstream(glass) << kGlassCsgScene;
-    struct Case {
-        std::string scene, args;
-    };
-    for (const Case& c :
-         {Case{golden + "antialias_jitter_blocks.pov",
-               "+A0.2 +AM1 +R2 +J0.5 +BS8 +AG1.8"},
-          Case{golden + "antialias_recursive_jitter_alpha.pov", "+A0.1 +AM2 +R4 +J +UA"},
-          Case{golden + "antialias_fisheye.pov", "+UA +A0.3 +BS5"},
-          Case{glass.string(), "+A0.1 +AM1 +R3"},
-          Case{glass.string(), "+A0.1 +AM2 -J"}}) {
+    for (const AntialiasCase& c : antialias_cases()) {
         SCOPED_TRACE(c.scene + " " + c.args);
         expect_same_images(c.scene, "-W 45 -H 33 " + c.args,
                            {"--boxes 2x2x2", "--boxes 3x1x2 --results parents"});
