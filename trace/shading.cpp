@@ -2,7 +2,6 @@
 #include "trace/shading.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstring>
 #include <deque>
@@ -982,22 +981,14 @@ AreaGrid::AreaGrid(const Scene& scene, const ChildRay& shadow)
 
 namespace {
 
-// Two numbers in [0, 1) from the lit point, the light and the sample (splitmix64 over
-// their bits): the same for the same sample of the same point in every render mode.
+// Two numbers in [0, 1) from the lit point, the light and the sample, drawn as crand's
+// are: the same for the same sample of the same point in every render mode.
 void area_jitter(const Point3& at, int light, int u, int v, Real& a, Real& b) {
-    auto mix = [](uint64_t z) {
-        z += 0x9e3779b97f4a7c15ull;
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    };
-    uint64_t h = mix(std::bit_cast<uint64_t>(at.x));
-    h = mix(h ^ std::bit_cast<uint64_t>(at.y));
-    h = mix(h ^ std::bit_cast<uint64_t>(at.z));
-    h = mix(h ^ (uint64_t(uint32_t(light)) << 32 | uint64_t(uint16_t(u)) << 16 |
-                 uint64_t(uint16_t(v))));
-    a = Real(h >> 11) * 0x1p-53;
-    b = Real(mix(h) >> 11) * 0x1p-53;
+    const size_t sample =
+        (size_t(uint32_t(light)) << 32 | size_t(uint16_t(u)) << 16 | size_t(uint16_t(v)))
+        << 1;
+    a = crand_sample(at, sample);
+    b = crand_sample(at, sample | 1);
 }
 
 }  // namespace
