@@ -246,8 +246,10 @@ PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd
         run.log = ss.str();
         return run;
     }
-    if (!cached.empty()) {  // temp name, then rename: a cache entry is always whole
-        std::string tmp = cached + ".tmp";
+    if (!cached.empty()) {
+        // A temporary name of this process's, then rename: a cache entry is always whole,
+        // also when several processes (the sanitizer and release suites) share the cache.
+        std::string tmp = cached + "." + std::to_string(::getpid()) + ".tmp";
         std::ofstream(tmp) << run.seconds << "\n";
         fs::rename(tmp, seconds_file);
         fs::copy_file(out_png, tmp, fs::copy_options::overwrite_existing);
