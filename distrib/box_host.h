@@ -15,51 +15,16 @@
 
 #include "core/image.h"
 #include "core/scene.h"
+#include "distrib/item.h"
 #include "distrib/parent_table.h"
 #include "distrib/space_render.h"
+#include "distrib/wire/items.h"
 #include "trace/camera_interiors.h"
 #include "trace/prepared_scene.h"
 #include "trace/render_plan.h"
 #include "trace/shading.h"
 
 namespace povwall::distrib {
-
-// A ray travelling between boxes. Its origin is never re-based at a wall: searches resume
-// at `t_from` along the original ray, so POV-Ray's absolute minimum distances still hold.
-struct RayItem {
-    trace::TraceRay trace;
-    bool shadow = false;
-    bool counted = false;
-    Real t_from = 0;
-    Real light_distance = kInfinity;
-    trace::ShadowState shadow_state;
-    // Where the result goes: a waiting parent (parent tracking) or the pixel (the
-    // camera sample's slot when the run traces a list of samples: set_samples()).
-    uint64_t parent = 0;
-    int32_t parent_box = -1;
-    uint16_t slot = 0;
-    int32_t pixel = 0;
-    // Forward contributions: factors from this ray's colour / transmit to the pixel.
-    Rgb contribution{1.0f};
-    float transmit_contribution = 1;
-    // The walk along the walls, kept so that the box receiving the ray goes on with it
-    // instead of starting again: valid for box `route_box` (-1: none; not sent over
-    // TCP), standing at the start of that box's segment.
-    int32_t route_box = -1;
-    VirtualWalls::WalkState route_walk;
-};
-
-struct ResultItem {
-    uint64_t parent = 0;
-    uint16_t slot = 0;
-    trace::TraceResult result;
-};
-
-struct Item {
-    bool is_result = false;
-    RayItem ray;
-    ResultItem result;
-};
 
 struct WaitingParent {
     trace::ShadingRecord record;
@@ -213,6 +178,13 @@ class BoxHost {
     }
     std::vector<BoxStats> box_stats() const;
     int box_count() const { return int(boxes_.size()); }
+    // What an item received from another process may name (wire/items.h).
+    ItemLimits item_limits() const {
+        return {box_count(), int(scene_.lights.size()), total_pixels_};
+    }
+    // A result came for a slot its waiting parent does not have: a peer sent a malformed
+    // item (it is dropped; the render must not be trusted).
+    bool received_bad_result() const { return bad_result_.load(); }
 
   private:
     enum class BoxVisit : uint8_t { Never, Always, IfReached };
@@ -286,6 +258,7 @@ class BoxHost {
     };
     std::vector<PixelBand> bands_;
     int pixels_sent() const;
+    std::atomic<bool> bad_result_{false};
     int total_pixels_ = 0;  // slots: the image's pixels, or samples_.size()
     std::vector<trace::SamplePosition> samples_;
     // Progress (settings.progress): pixels sent, scaled by the share of items finished.

@@ -602,8 +602,12 @@ void BoxHost::process(Box& box, Item& item, int thread) {
     }
     ++lane(box).stats.results_received;
     const ResultItem& r = item.result;
-    auto done = box.parents.deliver(
-        r.parent, [&](WaitingParent& w) { w.results[r.slot] = r.result; });
+    auto done = box.parents.deliver(r.parent, [&](WaitingParent& w) {
+        if (r.slot < w.results.size())
+            w.results[r.slot] = r.result;
+        else
+            bad_result_ = true;
+    });
     if (done) {
         thread_local std::vector<TraceResult> results;
         done->gather(scene_, results);

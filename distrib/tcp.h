@@ -1,11 +1,11 @@
-// Black boxes in several processes, over TCP (Boost.Asio; only distrib/tcp_render.cpp
-// includes it).
+// Black boxes in several processes, over TCP (Boost.Asio, included by
+// distrib/connection.h only).
 //
 // A worker process (`povwall worker --listen HOST:PORT --token T`) hosts some boxes. The
 // coordinator (`povwall render ... --procs N` or `--workers h:p,...`) sends every worker
 // the scene source and its box assignment; each worker parses the scene and prepares only
 // its boxes' local scenes. Rays and results travel worker to worker in framed, batched
-// messages (distrib/message.h); camera rays start at the coordinator and pixel sums
+// messages (distrib/wire/); camera rays start at the coordinator and pixel sums
 // return to it.
 #pragma once
 

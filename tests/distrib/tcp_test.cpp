@@ -22,9 +22,12 @@
 #include <regex>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/image.h"
+#include "distrib/wire/control.h"
+#include "distrib/wire/frame.h"
 #include "output/image_io.h"
 
 namespace {
@@ -598,15 +601,17 @@ struct Worker {
     int port = 0;
 };
 
-Worker start_worker(const std::string& token, const std::string& extra = "") {
+// `err`: where the worker's stderr goes (default: nowhere).
+Worker start_worker(const std::string& token, const std::string& extra = "",
+                    const std::string& err = "/dev/null") {
     int fds[2];
     EXPECT_EQ(pipe(fds), 0);
     Worker w;
     w.pid = fork();
     if (w.pid == 0) {
         dup2(fds[1], 1);
-        int null = ::open("/dev/null", O_WRONLY);
-        dup2(null, 2);
+        int errors = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        dup2(errors, 2);
         close(fds[0]);
         std::string cmd = std::string("exec ") + POVWALL_BINARY +
                           " worker --listen 127.0.0.1:0 --threads 1 --token " + token +
@@ -681,6 +686,93 @@ TEST(Tcp, RejectedTokenKeepsTheWorkerServing) {
     expect_same_images(
         POVWALL_DEMO_SCENE, "-W 32 -H 24",
         {"--boxes 2x2x2 --token secret --workers " + a.address + "," + b.address});
+    stop_worker(a), stop_worker(b);
+}
+
+// A caller with the right token that then sends bytes a coordinator never sends: the
+// worker names what was wrong, drops the connection, and serves the next job.
+TEST(Tcp, AMalformedFrameAfterTheTokenIsNamedAndDropped) {
+    namespace d = povwall::distrib;
+    const fs::path err = scratch() / "worker-err";
+    Worker a = start_worker("s", "", err.string()), b = start_worker("s");
+    std::vector<uint8_t> oversized, old_version, truncated, garbage, bad_job;
+    d::encode_frame(d::FrameType::Control, 0, std::vector<uint8_t>(4, '{'), oversized);
+    oversized[7] = 0x7f;  // a body length over the limit
+    d::encode_frame(d::FrameType::Control, 0, std::vector<uint8_t>(2, '{'), old_version);
+    old_version[3] = d::kProtocolVersion - 1;
+    d::encode_frame(d::FrameType::Control, 0, std::vector<uint8_t>(40, '{'), truncated);
+    truncated.resize(truncated.size() - 10);  // then the caller hangs up
+    garbage.assign(64, 0x41);
+    const std::string job = R"({"type":"job","scene":5})";
+    d::encode_frame(d::FrameType::Control, 0,
+                    {reinterpret_cast<const uint8_t*>(job.data()), job.size()}, bad_job);
+    const std::vector<std::pair<std::vector<uint8_t>, std::string>> cases = {
+        {oversized, "coordinator lost: malformed frame or wrong protocol version"},
+        {old_version, "coordinator lost: malformed frame or wrong protocol version"},
+        {truncated, "coordinator lost: disconnected (connection lost)"},
+        {garbage, "coordinator lost: malformed frame or wrong protocol version"},
+    };
+    for (const auto& [bytes, named] : cases) {
+        int fd = socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in addr{};
+        addr.sin_family = AF_INET;
+        addr.sin_port = htons(uint16_t(a.port));
+        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        ASSERT_EQ(connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+        std::vector<uint8_t> all =
+            d::encode_control_frame(R"({"type":"hello","token":"s","from":-1})");
+        all.insert(all.end(), bytes.begin(), bytes.end());
+        ASSERT_EQ(send(fd, all.data(), all.size(), 0), ssize_t(all.size()));
+        if (bytes == truncated) shutdown(fd, SHUT_WR);
+        char byte;
+        timeval tv{5, 0};
+        setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+        EXPECT_EQ(recv(fd, &byte, 1, 0), 0) << named;
+        close(fd);
+        // The worker says why just after it closes.
+        std::string said;
+        for (int tries = 0; tries < 100; ++tries) {
+            std::ifstream in(err);
+            said.assign(std::istreambuf_iterator<char>(in), {});
+            if (said.find("povwall worker: " + named) != std::string::npos) break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+        EXPECT_NE(said.find("povwall worker: " + named), std::string::npos) << said;
+    }
+    // A job with a field of the wrong type: the worker answers with an error naming it
+    // (this connection is the coordinator's, and stays open for the coordinator to end).
+    {
+        int fd = socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in addr{};
+        addr.sin_family = AF_INET;
+        addr.sin_port = htons(uint16_t(a.port));
+        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        ASSERT_EQ(connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+        std::vector<uint8_t> all =
+            d::encode_control_frame(R"({"type":"hello","token":"s","from":-1})");
+        all.insert(all.end(), bad_job.begin(), bad_job.end());
+        ASSERT_EQ(send(fd, all.data(), all.size(), 0), ssize_t(all.size()));
+        timeval tv{5, 0};
+        setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+        std::vector<uint8_t> got(4096);
+        size_t have = 0;
+        d::Frame f;
+        while (d::decode_frame(std::span(got).first(have), f) !=
+               d::DecodeStatus::Complete) {
+            const ssize_t n = recv(fd, got.data() + have, got.size() - have, 0);
+            ASSERT_GT(n, 0);
+            have += size_t(n);
+        }
+        const nlohmann::json answer = d::parse_control(f);
+        EXPECT_EQ(answer.value("type", ""), "error");
+        EXPECT_NE(answer.value("message", "").find("malformed control message"),
+                  std::string::npos)
+            << answer.dump();
+        close(fd);
+    }
+    expect_same_images(
+        POVWALL_DEMO_SCENE, "-W 32 -H 24",
+        {"--boxes 2x2x2 --token s --workers " + a.address + "," + b.address});
     stop_worker(a), stop_worker(b);
 }
 

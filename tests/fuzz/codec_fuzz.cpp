@@ -1,39 +1,151 @@
-// libFuzzer target: the wire-protocol decoder of the distributed back end. Malformed,
-// truncated or oversized frames must come back as Bad or NeedMore, never crash; a frame
-// that decodes must encode back to the same bytes.
+// libFuzzer target: every decoder that reads bytes from another process (distrib/wire/).
+// The input is a stream of frames as a connection receives it: each complete frame is
+// decoded as its type says (item records against a small scene's objects, pixel sums,
+// control JSON with the plan and reach parts). Nothing may crash or read out of bounds;
+// item records that are accepted must write back to records that read the same again.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
+#include <fstream>
 #include <span>
+#include <string>
 #include <vector>
 
-#include "distrib/message.h"
+#include "distrib/wire/control.h"
+#include "distrib/wire/frame.h"
+#include "distrib/wire/items.h"
+#include "distrib/wire/pixels.h"
+#include "parser/parser.h"
 
+using namespace povwall;
 using namespace povwall::distrib;
+
+namespace {
+
+const ObjectNumbers& numbers() {
+    static const Scene scene = parser::parse_scene_text(
+        "light_source { <5,5,-5>, 1 }\n"
+        "sphere { 0, 1 pigment { rgbf 1 } interior { ior 1.5 } }\n"
+        "union { box { -1, 1 } sphere { 2, 1 } pigment { rgbf 0.9 } }\n",
+        "fuzz.pov", {});
+    static const ObjectNumbers n(scene);
+    return n;
+}
+
+constexpr ItemLimits kLimits{8, 1, 4096};
+
+void items(const Frame& f) {
+    std::vector<uint8_t> again;
+    ItemReader rd(f.body, f.count, kLimits, numbers());
+    uint32_t read = 0;
+    while (!rd.done()) {
+        Item item;
+        int box;
+        size_t bytes = 0;
+        if (!rd.read(box, item, bytes)) break;
+        if (box < 0 || box >= kLimits.boxes || bytes == 0) std::abort();
+        write_item(again, box, item, numbers());
+        ++read;
+    }
+    // What was read writes back to records that read back to the same bytes.
+    std::vector<uint8_t> twice;
+    ItemReader second(again, read, kLimits, numbers());
+    while (!second.done()) {
+        Item item;
+        int box;
+        size_t bytes = 0;
+        if (!second.read(box, item, bytes)) std::abort();
+        write_item(twice, box, item, numbers());
+    }
+    if (second.bad() || twice != again) std::abort();
+}
+
+void control(const Frame& f) {
+    const nlohmann::json j = parse_control(f);
+    if (j.is_discarded() || !j.is_object()) return;
+    if (j.contains("plan")) {
+        try {
+            (void)plan_from_json(j["plan"]);
+        } catch (const nlohmann::json::exception&) {
+        }
+    }
+    if (j.contains("reach")) {
+        std::vector<Bounds3> reach;
+        (void)reach_from_json(j["reach"], 4, reach);
+    }
+}
+
+// Seeds from the real encoder: frames of items (rays with and without their optional
+// parts, results), pixel sums and control messages.
+void write_seeds(const std::string& dir) {
+    std::vector<std::vector<uint8_t>> seeds;
+    std::vector<uint8_t> records;
+    Item ray;
+    ray.ray.trace.ray.direction = {0, 0, 1};
+    ray.ray.pixel = 17;
+    write_item(records, 1, ray, numbers());
+    Item shadow = ray;
+    shadow.ray.shadow = true;
+    shadow.ray.shadow_state.light = 0;
+    shadow.ray.light_distance = 4;
+    shadow.ray.parent = 99, shadow.ray.parent_box = 2, shadow.ray.slot = 3;
+    shadow.ray.transmit_contribution = 0.5f;
+    shadow.ray.trace.interiors.size = 1;
+    shadow.ray.trace.interiors.items[0] = numbers().material(0);
+    write_item(records, 2, shadow, numbers());
+    Item result;
+    result.is_result = true;
+    result.result.parent = 99, result.result.slot = 3;
+    write_item(records, 3, result, numbers());
+    seeds.emplace_back();
+    encode_frame(FrameType::Items, 3, records, seeds.back());
+    std::vector<uint8_t> sums;
+    const double v[4] = {0.5, 0.25, 1, 1};
+    write_pixel_sum(sums, 7, v, 4);
+    seeds.emplace_back();
+    encode_frame(FrameType::Pixels, 1, sums, seeds.back());
+    trace::RenderPlan plan;
+    plan.lights.push_back({});
+    seeds.push_back(*control_frame({{"type", "frame"}, {"plan", plan_to_json(plan)}}));
+    seeds.push_back(*control_frame(
+        {{"type", "start"}, {"reach", reach_to_json(std::vector<Bounds3>(4))}}));
+    for (size_t i = 0; i < seeds.size(); ++i) {
+        std::ofstream(dir + "/seed-" + std::to_string(i), std::ios::binary)
+            .write(reinterpret_cast<const char*>(seeds[i].data()),
+                   std::streamsize(seeds[i].size()));
+    }
+}
+
+}  // namespace
+
+// POVWALL_FUZZ_WRITE_SEEDS=DIR: writes the seed frames to DIR first (scripts/fuzz).
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    if (const char* dir = std::getenv("POVWALL_FUZZ_WRITE_SEEDS")) write_seeds(dir);
+    return 0;
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::span<const uint8_t> bytes(data, size);
     while (!bytes.empty()) {
         Frame frame;
-        const DecodeStatus status = decode_frame(bytes, frame);
-        if (status != DecodeStatus::Complete) break;
+        if (decode_frame(bytes, frame) != DecodeStatus::Complete) break;
         if (frame.consumed == 0 || frame.consumed > bytes.size()) std::abort();
-        std::vector<uint8_t> again;
-        if (frame.type == FrameType::Rays) {
-            encode_rays(frame.rays, again);
-        } else if (frame.type == FrameType::Results) {
-            encode_results(frame.results, again);
-        } else {
-            bytes = bytes.subspan(frame.consumed);
-            continue;
+        switch (frame.type) {
+            case FrameType::Items:
+                items(frame);
+                break;
+            case FrameType::Pixels: {
+                double total = 0;
+                (void)read_pixel_sums(frame.body, frame.count, 4, 4096,
+                                      [&](uint32_t, const double* v) { total += v[0]; });
+                (void)read_pixel_sums(frame.body, frame.count, 3, 4096,
+                                      [&](uint32_t, const double* v) { total += v[2]; });
+                break;
+            }
+            case FrameType::Control:
+                control(frame);
+                break;
         }
-        Frame second;
-        if (decode_frame(again, second) != DecodeStatus::Complete ||
-            second.rays.size() != frame.rays.size() ||
-            second.results.size() != frame.results.size() ||
-            second.consumed != again.size())
-            std::abort();
         bytes = bytes.subspan(frame.consumed);
     }
     return 0;

@@ -1,0 +1,40 @@
+// Frames: the unit every byte between povwall processes travels in. No sockets here.
+//
+// A frame is a 12-byte header, all little-endian,
+//   magic u16 | type u8 | protocol version u8 | body length u32 | record count u32
+// followed by the body: JSON text (Control), item records (Items, wire/items.h) or pixel
+// sum records (Pixels, wire/pixels.h). The header is checked before the body is awaited:
+// a wrong magic, type or version, or a body over kMaxBodySize, is refused at once.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace povwall::distrib {
+
+enum class FrameType : uint8_t { Pixels = 3, Control = 4, Items = 5 };
+constexpr uint16_t kFrameMagic = 0x5057;  // "PW"
+// 2: ray records leave out defaults; 3: the fixed ray/result frames (1, 2) are gone.
+constexpr uint8_t kProtocolVersion = 3;
+constexpr size_t kHeaderSize = 12;
+// Bounds memory per frame; senders split larger batches.
+constexpr size_t kMaxBodySize = size_t(4) << 20;
+
+// Appends a frame of `body` (at most kMaxBodySize bytes) to `out`.
+void encode_frame(FrameType type, uint32_t count, std::span<const uint8_t> body,
+                  std::vector<uint8_t>& out);
+
+enum class DecodeStatus { Complete, NeedMore, Bad };
+struct Frame {
+    FrameType type = FrameType::Control;
+    uint32_t count = 0;
+    // The body within the decoded bytes (no copy; valid while they are).
+    std::span<const uint8_t> body;
+    size_t consumed = 0;  // bytes of input this frame took
+};
+// Decodes one frame from the start of `bytes`.
+DecodeStatus decode_frame(std::span<const uint8_t> bytes, Frame& frame);
+
+}  // namespace povwall::distrib
