@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "cli/options.h"
+#include "core/self_exe.h"
 
 extern char** environ;
 
@@ -123,10 +124,8 @@ int run_batch(int argc, char** argv) {
         return app.exit(e) == 0 ? 0 : 2;
     }
     const std::vector<Job> jobs = read_jobs(specs);
-    char exe[4096];
-    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (n <= 0) throw UsageError("cannot find the povwall binary");
-    exe[n] = 0;
+    const std::string exe = self_exe();
+    if (exe.empty()) throw UsageError("cannot find the povwall binary");
     std::signal(SIGINT, on_batch_interrupt);
     std::signal(SIGTERM, on_batch_interrupt);
     struct Row {

@@ -17,6 +17,7 @@
 #include "cli/options.h"
 #include "cli/povray_reference.h"
 #include "cli/process.h"
+#include "core/self_exe.h"
 #include "output/diff.h"
 #include "output/image_io.h"
 
@@ -38,11 +39,8 @@ double median(std::vector<double> v) {
 }
 
 std::string self_binary() {
-    char self[4096];
-    const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (n <= 0) return "povwall";
-    self[n] = '\0';
-    return self;
+    const std::string self = self_exe();
+    return self.empty() ? "povwall" : self;
 }
 
 std::string slurp(const std::string& path) {

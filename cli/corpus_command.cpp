@@ -17,6 +17,7 @@
 #include "cli/options.h"
 #include "cli/povray_reference.h"
 #include "cli/process.h"
+#include "core/self_exe.h"
 #include "output/diff.h"
 #include "output/html_report.h"
 #include "output/image_io.h"
@@ -531,11 +532,8 @@ int run_corpus(int argc, char** argv) {
                "with\n";
         return 77;  // CTest's skip code, as compare
     }
-    char exe[4096];
-    const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (n <= 0) throw std::runtime_error("cannot find the povwall binary");
-    exe[n] = 0;
-    s.exe = exe;
+    s.exe = self_exe();
+    if (s.exe.empty()) throw std::runtime_error("cannot find the povwall binary");
     s.out_dir = fs::absolute(html);
     s.work_dir = s.out_dir / "files";
     s.cache_dir = fs::absolute(cache.empty() ? s.out_dir / "cache" : fs::path(cache));

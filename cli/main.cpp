@@ -14,6 +14,7 @@
 
 #include "cli/interrupt.h"
 #include "cli/options.h"
+#include "core/self_exe.h"
 #include "distrib/tcp.h"
 #include "output/image_io.h"
 
@@ -39,10 +40,8 @@ void restart_with_huge_page_heap(char** argv) {
     setenv("POVWALL_HEAP_SET", "1", 1);  // not twice, whatever the loader did with it
     // The binary's own path, not /proc/self/exe: the process's name (ps, top) is the
     // file name executed, and would read "exe".
-    char self[4096];
-    const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (n <= 0) return;
-    self[n] = '\0';
+    const std::string self = self_exe();
+    if (self.empty()) return;
     // Between the exec and main() installing the handler again the disposition is the
     // default: a Ctrl-C there would end the render without a word (under ASan that
     // start takes most of a second). Blocked, it waits for main() to unblock it. The
@@ -52,7 +51,7 @@ void restart_with_huge_page_heap(char** argv) {
     sigaddset(&interrupts, SIGINT);
     sigaddset(&interrupts, SIGTERM);
     sigprocmask(SIG_BLOCK, &interrupts, &before);
-    execv(self, argv);
+    execv(self.c_str(), argv);
     // Could not: go on with the ordinary heap.
     sigprocmask(SIG_SETMASK, &before, nullptr);
 }

@@ -14,6 +14,7 @@
 #include "cli/interrupt.h"
 #include "cli/options.h"
 #include "cli/progress_bar.h"
+#include "core/self_exe.h"
 #include "distrib/distribution_plan.h"
 #include "distrib/screen_render.h"
 #include "distrib/space_render.h"
@@ -40,10 +41,9 @@ OutputEncoding encoding_for(const Scene& scene, const RenderOptions& o) {
 // A screen-subdivision worker: this binary, the same scene and settings, one thread,
 // serving tiles on stdin/stdout.
 std::vector<std::string> tile_worker_command(const RenderOptions& o) {
-    char exe[4096];
-    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (n <= 0) throw UsageError("cannot find the povwall binary for worker processes");
-    exe[n] = 0;
+    const std::string exe = self_exe();
+    if (exe.empty())
+        throw UsageError("cannot find the povwall binary for worker processes");
     std::vector<std::string> cmd = {exe,
                                     "render",
                                     o.scene,
@@ -349,7 +349,7 @@ int run_render(RenderOptions o) {
             tcp.workers = o.workers;
             tcp.token = o.token;
             tcp.recover = o.recover;
-            tcp.worker_binary = std::filesystem::read_symlink("/proc/self/exe").string();
+            tcp.worker_binary = self_exe();
             // Forked workers share the coordinator's whole scene, which a memory budget
             // (--worker-memory, or auto mode spreading a scene too big for one worker)
             // is there to avoid: each of those parses only its part.
@@ -411,8 +411,9 @@ int run_render(RenderOptions o) {
         try {
             image = distrib::render_screen(o.render, screen, &screen_stats);
         } catch (const distrib::ScreenError& e) {
+            // A lost worker, as over TCP (README: exit codes).
             std::cerr << "povwall: error: " << e.what() << " (no image written)\n";
-            return 2;
+            return 3;
         }
         stats.trace_seconds = screen_stats.seconds;
         stats.rays = screen_stats.rays;

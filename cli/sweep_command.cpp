@@ -17,6 +17,7 @@
 #include "cli/options.h"
 #include "cli/povray_reference.h"
 #include "cli/process.h"
+#include "core/self_exe.h"
 #include "output/diff.h"
 #include "output/error_time_plot.h"
 #include "output/image_io.h"
@@ -68,10 +69,8 @@ double median(std::vector<double> v) {
 }
 
 std::string self_binary() {
-    char exe[4096];
-    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (n <= 0) throw UsageError("cannot find the povwall binary");
-    exe[n] = 0;
+    const std::string exe = self_exe();
+    if (exe.empty()) throw UsageError("cannot find the povwall binary");
     return exe;
 }
 

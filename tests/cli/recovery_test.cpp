@@ -144,6 +144,26 @@ TEST(Recovery, WorkerKilledWhileThePeersConnectIsReplaced) {
     }
 }
 
+// Without recovery a lost worker ends the render with exit code 3 and no image, in screen
+// mode as over TCP (README: exit codes).
+TEST(Recovery, ALostWorkerWithoutRecoveryExitsThreeInEveryMode) {
+    const std::string scene = std::string(POVWALL_SOURCE_DIR) + "/scenes/demo/walls.pov";
+    for (const std::string mode :
+         {"--mode screen --procs 2", "--boxes 2x1x1 --procs 2"}) {
+        const fs::path out = scratch() / "lost.png", err = scratch() / "lost.err";
+        fs::remove(out);
+        const std::string cmd = "POVWALL_FAULT_KILL_WORKER=1,0 " +
+                                std::string(POVWALL_BINARY) + " render " + scene +
+                                " -W 160 -H 120 -q --no-recover " + mode + " -o " +
+                                out.string() + " 2>" + err.string();
+        const int status = std::system(cmd.c_str());
+        const std::string said = slurp(err);
+        EXPECT_EQ(WEXITSTATUS(status), 3) << mode << ": " << said;
+        EXPECT_NE(said.find("(no image written)"), std::string::npos) << mode << said;
+        EXPECT_FALSE(fs::exists(out)) << mode;
+    }
+}
+
 // Ctrl-C reaches the whole process group: the worker processes end quietly and the
 // coordinator alone says what was kept; no worker is left behind. The render with --procs
 // restarts itself (huge-page heap) first: a Ctrl-C during that exec must not end it
