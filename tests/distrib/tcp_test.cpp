@@ -631,6 +631,22 @@ Worker start_worker(const std::string& token, const std::string& extra = "",
     return w;
 }
 
+// A connection to a worker on loopback (-1 when it fails); 5 s receive timeout.
+int connect_to(int port) {
+    const int fd = socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(uint16_t(port));
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) {
+        close(fd);
+        return -1;
+    }
+    timeval tv{5, 0};
+    setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+    return fd;
+}
+
 void stop_worker(const Worker& w) {
     kill(w.pid, SIGKILL);
     waitpid(w.pid, nullptr, 0);
@@ -641,19 +657,13 @@ TEST(Tcp, ConnectionWithoutTheTokenIsRejectedAndTheRenderIsUnaffected) {
     for (const std::string& hello :
          {std::string(R"({"type":"hello","token":"guess","from":-1})"),
           std::string("")}) {
-        int fd = socket(AF_INET, SOCK_STREAM, 0);
-        sockaddr_in addr{};
-        addr.sin_family = AF_INET;
-        addr.sin_port = htons(uint16_t(a.port));
-        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        ASSERT_EQ(connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+        const int fd = connect_to(a.port);
+        ASSERT_GE(fd, 0);
         std::vector<uint8_t> frame = hello.empty()
                                          ? std::vector<uint8_t>(64, 0x41)  // no frame
                                          : povwall::distrib::encode_control_frame(hello);
         ASSERT_EQ(send(fd, frame.data(), frame.size(), 0), ssize_t(frame.size()));
         char byte;
-        timeval tv{5, 0};
-        setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
         EXPECT_EQ(recv(fd, &byte, 1, 0), 0) << "the worker must close the connection";
         close(fd);
     }
@@ -673,12 +683,8 @@ TEST(Tcp, ConnectionWithoutTheTokenIsRejectedAndTheRenderIsUnaffected) {
 
 TEST(Tcp, RejectedTokenKeepsTheWorkerServing) {
     Worker a = start_worker("secret"), b = start_worker("secret");
-    int fd = socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_port = htons(uint16_t(a.port));
-    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    ASSERT_EQ(connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+    const int fd = connect_to(a.port);
+    ASSERT_GE(fd, 0);
     auto frame = povwall::distrib::encode_control_frame(
         R"({"type":"hello","token":"x","from":-1})");
     ASSERT_EQ(send(fd, frame.data(), frame.size(), 0), ssize_t(frame.size()));
@@ -712,21 +718,20 @@ TEST(Tcp, AMalformedFrameAfterTheTokenIsNamedAndDropped) {
         {truncated, "coordinator lost: disconnected (connection lost)"},
         {garbage, "coordinator lost: malformed frame or wrong protocol version"},
     };
-    for (const auto& [bytes, named] : cases) {
-        int fd = socket(AF_INET, SOCK_STREAM, 0);
-        sockaddr_in addr{};
-        addr.sin_family = AF_INET;
-        addr.sin_port = htons(uint16_t(a.port));
-        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        ASSERT_EQ(connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+    // Connects as the coordinator (the right token), then sends `bytes`.
+    auto send_after_hello = [&](const std::vector<uint8_t>& bytes) {
+        const int fd = connect_to(a.port);
         std::vector<uint8_t> all =
             d::encode_control_frame(R"({"type":"hello","token":"s","from":-1})");
         all.insert(all.end(), bytes.begin(), bytes.end());
-        ASSERT_EQ(send(fd, all.data(), all.size(), 0), ssize_t(all.size()));
+        EXPECT_EQ(send(fd, all.data(), all.size(), 0), ssize_t(all.size()));
+        return fd;
+    };
+    for (const auto& [bytes, named] : cases) {
+        const int fd = send_after_hello(bytes);
+        ASSERT_GE(fd, 0);
         if (bytes == truncated) shutdown(fd, SHUT_WR);
         char byte;
-        timeval tv{5, 0};
-        setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
         EXPECT_EQ(recv(fd, &byte, 1, 0), 0) << named;
         close(fd);
         // The worker says why just after it closes.
@@ -742,18 +747,8 @@ TEST(Tcp, AMalformedFrameAfterTheTokenIsNamedAndDropped) {
     // A job with a field of the wrong type: the worker answers with an error naming it
     // (this connection is the coordinator's, and stays open for the coordinator to end).
     {
-        int fd = socket(AF_INET, SOCK_STREAM, 0);
-        sockaddr_in addr{};
-        addr.sin_family = AF_INET;
-        addr.sin_port = htons(uint16_t(a.port));
-        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        ASSERT_EQ(connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
-        std::vector<uint8_t> all =
-            d::encode_control_frame(R"({"type":"hello","token":"s","from":-1})");
-        all.insert(all.end(), bad_job.begin(), bad_job.end());
-        ASSERT_EQ(send(fd, all.data(), all.size(), 0), ssize_t(all.size()));
-        timeval tv{5, 0};
-        setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+        const int fd = send_after_hello(bad_job);
+        ASSERT_GE(fd, 0);
         std::vector<uint8_t> got(4096);
         size_t have = 0;
         d::Frame f;
