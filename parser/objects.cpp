@@ -11,8 +11,8 @@ namespace {
 
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
-    static constexpr std::string_view kNames[] = {"blob", "isosurface", "parametric",
-                                                  "lemon", "light_group"};
+    static constexpr std::string_view kNames[] = {"isosurface", "parametric", "lemon",
+                                                  "light_group"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -288,6 +288,9 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         // which of close hits it reports.
         if (auto hf = std::get_if<HeightField>(&obj.shape)) {
             hf->hierarchy = parse_bool_opt();
+        } else if (auto blob = std::get_if<Blob>(&obj.shape)) {
+            // Its bounding-sphere tree changes only the order of the field's sums.
+            blob->hierarchy = parse_bool_opt();
         } else {
             if (!std::holds_alternative<Mesh>(obj.shape))
                 error(t, "'hierarchy' cannot be used with this object");
@@ -336,6 +339,7 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (auto sor = std::get_if<Sor>(&obj.shape)) sturm = &sor->sturm;
         if (auto lathe = std::get_if<Lathe>(&obj.shape)) sturm = &lathe->sturm;
         if (auto poly = std::get_if<Poly>(&obj.shape)) sturm = &poly->sturm;
+        if (auto blob = std::get_if<Blob>(&obj.shape)) sturm = &blob->sturm;
         if (!sturm) error(t, "'sturm' cannot be used with this object");
         *sturm = parse_bool_opt();
     } else if (w == "open") {
@@ -530,6 +534,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "quadric") {
         open();
         if (!copy_identifier()) parse_quadric(out);
+    } else if (w == "blob") {
+        open();
+        if (!copy_identifier()) parse_blob(out);
     } else if (w == "superellipsoid") {
         open();
         if (!copy_identifier()) parse_superellipsoid(out);

@@ -114,7 +114,8 @@ std::string shape_kind_name(const Object& leaf) {
                                   "ovus",     "sor",           "lathe",
                                   "prism",    "bicubic_patch", "julia_fractal",
                                   "glyph",    "height_field",  "sphere_sweep",
-                                  "poly",     "quadric",       "csg"};
+                                  "poly",     "quadric",       "blob",
+                                  "csg"};
     static_assert(std::variant_size_v<ShapeData> == std::size(names),
                   "one name per shape alternative");
     return names[leaf.shape.index()];

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "trace/shapes/bicubic_patch.h"
+#include "trace/shapes/blob.h"
 #include "trace/shapes/box.h"
 #include "trace/shapes/common.h"
 #include "trace/shapes/cylinder_cone.h"
