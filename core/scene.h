@@ -595,6 +595,24 @@ struct Blob {
 // the strength): reversed, cylinders expanded, the field coefficients filled in.
 BlobData make_blob(Real threshold, const std::vector<BlobElement>& components);
 
+// isosurface { function { F } contained_by { box | sphere } threshold accuracy
+// max_gradient max_trace open }: F(x, y, z) - threshold = 0 inside its container, found
+// along the ray by POV-Ray 3.7's recursive subdivision (trace/shapes/isosurface.h).
+struct Isosurface {
+    std::shared_ptr<const FunctionProgram> function;  // a float function of x, y, z
+    bool sphere_container = false;
+    Point3 corner1{-1, -1, -1}, corner2{1, 1, 1};  // the box (sorted per axis)
+    Point3 centre{0, 0, 0};
+    Real radius = 1;
+    Real threshold = 0, accuracy = 0.001, max_gradient = 1.1;
+    int max_trace = 1;
+    bool closed = true;
+    // The global settings the function's patterns and f_noise3d read (set when the
+    // parse ends).
+    int noise_generator = 2;
+    int number_of_waves = 10;
+};
+
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
@@ -613,10 +631,11 @@ struct Csg {
     std::optional<PovBox> text_box;
 };
 
-using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                               SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor,
-                               Lathe, Prism, BicubicPatch, JuliaFractal, Glyph,
-                               HeightField, SphereSweep, Poly, Quadric, Blob, Csg>;
+using ShapeData =
+    std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
+                 SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor, Lathe, Prism,
+                 BicubicPatch, JuliaFractal, Glyph, HeightField, SphereSweep, Poly,
+                 Quadric, Blob, Isosurface, Csg>;
 
 struct Object {
     ShapeData shape;

@@ -244,6 +244,10 @@ class Interpreter {
     // after, as for every shape); a component's own modifiers up to its '}'.
     void parse_blob(Object& out);
     void parse_blob_component_modifiers(BlobElement& e);
+    // parser/shape_isosurface.cpp: the function and the isosurface's own options.
+    void parse_isosurface(Object& out, const Token& keyword);
+    // At the end of the parse: the global settings every isosurface's function reads.
+    void settle_isosurfaces();
     // POV-Ray's UV vector: a float stands for both; 3 or more components are an error.
     ProfilePoint parse_uv_vector();
     int parse_count();

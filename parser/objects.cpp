@@ -11,8 +11,7 @@ namespace {
 
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
-    static constexpr std::string_view kNames[] = {"isosurface", "parametric", "lemon",
-                                                  "light_group"};
+    static constexpr std::string_view kNames[] = {"parametric", "lemon", "light_group"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -348,6 +347,10 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (!cyl && !cone) error(t, "'open' cannot be used with this object");
         if (cyl) cyl->open = true;
         if (cone) cone->open = true;
+    } else if (w == "clipped_by" && std::holds_alternative<Isosurface>(obj.shape)) {
+        // POV-Ray tests an isosurface's clip inside its search: a clipped container hit
+        // does not count as a trace nor turn the search around.
+        unsupported(t, "clipped_by on an isosurface");
     } else if (w == "clipped_by" && std::holds_alternative<BicubicPatch>(obj.shape)) {
         // POV-Ray ignores the clip of a patch but still shrinks its bounding box by it.
         unsupported(t, "clipped_by on a bicubic_patch");
@@ -537,6 +540,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "blob") {
         open();
         if (!copy_identifier()) parse_blob(out);
+    } else if (w == "isosurface") {
+        open();
+        if (!copy_identifier()) parse_isosurface(out, t);
     } else if (w == "superellipsoid") {
         open();
         if (!copy_identifier()) parse_superellipsoid(out);

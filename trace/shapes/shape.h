@@ -16,6 +16,7 @@
 #include "trace/shapes/cylinder_cone.h"
 #include "trace/shapes/disc.h"
 #include "trace/shapes/height_field.h"
+#include "trace/shapes/isosurface.h"
 #include "trace/shapes/julia_fractal.h"
 #include "trace/shapes/lathe.h"
 #include "trace/shapes/mesh.h"
