@@ -48,7 +48,12 @@ void Interpreter::parse_isosurface(Object& out, const Token& keyword) {
             iso.max_gradient = parse_float();
         } else if (is_word(t, "max_trace")) {
             next();
-            iso.max_trace = int(short(parse_float()));
+            // POV-Ray keeps it as a short (a C cast of the float); past a short's range
+            // it is clamped here (POV-Ray's cast is undefined there).
+            const double v = parse_float();
+            iso.max_trace = v >= 32767.0   ? 32767
+                            : v > -32768.0 ? int(short(v))
+                                           : (v == v ? -32768 : 0);
         } else if (is_word(t, "all_intersections")) {
             next();
             iso.max_trace = kMaxTrace;
