@@ -589,6 +589,10 @@ struct Blob {
     std::shared_ptr<const BlobData> data;  // shared by copies
     bool sturm = false;
     bool hierarchy = true;  // POV-Ray's bounding-sphere tree: visiting order only
+    // Per element (in the stored order) the texture its component was given, empty for
+    // none (the blob's own texture stands in); no entries when no component has one.
+    // A hit blends them weighted by each element's |field| there.
+    std::vector<LayeredTexture> element_textures;
 };
 // The element list as POV-Ray's Make_Blob builds it from the components as parsed (in
 // source order; cylinders with their matrix and length, spheres perhaps ellipsoids, c[2]

@@ -243,7 +243,7 @@ class Interpreter {
     // parser/shape_blob.cpp: the components and threshold (the object's modifiers come
     // after, as for every shape); a component's own modifiers up to its '}'.
     void parse_blob(Object& out);
-    void parse_blob_component_modifiers(BlobElement& e);
+    void parse_blob_component_modifiers(BlobElement& e, LayeredTexture& tex);
     // parser/shape_isosurface.cpp: the function and the isosurface's own options.
     void parse_isosurface(Object& out, const Token& keyword);
     // At the end of the parse: the global settings every isosurface's function reads.

@@ -115,6 +115,9 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
     if (auto mesh = std::get_if<Mesh>(&obj.shape)) {  // per-face textures move too
         for (LayeredTexture& tex : mesh->textures) transform_textures(tex, t);
     }
+    if (auto blob = std::get_if<Blob>(&obj.shape)) {  // and a blob's component textures
+        for (LayeredTexture& tex : blob->element_textures) transform_textures(tex, t);
+    }
     if (obj.clipped_by.allocated()) {
         for (Object& o : obj.clipped_by.edit()) apply_transform(o, t, step);
     }

@@ -3,7 +3,10 @@
 //   component S, R, <C>
 //   sphere { <C>, R, [strength] S  component modifiers }
 //   cylinder { <B>, <A>, R, [strength] S  component modifiers }
-// Every comma is optional; `threshold` may come between components.
+// Every comma is optional; `threshold` may come between components. Component
+// modifiers: translate, rotate, scale, matrix, transform (moving its texture too),
+// texture, pigment, normal, finish.
+#include <algorithm>
 #include <cmath>
 
 #include "parser/interpreter.h"
@@ -44,7 +47,7 @@ Transform cylinder_frame(const Point3& base, Vector3 up) {
 
 }  // namespace
 
-void Interpreter::parse_blob_component_modifiers(BlobElement& e) {
+void Interpreter::parse_blob_component_modifiers(BlobElement& e, LayeredTexture& tex) {
     using Kind = TransformStep::Kind;
     for (;;) {
         Token t = next();
@@ -52,6 +55,8 @@ void Interpreter::parse_blob_component_modifiers(BlobElement& e) {
         Transform tr;
         TransformStep step;
         if (try_transform(t, tr, &step)) {
+            // Every step moves the component's texture too.
+            transform_textures(tex, tr);
             const Vector3& v = step.amount;
             if (e.kind == BlobElementKind::Sphere) {
                 // POV-Ray moves a sphere's centre (and scales its radius) in place until
@@ -76,9 +81,25 @@ void Interpreter::parse_blob_component_modifiers(BlobElement& e) {
             e.transform = e.transform.then(tr);
             continue;
         }
-        if (is_word(t, "texture") || is_word(t, "pigment") || is_word(t, "normal") ||
-            is_word(t, "finish"))
-            unsupported(t, "a texture on a blob component");
+        if (is_word(t, "texture")) {
+            link_textures(tex, parse_texture_block(), t);
+            continue;
+        }
+        if (is_word(t, "pigment") || is_word(t, "normal") || is_word(t, "finish")) {
+            // As on an object: the top layer, made from the default texture if none.
+            if (tex.empty())
+                tex.push_back(default_texture_);
+            else if (tex.back().map_pattern)
+                error(t, "cannot layer over a patterned texture");
+            Texture& top = tex.back();
+            if (is_word(t, "pigment"))
+                parse_pigment_into(top.pigment);
+            else if (is_word(t, "finish"))
+                parse_finish_into(top.finish);
+            else
+                parse_normal_into(top.normal);
+            continue;
+        }
         expected("a blob component modifier or '}'", t);
     }
 }
@@ -86,6 +107,7 @@ void Interpreter::parse_blob_component_modifiers(BlobElement& e) {
 void Interpreter::parse_blob(Object& out) {
     Real threshold = 1.0;
     std::vector<BlobElement> components;
+    std::vector<LayeredTexture> textures;  // per component
     for (;;) {
         const Token t = peek();
         if (is_word(t, "threshold")) {
@@ -101,6 +123,7 @@ void Interpreter::parse_blob(Object& out) {
             accept_punct(',');
             e.origin = parse_vector();
             components.push_back(e);
+            textures.emplace_back();
         } else if (is_word(t, "sphere")) {
             next();
             expect_punct('{', "after sphere");
@@ -112,8 +135,10 @@ void Interpreter::parse_blob(Object& out) {
             accept_punct(',');
             accept_word("strength");
             e.c[2] = parse_float();
-            parse_blob_component_modifiers(e);
+            LayeredTexture tex;
+            parse_blob_component_modifiers(e, tex);
             components.push_back(e);
+            textures.push_back(std::move(tex));
         } else if (is_word(t, "cylinder")) {
             next();
             expect_punct('{', "after cylinder");
@@ -133,8 +158,10 @@ void Interpreter::parse_blob(Object& out) {
             if (e.len < 1e-10) error(t, "Degenerate cylindrical component in blob.");
             axis = axis * (1.0 / e.len);
             e.transform = cylinder_frame(base, axis);
-            parse_blob_component_modifiers(e);
+            LayeredTexture tex;
+            parse_blob_component_modifiers(e, tex);
             components.push_back(e);
+            textures.push_back(std::move(tex));
         } else {
             break;
         }
@@ -142,6 +169,15 @@ void Interpreter::parse_blob(Object& out) {
     if (components.empty()) error(peek(), "Need at least one component in a blob.");
     Blob blob;
     blob.data = std::make_shared<BlobData>(make_blob(threshold, components));
+    // The element textures in the elements' order (reversed, three per cylinder).
+    const bool textured = std::any_of(textures.begin(), textures.end(),
+                                      [](const LayeredTexture& t) { return !t.empty(); });
+    if (textured) {
+        for (size_t i = components.size(); i-- > 0;) {
+            const int copies = components[i].kind == BlobElementKind::Cylinder ? 3 : 1;
+            for (int k = 0; k < copies; ++k) blob.element_textures.push_back(textures[i]);
+        }
+    }
     out.shape = std::move(blob);
 }
 

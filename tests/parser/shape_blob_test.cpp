@@ -89,15 +89,36 @@ TEST(ShapeBlob, SphereComponentTransforms) {
     EXPECT_EQ(s.objects[0].transform.point({0, 0, 0}).x, 1.0);
 }
 
+TEST(ShapeBlob, ComponentTexturesPerElementMovedByTransforms) {
+    Scene sc = parse(
+        "blob { sphere { 0, 1, 1 pigment { rgb x } translate y } "
+        "cylinder { 0, x, 0.5, 1 } sphere { 0, 1, 1 texture { pigment { rgb z } } } "
+        "translate 2*x }");
+    const Blob& b = std::get<Blob>(sc.objects[0].shape);
+    ASSERT_EQ(b.data->elements.size(), 5u);
+    ASSERT_EQ(b.element_textures.size(), 5u);
+    // Reversed: the last sphere, the cylinder's three elements, the first sphere.
+    EXPECT_EQ(b.element_textures[0].front().pigment.colour.rgb.b, 1.0f);
+    for (int k = 1; k <= 3; ++k) EXPECT_TRUE(b.element_textures[size_t(k)].empty());
+    const Texture& first = b.element_textures[4].front();
+    EXPECT_EQ(first.pigment.colour.rgb.r, 1.0f);
+    // Moved by its component's translate and by the blob's.
+    const Point3 o = first.pigment.pattern->transform.point({0, 0, 0});
+    EXPECT_EQ(o.x, 2.0);
+    EXPECT_EQ(o.y, 1.0);
+    // No component texture: no list.
+    EXPECT_TRUE(only_shape<Blob>(parse("blob { sphere { 0, 1, 1 } pigment { rgb 1 } }"))
+                    .element_textures.empty());
+}
+
 TEST(ShapeBlob, Errors) {
     EXPECT_EQ(error_of("blob { threshold 1 }"),
               "test.pov:1:20: error: Need at least one component in a blob.");
     EXPECT_EQ(error_of("blob { cylinder { 1, 1, 1, 1 } }"),
               "test.pov:1:8: error: Degenerate cylindrical component in blob.");
-    EXPECT_EQ(error_of("blob { sphere { 0, 1, 1 pigment { rgb 1 } } }"),
-              "test.pov:1:25: error: unsupported: a texture on a blob component");
-    EXPECT_EQ(error_of("blob { sphere { 0, 1, 1 texture { } } }"),
-              "test.pov:1:25: error: unsupported: a texture on a blob component");
+    EXPECT_EQ(error_of("blob { sphere { 0, 1, 1 open } }"),
+              "test.pov:1:25: error: expected a blob component modifier or '}' but found "
+              "'open'");
     EXPECT_EQ(error_of("sphere { 0, 1 hierarchy }"),
               "test.pov:1:15: error: 'hierarchy' cannot be used with this object");
 }

@@ -45,19 +45,20 @@ TEST(ShapeBlob, SingleSphereHitsAtTheThresholdRadius) {
     EXPECT_NEAR(n.x, 0.0, 1e-15);
 }
 
-TEST(ShapeBlob, OutsideCsgTheFirstIntervalWithAHitEndsTheSearch) {
-    // Two separate spheres along the ray: their intervals do not overlap.
+TEST(ShapeBlob, EveryIntervalsHitsOutsideCsgToo) {
+    // Two separate spheres along the ray: their intervals do not overlap. POV-Ray stops
+    // after the first outside CSG and finds the others from restarted rays; povwall's one
+    // ray keeps them all.
     const Blob b = make(0.25, {sphere({0, 0, 0}, 1, 1), sphere({0, 0, 4}, 1, 1)});
-    ShapeHits hits;
-    shape_hits(b, ray({0, 0, -3}, {0, 0, 1}), hits);
-    ASSERT_EQ(hits.size(), 2u);
-    EXPECT_NEAR(hits[1].t, 3 + std::sqrt(0.5), 1e-12);
-    LocalRay in_csg = ray({0, 0, -3}, {0, 0, 1});
-    in_csg.csg_child = true;
-    hits.clear();
-    shape_hits(b, in_csg, hits);
-    ASSERT_EQ(hits.size(), 4u);
-    EXPECT_NEAR(hits[3].t, 7 + std::sqrt(0.5), 1e-12);
+    for (bool csg : {false, true}) {
+        LocalRay r = ray({0, 0, -3}, {0, 0, 1});
+        r.csg_child = csg;
+        ShapeHits hits;
+        shape_hits(b, r, hits);
+        ASSERT_EQ(hits.size(), 4u);
+        EXPECT_NEAR(hits[1].t, 3 + std::sqrt(0.5), 1e-12);
+        EXPECT_NEAR(hits[3].t, 7 + std::sqrt(0.5), 1e-12);
+    }
 }
 
 TEST(ShapeBlob, TwoSpheresMergeAndTheDepthTolerance) {
@@ -91,8 +92,9 @@ TEST(ShapeBlob, NegativeComponentsCarveAndDoNotBound) {
     // On the z axis the negative sphere cancels the near side: the hit moves in.
     ShapeHits hits;
     shape_hits(b, ray({0, 0, -5}, {0, 0, 1}), hits);
-    ASSERT_EQ(hits.size(), 1u);
+    ASSERT_EQ(hits.size(), 2u);  // in and out
     const Real z = hits[0].t - 5;
+    EXPECT_NEAR(hits[1].t - 5, std::sqrt(1 - std::sqrt(0.5)), 1e-12);
     EXPECT_GT(z, -std::sqrt(1 - std::sqrt(0.5)));
     EXPECT_NEAR(blob_field(*b.data, {0, 0, z}), 0.5, 1e-9);
     // POV-Ray's box: the positive sphere only, in single precision.

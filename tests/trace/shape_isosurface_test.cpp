@@ -27,17 +27,26 @@ TEST(ShapeIsosurface, RootWithinAccuracyFromOutside) {
     // F > 0 there, and the root is at t = 2.5, found as the first halving end past it.
     const Isosurface s = iso("function { sqrt(x*x + y*y + z*z) - 0.5 }");
     ShapeHits hits;
-    shape_hits(s, ray({0, 0, -3}, {0, 0, 1}), hits);
-    ASSERT_EQ(hits.size(), 1u);
+    LocalRay in_csg = ray({0, 0, -3}, {0, 0, 1});
+    in_csg.csg_child = true;
+    shape_hits(s, in_csg, hits);
+    ASSERT_EQ(hits.size(), 1u);  // max_trace 1
     EXPECT_GE(hits[0].t, 2.5);
     EXPECT_LT(hits[0].t, 2.5 + 0.001);
     EXPECT_EQ(hits[0].face, 0);
+    // Outside CSG the search is made again from the hit, as POV-Ray's restarted ray
+    // (a shadow through the surface): the far side too.
+    hits.clear();
+    shape_hits(s, ray({0, 0, -3}, {0, 0, 1}), hits);
+    ASSERT_EQ(hits.size(), 2u);
+    EXPECT_GE(hits[1].t, 3.5);
+    EXPECT_LT(hits[1].t, 3.5 + 0.002);
     const Vector3 n = shape_normal(s, hits[0]);
     EXPECT_NEAR(n.z, -1.0, 1e-3);
     // World distances along a longer direction: the same point, half the distance.
     hits.clear();
     shape_hits(s, ray({0, 0, -3}, {0, 0, 2}), hits);
-    ASSERT_EQ(hits.size(), 1u);
+    ASSERT_EQ(hits.size(), 2u);
     EXPECT_GE(hits[0].t, 1.25);
     EXPECT_LT(hits[0].t, 1.25 + 0.001);
 }

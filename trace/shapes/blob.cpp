@@ -289,6 +289,13 @@ bool element_at(const BlobElement& e, const Point3& p, bool inclusive, Real& r2,
 
 }  // namespace
 
+Real blob_element_field(const BlobElement& e, const Point3& p) {
+    Real r2;
+    Vector3 v;
+    if (!element_at(e, p, false, r2, v)) return 0.0;
+    return r2 * (r2 * e.c[0] + e.c[1]) + e.c[2];
+}
+
 Real blob_field(const BlobData& d, const Point3& p) {
     Real density = 0.0;
     for (const BlobElement& e : d.elements) {
@@ -385,7 +392,6 @@ void shape_hits(const Blob& s, const LocalRay& r, ShapeHits& out) {
     fcoeffs.resize(size_t(n) * 5);
     Real coeffs[5] = {0.0, 0.0, 0.0, 0.0, -d.threshold};
     const size_t first = out.size();
-    bool found = false;
     int active = 0;
     const size_t cnt = ev.size();
     for (size_t i = 0; i < cnt; ++i) {
@@ -411,12 +417,12 @@ void shape_hits(const Blob& s, const LocalRay& r, ShapeHits& out) {
             const Real dist = (root * max_bound + start) / len;
             if (dist > kBlobDepthTolerance && dist < kMaxDistance) {
                 out.push_back({dist, r.origin + r.direction * dist, 0});
-                found = true;
             }
         }
-        // POV-Ray stops at the first interval with a hit outside CSG (and povwall's
-        // clipped objects, which it treats alike): later ones are farther.
-        if (found && !r.csg_child) break;
+        // POV-Ray stops here outside CSG once an interval gave a hit: the later ones are
+        // farther, and it finds them again from a ray restarted at the hit (shadows
+        // through a transparent blob). povwall follows one ray through every crossing, so
+        // it keeps them all.
     }
     std::stable_sort(out.begin() + std::ptrdiff_t(first), out.end(),
                      [](const ShapeHit& a, const ShapeHit& b) { return a.t < b.t; });

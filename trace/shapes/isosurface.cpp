@@ -118,9 +118,10 @@ Real isosurface_function(const Isosurface& s, const Point3& p) {
     return Evaluator(s).raw(p);
 }
 
-void shape_hits(const Isosurface& s, const LocalRay& r, ShapeHits& out) {
-    const Point3 P = r.origin;
-    const Vector3 D = r.direction;
+namespace {
+
+// One POV-Ray All_Intersections along P + t D (world distances t).
+void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, ShapeHits& out) {
     Real depth1 = 0, depth2 = 0;
     int side1, side2;
     if (!container_span(s, P, D, depth1, depth2, side1, side2)) return;
@@ -170,6 +171,31 @@ void shape_hits(const Isosurface& s, const LocalRay& r, ShapeHits& out) {
     }
     std::stable_sort(out.begin() + std::ptrdiff_t(first), out.end(),
                      [](const ShapeHit& a, const ShapeHit& b) { return a.t < b.t; });
+}
+
+}  // namespace
+
+void shape_hits(const Isosurface& s, const LocalRay& r, ShapeHits& out) {
+    const size_t first = out.size();
+    hits_once(s, r.origin, r.direction, out);
+    if (r.csg_child) return;
+    // Outside CSG POV-Ray looks past a hit (a shadow through a transparent isosurface)
+    // with a ray restarted there, where povwall follows one ray: the restarts are made
+    // here, each from the farthest hit so far.
+    thread_local ShapeHits more;
+    for (int restart = 0; restart < 32 && out.size() > first; ++restart) {
+        const Real t0 = out.back().t;
+        more.clear();
+        hits_once(s, r.origin + r.direction * t0, r.direction, more);
+        bool progressed = false;
+        for (const ShapeHit& h : more) {
+            if (!(h.t > 0)) continue;
+            const Real t = t0 + h.t;
+            out.push_back({t, r.origin + r.direction * t, h.face});
+            progressed = true;
+        }
+        if (!progressed) break;
+    }
 }
 
 Vector3 shape_normal(const Isosurface& s, const ShapeHit& h) {
