@@ -203,9 +203,10 @@ const LayeredTexture& texture_of(const Material& m);
 // POV-Ray's texture choice (ComputeTextureColour, ComputeShadowColour): a ray meeting a
 // surface from inside, along its raw normal (Hit::normal has POV-Ray's sign), sees the
 // object's interior_texture when it has one. Decided from the hit alone, so every back
-// end and every kind of ray agrees.
+// end and every kind of ray agrees. A blob with component textures blends those from
+// either side (POV-Ray's multi-textured objects never take the interior texture).
 bool shows_interior_texture(const Material& m, const Hit& hit, const Ray& ray) {
-    return m.interior_texture && dot(hit.normal, ray.direction) > 0;
+    return m.interior_texture && !m.blob_blend && dot(hit.normal, ray.direction) > 0;
 }
 
 void pigment_only(const PreparedScene& scene, const Material& m, const Point3& P,

@@ -2,7 +2,7 @@
 // (POV-Ray's Determine_Textures), components without one taking the blob's, a texture
 // moved by its component's transforms and by the blob's, a loose pigment/finish on a
 // component, a transparent component (shadows through the blended filter), and the
-// cylinder's three elements sharing its texture.
+// cylinder's three elements sharing its texture, and a cut-open one seen inside.
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 4, -9> look_at <0, 0.3, 0> angle 50 }
@@ -31,4 +31,14 @@ blob {
   sphere { <0, 0, 0>, 1, 1 pigment { rgbf <0.9, 1, 0.9, 0.8> } finish { specular 0.5 } }
   sphere { <0.8, 0.2, 0>, 0.8, 1 pigment { rgb <1, 0.6, 0.1> } }
   translate <2.6, 0, 0.3>
+}
+// Cut open: a multi-textured blob shows its component textures from inside too (POV-Ray
+// never takes a multi-textured object's interior_texture).
+difference {
+  blob { threshold 0.5
+    sphere { <-0.5, 0, 0>, 0.9, 1 pigment { rgb <1, 0.3, 0.2> } }
+    sphere { <0.5, 0, 0>, 0.9, 1 pigment { rgb <0.2, 0.4, 1> } }
+    pigment { rgb 1 } interior_texture { pigment { rgb <0.2, 1, 0.2> } } }
+  box { <-2, 0, -2>, <2, 2, 0> }
+  rotate 30*y translate <0, -0.3, -2.6>
 }
