@@ -131,6 +131,15 @@ class Transform {
     // translation.
     static Transform from_pov_matrix(const Real v[12]);
     static Transform from_matrix(const Matrix34& fwd);
+    // A matrix with the inverse POV-Ray keeps for it (a rotation's transpose, say), not
+    // one computed by inversion.
+    static Transform from_matrices(const Matrix34& fwd, const Matrix34& inv) {
+        Transform t;
+        t.fwd_ = fwd;
+        t.inv_ = inv;
+        t.identity_ = false;
+        return t;
+    }
 
     // `*this` followed by `next` (POV-Ray applies transforms in source order).
     Transform then(const Transform& next) const;

@@ -560,6 +560,63 @@ struct Quadric {
     bool automatic_bounds = false;
 };
 
+// blob { [threshold T] sphere { <C>, R, [strength] S } cylinder { <B>, <A>, R, S }
+// component S, R, <C> ... }: the field sum of S (1 - r^2/R^2)^2 over the elements with
+// r < R, the surface where it equals the threshold (trace/shapes/blob.h). Elements are
+// stored as POV-Ray's Make_Blob leaves them: in reverse source order, a cylinder as its
+// body followed by its base and apex hemispheres (all three sharing its matrix).
+enum class BlobElementKind : uint8_t {
+    Sphere,          // centre `origin` in blob space, no matrix
+    Ellipsoid,       // a sphere given a matrix: centre `origin` in its own space
+    Cylinder,        // its own space: axis z from 0 to `len`, x^2 + y^2 the distance
+    BaseHemisphere,  // |p|^2 for z <= 0
+    ApexHemisphere,  // |p - len z|^2 for z >= len
+};
+struct BlobElement {
+    BlobElementKind kind = BlobElementKind::Sphere;
+    Point3 origin{0, 0, 0};
+    Real len = 0;   // a cylinder's (and its hemispheres') length
+    Real rad2 = 0;  // radius squared
+    // The field as c[0] r^4 + c[1] r^2 + c[2] (c[2] is the strength).
+    Real c[3] = {0, 0, 0};
+    Transform transform;  // element space -> blob space (ellipsoid, cylinder parts)
+};
+struct BlobData {
+    Real threshold = 1;
+    std::vector<BlobElement> elements;
+};
+struct Blob {
+    std::shared_ptr<const BlobData> data;  // shared by copies
+    bool sturm = false;
+    bool hierarchy = true;  // POV-Ray's bounding-sphere tree: visiting order only
+    // Per element (in the stored order) the texture its component was given, empty for
+    // none (the blob's own texture stands in); no entries when no component has one.
+    // A hit blends them weighted by each element's |field| there.
+    std::vector<LayeredTexture> element_textures;
+};
+// The element list as POV-Ray's Make_Blob builds it from the components as parsed (in
+// source order; cylinders with their matrix and length, spheres perhaps ellipsoids, c[2]
+// the strength): reversed, cylinders expanded, the field coefficients filled in.
+BlobData make_blob(Real threshold, const std::vector<BlobElement>& components);
+
+// isosurface { function { F } contained_by { box | sphere } threshold accuracy
+// max_gradient max_trace open }: F(x, y, z) - threshold = 0 inside its container, found
+// along the ray by POV-Ray 3.7's recursive subdivision (trace/shapes/isosurface.h).
+struct Isosurface {
+    std::shared_ptr<const FunctionProgram> function;  // a float function of x, y, z
+    bool sphere_container = false;
+    Point3 corner1{-1, -1, -1}, corner2{1, 1, 1};  // the box (sorted per axis)
+    Point3 centre{0, 0, 0};
+    Real radius = 1;
+    Real threshold = 0, accuracy = 0.001, max_gradient = 1.1;
+    int max_trace = 1;
+    bool closed = true;
+    // The global settings the function's patterns and f_noise3d read (set when the
+    // parse ends).
+    int noise_generator = 2;
+    int number_of_waves = 10;
+};
+
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
@@ -578,10 +635,11 @@ struct Csg {
     std::optional<PovBox> text_box;
 };
 
-using ShapeData = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
-                               SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor,
-                               Lathe, Prism, BicubicPatch, JuliaFractal, Glyph,
-                               HeightField, SphereSweep, Poly, Quadric, Csg>;
+using ShapeData =
+    std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
+                 SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor, Lathe, Prism,
+                 BicubicPatch, JuliaFractal, Glyph, HeightField, SphereSweep, Poly,
+                 Quadric, Blob, Isosurface, Csg>;
 
 struct Object {
     ShapeData shape;

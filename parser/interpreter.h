@@ -240,6 +240,14 @@ class Interpreter {
                                                      int& depth);
     void finish_height_field(Object& out, PendingHeightField pending);
     void parse_sphere_sweep(Object& out);
+    // parser/shape_blob.cpp: the components and threshold (the object's modifiers come
+    // after, as for every shape); a component's own modifiers up to its '}'.
+    void parse_blob(Object& out);
+    void parse_blob_component_modifiers(BlobElement& e, LayeredTexture& tex);
+    // parser/shape_isosurface.cpp: the function and the isosurface's own options.
+    void parse_isosurface(Object& out, const Token& keyword);
+    // At the end of the parse: the global settings every isosurface's function reads.
+    void settle_isosurfaces();
     // POV-Ray's UV vector: a float stands for both; 3 or more components are an error.
     ProfilePoint parse_uv_vector();
     int parse_count();

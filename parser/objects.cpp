@@ -11,8 +11,7 @@ namespace {
 
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
-    static constexpr std::string_view kNames[] = {"blob", "isosurface", "parametric",
-                                                  "lemon", "light_group"};
+    static constexpr std::string_view kNames[] = {"parametric", "lemon", "light_group"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -115,6 +114,9 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
     }
     if (auto mesh = std::get_if<Mesh>(&obj.shape)) {  // per-face textures move too
         for (LayeredTexture& tex : mesh->textures) transform_textures(tex, t);
+    }
+    if (auto blob = std::get_if<Blob>(&obj.shape)) {  // and a blob's component textures
+        for (LayeredTexture& tex : blob->element_textures) transform_textures(tex, t);
     }
     if (obj.clipped_by.allocated()) {
         for (Object& o : obj.clipped_by.edit()) apply_transform(o, t, step);
@@ -288,6 +290,9 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         // which of close hits it reports.
         if (auto hf = std::get_if<HeightField>(&obj.shape)) {
             hf->hierarchy = parse_bool_opt();
+        } else if (auto blob = std::get_if<Blob>(&obj.shape)) {
+            // Its bounding-sphere tree changes only the order of the field's sums.
+            blob->hierarchy = parse_bool_opt();
         } else {
             if (!std::holds_alternative<Mesh>(obj.shape))
                 error(t, "'hierarchy' cannot be used with this object");
@@ -336,6 +341,7 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (auto sor = std::get_if<Sor>(&obj.shape)) sturm = &sor->sturm;
         if (auto lathe = std::get_if<Lathe>(&obj.shape)) sturm = &lathe->sturm;
         if (auto poly = std::get_if<Poly>(&obj.shape)) sturm = &poly->sturm;
+        if (auto blob = std::get_if<Blob>(&obj.shape)) sturm = &blob->sturm;
         if (!sturm) error(t, "'sturm' cannot be used with this object");
         *sturm = parse_bool_opt();
     } else if (w == "open") {
@@ -344,6 +350,10 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (!cyl && !cone) error(t, "'open' cannot be used with this object");
         if (cyl) cyl->open = true;
         if (cone) cone->open = true;
+    } else if (w == "clipped_by" && std::holds_alternative<Isosurface>(obj.shape)) {
+        // POV-Ray tests an isosurface's clip inside its search: a clipped container hit
+        // does not count as a trace nor turn the search around.
+        unsupported(t, "clipped_by on an isosurface");
     } else if (w == "clipped_by" && std::holds_alternative<BicubicPatch>(obj.shape)) {
         // POV-Ray ignores the clip of a patch but still shrinks its bounding box by it.
         unsupported(t, "clipped_by on a bicubic_patch");
@@ -530,6 +540,12 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "quadric") {
         open();
         if (!copy_identifier()) parse_quadric(out);
+    } else if (w == "blob") {
+        open();
+        if (!copy_identifier()) parse_blob(out);
+    } else if (w == "isosurface") {
+        open();
+        if (!copy_identifier()) parse_isosurface(out, t);
     } else if (w == "superellipsoid") {
         open();
         if (!copy_identifier()) parse_superellipsoid(out);

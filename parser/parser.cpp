@@ -143,7 +143,32 @@ Scene Interpreter::run(int root_file) {
     // Image files after the sources (SourceLoc indexes only the sources).
     for (const auto& f : image_files_) scene_.files.push_back(f);
     finish_version_state();
+    settle_isosurfaces();
     return std::move(scene_);
+}
+
+void Interpreter::settle_isosurfaces() {
+    // The settings an isosurface's function reads while rendering are the scene's final
+    // ones, wherever global_settings comes.
+    const GlobalSettings& g = scene_.settings;
+    auto visit = [&](auto& self, Object& o) -> void {
+        if (auto iso = std::get_if<Isosurface>(&o.shape)) {
+            iso->noise_generator = g.noise_generator;
+            iso->number_of_waves = g.number_of_waves;
+        }
+        if (auto csg = std::get_if<Csg>(&o.shape)) {
+            for (Object& c : csg->children) self(self, c);
+            for (Light& l : csg->lights)
+                for (Object& c : l.looks_like) self(self, c);
+        }
+        if (o.clipped_by.allocated())
+            for (Object& c : o.clipped_by.edit()) self(self, c);
+        if (o.bounded_by.allocated())
+            for (Object& c : o.bounded_by.edit()) self(self, c);
+    };
+    for (Object& o : scene_.objects) visit(visit, o);
+    for (Light& l : scene_.lights)
+        for (Object& o : l.looks_like) visit(visit, o);
 }
 
 Scene parse_scene_file(const std::string& path, const ParseOptions& options) {

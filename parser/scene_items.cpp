@@ -947,7 +947,7 @@ Value Interpreter::parse_item_value(const Token& t) {
         static constexpr std::string_view kUnsupportedItems[] = {
             "media",        "density",    "rainbow",     "photons",     "radiosity",
             "pigment_map",  "normal_map", "texture_map", "density_map", "slope_map",
-            "material_map", "blob",       "isosurface",  "parametric",  "lemon"};
+            "material_map", "parametric", "lemon"};
         for (std::string_view item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }

@@ -240,6 +240,7 @@ size_t count_leaves(const Object& o) {
         for (const auto& ch : c->children) n += count_leaves(ch);
     }
     if (auto m = std::get_if<Mesh>(&o.shape)) n += m->textures.size() + blend_faces(*m);
+    if (auto b = std::get_if<Blob>(&o.shape)) n += b->element_textures.size();
     return n;
 }
 
@@ -571,6 +572,7 @@ Material interior_side(const Material& m) {
     in.texture = &texture;
     in.interior_texture = nullptr;
     in.blend = nullptr;  // the interior texture takes the place of the corners' too
+    in.blob_blend = nullptr;
     in.plain = texture_is_plain(texture);
     if (in.plain) {
         in.plain_colour = texture.front().pigment.colour;
@@ -584,7 +586,49 @@ uint32_t PreparedScene::add_material(const Object& o) {
     material_frame_.push_back(adding_frame_);
     uint32_t index = uint32_t(materials_.size()) - 1;
     leaf_materials_.push_back({&o, index});
+    const Blob* blob = std::get_if<Blob>(&o.shape);
+    if (blob && !blob->element_textures.empty()) {
+        // Each element's texture a material of its own (the blob's own texture, without
+        // the blend, for an element given none), blended at the hit.
+        BlobTextureBlend b;
+        b.blob = &o;
+        bool opaque = materials_[index].opaque;
+        for (const LayeredTexture& t : blob->element_textures) {
+            materials_.push_back(material_of(o, t.empty() ? o.texture : t));
+            material_frame_.push_back(adding_frame_);
+            b.elements.push_back(&materials_.back());
+            opaque = opaque && materials_.back().opaque;
+        }
+        blob_blends_.push_back(std::move(b));
+        Material& m = materials_[index];
+        m.blob_blend = &blob_blends_.back();
+        m.plain = false;
+        m.opaque = opaque;
+    }
     return index;
+}
+
+int blob_texture_weights(const BlobTextureBlend& b, const Point3& world,
+                         std::vector<const Material*>& materials, std::vector<float>& w) {
+    const Object& o = *b.blob;
+    const Blob& blob = std::get<Blob>(o.shape);
+    const Point3 q = o.transform.is_identity() ? world : o.transform.inverse_point(world);
+    materials.clear();
+    w.clear();
+    // POV-Ray's weights are single-precision colour values, summed and scaled so.
+    float sum = 0;
+    for (size_t i = 0; i < blob.data->elements.size(); ++i) {
+        const Real d = std::fabs(blob_element_field(blob.data->elements[i], q));
+        if (!(d > 0.0)) continue;
+        materials.push_back(b.elements[i]);
+        w.push_back(float(d));
+        sum += float(d);
+    }
+    if (!w.empty()) {
+        const float inverse = float(1.0 / double(sum));
+        for (float& x : w) x *= inverse;
+    }
+    return int(w.size());
 }
 
 bool texture_is_plain(const LayeredTexture& layers) {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -50,7 +51,20 @@ struct Material {
     // A mesh face with a texture per corner (null: none): shading blends the three
     // corners' materials (see blend_weights()); `texture` is unused then.
     const TextureBlend* blend = nullptr;
+    // A blob with textures on its components (null: none): shading blends the elements'
+    // materials by the weights blob_texture_weights() gives.
+    const struct BlobTextureBlend* blob_blend = nullptr;
 };
+
+// A blob's per-element materials (POV-Ray's Blob::Determine_Textures).
+struct BlobTextureBlend {
+    const Object* blob = nullptr;
+    std::vector<const Material*> elements;  // one per element
+};
+// The elements touching a world point and their weights (|element field| there, in
+// single precision, normalised to sum 1), in the element order; returns their count.
+int blob_texture_weights(const BlobTextureBlend& b, const Point3& world,
+                         std::vector<const Material*>& materials, std::vector<float>& w);
 
 // A mesh face with three textures (Mesh::texture_triples): POV-Ray blends them by the
 // hit's weights toward each corner (Mesh::Determine_Textures), in mesh space.
@@ -248,6 +262,7 @@ class PreparedScene {
     // Per RayUse: whether any material hides from that kind of ray.
     std::array<bool, 4> hides_{};
     std::vector<TextureBlend> blends_;  // the same
+    std::deque<BlobTextureBlend> blob_blends_;
     // Per primitive id.
     std::vector<PrimKind> kind_;
     std::vector<uint32_t> index_, material_;

@@ -29,6 +29,9 @@ void for_each_object_texture(const Object& o, Fn&& fn) {
     if (auto m = std::get_if<Mesh>(&o.shape)) {
         for (const auto& t : m->textures) for_each_texture(t, fn);
     }
+    if (auto b = std::get_if<Blob>(&o.shape)) {
+        for (const auto& t : b->element_textures) for_each_texture(t, fn);
+    }
 }
 
 template <typename Fn>
@@ -117,7 +120,8 @@ size_t estimate_prepared_bytes(const Object& o) {
         for (const Object& ch : cx->children) n += self(ch, self);
         return n;
     };
-    const size_t leaves = leaves_of(o, leaves_of);
+    size_t leaves = leaves_of(o, leaves_of);
+    if (auto b = std::get_if<Blob>(&o.shape)) leaves += b->element_textures.size();
     return kPerPrimitive + sizeof(void*) + kMaterial * leaves;
 }
 
@@ -189,6 +193,9 @@ size_t estimate_model_bytes(const Object& o) {
              heap_bytes(m->faces.size() * sizeof(Mesh::Face)) +
              heap_bytes(m->textures.size() * sizeof(LayeredTexture));
         for (const LayeredTexture& t : m->textures) b += model_bytes(t);
+    } else if (auto bl = std::get_if<Blob>(&o.shape)) {
+        b += heap_bytes(bl->element_textures.size() * sizeof(LayeredTexture));
+        for (const LayeredTexture& t : bl->element_textures) b += model_bytes(t);
     } else if (auto st = std::get_if<SmoothTriangle>(&o.shape)) {
         if (st->n.allocated()) b += heap_bytes(sizeof(std::array<Vector3, 3>));
     } else if (auto p = std::get_if<Polygon>(&o.shape)) {

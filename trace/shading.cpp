@@ -203,9 +203,10 @@ const LayeredTexture& texture_of(const Material& m);
 // POV-Ray's texture choice (ComputeTextureColour, ComputeShadowColour): a ray meeting a
 // surface from inside, along its raw normal (Hit::normal has POV-Ray's sign), sees the
 // object's interior_texture when it has one. Decided from the hit alone, so every back
-// end and every kind of ray agrees.
+// end and every kind of ray agrees. A blob with component textures blends those from
+// either side (POV-Ray's multi-textured objects never take the interior texture).
 bool shows_interior_texture(const Material& m, const Hit& hit, const Ray& ray) {
-    return m.interior_texture && dot(hit.normal, ray.direction) > 0;
+    return m.interior_texture && !m.blob_blend && dot(hit.normal, ray.direction) > 0;
 }
 
 void pigment_only(const PreparedScene& scene, const Material& m, const Point3& P,
@@ -362,6 +363,27 @@ bool spawn_corner_blend(const PreparedScene& scene, const TraceRay& ray, const H
     return true;
 }
 
+// A blob with textures on its components: the touching elements' textures weighted by
+// their |field| (POV-Ray's Blob::Determine_Textures), those below adc_bailout left out.
+bool spawn_blob_blend(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
+                      ShadingRecord& out) {
+    const BlobTextureBlend* b = hit.material->blob_blend;
+    if (!b) return false;
+    thread_local std::vector<const Material*> mats;
+    thread_local std::vector<float> w;
+    const int n = blob_texture_weights(*b, hit.point, mats, w);
+    const float adc = scene.scene().settings.adc_bailout;
+    std::vector<const Material*> used;
+    std::vector<float> weights;
+    for (int k = 0; k < n; ++k) {
+        if (w[size_t(k)] < adc) continue;
+        used.push_back(mats[size_t(k)]);
+        weights.push_back(w[size_t(k)]);
+    }
+    spawn_weighted(scene, ray, hit, used.data(), weights.data(), int(used.size()), out);
+    return true;
+}
+
 }  // namespace
 
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
@@ -395,6 +417,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         if (hollow) out.fog = fog_effect(scene.scene(), ray.ray, hit.t);
     }
     if (spawn_corner_blend(scene, ray, hit, out)) return;
+    if (spawn_blob_blend(scene, ray, hit, out)) return;
     if (spawn_texture_map(scene, ray, hit, out)) return;
     const Scene& sc = scene.scene();
     const Material& m = *hit.material;
@@ -879,6 +902,21 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
                                      m.interior ? m.interior->caustics : 0.0f, hit, ray) *
                        w[k];
                 used += w[k];
+            }
+            state.filter *= sum * used;
+        } else if (!black && m.blob_blend) {
+            thread_local std::vector<const Material*> mats;
+            thread_local std::vector<float> w;
+            const int n = blob_texture_weights(*m.blob_blend, hit.point, mats, w);
+            const float adc = scene.scene().settings.adc_bailout;
+            Rgb sum{0.0f};
+            float used = 0;
+            for (int k = 0; k < n; ++k) {
+                if (w[size_t(k)] < adc) continue;
+                sum += shadow_filter(scene, texture_of(*mats[size_t(k)]),
+                                     m.interior ? m.interior->caustics : 0.0f, hit, ray) *
+                       w[size_t(k)];
+                used += w[size_t(k)];
             }
             state.filter *= sum * used;
         } else if (!black && m.plain) {

@@ -123,13 +123,13 @@ TEST(Tolerance, UnusedUnsupportedDeclarationsDoNotStopTheParse) {
     EXPECT_EQ(s.objects.size(), 1u);
     try {
         parse(
-            "#declare Q = blob { threshold 0.5 sphere { 0, 1, 1 } }\nobject { Q "
+            "#declare Q = lemon { <0, 0, 0>, <0, 1, 0>, 1, 0.5, 0.5 }\nobject { Q "
             "}\n");
         FAIL() << "no error";
     } catch (const ParseError& e) {
         EXPECT_EQ(e.kind(), ParseError::Kind::Unsupported);
         EXPECT_EQ(std::string(e.what()),
-                  "test.pov:2:10: error: unsupported: blob\nobject { Q }\n         ^");
+                  "test.pov:2:10: error: unsupported: lemon\nobject { Q }\n         ^");
     }
 }
 

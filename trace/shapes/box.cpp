@@ -37,9 +37,8 @@ void intersect_box(const Box& b, const Point3& o, const Vector3& dir, Crossings&
     if (tmax > kBoxTolerance) out.add(tmax, fmax);
 }
 
-void intersect_box_pov(const Box& b, const Point3& o, const Vector3& dir,
-                       Crossings& out) {
-    const Point3 lo = min(b.corner1, b.corner2), hi = max(b.corner1, b.corner2);
+bool box_span_pov(const Point3& lo, const Point3& hi, const Point3& o, const Vector3& dir,
+                  Real& tmin_out, Real& tmax_out, int& fmin_out, int& fmax_out) {
     Real tmin = 0, tmax = kBoxBoundHuge;
     int fmin = -1, fmax = -1;
     // Whether a face of `axis` is met more head-on than the face `current` (which lies on
@@ -51,7 +50,7 @@ void intersect_box_pov(const Box& b, const Point3& o, const Vector3& dir,
     };
     for (int a = 0; a < 3; ++a) {
         if (!(dir[a] < -kPovEpsilon || dir[a] > kPovEpsilon)) {
-            if (o[a] < lo[a] || o[a] > hi[a]) return;
+            if (o[a] < lo[a] || o[a] > hi[a]) return false;
             continue;
         }
         const bool down = dir[a] < 0;
@@ -59,7 +58,7 @@ void intersect_box_pov(const Box& b, const Point3& o, const Vector3& dir,
                   leave_face = down ? 2 * a : 2 * a + 1;
         const Real close = a == 0 ? 0 : kBoxCloseTolerance;
         const Real leave = ((down ? lo[a] : hi[a]) - o[a]) / dir[a];
-        if (leave < tmin) return;
+        if (leave < tmin) return false;
         if (leave <= tmax - close) {
             tmax = leave;
             fmax = leave_face;
@@ -68,14 +67,24 @@ void intersect_box_pov(const Box& b, const Point3& o, const Vector3& dir,
         }
         const Real enter = ((down ? hi[a] : lo[a]) - o[a]) / dir[a];
         if (enter >= tmin + close) {
-            if (enter > tmax) return;
+            if (enter > tmax) return false;
             tmin = enter;
             fmin = enter_face;
         } else if (a > 0 && enter >= tmin - close && more_direct(a, fmin)) {
             fmin = enter_face;
         }
     }
-    if (tmax < kBoxTolerance) return;
+    if (tmax < kBoxTolerance) return false;
+    tmin_out = tmin, tmax_out = tmax, fmin_out = fmin, fmax_out = fmax;
+    return true;
+}
+
+void intersect_box_pov(const Box& b, const Point3& o, const Vector3& dir,
+                       Crossings& out) {
+    const Point3 lo = min(b.corner1, b.corner2), hi = max(b.corner1, b.corner2);
+    Real tmin, tmax;
+    int fmin, fmax;
+    if (!box_span_pov(lo, hi, o, dir, tmin, tmax, fmin, fmax)) return;
     if (tmin > kBoxTolerance) out.add(tmin, fmin);
     out.add(tmax, fmax);
 }

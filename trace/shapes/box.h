@@ -24,6 +24,11 @@ void intersect_box(const Box& b, const Point3& o, const Vector3& dir, Crossings&
 constexpr Real kBoxCloseTolerance = 1e-6;
 constexpr Real kBoxBoundHuge = 2e10;
 void intersect_box_pov(const Box& b, const Point3& o, const Vector3& dir, Crossings& out);
+// POV-Ray's Box::Intersect on the box lo..hi: the span [tmin, tmax] along o + t dir (tmin
+// from 0, tmax from BOUND_HUGE) and the faces entered and left (2 axis + (1 for the high
+// side); -1: none); false when the box is missed or left before 1e-6.
+bool box_span_pov(const Point3& lo, const Point3& hi, const Point3& o, const Vector3& dir,
+                  Real& tmin, Real& tmax, int& fmin, int& fmax);
 // Faces: 2 axis + (1 for the high side).
 Vector3 box_normal(const Box& b, int face);
 bool inside_box(const Box& b, const Point3& p);

@@ -10,11 +10,13 @@
 #pragma once
 
 #include "trace/shapes/bicubic_patch.h"
+#include "trace/shapes/blob.h"
 #include "trace/shapes/box.h"
 #include "trace/shapes/common.h"
 #include "trace/shapes/cylinder_cone.h"
 #include "trace/shapes/disc.h"
 #include "trace/shapes/height_field.h"
+#include "trace/shapes/isosurface.h"
 #include "trace/shapes/julia_fractal.h"
 #include "trace/shapes/lathe.h"
 #include "trace/shapes/mesh.h"

@@ -1,0 +1,184 @@
+// blob { [threshold T] components [object modifiers] }, as POV-Ray 3.7's Parse_Blob and
+// Parse_Blob_Element_Mods (notes: shape-blob.md section 1):
+//   component S, R, <C>
+//   sphere { <C>, R, [strength] S  component modifiers }
+//   cylinder { <B>, <A>, R, [strength] S  component modifiers }
+// Every comma is optional; `threshold` may come between components. Component
+// modifiers: translate, rotate, scale, matrix, transform (moving its texture too),
+// texture, pigment, normal, finish.
+#include <algorithm>
+#include <cmath>
+
+#include "parser/interpreter.h"
+
+namespace povwall::parser {
+namespace {
+
+// POV-Ray's Compute_Coordinate_Transform(base, axis, 1, 1): the rotation about
+// (-axis.y, axis.x, 0) by acos(axis.z) that takes z to `axis` (its inverse the
+// transpose), then the translation to `base`.
+Transform cylinder_frame(const Point3& base, Vector3 up) {
+    Vector3 k;
+    if (std::fabs(up.z) > 1.0 - 1e-10) {
+        k = {1, 0, 0};
+        up.z = up.z < 0 ? -1.0 : 1.0;
+    } else {
+        k = {-up.y, up.x, 0};
+    }
+    const Vector3 v = normalize(k);
+    const Real angle = std::acos(up.z);
+    const Real c = std::cos(angle), s = std::sin(angle);
+    // p[r][c] with POV-Ray's row-vector convention (a point is p times the matrix).
+    const Real p[3][3] = {
+        {v.x * v.x + c * (1.0 - v.x * v.x), v.x * v.y * (1.0 - c) + v.z * s,
+         v.x * v.z * (1.0 - c) - v.y * s},
+        {v.x * v.y * (1.0 - c) - v.z * s, v.y * v.y + c * (1.0 - v.y * v.y),
+         v.y * v.z * (1.0 - c) + v.x * s},
+        {v.x * v.z * (1.0 - c) + v.y * s, v.y * v.z * (1.0 - c) - v.x * s,
+         v.z * v.z + c * (1.0 - v.z * v.z)}};
+    Matrix34 fwd, inv;
+    for (int r = 0; r < 3; ++r)
+        for (int col = 0; col < 3; ++col) {
+            fwd.m[col][r] = p[r][col];
+            inv.m[r][col] = p[r][col];
+        }
+    return Transform::from_matrices(fwd, inv).then(Transform::translate(base));
+}
+
+}  // namespace
+
+void Interpreter::parse_blob_component_modifiers(BlobElement& e, LayeredTexture& tex) {
+    using Kind = TransformStep::Kind;
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return;
+        Transform tr;
+        TransformStep step;
+        if (try_transform(t, tr, &step)) {
+            // Every step moves the component's texture too.
+            transform_textures(tex, tr);
+            const Vector3& v = step.amount;
+            if (e.kind == BlobElementKind::Sphere) {
+                // POV-Ray moves a sphere's centre (and scales its radius) in place until
+                // a non-uniform scale, a matrix or a transform gives it a matrix.
+                if (step.kind == Kind::Translate) {
+                    e.origin = e.origin + v;
+                    continue;
+                }
+                if (step.kind == Kind::Rotate) {
+                    e.origin = tr.point(e.origin);
+                    continue;
+                }
+                if (step.kind == Kind::Scale && v.x == v.y && v.x == v.z) {
+                    e.origin = e.origin * v.x;
+                    e.rad2 *= v.x * v.x;
+                    continue;
+                }
+                e.kind = BlobElementKind::Ellipsoid;
+                e.transform = tr;
+                continue;
+            }
+            e.transform = e.transform.then(tr);
+            continue;
+        }
+        if (is_word(t, "texture")) {
+            link_textures(tex, parse_texture_block(), t);
+            continue;
+        }
+        if (is_word(t, "pigment") || is_word(t, "normal") || is_word(t, "finish")) {
+            // As on an object: the top layer, made from the default texture if none.
+            if (tex.empty())
+                tex.push_back(default_texture_);
+            else if (tex.back().map_pattern)
+                error(t, "cannot layer over a patterned texture");
+            Texture& top = tex.back();
+            if (is_word(t, "pigment"))
+                parse_pigment_into(top.pigment);
+            else if (is_word(t, "finish"))
+                parse_finish_into(top.finish);
+            else
+                parse_normal_into(top.normal);
+            continue;
+        }
+        expected("a blob component modifier or '}'", t);
+    }
+}
+
+void Interpreter::parse_blob(Object& out) {
+    Real threshold = 1.0;
+    std::vector<BlobElement> components;
+    std::vector<LayeredTexture> textures;  // per component
+    for (;;) {
+        const Token t = peek();
+        if (is_word(t, "threshold")) {
+            next();
+            threshold = parse_float();
+        } else if (is_word(t, "component")) {
+            next();
+            BlobElement e;
+            e.c[2] = parse_float();
+            accept_punct(',');
+            const Real r = parse_float();
+            e.rad2 = r * r;
+            accept_punct(',');
+            e.origin = parse_vector();
+            components.push_back(e);
+            textures.emplace_back();
+        } else if (is_word(t, "sphere")) {
+            next();
+            expect_punct('{', "after sphere");
+            BlobElement e;
+            e.origin = parse_vector();
+            accept_punct(',');
+            const Real r = parse_float();
+            e.rad2 = r * r;
+            accept_punct(',');
+            accept_word("strength");
+            e.c[2] = parse_float();
+            LayeredTexture tex;
+            parse_blob_component_modifiers(e, tex);
+            components.push_back(e);
+            textures.push_back(std::move(tex));
+        } else if (is_word(t, "cylinder")) {
+            next();
+            expect_punct('{', "after cylinder");
+            BlobElement e;
+            e.kind = BlobElementKind::Cylinder;
+            const Point3 base = parse_vector();
+            accept_punct(',');
+            const Point3 apex = parse_vector();
+            accept_punct(',');
+            const Real r = parse_float();
+            e.rad2 = r * r;
+            accept_punct(',');
+            accept_word("strength");
+            e.c[2] = parse_float();
+            Vector3 axis = apex - base;
+            e.len = std::sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
+            if (e.len < 1e-10) error(t, "Degenerate cylindrical component in blob.");
+            axis = axis * (1.0 / e.len);
+            e.transform = cylinder_frame(base, axis);
+            LayeredTexture tex;
+            parse_blob_component_modifiers(e, tex);
+            components.push_back(e);
+            textures.push_back(std::move(tex));
+        } else {
+            break;
+        }
+    }
+    if (components.empty()) error(peek(), "Need at least one component in a blob.");
+    Blob blob;
+    blob.data = std::make_shared<BlobData>(make_blob(threshold, components));
+    // The element textures in the elements' order (reversed, three per cylinder).
+    const bool textured = std::any_of(textures.begin(), textures.end(),
+                                      [](const LayeredTexture& t) { return !t.empty(); });
+    if (textured) {
+        for (size_t i = components.size(); i-- > 0;) {
+            const int copies = components[i].kind == BlobElementKind::Cylinder ? 3 : 1;
+            for (int k = 0; k < copies; ++k) blob.element_textures.push_back(textures[i]);
+        }
+    }
+    out.shape = std::move(blob);
+}
+
+}  // namespace povwall::parser
