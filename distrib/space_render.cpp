@@ -8,6 +8,7 @@
 
 #include "core/memory.h"
 #include "distrib/box_host.h"
+#include "distrib/object_boxes.h"
 #include "distrib/shared_pixel_sums.h"
 #include "trace/camera.h"
 #include "trace/sample_waves.h"
@@ -176,7 +177,6 @@ void BoxHost::place_walls() {
 }
 
 void BoxHost::build_boxes(const std::vector<int>& hosted) {
-    const std::vector<Bounds3> bounds = all_object_bounds(scene_);
     const int count = walls_.box_count();
     std::vector<uint8_t> host(count, 0);
     for (int b : hosted) host[b] = 1;
@@ -185,9 +185,9 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
     // region, padded by a millionth of the coordinates' size (hit points computed in a
     // box stray from its region and from their objects' bounds by rounding only).
     reach_.assign(count, Bounds3{});
-    for (uint32_t i = 0; i < bounds.size(); ++i) {
+    for (uint32_t i = 0; i < scene_.objects.size(); ++i) {
         const Bounds3 hit = trace::object_hit_bounds(scene_.objects[i]);
-        for (int b : walls_.boxes_overlapping(bounds[i])) {
+        for (int b : boxes_of_object(walls_, scene_.objects[i])) {
             if (host[b]) local[b].push_back(i);
             reach_[b].extend(hit);
         }

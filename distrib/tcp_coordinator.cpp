@@ -32,6 +32,7 @@
 #include "distrib/child_process.h"
 #include "distrib/connection.h"
 #include "distrib/distribution_plan.h"
+#include "distrib/object_boxes.h"
 #include "distrib/shared_pixel_sums.h"
 #include "distrib/stats_json.h"
 #include "distrib/tcp.h"
@@ -183,15 +184,14 @@ class TcpCoordinator {
     }
 
   private:
-    // Each worker's objects: the indices of those overlapping its boxes (the test of
-    // BoxHost::build_boxes), ascending.
+    // Each worker's objects: the indices of those in its boxes (boxes_of_object),
+    // ascending.
     std::vector<std::vector<uint32_t>> objects_of_workers() const {
         const VirtualWalls& walls = emitter_walls_;
         const size_t workers = size_t(team_size_);
         std::vector<std::vector<uint32_t>> objects(workers);
         for (size_t i = 0; i < scene_->objects.size(); ++i) {
-            for (int b : walls.boxes_overlapping(
-                     trace::object_world_bounds(scene_->objects[i]))) {
+            for (int b : boxes_of_object(walls, scene_->objects[i])) {
                 const auto w = size_t(owner_[size_t(b)]);
                 if (w < objects.size() &&
                     (objects[w].empty() || objects[w].back() != uint32_t(i)))

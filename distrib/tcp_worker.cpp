@@ -33,6 +33,7 @@
 #include "distrib/child_process.h"
 #include "distrib/connection.h"
 #include "distrib/distribution_plan.h"
+#include "distrib/object_boxes.h"
 #include "distrib/shared_pixel_sums.h"
 #include "distrib/stats_json.h"
 #include "distrib/tcp.h"
@@ -386,8 +387,8 @@ class Worker {
         // The previous frame's boxes point into the previous scene: gone first.
         host_.reset();
         numbers_.reset();
-        // Only the objects that overlap this worker's boxes are kept (the same test as
-        // BoxHost::build_boxes), so the worker never holds the whole scene.
+        // Only the objects in this worker's boxes are kept (boxes_of_object, the test
+        // every process makes), so the worker never holds the whole scene.
         VirtualWalls walls(job_->walls);
         mine_.clear();
         for (size_t b = 0; b < owner_.size(); ++b) {
@@ -397,7 +398,7 @@ class Worker {
         for (int b : mine_) hosted[size_t(b)] = 1;
         popts.expected_objects = job_->frame.expected_objects.at(size_t(self_));
         popts.keep_object = [&walls, &hosted](const Object& o) {
-            for (int b : walls.boxes_overlapping(trace::object_world_bounds(o)))
+            for (int b : boxes_of_object(walls, o))
                 if (hosted[size_t(b)]) return true;
             return false;
         };
