@@ -373,8 +373,10 @@ bool spawn_blob_blend(const PreparedScene& scene, const TraceRay& ray, const Hit
     thread_local std::vector<float> w;
     const int n = blob_texture_weights(*b, hit.point, mats, w);
     const float adc = scene.scene().settings.adc_bailout;
-    std::vector<const Material*> used;
-    std::vector<float> weights;
+    thread_local std::vector<const Material*> used;  // no allocation per ray
+    thread_local std::vector<float> weights;
+    used.clear();
+    weights.clear();
     for (int k = 0; k < n; ++k) {
         if (w[size_t(k)] < adc) continue;
         used.push_back(mats[size_t(k)]);
