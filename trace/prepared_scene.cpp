@@ -608,7 +608,7 @@ uint32_t PreparedScene::add_material(const Object& o) {
     return index;
 }
 
-int blob_texture_weights(const BlobTextureBlend& b, const Point3& world,
+int blob_texture_weights(const BlobTextureBlend& b, const Point3& world, float min_weight,
                          std::vector<const Material*>& materials, std::vector<float>& w) {
     const Object& o = *b.blob;
     const Blob& blob = std::get<Blob>(o.shape);
@@ -624,11 +624,18 @@ int blob_texture_weights(const BlobTextureBlend& b, const Point3& world,
         w.push_back(float(d));
         sum += float(d);
     }
-    if (!w.empty()) {
-        const float inverse = float(1.0 / double(sum));
-        for (float& x : w) x *= inverse;
+    if (w.empty()) return 0;
+    const float inverse = float(1.0 / double(sum));
+    size_t kept = 0;
+    for (size_t i = 0; i < w.size(); ++i) {
+        const float x = w[i] * inverse;
+        if (x < min_weight) continue;
+        materials[kept] = materials[i];
+        w[kept++] = x;
     }
-    return int(w.size());
+    materials.resize(kept);
+    w.resize(kept);
+    return int(kept);
 }
 
 bool texture_is_plain(const LayeredTexture& layers) {

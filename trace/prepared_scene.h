@@ -62,8 +62,10 @@ struct BlobTextureBlend {
     std::vector<const Material*> elements;  // one per element
 };
 // The elements touching a world point and their weights (|element field| there, in
-// single precision, normalised to sum 1), in the element order; returns their count.
-int blob_texture_weights(const BlobTextureBlend& b, const Point3& world,
+// single precision, normalised to sum 1), in the element order, without those whose
+// weight is below `min_weight` (POV-Ray leaves out textures under adc_bailout); returns
+// their count.
+int blob_texture_weights(const BlobTextureBlend& b, const Point3& world, float min_weight,
                          std::vector<const Material*>& materials, std::vector<float>& w);
 
 // A mesh face with three textures (Mesh::texture_triples): POV-Ray blends them by the

@@ -369,20 +369,11 @@ bool spawn_blob_blend(const PreparedScene& scene, const TraceRay& ray, const Hit
                       ShadingRecord& out) {
     const BlobTextureBlend* b = hit.material->blob_blend;
     if (!b) return false;
-    thread_local std::vector<const Material*> mats;
+    thread_local std::vector<const Material*> mats;  // no allocation per ray
     thread_local std::vector<float> w;
-    const int n = blob_texture_weights(*b, hit.point, mats, w);
-    const float adc = scene.scene().settings.adc_bailout;
-    thread_local std::vector<const Material*> used;  // no allocation per ray
-    thread_local std::vector<float> weights;
-    used.clear();
-    weights.clear();
-    for (int k = 0; k < n; ++k) {
-        if (w[size_t(k)] < adc) continue;
-        used.push_back(mats[size_t(k)]);
-        weights.push_back(w[size_t(k)]);
-    }
-    spawn_weighted(scene, ray, hit, used.data(), weights.data(), int(used.size()), out);
+    const int n =
+        blob_texture_weights(*b, hit.point, scene.scene().settings.adc_bailout, mats, w);
+    spawn_weighted(scene, ray, hit, mats.data(), w.data(), n, out);
     return true;
 }
 
@@ -909,12 +900,11 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
         } else if (!black && m.blob_blend) {
             thread_local std::vector<const Material*> mats;
             thread_local std::vector<float> w;
-            const int n = blob_texture_weights(*m.blob_blend, hit.point, mats, w);
-            const float adc = scene.scene().settings.adc_bailout;
+            const int n = blob_texture_weights(
+                *m.blob_blend, hit.point, scene.scene().settings.adc_bailout, mats, w);
             Rgb sum{0.0f};
             float used = 0;
             for (int k = 0; k < n; ++k) {
-                if (w[size_t(k)] < adc) continue;
                 sum += shadow_filter(scene, texture_of(*mats[size_t(k)]),
                                      m.interior ? m.interior->caustics : 0.0f, hit, ray) *
                        w[size_t(k)];
