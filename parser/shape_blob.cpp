@@ -108,6 +108,15 @@ void Interpreter::parse_blob(Object& out) {
     Real threshold = 1.0;
     std::vector<BlobElement> components;
     std::vector<LayeredTexture> textures;  // per component
+    // `, radius, [strength] s` of a sphere or cylinder component.
+    auto radius_and_strength = [this](BlobElement& e) {
+        accept_punct(',');
+        const Real r = parse_float();
+        e.rad2 = r * r;
+        accept_punct(',');
+        accept_word("strength");
+        e.c[2] = parse_float();
+    };
     for (;;) {
         const Token t = peek();
         if (is_word(t, "threshold")) {
@@ -129,12 +138,7 @@ void Interpreter::parse_blob(Object& out) {
             expect_punct('{', "after sphere");
             BlobElement e;
             e.origin = parse_vector();
-            accept_punct(',');
-            const Real r = parse_float();
-            e.rad2 = r * r;
-            accept_punct(',');
-            accept_word("strength");
-            e.c[2] = parse_float();
+            radius_and_strength(e);
             LayeredTexture tex;
             parse_blob_component_modifiers(e, tex);
             components.push_back(e);
@@ -147,12 +151,7 @@ void Interpreter::parse_blob(Object& out) {
             const Point3 base = parse_vector();
             accept_punct(',');
             const Point3 apex = parse_vector();
-            accept_punct(',');
-            const Real r = parse_float();
-            e.rad2 = r * r;
-            accept_punct(',');
-            accept_word("strength");
-            e.c[2] = parse_float();
+            radius_and_strength(e);
             Vector3 axis = apex - base;
             e.len = std::sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
             if (e.len < 1e-10) error(t, "Degenerate cylindrical component in blob.");
