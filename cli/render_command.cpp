@@ -322,11 +322,6 @@ int run_render(RenderOptions o) {
         // Worker processes: --procs, --workers, or as many as auto mode needs for the
         // memory budget.
         if (dplan.procs > 0 || !o.workers.empty()) {
-            if (o.render.antialias)
-                throw UsageError(
-                    "anti-aliasing is not available with --boxes over worker processes "
-                    "(--procs, --workers) yet; --boxes in one process or --mode screen "
-                    "take it");
             distrib::SceneSource source;
             std::ifstream in(o.scene, std::ios::binary);
             source.text.assign(std::istreambuf_iterator<char>(in), {});

@@ -825,6 +825,7 @@ int BoxHost::begin_run(int threads) {
     // Runs after the first (anti-aliasing waves) add to the first's statistics.
     if (run_start_ == Clock::time_point{}) run_start_ = Clock::now();
     progress_reported_ = 0;
+    stop_.store(false);  // a worker's next wave: the last run was stopped
     // With parent tracking a box is worked on by one thread at a time: threads beyond
     // the boxes that hold something only fill inboxes and spin (one box on two threads
     // took twice as long).

@@ -40,9 +40,11 @@
 #include "distrib/wire/items.h"
 #include "distrib/wire/job.h"
 #include "distrib/wire/pixels.h"
+#include "distrib/wire/samples.h"
 #include "distrib/worker_processes.h"
 #include "parser/parser.h"
 #include "trace/pattern.h"
+#include "trace/sample_waves.h"
 
 namespace povwall::distrib {
 namespace {
@@ -94,7 +96,9 @@ class TcpCoordinator {
         emitter_ = std::make_unique<BoxHost>(scene, settings, options, plan);
         numbers_ = std::make_unique<ObjectNumbers>(scene);
         scene_ = &scene;
+        sampling_ = trace::sampler_settings(settings, scene);
         in_frame_ = true;
+        workers_ready_ = false;
         if (workers_.empty()) {
             emitter_->place_walls();
             // Before forked workers share this process's pages: written after, every
@@ -112,59 +116,41 @@ class TcpCoordinator {
             emitter_->build_boxes({});
         }
         const int boxes = emitter_->walls().box_count();
-        if (shared_sums_) {
-            // Forked workers add into these (fresh zero pages for the first frame). A
-            // kept worker may have this frame's message already, but adds nothing
-            // before its first camera range, which io_.run() below sends.
-            if (frames_ > 0) std::fill(sums_.begin(), sums_.end(), 0.0);
-        } else {
-            // Sums of the whole image, on 2 MB pages (thousands of 4 KB faults
-            // otherwise).
-            const size_t sum_count = size_t(settings.width) * size_t(settings.height) *
-                                     (settings.alpha ? 4 : 3);
-            if (own_sums_.capacity() < sum_count) {
-                own_sums_ = std::vector<double>();
-                own_sums_.reserve(sum_count);
-                advise_huge_pages(own_sums_.data(), sum_count * sizeof(double));
-            }
-            own_sums_.assign(sum_count, 0.0);
-            sums_ = own_sums_;
-        }
         empty_.assign(boxes, 1);
-        box_stats_ = emitter_->box_stats();
-        for (BoxStats& b : box_stats_) {  // the workers' reports fill them
-            const Bounds3 region = b.region;
-            b = BoxStats{};
-            b.region = region;
-        }
         created_ = 0;
-        pixels_emitted_ = 0;
-        next_range_ = 0;
-        wave_pending_ = -1;
-        last_wave_.clear();
-        started_ = false;
-        progress_reported_ = 0;
-        if (settings.progress)
-            settings.progress->start_pass(uint64_t(settings.width) * settings.height);
         for (WorkerState& w : workers_) {
-            w.ready = w.done = false;
+            w.ready = false;
             w.created = w.finished = 0;
             w.pixels_sent = w.pixels_done = 0;
-            w.wave_seq = -1;
             w.last_seen = Clock::now();
         }
-        watch();
-        io_.restart();
-        io_.run();
-        if (failed_) {
-            if (lost_) throw WorkerLost(error_, lost_worker_);
-            throw DistribError(error_);
+        Image image;
+        if (sampling_.method == 0) {
+            run_pass(nullptr);
+            image =
+                image_from_sums(sums_, settings.width, settings.height, settings.alpha);
+            trace::finish_pixels_without_camera_ray(image, scene.camera, settings);
+        } else {
+            // Anti-aliasing: the samples go through the boxes in waves, every block's
+            // decisions replayed here (trace/sample_waves.h), as in one process.
+            auto trace_wave = [&](const std::vector<trace::SamplePosition>& wave,
+                                  std::vector<float>& rgbt) {
+                run_pass(&wave);
+                const size_t channels = settings.alpha ? 4 : 3;
+                rgbt.assign(wave.size() * 4, 0.0f);
+                for (size_t p = 0; p < wave.size(); ++p) {
+                    double s[4] = {0, 0, 0, 0};
+                    for (size_t c = 0; c < channels; ++c) s[c] = sums_[p * channels + c];
+                    sample_colour(s, settings.alpha, emitter_->has_camera_ray(int(p)),
+                                  &rgbt[p * 4]);
+                }
+            };
+            trace::WaveStats waves;
+            image = trace::render_in_waves(settings, sampling_, trace_wave, &waves);
+            if (stats) stats->wave_samples = waves.samples;
         }
         in_frame_ = false;
         ++frames_;
-        Image image =
-            image_from_sums(sums_, settings.width, settings.height, settings.alpha);
-        trace::finish_pixels_without_camera_ray(image, scene.camera, settings);
         if (stats) {
             stats->parent_tracking = emitter_->parent_tracking();
             stats->boxes = box_stats_;
@@ -184,6 +170,105 @@ class TcpCoordinator {
     }
 
   private:
+    // One run through the workers: every pixel's centre (`wave` null), or the camera
+    // samples of an anti-aliasing wave, whose slot k is wave[k]. Returns when the pass's
+    // sums are all in sums_; throws when a worker fails.
+    void run_pass(const std::vector<trace::SamplePosition>* wave) {
+        wave_ = wave;
+        emitter_->set_samples(wave ? *wave : std::vector<trace::SamplePosition>{});
+        slots_ = wave ? int(wave->size()) : settings_->width * settings_->height;
+        const size_t sum_count = size_t(slots_) * (settings_->alpha ? 4 : 3);
+        if (shared_sums_) {
+            // Forked workers add into these (fresh zero pages for the first frame). A
+            // kept worker may have this frame's message already, but adds nothing
+            // before its first camera range, which io_.run() below sends.
+            if (frames_ > 0) std::fill(sums_.begin(), sums_.end(), 0.0);
+        } else {
+            // On 2 MB pages (thousands of 4 KB faults otherwise).
+            if (own_sums_.capacity() < sum_count) {
+                own_sums_ = std::vector<double>();
+                own_sums_.reserve(sum_count);
+                advise_huge_pages(own_sums_.data(), sum_count * sizeof(double));
+            }
+            own_sums_.assign(sum_count, 0.0);
+            sums_ = own_sums_;
+        }
+        // The workers' statistics count every run of the frame; their last reports are
+        // the totals.
+        box_stats_ = emitter_->box_stats();
+        for (BoxStats& b : box_stats_) {
+            const Bounds3 region = b.region;
+            b = BoxStats{};
+            b.region = region;
+        }
+        pixels_emitted_ = 0;
+        next_range_ = 0;
+        wave_pending_ = -1;
+        last_wave_.clear();
+        started_ = false;
+        progress_reported_ = 0;
+        if (settings_->progress) settings_->progress->start_pass(uint64_t(slots_));
+        for (WorkerState& w : workers_) {
+            w.done = false;
+            w.samples_taken = false;
+            w.wave_seq = -1;
+            w.last_seen = Clock::now();
+        }
+        // A later pass: the workers are ready (the first waits for their "ready").
+        if (workers_ready_) send_samples();
+        watch();
+        io_.restart();
+        io_.run();
+        if (failed_) {
+            if (lost_) throw WorkerLost(error_, lost_worker_);
+            throw DistribError(error_);
+        }
+    }
+
+    // Every worker ready for the pass: its samples (anti-aliasing), then "start".
+    void send_samples() {
+        if (!wave_) return start_pass();
+        for (WorkerState& w : workers_) {
+            const size_t n = wave_->size();
+            for (size_t first = 0; first < n; first += kSamplesPerFrame) {
+                const size_t count = std::min(kSamplesPerFrame, n - first);
+                std::vector<uint8_t> body;
+                body.reserve(count * kSampleRecordSize);
+                for (size_t k = first; k < first + count; ++k)
+                    write_sample_position(body, (*wave_)[k]);
+                auto buf = std::make_shared<std::vector<uint8_t>>();
+                encode_frame(FrameType::Samples, uint32_t(count), body, *buf);
+                w.conn->send(buf);
+            }
+            w.conn->send(control_frame({{"type", "samples"}, {"count", n}}));
+        }
+    }
+
+    // The workers hold the pass's samples: the run starts, and the camera rays go out.
+    void start_pass() {
+        started_ = true;
+        measure_for_cores();
+        const json start = {{"type", "start"}, {"reach", reach_to_json(reach_)}};
+        // For the tests: POVWALL_FAULT_LATE_START="I,MS" sends worker I its start MS
+        // milliseconds after the others, so that its peers' items come first.
+        int late = -1, late_ms = 0;
+        if (const char* spec = std::getenv("POVWALL_FAULT_LATE_START"))
+            if (std::sscanf(spec, "%d,%d", &late, &late_ms) != 2) late = -1;
+        for (size_t k = 0; k < workers_.size(); ++k) {
+            if (int(k) != late) {
+                workers_[k].conn->send(control_frame(start));
+                continue;
+            }
+            auto timer = std::make_shared<asio::steady_timer>(
+                io_, std::chrono::milliseconds(late_ms));
+            timer->async_wait([this, timer, k, frame = control_frame(start)](
+                                  boost::system::error_code ec) {
+                if (!ec && in_frame_) workers_[k].conn->send(frame);
+            });
+        }
+        emit();
+    }
+
     // Each worker's objects: the indices of those in its boxes (boxes_of_object),
     // ascending.
     std::vector<std::vector<uint32_t>> objects_of_workers() const {
@@ -222,6 +307,7 @@ class TcpCoordinator {
         std::shared_ptr<Connection> conn;
         Clock::time_point last_seen;
         bool ready = false, done = false;
+        bool samples_taken = false;          // this pass's (anti-aliasing)
         uint64_t created = 0, finished = 0;  // latest status
         // Pixels of the ranges sent to this worker, and handled by it (latest status).
         uint64_t pixels_sent = 0, pixels_done = 0;
@@ -264,7 +350,8 @@ class TcpCoordinator {
                               : int(std::max(1u, cores / unsigned(tcp_.procs)));
             const size_t before = local_.size();
             forked_ = tcp_.fork_workers && single_threaded();
-            if (forked_) {
+            // Anti-aliasing waves vary in size: their sums come back as records.
+            if (forked_ && sampling_.method == 0) {
                 // The sums exist before the fork, so every worker maps them; the frame's
                 // size is fixed for this coordinator (FixedJob).
                 shared_sums_ =
@@ -413,32 +500,19 @@ class TcpCoordinator {
             for (const WorkerState& o : workers_) {
                 if (!o.ready) return;
             }
-            std::vector<Bounds3> reach = emitter_->box_reach();
-            for (size_t b = 0; b < reach.size(); ++b) {
-                if (empty_[b]) reach[b] = Bounds3{};
+            reach_ = emitter_->box_reach();
+            for (size_t b = 0; b < reach_.size(); ++b) {
+                if (empty_[b]) reach_[b] = Bounds3{};
             }
-            emitter_->set_box_reach(reach);
-            started_ = true;
-            measure_for_cores();
-            const json start = {{"type", "start"}, {"reach", reach_to_json(reach)}};
-            // For the tests: POVWALL_FAULT_LATE_START="I,MS" sends worker I its start MS
-            // milliseconds after the others, so that its peers' items come first.
-            int late = -1, late_ms = 0;
-            if (const char* spec = std::getenv("POVWALL_FAULT_LATE_START"))
-                if (std::sscanf(spec, "%d,%d", &late, &late_ms) != 2) late = -1;
-            for (size_t k = 0; k < workers_.size(); ++k) {
-                if (int(k) != late) {
-                    workers_[k].conn->send(control_frame(start));
-                    continue;
-                }
-                auto timer = std::make_shared<asio::steady_timer>(
-                    io_, std::chrono::milliseconds(late_ms));
-                timer->async_wait([this, timer, k, frame = control_frame(start)](
-                                      boost::system::error_code ec) {
-                    if (!ec && in_frame_) workers_[k].conn->send(frame);
-                });
+            emitter_->set_box_reach(reach_);
+            workers_ready_ = true;
+            send_samples();
+        } else if (type == "samples") {  // it holds the wave's samples
+            w.samples_taken = true;
+            for (const WorkerState& o : workers_) {
+                if (!o.samples_taken) return;
             }
-            emit();
+            start_pass();
         } else if (type == "status") {
             w.created = j.at("created").get<uint64_t>();
             const uint64_t finished = j.at("finished").get<uint64_t>();
@@ -472,13 +546,12 @@ class TcpCoordinator {
             for (const WorkerState& o : workers_) {
                 if (!o.done) return;
             }
-            // The frame is whole; the workers wait for the next one (or the close).
+            // The pass is whole; the workers wait for the next one, the next frame, or
+            // the close.
             if (settings_->progress) {
-                const uint64_t total = uint64_t(settings_->width) * settings_->height;
-                settings_->progress->pixels_done += total - progress_reported_;
-                progress_reported_ = total;
+                settings_->progress->pixels_done += uint64_t(slots_) - progress_reported_;
+                progress_reported_ = uint64_t(slots_);
             }
-            in_frame_ = false;
             timer_.cancel();
             io_.stop();
         }
@@ -510,7 +583,7 @@ class TcpCoordinator {
     void emit() {
         if (!started_ || !in_frame_) return;
         constexpr int kRange = 512;
-        const int total = settings_->width * settings_->height;
+        const int total = slots_;
         int64_t live = int64_t(created_);
         for (const WorkerState& w : workers_) {
             live += int64_t(w.created) - int64_t(w.finished);
@@ -622,6 +695,12 @@ class TcpCoordinator {
     uint64_t progress_reported_ = 0;
     long wave_pending_ = -1;
     bool started_ = false, in_frame_ = false;
+    trace::SamplerSettings sampling_;
+    bool workers_ready_ = false;  // this frame's "ready" from all: passes may start
+    std::vector<Bounds3> reach_;  // the boxes' reach, as the workers got it
+    // The current pass: its samples (null: the pixels' centres) and their number.
+    const std::vector<trace::SamplePosition>* wave_ = nullptr;
+    int slots_ = 0;
     // The whole sequence.
     VirtualWalls emitter_walls_;
     std::vector<LocalWorker> local_;

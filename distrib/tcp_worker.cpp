@@ -41,6 +41,7 @@
 #include "distrib/wire/items.h"
 #include "distrib/wire/job.h"
 #include "distrib/wire/pixels.h"
+#include "distrib/wire/samples.h"
 #include "parser/parser.h"
 #include "trace/pattern.h"
 
@@ -212,6 +213,7 @@ class Worker {
 
     void from_coordinator(Frame& f) {
         if (f.type == FrameType::Items) return items(f);
+        if (f.type == FrameType::Samples) return sample_positions(f);
         const json j = parse_control(f);
         try {
             control(j);
@@ -230,7 +232,19 @@ class Worker {
             job(j);
         } else if (type == "frame") {
             frame(j);
+        } else if (type == "samples") {
+            // The next run's camera samples (anti-aliasing waves): slot k is the k-th
+            // position of the Samples frames before this message.
+            if (running_ || j.at("count").get<size_t>() != pending_samples_.size())
+                return fail_job("bad sample list");
+            host_->set_samples(std::move(pending_samples_));
+            pending_samples_ = {};
+            coordinator_->send(control_frame({{"type", "samples"}}));
         } else if (type == "start") {
+            // A frame's first run, or (anti-aliasing) the next wave's.
+            if (running_) return fail_job("'start' during a run");
+            running_ = true;
+            done_ = false;
             std::vector<Bounds3> reach;
             if (!reach_from_json(j.at("reach"), host_->box_count(), reach))
                 return fail_job("bad box reach table");
@@ -248,7 +262,7 @@ class Worker {
             }
             send_status(-1);
         } else if (type == "pixels") {
-            const int total = settings_.width * settings_.height;
+            const int64_t total = host_->item_limits().pixels;
             const int begin = j.at("begin").get<int>(), end = j.at("end").get<int>();
             if (!host_ || begin < 0 || begin > end || end > total)
                 return fail_job("bad pixel range");
@@ -526,6 +540,8 @@ class Worker {
         owner_.clear();
         mine_.clear();
         done_ = false;
+        running_ = false;
+        pending_samples_.clear();
         coordinator_.reset();
     }
 
@@ -598,7 +614,19 @@ class Worker {
         }
     }
 
+    // A Samples frame: positions of the next wave, appended until "samples" ends them.
+    void sample_positions(Frame& f) {
+        // Samples lie within a pixel or so of the image; at most 64 per pixel on average
+        // (the sums are 24-32 bytes per sample and thread).
+        const double reach = double(std::max(settings_.width, settings_.height)) + 4;
+        const size_t most = size_t(settings_.width) * size_t(settings_.height) * 64;
+        if (!host_ || running_ || pending_samples_.size() + f.count > most ||
+            !read_sample_positions(f.body, f.count, reach, pending_samples_))
+            return fail_job("bad sample frame");
+    }
+
     void finish() {
+        running_ = false;
         host_->stop();
         if (render_.joinable()) render_.join();
         if (inline_) host_->end_run();
@@ -671,6 +699,8 @@ class Worker {
     std::atomic<long> processed_{0};
     std::atomic<uint64_t> generation_{0};  // jobs served: stale handlers check it
     bool done_ = false;
+    bool running_ = false;                                // between "start" and "finish"
+    std::vector<trace::SamplePosition> pending_samples_;  // of the next "samples"
     int exit_code_ = 0;
 };
 

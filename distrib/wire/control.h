@@ -7,11 +7,15 @@
 //   coord -> worker   Control job (scene source, walls, box owners, worker addresses)
 //   worker -> coord   Control busy every second while parsing and building its boxes
 //   worker -> coord   Control ready (primitive count per hosted box)
-//   coord -> worker   Control start (each box's reach), then Items (camera rays)
+//   coord -> worker   anti-aliasing only: Samples (the wave's positions), then Control
+//                     samples {count}; worker -> coord Control samples (taken)
+//   coord -> worker   Control start (each box's reach), then Control pixels {begin, end}
+//                     (slot ranges whose camera rays the worker makes)
 //   worker -> worker  Items (rays and results for the receiver's boxes)
 //   worker -> coord   Control status (items created/finished) every 10 ms: heartbeat, flow
 //                     control, and the answer to probes (termination waves)
-//   coord -> worker   Control finish; worker -> coord Pixels (sums), then Control done
+//   coord -> worker   Control finish; worker -> coord Pixels (sums), then Control done;
+//                     anti-aliasing: the next wave from "Samples", until the image is whole
 //   coord -> worker   Control frame (new animation values): the next frame, from "busy"
 // clang-format on
 #pragma once

@@ -18,6 +18,7 @@ bool known_type(uint8_t type) {
         case FrameType::Pixels:
         case FrameType::Control:
         case FrameType::Items:
+        case FrameType::Samples:
             return true;
     }
     return false;

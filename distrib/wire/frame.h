@@ -2,8 +2,9 @@
 //
 // A frame is a 12-byte header, all little-endian,
 //   magic u16 | type u8 | protocol version u8 | body length u32 | record count u32
-// followed by the body: JSON text (Control), item records (Items, wire/items.h) or pixel
-// sum records (Pixels, wire/pixels.h). The header is checked before the body is awaited:
+// followed by the body: JSON text (Control), item records (Items, wire/items.h), pixel
+// sum records (Pixels, wire/pixels.h) or camera sample positions (Samples,
+// wire/samples.h). The header is checked before the body is awaited:
 // a wrong magic, type or version, or a body over kMaxBodySize, is refused at once.
 #pragma once
 
@@ -14,10 +15,11 @@
 
 namespace povwall::distrib {
 
-enum class FrameType : uint8_t { Pixels = 3, Control = 4, Items = 5 };
+enum class FrameType : uint8_t { Pixels = 3, Control = 4, Items = 5, Samples = 6 };
 constexpr uint16_t kFrameMagic = 0x5057;  // "PW"
-// 2: ray records leave out defaults; 3: the fixed ray/result frames (1, 2) are gone.
-constexpr uint8_t kProtocolVersion = 3;
+// 2: ray records leave out defaults; 3: the fixed ray/result frames (1, 2) are gone;
+// 4: anti-aliasing samples (Samples frames, "samples" and later "start" messages).
+constexpr uint8_t kProtocolVersion = 4;
 constexpr size_t kHeaderSize = 12;
 // Bounds memory per frame; senders split larger batches.
 constexpr size_t kMaxBodySize = size_t(4) << 20;

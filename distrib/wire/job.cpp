@@ -75,6 +75,7 @@ FixedJob FixedJob::of(const SceneSource& source, const trace::RenderSettings& se
     f.width = settings.width;
     f.height = settings.height;
     f.alpha = settings.alpha;
+    f.antialias = settings.antialias;
     f.plan_everything_on = settings.plan_everything_on;
     f.results = options.results;
     f.queue = options.queue;
@@ -109,6 +110,7 @@ json to_json(const FixedJob& f) {
             {"width", f.width},
             {"height", f.height},
             {"alpha", f.alpha},
+            {"antialias", f.antialias},
             {"plan_everything_on", f.plan_everything_on},
             {"results", results_name(f.results)},
             {"queue", queue_name(f.queue)},
@@ -135,6 +137,7 @@ FixedJob fixed_job_from_json(const json& j) {
     if (f.width <= 0 || f.height <= 0 || int64_t(f.width) * f.height > (int64_t(1) << 31))
         bad_value("image size", {f.width, f.height});
     f.alpha = j.at("alpha").get<bool>();
+    f.antialias = j.at("antialias").get<bool>();
     f.plan_everything_on = j.at("plan_everything_on").get<bool>();
     f.results = results_of(j.at("results"));
     f.queue = queue_of(j.at("queue"));

@@ -34,6 +34,7 @@ struct FixedJob {
     std::optional<double> adc_bailout;
     int width = 0, height = 0;
     bool alpha = false;
+    bool antialias = false;  // samples go out in waves (their sums come back as records)
     bool plan_everything_on = false;
     SpaceOptions::Results results = SpaceOptions::Results::Auto;
     QueuePolicy queue = QueuePolicy::Priority;

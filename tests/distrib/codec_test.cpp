@@ -15,6 +15,7 @@
 #include "distrib/wire/items.h"
 #include "distrib/wire/job.h"
 #include "distrib/wire/pixels.h"
+#include "distrib/wire/samples.h"
 #include "parser/parser.h"
 
 namespace povwall::distrib {
@@ -53,7 +54,7 @@ TEST(WireFrame, TruncatedNeedsMoreAndAWrongHeaderIsRefusedAtOnce) {
     };
     EXPECT_TRUE(refused(0, 0x00));                  // magic
     EXPECT_TRUE(refused(2, 1));                     // the retired fixed ray frame
-    EXPECT_TRUE(refused(2, 6));                     // no such type
+    EXPECT_TRUE(refused(2, 7));                     // no such type
     EXPECT_TRUE(refused(3, kProtocolVersion - 1));  // an older peer
     EXPECT_TRUE(refused(7, 0x7f));  // body length over the limit, before it arrives
 }
@@ -340,6 +341,26 @@ TEST(WirePixels, SumsRoundTripAndBadRecordsAddNothing) {
     EXPECT_FALSE(read_pixel_sums(body, 3, 4, 10, add));
     EXPECT_FALSE(read_pixel_sums(std::span(body).first(body.size() - 1), 2, 4, 10, add));
     EXPECT_EQ(sums, before);
+}
+
+TEST(WireSamples, PositionsRoundTripAndBadRecordsAddNothing) {
+    std::vector<uint8_t> body;
+    write_sample_position(body, {0.1 + 0.2, -0.5});
+    write_sample_position(body, {44.75, 32.999999999999993});
+    ASSERT_EQ(body.size(), 2 * kSampleRecordSize);
+    std::vector<trace::SamplePosition> out = {{1, 1}};
+    ASSERT_TRUE(read_sample_positions(body, 2, 49, out));
+    ASSERT_EQ(out.size(), 3u);
+    EXPECT_EQ(out[1].x, 0.1 + 0.2);  // every bit: the slot's camera ray is the same ray
+    EXPECT_EQ(out[1].y, -0.5);
+    EXPECT_EQ(out[2].y, 32.999999999999993);
+    EXPECT_FALSE(read_sample_positions(body, 2, 44, out));  // x beyond the image's reach
+    EXPECT_FALSE(read_sample_positions(body, 3, 49, out));  // count and body disagree
+    std::vector<uint8_t> nan = body;
+    const double not_a_number = std::nan("");
+    std::memcpy(nan.data() + 8, &not_a_number, 8);
+    EXPECT_FALSE(read_sample_positions(nan, 2, 49, out));
+    EXPECT_EQ(out.size(), 3u);
 }
 
 TEST(WireControl, ReachKeepsEveryDoubleAndRefusesBadBoxes) {

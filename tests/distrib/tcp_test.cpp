@@ -197,18 +197,76 @@ TEST(Tcp, AntialiasingWithBoxesEqualsOneProcess) {
     }
 }
 
-TEST(Tcp, AntialiasingWithBoxesOverWorkerProcessesIsRefused) {
-    const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/antialias_fisheye.pov";
-    RunResult r =
-        run("render " + scene + " -W 45 -H 33 +A0.3 --boxes 2x2x2 --procs 2 -o " +
-            (scratch() / "refused.png").string());
-    EXPECT_EQ(r.code, 2);
-    EXPECT_NE(r.err.find("anti-aliasing is not available with --boxes over worker "
-                         "processes (--procs, --workers) yet; --boxes in one process or "
-                         "--mode screen take it"),
-              std::string::npos)
-        << r.err;
+// Over worker processes each wave's positions go to every worker first (Samples frames),
+// then its camera rays as slot ranges: forked and executed workers, teams, parent
+// tracking.
+TEST(Tcp, AntialiasingOverWorkerProcessesEqualsOneProcess) {
+    for (const AntialiasCase& c : antialias_cases()) {
+        SCOPED_TRACE(c.scene + " " + c.args);
+        expect_same_images(
+            c.scene, "-W 45 -H 33 " + c.args,
+            {"--boxes 2x2x2 --procs 2",
+             "--boxes 3x1x2 --procs 3 --worker-start exec --results parents",
+             "--boxes auto --procs 4 --teams 2"});
+    }
 }
+
+// The issue's matrix: scenes x modes x anti-aliasing, each cell the one-process image.
+struct MatrixScene {
+    std::string name, file, args;
+};
+void PrintTo(const MatrixScene& scene, std::ostream* os) { *os << scene.name; }
+std::vector<MatrixScene> matrix_scenes() {
+    const std::string golden = std::string(POVWALL_GOLDEN_DIR) + "/";
+    const fs::path glass = scratch() / "matrix_glass.pov",
+                   ortho = scratch() / "matrix_ortho.pov",
+                   area = scratch() / "matrix_area.pov";
+    std::ofstream(glass) << kGlassCsgScene;
+    // Orthographic, and a background that lets light through (+UA: partial alpha).
+    std::ofstream(ortho) << R"(#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { orthographic location <0, 1, -5> look_at <0, 0.3, 0> right x * 4 up y * 3 }
+light_source { <-3, 5, -4> color rgb 1 }
+background { rgbt <0.2, 0.3, 0.5, 0.6> }
+sphere { 0, 1 pigment { rgbt <1, 0.6, 0.2, 0.5> } finish { phong 0.6 } }
+box { <0.6, -1, -0.4>, <1.6, 0.2, 0.6> rotate y * 25 pigment { rgbf <0.3, 1, 0.4, 0.7> }
+      interior { ior 1.4 } }
+plane { y, -1 pigment { checker rgb 0.8 rgb 0.1 } }
+)";
+    // An area light without jitter: its samples are the same rays in every mode.
+    std::ofstream(area) << R"(#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 2, -5> look_at <0, 0.4, 0> angle 50 }
+light_source { <-2, 5, -3> color rgb 1 area_light x * 2, z * 2, 4, 4 adaptive 1 circular orient }
+sphere { <0, 0.6, 0>, 0.6 pigment { rgb <0.9, 0.3, 0.2> } }
+cylinder { <1.2, 0, 0.5>, <1.2, 1.4, 0.5>, 0.2 pigment { rgb <0.2, 0.6, 1> } }
+plane { y, 0 pigment { rgb 0.8 } }
+)";
+    return {{"glass_csg", glass.string(), ""},
+            {"fisheye", golden + "antialias_fisheye.pov", "+UA"},
+            {"orthographic_alpha", ortho.string(), "+UA"},
+            {"legacy", golden + "antialias_legacy.pov", ""},
+            {"area_light", area.string(), ""}};
+}
+
+class ModeMatrixInEveryMode : public ::testing::TestWithParam<MatrixScene> {};
+
+TEST_P(ModeMatrixInEveryMode, EveryCellEqualsOneProcess) {
+    const MatrixScene& scene = GetParam();
+    for (const char* aa : {"-A", "+A0.3 +AM1 -J", "+A0.1 +AM2 +R3 -J", "+A0.3 +J"}) {
+        SCOPED_TRACE(aa);
+        expect_same_images(
+            scene.file, "-W 40 -H 30 " + scene.args + " " + aa,
+            {"--mode screen --procs 2", "--boxes 2x2x2", "--boxes 3x3x3 --procs 4",
+             "--boxes auto --procs 4 --teams 2"});
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ModeMatrixInEveryMode,
+                         ::testing::ValuesIn(matrix_scenes()),
+                         [](const ::testing::TestParamInfo<MatrixScene>& scene) {
+                             return scene.param.name;
+                         });
 
 // A wall of --boxes 3x1x1 lies at x = 2 (the objects span x -6..6); the shadow ray from a
 // point on the see-through box's back face leaves its top face (y = 2) exactly where it
@@ -850,6 +908,38 @@ TEST(Tcp, LostRunningWorkerIsLeftOutAndTheOthersFinishTheImage) {
     EXPECT_EQ(
         run("diff " + one.string() + " " + again.string() + " --max-rmse 1e-6").code, 0);
     stop_worker(a), stop_worker(b), stop_worker(c);
+}
+
+// An anti-aliased render that loses a worker in its first wave or in a later one is
+// traced again on the others from its first wave: the undisturbed image.
+TEST(Tcp, LostWorkerDuringAntialiasingWavesGivesTheUndisturbedImage) {
+    const fs::path one = scratch() / "aa-one.exr";
+    const std::string size = " -W 64 -H 48 +A0.3 -q ";
+    ASSERT_EQ(
+        run(std::string("render ") + POVWALL_DEMO_SCENE + size + "-o " + one.string())
+            .code,
+        0);
+    // The middle box's worker handles ~98,000 items over the three waves (3,184 samples,
+    // then 22,032, then 144): 300 is in the first, 30,000 after it.
+    for (const char* die_after : {"300", "30000"}) {
+        SCOPED_TRACE(die_after);
+        Worker a = start_worker("w"),
+               b = start_worker("w", std::string("--die-after-items ") + die_after),
+               c = start_worker("w");
+        const fs::path out = scratch() / "aa-lost.exr";
+        fs::remove(out);
+        RunResult r = run(std::string("render ") + POVWALL_DEMO_SCENE + size + "-o " +
+                          out.string() + " --boxes 3x1x1 --token w --workers " +
+                          a.address + "," + b.address + "," + c.address);
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_NE(r.err.find("worker 1 (" + b.address + ", box 1): disconnected"),
+                  std::string::npos)
+            << r.err;
+        EXPECT_EQ(
+            run("diff " + one.string() + " " + out.string() + " --max-rmse 1e-6").code,
+            0);
+        stop_worker(a), stop_worker(b), stop_worker(c);
+    }
 }
 
 }  // namespace

@@ -1,8 +1,10 @@
 // libFuzzer target: every decoder that reads bytes from another process (distrib/wire/).
 // The input is a stream of frames as a connection receives it: each complete frame is
 // decoded as its type says (item records against a small scene's objects, pixel sums,
-// control JSON with the plan and reach parts). Nothing may crash or read out of bounds;
-// item records that are accepted must write back to records that read the same again.
+// camera sample positions, control JSON with the plan and reach parts). Nothing may crash
+// or read out of bounds; item records that are accepted must write back to records that
+// read the same again.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -15,6 +17,7 @@
 #include "distrib/wire/frame.h"
 #include "distrib/wire/items.h"
 #include "distrib/wire/pixels.h"
+#include "distrib/wire/samples.h"
 #include "parser/parser.h"
 
 using namespace povwall;
@@ -104,6 +107,11 @@ void write_seeds(const std::string& dir) {
     write_pixel_sum(sums, 7, v, 4);
     seeds.emplace_back();
     encode_frame(FrameType::Pixels, 1, sums, seeds.back());
+    std::vector<uint8_t> positions;
+    write_sample_position(positions, {3.25, -0.5});
+    write_sample_position(positions, {0, 7});
+    seeds.emplace_back();
+    encode_frame(FrameType::Samples, 2, positions, seeds.back());
     trace::RenderPlan plan;
     plan.lights.push_back({});
     seeds.push_back(*control_frame({{"type", "frame"}, {"plan", plan_to_json(plan)}}));
@@ -140,6 +148,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                                       [&](uint32_t, const double* v) { total += v[0]; });
                 (void)read_pixel_sums(frame.body, frame.count, 3, 4096,
                                       [&](uint32_t, const double* v) { total += v[2]; });
+                break;
+            }
+            case FrameType::Samples: {
+                std::vector<trace::SamplePosition> positions;
+                if (read_sample_positions(frame.body, frame.count, 64, positions) &&
+                    positions.size() != frame.count)
+                    std::abort();
+                if (!positions.empty() && std::abs(positions.back().x) > 64) std::abort();
                 break;
             }
             case FrameType::Control:
