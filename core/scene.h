@@ -234,6 +234,26 @@ struct Texture {
 };
 using LayeredTexture = std::vector<Texture>;  // layers, bottom first
 
+// A participating medium (POV-Ray 3.7's `media { }`), in an interior or the scene's
+// atmosphere. Defaults are the 3.5+ ones; the parser sets the older ones (method 1,
+// intervals 10, samples 1) for media parsed under #version < 3.5.
+struct Media {
+    int method = 3;
+    int intervals = 1;
+    int samples_min = 10, samples_max = 10;
+    int aa_level = 3;
+    float aa_threshold = 0.1f;
+    float jitter = 0.0f;
+    float ratio = 0.9f;
+    float confidence = 0.9f, variance = 1.0f / 128;
+    Rgb absorption{0.0f}, emission{0.0f};
+    // The densities multiply channel by channel; none: 1 everywhere. World space (an
+    // object's transforms move its interior's densities).
+    std::vector<Pigment> density;
+    bool collect = true;
+    Rgb extinction() const { return absorption; }  // scattering is refused yet
+};
+
 struct Interior {
     float ior = 1.0f;
     float caustics = 0.0f;  // faked caustics, as POV-Ray stores it (interior{}: x45)
@@ -245,6 +265,7 @@ struct Interior {
     // Fog and media fill it (POV-Ray keeps `hollow` in the interior, which its sharers
     // set in turn as they are placed).
     bool hollow = false;
+    std::vector<Media> media;  // in parse order
     // Which interior this is. As POV-Ray shares one interior between a CSG and the
     // children without their own, so that a ray leaving one of them leaves all, objects
     // that share one carry the same id; object{} copies get their own. The parser numbers
@@ -801,6 +822,7 @@ struct Scene {
     bool background_legacy = false;
     std::optional<SkySphere> sky_sphere;
     std::vector<Fog> fogs;
+    std::vector<Media> atmosphere_media;  // scene-level `media { }`
     GlobalSettings settings;
     // Set when the parse left objects out (ParseOptions::keep_object: a black-box worker
     // keeps only what overlaps its boxes). Objects and their CSG children are numbered

@@ -192,6 +192,8 @@ const char* type_name(const Value& v) {
             return "spline";
         case 21:
             return "function";
+        case 22:
+            return "media";
     }
     return "value";
 }

@@ -43,6 +43,8 @@ inline int saturating_int(double v) {
 
 // Composes `t` into every pattern transform of the layers (textures move with objects).
 void transform_textures(LayeredTexture& layers, const Transform& t);
+void transform_pigment(Pigment& p, const Transform& t);
+void transform_interior(HeapOptional<Interior>& in, const Transform& t);
 
 // Which of POV-Ray's transform methods a keyword calls on an object: a sphere_sweep
 // moves its spheres for translate, rotate and a uniform scale (until it keeps a
@@ -205,6 +207,7 @@ class Interpreter {
     Camera finish_camera(const CameraSpec& spec);
     SkySphere parse_sky_sphere();
     Fog parse_fog();
+    Media parse_media();  // after the keyword media
     void parse_mesh(Object& out);
     void parse_mesh2(Object& out);
     // Shapes with a file of their own (parser/shape_*.cpp); `keyword` locates warnings.
@@ -385,6 +388,7 @@ class Interpreter {
     // includes save `version` and restore it with #version, so a scene without one
     // leaves colors.inc as an explicit 3.7 scene.
     int version_ = 370;
+    bool light_attenuated_by_media_ = false;  // a light with media_attenuation on
     bool version_set_ = false;
     GammaMode gamma_mode_ = GammaMode::None;  // as the parse has it so far
     bool noise_generator_given_ = false;

@@ -22,17 +22,27 @@ void transform_pattern(PatternSpec& p, const Transform& t) {
     p.transform = p.transform.then(t);
 }
 
+void transform_normal(Normal& n, const Transform& t) {
+    transform_pattern(n.pattern.edit(), t);
+}
+
+}  // namespace
+
 // Pigment and normal map/list entries are evaluated at the outer pattern's point (as
 // POV-Ray does), so a transform moves only the outer pattern.
 void transform_pigment(Pigment& p, const Transform& t) {
     transform_pattern(p.pattern.edit(), t);
 }
 
-void transform_normal(Normal& n, const Transform& t) {
-    transform_pattern(n.pattern.edit(), t);
+// An interior's media densities move with its object (POV-Ray's Interior::Transform).
+void transform_interior(HeapOptional<Interior>& in, const Transform& t) {
+    if (!in) return;
+    bool has_density = false;
+    for (const Media& m : in->media) has_density = has_density || !m.density.empty();
+    if (!has_density) return;
+    for (Media& m : in->media)
+        for (Pigment& d : m.density) transform_pigment(d, t);
 }
-
-}  // namespace
 
 void transform_textures(LayeredTexture& layers, const Transform& t) {
     for (Texture& tex : layers) {
@@ -107,6 +117,7 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
     transform_textures(obj.texture, t);
     if (obj.interior_texture.allocated())
         transform_textures(obj.interior_texture.edit(), t);
+    transform_interior(obj.interior, t);
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
         for (Object& child : csg->children) apply_transform(child, t, step);
         for (Light& l : csg->lights) transform_light(l, t, step);
@@ -263,6 +274,7 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
                 transform_textures(obj.texture, tr);
                 if (obj.interior_texture.allocated())
                     transform_textures(obj.interior_texture.edit(), tr);
+                transform_interior(obj.interior, tr);
             } else if (m.kind == TokenKind::Word && lookup(m) &&
                        std::holds_alternative<std::shared_ptr<Material>>(*lookup(m))) {
                 auto mat = std::get<std::shared_ptr<Material>>(*lookup(m));
@@ -871,8 +883,13 @@ void Interpreter::parse_top_level_item(const Token& t) {
             directive_default();
             return;
         }
-        if (w == "media" || w == "atmosphere" || w == "rainbow" || w == "photons" ||
-            w == "radiosity") {
+        if (w == "media") {
+            if (light_attenuated_by_media_)
+                unsupported(t, "atmospheric media with a light's media_attenuation");
+            scene_.atmosphere_media.push_back(parse_media());
+            return;
+        }
+        if (w == "atmosphere" || w == "rainbow" || w == "photons" || w == "radiosity") {
             unsupported(t, w);
         }
         // POV-Ray's Link_To_Frame removes the bound of a shape placed in the scene (as

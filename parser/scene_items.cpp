@@ -333,9 +333,15 @@ Light Interpreter::parse_light_block() {
             l.shadowless = true;
         else if (w == "media_interaction")
             l.media_interaction = parse_bool_opt();
-        else if (w == "media_attenuation")
+        else if (w == "media_attenuation") {
             l.media_attenuation = parse_bool_opt();
-        else if (w == "color" || w == "colour" || w == "rgb") {
+            // Shadow rays through the atmosphere's media: not yet.
+            if (l.media_attenuation) {
+                if (!scene_.atmosphere_media.empty())
+                    unsupported(t, "media_attenuation with atmospheric media");
+                light_attenuated_by_media_ = true;
+            }
+        } else if (w == "color" || w == "colour" || w == "rgb") {
             unget(t);
             l.colour = parse_colour_value().rgb;
         } else if (w == "area_light") {
@@ -896,6 +902,16 @@ Value Interpreter::parse_item_value(const Token& t) {
         if (w == "function") return parse_function_block();
         if (w == "sky_sphere") return std::make_shared<SkySphere>(parse_sky_sphere());
         if (w == "fog") return std::make_shared<Fog>(parse_fog());
+        if (w == "media") return std::make_shared<Media>(parse_media());
+        if (w == "density") {
+            // A density is a pigment (POV-Ray parses it as one); `density { D }` reads
+            // it.
+            Pigment d;
+            d.colour = Colour{};
+            expect_punct('{', "after 'density'");
+            parse_pigment_body(d, '}');
+            return std::make_shared<Pigment>(std::move(d));
+        }
         if (w == "pigment") return std::make_shared<Pigment>(parse_pigment_block());
         if (w == "finish") return std::make_shared<Finish>(parse_finish_block());
         if (w == "normal") return std::make_shared<Normal>(parse_normal_block());
@@ -945,9 +961,9 @@ Value Interpreter::parse_item_value(const Token& t) {
             return a;
         }
         static constexpr std::string_view kUnsupportedItems[] = {
-            "media",        "density",    "rainbow",     "photons",     "radiosity",
-            "pigment_map",  "normal_map", "texture_map", "density_map", "slope_map",
-            "material_map", "parametric", "lemon"};
+            "rainbow",      "photons",     "radiosity",   "pigment_map",
+            "normal_map",   "texture_map", "density_map", "slope_map",
+            "material_map", "parametric",  "lemon"};
         for (std::string_view item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }

@@ -513,6 +513,8 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
             if (p.pattern->kind != PatternKind::Solid)
                 p.pattern.edit().kind = PatternKind::Solid;
             p.colour = parse_colour_value();
+        } else if (w == "density_map") {
+            unsupported(t, "density_map");
         } else if (w == "color_map" || w == "colour_map") {
             p.maps.edit().colour_map = parse_colour_map_block();
         } else if (w == "pigment_map") {
@@ -868,11 +870,99 @@ void Interpreter::parse_interior_into(Interior& in) {
             Colour c = parse_colour_value();
             in.fade_colour = c.rgb;
         } else if (w == "media") {
-            unsupported(t, "media");
+            in.media.push_back(parse_media());
         } else {
             expected("an interior item or '}'", t);
         }
     }
+}
+
+// `media { ... }` (POV-Ray 3.7's Parse_Media): an interior's or the atmosphere's.
+Media Interpreter::parse_media() {
+    expect_punct('{', "after 'media'");
+    Media m;
+    const Token& first = peek();
+    const Value* declared = first.kind == TokenKind::Word ? lookup(first) : nullptr;
+    if (declared && std::holds_alternative<std::shared_ptr<Media>>(*declared)) {
+        // A copy of the declared media, version defaults and all (POV-Ray's).
+        next();
+        m = *std::get<std::shared_ptr<Media>>(*declared);
+    } else if (language_version() < 350) {  // decided per block, as POV-Ray decides it
+        m.method = 1;
+        m.intervals = 10;
+        m.samples_min = m.samples_max = 1;
+    }
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) break;
+        Transform tr;
+        if (try_transform(t, tr)) {
+            // Moves the densities given so far only, as POV-Ray's.
+            for (Pigment& d : m.density) transform_pigment(d, tr);
+            continue;
+        }
+        std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        const Token at = peek();
+        if (w == "method") {
+            m.method = parse_int();
+            if (m.method < 1 || m.method > 3) error(at, "media method must be 1, 2 or 3");
+        } else if (w == "intervals") {
+            m.intervals = parse_int();
+            if (m.intervals < 1) error(at, "at least one interval is needed");
+            if (m.intervals > 10000) unsupported(at, "media intervals above 10000");
+        } else if (w == "samples") {
+            m.samples_min = parse_int();
+            m.samples_max = m.samples_min;
+            if (accept_punct(',')) {
+                const Token max_at = peek();
+                m.samples_max = parse_int();
+                if (m.samples_max < m.samples_min)
+                    error(max_at, "maximum samples must not be below the minimum");
+            }
+            if (m.samples_min < 1) error(at, "at least one sample is needed");
+            if (m.samples_max > 10000) unsupported(at, "media samples above 10000");
+        } else if (w == "jitter") {
+            m.jitter = float(parse_float());
+        } else if (w == "aa_threshold") {
+            m.aa_threshold = float(parse_float());
+            if (!(m.aa_threshold > 0)) error(at, "aa_threshold must be above 0");
+        } else if (w == "aa_level") {
+            m.aa_level = parse_int();
+            if (m.aa_level < 1) error(at, "aa_level must be at least 1");
+            if (m.aa_level > 30) unsupported(at, "media aa_level above 30");
+        } else if (w == "confidence") {
+            m.confidence = float(parse_float());
+            if (!(m.confidence >= 0 && m.confidence < 1))
+                error(at, "confidence must be at least 0 and below 1");
+        } else if (w == "variance") {
+            m.variance = float(parse_float());
+        } else if (w == "ratio") {
+            m.ratio = float(parse_float());
+        } else if (w == "collect") {
+            m.collect = parse_bool_opt();
+        } else if (w == "absorption") {
+            m.absorption = parse_colour_value().rgb;
+        } else if (w == "emission") {
+            m.emission = parse_colour_value().rgb;
+        } else if (w == "scattering") {
+            unsupported(t, "media scattering");
+        } else if (w == "density") {
+            // POV-Ray's density starts as an empty pigment: black (no medium) unless a
+            // pattern or colour is given.
+            Pigment d;
+            d.colour = Colour{};
+            expect_punct('{', "after 'density'");
+            parse_pigment_body(d, '}');
+            m.density.push_back(std::move(d));
+        } else {
+            expected("a media item or '}'", t);
+        }
+    }
+    // POV-Ray's variance test never runs with one sample; with more it needs its
+    // chi-square table, which povwall has not yet.
+    if (m.method != 3 && m.samples_max > m.samples_min && m.samples_min >= 2)
+        unsupported(peek(), "media samples with a maximum above the minimum");
+    return m;
 }
 
 LayeredTexture Interpreter::parse_texture_block() {

@@ -59,7 +59,7 @@ using Value = std::variant<
     std::shared_ptr<Macro>, std::shared_ptr<Material>, std::shared_ptr<ColourMap>,
     std::shared_ptr<SkySphere>, std::shared_ptr<Fog>, std::shared_ptr<UnsupportedValue>,
     std::shared_ptr<UserFile>, std::shared_ptr<const Spline>,
-    std::shared_ptr<const FunctionProgram>>;
+    std::shared_ptr<const FunctionProgram>, std::shared_ptr<Media>>;
 
 struct ArrayValue {
     std::vector<int> dims;

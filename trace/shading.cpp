@@ -7,6 +7,7 @@
 #include <deque>
 
 #include "core/noise.h"
+#include "trace/media.h"
 #include "trace/shapes/shape.h"
 
 namespace povwall::trace {
@@ -399,16 +400,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     }
     out.clear();
     const Quality quality = scene.plan().quality;
-    if (!scene.scene().fogs.empty() && quality.atmosphere()) {
-        // Fog fills only "hollow" space: not the inside of a solid (non-hollow) object.
-        bool hollow = true;
-        for (int i = 0; i < ray.interiors.size && i < InteriorStack::kCapacity; ++i) {
-            const Material* m = ray.interiors.items[i];
-            if (m && !(m->interior ? m->interior->hollow : m->object->hollow))
-                hollow = false;
-        }
-        if (hollow) out.fog = fog_effect(scene.scene(), ray.ray, hit.t);
-    }
+    if (quality.atmosphere()) out.fog = along_ray_effect(scene, ray, hit.t);
     if (spawn_corner_blend(scene, ray, hit, out)) return;
     if (spawn_blob_blend(scene, ray, hit, out)) return;
     if (spawn_texture_map(scene, ray, hit, out)) return;
@@ -712,6 +704,66 @@ TraceResult combine_children(const ShadingRecord& record, const TraceResult* res
     return r;
 }
 
+namespace {
+
+// `after` applied to what `before` gives: colour -> after(before(colour)).
+FogEffect then(const FogEffect& before, const FogEffect& after) {
+    return {after.mul * before.add + after.add, after.mul * before.mul,
+            after.mul_transmit * before.add_transmit + after.add_transmit,
+            after.mul_transmit * before.mul_transmit};
+}
+
+FogEffect as_fog_effect(const MediaEffect& m) {
+    return {m.add, m.mul, 0.0f, m.mul_transmit};
+}
+
+// Media and fog fill only "hollow" space: not the inside of a solid (non-hollow) object.
+bool hollow_ray(const InteriorStack& interiors) {
+    for (int i = 0; i < interiors.size && i < InteriorStack::kCapacity; ++i) {
+        const Material* m = interiors.items[i];
+        if (m && !(m->interior ? m->interior->hollow : m->object->hollow)) return false;
+    }
+    return true;
+}
+
+// The media of the interiors a ray is inside of, in the order it entered them.
+void interior_media(const InteriorStack& interiors, std::vector<const Media*>& list) {
+    list.clear();
+    for (int i = 0; i < interiors.size && i < InteriorStack::kCapacity; ++i) {
+        const Material* m = interiors.items[i];
+        if (m && m->interior)
+            for (const Media& media : m->interior->media) list.push_back(&media);
+    }
+}
+
+}  // namespace
+
+FogEffect along_ray_effect(const PreparedScene& scene, const TraceRay& ray, Real depth) {
+    const Scene& sc = scene.scene();
+    if (sc.fogs.empty() && sc.atmosphere_media.empty() && ray.interiors.size == 0)
+        return {};
+    if (!hollow_ray(ray.interiors)) return {};
+    // POV-Ray: the interiors' media on the surface's colour, then the atmosphere's,
+    // then fog, each on what the one before gave.
+    FogEffect e;
+    if (ray.interiors.size > 0) {
+        thread_local std::vector<const Media*> list;
+        interior_media(ray.interiors, list);
+        if (!list.empty())
+            e = as_fog_effect(
+                media_effect(list, ray.ray, 0, depth, false, scene.pattern_env()));
+    }
+    if (!sc.atmosphere_media.empty()) {
+        thread_local std::vector<const Media*> list;
+        list.clear();
+        for (const Media& m : sc.atmosphere_media) list.push_back(&m);
+        e = then(e, as_fog_effect(media_effect(list, ray.ray, 0, depth, false,
+                                               scene.pattern_env())));
+    }
+    if (!sc.fogs.empty()) e = then(e, fog_effect(sc, ray.ray, depth));
+    return e;
+}
+
 FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth) {
     FogEffect e;
     for (const Fog& fog : scene.fogs) {
@@ -920,6 +972,17 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
             state.filter *= shadow_filter(
                 scene, texture_of(m), m.interior ? m.interior->caustics : 0.0f, hit, ray);
         }
+        if (!black && state.inside.size > 0 && scene.plan().quality.atmosphere() &&
+            hollow_ray(state.inside)) {
+            // The media of every interior the ray is in dim the stretch since the last
+            // crossing (whatever the light's media_attenuation says, as POV-Ray).
+            thread_local std::vector<const Media*> list;
+            interior_media(state.inside, list);
+            if (!list.empty())
+                state.filter *= media_effect(list, ray, state.last_hit, hit.t, true,
+                                             scene.pattern_env())
+                                    .mul;
+        }
         if (!black) {
             if (state.inside.contains(m.interior_id)) {
                 if (m.interior) {
@@ -1085,8 +1148,19 @@ namespace {
 // A ray that hits nothing crosses fog up to POV-Ray's MAX_DISTANCE.
 TraceResult fogged(const PreparedScene& scene, const Ray& ray, TraceResult r) {
     const Scene& sc = scene.scene();
-    if (sc.fogs.empty() || !scene.plan().quality.atmosphere()) return r;
-    FogEffect f = fog_effect(sc, ray, kMaxDistance);
+    if ((sc.fogs.empty() && sc.atmosphere_media.empty()) ||
+        !scene.plan().quality.atmosphere())
+        return r;
+    FogEffect f;
+    if (!sc.atmosphere_media.empty()) {
+        // POV-Ray integrates the atmosphere out to its "infinite" depth, 2e10: lit or
+        // glowing media saturate the sky, absorbing media blacken it.
+        thread_local std::vector<const Media*> list;
+        list.clear();
+        for (const Media& m : sc.atmosphere_media) list.push_back(&m);
+        f = as_fog_effect(media_effect(list, ray, 0, 2e10, false, scene.pattern_env()));
+    }
+    if (!sc.fogs.empty()) f = then(f, fog_effect(sc, ray, kMaxDistance));
     return {f.add + f.mul * r.colour, f.add_transmit + f.mul_transmit * r.transmit};
 }
 

@@ -102,6 +102,11 @@ struct FogEffect {
 };
 FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth);
 
+// What lies along a ray up to `depth` does to the colour there: the media of the
+// interiors it is in, the atmosphere's media, then fog (POV-Ray's order); identity
+// inside a solid (non-hollow) object. The caller checks the quality level.
+FogEffect along_ray_effect(const PreparedScene& scene, const TraceRay& ray, Real depth);
+
 struct ShadingRecord {
     Rgb local;  // ambient and emission: needs no child
     std::vector<ChildRay> children;

@@ -343,6 +343,21 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
     }
 }
 
+// Media (trace/media.h) act on a ray's colour as fog does, from its origin to its hit:
+// every mode gives the one-process image, anti-aliased too.
+TEST(Tcp, MediaInEveryModeEqualOneProcess) {
+    for (const char* name :
+         {"media_emission_absorption", "media_density_methods", "media_legacy_csg",
+          "media_atmosphere", "media_atmosphere_sky"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        for (const char* aa : {"-A", "+A0.1 +AM2 -J"})
+            expect_same_images(scene, std::string("-W 40 -H 30 ") + aa,
+                               {"--mode screen --procs 2", "--boxes 2x2x2",
+                                "--boxes 3x1x2 --procs 2 --results parents"});
+    }
+}
+
 // Quality levels change what is traced (no shadows, no refraction, pigments only): every
 // mode leaves out the same rays.
 TEST(Tcp, QualityLevelsInEveryModeEqualOneProcess) {

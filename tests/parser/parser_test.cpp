@@ -609,3 +609,58 @@ TEST(Prism, PointCountsAndClosureAsPovRay) {
 
 }  // namespace
 }  // namespace povwall::parser
+
+namespace povwall::parser {
+namespace {
+
+// Media take POV-Ray's defaults by the language version at each block (3.5 and later:
+// method 3, one interval, 10 samples; before: method 1, 10 intervals, 1 sample), a
+// declared media is copied whole, and transforms move the densities given so far.
+TEST(Media, DefaultsFollowTheVersionAndDeclaredMediaAreCopied) {
+    Scene s = parse(R"(
+#declare M = media { emission 0.5 }
+sphere { 0, 1 hollow interior { media { absorption 1 } media { M samples 4 } } }
+#version 3.1;
+sphere { 0, 1 hollow interior { media { emission 1 density { gradient x } translate x
+                                        density { rgb 0.5 } } } }
+media { absorption <0.1, 0.2, 0.3> }
+)");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const std::vector<Media>& a = s.objects[0].interior->media;
+    ASSERT_EQ(a.size(), 2u);
+    EXPECT_EQ(a[0].method, 3);
+    EXPECT_EQ(a[0].intervals, 1);
+    EXPECT_EQ(a[0].samples_min, 10);
+    EXPECT_EQ(a[0].absorption.g, 1.0f);
+    EXPECT_EQ(a[1].emission.r, 0.5f);
+    EXPECT_EQ(a[1].samples_min, 4);
+    EXPECT_EQ(a[1].samples_max, 4);
+    const Media& b = s.objects[1].interior->media.at(0);
+    EXPECT_EQ(b.method, 1);
+    EXPECT_EQ(b.intervals, 10);
+    EXPECT_EQ(b.samples_min, 1);
+    ASSERT_EQ(b.density.size(), 2u);
+    EXPECT_EQ(b.density[0].pattern->transform.point({0, 0, 0}).x, 1.0);  // moved
+    EXPECT_EQ(b.density[1].pattern->transform.point({0, 0, 0}).x, 0.0);  // given after
+    ASSERT_EQ(s.atmosphere_media.size(), 1u);
+    EXPECT_EQ(s.atmosphere_media[0].absorption.b, 0.3f);
+}
+
+TEST(Media, BadValuesAreLocatedAndMissingFeaturesUnsupported) {
+    EXPECT_EQ(error_of("sphere { 0, 1 interior { media { method 4 } } }"),
+              "test.pov:1:41: error: media method must be 1, 2 or 3\n"
+              "sphere { 0, 1 interior { media { method 4 } } }\n"
+              "                                        ^");
+    EXPECT_EQ(first_line("media { samples 5, 2 }"),
+              "test.pov:1:20: error: maximum samples must not be below the minimum");
+    EXPECT_EQ(first_line("media { scattering { 1, 0.5 } }"),
+              "test.pov:1:9: error: unsupported: media scattering");
+    EXPECT_EQ(first_line("media { density { density_map { [0 density { rgb 1 }] } } }"),
+              "test.pov:1:19: error: unsupported: density_map");
+    EXPECT_EQ(first_line("light_source { 0, 1 media_attenuation }\nmedia { emission 1 }"),
+              "test.pov:2:1: error: unsupported: atmospheric media with a light's "
+              "media_attenuation");
+}
+
+}  // namespace
+}  // namespace povwall::parser
