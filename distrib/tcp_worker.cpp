@@ -468,12 +468,22 @@ class Worker {
         // Render threads share the outboxes; a worker that traces on its io thread
         // (inline_) has no other thread to exclude, and skips the lock (two atomic
         // operations per item sent).
+        // For the tests: POVWALL_FAULT_MISROUTE=N makes worker 0 send its N-th item to
+        // another worker under the number of a box it hosts itself, one the receiver
+        // does not host: the receiver must refuse the frame.
+        misroute_after_ = -1;
+        if (const char* n = std::getenv("POVWALL_FAULT_MISROUTE"); n && self_ == 0)
+            misroute_after_ = std::atol(n);
         host_->remote = [this](int box, Item&& item) {
             Outbox& o = *outboxes_[owner_[box]];
             std::unique_lock<std::mutex> lock(o.mutex, std::defer_lock);
             if (!inline_) lock.lock();
             const size_t before = o.records.size();
-            write_item(o.records, box, item, *numbers_);
+            const int named =
+                misroute_after_ >= 0 && long(o.sent) == misroute_after_ && !mine_.empty()
+                    ? mine_[0]
+                    : box;
+            write_item(o.records, named, item, *numbers_);
             const size_t bytes = o.records.size() - before;
             ++o.sent;
             if (++o.count, o.records.size() >= Outbox::kFlushBytes)
@@ -700,6 +710,7 @@ class Worker {
     std::atomic<uint64_t> generation_{0};  // jobs served: stale handlers check it
     bool done_ = false;
     bool running_ = false;                                // between "start" and "finish"
+    long misroute_after_ = -1;                            // POVWALL_FAULT_MISROUTE
     std::vector<trace::SamplePosition> pending_samples_;  // of the next "samples"
     int exit_code_ = 0;
 };

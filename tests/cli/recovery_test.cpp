@@ -164,6 +164,27 @@ TEST(Recovery, ALostWorkerWithoutRecoveryExitsThreeInEveryMode) {
     }
 }
 
+// A worker that receives items for a box it does not host (a peer's bug or a corrupted
+// stream) refuses the frame and leaves; the coordinator names the loss, and without
+// recovery the render ends with exit code 3 and writes nothing.
+TEST(Recovery, ItemsForABoxTheReceiverDoesNotHostEndTheRenderNamingIt) {
+    const std::string scene = std::string(POVWALL_SOURCE_DIR) + "/scenes/demo/walls.pov";
+    const fs::path out = scratch() / "misrouted.png", err = scratch() / "misrouted.err";
+    fs::remove(out);
+    const std::string cmd = "POVWALL_FAULT_MISROUTE=20 " + std::string(POVWALL_BINARY) +
+                            " render " + scene +
+                            " -W 160 -H 120 -q --no-recover --boxes 2x1x1 --procs 2 "
+                            "--worker-start exec -o " +
+                            out.string() + " 2>" + err.string();
+    const int status = std::system(cmd.c_str());
+    const std::string said = slurp(err);
+    EXPECT_EQ(WEXITSTATUS(status), 3) << said;
+    EXPECT_NE(said.find("povwall worker: malformed item frame"), std::string::npos)
+        << said;
+    EXPECT_NE(said.find("povwall: error: worker 1 ("), std::string::npos) << said;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 // Ctrl-C reaches the whole process group: the worker processes end quietly and the
 // coordinator alone says what was kept; no worker is left behind. The render with --procs
 // restarts itself (huge-page heap) first: a Ctrl-C during that exec must not end it
