@@ -60,7 +60,8 @@ enum class PatternKind : uint8_t {
     Average,
     ImageMap,
     Cells,
-    Function,  // a user function of x, y, z (PatternSpec::function)
+    Function,        // a user function of x, y, z (PatternSpec::function)
+    PigmentPattern,  // the grey of a pigment (PatternSpec::pigment)
 };
 
 enum class WaveType : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
@@ -129,6 +130,8 @@ struct ImageMapping {
          offset_v = 0;  // `offset` in pixels (negated, as POV-Ray stores it)
 };
 
+struct Pigment;
+
 // Everything that turns a point into a pattern value in [0,1].
 struct PatternSpec {
     PatternKind kind = PatternKind::Solid;
@@ -153,6 +156,7 @@ struct PatternSpec {
     } fractal;
     std::shared_ptr<const ImageMapping> image;        // PatternKind::ImageMap only
     std::shared_ptr<const FunctionProgram> function;  // PatternKind::Function only
+    std::shared_ptr<const Pigment> pigment;           // PatternKind::PigmentPattern only
 };
 
 struct ColourMapEntry {

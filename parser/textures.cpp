@@ -53,11 +53,9 @@ constexpr PatternName kPatterns[] = {
 
 bool is_unsupported_pattern(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "material_map", "object",          "slope",         "aoi",
-        "density_file", "facets",          "pavement",      "tiling",
-        "julia",        "magnet",          "image_pattern", "tiles",
-        "proportion",   "pigment_pattern", "gradient_map",  "cubic",
-        "square",       "triangular"};
+        "material_map", "object",       "slope", "aoi",    "density_file",  "facets",
+        "pavement",     "tiling",       "julia", "magnet", "image_pattern", "tiles",
+        "proportion",   "gradient_map", "cubic", "square", "triangular"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -195,6 +193,16 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
         // `function { F(x, y, z) }`).
         spec.kind = PatternKind::Function;
         spec.function = parse_function_block(true);
+        return true;
+    }
+    if (w == "pigment_pattern") {
+        // The grey of a pigment (POV-Ray's pigment_pattern; an empty one is black).
+        auto inner = std::make_shared<Pigment>();
+        inner->colour = Colour{};
+        expect_punct('{', "after 'pigment_pattern'");
+        parse_pigment_body(*inner, '}');
+        spec.kind = PatternKind::PigmentPattern;
+        spec.pigment = std::move(inner);
         return true;
     }
     for (const auto& p : kPatterns) {
@@ -547,7 +555,7 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
         } else if (w == "image_map") {
             p.pattern.edit().kind = PatternKind::ImageMap;
             p.pattern.edit().image = parse_image_block(t, nullptr);
-        } else if (w == "uv_mapping" || w == "pigment_pattern") {
+        } else if (w == "uv_mapping") {
             unsupported(t, w);
         } else {
             expected("a pigment item or '}'", t);

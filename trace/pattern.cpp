@@ -439,6 +439,9 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
             const Real r = evaluate_function(*s.function, args, function_hooks(env));
             return r > 1.0 ? std::fmod(r, 1.0) : r;  // POV-Ray wraps only above 1
         }
+        case PatternKind::PigmentPattern:
+            // Evaluated at this pattern's point: its own transforms go on top of ours.
+            return evaluate_pigment(*s.pigment, p, env).rgb.grey();
         case PatternKind::Cells:
             return std::min(
                 pattern_random(size_t(hash3d(int(std::floor(p.x + kEpsilon)),
@@ -669,8 +672,15 @@ FunctionHooks function_hooks(const PatternEnv& env) {
 }
 
 FunctionHooks parse_time_function_hooks() {
-    static const PatternEnv kDefaults;
-    return function_hooks(kDefaults);
+    // One per thread: a parse sets it before each call (use_settings).
+    static thread_local PatternEnv env;
+    FunctionHooks h = function_hooks(env);
+    h.use_settings = [](const void* context, int noise_generator, int number_of_waves) {
+        auto* e = const_cast<PatternEnv*>(static_cast<const PatternEnv*>(context));
+        e->noise_generator = noise_generator;
+        e->number_of_waves = number_of_waves;
+    };
+    return h;
 }
 
 Real evaluate_pattern(const PatternSpec& spec, const Point3& world,
