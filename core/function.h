@@ -27,6 +27,10 @@ struct FunctionHooks {
     void (*pigment)(const Pigment& pigment, const Point3& p, const void* context,
                     float out[5]) = nullptr;
     const void* context = nullptr;
+    // Parse time only: gives the hooks the global settings parsed so far, which POV-Ray
+    // evaluates patterns with (a render's context holds the scene's already).
+    void (*use_settings)(const void* context, int noise_generator,
+                         int number_of_waves) = nullptr;
     int noise_generator = 2;  // global_settings noise_generator, for f_noise3d
     // When set, sum/prod iterations left; at 0 every loop stops (a parse-time call
     // reports it instead of hanging on `sum(i, 0, 1e18, i)`).

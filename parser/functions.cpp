@@ -443,7 +443,7 @@ Numeric Interpreter::call_function(const Token& name, const FunctionProgram& f) 
             Vector3(f.transform->point(Point3(args[0], args[1], args[2]))));
     }
     if (f.pigment) {
-        const FunctionHooks& h = options_.function_hooks;
+        const FunctionHooks& h = parse_time_hooks();
         if (!h.pigment)
             error(name, "a pigment function cannot be called while this command parses");
         float c[5] = {0, 0, 0, 0, 0};
@@ -454,7 +454,7 @@ Numeric Interpreter::call_function(const Token& name, const FunctionProgram& f) 
         for (int i = 0; i < 5; ++i) r.c[i] = double(c[i]);
         return r;
     }
-    FunctionHooks hooks = options_.function_hooks;
+    FunctionHooks hooks = parse_time_hooks();
     uint64_t left = options_.max_loop_iterations;
     hooks.iterations_left = &left;
     const double v = evaluate_function(f, args, hooks);
@@ -463,6 +463,19 @@ Numeric Interpreter::call_function(const Token& name, const FunctionProgram& f) 
                         std::to_string(options_.max_loop_iterations) +
                         " iterations (--max-loop-iterations)");
     return Numeric::scalar(v);
+}
+
+}  // namespace povwall::parser
+
+namespace povwall::parser {
+
+FunctionHooks Interpreter::parse_time_hooks() const {
+    FunctionHooks h = options_.function_hooks;
+    h.noise_generator = scene_.settings.noise_generator;
+    if (h.use_settings)
+        h.use_settings(h.context, scene_.settings.noise_generator,
+                       scene_.settings.number_of_waves);
+    return h;
 }
 
 }  // namespace povwall::parser

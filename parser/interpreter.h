@@ -208,6 +208,9 @@ class Interpreter {
     SkySphere parse_sky_sphere();
     Fog parse_fog();
     Media parse_media();  // after the keyword media
+    // The function hooks for a call while parsing, told the global settings parsed so
+    // far (noise_generator, number_of_waves), as POV-Ray evaluates with them.
+    FunctionHooks parse_time_hooks() const;
     void parse_mesh(Object& out);
     void parse_mesh2(Object& out);
     // Shapes with a file of their own (parser/shape_*.cpp); `keyword` locates warnings.

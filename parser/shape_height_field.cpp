@@ -156,7 +156,7 @@ Interpreter::PendingHeightField Interpreter::parse_height_field(Object& out) {
         const auto f = parse_function_block(false);
         if (f->spline || f->transform)
             error(body_at, "Unsupported function type in function image.");
-        const FunctionHooks& hooks = options_.function_hooks;
+        const FunctionHooks& hooks = parse_time_hooks();
         if (f->pigment && !hooks.pigment)
             unsupported(body_at, "height_field function pigment without the renderer");
         heights.resize(size_t(width) * size_t(depth));
