@@ -120,6 +120,12 @@ int run_compare(int argc, char** argv) {
         "reuse POV-Ray renders from this folder, keyed by a hash of the scene, its "
         "includes and the render settings");
     app.add_flag("--warn-ok", warn_ok, "exit 0 on a warning (tests)");
+    bool ours_only = false;
+    app.add_flag(
+        "--ours-only", ours_only,
+        "render with povwall alone, as the comparison would, and compare nothing "
+        "(the sanitizer suite: its golden scenes look for memory errors, the "
+        "release suite compares)");
     int block = 1;
     app.add_option("--block-mean", block,
                    "compare the means of NxN pixel squares (stochastic features: crand, "
@@ -181,6 +187,13 @@ int run_compare(int argc, char** argv) {
         pov_image = animation_frames(named).front().output;
         named.output = our_png;
         our_image = animation_frames(named).front().output;
+    }
+    if (ours_only) {
+        o.output = our_png;
+        o.format_given = false;
+        o.bits = 8;
+        o.quiet = true;
+        return run_render(o);
     }
     const std::vector<std::string> cmd = povray_command(o, pov_png, threads);
     const PovrayRun pov = run_povray(o, cmd, cache, log);

@@ -658,7 +658,7 @@ TEST(Tcp, AutoModeKeepsEveryWorkerWithinAMemoryBudgetBelowTheScene) {
          it != std::sregex_iterator(); ++it)
         peaks.push_back(std::stol(it->str()));
     ASSERT_EQ(int(peaks.size()), processes);
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(POVWALL_SANITIZE_BUILD)
     GTEST_SKIP() << "resident memory under AddressSanitizer is not povwall's";
 #else
     for (size_t w = 0; w < peaks.size(); ++w)
