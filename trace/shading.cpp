@@ -740,7 +740,8 @@ void interior_media(const InteriorStack& interiors, std::vector<const Media*>& l
 
 FogEffect along_ray_effect(const PreparedScene& scene, const TraceRay& ray, Real depth) {
     const Scene& sc = scene.scene();
-    if (sc.fogs.empty() && sc.atmosphere_media.empty() && ray.interiors.size == 0)
+    if (sc.fogs.empty() && sc.atmosphere_media.empty() &&
+        (ray.interiors.size == 0 || !scene.has_interior_media()))
         return {};
     if (!hollow_ray(ray.interiors)) return {};
     // POV-Ray: the interiors' media on the surface's colour, then the atmosphere's,
@@ -972,8 +973,8 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
             state.filter *= shadow_filter(
                 scene, texture_of(m), m.interior ? m.interior->caustics : 0.0f, hit, ray);
         }
-        if (!black && state.inside.size > 0 && scene.plan().quality.atmosphere() &&
-            hollow_ray(state.inside)) {
+        if (!black && state.inside.size > 0 && scene.has_interior_media() &&
+            scene.plan().quality.atmosphere() && hollow_ray(state.inside)) {
             // The media of every interior the ray is in dim the stretch since the last
             // crossing (whatever the light's media_attenuation says, as POV-Ray).
             thread_local std::vector<const Media*> list;
