@@ -447,7 +447,7 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
         if (!box.scene->closest_hit(ray.trace.ray, ray.t_from, seg.t_exit, ray.trace.use,
                                     hit, here.ctx)) {
             if (next < 0) {
-                deliver(box, ray, trace::miss_colour(*box.scene, ray.trace.ray), thread);
+                deliver(box, ray, trace::miss_colour(*box.scene, ray.trace), thread);
             } else {
                 ray.t_from = seg.t_exit;
                 if (leave(next)) continue;

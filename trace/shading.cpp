@@ -1147,13 +1147,14 @@ Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow,
 namespace {
 
 // A ray that hits nothing crosses fog up to POV-Ray's MAX_DISTANCE.
-TraceResult fogged(const PreparedScene& scene, const Ray& ray, TraceResult r) {
+TraceResult fogged(const PreparedScene& scene, const Ray& ray, bool hollow,
+                   TraceResult r) {
     const Scene& sc = scene.scene();
     if ((sc.fogs.empty() && sc.atmosphere_media.empty()) ||
         !scene.plan().quality.atmosphere())
         return r;
     FogEffect f;
-    if (!sc.atmosphere_media.empty()) {
+    if (!sc.atmosphere_media.empty() && hollow) {
         // POV-Ray integrates the atmosphere out to its "infinite" depth, 2e10: lit or
         // glowing media saturate the sky, absorbing media blacken it.
         thread_local std::vector<const Media*> list;
@@ -1167,7 +1168,9 @@ TraceResult fogged(const PreparedScene& scene, const Ray& ray, TraceResult r) {
 
 }  // namespace
 
-TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
+TraceResult miss_colour(const PreparedScene& scene, const TraceRay& traced) {
+    const Ray& ray = traced.ray;
+    const bool hollow = hollow_ray(traced.interiors);
     // POV-Ray's ComputeSky: the sky_sphere's pigments (last one on top) over the
     // background.
     const Scene& sc = scene.scene();
@@ -1189,8 +1192,8 @@ TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
     const Rgb emission = sky ? sc.sky_sphere->emission : Rgb(1.0f);
     if (sc.language_version < 370) {
         // Legacy: full transparency with alpha; else the 3.6 compositing.
-        if (alpha) return fogged(scene, ray, {Rgb{}, 1.0f});
-        if (!sky) return fogged(scene, ray, {bg.rgb, 0.0f});
+        if (alpha) return fogged(scene, ray, hollow, {Rgb{}, 1.0f});
+        if (!sky) return fogged(scene, ray, hollow, {bg.rgb, 0.0f});
         Rgb col, fil(1.0f);
         float ff = 1, ft = 1, trans = 1;
         for (auto it = sc.sky_sphere->pigments.rbegin();
@@ -1203,7 +1206,7 @@ TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
             trans = std::fabs(ff) + std::fabs(ft);
         }
         col *= emission;
-        return fogged(scene, ray, {col + bg.rgb * (fil * ff + Rgb(ft)), 0.0f});
+        return fogged(scene, ray, hollow, {col + bg.rgb * (fil * ff + Rgb(ft)), 0.0f});
     }
     Rgb col, fil(1.0f);
     if (sky) {
@@ -1218,7 +1221,7 @@ TraceResult miss_colour(const PreparedScene& scene, const Ray& ray) {
     // +UA, see above).
     col += bg.rgb * (1 - bg.filter - bg.transmit) * fil;
     fil *= rgb_transm(bg);
-    return fogged(scene, ray, {col, std::min(1.0f, std::fabs(fil.grey()))});
+    return fogged(scene, ray, hollow, {col, std::min(1.0f, std::fabs(fil.grey()))});
 }
 
 }  // namespace povwall::trace

@@ -188,6 +188,8 @@ struct AreaGrid {
 Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray);
 
 // Colour of a ray that hits nothing (background or sky_sphere), fog included.
-TraceResult miss_colour(const PreparedScene& scene, const Ray& ray);
+// The atmosphere's media act only on a hollow ray (not inside a solid object), as
+// POV-Ray.
+TraceResult miss_colour(const PreparedScene& scene, const TraceRay& ray);
 
 }  // namespace povwall::trace

@@ -15,7 +15,7 @@ TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
     ctx_.tie_tolerance = probe;
     const bool found = scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_);
     ctx_.tie_tolerance = 0;
-    if (!found) return miss_colour(scene_, ray.ray);
+    if (!found) return miss_colour(scene_, ray);
     if (probe > 0 && on_pattern_boundary(scene_, hit, probe)) ++ctx_.pattern_ties;
     if (records_.size() <= level) {
         records_.resize(level + 1);
