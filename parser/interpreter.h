@@ -207,7 +207,8 @@ class Interpreter {
     Camera finish_camera(const CameraSpec& spec);
     SkySphere parse_sky_sphere();
     Fog parse_fog();
-    Media parse_media();  // after the keyword media
+    Media parse_media();            // after the keyword media
+    Pigment parse_density_block();  // after the keyword density
     // The function hooks for a call while parsing, told the global settings parsed so
     // far (noise_generator, number_of_waves), as POV-Ray evaluates with them.
     FunctionHooks parse_time_hooks() const;

@@ -903,15 +903,8 @@ Value Interpreter::parse_item_value(const Token& t) {
         if (w == "sky_sphere") return std::make_shared<SkySphere>(parse_sky_sphere());
         if (w == "fog") return std::make_shared<Fog>(parse_fog());
         if (w == "media") return std::make_shared<Media>(parse_media());
-        if (w == "density") {
-            // A density is a pigment (POV-Ray parses it as one); `density { D }` reads
-            // it.
-            Pigment d;
-            d.colour = Colour{};
-            expect_punct('{', "after 'density'");
-            parse_pigment_body(d, '}');
-            return std::make_shared<Pigment>(std::move(d));
-        }
+        // A density is a pigment (POV-Ray parses it as one); `density { D }` reads it.
+        if (w == "density") return std::make_shared<Pigment>(parse_density_block());
         if (w == "pigment") return std::make_shared<Pigment>(parse_pigment_block());
         if (w == "finish") return std::make_shared<Finish>(parse_finish_block());
         if (w == "normal") return std::make_shared<Normal>(parse_normal_block());

@@ -885,6 +885,16 @@ void Interpreter::parse_interior_into(Interior& in) {
     }
 }
 
+// `density { ... }` after the keyword: a pigment that starts empty, black (no medium)
+// unless a pattern or colour is given, as POV-Ray's.
+Pigment Interpreter::parse_density_block() {
+    Pigment d;
+    d.colour = Colour{};
+    expect_punct('{', "after 'density'");
+    parse_pigment_body(d, '}');
+    return d;
+}
+
 // `media { ... }` (POV-Ray 3.7's Parse_Media): an interior's or the atmosphere's.
 Media Interpreter::parse_media() {
     expect_punct('{', "after 'media'");
@@ -955,13 +965,7 @@ Media Interpreter::parse_media() {
         } else if (w == "scattering") {
             unsupported(t, "media scattering");
         } else if (w == "density") {
-            // POV-Ray's density starts as an empty pigment: black (no medium) unless a
-            // pattern or colour is given.
-            Pigment d;
-            d.colour = Colour{};
-            expect_punct('{', "after 'density'");
-            parse_pigment_body(d, '}');
-            m.density.push_back(std::move(d));
+            m.density.push_back(parse_density_block());
         } else {
             expected("a media item or '}'", t);
         }
