@@ -1,5 +1,7 @@
 #include "core/scene.h"
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace povwall {
@@ -25,6 +27,33 @@ Scene take_scene_keeping(Scene&& whole, const std::vector<uint32_t>& keep) {
     taken.objects_left_out = objects.size() - taken.objects.size();
     whole.objects = std::move(objects);
     return taken;
+}
+
+void GlyphOutline::index() {
+    point_xmin = point_ymin = kInfinity;
+    point_xmax = point_ymax = -kInfinity;
+    for (const GlyphSegment& s : segments) {
+        for (int k = 0; k < (s.curve ? 3 : 2); ++k) {
+            point_xmin = std::min(point_xmin, s.x[k]);
+            point_xmax = std::max(point_xmax, s.x[k]);
+            point_ymin = std::min(point_ymin, s.y[k]);
+            point_ymax = std::max(point_ymax, s.y[k]);
+        }
+    }
+    band_words = int((segments.size() + 63) / 64);
+    band_sets.assign(size_t(kBands) * size_t(band_words), 0);
+    const Real height = point_ymax - point_ymin;
+    band_scale = height > 0 && std::isfinite(height) ? kBands / height : 0;
+    for (size_t i = 0; i < segments.size(); ++i) {
+        const GlyphSegment& s = segments[i];
+        Real lo = s.y[0], hi = s.y[0];
+        for (int k = 1; k < (s.curve ? 3 : 2); ++k) {
+            lo = std::min(lo, s.y[k]);
+            hi = std::max(hi, s.y[k]);
+        }
+        for (int b = band(lo); b <= band(hi); ++b)
+            band_sets[size_t(b) * size_t(band_words) + i / 64] |= uint64_t(1) << (i % 64);
+    }
 }
 
 }  // namespace povwall

@@ -418,22 +418,30 @@ struct GlyphOutline {
     // POV-Ray's box of the glyph in em units: the header's, widened by the points.
     Real xmin = 0, ymin = 0, xmax = 0, ymax = 0;
     // The box of the segments' points (in the segments' units): no segment leaves it, so
-    // rays and points outside it skip the per-segment work. Unbounded until
-    // set_point_box() (an outline built without it skips nothing).
+    // rays and points outside it skip the per-segment work. Unbounded until index()
+    // (an outline built without it skips nothing).
     Real point_xmin = -kInfinity, point_xmax = kInfinity;
     Real point_ymin = -kInfinity, point_ymax = kInfinity;
-    void set_point_box() {
-        point_xmin = point_ymin = kInfinity;
-        point_xmax = point_ymax = -kInfinity;
-        for (const GlyphSegment& s : segments) {
-            for (int k = 0; k < (s.curve ? 3 : 2); ++k) {
-                point_xmin = std::min(point_xmin, s.x[k]);
-                point_xmax = std::max(point_xmax, s.x[k]);
-                point_ymin = std::min(point_ymin, s.y[k]);
-                point_ymax = std::max(point_ymax, s.y[k]);
-            }
-        }
+
+    // Segments by horizontal band of the point box: band k's set (bits in file order)
+    // holds every segment whose points' y range meets the band, so a test at height y,
+    // or over a range of heights, visits only the segments that can cross it (a curve
+    // lies in its points' hull). Empty until index().
+    static constexpr int kBands = 32;
+    int band_words = 0;               // 64-bit words per band's set
+    std::vector<uint64_t> band_sets;  // kBands * band_words
+    Real band_scale = 0;              // bands per unit of y
+
+    // The band of height y (monotone in y, so a segment from y0 to y1 is in every band
+    // from band(y0) to band(y1)).
+    int band(Real y) const {
+        const Real f = (y - point_ymin) * band_scale;
+        if (!(f > 0)) return 0;
+        return f >= kBands ? kBands - 1 : int(f);
     }
+    const uint64_t* band_set(int k) const { return band_sets.data() + k * band_words; }
+    // Sets the point box and the bands from the segments.
+    void index();
 };
 struct Glyph {
     std::shared_ptr<const GlyphOutline> outline;

@@ -394,7 +394,7 @@ std::shared_ptr<const GlyphOutline> TrueTypeFont::to_segments(const Outline& o) 
         }
         first = end;
     }
-    g->set_point_box();
+    g->index();
     return g;
 }
 

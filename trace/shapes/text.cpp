@@ -1,5 +1,7 @@
 #include "trace/shapes/text.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "trace/shapes/oracle_math.h"
@@ -58,6 +60,15 @@ int curve_crossings(const GlyphSegment& s, Real x, Real y) {
     return crossings;
 }
 
+// Calls f(i) for every segment i of the set (file order).
+template <class F>
+void for_each_segment(const GlyphOutline& g, const uint64_t* set, F&& f) {
+    for (int w = 0; w < g.band_words; ++w) {
+        for (uint64_t bits = set[w]; bits; bits &= bits - 1)
+            f(size_t(w) * 64 + size_t(std::countr_zero(bits)));
+    }
+}
+
 }  // namespace
 
 int glyph_solve_quad(Real a, Real b, Real c, Real roots[2]) {
@@ -89,8 +100,16 @@ bool inside_glyph_outline(const GlyphOutline& g, Real x, Real y) {
     // it is not: every crossing counts there, so the loop decides.
     if (y > g.point_ymax || y < g.point_ymin || x > g.point_xmax) return false;
     int crossings = 0;
-    for (const GlyphSegment& s : g.segments)
+    auto count = [&](const GlyphSegment& s) {
         crossings += s.curve ? curve_crossings(s, x, y) : line_crossing(s, x, y);
+    };
+    if (g.band_words == 0) {
+        for (const GlyphSegment& s : g.segments) count(s);
+    } else {
+        // The other bands' segments lie wholly above or below y: they count 0.
+        for_each_segment(g, g.band_set(g.band(y)),
+                         [&](size_t i) { count(g.segments[i]); });
+    }
     return (crossings & 1) != 0;
 }
 
@@ -141,7 +160,9 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
     const Point3& P = r.origin;
     const Vector3& D = r.direction;  // POV-Ray does not normalise it: t is world depth
     const Real depth = g.depth;
-    if (std::fabs(D.z) >= kPovEpsilon) {
+    const bool caps = std::fabs(D.z) >= kPovEpsilon;
+    Real y_front = 0, y_back = 0;  // the ray's height at z = 0 and at z = depth
+    if (caps) {
         Real t = -P.z / D.z;
         Real x = P.x + t * D.x, y = P.y + t * D.y;
         const bool front = inside_glyph_outline(outline, x, y);
@@ -149,6 +170,8 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
         t += depth / D.z;
         const Real xb = P.x + t * D.x, yb = P.y + t * D.y;
         const bool back = inside_glyph_outline(outline, xb, yb);
+        y_front = y;
+        y_back = yb;
         if (front && t_front > 0.0 && t_front > kGlyphTolerance)
             out.push_back({t_front, {x, y, 0.0}, kFrontFace});
         if (back && t > 0.0 && t > kGlyphTolerance)
@@ -190,19 +213,18 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
                             outline.point_ymax};
         if (clear_of(bx, by, 4)) return;
     }
-    const int n = int(outline.segments.size());
-    for (int i = 0; i < n; ++i) {
+    auto cross_segment = [&](size_t i) {
         const GlyphSegment& s = outline.segments[i];
-        if (clear_of(s.x, s.y, s.curve ? 3 : 2)) continue;
+        if (clear_of(s.x, s.y, s.curve ? 3 : 2)) return;
         if (!s.curve) {
             const Real d0 = s.x[1] - s.x[0], d1 = s.y[1] - s.y[0];
             const Real den = d1 * D.x - d0 * D.y;
-            if (std::fabs(den) < kPovEpsilon) continue;
+            if (std::fabs(den) < kPovEpsilon) return;
             const Real u = (D.x * (P.y - s.y[0]) - D.y * (P.x - s.x[0])) / den;
-            if (u < 0.0 || u > 1.0) continue;
+            if (u < 0.0 || u > 1.0) return;
             const Real x = s.x[0] + u * d0, y = s.y[0] + u * d1;
-            push_side(use_x ? (x - P.x) / D.x : (y - P.y) / D.y, i, x, y);
-            continue;
+            push_side(use_x ? (x - P.x) / D.x : (y - P.y) / D.y, int(i), x, y);
+            return;
         }
         const Quadratic qx = power_basis(s.x), qy = power_basis(s.y);
         Real roots[2];
@@ -213,9 +235,33 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
             const Real u = roots[j];
             const Real x = u * u * qx.c[0] + u * qx.c[1] + qx.c[2];
             const Real y = u * u * qy.c[0] + u * qy.c[1] + qy.c[2];
-            push_side(use_x ? (x - P.x) / D.x : (y - P.y) / D.y, i, x, y);
+            push_side(use_x ? (x - P.x) / D.x : (y - P.y) / D.y, int(i), x, y);
+        }
+    };
+    // A wall is hit between the caps only: where the ray is there, its height runs from
+    // y_front to y_back, so only the bands of that range can hold a crossing. The margin
+    // covers a crossing's rounding off the projected line, stretched by the slope when
+    // the depth comes from x.
+    constexpr int kMaxWords = 16;
+    if (caps && outline.band_words > 0 && outline.band_words <= kMaxWords) {
+        const Real slope = use_x ? std::max(1.0, std::fabs(D.y / D.x)) : 1.0;
+        const Real extent =
+            std::max({std::fabs(outline.point_ymin), std::fabs(outline.point_ymax),
+                      std::fabs(y_front), std::fabs(y_back)});
+        const Real m = 1e-7 * extent * slope;
+        const Real lo = std::min(y_front, y_back) - m, hi = std::max(y_front, y_back) + m;
+        if (std::isfinite(lo) && std::isfinite(hi)) {
+            const int b0 = outline.band(lo), b1 = outline.band(hi);
+            uint64_t set[kMaxWords] = {};
+            for (int band = b0; band <= b1; ++band) {
+                const uint64_t* bits = outline.band_set(band);
+                for (int w = 0; w < outline.band_words; ++w) set[w] |= bits[w];
+            }
+            for_each_segment(outline, set, cross_segment);
+            return;
         }
     }
+    for (size_t i = 0; i < outline.segments.size(); ++i) cross_segment(i);
 }
 
 Vector3 shape_normal(const Glyph& g, const ShapeHit& h) {
