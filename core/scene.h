@@ -62,6 +62,8 @@ enum class PatternKind : uint8_t {
     Cells,
     Function,        // a user function of x, y, z (PatternSpec::function)
     PigmentPattern,  // the grey of a pigment (PatternSpec::pigment)
+    Slope,           // the surface's slope (and altitude), PatternSpec::slope
+    Aoi,             // the angle between the surface normal and the ray
 };
 
 enum class WaveType : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
@@ -154,6 +156,18 @@ struct PatternSpec {
         uint8_t exterior_type = 1, interior_type = 0;
         Real exterior_factor = 1, interior_factor = 1;
     } fractal;
+    // Slope only (PatternSpec::slope), as POV-Ray keeps it: the unit directions (or
+    // point_at's point), each modulation as (low, high - low), 0 range for none, and the
+    // shares of slope and altitude in the value. `axis` is +-(1 + index) when a
+    // direction is an exact unit axis (POV-Ray reads that component directly), else 0.
+    struct Slope {
+        Vector3 direction{0, 0, 0}, altitude{0, 0, 0};
+        Real low = 0, range = 0, altitude_low = 0, altitude_range = 0;
+        Real share = 1, altitude_share = 0;
+        int8_t axis = 0, altitude_axis = 0;
+        bool point_at = false;
+    };
+    std::shared_ptr<const Slope> slope;               // PatternKind::Slope only
     std::shared_ptr<const ImageMapping> image;        // PatternKind::ImageMap only
     std::shared_ptr<const FunctionProgram> function;  // PatternKind::Function only
     std::shared_ptr<const Pigment> pigment;           // PatternKind::PigmentPattern only

@@ -359,7 +359,9 @@ std::shared_ptr<const FunctionProgram> Interpreter::parse_function_block(
         auto spec = std::make_shared<PatternSpec>();
         expect_punct('{', "after pattern");
         Token k = next();
-        if (!try_pattern_keyword(k, *spec)) expected("a pattern", k);
+        // The patterns that read a surface have none here: POV-Ray refuses them.
+        if (is_word(k, "slope") || is_word(k, "aoi") || !try_pattern_keyword(k, *spec))
+            expected("a pattern", k);
         for (;;) {
             Token m = next();
             if (is_punct(m, '}')) break;

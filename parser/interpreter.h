@@ -173,6 +173,7 @@ class Interpreter {
     void link_textures(LayeredTexture& onto, LayeredTexture&& layers, const Token& at);
     ColourMap parse_colour_map_block();  // after 'color_map'
     bool try_pattern_keyword(const Token& t, PatternSpec& spec);
+    PatternSpec::Slope parse_slope();  // after 'slope' (the pattern)
     bool try_pattern_keyword(const Token& t, HeapValue<PatternSpec>& spec);
     // An image file named in a scene: `[TYPE] "name"` (POV-Ray's Parse_Image), its type
     // (from the keyword, else the name's extension, else the output file type) and the

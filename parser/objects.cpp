@@ -48,12 +48,9 @@ void transform_textures(LayeredTexture& layers, const Transform& t) {
     for (Texture& tex : layers) {
         transform_pigment(tex.pigment, t);
         if (tex.normal) transform_normal(*tex.normal, t);
+        // Texture map entries are evaluated at the map pattern's point (as POV-Ray's):
+        // they move with it.
         if (tex.map_pattern) transform_pattern(*tex.map_pattern, t);
-        // Texture map entries are whole textures evaluated at the world point: they move
-        // too.
-        if (tex.map.allocated()) {
-            for (auto& entry : tex.map.edit().entries) transform_textures(entry, t);
-        }
     }
 }
 

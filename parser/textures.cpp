@@ -53,9 +53,9 @@ constexpr PatternName kPatterns[] = {
 
 bool is_unsupported_pattern(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "material_map", "object",       "slope", "aoi",    "density_file",  "facets",
-        "pavement",     "tiling",       "julia", "magnet", "image_pattern", "tiles",
-        "proportion",   "gradient_map", "cubic", "square", "triangular"};
+        "material_map", "object",       "density_file", "facets",        "pavement",
+        "tiling",       "julia",        "magnet",       "image_pattern", "tiles",
+        "proportion",   "gradient_map", "cubic",        "square",        "triangular"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -184,6 +184,68 @@ ColourMap Interpreter::parse_colour_map_block() {
     return map;
 }
 
+// After `slope`: `<direction>`, or `{ [point_at] <vector> [, low [, high]] [altitude
+// <vector> [, low [, high]]] }` (POV-Ray's Parse_Pattern).
+PatternSpec::Slope Interpreter::parse_slope() {
+    PatternSpec::Slope s;
+    // An optional `, low [, high]` pair as (low, high - low); equal ends mean none.
+    auto parse_range = [&](Real& low, Real& range, const char* what) {
+        Real lo = 0, hi = 0;
+        accept_punct(',');
+        if (starts_float(peek())) lo = parse_float();
+        accept_punct(',');
+        if (starts_float(peek())) hi = parse_float();
+        const Token& at = peek();
+        if (hi != 0 && hi == lo) {
+            warn(at, std::string("Zero ") + what + " range, ignoring.");
+            lo = hi = 0;
+        }
+        low = lo;
+        range = hi - lo;
+    };
+    if (accept_punct('{')) {
+        s.point_at = accept_word("point_at");
+        s.direction = parse_vector();
+        parse_range(s.low, s.range, "slope");
+        const Token t = peek();
+        if (is_word(t, "altitude")) {
+            if (s.point_at)
+                error(t,
+                      "Keyword 'altitude' cannot be used with 'point_at' in slope "
+                      "pattern.");
+            next();
+            s.altitude = parse_vector();
+            parse_range(s.altitude_low, s.altitude_range, "gradient");
+        }
+        expect_punct('}', "to close the slope pattern");
+    } else {
+        s.direction = parse_vector();
+    }
+    if (s.point_at) {
+        s.share = 1;
+        s.altitude_share = 0;
+        return s;
+    }
+    const Real slope_len = length(s.direction), altitude_len = length(s.altitude);
+    if (slope_len != 0) s.direction = s.direction / slope_len;
+    if (altitude_len != 0) s.altitude = s.altitude / altitude_len;
+    const Real total = slope_len + altitude_len;
+    if (total == 0) error(peek(), "Zero length for both slope and gradient.");
+    s.share = slope_len / total;
+    s.altitude_share = 1.0 - s.share;
+    // An exact unit axis is read as that component (the same value, POV-Ray's shortcut).
+    auto axis_of = [](const Vector3& v) -> int8_t {
+        for (int i = 0; i < 3; ++i) {
+            if (v[i] == 1.0) return int8_t(i + 1);
+            if (v[i] == -1.0) return int8_t(-(i + 1));
+        }
+        return 0;
+    };
+    s.axis = axis_of(s.direction);
+    s.altitude_axis = axis_of(s.altitude);
+    return s;
+}
+
 bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
     if (t.kind != TokenKind::Word) return false;
     std::string_view w = t.text;
@@ -193,6 +255,15 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
         // `function { F(x, y, z) }`).
         spec.kind = PatternKind::Function;
         spec.function = parse_function_block(true);
+        return true;
+    }
+    if (w == "slope") {
+        spec.kind = PatternKind::Slope;
+        spec.slope = std::make_shared<const PatternSpec::Slope>(parse_slope());
+        return true;
+    }
+    if (w == "aoi") {
+        spec.kind = PatternKind::Aoi;
         return true;
     }
     if (w == "pigment_pattern") {

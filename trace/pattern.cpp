@@ -410,6 +410,41 @@ Real crackle(const PatternSpec& s, const Point3& p, int gen) {
 // at 1.
 Real clip_density(Real r) { return r < 0.0 ? 1.0 : (r > 1.0 ? 0.0 : 1.0 - r); }
 
+// POV-Ray's slope pattern: the angle of the surface normal to a direction (or to the
+// way toward point_at) as 0 (facing away) .. 1 (facing along it), rescaled to its
+// low/high range, then mixed with the altitude of the pattern point along another
+// direction; 0 where there is no surface.
+Real slope_value(const PatternSpec::Slope& s, const Point3& p, const SurfaceAtHit* at) {
+    if (!at) return 0;
+    auto along = [](const Vector3& v, int axis, const Vector3& direction) {
+        if (axis > 0) return v[axis - 1];
+        if (axis < 0) return -v[-axis - 1];
+        return dot(v, direction);
+    };
+    Real slope = s.point_at ? dot(at->normal, normalize(s.direction - at->point))
+                            : along(at->normal, s.axis, s.direction);
+    slope = std::clamp(slope, -1.0, 1.0);
+    slope = (std::asin(slope) / kPi * 2 + 1.0) * 0.5;
+    if (s.range != 0) slope = (slope - s.low) / s.range;
+    // 1 is common exactly (a surface facing the direction): kept at the map's top.
+    auto wrap = [](Real v) {
+        return v < 0.0 ? 1.0 + std::fmod(v, 1.0) : std::fmod(v, 1.0);
+    };
+    if (s.altitude_share == 0) return slope == 1.0 ? slope - kEpsilon : wrap(slope);
+    Real altitude = along(p, s.altitude_axis, s.altitude);
+    if (s.altitude_range != 0) altitude = (altitude - s.altitude_low) / s.altitude_range;
+    const Real value = s.share * slope + s.altitude_share * altitude;
+    return value - 1.0 < kEpsilon && value >= 1.0 ? value - kEpsilon : wrap(value);
+}
+
+// POV-Ray's aoi: the angle between the surface normal and the ray, 0..1 for 0..180
+// degrees (the normal faces the ray, so a surface hit head-on gives 1).
+Real aoi_value(const SurfaceAtHit* at) {
+    if (!at) return 0;
+    const Real c = dot(normalize(at->normal), normalize(at->ray_direction));
+    return std::acos(std::clamp(c, -1.0, 1.0)) / kPi;
+}
+
 Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
     int gen = resolve_generator(s, env);
     const Warp* turb = classic_turbulence(s);
@@ -442,6 +477,10 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
         case PatternKind::PigmentPattern:
             // Evaluated at this pattern's point: its own transforms go on top of ours.
             return evaluate_pigment(*s.pigment, p, env).rgb.grey();
+        case PatternKind::Slope:
+            return slope_value(*s.slope, p, env.surface);
+        case PatternKind::Aoi:
+            return aoi_value(env.surface);
         case PatternKind::Cells:
             return std::min(
                 pattern_random(size_t(hash3d(int(std::floor(p.x + kEpsilon)),
@@ -648,14 +687,16 @@ Real value_at(const PatternSpec& spec, const Point3& p, const PatternEnv& env) {
 
 namespace {
 
+// Patterns called from functions see no surface (POV-Ray passes none).
 Real pattern_hook(const PatternSpec& spec, const Point3& p, const void* context) {
-    return evaluate_pattern(spec, p, *static_cast<const PatternEnv*>(context));
+    return evaluate_pattern(spec, p,
+                            static_cast<const PatternEnv*>(context)->at_surface(nullptr));
 }
 
 void pigment_hook(const Pigment& pigment, const Point3& p, const void* context,
                   float out[5]) {
-    const Colour c =
-        evaluate_pigment(pigment, p, *static_cast<const PatternEnv*>(context));
+    const Colour c = evaluate_pigment(
+        pigment, p, static_cast<const PatternEnv*>(context)->at_surface(nullptr));
     out[0] = c.rgb.r, out[1] = c.rgb.g, out[2] = c.rgb.b;
     out[3] = c.filter, out[4] = c.transmit;
 }
@@ -703,6 +744,18 @@ MapLookup search_map(const float* values, int count, Real value) {
     if (r.prev != r.cur)
         r.fraction = (value - values[r.prev]) / (values[r.cur] - values[r.prev]);
     return r;
+}
+
+Point3 pattern_point(const PatternSpec& spec, const Point3& world) {
+    return detail::warp_point(spec, world);
+}
+
+Vector3 normal_into_pattern(const PatternSpec& spec, const Vector3& n) {
+    return detail::warp_normal(spec, n);
+}
+
+Vector3 normal_out_of_pattern(const PatternSpec& spec, const Vector3& n) {
+    return detail::unwarp_normal(spec, n);
 }
 
 MapPick pick_map_entries(const PatternSpec& spec, const float* values, int count,

@@ -20,6 +20,13 @@
 
 namespace povwall::trace {
 
+// A hit as the surface patterns see it (POV-Ray's Intersection for slope and aoi).
+struct SurfaceAtHit {
+    Vector3 normal;  // faces the ray; a layer's normal pattern perturbs it (PNormal)
+    Point3 point;    // world
+    Vector3 ray_direction;
+};
+
 struct PatternEnv {
     // global_settings noise_generator, used when a pattern says 0.
     int noise_generator = 2;
@@ -27,6 +34,15 @@ struct PatternEnv {
     int number_of_waves = 10;
     // +Q5 and below: a pigment's quick_color stands for it (POV-Ray's Compute_Pigment).
     bool quick_colours = false;
+    // The surface being shaded, for the patterns that read it (slope, aoi); none in
+    // media, functions and the sky, where those patterns are 0 (as POV-Ray's).
+    const SurfaceAtHit* surface = nullptr;
+    // A copy of this environment that sees `at` (or no surface).
+    PatternEnv at_surface(const SurfaceAtHit* at) const {
+        PatternEnv e = *this;
+        e.surface = at;
+        return e;
+    }
 };
 
 // What user functions (core/function.h) call to evaluate `pattern { }` and `pigment { }`
@@ -66,5 +82,11 @@ struct MapPick {
 };
 MapPick pick_map_entries(const PatternSpec& spec, const float* values, int count,
                          const Point3& world, const PatternEnv& env);
+// The point in `spec`'s pattern space (its transforms and warps applied to `world`).
+Point3 pattern_point(const PatternSpec& spec, const Point3& world);
+// A normal into `spec`'s pattern space and back (POV-Ray's Warp_Normal, UnWarp_Normal),
+// for normals perturbed inside texture maps.
+Vector3 normal_into_pattern(const PatternSpec& spec, const Vector3& n);
+Vector3 normal_out_of_pattern(const PatternSpec& spec, const Vector3& n);
 
 }  // namespace povwall::trace

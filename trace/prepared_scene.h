@@ -54,6 +54,18 @@ struct Material {
     // A blob with textures on its components (null: none): shading blends the elements'
     // materials by the weights blob_texture_weights() gives.
     const struct BlobTextureBlend* blob_blend = nullptr;
+    // A texture_map entry's stand-in (shading only): the map patterns it is nested in,
+    // innermost first (its patterns are evaluated at the innermost's point, POV-Ray
+    // nests pattern spaces); null: at the hit point.
+    const struct TextureNesting* nesting = nullptr;
+};
+
+// One texture_map level a stand-in material is shaded in: the map pattern and the
+// point in its space (shading keeps these on the stack while it shades the entry).
+struct TextureNesting {
+    const PatternSpec* pattern;
+    Point3 point;
+    const TextureNesting* outer;
 };
 
 // A blob's per-element materials (POV-Ray's Blob::Determine_Textures).

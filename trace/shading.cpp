@@ -188,13 +188,42 @@ bool light_at(const Light& l, const Point3& p, LightSample& s) {
 // POV-Ray's +Q0 and +Q1 (its FULL_AMBIENT): no lighting, no rays; a surface is the
 // colour of its layers' pigments as seen through the transparent ones, opaque.
 void pigment_only(const PreparedScene& scene, const Material& m, const Point3& P,
-                  ShadingRecord& out);
+                  const PatternEnv& env, ShadingRecord& out);
 
-Colour eval_pigment(const PreparedScene& scene, const Pigment& p, const Point3& at) {
+Colour eval_pigment(const Pigment& p, const Point3& at, const PatternEnv& env) {
     if (pigment_is_solid(p)) {
         return p.colour;
     }
-    return evaluate_pigment(p, at, scene.pattern_env());
+    return evaluate_pigment(p, at, env);
+}
+
+// Where a material's patterns are evaluated: the hit point, or for a texture_map entry
+// the map pattern's point.
+const Point3& texture_point(const Material& m, const Hit& hit) {
+    return m.nesting ? m.nesting->point : hit.point;
+}
+
+// A layer's normal perturbed as POV-Ray does inside texture maps: the normal goes into
+// each enclosing map pattern's space (outermost first), is perturbed there, and comes
+// back out.
+Vector3 perturb_nested(const Normal& normal, const Point3& at, Vector3 n,
+                       const PatternEnv& env, const TextureNesting* nesting) {
+    if (!nesting) return perturb_normal(normal, at, n, env);
+    constexpr int kMaxDepth = 64;
+    const TextureNesting* chain[kMaxDepth];
+    int depth = 0;
+    for (const TextureNesting* p = nesting; p && depth < kMaxDepth; p = p->outer)
+        chain[depth++] = p;
+    for (int i = depth - 1; i >= 0; --i) n = normal_into_pattern(*chain[i]->pattern, n);
+    n = perturb_normal(normal, at, n, env);
+    for (int i = 0; i < depth; ++i) n = normal_out_of_pattern(*chain[i]->pattern, n);
+    return n;
+}
+
+// The surface as POV-Ray's patterns see a hit: its normal turned to face `direction`.
+SurfaceAtHit surface_facing(const Hit& hit, const Vector3& direction) {
+    return {dot(hit.normal, direction) > 0 ? -hit.normal : hit.normal, hit.point,
+            direction};
 }
 
 Rgb rgb_transm(const Colour& c) { return c.rgb * c.filter + Rgb(c.transmit); }
@@ -211,7 +240,7 @@ bool shows_interior_texture(const Material& m, const Hit& hit, const Ray& ray) {
 }
 
 void pigment_only(const PreparedScene& scene, const Material& m, const Point3& P,
-                  ShadingRecord& out) {
+                  const PatternEnv& env, ShadingRecord& out) {
     const float adc = scene.scene().settings.adc_bailout;
     Rgb fil(1.0f);
     float trans = 1;
@@ -221,7 +250,7 @@ void pigment_only(const PreparedScene& scene, const Material& m, const Point3& P
     }
     const LayeredTexture& layers = texture_of(m);
     for (int li = int(layers.size()) - 1; li >= 0 && trans > adc; --li) {
-        const Colour lay = eval_pigment(scene, layers[size_t(li)].pigment, P);
+        const Colour lay = eval_pigment(layers[size_t(li)].pigment, P, env);
         out.local = lay.rgb;  // each layer seen replaces the one above
         fil *= rgb_transm(lay);
         trans = std::min(1.0f, std::fabs(fil.grey()));
@@ -309,20 +338,26 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
         for (int i = 0; i < count; ++i)
             total += has_values ? t.map->values[size_t(i)] : 1.0f;
         const size_t entries = size_t(count);
+        const TextureNesting nest{&*t.map_pattern,
+                                  pattern_point(*t.map_pattern, texture_point(m, hit)),
+                                  m.nesting};
         std::vector<Material> subs(entries, m);
         std::vector<const Material*> used(entries);
         std::vector<float> weights(entries);
         for (int i = 0; i < count; ++i) {
             subs[size_t(i)].texture = &t.map->entries[size_t(i)];
+            subs[size_t(i)].nesting = &nest;
             used[size_t(i)] = &subs[size_t(i)];
             weights[size_t(i)] = (has_values ? t.map->values[size_t(i)] : 1.0f) / total;
         }
         spawn_weighted(scene, ray, hit, used.data(), weights.data(), count, out);
         return true;
     }
-    MapPick pick =
-        pick_map_entries(*t.map_pattern, has_values ? t.map->values.data() : nullptr,
-                         count, hit.point, scene.pattern_env());
+    const SurfaceAtHit surface = surface_facing(hit, ray.ray.direction);
+    MapPick pick = pick_map_entries(
+        *t.map_pattern, has_values ? t.map->values.data() : nullptr, count,
+        texture_point(m, hit), scene.pattern_env().at_surface(&surface));
+    const TextureNesting nest{&*t.map_pattern, pick.point, m.nesting};
     const int entries[2] = {pick.lookup.prev, pick.lookup.cur};
     const float fraction = float(pick.lookup.fraction);
     Material subs[2] = {m, m};
@@ -336,6 +371,7 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
         if ((e == 0 ? float(1 - pick.lookup.fraction) : fraction) <= 0) continue;
         if (e == 1 && entries[1] == entries[0]) continue;
         subs[e].texture = &t.map->entries[size_t(std::clamp(entries[e], 0, count - 1))];
+        subs[e].nesting = &nest;
         used[n] = &subs[e];
         weights[n++] = w;
     }
@@ -406,11 +442,15 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     if (spawn_texture_map(scene, ray, hit, out)) return;
     const Scene& sc = scene.scene();
     const Material& m = *hit.material;
-    if (!quality.lighting()) return pigment_only(scene, m, hit.point, out);
     const Vector3 D = ray.ray.direction;
     const Point3 P = hit.point;
-    // Normals face the incoming ray, as POV-Ray flips them.
-    const Vector3 N = dot(hit.normal, D) > 0 ? -hit.normal : hit.normal;
+    const Point3 Ptex = texture_point(m, hit);  // where the patterns are evaluated
+    // Normals face the incoming ray, as POV-Ray flips them. The surface patterns see the
+    // normal as the layers above have perturbed it so far (POV-Ray's PNormal).
+    SurfaceAtHit surface = surface_facing(hit, D);
+    const Vector3 N = surface.normal;
+    const PatternEnv env = scene.pattern_env().at_surface(&surface);
+    if (!quality.lighting()) return pigment_only(scene, m, Ptex, env, out);
     const bool legacy = sc.language_version < 370;
     const float adc = sc.settings.adc_bailout;
     // A plain material (see Material::plain) is one layer read from the material itself.
@@ -435,11 +475,13 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     reflection_normals.clear();
     for (int li = nlayers - 1; li >= 0 && trans > adc; --li) {
         const Texture* tex = layers ? &(*layers)[size_t(li)] : nullptr;
-        const Colour lay = tex ? eval_pigment(scene, tex->pigment, P) : m.plain_colour;
         Vector3 Nl = N;
         if (tex && tex->normal && quality.normals()) {
-            Nl = perturb_normal(*tex->normal, P, N, scene.pattern_env());
+            Nl = perturb_nested(*tex->normal, Ptex, N, env, m.nesting);
+            surface.normal = Nl;
         }
+        // After the layer's normal, as POV-Ray (a slope pigment sees it).
+        const Colour lay = tex ? eval_pigment(tex->pigment, Ptex, env) : m.plain_colour;
         if (li == nlayers - 1) top_normal = Nl;
         const float att = legacy ? 1 - (lay.filter * max3(lay.rgb) + lay.transmit)
                                  : 1 - lay.filter - lay.transmit;
@@ -816,20 +858,32 @@ namespace {
 
 // Faked caustics: a layer lets more light through where the shadow ray crosses the
 // surface head on (POV-Ray's 1 + |N.D|^caustics, with the layer's perturbed normal).
+// `nesting` holds the texture maps the layer is in (null: none); `surface` (the layers'
+// PNormal), when given, takes the perturbed normal.
 float caustic_gain(const PreparedScene& scene, const Texture* t, float caustics,
-                   const Hit& hit, const Ray& ray) {
+                   const Hit& hit, const TextureNesting* nesting, const Ray& ray,
+                   SurfaceAtHit* surface = nullptr) {
     // Turned to face the shadow ray before it is perturbed, as POV-Ray's shadow texture
     // does (a bump is not mirrored with the normal, so the side matters).
-    Vector3 n = dot(hit.normal, ray.direction) > 0 ? -hit.normal : hit.normal;
-    if (t && t->normal) n = perturb_normal(*t->normal, hit.point, n, scene.pattern_env());
+    SurfaceAtHit facing = surface_facing(hit, ray.direction);
+    Vector3 n = facing.normal;
+    if (t && t->normal) {
+        n = perturb_nested(*t->normal, nesting ? nesting->point : hit.point, n,
+                           scene.pattern_env().at_surface(surface ? surface : &facing),
+                           nesting);
+        if (surface) surface->normal = n;
+    }
     return float(1 + std::pow(std::fabs(dot(n, ray.direction)), Real(caustics)));
 }
 
 // What a surface with `layers` lets through toward a light (POV-Ray's shadow texture):
 // the product of its layers' filter and transmit; a patterned texture (texture_map,
-// checker of textures) blends its two entries around the pattern value.
+// checker of textures) blends its two entries around the pattern value, evaluated in
+// its pattern's space (`nesting`: the maps the layers are in, null at the top).
 Rgb shadow_filter(const PreparedScene& scene, const LayeredTexture& layers,
-                  float caustics, const Hit& hit, const Ray& ray) {
+                  float caustics, const Hit& hit, const TextureNesting* nesting,
+                  const Ray& ray) {
+    const Point3& at = nesting ? nesting->point : hit.point;
     if (layers.size() == 1 && layers.front().map_pattern &&
         !layers.front().map->entries.empty()) {
         const Texture& t = layers.front();
@@ -839,34 +893,41 @@ Rgb shadow_filter(const PreparedScene& scene, const LayeredTexture& layers,
             // Every entry, weighted by its value (POV-Ray's average texture).
             Rgb sum(0.0f);
             float total = 0;
+            const TextureNesting inner{&*t.map_pattern, pattern_point(*t.map_pattern, at),
+                                       nesting};
             for (int i = 0; i < count; ++i) {
                 const float v = has_values ? t.map->values[size_t(i)] : 1.0f;
-                sum +=
-                    shadow_filter(scene, t.map->entries[size_t(i)], caustics, hit, ray) *
-                    v;
+                sum += shadow_filter(scene, t.map->entries[size_t(i)], caustics, hit,
+                                     &inner, ray) *
+                       v;
                 total += v;
             }
             return sum * (1 / total);
         }
+        const SurfaceAtHit surface = surface_facing(hit, ray.direction);
         const MapPick pick =
             pick_map_entries(*t.map_pattern, has_values ? t.map->values.data() : nullptr,
-                             count, hit.point, scene.pattern_env());
+                             count, at, scene.pattern_env().at_surface(&surface));
+        const TextureNesting inner{&*t.map_pattern, pick.point, nesting};
         const auto entry = [&](int i) -> const LayeredTexture& {
             return t.map->entries[size_t(std::clamp(i, 0, count - 1))];
         };
-        Rgb f = shadow_filter(scene, entry(pick.lookup.cur), caustics, hit, ray);
+        Rgb f = shadow_filter(scene, entry(pick.lookup.cur), caustics, hit, &inner, ray);
         if (pick.lookup.prev != pick.lookup.cur) {
             const float w = float(pick.lookup.fraction);
-            f = f * w +
-                shadow_filter(scene, entry(pick.lookup.prev), caustics, hit, ray) *
-                    (1 - w);
+            f = f * w + shadow_filter(scene, entry(pick.lookup.prev), caustics, hit,
+                                      &inner, ray) *
+                            (1 - w);
         }
         return f;
     }
     Rgb f(1.0f);
+    SurfaceAtHit surface = surface_facing(hit, ray.direction);
+    const PatternEnv env = scene.pattern_env().at_surface(&surface);
     for (const Texture& t : layers) {
-        f *= rgb_transm(eval_pigment(scene, t.pigment, hit.point));
-        if (caustics != 0) f *= caustic_gain(scene, &t, caustics, hit, ray);
+        f *= rgb_transm(eval_pigment(t.pigment, at, env));
+        if (caustics != 0)
+            f *= caustic_gain(scene, &t, caustics, hit, nesting, ray, &surface);
     }
     return f;
 }
@@ -930,9 +991,9 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
         const Material& m = *hit.material;
         bool black = m.opaque;
         if (!black && shows_interior_texture(m, hit, ray)) {
-            state.filter *=
-                shadow_filter(scene, *m.interior_texture,
-                              m.interior ? m.interior->caustics : 0.0f, hit, ray);
+            state.filter *= shadow_filter(scene, *m.interior_texture,
+                                          m.interior ? m.interior->caustics : 0.0f, hit,
+                                          nullptr, ray);
         } else if (!black && m.blend) {
             // The corners' filters weighted (POV-Ray sums the weighted shadow colours,
             // whose filter is the sum of the weights used).
@@ -945,7 +1006,8 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
                 if (w[k] < adc) continue;
                 const Material& c = *m.blend->corners[k];
                 sum += shadow_filter(scene, texture_of(c),
-                                     m.interior ? m.interior->caustics : 0.0f, hit, ray) *
+                                     m.interior ? m.interior->caustics : 0.0f, hit,
+                                     nullptr, ray) *
                        w[k];
                 used += w[k];
             }
@@ -959,7 +1021,8 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
             float used = 0;
             for (int k = 0; k < n; ++k) {
                 sum += shadow_filter(scene, texture_of(*mats[size_t(k)]),
-                                     m.interior ? m.interior->caustics : 0.0f, hit, ray) *
+                                     m.interior ? m.interior->caustics : 0.0f, hit,
+                                     nullptr, ray) *
                        w[size_t(k)];
                 used += w[size_t(k)];
             }
@@ -968,10 +1031,11 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
             state.filter *= rgb_transm(m.plain_colour);
             if (m.interior && m.interior->caustics != 0)
                 state.filter *=
-                    caustic_gain(scene, nullptr, m.interior->caustics, hit, ray);
+                    caustic_gain(scene, nullptr, m.interior->caustics, hit, nullptr, ray);
         } else if (!black) {
-            state.filter *= shadow_filter(
-                scene, texture_of(m), m.interior ? m.interior->caustics : 0.0f, hit, ray);
+            state.filter *= shadow_filter(scene, texture_of(m),
+                                          m.interior ? m.interior->caustics : 0.0f, hit,
+                                          nullptr, ray);
         }
         if (!black && state.inside.size > 0 && scene.has_interior_media() &&
             scene.plan().quality.atmosphere() && hollow_ray(state.inside)) {
