@@ -884,8 +884,9 @@ void Interpreter::parse_top_level_item(const Token& t) {
             return;
         }
         if (w == "media") {
-            if (light_attenuated_by_media_)
-                unsupported(t, "atmospheric media with a light's media_attenuation");
+            if (area_light_attenuated_by_media_)
+                unsupported(t,
+                            "atmospheric media with an area light's media_attenuation");
             scene_.atmosphere_media.push_back(parse_media());
             return;
         }

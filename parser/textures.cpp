@@ -963,7 +963,30 @@ Media Interpreter::parse_media() {
         } else if (w == "emission") {
             m.emission = parse_colour_value().rgb;
         } else if (w == "scattering") {
-            unsupported(t, "media scattering");
+            // scattering { type, colour [eccentricity e] [extinction x] }
+            expect_punct('{', "after 'scattering'");
+            m.scattering_loc = sources_.location(t);
+            const Token type_at = peek();
+            m.scattering_type = parse_int();
+            if (m.scattering_type < 1 || m.scattering_type > 5)
+                warn(type_at, "unknown atmospheric scattering type");  // as type 1
+            accept_punct(',');
+            m.scattering = parse_colour_value().rgb;
+            for (;;) {
+                const Token k = next();
+                if (is_punct(k, '}')) break;
+                const std::string_view kw =
+                    k.kind == TokenKind::Word ? k.text : std::string_view();
+                if (kw == "eccentricity") {
+                    if (m.scattering_type != 5)
+                        error(k, "eccentricity only applies to scattering type 5");
+                    m.eccentricity = float(parse_float());
+                } else if (kw == "extinction") {
+                    m.scattering_extinction = float(parse_float());
+                } else {
+                    expected("eccentricity, extinction or '}'", k);
+                }
+            }
         } else if (w == "density") {
             m.density.push_back(parse_density_block());
         } else {

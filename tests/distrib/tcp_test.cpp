@@ -358,6 +358,30 @@ TEST(Tcp, MediaInEveryModeEqualOneProcess) {
     }
 }
 
+// Scattering media light their samples with shadow rays: black boxes trace every
+// sample method 3's refinement may ask for as a child shadow ray and take POV-Ray's
+// adaptive rule once all are in (trace/shading.h, replay_media), the one-process value.
+// Spot, cylinder and area lights, media_attenuation, rays that miss everything.
+TEST(Tcp, MediaScatteringInEveryModeEqualOneProcess) {
+    for (const char* name : {"media_scattering_types", "media_scattering_atmosphere",
+                             "media_scattering_methods", "media_scattering_legacy",
+                             "media_scattering_eccentric"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        std::vector<std::string> modes = {"--mode screen --procs 2", "--boxes 2x2x2",
+                                          "--boxes 3x1x2 --results parents",
+                                          "--boxes 2x2x2 --procs 2"};
+        // Not yet over TCP with these walls: a shadow ray from a sample on a container's
+        // surface keeps the container in its interior stack; a worker that parsed only
+        // its part of the scene knows no interior of an object it left out, so the
+        // container's media no longer dim that ray there (trace/shading.h, wire/items.h).
+        if (std::string(name) != "media_scattering_types" &&
+            std::string(name) != "media_scattering_methods")
+            modes.push_back("--boxes 3x1x2 --procs 2 --results parents");
+        expect_same_images(scene, "-W 32 -H 24 -A", modes);
+    }
+}
+
 // Quality levels change what is traced (no shadows, no refraction, pigments only): every
 // mode leaves out the same rays.
 TEST(Tcp, QualityLevelsInEveryModeEqualOneProcess) {
