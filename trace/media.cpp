@@ -427,7 +427,7 @@ MediaEffect media_effect(std::span<const Media* const> list, const Ray& ray, Rea
     const uint64_t stride =
         adaptive ? uint64_t(S + 1) + uint64_t(S) * per_sub : uint64_t(im->samples_min);
     // Black boxes trace the shadow rays of every sample refinement may ask for.
-    if (lights && lights->every_sample) threshold = -1;
+    if (lights && lights->every_sample && scattering) threshold = -1;
     for (size_t i = 0; i < intervals.size(); ++i) {
         const SampleInterval& iv = intervals[i];
         const uint64_t base = i * stride;

@@ -401,7 +401,8 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     staging.clear();
     shadows.collect = &staging;
     spawn_hit(scene, ray, hit, out, shadows, true);
-    if (staging.media_samples.empty()) return;
+    if (!staging.media_replay) return;
+    out.media_replay = true;
     out.media_first = out.children.size();
     out.children.insert(out.children.end(), staging.children.begin(),
                         staging.children.end());
@@ -718,8 +719,7 @@ TraceResult combine_children(const ShadingRecord& record, const TraceResult* res
     r.colour = record.local;
     r.transmit = record.local_transmit;
     // Media samples' shadow children count through record.fog (replay_media()).
-    const size_t n =
-        record.media_samples.empty() ? record.children.size() : record.media_first;
+    const size_t n = record.media_replay ? record.media_first : record.children.size();
     for (size_t i = 0; i < n; ++i) {
         const ChildRay& c = record.children[i];
         const TraceResult& x = results[i];
@@ -868,6 +868,11 @@ class SampleLight final : public MediaLightProbe {
 FogEffect viewing_media(const PreparedScene& scene, std::span<const Media* const> list,
                         uint8_t which, const TraceRay& ray, Real depth,
                         const MediaShadows& shadows) {
+    if (shadows.collect) {
+        // Its value comes from replay_media() once the shadow rays are in.
+        for (const Media* m : list)
+            if (m->scatters()) shadows.collect->media_replay = true;
+    }
     SampleLight probe(scene, ray, shadows, which);
     MediaLights lights{scene.scene().lights, &probe, shadows.collect != nullptr};
     return as_fog_effect(
@@ -933,7 +938,7 @@ FogEffect along_ray_effect(const PreparedScene& scene, const TraceRay& ray, Real
 
 void replay_media(const PreparedScene& scene, const TraceRay& ray, ShadingRecord& record,
                   const TraceResult* results) {
-    if (record.media_samples.empty()) return;
+    if (!record.media_replay) return;
     thread_local std::vector<uint32_t> order;
     const auto& keys = record.media_samples;
     order.resize(keys.size());
@@ -1431,6 +1436,7 @@ bool spawn_miss(const PreparedScene& scene, const TraceRay& ray, ShadingRecord& 
     shadows.collect = &out;
     out.fog = along_missing_ray(scene, ray, shadows);
     out.media_miss = true;
+    out.media_replay = true;
     return true;
 }
 

@@ -124,12 +124,13 @@ struct ShadingRecord {
     FogEffect fog;  // applied to the combined colour
     // Black boxes: children from media_first on are the shadow rays of the media
     // samples along the ray (media_samples[i] says which is children[media_first + i]);
-    // replay_media() sets `fog` from their results. The stretch ends at media_depth
-    // (a hit) or is a ray that missed everything (media_miss).
+    // replay_media() sets `fog` from their results (media_replay: scattering media
+    // were met). The stretch ends at media_depth (a hit) or is a ray that missed
+    // everything (media_miss).
     std::vector<MediaSampleKey> media_samples;
     size_t media_first = 0;
     Real media_depth = 0;
-    bool media_miss = false;
+    bool media_miss = false, media_replay = false;
     void clear() {
         local = Rgb{};
         local_transmit = 0;
@@ -139,6 +140,7 @@ struct ShadingRecord {
         media_first = 0;
         media_depth = 0;
         media_miss = false;
+        media_replay = false;
     }
 };
 
