@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
-#include <optional>
 
 #include "core/noise.h"
 #include "trace/media.h"
