@@ -382,6 +382,7 @@ TEST(Tcp, MediaScatteringInEveryModeEqualOneProcess) {
         {"media_scattering_eccentric",
          {"--boxes 2x2x2 --procs 2", "--boxes 3x1x2 --procs 2 --results parents"}},
         {"media_density_map", {"--boxes 2x2x2 --procs 2"}},
+        {"media_scattering_area", {"--boxes 2x2x2 --procs 2"}},
     };
     for (const auto& scene : scenes) {
         SCOPED_TRACE(scene.name);
