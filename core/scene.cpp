@@ -56,4 +56,26 @@ void GlyphOutline::index() {
     }
 }
 
+namespace {
+const Media* scattering_in(const Object& o) {
+    if (o.interior) {
+        for (const Media& m : o.interior->media)
+            if (m.scatters()) return &m;
+    }
+    if (const Csg* c = std::get_if<Csg>(&o.shape)) {
+        for (const Object& child : c->children)
+            if (const Media* m = scattering_in(child)) return m;
+    }
+    return nullptr;
+}
+}  // namespace
+
+const Media* first_scattering_media(const Scene& scene) {
+    for (const Media& m : scene.atmosphere_media)
+        if (m.scatters()) return &m;
+    for (const Object& o : scene.objects)
+        if (const Media* m = scattering_in(o)) return m;
+    return nullptr;
+}
+
 }  // namespace povwall

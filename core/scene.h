@@ -269,7 +269,16 @@ struct Media {
     // object's transforms move its interior's densities).
     std::vector<Pigment> density;
     bool collect = true;
-    Rgb extinction() const { return absorption; }  // scattering is refused yet
+    // `scattering { type, colour [eccentricity e] [extinction x] }`: light from the
+    // scene's lights scattered toward the viewer. Types 1 isotropic, 2 Mie haze, 3 Mie
+    // murky, 4 Rayleigh, 5 Henyey-Greenstein (eccentricity); others act as type 1.
+    int scattering_type = 1;
+    Rgb scattering{0.0f};
+    float eccentricity = 0;
+    float scattering_extinction = 1;  // how much the scattering also dims (POV's sc_ext)
+    SourceLoc scattering_loc;         // where it was given (refusals name it)
+    bool scatters() const { return !scattering.is_black(); }
+    Rgb extinction() const { return absorption + scattering * scattering_extinction; }
 };
 
 struct Interior {
@@ -881,6 +890,10 @@ inline size_t object_node_count(const Object& o) {
     }
     return n;
 }
+
+// The first media that scatters light (atmosphere first, then the objects' interiors),
+// or null: such media light their samples with shadow rays.
+const Media* first_scattering_media(const Scene& scene);
 
 // `whole` with only the objects at the ascending indices `keep`, numbered as the parser
 // numbers a parse that left the others out (ParseOptions::keep_object), so a process that

@@ -426,6 +426,9 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
                                                  ray.light_distance, ray.shadow_state,
                                                  lane(box).ctx);
             if (blocked || next < 0 || seg.t_exit >= ray.light_distance - 1e-3) {
+                if (!blocked)
+                    trace::shadow_last_leg(*box.scene, ray.trace.ray, ray.light_distance,
+                                           ray.shadow_state);
                 deliver(box, ray, {ray.shadow_state.filter, 0}, thread);
                 return;
             }
@@ -444,21 +447,26 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
             trace::count_ray(ray.trace, here.stats.rays);
         }
         trace::Hit hit;
-        if (!box.scene->closest_hit(ray.trace.ray, ray.t_from, seg.t_exit, ray.trace.use,
-                                    hit, here.ctx)) {
-            if (next < 0) {
-                deliver(box, ray, trace::miss_colour(*box.scene, ray.trace), thread);
-            } else {
-                ray.t_from = seg.t_exit;
-                if (leave(next)) continue;
-            }
-            return;
-        }
         // One record per nesting level: a child traced at once reuses the box. Sized
         // once, before any level holds a reference into it.
         if (here.records.empty()) here.records.resize(kMaxHandoffDepth + 1);
         trace::ShadingRecord& rec = here.records[size_t(tl_worker.depth)];
-        trace::spawn_children(*box.scene, ray.trace, hit, rec);
+        if (!box.scene->closest_hit(ray.trace.ray, ray.t_from, seg.t_exit, ray.trace.use,
+                                    hit, here.ctx)) {
+            if (next >= 0) {
+                ray.t_from = seg.t_exit;
+                if (leave(next)) continue;
+                return;
+            }
+            // A scattering atmosphere lights the missed ray's media samples with shadow
+            // rays: a parent like a hit's.
+            if (!parents_ || !trace::spawn_miss(*box.scene, ray.trace, rec)) {
+                deliver(box, ray, trace::miss_colour(*box.scene, ray.trace), thread);
+                return;
+            }
+        } else {
+            trace::spawn_children(*box.scene, ray.trace, hit, rec);
+        }
         const size_t n = rec.children.size();
         uint64_t id = 0;
         // Result slots: an area-light shadow child takes one per grid sample, after the
@@ -485,7 +493,8 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
             }
             if (slots > 65535)
                 throw std::runtime_error(
-                    "a point's area-light grids have more than 65,535 samples");
+                    "a point's area-light grids and media shadow rays are more than "
+                    "65,535");
         }
         if (parents_) {
             if (n == 0) {
@@ -611,6 +620,7 @@ void BoxHost::process(Box& box, Item& item, int thread) {
     if (done) {
         thread_local std::vector<TraceResult> results;
         done->gather(scene_, results);
+        trace::replay_media(*box.scene, done->origin.trace, done->record, results.data());
         deliver(box, done->origin, trace::combine_children(done->record, results.data()),
                 thread);
     }

@@ -393,7 +393,8 @@ class Interpreter {
     // includes save `version` and restore it with #version, so a scene without one
     // leaves colors.inc as an explicit 3.7 scene.
     int version_ = 370;
-    bool light_attenuated_by_media_ = false;  // a light with media_attenuation on
+    // An area light with media_attenuation on (the atmosphere's media are refused then).
+    bool area_light_attenuated_by_media_ = false;
     bool version_set_ = false;
     GammaMode gamma_mode_ = GammaMode::None;  // as the parse has it so far
     bool noise_generator_given_ = false;

@@ -310,15 +310,14 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
     } else if (w == "hollow") {
         obj.hollow = parse_bool_opt();
         obj.hollow_given = true;
-        // On a union, merge or intersection it goes at once to the children that did
-        // not say (through nested ones of those kinds), as POV-Ray's parser does.
+        // On a union, merge, intersection or difference (POV-Ray's difference is an
+        // intersection) it goes at once to the leaves that did not say, through nested
+        // CSG, as POV-Ray's parser does.
         auto pass_down = [&](auto& self, Object& o) -> void {
-            const Csg* csg = std::get_if<Csg>(&o.shape);
-            if (!csg || csg->kind == CsgKind::Difference) return;
+            if (!std::holds_alternative<Csg>(o.shape)) return;
             for (Object& c : std::get<Csg>(o.shape).children) {
                 if (c.hollow_given) continue;
-                const Csg* cc = std::get_if<Csg>(&c.shape);
-                if (cc && cc->kind != CsgKind::Difference)
+                if (std::holds_alternative<Csg>(c.shape))
                     self(self, c);
                 else
                     c.hollow = obj.hollow;
@@ -881,8 +880,9 @@ void Interpreter::parse_top_level_item(const Token& t) {
             return;
         }
         if (w == "media") {
-            if (light_attenuated_by_media_)
-                unsupported(t, "atmospheric media with a light's media_attenuation");
+            if (area_light_attenuated_by_media_)
+                unsupported(t,
+                            "atmospheric media with an area light's media_attenuation");
             scene_.atmosphere_media.push_back(parse_media());
             return;
         }

@@ -1,6 +1,7 @@
 // Camera, lights, global settings, sky and fog, meshes, and declared non-numeric values.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "parser/interpreter.h"
 
@@ -290,6 +291,7 @@ Light Interpreter::parse_light_block() {
     }
     bool parallel = false;
     bool jitter = false, circular = false, orient = false;
+    std::optional<Token> attenuation_at;  // where media_attenuation was turned on
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) break;
@@ -335,12 +337,7 @@ Light Interpreter::parse_light_block() {
             l.media_interaction = parse_bool_opt();
         else if (w == "media_attenuation") {
             l.media_attenuation = parse_bool_opt();
-            // Shadow rays through the atmosphere's media: not yet.
-            if (l.media_attenuation) {
-                if (!scene_.atmosphere_media.empty())
-                    unsupported(t, "media_attenuation with atmospheric media");
-                light_attenuated_by_media_ = true;
-            }
+            if (l.media_attenuation) attenuation_at = t;
         } else if (w == "color" || w == "colour" || w == "rgb") {
             unget(t);
             l.colour = parse_colour_value().rgb;
@@ -396,6 +393,15 @@ Light Interpreter::parse_light_block() {
     // direction at full strength (POV-Ray's spot cone then sees the axis itself).
     if (parallel && l.kind == Light::Kind::Point) l.kind = Light::Kind::Parallel;
     l.parallel = parallel && l.kind == Light::Kind::Spot;
+    // The atmosphere's media on an area light's shadow rays: POV-Ray applies them per
+    // sample and once more over a leftover stretch of its last sample; not yet.
+    if (l.media_attenuation && l.area && attenuation_at) {
+        if (!scene_.atmosphere_media.empty())
+            unsupported(*attenuation_at,
+                        "media_attenuation of an area light with "
+                        "atmospheric media");
+        area_light_attenuated_by_media_ = true;
+    }
     if (l.area) {
         l.area->jitter = l.area->jitter || jitter;
         l.area->circular = l.area->circular || circular;

@@ -592,20 +592,37 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
             if (p.pattern->kind != PatternKind::Solid)
                 p.pattern.edit().kind = PatternKind::Solid;
             p.colour = parse_colour_value();
-        } else if (w == "density_map") {
-            unsupported(t, "density_map");
         } else if (w == "color_map" || w == "colour_map") {
             p.maps.edit().colour_map = parse_colour_map_block();
-        } else if (w == "pigment_map") {
-            expect_punct('{', "after 'pigment_map'");
+        } else if (w == "pigment_map" || w == "density_map") {
+            // A density_map blends densities as a pigment_map blends pigments (POV-Ray
+            // evaluates both as pigments); its entries start from an empty density.
+            const bool density = w == "density_map";
+            if (density) {
+                switch (p.pattern->kind) {
+                    case PatternKind::Checker:
+                    case PatternKind::Brick:
+                    case PatternKind::Hexagon:
+                    case PatternKind::Solid:
+                    case PatternKind::ImageMap:
+                        error(t, "a density_map cannot be used with this pattern type");
+                    default:
+                        break;
+                }
+            }
+            expect_punct('{', density ? "after 'density_map'" : "after 'pigment_map'");
             for (;;) {
                 Token e = next();
                 if (is_punct(e, '}')) break;
-                if (!is_punct(e, '[')) expected("'[' in a pigment_map", e);
+                if (!is_punct(e, '['))
+                    expected(density ? "'[' in a density_map" : "'[' in a pigment_map",
+                             e);
                 float v = parse_map_value(p.pattern->kind == PatternKind::Average);
                 accept_punct(',');
-                Pigment sub = default_texture_.pigment;
-                if (accept_word("pigment")) {
+                Pigment sub = density ? Pigment{} : default_texture_.pigment;
+                if (density) sub.colour = Colour{};
+                // POV-Ray: a density entry is an identifier or a pattern, no keyword.
+                if (!density && accept_word("pigment")) {
                     sub = parse_pigment_block();
                     expect_punct(']');
                 } else {
@@ -1034,7 +1051,30 @@ Media Interpreter::parse_media() {
         } else if (w == "emission") {
             m.emission = parse_colour_value().rgb;
         } else if (w == "scattering") {
-            unsupported(t, "media scattering");
+            // scattering { type, colour [eccentricity e] [extinction x] }
+            expect_punct('{', "after 'scattering'");
+            m.scattering_loc = sources_.location(t);
+            const Token type_at = peek();
+            m.scattering_type = parse_int();
+            if (m.scattering_type < 1 || m.scattering_type > 5)
+                warn(type_at, "unknown atmospheric scattering type");  // as type 1
+            accept_punct(',');
+            m.scattering = parse_colour_value().rgb;
+            for (;;) {
+                const Token k = next();
+                if (is_punct(k, '}')) break;
+                const std::string_view kw =
+                    k.kind == TokenKind::Word ? k.text : std::string_view();
+                if (kw == "eccentricity") {
+                    if (m.scattering_type != 5)
+                        error(k, "eccentricity only applies to scattering type 5");
+                    m.eccentricity = float(parse_float());
+                } else if (kw == "extinction") {
+                    m.scattering_extinction = float(parse_float());
+                } else {
+                    expected("eccentricity, extinction or '}'", k);
+                }
+            }
         } else if (w == "density") {
             m.density.push_back(parse_density_block());
         } else {

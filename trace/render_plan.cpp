@@ -288,15 +288,23 @@ RenderPlan make_render_plan(const Scene& scene, bool everything_on, int quality)
     for (size_t l = 0; l < scene.lights.size(); ++l)
         area_shadows =
             area_shadows || (scene.lights[l].area && plan.lights[l].shadow_rays);
+    // Scattering media: a stretch's light comes from its samples' shadow rays, taken
+    // (method 3's refinement) once they are all in.
+    const bool media_shadows = first_scattering_media(scene) && plan.quality.atmosphere();
     plan.parents_required =
-        area_shadows && plan.quality.area_lights() && plan.quality.shadows();
+        (area_shadows && plan.quality.area_lights() && plan.quality.shadows()) ||
+        media_shadows;
     plan.parent_tracking =
         everything_on || !shading_is_linear(scene) || plan.parents_required;
     plan.parent_reason =
         everything_on ? "parent tracking (plan forced on)"
         : plan.parents_required
-            ? "area-light shadows: each lit point's grid is averaged (POV-Ray's adaptive "
-              "rule) once its samples are in, in the parent table"
+            ? (media_shadows ? "scattering media: each stretch's samples are lit "
+                               "(POV-Ray's adaptive rule) once their shadow rays are "
+                               "in, in the parent table"
+                             : "area-light shadows: each lit point's grid is averaged "
+                               "(POV-Ray's adaptive rule) once its samples are in, in "
+                               "the parent table")
         : plan.parent_tracking
             ? "a reflection exponent makes shading non-linear: parents wait "
               "for their children in each box's parent table"

@@ -281,6 +281,13 @@ Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray) {
 
 namespace {
 
+// spawn_children(), with or without the effect along the ray (`with_fog`: a stand-in
+// material of a blend shares the hit's, computed once).
+void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
+               ShadingRecord& out, const MediaShadows& shadows, bool with_fog);
+FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
+                    const MediaShadows& shadows);
+
 // Shades `hit` once with each of `n` stand-in materials and merges the records with
 // their weights (POV-Ray sums the weighted colours of the textures it finds for a hit);
 // children keep combining linearly, and their interior stacks name the hit's own
@@ -301,7 +308,7 @@ void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         h.material = subs[e];
         ++depth;
         ShadingRecord& rec = scratch_pool[depth - 1];
-        spawn_children(scene, ray, h, rec);
+        spawn_hit(scene, ray, h, rec, MediaShadows{}, false);
         --depth;
         local += rec.local * w;
         for (ChildRay c : rec.children) {
@@ -417,14 +424,38 @@ bool spawn_blob_blend(const PreparedScene& scene, const TraceRay& ray, const Hit
 }  // namespace
 
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
-                    ShadingRecord& out) {
+                    ShadingRecord& out, RayContext* ctx) {
+    MediaShadows shadows;
+    if (ctx) {
+        shadows.trace = ctx;
+        spawn_hit(scene, ray, hit, out, shadows, true);
+        return;
+    }
+    // Black boxes: the media samples' shadow rays become children after the others.
+    thread_local ShadingRecord staging;
+    staging.clear();
+    shadows.collect = &staging;
+    spawn_hit(scene, ray, hit, out, shadows, true);
+    if (!staging.media_replay) return;
+    out.media_replay = true;
+    out.media_first = out.children.size();
+    out.children.insert(out.children.end(), staging.children.begin(),
+                        staging.children.end());
+    out.media_samples = staging.media_samples;
+    out.media_depth = hit.t;
+}
+
+namespace {
+
+void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
+               ShadingRecord& out, const MediaShadows& shadows, bool with_fog) {
     if (shows_interior_texture(*hit.material, hit, ray.ray)) {
         // Shaded with the interior texture; the children's interior stacks name the
         // object's own material, not this stand-in.
         const Material inside = interior_side(*hit.material);
         Hit h = hit;
         h.material = &inside;
-        spawn_children(scene, ray, h, out);
+        spawn_hit(scene, ray, h, out, shadows, with_fog);
         for (ChildRay& c : out.children) {
             for (int k = 0; k < c.trace.interiors.size && k < InteriorStack::kCapacity;
                  ++k) {
@@ -436,7 +467,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     }
     out.clear();
     const Quality quality = scene.plan().quality;
-    if (quality.atmosphere()) out.fog = along_ray_effect(scene, ray, hit.t);
+    if (with_fog && quality.atmosphere()) out.fog = along_ray(scene, ray, hit.t, shadows);
     if (spawn_corner_blend(scene, ray, hit, out)) return;
     if (spawn_blob_blend(scene, ray, hit, out)) return;
     if (spawn_texture_map(scene, ray, hit, out)) return;
@@ -722,10 +753,15 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     }
 }
 
+}  // namespace
+
 TraceResult combine_children(const ShadingRecord& record, const TraceResult* results) {
     TraceResult r;
     r.colour = record.local;
-    for (size_t i = 0; i < record.children.size(); ++i) {
+    r.transmit = record.local_transmit;
+    // Media samples' shadow children count through record.fog (replay_media()).
+    const size_t n = record.media_replay ? record.media_first : record.children.size();
+    for (size_t i = 0; i < n; ++i) {
         const ChildRay& c = record.children[i];
         const TraceResult& x = results[i];
         if (c.kind == ChildRay::Kind::Reflection && c.exponent != 1) {
@@ -778,9 +814,119 @@ void interior_media(const InteriorStack& interiors, std::vector<const Media*>& l
     }
 }
 
-}  // namespace
+// Whether the atmosphere's media dim shadow rays toward light `l` (media_interaction
+// and media_attenuation both on).
+bool attenuated_by_atmosphere(const PreparedScene& scene, int l) {
+    const Scene& sc = scene.scene();
+    if (l < 0 || sc.atmosphere_media.empty() || !scene.plan().quality.atmosphere())
+        return false;
+    const Light& light = sc.lights[size_t(l)];
+    return light.media_interaction && light.media_attenuation;
+}
 
-FogEffect along_ray_effect(const PreparedScene& scene, const TraceRay& ray, Real depth) {
+// The atmosphere's transmittance over [t0, t1] of a shadow ray.
+Rgb atmosphere_shadow(const PreparedScene& scene, const Ray& ray, Real t0, Real t1) {
+    thread_local std::vector<const Media*> list;
+    list.clear();
+    for (const Media& m : scene.scene().atmosphere_media) list.push_back(&m);
+    return media_effect(list, ray, t0, t1, true, scene.pattern_env()).mul;
+}
+
+bool operator<(const MediaSampleKey& a, const MediaSampleKey& b) {
+    if (a.list != b.list) return a.list < b.list;
+    if (a.sample != b.sample) return a.sample < b.sample;
+    return a.light < b.light;
+}
+
+// Lights the samples of scattering media along a viewing ray: POV-Ray's TestShadow from
+// each sample, a shadow ray that keeps the viewing ray's interiors, traced as `shadows`
+// says.
+class SampleLight final : public MediaLightProbe {
+  public:
+    SampleLight(const PreparedScene& scene, const TraceRay& ray,
+                const MediaShadows& shadows, uint8_t list)
+        : scene_(scene), ray_(ray), shadows_(shadows), list_(list) {}
+    Rgb arriving(size_t l, const Point3& at, Vector3& to_light,
+                 uint64_t sample) override {
+        const Scene& sc = scene_.scene();
+        const Light& light = sc.lights[l];
+        LightSample s;
+        if (!light_at(light, at, s)) return {};
+        to_light = s.dir;
+        const Quality quality = scene_.plan().quality;
+        // As for a lit surface: fog dims a light with media_attenuation.
+        if (light.media_attenuation && !sc.fogs.empty() && s.distance < kInfinity)
+            s.colour *= fog_effect(sc, {at, s.dir}, s.distance).mul;
+        if (!quality.shadows()) return s.colour;
+        ChildRay child;
+        child.kind = ChildRay::Kind::Shadow;
+        child.trace.ray = {at, s.dir};
+        child.trace.interiors = ray_.interiors;
+        child.trace.depth = ray_.depth;
+        child.trace.use = RayUse::Shadow;
+        child.t_max = s.distance;
+        child.light = int(l);
+        child.area = light.area.has_value() && quality.area_lights();
+        child.light_colour = s.colour;
+        child.coeff = Rgb{0.0f};  // counts through the media effect only
+        const MediaSampleKey key{sample, uint32_t(l), list_};
+        Rgb transmittance;
+        if (shadows_.trace) {
+            transmittance = shadow_transmittance(scene_, child, *shadows_.trace);
+        } else if (shadows_.collect) {
+            shadows_.collect->children.push_back(child);
+            shadows_.collect->media_samples.push_back(key);
+            return {};  // a stand-in: every sample is taken while collecting
+        } else if (shadows_.replay) {
+            const ShadingRecord& r = *shadows_.replay;
+            const auto& keys = r.media_samples;
+            const uint32_t* order = shadows_.order;
+            const uint32_t* found = std::lower_bound(
+                order, order + keys.size(), key,
+                [&](uint32_t i, const MediaSampleKey& k) { return keys[i] < k; });
+            if (found == order + keys.size() || key < keys[*found])
+                throw std::logic_error("a media sample's shadow ray was not traced");
+            transmittance = shadows_.results[r.media_first + *found].colour;
+        } else {
+            throw std::logic_error("media scattering without shadow tests");
+        }
+        const Rgb c = s.colour * transmittance;
+        // POV-Ray: a light below 1e-10 in every channel is blocked.
+        if (std::fabs(c.r) < 1e-10f && std::fabs(c.g) < 1e-10f && std::fabs(c.b) < 1e-10f)
+            return {};
+        return c;
+    }
+
+  private:
+    const PreparedScene& scene_;
+    const TraceRay& ray_;
+    const MediaShadows& shadows_;
+    uint8_t list_;
+};
+
+// The media of `list` (0: the interiors', 1: the atmosphere's) along a viewing ray up
+// to `depth`, lit by the scene's lights.
+FogEffect viewing_media(const PreparedScene& scene, std::span<const Media* const> list,
+                        uint8_t which, const TraceRay& ray, Real depth,
+                        const MediaShadows& shadows) {
+    if (shadows.collect) {
+        // Its value comes from replay_media() once the shadow rays are in.
+        for (const Media* m : list)
+            if (m->scatters()) shadows.collect->media_replay = true;
+    }
+    SampleLight probe(scene, ray, shadows, which);
+    MediaLights lights{scene.scene().lights, &probe, shadows.collect != nullptr};
+    return as_fog_effect(
+        media_effect(list, ray.ray, 0, depth, false, scene.pattern_env(), &lights));
+}
+
+void atmosphere_list(const Scene& sc, std::vector<const Media*>& list) {
+    list.clear();
+    for (const Media& m : sc.atmosphere_media) list.push_back(&m);
+}
+
+FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
+                    const MediaShadows& shadows) {
     const Scene& sc = scene.scene();
     if (sc.fogs.empty() && sc.atmosphere_media.empty() &&
         (ray.interiors.size == 0 || !scene.has_interior_media()))
@@ -792,19 +938,60 @@ FogEffect along_ray_effect(const PreparedScene& scene, const TraceRay& ray, Real
     if (ray.interiors.size > 0) {
         thread_local std::vector<const Media*> list;
         interior_media(ray.interiors, list);
-        if (!list.empty())
-            e = as_fog_effect(
-                media_effect(list, ray.ray, 0, depth, false, scene.pattern_env()));
+        if (!list.empty()) e = viewing_media(scene, list, 0, ray, depth, shadows);
     }
     if (!sc.atmosphere_media.empty()) {
         thread_local std::vector<const Media*> list;
-        list.clear();
-        for (const Media& m : sc.atmosphere_media) list.push_back(&m);
-        e = then(e, as_fog_effect(media_effect(list, ray.ray, 0, depth, false,
-                                               scene.pattern_env())));
+        atmosphere_list(sc, list);
+        e = then(e, viewing_media(scene, list, 1, ray, depth, shadows));
     }
     if (!sc.fogs.empty()) e = then(e, fog_effect(sc, ray.ray, depth));
     return e;
+}
+
+// What a ray that hits nothing crosses: the atmosphere out to POV-Ray's "infinite"
+// depth, 2e10 (lit or glowing media saturate the sky, absorbing media blacken it), then
+// fog up to its MAX_DISTANCE; only the fog inside a solid object.
+FogEffect along_missing_ray(const PreparedScene& scene, const TraceRay& ray,
+                            const MediaShadows& shadows) {
+    const Scene& sc = scene.scene();
+    FogEffect f;
+    if ((sc.fogs.empty() && sc.atmosphere_media.empty()) ||
+        !scene.plan().quality.atmosphere())
+        return f;
+    if (!sc.atmosphere_media.empty() && hollow_ray(ray.interiors)) {
+        thread_local std::vector<const Media*> list;
+        atmosphere_list(sc, list);
+        f = viewing_media(scene, list, 1, ray, 2e10, shadows);
+    }
+    if (!sc.fogs.empty()) f = then(f, fog_effect(sc, ray.ray, kMaxDistance));
+    return f;
+}
+
+}  // namespace
+
+FogEffect along_ray_effect(const PreparedScene& scene, const TraceRay& ray, Real depth,
+                           RayContext* ctx) {
+    MediaShadows shadows;
+    shadows.trace = ctx;
+    return along_ray(scene, ray, depth, shadows);
+}
+
+void replay_media(const PreparedScene& scene, const TraceRay& ray, ShadingRecord& record,
+                  const TraceResult* results) {
+    if (!record.media_replay) return;
+    thread_local std::vector<uint32_t> order;
+    const auto& keys = record.media_samples;
+    order.resize(keys.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](uint32_t a, uint32_t b) { return keys[a] < keys[b]; });
+    MediaShadows shadows;
+    shadows.replay = &record;
+    shadows.results = results;
+    shadows.order = order.data();
+    record.fog = record.media_miss ? along_missing_ray(scene, ray, shadows)
+                                   : along_ray(scene, ray, record.media_depth, shadows);
 }
 
 FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth) {
@@ -1048,6 +1235,12 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
                                              scene.pattern_env())
                                     .mul;
         }
+        // A light with media_attenuation: the atmosphere's media dim each stretch too
+        // (POV-Ray's ComputeShadowMedia at a crossing: hollow or not).
+        if (!black && attenuated_by_atmosphere(scene, state.light) &&
+            state.filter.max_component() >= 1e-10f) {
+            state.filter *= atmosphere_shadow(scene, ray, state.last_hit, hit.t);
+        }
         if (!black) {
             if (state.inside.contains(m.interior_id)) {
                 if (m.interior) {
@@ -1071,6 +1264,20 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
     return false;
 }
 
+void shadow_last_leg(const PreparedScene& scene, const Ray& ray, Real light_distance,
+                     ShadowState& state) {
+    // POV-Ray's TraceShadowRay: the rest of the way to the light crosses only the
+    // atmosphere (a light inside a media container is not dimmed by it there), and only
+    // in hollow space.
+    if (state.blocked || !attenuated_by_atmosphere(scene, state.light)) return;
+    if (!(light_distance - state.last_hit > kShadowTolerance) ||
+        !(light_distance < kInfinity) || !hollow_ray(state.inside))
+        return;
+    const Rgb& f = state.filter;
+    if (f.r < 1e-10f && f.g < 1e-10f && f.b < 1e-10f) return;
+    state.filter *= atmosphere_shadow(scene, ray, state.last_hit, light_distance);
+}
+
 namespace {
 
 Rgb point_shadow(const ChildRay& shadow, const PreparedScene& scene, const Ray& ray,
@@ -1078,7 +1285,8 @@ Rgb point_shadow(const ChildRay& shadow, const PreparedScene& scene, const Ray& 
     ShadowState state;
     state.inside = shadow.trace.interiors;
     state.light = shadow.light;
-    shadow_segment(scene, ray, kInfinity, distance, state, ctx);
+    if (!shadow_segment(scene, ray, kInfinity, distance, state, ctx))
+        shadow_last_leg(scene, ray, distance, state);
     return state.filter;
 }
 
@@ -1210,31 +1418,9 @@ Rgb shadow_transmittance(const PreparedScene& scene, const ChildRay& shadow,
 
 namespace {
 
-// A ray that hits nothing crosses fog up to POV-Ray's MAX_DISTANCE.
-TraceResult fogged(const PreparedScene& scene, const Ray& ray, bool hollow,
-                   TraceResult r) {
-    const Scene& sc = scene.scene();
-    if ((sc.fogs.empty() && sc.atmosphere_media.empty()) ||
-        !scene.plan().quality.atmosphere())
-        return r;
-    FogEffect f;
-    if (!sc.atmosphere_media.empty() && hollow) {
-        // POV-Ray integrates the atmosphere out to its "infinite" depth, 2e10: lit or
-        // glowing media saturate the sky, absorbing media blacken it.
-        thread_local std::vector<const Media*> list;
-        list.clear();
-        for (const Media& m : sc.atmosphere_media) list.push_back(&m);
-        f = as_fog_effect(media_effect(list, ray, 0, 2e10, false, scene.pattern_env()));
-    }
-    if (!sc.fogs.empty()) f = then(f, fog_effect(sc, ray, kMaxDistance));
-    return {f.add + f.mul * r.colour, f.add_transmit + f.mul_transmit * r.transmit};
-}
-
-}  // namespace
-
-TraceResult miss_colour(const PreparedScene& scene, const TraceRay& traced) {
+// Colour of a ray that hits nothing, before what lies along it.
+TraceResult sky_colour(const PreparedScene& scene, const TraceRay& traced) {
     const Ray& ray = traced.ray;
-    const bool hollow = hollow_ray(traced.interiors);
     // POV-Ray's ComputeSky: the sky_sphere's pigments (last one on top) over the
     // background.
     const Scene& sc = scene.scene();
@@ -1256,8 +1442,8 @@ TraceResult miss_colour(const PreparedScene& scene, const TraceRay& traced) {
     const Rgb emission = sky ? sc.sky_sphere->emission : Rgb(1.0f);
     if (sc.language_version < 370) {
         // Legacy: full transparency with alpha; else the 3.6 compositing.
-        if (alpha) return fogged(scene, ray, hollow, {Rgb{}, 1.0f});
-        if (!sky) return fogged(scene, ray, hollow, {bg.rgb, 0.0f});
+        if (alpha) return TraceResult{Rgb{}, 1.0f};
+        if (!sky) return TraceResult{bg.rgb, 0.0f};
         Rgb col, fil(1.0f);
         float ff = 1, ft = 1, trans = 1;
         for (auto it = sc.sky_sphere->pigments.rbegin();
@@ -1270,7 +1456,7 @@ TraceResult miss_colour(const PreparedScene& scene, const TraceRay& traced) {
             trans = std::fabs(ff) + std::fabs(ft);
         }
         col *= emission;
-        return fogged(scene, ray, hollow, {col + bg.rgb * (fil * ff + Rgb(ft)), 0.0f});
+        return TraceResult{col + bg.rgb * (fil * ff + Rgb(ft)), 0.0f};
     }
     Rgb col, fil(1.0f);
     if (sky) {
@@ -1285,7 +1471,36 @@ TraceResult miss_colour(const PreparedScene& scene, const TraceRay& traced) {
     // +UA, see above).
     col += bg.rgb * (1 - bg.filter - bg.transmit) * fil;
     fil *= rgb_transm(bg);
-    return fogged(scene, ray, hollow, {col, std::min(1.0f, std::fabs(fil.grey()))});
+    return TraceResult{col, std::min(1.0f, std::fabs(fil.grey()))};
+}
+
+}  // namespace
+
+TraceResult miss_colour(const PreparedScene& scene, const TraceRay& ray,
+                        RayContext* ctx) {
+    MediaShadows shadows;
+    shadows.trace = ctx;
+    const TraceResult r = sky_colour(scene, ray);
+    const FogEffect f = along_missing_ray(scene, ray, shadows);
+    return {f.add + f.mul * r.colour, f.add_transmit + f.mul_transmit * r.transmit};
+}
+
+bool spawn_miss(const PreparedScene& scene, const TraceRay& ray, ShadingRecord& out) {
+    const Scene& sc = scene.scene();
+    if (!scene.plan().quality.atmosphere() || !hollow_ray(ray.interiors)) return false;
+    bool scatters = false;
+    for (const Media& m : sc.atmosphere_media) scatters = scatters || m.scatters();
+    if (!scatters) return false;
+    out.clear();
+    const TraceResult r = sky_colour(scene, ray);
+    out.local = r.colour;
+    out.local_transmit = r.transmit;
+    MediaShadows shadows;
+    shadows.collect = &out;
+    out.fog = along_missing_ray(scene, ray, shadows);
+    out.media_miss = true;
+    out.media_replay = true;
+    return true;
 }
 
 }  // namespace povwall::trace

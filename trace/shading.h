@@ -105,22 +105,73 @@ FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth);
 // What lies along a ray up to `depth` does to the colour there: the media of the
 // interiors it is in, the atmosphere's media, then fog (POV-Ray's order); identity
 // inside a solid (non-hollow) object. The caller checks the quality level.
-FogEffect along_ray_effect(const PreparedScene& scene, const TraceRay& ray, Real depth);
+// Scattering media light their samples with shadow rays traced at once with `ctx`.
+FogEffect along_ray_effect(const PreparedScene& scene, const TraceRay& ray, Real depth,
+                           RayContext* ctx = nullptr);
+
+// Which shadow ray of a media stretch: the list (0: the interiors' media, 1: the
+// atmosphere's), the sample (MediaLightProbe) and the light.
+struct MediaSampleKey {
+    uint64_t sample;
+    uint32_t light;
+    uint8_t list;
+};
 
 struct ShadingRecord {
-    Rgb local;  // ambient and emission: needs no child
+    Rgb local;                 // ambient and emission: needs no child
+    float local_transmit = 0;  // a missed ray's own transmit (spawn_miss)
     std::vector<ChildRay> children;
     FogEffect fog;  // applied to the combined colour
+    // Black boxes: children from media_first on are the shadow rays of the media
+    // samples along the ray (media_samples[i] says which is children[media_first + i]);
+    // replay_media() sets `fog` from their results (media_replay: scattering media
+    // were met). The stretch ends at media_depth (a hit) or is a ray that missed
+    // everything (media_miss).
+    std::vector<MediaSampleKey> media_samples;
+    size_t media_first = 0;
+    Real media_depth = 0;
+    bool media_miss = false, media_replay = false;
     void clear() {
         local = Rgb{};
+        local_transmit = 0;
         children.clear();
         fog = FogEffect{};
+        media_samples.clear();
+        media_first = 0;
+        media_depth = 0;
+        media_miss = false;
+        media_replay = false;
     }
 };
 
+// Where the light of scattering media samples comes from: shadow rays traced at once
+// with `trace` (the single-process tracer); in black boxes, shadow children appended to
+// `collect` at spawn time for every sample refinement may ask for, read back by
+// `replay` from `results` (`order`: media_samples' indices sorted by key).
+struct MediaShadows {
+    RayContext* trace = nullptr;
+    ShadingRecord* collect = nullptr;
+    const ShadingRecord* replay = nullptr;
+    const TraceResult* results = nullptr;
+    const uint32_t* order = nullptr;
+};
+
+// Black boxes, once a record's children are in: its effect along the ray from its media
+// samples' shadow results (POV-Ray's adaptive rule on them; the single-process tracer's
+// value).
+void replay_media(const PreparedScene& scene, const TraceRay& ray, ShadingRecord& record,
+                  const TraceResult* results);
+
+// Black boxes: a ray that hits nothing where the atmosphere scatters light needs shadow
+// rays from its media samples: `out` is its record (local: the sky; children: those
+// shadow rays). False when miss_colour() gives its colour at once.
+bool spawn_miss(const PreparedScene& scene, const TraceRay& ray, ShadingRecord& out);
+
 // Step 1. `ray` hit `hit`; fills `out` (cleared first).
+// `ctx`: see along_ray_effect(); without one (black boxes), the media samples' shadow
+// rays are more children (ShadingRecord::media_samples).
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
-                    ShadingRecord& out);
+                    ShadingRecord& out, RayContext* ctx = nullptr);
 
 // Step 2. `results[i]` is the result of `record.children[i]`: the traced colour for
 // reflection/transmission, the light's transmittance (rgb) for shadow rays.
@@ -141,6 +192,11 @@ struct ShadowState {
 // 1e-3)). Returns true once the light is fully blocked.
 bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,
                     Real light_distance, ShadowState& state, RayContext& ctx);
+// The rest of an unblocked shadow ray, from its last crossing to the light: the
+// atmosphere's media dim it when the light has media_attenuation (POV-Ray's
+// TraceShadowRay).
+void shadow_last_leg(const PreparedScene& scene, const Ray& ray, Real light_distance,
+                     ShadowState& state);
 
 // Tie probe (trace/ties.h): whether `hit` lies on a jump of its surface's pigment (or
 // texture map) pattern: the colours just above and just below the surface, `tolerance`
@@ -190,6 +246,8 @@ Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray);
 // Colour of a ray that hits nothing (background or sky_sphere), fog included.
 // The atmosphere's media act only on a hollow ray (not inside a solid object), as
 // POV-Ray.
-TraceResult miss_colour(const PreparedScene& scene, const TraceRay& ray);
+// `ctx`: see along_ray_effect().
+TraceResult miss_colour(const PreparedScene& scene, const TraceRay& ray,
+                        RayContext* ctx = nullptr);
 
 }  // namespace povwall::trace

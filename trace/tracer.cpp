@@ -15,13 +15,13 @@ TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
     ctx_.tie_tolerance = probe;
     const bool found = scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_);
     ctx_.tie_tolerance = 0;
-    if (!found) return miss_colour(scene_, ray);
+    if (!found) return miss_colour(scene_, ray, &ctx_);
     if (probe > 0 && on_pattern_boundary(scene_, hit, probe)) ++ctx_.pattern_ties;
     if (records_.size() <= level) {
         records_.resize(level + 1);
         results_.resize(level + 1);
     }
-    spawn_children(scene_, ray, hit, records_[level]);
+    spawn_children(scene_, ray, hit, records_[level], &ctx_);
     // records_ may grow in the recursion below: index, don't hold references across
     // calls.
     size_t n = records_[level].children.size();

@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <span>
 #include <unordered_map>
 #include <vector>
@@ -19,7 +21,9 @@ namespace povwall::distrib {
 // children included) in a walk every process makes of the same scene, and each process
 // keeps one Material per object (the stack only uses its object and interior). A worker
 // that parsed only its part of the scene numbers its objects as in the whole scene
-// (Scene::object_first_node); a number it does not hold reads as no object.
+// (Scene::object_first_node); a number it does not hold reads as a stand-in that keeps
+// the number (a ray inside a media container that crosses a worker without it keeps the
+// container for the workers that hold it), hollow and without an interior of its own.
 class ObjectNumbers {
   public:
     explicit ObjectNumbers(const Scene& scene) : sparse_(scene.objects_filtered()) {
@@ -32,6 +36,7 @@ class ObjectNumbers {
         for (const Light& l : scene.lights) {
             for (const Object& o : l.looks_like) add(o, next);
         }
+        end_number_ = next;
         materials_.resize(objects_.size());
         for (size_t i = 0; i < objects_.size(); ++i) {
             const Object& o = *objects_[i];
@@ -42,19 +47,40 @@ class ObjectNumbers {
     int32_t number(const trace::Material* m) const {
         if (!m || !m->object) return -1;
         auto it = index_.find(m->object);
-        return it == index_.end() ? -1 : numbers_[it->second];
+        if (it != index_.end()) return numbers_[it->second];
+        std::lock_guard lock(stand_ins_mutex_);
+        auto s = stand_in_numbers_.find(m->object);
+        return s == stand_in_numbers_.end() ? -1 : s->second;
     }
     // Objects numbered (CSG children and lights' looks_like shapes included).
     size_t size() const { return materials_.size(); }
     const trace::Material* material(int32_t n) const {
         if (sparse_) {
             auto it = by_number_.find(n);
-            return it == by_number_.end() ? nullptr : &materials_[it->second];
+            return it != by_number_.end()      ? &materials_[it->second]
+                   : n >= 0 && n < end_number_ ? stand_in(n)
+                                               : nullptr;
         }
         return n >= 0 && size_t(n) < materials_.size() ? &materials_[n] : nullptr;
     }
 
   private:
+    struct StandIn {
+        Object object;
+        trace::Material material;
+    };
+    const trace::Material* stand_in(int32_t n) const {
+        std::lock_guard lock(stand_ins_mutex_);
+        auto& s = stand_ins_[n];
+        if (!s) {
+            s = std::make_unique<StandIn>();
+            s->object.hollow = true;
+            s->material.object = &s->object;
+            s->material.interior_id = trace::interior_key(s->object);
+            stand_in_numbers_.emplace(&s->object, n);
+        }
+        return &s->material;
+    }
     void add(const Object& o, int32_t& next) {
         index_.emplace(&o, objects_.size());
         objects_.push_back(&o);
@@ -64,11 +90,15 @@ class ObjectNumbers {
         }
     }
     bool sparse_;
+    int32_t end_number_ = 0;  // one past the last number of the whole scene
     std::vector<const Object*> objects_;
     std::vector<int32_t> numbers_;  // per entry of objects_
     std::unordered_map<const Object*, size_t> index_;
     std::unordered_map<int32_t, size_t> by_number_;  // sparse numbering only
     std::vector<trace::Material> materials_;
+    mutable std::mutex stand_ins_mutex_;
+    mutable std::unordered_map<int32_t, std::unique_ptr<StandIn>> stand_ins_;
+    mutable std::unordered_map<const Object*, int32_t> stand_in_numbers_;
 };
 
 // Appends the record of `item`, bound for `box`, to `out` (at most kMaxItemRecord bytes).

@@ -358,6 +358,43 @@ TEST(Tcp, MediaInEveryModeEqualOneProcess) {
     }
 }
 
+// Scattering media light their samples with shadow rays: black boxes trace every
+// sample method 3's refinement may ask for as a child shadow ray and take POV-Ray's
+// adaptive rule once all are in (trace/shading.h, replay_media), the one-process value.
+// Spot, cylinder and area lights, media_attenuation, rays that miss everything.
+TEST(Tcp, MediaScatteringInEveryModeEqualOneProcess) {
+    // Over TCP only where every worker holds the media containers its rays are inside
+    // of: a worker that parsed only its part of the scene knows no interior of an
+    // object it left out (its number passes on, wire/items.h), so a shadow ray from a
+    // sample on a container's surface, which keeps the container in its stack, is not
+    // dimmed by that container's media while in that worker (types: 2x2x2 and 3x1x2,
+    // methods: 3x1x2).
+    const struct {
+        const char* name;
+        std::vector<std::string> tcp;
+    } scenes[] = {
+        {"media_scattering_types", {}},
+        {"media_scattering_atmosphere",
+         {"--boxes 2x2x2 --procs 2", "--boxes 3x1x2 --procs 2 --results parents"}},
+        {"media_scattering_methods", {"--boxes 2x2x2 --procs 2"}},
+        {"media_scattering_legacy",
+         {"--boxes 2x2x2 --procs 2", "--boxes 3x1x2 --procs 2 --results parents"}},
+        {"media_scattering_eccentric",
+         {"--boxes 2x2x2 --procs 2", "--boxes 3x1x2 --procs 2 --results parents"}},
+        {"media_density_map", {"--boxes 2x2x2 --procs 2"}},
+        {"media_scattering_area", {"--boxes 2x2x2 --procs 2"}},
+    };
+    for (const auto& scene : scenes) {
+        SCOPED_TRACE(scene.name);
+        const std::string file =
+            std::string(POVWALL_GOLDEN_DIR) + "/" + scene.name + ".pov";
+        std::vector<std::string> modes = {"--mode screen --procs 2", "--boxes 2x2x2",
+                                          "--boxes 3x1x2 --results parents"};
+        modes.insert(modes.end(), scene.tcp.begin(), scene.tcp.end());
+        expect_same_images(file, "-W 32 -H 24 -A", modes);
+    }
+}
+
 // Quality levels change what is traced (no shadows, no refraction, pigments only): every
 // mode leaves out the same rays.
 TEST(Tcp, QualityLevelsInEveryModeEqualOneProcess) {

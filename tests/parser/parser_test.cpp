@@ -653,13 +653,20 @@ TEST(Media, BadValuesAreLocatedAndMissingFeaturesUnsupported) {
               "                                        ^");
     EXPECT_EQ(first_line("media { samples 5, 2 }"),
               "test.pov:1:20: error: maximum samples must not be below the minimum");
-    EXPECT_EQ(first_line("media { scattering { 1, 0.5 } }"),
-              "test.pov:1:9: error: unsupported: media scattering");
-    EXPECT_EQ(first_line("media { density { density_map { [0 density { rgb 1 }] } } }"),
-              "test.pov:1:19: error: unsupported: density_map");
-    EXPECT_EQ(first_line("light_source { 0, 1 media_attenuation }\nmedia { emission 1 }"),
-              "test.pov:2:1: error: unsupported: atmospheric media with a light's "
+    EXPECT_EQ(first_line("media { scattering { 1, 0.5 eccentricity 0.3 } }"),
+              "test.pov:1:29: error: eccentricity only applies to scattering type 5");
+    EXPECT_EQ(first_line("media { density { density_map { [0 rgb 1] } } }"),
+              "test.pov:1:19: error: a density_map cannot be used with this pattern "
+              "type");
+    EXPECT_EQ(first_line("light_source { 0, 1 area_light x, y, 2, 2 media_attenuation }\n"
+                         "media { emission 1 }"),
+              "test.pov:2:1: error: unsupported: atmospheric media with an area light's "
               "media_attenuation");
+    EXPECT_EQ(
+        first_line("media { emission 1 }\n"
+                   "light_source { 0, 1 media_attenuation area_light x, y, 2, 2 }"),
+        "test.pov:2:21: error: unsupported: media_attenuation of an area light with "
+        "atmospheric media");
 }
 
 }  // namespace

@@ -99,5 +99,35 @@ TEST(Media, DensitiesMultiplyChannelByChannel) {
     EXPECT_FLOAT_EQ(e.add.b, 0.5f);
 }
 
+// POV-Ray's phase values (no 1/(4 pi)), averaged over the list; Henyey-Greenstein at
+// eccentricity +-1 stays finite where POV-Ray's formula divides 0 by 0.
+TEST(Media, PhaseFunctionsArePovRaysAndFinite) {
+    Media iso, hazy, murky, rayleigh, hg;
+    hazy.scattering_type = 2;
+    murky.scattering_type = 3;
+    rayleigh.scattering_type = 4;
+    hg.scattering_type = 5;
+    const Vector3 z{0, 0, 1}, x{1, 0, 0};
+    auto phase = [&](const Media& m, const Vector3& to_light) {
+        const Media* list[] = {&m};
+        return media_phase(list, to_light, z);
+    };
+    EXPECT_FLOAT_EQ(phase(iso, x), 1.0f);
+    EXPECT_FLOAT_EQ(phase(hazy, z), float(0.576655375 * 10));
+    EXPECT_FLOAT_EQ(phase(murky, z), float(0.495714547 * 51));
+    EXPECT_FLOAT_EQ(phase(rayleigh, x), float(0.799372013));
+    EXPECT_FLOAT_EQ(phase(rayleigh, -z), float(0.799372013 * 2));
+    hg.eccentricity = 0.5f;
+    EXPECT_FLOAT_EQ(phase(hg, z), float(0.75 / std::pow(0.25, 1.5)));
+    for (float g : {1.0f, -1.0f}) {
+        hg.eccentricity = g;
+        for (const Vector3& d : {z, -z, x}) EXPECT_TRUE(std::isfinite(phase(hg, d)));
+        EXPECT_EQ(phase(hg, x), 0.0f);
+    }
+    // An emitting media in the list counts as isotropic in the average.
+    const Media* list[] = {&rayleigh, &iso};
+    EXPECT_FLOAT_EQ(media_phase(list, -z, z), float((0.799372013 * 2 + 1) / 2));
+}
+
 }  // namespace
 }  // namespace povwall::trace
