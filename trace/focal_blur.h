@@ -1,0 +1,124 @@
+// Focal blur as POV-Ray 3.7 takes it: every camera sample averages several rays, each
+// through a sub-pixel position near the sample and from a point of the lens aperture,
+// aimed so that all meet on the focal plane. The rays go in batches (of POV-Ray's
+// hexagonal grids: 7, 6, 6, ...; else 4); after each batch a sample with at least
+// blur_samples_min rays stops once the variance of its mean is below a threshold made
+// from confidence and variance (chi-square). Everything is deterministic: aperture points
+// from fixed grids and Halton sequences (a bokeh pigment: also POV-Ray's Mersenne Twister
+// rejection sampling), sub-pixel positions from its hash and jitter tables. So a sample's
+// rays are a function of its position and ray index alone, and renderers that trace rays
+// in waves (sample_waves.h) ask for them by (position, index).
+#pragma once
+
+#include <algorithm>
+#include <optional>
+#include <vector>
+
+#include "core/scene.h"
+#include "trace/camera.h"
+#include "trace/pattern.h"
+#include "trace/pixel_sampler.h"
+
+namespace povwall::trace {
+
+class FocalBlur {
+  public:
+    // Focal blur is on when the camera has an aperture and blur samples.
+    static bool enabled(const Camera& camera) {
+        return camera.aperture != 0 && camera.blur_samples > 0;
+    }
+    // `env`: for the bokeh pigment.
+    FocalBlur(const Camera& camera, const PatternEnv& env);
+    const Camera& camera() const { return camera_; }
+
+    int max_rays() const { return max_rays_; }
+    // Rays in batch `level` (0, 1, ...).
+    int batch(int level) const {
+        return size_t(level) < batches_.size() && batches_[size_t(level)] > 0
+                   ? batches_[size_t(level)]
+                   : 4;
+    }
+    // After `n` rays with channel sums `s1` and sums of squares `s2` (rgbt): may the
+    // sample stop?
+    bool good_enough(int n, const float* s1, const float* s2) const;
+
+    // Ray `ray` of the sample at POV-Ray pixel position (x, y): its image position and
+    // how its aperture point moves it.
+    void ray_position(Real x, Real y, int ray, Real& rx, Real& ry) const;
+    ApertureShift aperture_shift(Real shifted_x, Real shifted_y, int ray) const;
+
+  private:
+    const Camera& camera_;
+    int max_rays_ = 0, min_rays_ = 0;
+    std::vector<int> batches_;           // rays per batch (0 ends the list: 4 from there)
+    std::vector<double> thresholds_;     // of the mean's variance after n rays, at n - 1
+    std::vector<Real> grid_x_, grid_y_;  // aperture points in [-0.5, 0.5]^2
+    Real max_jitter_ = 0, radius_ = 0, focal_scale_ = 1;
+    Vector3 x_perp_, y_perp_;
+};
+
+// Ray `ray` of the focal-blurred sample at POV-Ray pixel position (x, y) (none where the
+// camera sees nothing).
+inline std::optional<Ray> focal_blur_ray(const FocalBlur& blur, Real x, Real y, int ray,
+                                         int width, int height) {
+    Real rx, ry;
+    blur.ray_position(x, y, ray, rx, ry);
+    const Real sx = rx + 0.5, sy = ry - 0.5;  // POV-Ray's shift to the pixel centre
+    const ApertureShift shift = blur.aperture_shift(sx, sy, ray);
+    return camera_ray_shifted(blur.camera(), sx, sy, width, height, &shift);
+}
+
+// What a source of ray colours answers for one of a sample's rays.
+enum class RayAnswer { Traced, NoRay, Missing };
+
+// The sample's colour (rgbt) from its rays as POV-Ray averages them: `ray(k, rgbt)`
+// gives ray k. Every ray of a batch is asked for before giving up: false when one is
+// missing (rgbt then unspecified). POV-Ray counts a ray the camera does not have as
+// fully transparent black in the variance but not in the colour.
+template <class RayColour>
+bool average_focal_rays(const FocalBlur& blur, RayColour&& ray, float* rgbt) {
+    float sum[4] = {0, 0, 0, 0}, s1[4] = {0, 0, 0, 0}, s2[4] = {0, 0, 0, 0};
+    std::vector<float> colours;
+    std::vector<RayAnswer> answers;
+    int n = 0;
+    for (int level = 0; n < blur.max_rays(); ++level) {
+        const int end = std::min(n + blur.batch(level), blur.max_rays());
+        colours.resize(size_t(end - n) * 4);
+        answers.resize(size_t(end - n));
+        bool complete = true;
+        for (int k = n; k < end; ++k) {
+            answers[size_t(k - n)] = ray(k, &colours[size_t(k - n) * 4]);
+            complete &= answers[size_t(k - n)] != RayAnswer::Missing;
+        }
+        if (!complete) return false;
+        for (int k = n; k < end; ++k) {
+            const float* col = &colours[size_t(k - n) * 4];
+            float v[4] = {0, 0, 0, 1};
+            if (answers[size_t(k - n)] == RayAnswer::Traced) {
+                for (int ch = 0; ch < 4; ++ch) {
+                    v[ch] = col[ch];
+                    sum[ch] += col[ch];
+                }
+            }
+            for (int ch = 0; ch < 4; ++ch) {
+                s1[ch] += v[ch];
+                s2[ch] += v[ch] * v[ch];
+            }
+        }
+        n = end;
+        if (blur.good_enough(n, s1, s2)) break;
+    }
+    for (int ch = 0; ch < 4; ++ch) rgbt[ch] = float(double(sum[ch]) / double(n));
+    return true;
+}
+
+// The camera ray of `p` (POV-Ray pixel coordinates): ray p.ray of a focal-blurred sample
+// (with `blur`), else the sample's one ray.
+inline std::optional<Ray> sample_camera_ray(const Camera& camera, const FocalBlur* blur,
+                                            const SamplePosition& p, int width,
+                                            int height) {
+    if (p.ray >= 0 && blur) return focal_blur_ray(*blur, p.x, p.y, p.ray, width, height);
+    return camera_ray_pov(camera, p.x, p.y, width, height);
+}
+
+}  // namespace povwall::trace
