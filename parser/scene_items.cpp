@@ -35,7 +35,10 @@ CameraSpec Interpreter::parse_camera_block() {
     }
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return c;
+        if (is_punct(t, '}')) {
+            c.parsed = true;
+            return c;
+        }
         Transform tr;
         if (try_transform(t, tr)) {
             c.transform = c.transform.then(tr);
@@ -138,14 +141,18 @@ CameraSpec Interpreter::parse_legacy_camera(CameraSpec c) {
         const Camera cam = finish_camera(c);
         c.kind = cam.kind, c.location = cam.location, c.direction = cam.direction;
         c.right = cam.right, c.up = cam.up, c.angle = cam.angle;
-        c.focal_distance = cam.focal_distance;
+        // A camera parsed before has its focal distance; a fresh one gets it here.
+        c.focal_distance = c.parsed ? cam.focal_distance : -1;
         c.has_focal_point = false;
         c.transform = Transform{};
         c.legacy = true;
     }
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return c;
+        if (is_punct(t, '}')) {
+            c.parsed = true;
+            return c;
+        }
         Transform tr;
         if (try_transform(t, tr)) {
             c.location = tr.point(c.location);

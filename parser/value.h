@@ -108,6 +108,7 @@ struct CameraSpec {
     // A legacy camera's length of `direction` as its angle and look_at left it (POV-Ray's
     // Direction_Length: the focal distance when none is given).
     double legacy_direction_length = 1;
+    bool parsed = false;  // a camera block made it (not the default camera)
     Transform transform;
     SourceLoc loc;
     uint32_t offset = 0;  // of the camera's '{', for diagnostics

@@ -1,11 +1,14 @@
 #include "trace/sample_waves.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "trace/focal_blur.h"
 
@@ -168,14 +171,23 @@ class SampleCache final : public SampleSource {
 };
 
 // Focal-blurred samples: each the average of its rays, asked of the cache by (position,
-// ray), batch by batch (the rays the camera does not have are never asked for).
+// ray), batch by batch (the rays the camera does not have are never asked for). Finished
+// samples are kept by position; while the cache is `estimating`, a sample whose rays are
+// not all in is guessed as the cache guesses plain samples (from the finished samples at
+// the pixel centres around it), so that +AM1's chains of decisions take few waves here
+// too.
 class FocalSamples final : public SampleSource {
   public:
     FocalSamples(SampleCache& cache, const FocalBlur& blur,
                  const RenderSettings& settings)
         : cache_(cache), blur_(blur), settings_(settings) {}
     bool sample(Real x, Real y, float* rgbt) override {
-        return average_focal_rays(
+        const Key key{std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(y)};
+        if (auto it = done_.find(key); it != done_.end()) {
+            std::copy_n(it->second.data(), 4, rgbt);
+            return true;
+        }
+        const bool complete = average_focal_rays(
             blur_,
             [&](int k, float* c) {
                 if (!focal_blur_ray(blur_, x, y, k, settings_.width, settings_.height))
@@ -184,12 +196,64 @@ class FocalSamples final : public SampleSource {
                                                     : RayAnswer::Missing;
             },
             rgbt);
+        if (complete) {
+            std::copy_n(rgbt, 4, done_[key].data());
+            return true;
+        }
+        if (pending_keys_.insert(key).second) pending_.push_back({x, y});
+        return cache_.estimating && estimate(x, y, rgbt);
+    }
+    // After a wave: every sample asked for and not finished asks for its next batch of
+    // rays, whether or not a replay reaches it (a block's replay stops at its first
+    // unfinished decision, which would otherwise make its samples go one at a time).
+    void advance() {
+        float rgbt[4];
+        for (const SamplePosition& p : pending_) {
+            pending_keys_.erase(
+                Key{std::bit_cast<uint64_t>(p.x), std::bit_cast<uint64_t>(p.y)});
+        }
+        std::vector<SamplePosition> asked;
+        asked.swap(pending_);
+        for (const SamplePosition& p : asked) sample(p.x, p.y, rgbt);
     }
 
   private:
+    struct Key {
+        uint64_t x, y;
+        bool operator==(const Key&) const = default;
+    };
+    struct KeyHash {
+        size_t operator()(const Key& k) const {
+            return std::hash<uint64_t>()(k.x * 0x9e3779b97f4a7c15ull ^ k.y);
+        }
+    };
+    const float* finished(Real x, Real y) const {
+        auto it = done_.find(Key{std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(y)});
+        return it == done_.end() ? nullptr : it->second.data();
+    }
+    bool estimate(Real x, Real y, float* rgbt) const {
+        const Real x0 = std::floor(x), y0 = std::floor(y);
+        const float fx = float(x - x0), fy = float(y - y0);
+        const float* c[4] = {finished(x0, y0), finished(x0 + 1, y0), finished(x0, y0 + 1),
+                             finished(x0 + 1, y0 + 1)};
+        const float w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+        float total = 0;
+        std::fill_n(rgbt, 4, 0.0f);
+        for (int k = 0; k < 4; ++k) {
+            if (!c[k]) continue;
+            total += w[k];
+            for (int ch = 0; ch < 4; ++ch) rgbt[ch] += w[k] * c[k][ch];
+        }
+        if (total <= 0) return false;
+        for (int ch = 0; ch < 4; ++ch) rgbt[ch] /= total;
+        return true;
+    }
     SampleCache& cache_;
     const FocalBlur& blur_;
     const RenderSettings& settings_;
+    std::unordered_map<Key, std::array<float, 4>, KeyHash> done_;
+    std::vector<SamplePosition> pending_;  // asked for, not finished (in pending_keys_)
+    std::unordered_set<Key, KeyHash> pending_keys_;
 };
 
 }  // namespace
@@ -230,6 +294,7 @@ Image render_in_waves(const RenderSettings& settings, const SamplerSettings& sam
             const size_t traced = cache.trace_wanted(trace_wave);
             if (stats) stats->samples.push_back(traced);
         }
+        if (focal) focal->advance();
         still_open.clear();
         for (size_t k : open) {
             const PixelBlock& b = blocks[k];
