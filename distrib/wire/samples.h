@@ -18,7 +18,7 @@
 namespace povwall::distrib {
 
 constexpr size_t kSampleRecordSize = 20;
-// Records per Samples frame (1 MB): larger waves go out in several frames.
+// Records per Samples frame (1.25 MB): larger waves go out in several frames.
 constexpr size_t kSamplesPerFrame = size_t(1) << 16;
 
 inline void write_sample_position(std::vector<uint8_t>& body,
