@@ -180,7 +180,11 @@ class FocalSamples final : public SampleSource {
   public:
     FocalSamples(SampleCache& cache, const FocalBlur& blur,
                  const RenderSettings& settings)
-        : cache_(cache), blur_(blur), settings_(settings) {}
+        : cache_(cache),
+          blur_(blur),
+          settings_(settings),
+          may_miss_(blur.camera().kind == Camera::Kind::Fisheye ||
+                    blur.camera().kind == Camera::Kind::Omnimax) {}
     bool sample(Real x, Real y, float* rgbt) override {
         const Key key{std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(y)};
         if (auto it = done_.find(key); it != done_.end()) {
@@ -190,7 +194,8 @@ class FocalSamples final : public SampleSource {
         const bool complete = average_focal_rays(
             blur_,
             [&](int k, float* c) {
-                if (!focal_blur_ray(blur_, x, y, k, settings_.width, settings_.height))
+                if (may_miss_ &&
+                    !focal_blur_ray(blur_, x, y, k, settings_.width, settings_.height))
                     return RayAnswer::NoRay;
                 return cache_.focal_ray(x, y, k, c) ? RayAnswer::Traced
                                                     : RayAnswer::Missing;
@@ -251,6 +256,9 @@ class FocalSamples final : public SampleSource {
     SampleCache& cache_;
     const FocalBlur& blur_;
     const RenderSettings& settings_;
+    // Only these kinds lack rays somewhere (camera_ray_shifted); the others need no
+    // camera ray made to know that it exists.
+    const bool may_miss_;
     std::unordered_map<Key, std::array<float, 4>, KeyHash> done_;
     std::vector<SamplePosition> pending_;  // asked for, not finished (in pending_keys_)
     std::unordered_set<Key, KeyHash> pending_keys_;
