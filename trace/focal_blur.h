@@ -71,45 +71,61 @@ inline std::optional<Ray> focal_blur_ray(const FocalBlur& blur, Real x, Real y, 
 // What a source of ray colours answers for one of a sample's rays.
 enum class RayAnswer { Traced, NoRay, Missing };
 
-// The sample's colour (rgbt) from its rays as POV-Ray averages them: `ray(k, rgbt)`
-// gives ray k. Every ray of a batch is asked for before giving up: false when one is
-// missing (rgbt then unspecified). POV-Ray counts a ray the camera does not have as
-// fully transparent black in the variance but not in the colour.
-template <class RayColour>
-bool average_focal_rays(const FocalBlur& blur, RayColour&& ray, float* rgbt) {
+// How far a sample's rays are averaged: renderers that trace rays in waves resume it
+// batch by batch.
+struct FocalProgress {
     float sum[4] = {0, 0, 0, 0}, s1[4] = {0, 0, 0, 0}, s2[4] = {0, 0, 0, 0};
+    int rays = 0, level = 0;
+    bool finished = false;
+};
+
+// The sample's colour (rgbt) from its rays as POV-Ray averages them, going on from
+// `progress`: `ray(k, rgbt)` gives ray k. Every ray of a batch is asked for before giving
+// up: false when one is missing (rgbt then unspecified; `progress` keeps the batches
+// before it). POV-Ray counts a ray the camera does not have as fully transparent black
+// in the variance but not in the colour.
+template <class RayColour>
+bool continue_focal_rays(const FocalBlur& blur, RayColour&& ray, FocalProgress& progress,
+                         float* rgbt) {
+    FocalProgress& p = progress;
     std::vector<float> colours;
     std::vector<RayAnswer> answers;
-    int n = 0;
-    for (int level = 0; n < blur.max_rays(); ++level) {
-        const int end = std::min(n + blur.batch(level), blur.max_rays());
-        colours.resize(size_t(end - n) * 4);
-        answers.resize(size_t(end - n));
+    while (!p.finished) {
+        const int end = std::min(p.rays + blur.batch(p.level), blur.max_rays());
+        colours.resize(size_t(end - p.rays) * 4);
+        answers.resize(size_t(end - p.rays));
         bool complete = true;
-        for (int k = n; k < end; ++k) {
-            answers[size_t(k - n)] = ray(k, &colours[size_t(k - n) * 4]);
-            complete &= answers[size_t(k - n)] != RayAnswer::Missing;
+        for (int k = p.rays; k < end; ++k) {
+            answers[size_t(k - p.rays)] = ray(k, &colours[size_t(k - p.rays) * 4]);
+            complete &= answers[size_t(k - p.rays)] != RayAnswer::Missing;
         }
         if (!complete) return false;
-        for (int k = n; k < end; ++k) {
-            const float* col = &colours[size_t(k - n) * 4];
+        for (int k = p.rays; k < end; ++k) {
+            const float* col = &colours[size_t(k - p.rays) * 4];
             float v[4] = {0, 0, 0, 1};
-            if (answers[size_t(k - n)] == RayAnswer::Traced) {
+            if (answers[size_t(k - p.rays)] == RayAnswer::Traced) {
                 for (int ch = 0; ch < 4; ++ch) {
                     v[ch] = col[ch];
-                    sum[ch] += col[ch];
+                    p.sum[ch] += col[ch];
                 }
             }
             for (int ch = 0; ch < 4; ++ch) {
-                s1[ch] += v[ch];
-                s2[ch] += v[ch] * v[ch];
+                p.s1[ch] += v[ch];
+                p.s2[ch] += v[ch] * v[ch];
             }
         }
-        n = end;
-        if (blur.good_enough(n, s1, s2)) break;
+        p.rays = end;
+        ++p.level;
+        p.finished = blur.good_enough(p.rays, p.s1, p.s2) || p.rays >= blur.max_rays();
     }
-    for (int ch = 0; ch < 4; ++ch) rgbt[ch] = float(double(sum[ch]) / double(n));
+    for (int ch = 0; ch < 4; ++ch) rgbt[ch] = float(double(p.sum[ch]) / double(p.rays));
     return true;
+}
+
+template <class RayColour>
+bool average_focal_rays(const FocalBlur& blur, RayColour&& ray, float* rgbt) {
+    FocalProgress progress;
+    return continue_focal_rays(blur, ray, progress, rgbt);
 }
 
 // The camera ray of `p` (POV-Ray pixel coordinates): ray p.ray of a focal-blurred sample

@@ -171,11 +171,11 @@ class SampleCache final : public SampleSource {
 };
 
 // Focal-blurred samples: each the average of its rays, asked of the cache by (position,
-// ray), batch by batch (the rays the camera does not have are never asked for). Finished
-// samples are kept by position; while the cache is `estimating`, a sample whose rays are
-// not all in is guessed as the cache guesses plain samples (from the finished samples at
-// the pixel centres around it), so that +AM1's chains of decisions take few waves here
-// too.
+// ray), batch by batch (the rays the camera does not have are never asked for). Each
+// sample's progress is kept by position (a wave's replay adds only its new batch); while
+// the cache is `estimating`, a sample whose rays are not all in is guessed as the cache
+// guesses plain samples (from the finished samples at the pixel centres around it), so
+// that +AM1's chains of decisions take few waves here too.
 class FocalSamples final : public SampleSource {
   public:
     FocalSamples(SampleCache& cache, const FocalBlur& blur,
@@ -187,11 +187,8 @@ class FocalSamples final : public SampleSource {
                     blur.camera().kind == Camera::Kind::Omnimax) {}
     bool sample(Real x, Real y, float* rgbt) override {
         const Key key{std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(y)};
-        if (auto it = done_.find(key); it != done_.end()) {
-            std::copy_n(it->second.data(), 4, rgbt);
-            return true;
-        }
-        const bool complete = average_focal_rays(
+        FocalProgress& progress = progress_[key];
+        const bool complete = continue_focal_rays(
             blur_,
             [&](int k, float* c) {
                 if (may_miss_ &&
@@ -200,11 +197,8 @@ class FocalSamples final : public SampleSource {
                 return cache_.focal_ray(x, y, k, c) ? RayAnswer::Traced
                                                     : RayAnswer::Missing;
             },
-            rgbt);
-        if (complete) {
-            std::copy_n(rgbt, 4, done_[key].data());
-            return true;
-        }
+            progress, rgbt);
+        if (complete) return true;
         if (pending_keys_.insert(key).second) pending_.push_back({x, y});
         return cache_.estimating && estimate(x, y, rgbt);
     }
@@ -232,15 +226,23 @@ class FocalSamples final : public SampleSource {
             return std::hash<uint64_t>()(k.x * 0x9e3779b97f4a7c15ull ^ k.y);
         }
     };
-    const float* finished(Real x, Real y) const {
-        auto it = done_.find(Key{std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(y)});
-        return it == done_.end() ? nullptr : it->second.data();
+    // The colour of a finished sample at (x, y), or null.
+    const float* finished(Real x, Real y, float* rgbt) const {
+        auto it =
+            progress_.find(Key{std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(y)});
+        if (it == progress_.end() || !it->second.finished) return nullptr;
+        const FocalProgress& p = it->second;
+        for (int ch = 0; ch < 4; ++ch)
+            rgbt[ch] = float(double(p.sum[ch]) / double(p.rays));
+        return rgbt;
     }
     bool estimate(Real x, Real y, float* rgbt) const {
         const Real x0 = std::floor(x), y0 = std::floor(y);
         const float fx = float(x - x0), fy = float(y - y0);
-        const float* c[4] = {finished(x0, y0), finished(x0 + 1, y0), finished(x0, y0 + 1),
-                             finished(x0 + 1, y0 + 1)};
+        float corner[4][4];
+        const float* c[4] = {finished(x0, y0, corner[0]), finished(x0 + 1, y0, corner[1]),
+                             finished(x0, y0 + 1, corner[2]),
+                             finished(x0 + 1, y0 + 1, corner[3])};
         const float w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
         float total = 0;
         std::fill_n(rgbt, 4, 0.0f);
@@ -259,7 +261,7 @@ class FocalSamples final : public SampleSource {
     // Only these kinds lack rays somewhere (camera_ray_shifted); the others need no
     // camera ray made to know that it exists.
     const bool may_miss_;
-    std::unordered_map<Key, std::array<float, 4>, KeyHash> done_;
+    std::unordered_map<Key, FocalProgress, KeyHash> progress_;
     std::vector<SamplePosition> pending_;  // asked for, not finished (in pending_keys_)
     std::unordered_set<Key, KeyHash> pending_keys_;
 };
