@@ -389,6 +389,7 @@ TEST(Tcp, CamerasAndFocalBlurInEveryModeEqualOneProcess) {
         {"camera_focal_blur_bokeh", ""},
         {"camera_focal_blur_legacy", ""},
         {"camera_focal_blur_kinds", ""},
+        {"camera_focal_blur_fisheye", "+UA +A0.3"},
         {"camera_focal_blur_antialias", "+A0.1 +AM2 +R2"},
         {"camera_focal_blur_antialias", "+A0.3 +AM1 +J"}};
     for (const auto& [name, args] : cases) {
