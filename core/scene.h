@@ -785,7 +785,9 @@ struct Camera {
         Cylinder1,
         Cylinder2,
         Cylinder3,
-        Cylinder4  // `cylinder N`
+        Cylinder4,  // `cylinder N`
+        Omnimax,
+        Spherical
     } kind = Kind::Perspective;
     // Final vectors after look_at, angle, sky and transforms have been applied.
     Point3 location{0, 0, 0};
@@ -793,8 +795,20 @@ struct Camera {
     Vector3 right{1.33, 0, 0};
     Vector3 up{0, 1, 0};
     Real angle = 90;  // degrees; the field of view of the non-projective kinds
-    Real aperture = 0, focal_distance = 0;
-    int blur_samples = 0;
+    // The spherical camera's fields of view (degrees), across and up.
+    Real h_angle = 360, v_angle = 180;
+    // `normal { }`: perturbs the primary rays' directions, the pattern evaluated at the
+    // camera's image coordinates (not moved with the camera). The scene's final
+    // noise_generator and number_of_waves go with it, as its patterns read them.
+    HeapOptional<Normal> normal;
+    int normal_noise_generator = 2, normal_number_of_waves = 10;
+    // Focal blur (on with an aperture and blur_samples): each camera sample averages
+    // rays from points of the aperture aimed at the focal plane, `focal_distance` from
+    // the location along `direction`, stopping early by confidence and variance.
+    Real aperture = 0, focal_distance = 1;
+    int blur_samples = 0, blur_samples_min = 0;
+    Real confidence = 0.9, variance = 1.0 / 10000;
+    HeapOptional<Pigment> bokeh;  // the aperture's shape (absent: a disc)
     SourceLoc loc;
 };
 

@@ -20,6 +20,7 @@
 #include "distrib/space_render.h"
 #include "distrib/wire/items.h"
 #include "trace/camera_interiors.h"
+#include "trace/focal_blur.h"
 #include "trace/prepared_scene.h"
 #include "trace/render_plan.h"
 #include "trace/shading.h"
@@ -118,6 +119,8 @@ class BoxHost {
     // in; -1 where the camera sees nothing.
     int camera_item(int pixel, Item& item) const;
     bool has_camera_ray(int slot) const;
+    // The camera's focal blur (null without): samples of set_samples() may name its rays.
+    const trace::FocalBlur* focal_blur() const { return blur_.get(); }
     // Items that arrived from another process for hosted box `box`, at once (one lock,
     // one wake-up): `fill(item)` decodes
     // the next item into place and returns its encoded size, or 0 when there is no
@@ -261,6 +264,7 @@ class BoxHost {
     std::atomic<bool> bad_result_{false};
     int total_pixels_ = 0;  // slots: the image's pixels, or samples_.size()
     std::vector<trace::SamplePosition> samples_;
+    std::unique_ptr<trace::FocalBlur> blur_;
     // Progress (settings.progress): pixels sent, scaled by the share of items finished.
     std::atomic<uint64_t> progress_reported_{0};
     void report_progress();

@@ -62,6 +62,13 @@ BoxHost::BoxHost(const Scene& scene, const trace::RenderSettings& settings,
     shared_boxes_ = !parents_ && options.direct_handoff;
     total_pixels_ = settings.width * settings.height;
     sum_channels_ = settings.alpha ? 4 : 3;
+    if (trace::FocalBlur::enabled(scene.camera)) {
+        trace::PatternEnv env;  // as trace::PreparedScene makes it (for a bokeh pigment)
+        env.noise_generator = scene.settings.noise_generator;
+        env.number_of_waves = scene.settings.number_of_waves;
+        env.quick_colours = plan_.quality.quick_colours();
+        blur_ = std::make_unique<trace::FocalBlur>(scene.camera, env);
+    }
 }
 
 // Whether the ray's segment in box `s.box` can meet the box's reach. Skipping a box
@@ -632,16 +639,12 @@ void BoxHost::set_samples(std::vector<trace::SamplePosition> samples) {
         samples_.empty() ? settings_.width * settings_.height : int(samples_.size());
 }
 
-namespace {
-std::optional<Ray> sample_ray(const Camera& camera, const trace::SamplePosition& p,
-                              const trace::RenderSettings& s) {
-    return trace::camera_ray_pov(camera, p.x, p.y, s.width, s.height);
-}
-}  // namespace
-
 bool BoxHost::has_camera_ray(int slot) const {
     if (!samples_.empty())
-        return sample_ray(scene_.camera, samples_[size_t(slot)], settings_).has_value();
+        return trace::sample_camera_ray(scene_.camera, blur_.get(),
+                                        samples_[size_t(slot)], settings_.width,
+                                        settings_.height)
+            .has_value();
     const int x = slot % settings_.width, y = slot / settings_.width;
     return trace::camera_ray(scene_.camera, x + 0.5, y + 0.5, settings_.width,
                              settings_.height)
@@ -652,7 +655,9 @@ int BoxHost::camera_item(int pixel, Item& item) const {
     RayItem& r = item.ray;
     std::optional<Ray> ray;
     if (!samples_.empty()) {
-        ray = sample_ray(scene_.camera, samples_[size_t(pixel)], settings_);
+        ray =
+            trace::sample_camera_ray(scene_.camera, blur_.get(), samples_[size_t(pixel)],
+                                     settings_.width, settings_.height);
     } else {
         const int x = pixel % settings_.width, y = pixel / settings_.width;
         ray = trace::camera_ray(scene_.camera, x + 0.5, y + 0.5, settings_.width,
@@ -985,9 +990,9 @@ Image render_space(const Scene& scene, const trace::RenderSettings& settings,
                       : int(std::max(1u, std::thread::hardware_concurrency()));
     const trace::SamplerSettings sampling = trace::sampler_settings(settings, scene);
     Image image;
-    if (sampling.method != 0) {
-        // Anti-aliasing: the samples go through the boxes in waves, every block's
-        // decisions replayed here (trace/sample_waves.h).
+    if (sampling.method != 0 || host.focal_blur()) {
+        // Anti-aliasing or focal blur: the samples (or their rays) go through the boxes
+        // in waves, every block's decisions replayed here (trace/sample_waves.h).
         auto trace_wave = [&](const std::vector<trace::SamplePosition>& wave,
                               std::vector<float>& rgbt) {
             if (settings.progress) settings.progress->start_pass(wave.size());
@@ -996,7 +1001,8 @@ Image render_space(const Scene& scene, const trace::RenderSettings& settings,
             host.sample_colours(rgbt);
         };
         trace::WaveStats waves;
-        image = trace::render_in_waves(settings, sampling, trace_wave, &waves);
+        image = trace::render_in_waves(settings, sampling, trace_wave, &waves,
+                                       host.focal_blur());
         if (stats) stats->wave_samples = waves.samples;
     } else {
         if (settings.progress)

@@ -125,14 +125,15 @@ class TcpCoordinator {
             w.last_seen = Clock::now();
         }
         Image image;
-        if (sampling_.method == 0) {
+        if (sampling_.method == 0 && !emitter_->focal_blur()) {
             run_pass(nullptr);
             image =
                 image_from_sums(sums_, settings.width, settings.height, settings.alpha);
             trace::finish_pixels_without_camera_ray(image, scene.camera, settings);
         } else {
-            // Anti-aliasing: the samples go through the boxes in waves, every block's
-            // decisions replayed here (trace/sample_waves.h), as in one process.
+            // Anti-aliasing or focal blur: the samples (or their rays) go through the
+            // boxes in waves, every block's decisions replayed here
+            // (trace/sample_waves.h), as in one process.
             auto trace_wave = [&](const std::vector<trace::SamplePosition>& wave,
                                   std::vector<float>& rgbt) {
                 run_pass(&wave);
@@ -146,7 +147,8 @@ class TcpCoordinator {
                 }
             };
             trace::WaveStats waves;
-            image = trace::render_in_waves(settings, sampling_, trace_wave, &waves);
+            image = trace::render_in_waves(settings, sampling_, trace_wave, &waves,
+                                           emitter_->focal_blur());
             if (stats) stats->wave_samples = waves.samples;
         }
         in_frame_ = false;
@@ -350,8 +352,10 @@ class TcpCoordinator {
                               : int(std::max(1u, cores / unsigned(tcp_.procs)));
             const size_t before = local_.size();
             forked_ = tcp_.fork_workers && single_threaded();
-            // Anti-aliasing waves vary in size: their sums come back as records.
-            if (forked_ && sampling_.method == 0) {
+            // Anti-aliasing and focal-blur waves vary in size: their sums come back as
+            // records.
+            if (forked_ && sampling_.method == 0 &&
+                !trace::FocalBlur::enabled(scene_->camera)) {
                 // The sums exist before the fork, so every worker maps them; the frame's
                 // size is fixed for this coordinator (FixedJob).
                 shared_sums_ =

@@ -629,9 +629,13 @@ class Worker {
         // Samples lie within a pixel or so of the image; at most 64 per pixel on average
         // (the sums are 24-32 bytes per sample and thread).
         const double reach = double(std::max(settings_.width, settings_.height)) + 4;
-        const size_t most = size_t(settings_.width) * size_t(settings_.height) * 64;
+        // (Focal blur: up to all of a sample's rays each.)
+        const trace::FocalBlur* blur = host_ ? host_->focal_blur() : nullptr;
+        const int rays = blur ? blur->max_rays() : 0;
+        const size_t most = size_t(settings_.width) * size_t(settings_.height) * 64 *
+                            size_t(std::max(rays, 1));
         if (!host_ || running_ || pending_samples_.size() + f.count > most ||
-            !read_sample_positions(f.body, f.count, reach, pending_samples_))
+            !read_sample_positions(f.body, f.count, reach, pending_samples_, rays))
             return fail_job("bad sample frame");
     }
 

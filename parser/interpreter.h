@@ -194,6 +194,7 @@ class Interpreter {
     CameraSpec parse_camera_block();
     // The rest of a camera block read as POV-Ray read it before 3.5, from `c`.
     CameraSpec parse_legacy_camera(CameraSpec c);
+    bool parse_focal_blur_item(const Token& t, CameraSpec& c);
     void parse_global_settings();
     Value parse_declared_value(const Token& first);
     Value parse_item_value(const Token& t);

@@ -29,13 +29,17 @@ CameraSpec Interpreter::parse_camera_block() {
         const Camera cam = finish_camera(c);
         c.kind = cam.kind, c.location = cam.location, c.direction = cam.direction;
         c.right = cam.right, c.up = cam.up, c.angle = cam.angle;
-        c.has_look_at = c.has_angle = false;
+        c.focal_distance = cam.focal_distance;
+        c.has_look_at = c.has_angle = c.has_focal_point = false;
         c.has_up = c.has_right = true;
         c.legacy = false;
     }
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return c;
+        if (is_punct(t, '}')) {
+            c.parsed = true;
+            return c;
+        }
         Transform tr;
         if (try_transform(t, tr)) {
             c.transform = c.transform.then(tr);
@@ -52,6 +56,10 @@ CameraSpec Interpreter::parse_camera_block() {
             c.kind = Camera::Kind::UltraWideAngle;
         else if (w == "panoramic")
             c.kind = Camera::Kind::Panoramic;
+        else if (w == "omnimax")
+            c.kind = Camera::Kind::Omnimax;
+        else if (w == "spherical")
+            c.kind = Camera::Kind::Spherical;
         else if (w == "cylinder") {
             const Token at = peek();
             const double n = parse_float();
@@ -76,18 +84,49 @@ CameraSpec Interpreter::parse_camera_block() {
         else if (w == "look_at") {
             c.look_at = parse_vector();
             c.has_look_at = true;
+        } else if (w == "angle" && c.kind == Camera::Kind::Spherical) {
+            // `angle h[,] [v]`: the fields of view across and up (v: h / 2 if absent).
+            const Token at = peek();
+            c.h_angle = parse_float();
+            if (c.h_angle < 0) error(at, "negative horizontal angle");
+            accept_punct(',');
+            const Token vat = peek();
+            c.v_angle = starts_expression(vat) ? parse_float() : c.h_angle * 0.5;
+            if (c.v_angle < 0) error(vat, "negative vertical angle");
         } else if (w == "angle") {
             // One float: POV-Ray 3.7 reads `angle h[,] v` only for the spherical camera.
             c.angle = parse_float();
             c.has_angle = true;
-        } else if (w == "aperture" || w == "blur_samples" || w == "focal_point" ||
-                   w == "confidence" || w == "variance") {
-            unsupported(t, "focal blur");
-        } else if (w == "omnimax" || w == "spherical" || w == "mesh_camera" ||
-                   w == "user_defined") {
-            unsupported(t, "camera " + std::string(w));
         } else if (w == "normal") {
-            unsupported(t, "camera normal");
+            parse_normal_into(c.normal);
+        } else if (parse_focal_blur_item(t, c)) {
+        } else if (w == "bokeh") {
+            expect_punct('{', "after 'bokeh'");
+            while (is_word(peek(), "pigment")) {
+                next();
+                c.bokeh = parse_pigment_block();
+            }
+            expect_punct('}', "to end 'bokeh'");
+        } else if (w == "blur_samples") {
+            // `blur_samples [min,] max`: one number is the maximum (no minimum).
+            const Token at = peek();
+            const int given = int(parse_float());
+            if (given <= 0) error(at, "illegal number of focal blur samples");
+            accept_punct(',');
+            const int most = starts_expression(peek()) ? int(parse_float()) : 0;
+            if (most == 0) {
+                c.blur_samples = given, c.blur_samples_min = 0;
+            } else {
+                if (given > most)
+                    error(at,
+                          "focal blur samples minimum must not be larger than maximum");
+                c.blur_samples = most, c.blur_samples_min = given;
+            }
+        } else if (w == "focal_point") {
+            c.focal_point = parse_vector();
+            c.has_focal_point = true;
+        } else if (w == "mesh_camera" || w == "user_defined") {
+            unsupported(t, "camera " + std::string(w));
         } else {
             expected("a camera item or '}'", t);
         }
@@ -103,12 +142,18 @@ CameraSpec Interpreter::parse_legacy_camera(CameraSpec c) {
         const Camera cam = finish_camera(c);
         c.kind = cam.kind, c.location = cam.location, c.direction = cam.direction;
         c.right = cam.right, c.up = cam.up, c.angle = cam.angle;
+        // A camera parsed before has its focal distance; a fresh one gets it here.
+        c.focal_distance = c.parsed ? cam.focal_distance : -1;
+        c.has_focal_point = false;
         c.transform = Transform{};
         c.legacy = true;
     }
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return c;
+        if (is_punct(t, '}')) {
+            c.parsed = true;
+            return c;
+        }
         Transform tr;
         if (try_transform(t, tr)) {
             c.location = tr.point(c.location);
@@ -135,7 +180,7 @@ CameraSpec Interpreter::parse_legacy_camera(CameraSpec c) {
         } else if (w == "panoramic") {
             c.kind = Camera::Kind::Panoramic;
         } else if (w == "omnimax") {
-            unsupported(t, "camera omnimax");
+            c.kind = Camera::Kind::Omnimax;
         } else if (w == "mesh_camera") {
             error(t, "this camera type is not supported for language version < 3.5");
         } else if (w == "cylinder") {
@@ -153,9 +198,10 @@ CameraSpec Interpreter::parse_legacy_camera(CameraSpec c) {
                 if (c.angle >= 180) error(at, "camera angle must be below 180 degrees");
                 const double len = length(c.right) / std::tan(c.angle * kPi / 360) / 2;
                 c.direction = normalize(c.direction) * len;
+                c.legacy_direction_length = len;
             }
         } else if (w == "normal") {
-            unsupported(t, "camera normal");
+            parse_normal_into(c.normal);
         } else if (w == "location") {
             c.location = parse_vector();
         } else if (w == "direction") {
@@ -185,13 +231,45 @@ CameraSpec Interpreter::parse_legacy_camera(CameraSpec c) {
             c.up = cross(d, r) * ul;
             c.direction = d * dl;
             c.right = r * (handed > 0 ? rl : -rl);
-        } else if (w == "aperture" || w == "blur_samples" || w == "focal_point" ||
-                   w == "confidence" || w == "variance") {
-            unsupported(t, "focal blur");
+            c.legacy_direction_length = dl;
+        } else if (parse_focal_blur_item(t, c)) {
+        } else if (w == "blur_samples") {
+            const Token at = peek();
+            c.blur_samples = int(parse_float());
+            if (c.blur_samples <= 0) error(at, "illegal number of focal blur samples");
+        } else if (w == "focal_point") {
+            // The distance from the location as it stands now.
+            c.focal_point = parse_vector();
+            c.focal_distance = length(c.focal_point - c.location);
         } else {
             expected("a camera item or '}'", t);
         }
     }
+}
+
+// The focal-blur items both camera syntaxes read alike: aperture, confidence, variance
+// (out-of-range values warn and keep the default, as POV-Ray). False if `t` is none.
+bool Interpreter::parse_focal_blur_item(const Token& t, CameraSpec& c) {
+    if (is_word(t, "aperture")) {
+        c.aperture = parse_float();
+    } else if (is_word(t, "confidence")) {
+        const Token at = peek();
+        const double k = parse_float();
+        if (k > 0 && k < 1)
+            c.confidence = k;
+        else
+            warn(at, "illegal confidence value; the default is used");
+    } else if (is_word(t, "variance")) {
+        const Token at = peek();
+        const double k = parse_float();
+        if (k >= 0 && k <= 1)
+            c.variance = k;
+        else
+            warn(at, "illegal variance value; the default is used");
+    } else {
+        return false;
+    }
+    return true;
 }
 
 // POV-Ray 3.5+ applies the camera items in a fixed order whatever the order in the file:
@@ -201,14 +279,31 @@ Camera Interpreter::finish_camera(const CameraSpec& s) {
     Camera cam;
     cam.kind = s.kind;
     cam.loc = s.loc;
+    cam.h_angle = s.h_angle;
+    cam.v_angle = s.v_angle;
+    cam.normal = s.normal;
+    cam.aperture = s.aperture;
+    cam.blur_samples = s.blur_samples;
+    cam.blur_samples_min = s.blur_samples_min;
+    cam.confidence = s.confidence;
+    cam.variance = s.variance;
+    cam.bokeh = s.bokeh;
+    // No focal point: POV-Ray's Direction_Length (1, or the direction's length as angle
+    // and look_at set it); 0 means 1.
+    auto focal = [](double given, double direction_length) {
+        const double d = given < 0 ? direction_length : given;
+        return d == 0 ? 1.0 : d;
+    };
     if (s.legacy) {
         cam.location = s.location;
         cam.direction = s.direction;
         cam.right = s.right;
         cam.up = s.up;
         cam.angle = s.angle;
+        cam.focal_distance = focal(s.focal_distance, s.legacy_direction_length);
         return cam;
     }
+    double direction_length = 1;
     Vector3 right = s.right, direction = s.direction, up = s.up;
     bool projective =
         s.kind == Camera::Kind::Perspective || s.kind == Camera::Kind::Orthographic;
@@ -223,11 +318,13 @@ Camera Interpreter::finish_camera(const CameraSpec& s) {
         if (s.angle > 0) {
             double len = length(right) / std::tan(s.angle * kPi / 360) / 2;
             direction = normalize(direction) * len;
+            direction_length = len;
         }
     }
     Point3 location = s.location;
     if (s.has_look_at) {
         double dl = length(direction), rl = length(right), ul = length(up);
+        direction_length = dl;
         // The handedness of the frame before look_at decides the sign of `right`; `up` is
         // always direction x right (not flipped), as in POV-Ray.
         double handed = dot(cross(up, direction), right);
@@ -260,6 +357,9 @@ Camera Interpreter::finish_camera(const CameraSpec& s) {
             up = up * (k1 / k2);
         }
     }
+    double focal_distance = s.focal_distance;
+    if (s.has_focal_point) focal_distance = length(s.focal_point - location);
+    cam.focal_distance = focal(focal_distance, direction_length);
     cam.location = s.transform.point(location);
     cam.direction = s.transform.vector(direction);
     cam.right = s.transform.vector(right);

@@ -96,6 +96,19 @@ struct CameraSpec {
     // is unused.
     bool legacy = false;
     double angle = 90;
+    double h_angle = 360, v_angle = 180;  // spherical
+    HeapOptional<Normal> normal;
+    // Focal blur. focal_distance: set by a legacy camera's focal_point where it stood,
+    // else from the 3.5+ focal_point; negative until then (finish_camera decides).
+    double aperture = 0, confidence = 0.9, variance = 1.0 / 10000, focal_distance = -1;
+    int blur_samples = 0, blur_samples_min = 0;
+    bool has_focal_point = false;
+    Vector3 focal_point{0, 0, 1};
+    HeapOptional<Pigment> bokeh;
+    // A legacy camera's length of `direction` as its angle and look_at left it (POV-Ray's
+    // Direction_Length: the focal distance when none is given).
+    double legacy_direction_length = 1;
+    bool parsed = false;  // a camera block made it (not the default camera)
     Transform transform;
     SourceLoc loc;
     uint32_t offset = 0;  // of the camera's '{', for diagnostics

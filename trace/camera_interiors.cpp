@@ -1,5 +1,7 @@
 #include "trace/camera_interiors.h"
 
+#include <cmath>
+
 #include "trace/prepared_scene.h"
 
 namespace povwall::trace {
@@ -28,6 +30,14 @@ CameraInteriors::CameraInteriors(const Scene& scene) {
         for (int sx = -1; sx <= 1; sx += 2)
             for (int sy = -1; sy <= 1; sy += 2)
                 origins.extend(cam.location + right * Real(sx) + up * Real(sy));
+    }
+    if (cam.aperture != 0 && cam.blur_samples > 0) {
+        // Focal blur starts rays at points of the aperture around the location (within
+        // its radius times 1 + the jitter, well inside this cube).
+        per_ray_ = true;
+        const Real reach = std::fabs(cam.aperture) * 2;
+        origins.extend(cam.location + Vector3{reach, reach, reach});
+        origins.extend(cam.location - Vector3{reach, reach, reach});
     }
     for (const Object& o : scene.objects) collect(o, origins);
     materials_.reserve(candidates_.size());

@@ -58,6 +58,8 @@ void pov_jitter(Real x, Real y, Real& jx, Real& jy) {
     jy = jitter_component(x * 1019.0, y * 1021.0);
 }
 
+int pov_hash(int v) { return kHash[size_t(v & 0xfff)]; }
+
 int clamped_block_size(int block_size, const PixelBlock& area) {
     int bs = std::max(block_size, 4);
     const int longest = std::max(area.width(), area.height());

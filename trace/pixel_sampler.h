@@ -49,12 +49,16 @@ AaEncoding aa_encoding(float antialias_gamma, const Scene& scene);
 // POV-Ray's jitter of a sample at nominal position (x, y) (in its pixel coordinates:
 // pixel i's centre at i): each component in [-0.5, 0.5), from its hash and jitter tables.
 void pov_jitter(Real x, Real y, Real& jx, Real& jy);
+// POV-Ray's pseudo-random integer of `v` (0..4095): its hash table at v's low 12 bits.
+int pov_hash(int v);
 
 // A camera sample's position in POV-Ray's pixel coordinates (pixel (i, j)'s centre is
 // (i, j)). The sampler computes every position the same way whichever block or pixel
 // asks, so equal positions are equal bit for bit.
 struct SamplePosition {
     Real x = 0, y = 0;
+    // Focal blur: which of the sample's rays (focal_blur.h); -1: the sample's one ray.
+    int ray = -1;
 };
 
 // Traces one camera sample at POV-Ray pixel position (x, y) into rgbt: red, green, blue,

@@ -10,6 +10,8 @@
 
 #include "trace/camera.h"
 #include "trace/camera_interiors.h"
+#include "trace/focal_blur.h"
+#include "trace/prepared_scene.h"
 #include "trace/tracer.h"
 
 namespace povwall::trace {
@@ -19,14 +21,38 @@ using Clock = std::chrono::steady_clock;
 
 }  // namespace
 
+CameraSamples::CameraSamples(Tracer& tracer, const Camera& camera,
+                             const CameraInteriors& interiors,
+                             const RenderSettings& settings)
+    : tracer_(tracer), camera_(camera), interiors_(interiors), settings_(settings) {
+    if (FocalBlur::enabled(camera))
+        blur_ = std::make_unique<FocalBlur>(camera, tracer.scene().pattern_env());
+}
+
+CameraSamples::~CameraSamples() = default;
+
 bool CameraSamples::sample(Real x, Real y, float* rgbt) {
-    std::optional<Ray> ray =
-        camera_ray_pov(camera_, x, y, settings_.width, settings_.height);
-    if (!ray) {
+    if (blur_) {
+        return average_focal_rays(
+            *blur_,
+            [&](int k, float* c) {
+                return trace(focal_blur_ray(*blur_, x, y, k, settings_.width,
+                                            settings_.height),
+                             c)
+                           ? RayAnswer::Traced
+                           : RayAnswer::NoRay;
+            },
+            rgbt);
+    }
+    if (!trace(camera_ray_pov(camera_, x, y, settings_.width, settings_.height), rgbt)) {
         rgbt[0] = rgbt[1] = rgbt[2] = 0;
         rgbt[3] = 1;
-        return true;
     }
+    return true;
+}
+
+bool CameraSamples::trace(const std::optional<Ray>& ray, float* rgbt) {
+    if (!ray) return false;
     TraceRay r;
     r.ray = *ray;
     interiors_.seed(r.ray.origin, r.interiors);

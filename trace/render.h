@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <memory>
+#include <optional>
 
 #include "core/image.h"
 #include "core/scene.h"
@@ -72,21 +74,26 @@ struct RenderStats {
 
 class Tracer;
 class CameraInteriors;
+class FocalBlur;
 
 // Camera samples traced with `tracer`: red, green, blue and the background's transmit
-// (only with +UA; 1 where the camera sees nothing, as POV-Ray).
+// (only with +UA; 1 where the camera sees nothing, as POV-Ray). With focal blur a sample
+// is the average of its rays (focal_blur.h).
 class CameraSamples final : public SampleSource {
   public:
     CameraSamples(Tracer& tracer, const Camera& camera, const CameraInteriors& interiors,
-                  const RenderSettings& settings)
-        : tracer_(tracer), camera_(camera), interiors_(interiors), settings_(settings) {}
+                  const RenderSettings& settings);
+    ~CameraSamples();
     bool sample(Real x, Real y, float* rgbt) override;  // always true
 
   private:
+    // One camera ray's colour as a sample's (false: the camera has no such ray).
+    bool trace(const std::optional<Ray>& ray, float* rgbt);
     Tracer& tracer_;
     const Camera& camera_;
     const CameraInteriors& interiors_;
     const RenderSettings& settings_;
+    std::unique_ptr<FocalBlur> blur_;  // when the camera blurs
 };
 
 // A pixel as written: rgbt to rgba (alpha 1 - transmit with +UA, else opaque).

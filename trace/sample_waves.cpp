@@ -1,10 +1,16 @@
 #include "trace/sample_waves.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "trace/focal_blur.h"
 
 namespace povwall::trace {
 namespace {
@@ -16,14 +22,21 @@ class SampleCache final : public SampleSource {
   public:
     bool estimating = false;
     bool sample(Real x, Real y, float* rgbt) override {
-        const size_t i = find_or_add(x, y);
+        const size_t i = find_or_add(x, y, -1);
         if (i < traced_) {
             std::copy_n(&rgbt_[i * 4], 4, rgbt);
             return true;
         }
         return estimating && estimate(x, y, rgbt);
     }
-    void want(const SamplePosition& p) { find_or_add(p.x, p.y); }
+    // Ray `ray` of a focal-blurred sample (never guessed).
+    bool focal_ray(Real x, Real y, int ray, float* rgbt) {
+        const size_t i = find_or_add(x, y, ray);
+        if (i >= traced_) return false;
+        std::copy_n(&rgbt_[i * 4], 4, rgbt);
+        return true;
+    }
+    void want(const SamplePosition& p) { find_or_add(p.x, p.y, p.ray); }
     size_t wanted() const { return positions_.size() - traced_; }
     // Traces the samples asked for; returns how many.
     size_t trace_wanted(const TraceWave& trace_wave) {
@@ -51,7 +64,8 @@ class SampleCache final : public SampleSource {
   private:
     static constexpr uint32_t kNone = ~uint32_t(0);
     // The lattice entry of (x, y), or null when it lies off the lattice.
-    uint32_t* on_lattice(Real x, Real y) {
+    uint32_t* on_lattice(Real x, Real y, int ray) {
+        if (ray >= 0) return nullptr;
         const Real gx = x - offset_, gy = y - offset_;
         if (gx != std::floor(gx) || gy != std::floor(gy)) return nullptr;
         const Real i = gx - gx0_, j = gy - gy0_;
@@ -61,28 +75,31 @@ class SampleCache final : public SampleSource {
     // Open addressing, linear probing, on the bits of the two doubles.
     struct Slot {
         uint64_t x = 0, y = 0;
+        int32_t ray = -1;
         uint32_t index = kNone;
     };
-    static size_t hash(uint64_t x, uint64_t y) {
-        // splitmix64's finaliser over the two words mixed.
-        uint64_t h = x * 0x9e3779b97f4a7c15ull ^ (y + 0x632be59bd9b4e019ull);
+    static size_t hash(uint64_t x, uint64_t y, int32_t ray) {
+        // splitmix64's finaliser over the words mixed.
+        uint64_t h =
+            x * 0x9e3779b97f4a7c15ull ^
+            (y + 0x632be59bd9b4e019ull + uint64_t(uint32_t(ray)) * 0xd6e8feb86659fd93ull);
         h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
         h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
         return size_t(h ^ (h >> 31));
     }
     // The entry of (x, y), new (kNone) if absent: find_or_add() fills it at once.
-    uint32_t& hashed(Real x, Real y) {
+    uint32_t& hashed(Real x, Real y, int ray) {
         if ((hashed_count_ + 1) * 2 > slots_.size()) grow();
         const uint64_t bx = std::bit_cast<uint64_t>(x), by = std::bit_cast<uint64_t>(y);
         const size_t mask = slots_.size() - 1;
-        for (size_t k = hash(bx, by) & mask;; k = (k + 1) & mask) {
+        for (size_t k = hash(bx, by, ray) & mask;; k = (k + 1) & mask) {
             Slot& s = slots_[k];
             if (s.index == kNone) {
-                s.x = bx, s.y = by;
+                s.x = bx, s.y = by, s.ray = ray;
                 ++hashed_count_;
                 return s.index;
             }
-            if (s.x == bx && s.y == by) return s.index;
+            if (s.x == bx && s.y == by && s.ray == ray) return s.index;
         }
     }
     void grow() {
@@ -91,24 +108,25 @@ class SampleCache final : public SampleSource {
         const size_t mask = slots_.size() - 1;
         for (const Slot& s : old) {
             if (s.index == kNone) continue;
-            size_t k = hash(s.x, s.y) & mask;
+            size_t k = hash(s.x, s.y, s.ray) & mask;
             while (slots_[k].index != kNone) k = (k + 1) & mask;
             slots_[k] = s;
         }
     }
-    uint32_t& entry(Real x, Real y) {
-        if (uint32_t* e = on_lattice(x, y)) return *e;
-        return hashed(x, y);
+    uint32_t& entry(Real x, Real y, int ray) {
+        if (uint32_t* e = on_lattice(x, y, ray)) return *e;
+        return hashed(x, y, ray);
     }
+    // A sample's one ray (guesses never use focal-blur rays).
     uint32_t find(Real x, Real y) {
-        if (const uint32_t* e = on_lattice(x, y)) return *e;
+        if (const uint32_t* e = on_lattice(x, y, -1)) return *e;
         if (slots_.empty()) return kNone;
         const uint64_t bx = std::bit_cast<uint64_t>(x), by = std::bit_cast<uint64_t>(y);
         const size_t mask = slots_.size() - 1;
-        for (size_t k = hash(bx, by) & mask;; k = (k + 1) & mask) {
+        for (size_t k = hash(bx, by, -1) & mask;; k = (k + 1) & mask) {
             const Slot& s = slots_[k];
             if (s.index == kNone) return kNone;
-            if (s.x == bx && s.y == by) return s.index;
+            if (s.x == bx && s.y == by && s.ray == -1) return s.index;
         }
     }
     const float* traced(Real x, Real y) {
@@ -132,11 +150,11 @@ class SampleCache final : public SampleSource {
         for (int ch = 0; ch < 4; ++ch) rgbt[ch] /= total;
         return true;
     }
-    size_t find_or_add(Real x, Real y) {
-        uint32_t& e = entry(x, y);
+    size_t find_or_add(Real x, Real y, int ray) {
+        uint32_t& e = entry(x, y, ray);
         if (e == kNone) {
             e = uint32_t(positions_.size());
-            positions_.push_back({x, y});
+            positions_.push_back({x, y, ray});
         }
         return e;
     }
@@ -152,19 +170,125 @@ class SampleCache final : public SampleSource {
     std::vector<float> colours_;
 };
 
+// Focal-blurred samples: each the average of its rays, asked of the cache by (position,
+// ray), batch by batch (the rays the camera does not have are never asked for). Each
+// sample's progress is kept by position (a wave's replay adds only its new batch); while
+// the cache is `estimating`, a sample whose rays are not all in is guessed as the cache
+// guesses plain samples (from the finished samples at the pixel centres around it), so
+// that +AM1's chains of decisions take few waves here too.
+class FocalSamples final : public SampleSource {
+  public:
+    FocalSamples(SampleCache& cache, const FocalBlur& blur,
+                 const RenderSettings& settings)
+        : cache_(cache),
+          blur_(blur),
+          settings_(settings),
+          may_miss_(blur.camera().kind == Camera::Kind::Fisheye ||
+                    blur.camera().kind == Camera::Kind::Omnimax) {}
+    bool sample(Real x, Real y, float* rgbt) override {
+        const Key key{std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(y)};
+        FocalProgress& progress = progress_[key];
+        const bool complete = continue_focal_rays(
+            blur_,
+            [&](int k, float* c) {
+                if (may_miss_ &&
+                    !focal_blur_ray(blur_, x, y, k, settings_.width, settings_.height))
+                    return RayAnswer::NoRay;
+                return cache_.focal_ray(x, y, k, c) ? RayAnswer::Traced
+                                                    : RayAnswer::Missing;
+            },
+            progress, rgbt);
+        if (complete) return true;
+        if (pending_keys_.insert(key).second) pending_.push_back({x, y});
+        return cache_.estimating && estimate(x, y, rgbt);
+    }
+    // After a wave: every sample asked for and not finished asks for its next batch of
+    // rays, whether or not a replay reaches it (a block's replay stops at its first
+    // unfinished decision, which would otherwise make its samples go one at a time).
+    void advance() {
+        float rgbt[4];
+        for (const SamplePosition& p : pending_) {
+            pending_keys_.erase(
+                Key{std::bit_cast<uint64_t>(p.x), std::bit_cast<uint64_t>(p.y)});
+        }
+        std::vector<SamplePosition> asked;
+        asked.swap(pending_);
+        for (const SamplePosition& p : asked) sample(p.x, p.y, rgbt);
+    }
+
+  private:
+    struct Key {
+        uint64_t x, y;
+        bool operator==(const Key&) const = default;
+    };
+    struct KeyHash {
+        size_t operator()(const Key& k) const {
+            return std::hash<uint64_t>()(k.x * 0x9e3779b97f4a7c15ull ^ k.y);
+        }
+    };
+    // The colour of a finished sample at (x, y), or null.
+    const float* finished(Real x, Real y, float* rgbt) const {
+        auto it =
+            progress_.find(Key{std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(y)});
+        if (it == progress_.end() || !it->second.finished) return nullptr;
+        const FocalProgress& p = it->second;
+        for (int ch = 0; ch < 4; ++ch)
+            rgbt[ch] = float(double(p.sum[ch]) / double(p.rays));
+        return rgbt;
+    }
+    bool estimate(Real x, Real y, float* rgbt) const {
+        const Real x0 = std::floor(x), y0 = std::floor(y);
+        const float fx = float(x - x0), fy = float(y - y0);
+        float corner[4][4];
+        const float* c[4] = {finished(x0, y0, corner[0]), finished(x0 + 1, y0, corner[1]),
+                             finished(x0, y0 + 1, corner[2]),
+                             finished(x0 + 1, y0 + 1, corner[3])};
+        const float w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+        float total = 0;
+        std::fill_n(rgbt, 4, 0.0f);
+        for (int k = 0; k < 4; ++k) {
+            if (!c[k]) continue;
+            total += w[k];
+            for (int ch = 0; ch < 4; ++ch) rgbt[ch] += w[k] * c[k][ch];
+        }
+        if (total <= 0) return false;
+        for (int ch = 0; ch < 4; ++ch) rgbt[ch] /= total;
+        return true;
+    }
+    SampleCache& cache_;
+    const FocalBlur& blur_;
+    const RenderSettings& settings_;
+    // Only these kinds lack rays somewhere (camera_ray_shifted); the others need no
+    // camera ray made to know that it exists.
+    const bool may_miss_;
+    std::unordered_map<Key, FocalProgress, KeyHash> progress_;
+    std::vector<SamplePosition> pending_;  // asked for, not finished (in pending_keys_)
+    std::unordered_set<Key, KeyHash> pending_keys_;
+};
+
 }  // namespace
 
 Image render_in_waves(const RenderSettings& settings, const SamplerSettings& sampling,
-                      const TraceWave& trace_wave, WaveStats* stats) {
+                      const TraceWave& trace_wave, WaveStats* stats,
+                      const FocalBlur* blur) {
     const PixelBlock area = render_area(settings);
     const std::vector<PixelBlock> blocks = render_blocks(area, settings.block_size);
     PixelSampler sampler(sampling);
     SampleCache cache;
     cache.set_lattice(area, sampling.method == 2 ? -0.5 : 0.0);
+    std::optional<FocalSamples> focal;
+    if (blur) focal.emplace(cache, *blur, settings);
+    SampleSource& source = focal ? static_cast<SampleSource&>(*focal) : cache;
     {
         std::vector<SamplePosition> first;
         sampler.first_samples(area, first);
-        for (const SamplePosition& p : first) cache.want(p);
+        float unused[4];
+        for (const SamplePosition& p : first) {
+            if (focal)
+                focal->sample(p.x, p.y, unused);  // wants the first batch of its rays
+            else
+                cache.want(p);
+        }
     }
     Image image(settings.width, settings.height);
     std::vector<size_t> open(blocks.size()), still_open;
@@ -172,16 +296,20 @@ Image render_in_waves(const RenderSettings& settings, const SamplerSettings& sam
     std::vector<float> rgbt;
     for (int wave = 0; !open.empty(); ++wave) {
         // Every wave finishes at least one block's next pixel or square, so this ends.
-        if (cache.wanted() == 0)
+        // (Only the first wave may be empty: focal blur where the camera has no ray.)
+        if (cache.wanted() == 0 && wave > 0)
             throw std::logic_error(
                 "anti-aliasing waves: a block lacks no sample yet stops");
-        const size_t traced = cache.trace_wanted(trace_wave);
-        if (stats) stats->samples.push_back(traced);
+        if (cache.wanted() > 0) {
+            const size_t traced = cache.trace_wanted(trace_wave);
+            if (stats) stats->samples.push_back(traced);
+        }
+        if (focal) focal->advance();
         still_open.clear();
         for (size_t k : open) {
             const PixelBlock& b = blocks[k];
             rgbt.resize(size_t(b.pixels()) * 4);
-            if (!sampler.render_block(b, cache, rgbt.data())) {
+            if (!sampler.render_block(b, source, rgbt.data())) {
                 still_open.push_back(k);
                 continue;
             }
@@ -195,7 +323,7 @@ Image render_in_waves(const RenderSettings& settings, const SamplerSettings& sam
             continue;
         }
         if (wave == 0)
-            for (size_t k : still_open) sampler.ask_likely_samples(blocks[k], cache);
+            for (size_t k : still_open) sampler.ask_likely_samples(blocks[k], source);
         // Past the first missing sample, a replay with guesses asks for what the
         // decisions would then need (a pixel averaged on a guess, its neighbours compared
         // with that average, ...): chains of such decisions then take one wave, not one
@@ -204,7 +332,7 @@ Image render_in_waves(const RenderSettings& settings, const SamplerSettings& sam
         cache.estimating = true;
         for (size_t k : still_open) {
             rgbt.resize(size_t(blocks[k].pixels()) * 4);
-            sampler.render_block(blocks[k], cache, rgbt.data());
+            sampler.render_block(blocks[k], source, rgbt.data());
         }
         cache.estimating = false;
         open.swap(still_open);

@@ -30,7 +30,11 @@ struct WaveStats {
 
 // The image of `settings`' render area (pixels outside it zero, as render_scene leaves
 // them).
+// With focal blur (`blur`) every sample is the average of its rays (focal_blur.h), which
+// the waves trace by (position, ray index), batch by batch: any sampling method, 0 too.
+class FocalBlur;
 Image render_in_waves(const RenderSettings& settings, const SamplerSettings& sampling,
-                      const TraceWave& trace_wave, WaveStats* stats = nullptr);
+                      const TraceWave& trace_wave, WaveStats* stats = nullptr,
+                      const FocalBlur* blur = nullptr);
 
 }  // namespace povwall::trace

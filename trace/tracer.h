@@ -58,6 +58,7 @@ class Tracer {
     explicit Tracer(const PreparedScene& scene);
     TraceResult trace(const TraceRay& ray);
     const TraceCounters& counters() const { return counters_; }
+    const PreparedScene& scene() const { return scene_; }
     uint64_t intersection_tests() const { return ctx_.tests; }
     // Tie probe (trace/ties.h): rays up to trace level `levels` (1: camera rays), and the
     // shadow rays from their hits, look for a second surface within `tolerance`

@@ -363,6 +363,26 @@ TEST(WireSamples, PositionsRoundTripAndBadRecordsAddNothing) {
     EXPECT_EQ(out.size(), 3u);
 }
 
+// Focal blur's rays travel as (position, ray index): the index within the camera's rays
+// per sample, or -1 (a sample's one ray).
+TEST(WireSamples, FocalBlurRayIndicesRoundTripWithinTheCamerasRays) {
+    std::vector<uint8_t> body;
+    write_sample_position(body, {3.25, 7.5, 36});
+    write_sample_position(body, {3.25, 7.5, -1});
+    std::vector<trace::SamplePosition> out;
+    ASSERT_TRUE(read_sample_positions(body, 2, 49, out, 37));
+    ASSERT_EQ(out.size(), 2u);
+    EXPECT_EQ(out[0].ray, 36);
+    EXPECT_EQ(out[1].ray, -1);
+    EXPECT_FALSE(read_sample_positions(body, 2, 49, out, 36));  // ray 36 of 36
+    EXPECT_FALSE(read_sample_positions(body, 2, 49, out));      // no focal blur
+    std::vector<uint8_t> below = body;
+    const int32_t minus_two = -2;
+    std::memcpy(below.data() + kSampleRecordSize + 16, &minus_two, 4);
+    EXPECT_FALSE(read_sample_positions(below, 2, 49, out, 37));
+    EXPECT_EQ(out.size(), 2u);
+}
+
 TEST(WireControl, ReachKeepsEveryDoubleAndRefusesBadBoxes) {
     const std::vector<Bounds3> reach = {
         {{-kInfinity, -0.0, 1e-300}, {kInfinity, 2.5, 3}},

@@ -246,7 +246,9 @@ plane { y, 0 pigment { rgb 0.8 } }
             {"fisheye", golden + "antialias_fisheye.pov", "+UA"},
             {"orthographic_alpha", ortho.string(), "+UA"},
             {"legacy", golden + "antialias_legacy.pov", ""},
-            {"area_light", area.string(), ""}};
+            {"area_light", area.string(), ""},
+            {"spherical", golden + "camera_spherical.pov", ""},
+            {"focal_blur", golden + "camera_focal_blur_hex37.pov", "+UA"}};
 }
 
 class ModeMatrixInEveryMode : public ::testing::TestWithParam<MatrixScene> {};
@@ -402,6 +404,35 @@ TEST(Tcp, QualityLevelsInEveryModeEqualOneProcess) {
     for (const char* level : {"+Q0", "+Q4", "+Q5", "+Q8", "+Q9"}) {
         SCOPED_TRACE(level);
         expect_same_images(scene, std::string("-W 40 -H 30 ") + level,
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents"});
+    }
+}
+
+// The omnimax and spherical cameras, camera normals and focal blur (golden scenes, each
+// matching POV-Ray): focal blur's rays go through the black boxes in waves, batch by
+// batch, named by sample position and ray index, so every mode gives the one-process
+// image, anti-aliased too.
+TEST(Tcp, CamerasAndFocalBlurInEveryModeEqualOneProcess) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"camera_omnimax", "+UA"},
+        {"camera_omnimax_square", ""},
+        {"camera_spherical", ""},
+        {"camera_spherical_angle", "+UA"},
+        {"camera_normal", "+A0.3 +AM1"},
+        {"camera_normal_fisheye", "+UA"},
+        {"camera_focal_blur", ""},
+        {"camera_focal_blur_hex37", "+UA"},
+        {"camera_focal_blur_bokeh", ""},
+        {"camera_focal_blur_legacy", ""},
+        {"camera_focal_blur_kinds", ""},
+        {"camera_focal_blur_fisheye", "+UA +A0.3"},
+        {"camera_focal_blur_antialias", "+A0.1 +AM2 +R2"},
+        {"camera_focal_blur_antialias", "+A0.3 +AM1 +J"}};
+    for (const auto& [name, args] : cases) {
+        SCOPED_TRACE(std::string(name) + " " + args);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        expect_same_images(scene, std::string("-W 40 -H 30 ") + args,
                            {"--mode screen --procs 2", "--boxes 2x2x2",
                             "--boxes 3x1x2 --procs 2 --results parents"});
     }

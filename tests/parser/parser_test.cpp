@@ -187,6 +187,48 @@ TEST(Camera, ProjectionKindsKeepTheirAngleAndCylinderNeedsATypeFrom1To4) {
               "                  ^");
 }
 
+TEST(Camera, SphericalAngleIsAcrossThenUpWithHalfOfItByDefault) {
+    Scene a = parse("camera { spherical angle 200 }");
+    EXPECT_EQ(a.camera.kind, Camera::Kind::Spherical);
+    EXPECT_EQ(a.camera.h_angle, 200);
+    EXPECT_EQ(a.camera.v_angle, 100);
+    Scene b = parse("camera { spherical angle 120, 60 }");
+    EXPECT_EQ(b.camera.h_angle, 120);
+    EXPECT_EQ(b.camera.v_angle, 60);
+    EXPECT_EQ(b.camera.angle, 90);  // the other kinds' angle is untouched
+    Scene c = parse("camera { spherical }");
+    EXPECT_EQ(c.camera.h_angle, 360);
+    EXPECT_EQ(c.camera.v_angle, 180);
+    EXPECT_EQ(parse("camera { omnimax }").camera.kind, Camera::Kind::Omnimax);
+    EXPECT_TRUE(parse("camera { normal { bumps 0.3 } }").camera.normal.has_value());
+}
+
+TEST(Camera, BlurSamplesAndTheFocalDistanceAsPovRayReadsThem) {
+    Scene one = parse("camera { aperture 0.5 blur_samples 20 }");
+    EXPECT_EQ(one.camera.blur_samples, 20);
+    EXPECT_EQ(one.camera.blur_samples_min, 0);
+    Scene two = parse("camera { aperture 0.5 blur_samples 5, 30 confidence 0.95 }");
+    EXPECT_EQ(two.camera.blur_samples, 30);
+    EXPECT_EQ(two.camera.blur_samples_min, 5);
+    EXPECT_EQ(two.camera.confidence, 0.95);
+    EXPECT_EQ(two.camera.variance, 1.0 / 10000);
+    // No focal point: POV-Ray's Direction_Length, 1 unless angle or look_at set it.
+    EXPECT_EQ(parse("camera { direction 2 * z aperture 1 blur_samples 4 }")
+                  .camera.focal_distance,
+              1);
+    EXPECT_NEAR(parse("camera { location -z direction 2 * z look_at 5 * z }")
+                    .camera.focal_distance,
+                2, 1e-12);
+    EXPECT_NEAR(parse("camera { location <0, 0, -1> focal_point <0, 3, 3> translate x }")
+                    .camera.focal_distance,
+                5, 1e-12);
+    EXPECT_EQ(error_of("camera { blur_samples 10, 5 }"),
+              "test.pov:1:23: error: focal blur samples minimum must not be larger than "
+              "maximum\n"
+              "camera { blur_samples 10, 5 }\n"
+              "                      ^~");
+}
+
 TEST(Degenerate, ExporterShapesAsPovRay) {
     // Coincident ends: POV-Ray stops with a parse error too.
     EXPECT_EQ(error_of("cylinder { <1, 1, 0>, <1, 1, 0>, 0.5 }"),

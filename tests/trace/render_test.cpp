@@ -96,6 +96,35 @@ TEST(CameraRay, CylinderCamerasBendOneAxisOnly) {
     expect_vec(r4.direction, {0, -kHalf, kHalf});
 }
 
+TEST(CameraRay, SphericalLongitudeAcrossLatitudeUp) {
+    Camera c = unit_camera(Camera::Kind::Spherical, 90);  // angle 360, 180
+    expect_vec(camera_ray(c, 50, 50, 100, 100)->direction, {0, 0, 1});
+    expect_vec(camera_ray(c, 75, 50, 100, 100)->direction, {1, 0, 0});
+    expect_vec(camera_ray(c, 100, 50, 100, 100)->direction, {0, 0, -1});
+    expect_vec(camera_ray(c, 50, 0, 100, 100)->direction, {0, 1, 0});
+    c.h_angle = 180, c.v_angle = 90;
+    expect_vec(camera_ray(c, 100, 50, 100, 100)->direction, {1, 0, 0});
+    expect_vec(camera_ray(c, 50, 0, 100, 100)->direction, {0, kHalf, kHalf});
+}
+
+TEST(CameraRay, OmnimaxSeesNoMoreThan45DegreesBelowTheAxis) {
+    Camera c = unit_camera(Camera::Kind::Omnimax, 90);  // square: no widening
+    expect_vec(camera_ray(c, 50, 50, 100, 100)->direction, {0, 0, 1});
+    // Radius r from the centre: 1.411269 r - 0.09439 r^3 + 0.25674 r^5 radians from the
+    // axis.
+    const Real r = 0.8,
+               theta = 1.411269 * r - 0.09439 * r * r * r + 0.25674 * r * r * r * r * r;
+    const std::optional<Ray> right = camera_ray(c, 90, 50, 100, 100);
+    ASSERT_TRUE(right.has_value());
+    EXPECT_NEAR(right->direction.x, std::sin(theta), 1e-9);
+    EXPECT_NEAR(right->direction.z, std::cos(theta), 1e-9);
+    // The rim lies past 90 degrees: seen only above the axis.
+    EXPECT_FALSE(camera_ray(c, 100, 50, 100, 100).has_value());
+    EXPECT_TRUE(camera_ray(c, 50, 1, 100, 100).has_value());
+    EXPECT_FALSE(camera_ray(c, 50, 100, 100, 100).has_value());  // straight down
+    EXPECT_FALSE(camera_ray(c, 100, 0, 100, 100).has_value());   // outside the circle
+}
+
 // A red sphere on grey: edges for the anti-aliasing to find.
 Scene edge_scene() {
     Scene s;

@@ -6,6 +6,7 @@
 
 #include "scene_builder.h"
 #include "trace/camera_interiors.h"
+#include "trace/focal_blur.h"
 #include "trace/render.h"
 #include "trace/tracer.h"
 
@@ -96,6 +97,56 @@ TEST(SampleWaves, ReplayedBlocksGiveTheOneProcessImageInAFewWaves) {
         const size_t first = c.method == 1 ? size_t(61 * 46 + 61 + 46) : size_t(62 * 47);
         ASSERT_FALSE(waves.samples.empty());
         EXPECT_EQ(waves.samples[0], first);
+    }
+}
+
+// Focal blur in waves: the rays go out by (sample, index), batch by batch, and every
+// unfinished sample asks for its next batch after each wave, so the one-process image
+// comes back in about as many waves as the 37-point grid has batches (8), a few more
+// with anti-aliasing.
+TEST(SampleWaves, FocalBlurRaysInWavesGiveTheOneProcessImage) {
+    Scene scene = edge_scene();
+    scene.camera.aperture = 0.4;
+    scene.camera.blur_samples = 37;
+    scene.camera.blur_samples_min = 7;
+    scene.camera.focal_distance = 5;
+    for (const auto& [method, max_waves] : {std::pair{0, 8}, {1, 16}, {2, 24}}) {
+        SCOPED_TRACE(::testing::Message() << "+AM" << method);
+        RenderSettings rs;
+        rs.width = 32;
+        rs.height = 24;
+        rs.threads = 2;
+        rs.antialias = method != 0;
+        rs.aa_method = method != 0 ? method : 1;
+        rs.aa_threshold = 0.2;
+        const Image direct = render_scene(scene, rs);
+        OneProcessWaves one(scene, rs);
+        const FocalBlur blur(scene.camera, one.prepared.pattern_env());
+        WaveStats waves;
+        size_t rays = 0;
+        const Image replayed = render_in_waves(
+            rs, sampler_settings(rs, scene),
+            [&](const std::vector<SamplePosition>& w, std::vector<float>& rgbt) {
+                for (size_t i = 0; i < w.size(); ++i) {
+                    ASSERT_GE(w[i].ray, 0);  // only focal-blur rays
+                    const std::optional<Ray> ray =
+                        sample_camera_ray(scene.camera, &blur, w[i], rs.width, rs.height);
+                    ASSERT_TRUE(ray.has_value());
+                    TraceRay r;
+                    r.ray = *ray;
+                    one.interiors.seed(r.ray.origin, r.interiors);
+                    const TraceResult res = one.tracer.trace(r);
+                    rgbt[i * 4] = res.colour.r;
+                    rgbt[i * 4 + 1] = res.colour.g;
+                    rgbt[i * 4 + 2] = res.colour.b;
+                    rgbt[i * 4 + 3] = 0;
+                }
+                rays += w.size();
+            },
+            &waves, &blur);
+        EXPECT_EQ(replayed.rgba, direct.rgba);
+        EXPECT_LE(waves.samples.size(), size_t(max_waves));
+        EXPECT_GE(rays, size_t(32 * 24 * 7));  // at least the first batch everywhere
     }
 }
 
