@@ -352,7 +352,8 @@ void Interpreter::directive_declare(const Token& t, bool local) {
         Token first = next();
         v = parse_declared_value(first);
     } catch (const ParseError& e) {
-        if (e.kind() != ParseError::Kind::Unsupported || !can_recover) throw;
+        if (e.kind() != ParseError::Kind::Unsupported || !can_recover || !e.deferrable())
+            throw;
         frames_.resize(frame_count);
         conds_.resize(cond_count);
         scopes_.resize(scope_count);

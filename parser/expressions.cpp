@@ -675,7 +675,9 @@ Value ExpressionParser::word(const Token& t) {
     static constexpr std::string_view kUnsupportedFunctions[] = {"trace", "inside",
                                                                  "eval_pigment"};
     for (std::string_view f : kUnsupportedFunctions) {
-        if (w == f) in_.unsupported(t, w);
+        // trace() also writes its optional normal argument: skipped, the scene would
+        // go on with that variable unchanged (no hit), so it stops here.
+        if (w == f) in_.unsupported(t, w, w != "trace");
     }
     if (w.find('[') != std::string_view::npos) {
         in_.error(t, "array element '" + std::string(w) + "' used before it was set");

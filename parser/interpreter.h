@@ -95,7 +95,9 @@ class Interpreter {
     static bool degenerate_corners(const Point3 p[3]) {
         return length(cross(p[0] - p[1], p[2] - p[1])) == 0;
     }
-    [[noreturn]] void unsupported(const Token& at, std::string_view feature);
+    // `deferrable`: see ParseError::deferrable().
+    [[noreturn]] void unsupported(const Token& at, std::string_view feature,
+                                  bool deferrable = true);
     [[noreturn]] void expected(std::string_view what, const Token& found);
     std::string describe(const Token& t) const;
 

@@ -87,12 +87,17 @@ struct ParseOptions {
 class ParseError : public std::runtime_error {
   public:
     enum class Kind { Syntax, Unsupported, Io };
-    ParseError(Kind kind, std::string formatted, std::string message, SourceLoc loc)
+    ParseError(Kind kind, std::string formatted, std::string message, SourceLoc loc,
+               bool deferrable = true)
         : std::runtime_error(std::move(formatted)),
           kind_(kind),
           message_(std::move(message)),
-          loc_(loc) {}
+          loc_(loc),
+          deferrable_(deferrable) {}
     Kind kind() const { return kind_; }
+    // An unsupported feature in a #declare's value may wait until the identifier is
+    // used, unless skipping it would change other variables (trace's normal argument).
+    bool deferrable() const { return deferrable_; }
     const std::string& message() const { return message_; }  // without location or caret
     SourceLoc loc() const { return loc_; }
 
@@ -100,6 +105,7 @@ class ParseError : public std::runtime_error {
     Kind kind_;
     std::string message_;
     SourceLoc loc_;
+    bool deferrable_;
 };
 
 // Parses `path` and everything it includes. Throws ParseError on the first error.

@@ -248,11 +248,12 @@ void Interpreter::error(const Token& at, const std::string& message) {
     throw ParseError(ParseError::Kind::Syntax, text, message, sources_.location(at));
 }
 
-void Interpreter::unsupported(const Token& at, std::string_view feature) {
+void Interpreter::unsupported(const Token& at, std::string_view feature,
+                              bool deferrable) {
     std::string message = "unsupported: " + std::string(feature);
     throw ParseError(ParseError::Kind::Unsupported,
                      format_diagnostic(sources_, at, "error", message), message,
-                     sources_.location(at));
+                     sources_.location(at), deferrable);
 }
 
 void Interpreter::expected(std::string_view what, const Token& found) {

@@ -476,6 +476,17 @@ TEST(Errors, MacroArgumentsRunningPastTheirBodysEndAreALocatedError) {
               "                                             ^");
 }
 
+// trace() writes its normal argument: a #declare of it cannot wait until the value is
+// used (the scene would test the unchanged normal and go on as if nothing was hit).
+TEST(Errors, TraceInADeclareStopsAtOnce) {
+    EXPECT_EQ(error_of("#declare S = sphere { 0, 1 }\n"
+                       "#declare N = <0, 0, 0>;\n"
+                       "#declare P = trace(S, <0, 0, -5>, z, N);\n"),
+              "test.pov:3:14: error: unsupported: trace\n"
+              "#declare P = trace(S, <0, 0, -5>, z, N);\n"
+              "             ^~~~~");
+}
+
 TEST(Errors, UnsupportedFeatureIsNamed) {
     try {
         parse("rainbow { angle 42 }");
