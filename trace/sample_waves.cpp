@@ -15,6 +15,22 @@
 namespace povwall::trace {
 namespace {
 
+// The bilinear blend of the traced corners among c[4] (x0y0, x1y0, x0y1, x1y1; null:
+// not traced) at (fx, fy), renormalised over those present; false if none is.
+bool bilinear(const float* const (&c)[4], float fx, float fy, float* rgbt) {
+    const float w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+    float total = 0;
+    std::fill_n(rgbt, 4, 0.0f);
+    for (int k = 0; k < 4; ++k) {
+        if (!c[k]) continue;
+        total += w[k];
+        for (int ch = 0; ch < 4; ++ch) rgbt[ch] += w[k] * c[k][ch];
+    }
+    if (total <= 0) return false;
+    for (int ch = 0; ch < 4; ++ch) rgbt[ch] /= total;
+    return true;
+}
+
 // Samples by exact position: those traced, and after them those asked for since the
 // last wave (the next wave). While `estimating`, a sample not traced yet is still asked
 // for but answered with a guess: the blend of the four pixel centres around it.
@@ -138,17 +154,7 @@ class SampleCache final : public SampleSource {
         const float fx = float(x - x0), fy = float(y - y0);
         const float* c[4] = {traced(x0, y0), traced(x0 + 1, y0), traced(x0, y0 + 1),
                              traced(x0 + 1, y0 + 1)};
-        const float w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
-        float total = 0;
-        std::fill_n(rgbt, 4, 0.0f);
-        for (int k = 0; k < 4; ++k) {
-            if (!c[k]) continue;
-            total += w[k];
-            for (int ch = 0; ch < 4; ++ch) rgbt[ch] += w[k] * c[k][ch];
-        }
-        if (total <= 0) return false;
-        for (int ch = 0; ch < 4; ++ch) rgbt[ch] /= total;
-        return true;
+        return bilinear(c, fx, fy, rgbt);
     }
     size_t find_or_add(Real x, Real y, int ray) {
         uint32_t& e = entry(x, y, ray);
@@ -243,17 +249,7 @@ class FocalSamples final : public SampleSource {
         const float* c[4] = {finished(x0, y0, corner[0]), finished(x0 + 1, y0, corner[1]),
                              finished(x0, y0 + 1, corner[2]),
                              finished(x0 + 1, y0 + 1, corner[3])};
-        const float w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
-        float total = 0;
-        std::fill_n(rgbt, 4, 0.0f);
-        for (int k = 0; k < 4; ++k) {
-            if (!c[k]) continue;
-            total += w[k];
-            for (int ch = 0; ch < 4; ++ch) rgbt[ch] += w[k] * c[k][ch];
-        }
-        if (total <= 0) return false;
-        for (int ch = 0; ch < 4; ++ch) rgbt[ch] /= total;
-        return true;
+        return bilinear(c, fx, fy, rgbt);
     }
     SampleCache& cache_;
     const FocalBlur& blur_;

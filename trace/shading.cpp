@@ -197,6 +197,20 @@ Colour eval_pigment(const Pigment& p, const Point3& at, const PatternEnv& env) {
     return evaluate_pigment(p, at, env);
 }
 
+// The shadow ray from `at` toward light `l` (sample `s`) for a ray `from` spawned it.
+ChildRay shadow_child(const TraceRay& from, const Point3& at, const LightSample& s,
+                      size_t l) {
+    ChildRay child;
+    child.kind = ChildRay::Kind::Shadow;
+    child.trace.ray = {at, s.dir};
+    child.trace.interiors = from.interiors;
+    child.trace.depth = from.depth;
+    child.trace.use = RayUse::Shadow;
+    child.t_max = s.distance;
+    child.light = int(l);
+    return child;
+}
+
 // Where a material's patterns are evaluated: the hit point, or for a texture_map entry
 // the map pattern's point.
 const Point3& texture_point(const Material& m, const Hit& hit) {
@@ -660,14 +674,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
             continue;
         }
         const LightSample& s = samples[l];
-        ChildRay child;
-        child.kind = ChildRay::Kind::Shadow;
-        child.trace.ray = {P, s.dir};
-        child.trace.interiors = ray.interiors;
-        child.trace.depth = ray.depth;
-        child.trace.use = RayUse::Shadow;
-        child.t_max = s.distance;
-        child.light = int(l);
+        ChildRay child = shadow_child(ray, P, s, l);
         child.coeff = lit[l];
         child.area = light.area.has_value();
         child.light_colour = s.colour;
@@ -858,14 +865,7 @@ class SampleLight final : public MediaLightProbe {
         if (light.media_attenuation && !sc.fogs.empty() && s.distance < kInfinity)
             s.colour *= fog_effect(sc, {at, s.dir}, s.distance).mul;
         if (!quality.shadows()) return s.colour;
-        ChildRay child;
-        child.kind = ChildRay::Kind::Shadow;
-        child.trace.ray = {at, s.dir};
-        child.trace.interiors = ray_.interiors;
-        child.trace.depth = ray_.depth;
-        child.trace.use = RayUse::Shadow;
-        child.t_max = s.distance;
-        child.light = int(l);
+        ChildRay child = shadow_child(ray_, at, s, l);
         child.area = light.area.has_value() && quality.area_lights();
         child.light_colour = s.colour;
         child.coeff = Rgb{0.0f};  // counts through the media effect only
