@@ -831,11 +831,16 @@ bool attenuated_by_atmosphere(const PreparedScene& scene, int l) {
     return light.media_interaction && light.media_attenuation;
 }
 
+// The atmosphere's media as one list.
+void atmosphere_list(const Scene& sc, std::vector<const Media*>& list) {
+    list.clear();
+    for (const Media& m : sc.atmosphere_media) list.push_back(&m);
+}
+
 // The atmosphere's transmittance over [t0, t1] of a shadow ray.
 Rgb atmosphere_shadow(const PreparedScene& scene, const Ray& ray, Real t0, Real t1) {
     thread_local std::vector<const Media*> list;
-    list.clear();
-    for (const Media& m : scene.scene().atmosphere_media) list.push_back(&m);
+    atmosphere_list(scene.scene(), list);
     return media_effect(list, ray, t0, t1, true, scene.pattern_env()).mul;
 }
 
@@ -918,11 +923,6 @@ FogEffect viewing_media(const PreparedScene& scene, std::span<const Media* const
     MediaLights lights{scene.scene().lights, &probe, shadows.collect != nullptr};
     return as_fog_effect(
         media_effect(list, ray.ray, 0, depth, false, scene.pattern_env(), &lights));
-}
-
-void atmosphere_list(const Scene& sc, std::vector<const Media*>& list) {
-    list.clear();
-    for (const Media& m : sc.atmosphere_media) list.push_back(&m);
 }
 
 FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
