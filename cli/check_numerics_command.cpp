@@ -17,6 +17,7 @@
 #include "cli/process.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
+#include "trace/object_queries.h"
 #include "trace/numerics_check.h"
 #include "trace/pattern.h"
 #include "trace/render.h"
@@ -53,6 +54,7 @@ int run_check_numerics(int argc, char** argv) {
     popts.library_paths = library_paths;
     popts.write_user_files = false;
     popts.function_hooks = trace::parse_time_function_hooks();
+    popts.object_queries = trace::parse_time_object_queries();
     popts.image_reader = output::read_stored_image;  // height fields need the pixels
     popts.image_width = width;
     popts.image_height = height;

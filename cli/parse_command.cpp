@@ -10,6 +10,7 @@
 #include "cli/options.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
+#include "trace/object_queries.h"
 #include "trace/oracle.h"
 #include "trace/pattern.h"
 
@@ -59,6 +60,7 @@ int run_parse(int argc, char** argv) {
     popts.library_paths = library_paths;
     popts.image_reader = output::read_stored_image;
     popts.function_hooks = trace::parse_time_function_hooks();
+    popts.object_queries = trace::parse_time_object_queries();
     popts.messages = &std::cerr;  // #debug, #warning: POV-Ray's console streams
     nlohmann::json j;
     j["scene"] = scene;

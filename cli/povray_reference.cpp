@@ -16,6 +16,7 @@
 
 #include "cli/process.h"
 #include "parser/parser.h"
+#include "trace/object_queries.h"
 #include "trace/pattern.h"
 
 namespace povwall::cli {
@@ -58,6 +59,7 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
     } remove_after{written};
     popts.output_dir = written.string();
     popts.function_hooks = trace::parse_time_function_hooks();
+    popts.object_queries = trace::parse_time_object_queries();
     // The values of the frame rendered: an animation's first (of the subset), as
     // run_render has them; a scene may read a different set of files in another frame.
     if (const std::vector<Frame> frames = animation_frames(o); !frames.empty()) {

@@ -22,6 +22,7 @@
 #include "distrib/tcp.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
+#include "trace/object_queries.h"
 #include "trace/pattern.h"
 #include "trace/render_plan.h"
 
@@ -165,6 +166,7 @@ parser::ParseOptions render_parse_options(const RenderOptions& o,
     popts.output_file_type = o.format;
     popts.image_reader = output::read_stored_image;
     popts.function_hooks = trace::parse_time_function_hooks();
+    popts.object_queries = trace::parse_time_object_queries();
     popts.initial_frame = o.animation.initial_frame;
     popts.final_frame = o.frame ? o.animation.final_frame : o.animation.initial_frame;
     popts.initial_clock = o.animation.initial_clock;

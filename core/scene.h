@@ -682,13 +682,16 @@ struct Csg {
     // Light sources written inside the CSG move with it; the parser moves them to
     // Scene::lights when the object is placed in the scene.
     std::vector<Light> lights;
-    // A text object's box as POV-Ray keeps it (lower-left corner and lengths in single
-    // precision): the glyphs' boxes joined once after layout, then moved as a box by
-    // every transform, never rebuilt from the glyphs. min_extent/max_extent read it.
+    // The CSG's box as POV-Ray keeps it (lower-left corner and lengths in single
+    // precision): joined from the children's boxes when the CSG is closed (a text: from
+    // its glyphs' after layout), then moved as a box by every transform, never rebuilt
+    // from the children (a turned union's box is the turned box's box). min_extent,
+    // max_extent and POV-Ray's bounding tests read it. Unset when the parse had no
+    // ObjectQueries (the box is then joined from the children when asked).
     struct PovBox {
         float lo[3], len[3];
     };
-    std::optional<PovBox> text_box;
+    std::optional<PovBox> pov_box;
 };
 
 using ShapeData =

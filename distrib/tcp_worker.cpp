@@ -43,6 +43,7 @@
 #include "distrib/wire/pixels.h"
 #include "distrib/wire/samples.h"
 #include "parser/parser.h"
+#include "trace/object_queries.h"
 #include "trace/pattern.h"
 
 namespace povwall::distrib {
@@ -387,6 +388,7 @@ class Worker {
         parser::ParseOptions popts;
         popts.image_reader = options_.image_reader;
         popts.function_hooks = trace::parse_time_function_hooks();
+        popts.object_queries = trace::parse_time_object_queries();
         popts.write_user_files = false;  // the coordinator's parse writes them
         popts.library_paths = fixed.library_paths;
         popts.declares = fixed.declares;

@@ -539,10 +539,62 @@ Value ExpressionParser::word(const Token& t) {
         in_.expect_punct('(');
         Token id = in_.next();
         const Value* v = id.kind == TokenKind::Word ? in_.lookup(id) : nullptr;
+        // max_extent of an image_map pigment: the image's size in pixels.
+        if (auto pigment = v ? std::get_if<std::shared_ptr<Pigment>>(v) : nullptr;
+            pigment && w == "max_extent") {
+            const PatternSpec* spec = &(*pigment)->pattern.get();
+            if (spec->kind != PatternKind::ImageMap || !spec->image)
+                in_.error(id,
+                          "the parameter to max_extent must be an image map pigment "
+                          "identifier");
+            if (!spec->image->pixels) in_.unsupported(t, "max_extent of an image");
+            in_.expect_punct(')');
+            return Numeric::vector(Vector3{double(spec->image->pixels->width),
+                                           double(spec->image->pixels->height), 0.0});
+        }
         auto object = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr;
         if (!object) in_.expected("an object identifier", id);
         in_.expect_punct(')');
         return Numeric::vector(in_.object_extent(t, **object, w == "max_extent"));
+    }
+    if (w == "trace") {
+        in_.expect_punct('(');
+        const std::shared_ptr<Object> object = in_.object_argument(in_.next());
+        in_.accept_punct(',');
+        const Vector3 origin = arg_vector();
+        in_.accept_punct(',');
+        const Vector3 direction = arg_vector();
+        in_.accept_punct(',');
+        // The optional fourth argument: a vector identifier, written in place.
+        std::optional<Token> normal_id;
+        if (const Token& n = in_.peek(); n.kind == TokenKind::Word) {
+            const Value* nv = in_.lookup(n);
+            auto num = nv ? std::get_if<Numeric>(nv) : nullptr;
+            if (!num || num->size != 3 || num->colour)
+                in_.expected("a vector identifier for trace's normal, or ')'", n);
+            normal_id = in_.next();
+        }
+        in_.expect_punct(')');
+        Vector3 normal;
+        const Vector3 hit = in_.trace_object(
+            t, object, Point3{origin.x, origin.y, origin.z}, direction, normal);
+        if (normal_id && normal_id->sym)
+            in_.declare_symbol(normal_id->sym, Numeric::vector(normal), false,
+                               *normal_id);
+        else if (normal_id)
+            in_.declare(std::string(normal_id->text), Numeric::vector(normal), false,
+                        *normal_id);
+        return Numeric::vector(hit);
+    }
+    if (w == "inside") {
+        in_.expect_punct('(');
+        const Token id = in_.next();
+        const std::shared_ptr<Object> object = in_.object_argument(id);
+        in_.accept_punct(',');
+        const Vector3 p = arg_vector();
+        in_.expect_punct(')');
+        return Numeric::scalar(
+            in_.inside_object(t, id, object, Point3{p.x, p.y, p.z}) ? 1.0 : 0.0);
     }
     if (w == "vnormalize") {
         in_.expect_punct('(');
@@ -672,13 +724,7 @@ Value ExpressionParser::word(const Token& t) {
         in_.unget(t);
         return in_.parse_colour();
     }
-    static constexpr std::string_view kUnsupportedFunctions[] = {"trace", "inside",
-                                                                 "eval_pigment"};
-    for (std::string_view f : kUnsupportedFunctions) {
-        // trace() also writes its optional normal argument: skipped, the scene would
-        // go on with that variable unchanged (no hit), so it stops here.
-        if (w == f) in_.unsupported(t, w, w != "trace");
-    }
+    if (w == "eval_pigment") in_.unsupported(t, w);
     if (w.find('[') != std::string_view::npos) {
         in_.error(t, "array element '" + std::string(w) + "' used before it was set");
     }

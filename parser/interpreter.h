@@ -354,9 +354,21 @@ class Interpreter {
     std::shared_ptr<TrueTypeFont> load_font(const Token& at, const std::string& path,
                                             const std::string& shown);
     std::vector<uint16_t> text_codes(const Token& at, const std::string& s);
-    // min_extent / max_extent of an object identifier (`at` names it): POV-Ray's box,
-    // which the parser knows for text objects only.
+    // ---- questions about objects (object_queries.cpp)
+    // min_extent / max_extent of an object identifier (`at` names it): POV-Ray's box
+    // (without ParseOptions::object_queries, known for text objects only).
     Vector3 object_extent(const Token& at, const Object& o, bool max);
+    // The object an identifier names, or a located error.
+    std::shared_ptr<Object> object_argument(const Token& id);
+    // trace(): the nearest hit from `origin` along `direction` (<0,0,0> if none) and its
+    // normal (<0,0,0> if none) in `normal`.
+    Vector3 trace_object(const Token& at, const std::shared_ptr<Object>& object,
+                         const Point3& origin, const Vector3& direction, Vector3& normal);
+    // inside(): whether `p` is inside the object (`id` names it; a patch is an error).
+    bool inside_object(const Token& at, const Token& id,
+                       const std::shared_ptr<Object>& object, const Point3& p);
+    // Gives a closed CSG POV-Ray's box, joined from its children's (ObjectQueries).
+    void close_csg_box(Object& obj);
     // global_settings { charset }: how string bytes become character codes.
     enum class Charset : uint8_t { Ascii, Utf8, Sys } charset_ = Charset::Ascii;
     // Fonts by the name written in the scene, as POV-Ray keeps them: the cmap choice and

@@ -93,8 +93,17 @@ bool move_sweep_spheres(SphereSweep& sweep, const Transform& t,
 
 void Interpreter::apply_transform(Object& obj, const Transform& t,
                                   const TransformStep& step) {
+    Plane* plane = std::get_if<Plane>(&obj.shape);
     if (auto sweep = std::get_if<SphereSweep>(&obj.shape);
         sweep && move_sweep_spheres(*sweep, t, step)) {
+    } else if (plane && step.kind == TransformStep::Kind::Translate &&
+               obj.transform.is_identity()) {
+        // POV-Ray folds a move of a plane not yet turned or scaled into its offset (in
+        // its order of sums): rays meet it in world space, to the last bit as POV-Ray's
+        // (trace() results that scenes feed back as new origins depend on those bits).
+        const Vector3& n = plane->normal;
+        const Vector3& v = step.amount;
+        plane->distance += n.x * v.x + n.y * v.y + n.z * v.z;
     } else if (auto patch = std::get_if<BicubicPatch>(&obj.shape)) {
         // POV-Ray keeps no matrix for a patch: its control points move, and its flat
         // pieces are cut again from them.
@@ -118,7 +127,7 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
         for (Object& child : csg->children) apply_transform(child, t, step);
         for (Light& l : csg->lights) transform_light(l, t, step);
-        if (csg->text_box) move_pov_box(*csg->text_box, t);
+        if (csg->pov_box) move_pov_box(*csg->pov_box, t);
     }
     if (auto mesh = std::get_if<Mesh>(&obj.shape)) {  // per-face textures move too
         for (LayeredTexture& tex : mesh->textures) transform_textures(tex, t);
@@ -691,6 +700,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                             "other than planes and quadrics");
         }
         out.shape = std::move(csg);
+        close_csg_box(out);
     } else if (w == "object") {
         open();
         Token id = next();

@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "core/image.h"
+#include "core/object_queries.h"
 #include "core/published_place.h"
 #include "core/scene.h"
 
@@ -50,6 +52,11 @@ struct ParseOptions {
     // trace::parse_time_function_hooks()). Without it they give 0; a pigment function
     // called while parsing is an error.
     FunctionHooks function_hooks;
+    // Answers trace(), inside(), min_extent() and max_extent() on objects, and gives each
+    // CSG POV-Ray's box when it is closed (trace/ has the shapes; the commands pass
+    // trace::parse_time_object_queries()). Without it those functions stop with
+    // `unsupported:`, and CSG boxes are joined from their children when asked.
+    std::shared_ptr<ObjectQueries> object_queries;
     // Reads image_map/bump_map files. Without one the scene records the file references
     // only (enough to list the files a scene reads), and cannot be rendered.
     ImageReader image_reader;

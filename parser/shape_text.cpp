@@ -132,19 +132,6 @@ void move_pov_box(Csg::PovBox& box, const Transform& t) {
     move_box_corners(box, [&](const Point3& p) { return t.point(p); });
 }
 
-Vector3 Interpreter::object_extent(const Token& at, const Object& o, bool max) {
-    const Csg* csg = std::get_if<Csg>(&o.shape);
-    // Other objects' boxes, and a box bounded_by, clipped_by or inverse change, need
-    // trace/pov_bounds at parse time.
-    if (!csg || !csg->text_box || o.inverse || !o.clipped_by->empty() ||
-        !o.bounded_by->empty())
-        unsupported(at, max ? "max_extent" : "min_extent");
-    const Csg::PovBox& b = *csg->text_box;
-    Vector3 v;
-    for (int a = 0; a < 3; ++a) v[a] = max ? double(b.lo[a] + b.len[a]) : double(b.lo[a]);
-    return v;
-}
-
 std::string Interpreter::resolve_font(const std::string& name, int from_file,
                                       std::string& searched) const {
     std::vector<fs::path> dirs;
@@ -312,7 +299,7 @@ void Interpreter::parse_text(Object& out) {
     } catch (const FontError& e) {
         error(string_at, std::string("cannot read TrueType font: ") + e.what());
     }
-    text.text_box = laid_out_text_box(text);
+    text.pov_box = laid_out_text_box(text);
     out.shape = std::move(text);
     // POV-Ray turns every text a little "to fix cracks in text that lies along an axis",
     // before any modifier.

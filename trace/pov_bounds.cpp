@@ -203,13 +203,55 @@ PovBBox shape_bbox(const Object& o) {
     return leaf_pov_bbox(o);
 }
 
+// The half space of a plane whose normal lies along an axis, as a box (POV-Ray's
+// Compute_Plane_Min_Max, which an intersection's box takes from its planes); every other
+// plane bounds nothing. A plane only moved keeps its normal and offset; a turned or
+// scaled one is read through its transform as POV-Ray reads it (its formula, not the
+// plane's true half space): the normal through the transposed matrix, the offset less
+// that normal taken as a point back through the inverse, plus one. (POV-Ray folds moves
+// made before the first turn into the offset; a plane moved and then turned is read with
+// its whole transform here.)
+Bounds3 pov_plane_bounds(const Plane& plane, const CompactTransform& xf) {
+    Vector3 n = plane.normal;
+    Real d = plane.distance;
+    if (!xf.is_identity()) {
+        const Matrix34& m = xf.forward();
+        const bool moved_only = m.m[0][0] == 1 && m.m[1][1] == 1 && m.m[2][2] == 1 &&
+                                m.m[0][1] == 0 && m.m[0][2] == 0 && m.m[1][0] == 0 &&
+                                m.m[1][2] == 0 && m.m[2][0] == 0 && m.m[2][1] == 0;
+        if (moved_only) {
+            d += n.x * m.m[0][3] + n.y * m.m[1][3] + n.z * m.m[2][3];
+        } else {
+            const Vector3& o = plane.normal;
+            n = {m.m[0][0] * o.x + m.m[1][0] * o.y + m.m[2][0] * o.z,
+                 m.m[0][1] * o.x + m.m[1][1] * o.y + m.m[2][1] * o.z,
+                 m.m[0][2] * o.x + m.m[1][2] * o.y + m.m[2][2] * o.z};
+            const Point3 p = xf.inverse_point(Point3{n.x, n.y, n.z});
+            d = plane.distance - (p.x * n.x + p.y * n.y + p.z * n.z) + 1.0;
+        }
+    }
+    Bounds3 b{{-kBoundHuge / 2, -kBoundHuge / 2, -kBoundHuge / 2},
+              {kBoundHuge / 2, kBoundHuge / 2, kBoundHuge / 2}};
+    constexpr Real kEpsilon = 1e-10;
+    for (int a = 0; a < 3; ++a) {
+        const int a1 = (a + 1) % 3, a2 = (a + 2) % 3;
+        if (std::abs(n[a1]) < kEpsilon && std::abs(n[a2]) < kEpsilon) {
+            if (n[a] > 0)
+                b.hi[a] = d;
+            else
+                b.lo[a] = -d;
+        }
+    }
+    return b;
+}
+
 PovBBox csg_bbox(const Object& o, const Csg& csg) {
     if (o.inverse) return kInfiniteBox;
-    if (csg.text_box) {  // a text keeps the box it was laid out with, moved
+    if (csg.pov_box) {  // the box it was closed with, moved
         PovBBox b;
         for (int a = 0; a < 3; ++a) {
-            b.lo[a] = csg.text_box->lo[a];
-            b.len[a] = csg.text_box->len[a];
+            b.lo[a] = csg.pov_box->lo[a];
+            b.len[a] = csg.pov_box->len[a];
         }
         return b;
     }
@@ -221,10 +263,15 @@ PovBBox csg_bbox(const Object& o, const Csg& csg) {
              {kBoundHuge, kBoundHuge, kBoundHuge}};
         for (size_t i = 0; i < csg.children.size(); ++i) {
             const Object& c = csg.children[i];
-            if (c.inverse || (csg.kind == CsgKind::Difference && i > 0)) continue;
-            if (std::holds_alternative<Plane>(c.shape)) continue;
+            // A difference inverts its children after the first (an inverse one comes
+            // back).
+            if (c.inverse != (csg.kind == CsgKind::Difference && i > 0)) continue;
             // POV-Ray leaves height fields out too: their inside reaches below the box.
             if (std::holds_alternative<HeightField>(c.shape)) continue;
+            if (const Plane* plane = std::get_if<Plane>(&c.shape)) {
+                b = intersection(b, pov_plane_bounds(*plane, c.transform));
+                continue;
+            }
             b = intersection(b, pov_bbox_bounds(pov_object_bbox(c)));
         }
     } else {

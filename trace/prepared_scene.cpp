@@ -247,6 +247,8 @@ size_t count_leaves(const Object& o) {
 }  // namespace
 
 bool inside_object(const Object& o, const Point3& p) {
+    // POV-Ray's Inside_Object: outside a clip is outside, inverse or not.
+    if (!o.clipped_by->empty() && !inside_clips(o, p)) return false;
     bool in = false;
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
         switch (csg->kind) {
@@ -269,7 +271,6 @@ bool inside_object(const Object& o, const Point3& p) {
         const Point3 q = o.transform.is_identity() ? p : o.transform.inverse_point(p);
         in = leaf_inside(o, q);
     }
-    if (in && !o.clipped_by->empty()) in = inside_clips(o, p);
     return in != o.inverse;
 }
 

@@ -336,7 +336,8 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
           "legacy_version36", "reflection_bumped_normals", "caustics_bumped",
           "irid_reflection", "inverse_csg", "map_entries", "palette_images",
           "mesh_corner_textures", "object_flags", "image_map_file_types",
-          "area_light_jitter", "slope_aoi", "texture_map_nested_spaces"}) {
+          "area_light_jitter", "slope_aoi", "texture_map_nested_spaces",
+          "parse_time_queries"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(scene, "-W 40 -H 30",

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "parser/parser.h"
+#include "trace/object_queries.h"
 #include "trace/pattern.h"
 
 namespace povwall::parser {
@@ -27,6 +28,7 @@ std::string debug_output(const std::string& name) {
     o.messages = &messages;
     o.function_hooks =
         trace::parse_time_function_hooks();  // pattern and pigment functions
+    o.object_queries = trace::parse_time_object_queries();  // trace(), inside(), extents
     // Files the fixtures write (#fopen) go to a scratch folder.
     const auto scratch =
         std::filesystem::temp_directory_path() / ("povwall_lang_" + name);
@@ -52,7 +54,7 @@ TEST_P(LangFixture, DebugOutputMatchesPovRay) {
 INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
                          ::testing::Values("expressions", "directives", "colours",
                                            "splines", "functions", "fileio", "keywords",
-                                           "text_extents"));
+                                           "text_extents", "object_queries"));
 
 }  // namespace
 }  // namespace povwall::parser

@@ -1,0 +1,78 @@
+#include "trace/object_queries.h"
+
+#include <algorithm>
+#include <deque>
+#include <mutex>
+
+#include "trace/pov_bounds.h"
+#include "trace/prepared_scene.h"
+
+namespace povwall::trace {
+
+namespace {
+
+class ShapeQueries final : public ObjectQueries {
+  public:
+    std::optional<Hit> trace(const std::shared_ptr<Object>& object, const Point3& origin,
+                             const Vector3& direction) override {
+        std::lock_guard lock(mutex_);
+        Prepared& p = prepared(object);
+        const Ray ray{origin, direction};
+        trace::Hit hit;
+        // Find_Intersection sees every object: no no_image, no_reflection or no_shadow.
+        if (!p.prepared->closest_hit(ray, 0, kInfinity, RayUse::Refraction, hit,
+                                     p.context))
+            return std::nullopt;
+        return Hit{hit.point, hit.normal};
+    }
+    bool inside(const std::shared_ptr<Object>& object, const Point3& p) override {
+        return inside_object(*object, p);
+    }
+    Csg::PovBox box(const Object& object) override {
+        const PovBBox b = pov_object_bbox(object);
+        Csg::PovBox r;
+        for (int a = 0; a < 3; ++a) {
+            r.lo[a] = b.lo[a];
+            r.len[a] = b.len[a];
+        }
+        return r;
+    }
+
+  private:
+    struct Prepared {
+        std::shared_ptr<Object> object;  // held: its address names it
+        Scene scene;
+        std::unique_ptr<PreparedScene> prepared;
+        RayContext context;
+    };
+    static constexpr size_t kKept = 4;
+
+    Prepared& prepared(const std::shared_ptr<Object>& object) {
+        auto found = std::find_if(cache_.begin(), cache_.end(),
+                                  [&](const auto& p) { return p->object == object; });
+        if (found != cache_.end()) {
+            std::rotate(cache_.begin(), found, found + 1);  // most recent first
+            return *cache_.front();
+        }
+        auto p = std::make_unique<Prepared>();
+        p->object = object;
+        p->scene.objects.push_back(*object);
+        PrepareOptions options;
+        p->prepared = std::make_unique<PreparedScene>(p->scene, nullptr, options);
+        p->prepared->init_context(p->context);
+        cache_.push_front(std::move(p));
+        if (cache_.size() > kKept) cache_.pop_back();
+        return *cache_.front();
+    }
+
+    std::mutex mutex_;
+    std::deque<std::unique_ptr<Prepared>> cache_;
+};
+
+}  // namespace
+
+std::shared_ptr<ObjectQueries> parse_time_object_queries() {
+    return std::make_shared<ShapeQueries>();
+}
+
+}  // namespace povwall::trace
