@@ -349,8 +349,8 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
 // parse order before a worker leaves objects out) and df3 density files (found and read
 // by every process that parses the scene): every mode gives the one-process image.
 TEST(Tcp, LightGroupsAndDensityFilesInEveryModeEqualOneProcess) {
-    for (const char* name :
-         {"light_group", "media_density_file", "pigment_density_file"}) {
+    for (const char* name : {"light_group", "light_group_nesting", "media_density_file",
+                             "pigment_density_file"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(
