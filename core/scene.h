@@ -64,6 +64,7 @@ enum class PatternKind : uint8_t {
     PigmentPattern,  // the grey of a pigment (PatternSpec::pigment)
     Slope,           // the surface's slope (and altitude), PatternSpec::slope
     Aoi,             // the angle between the surface normal and the ray
+    DensityFile,     // a df3 voxel grid over the unit cube, PatternSpec::density_file
 };
 
 enum class WaveType : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
@@ -132,6 +133,15 @@ struct ImageMapping {
          offset_v = 0;  // `offset` in pixels (negated, as POV-Ray stores it)
 };
 
+// A df3 file (`density_file df3 "name"`): its sizes and its voxels, x fastest, then y,
+// then z, as read from the file's big-endian 8, 16 or 32 bit values.
+struct DensityFile {
+    std::string path;  // as resolved by the include search rules
+    uint32_t size_x = 0, size_y = 0, size_z = 0;
+    int bytes_per_voxel = 1;  // 1, 2 or 4: the value that reads as 1 is 2^(8 bytes) - 1
+    std::vector<uint32_t> voxels;
+};
+
 struct Pigment;
 
 // Everything that turns a point into a pattern value in [0,1].
@@ -171,6 +181,11 @@ struct PatternSpec {
     std::shared_ptr<const ImageMapping> image;        // PatternKind::ImageMap only
     std::shared_ptr<const FunctionProgram> function;  // PatternKind::Function only
     std::shared_ptr<const Pigment> pigment;           // PatternKind::PigmentPattern only
+    // PatternKind::DensityFile only: the file (shared by every copy of the pattern) and
+    // `interpolate` as written (POV-Ray reads it modulo 10: 0 none, 1 trilinear, else
+    // tricubic).
+    std::shared_ptr<const DensityFile> density_file;
+    int density_interpolation = 0;
 };
 
 struct ColourMapEntry {
@@ -682,6 +697,10 @@ struct Csg {
     // Light sources written inside the CSG move with it; the parser moves them to
     // Scene::lights when the object is placed in the scene.
     std::vector<Light> lights;
+    // A `light_group { }` (a union): its `lights` light only its objects (see
+    // Object::light_group), and with global_lights off the scene's other lights do not.
+    bool light_group = false;
+    bool global_lights = false;
     // The CSG's box as POV-Ray keeps it (lower-left corner and lengths in single
     // precision): joined from the children's boxes when the CSG is closed (a text: from
     // its glyphs' after layout), then moved as a box by every transform, never rebuilt
@@ -713,6 +732,12 @@ struct Object {
     bool hollow_given = false;  // `hollow` was written on it (a CSG's then leaves it)
     bool no_shadow = false, no_image = false, no_reflection = false;
     bool double_illuminate = false;
+    // Light groups (POV-Ray 3.7's LLights and NO_GLOBAL_LIGHTS_FLAG), set on the leaves
+    // when the object is placed: the lights of Scene::lights whose Light::light_group
+    // equals this (0: none) light it, and the lights of no group light it only when
+    // `global_lights` (the outermost enclosing light group's setting).
+    bool global_lights = true;
+    uint32_t light_group = 0;
     // `split_union off` on a union: POV-Ray links it to the scene whole, not child by
     // child (which keeps its children's bounded_by, see pov_splits_union()).
     bool split_union = true;
@@ -773,6 +798,9 @@ struct Light {
     // front of the light (a parallel point light is Kind::Parallel).
     bool parallel = false;
     bool media_interaction = true, media_attenuation = false;
+    // 0: a global light; else the light group (numbered when placed in the scene) whose
+    // objects alone it lights (Object::light_group).
+    uint32_t light_group = 0;
     std::optional<AreaLight> area;
     std::vector<Object> looks_like;  // rendered as an object with no shadow
     SourceLoc loc;

@@ -190,9 +190,25 @@ class Interpreter {
     // After image_map / bump_map (`bump` receives bump_size): the mapping, pixels loaded.
     std::shared_ptr<const ImageMapping> parse_image_block(const Token& keyword,
                                                           Normal* bump);
+    // After `density_file`: `df3 "name"`, the file found as POV-Ray finds it and read
+    // (density_files.cpp; one read per file and parse, shared by every pattern naming
+    // it).
+    std::shared_ptr<const DensityFile> parse_density_file();
     bool try_pattern_modifier(const Token& t, PatternSpec& spec);
     bool try_pattern_modifier(const Token& t, HeapValue<PatternSpec>& spec);
     Light parse_light_block();
+    // After `light_group`: its objects and lights as a union marked Csg::light_group,
+    // then its transforms and `global_lights` (light_groups.cpp).
+    void parse_light_group(const Token& keyword, Object& out);
+    // When a placed object's lights join the scene: numbers each light group with lights
+    // and objects, and gives every leaf its group and global_lights (POV-Ray's
+    // Promote_Local_Lights and Set_CSG_Children_Flag).
+    void assign_light_groups(Object& obj);
+    // At the end of the parse: light groups whose lights would light media differently
+    // from the global lights are refused (light_groups.cpp).
+    void check_light_groups_and_media();
+    uint32_t light_groups_ = 0;  // groups numbered so far (Light::light_group)
+    std::optional<Token> first_light_group_;
     CameraSpec parse_camera_block();
     // The rest of a camera block read as POV-Ray read it before 3.5, from `c`.
     CameraSpec parse_legacy_camera(CameraSpec c);
@@ -434,7 +450,9 @@ class Interpreter {
     Texture default_texture_;
     SharedValue<Finish> last_finish_;  // shared_finish()
     std::string scene_dir_;
-    std::vector<std::string> image_files_;  // image_map/bump_map files, for Scene::files
+    // image_map/bump_map/height_field and density_file files, for Scene::files
+    std::vector<std::string> image_files_;
+    std::unordered_map<std::string, std::shared_ptr<const DensityFile>> density_files_;
     std::vector<std::string> element_names_;  // rotating names bound to array elements
     size_t next_element_name_ = 0;
     friend class ExpressionParser;

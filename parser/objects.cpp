@@ -11,7 +11,7 @@ namespace {
 
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
-    static constexpr std::string_view kNames[] = {"parametric", "lemon", "light_group"};
+    static constexpr std::string_view kNames[] = {"parametric", "lemon"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -732,6 +732,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             out = **o;
             out.loc = loc;
         }
+    } else if (w == "light_group") {
+        parse_light_group(t, out);  // takes its own few modifiers
+        return true;
     } else {
         // Checked last: the shapes povwall has are the common case.
         if (is_unsupported_shape(w)) unsupported(t, w);
@@ -912,6 +915,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
         if (try_parse_object(t, obj)) {
             finish_object(obj);
             warn_removed_bounds(warn_removed_bounds, obj);
+            assign_light_groups(obj);
             collect_lights(obj);
             add_scene_object(std::move(obj));
             return;
@@ -925,6 +929,8 @@ void Interpreter::parse_top_level_item(const Token& t) {
             copy.loc = sources_.location(t);
             finish_object(copy);
             warn_removed_bounds(warn_removed_bounds, copy);
+            assign_light_groups(copy);
+            collect_lights(copy);
             add_scene_object(std::move(copy));
             return;
         }

@@ -53,9 +53,9 @@ constexpr PatternName kPatterns[] = {
 
 bool is_unsupported_pattern(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "material_map", "object",       "density_file", "facets",        "pavement",
-        "tiling",       "julia",        "magnet",       "image_pattern", "tiles",
-        "proportion",   "gradient_map", "cubic",        "square",        "triangular"};
+        "material_map", "object", "facets",        "pavement",  "tiling",
+        "julia",        "magnet", "image_pattern", "tiles",     "proportion",
+        "gradient_map", "cubic",  "square",        "triangular"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -266,6 +266,12 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
         spec.kind = PatternKind::Aoi;
         return true;
     }
+    if (w == "density_file") {
+        spec.kind = PatternKind::DensityFile;
+        spec.density_file = parse_density_file();
+        spec.density_interpolation = 0;  // a new file starts without interpolation
+        return true;
+    }
     if (w == "pigment_pattern") {
         // The grey of a pigment (POV-Ray's pigment_pattern; an empty one is black).
         auto inner = std::make_shared<Pigment>();
@@ -427,6 +433,10 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
             spec.fractal.interior_type = uint8_t(type);
             spec.fractal.interior_factor = factor;
         }
+    } else if (w == "interpolate") {
+        if (spec.kind != PatternKind::DensityFile)
+            error(t, "keyword 'interpolate' cannot be used with non-density_file");
+        spec.density_interpolation = parse_int();
     } else if (w == "control0") {
         spec.vector.x = parse_float();
     } else if (w == "control1") {

@@ -569,6 +569,10 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
             return clip_density(length(p));
         case PatternKind::Planar:
             return clip_density(std::fabs(p.y));
+        case PatternKind::DensityFile:
+            return s.density_file
+                       ? density_file_value(*s.density_file, s.density_interpolation, p)
+                       : 0;
     }
     return 0;
 }

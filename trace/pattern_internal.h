@@ -30,6 +30,10 @@ Colour image_map_colour(const ImageMapping& m, const Point3& p);
 // bump_map: bends pattern-space normal n (unit) by the image's heights around p.
 void bump_map_normal(const ImageMapping& m, Real amount, const Point3& p, Vector3& n);
 
+// density_file: the df3 grid's value at pattern-space point p (POV-Ray's
+// density_pattern; `interpolation` as the scene wrote it).
+Real density_file_value(const DensityFile& file, int interpolation, const Point3& p);
+
 inline int resolve_generator(const PatternSpec& spec, const PatternEnv& env) {
     return spec.noise_generator != 0 ? spec.noise_generator : env.noise_generator;
 }

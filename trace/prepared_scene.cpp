@@ -509,6 +509,8 @@ Material material_of(const Object& o, const LayeredTexture& texture) {
     m.no_image = o.no_image;
     m.no_reflection = o.no_reflection;
     m.double_illuminate = o.double_illuminate;
+    m.global_lights = o.global_lights;
+    m.light_group = o.light_group;
     m.opaque = texture_opaque(texture);
     if (!o.interior_texture->empty()) {
         m.interior_texture = &*o.interior_texture;

@@ -40,6 +40,9 @@ struct Material {
     uintptr_t interior_id = 0;           // interior_key(*object)
     bool no_shadow = false, no_image = false, no_reflection = false;
     bool double_illuminate = false;
+    // Which lights light it (Object::global_lights, Object::light_group).
+    bool global_lights = true;
+    uint32_t light_group = 0;
     // No filter or transmit anywhere in its textures (interior_texture included).
     bool opaque = true;
     // The common texture (one layer, a solid pigment, no normal, no map) copied here, so

@@ -131,6 +131,12 @@ struct LightSample {
     Rgb colour;  // after spot, cylinder and fade attenuation
 };
 
+// POV-Ray 3.7's light groups (Trace::ComputeDiffuseLight): the global lights unless the
+// object's light group turned them off, and the lights of the object's own group.
+bool lights_material(const Light& light, const Material& m) {
+    return light.light_group == 0 ? m.global_lights : light.light_group == m.light_group;
+}
+
 bool light_at(const Light& l, const Point3& p, LightSample& s) {
     if (l.kind == Light::Kind::Parallel) {
         s.dir = normalize(l.location - l.point_at);
@@ -539,6 +545,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         if (f.diffuse != 0 || f.diffuse_back != 0 || f.phong != 0 || f.specular != 0) {
             for (size_t l = 0; l < nlights; ++l) {
                 const Light& light = sc.lights[l];
+                // Light groups: a skipped light stays unlit and gets no shadow ray.
+                if (!lights_material(light, m)) continue;
                 if (sample_ok[l] == 2) {
                     sample_ok[l] = light_at(light, P, samples[l]) ? 1 : 0;
                     // media_attenuation: fog dims the light along its way (no fog colour

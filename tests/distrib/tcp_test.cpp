@@ -346,6 +346,20 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
     }
 }
 
+// Light groups (parser/light_groups.cpp: which lights light which leaves, numbered in
+// parse order before a worker leaves objects out) and df3 density files (found and read
+// by every process that parses the scene): every mode gives the one-process image.
+TEST(Tcp, LightGroupsAndDensityFilesInEveryModeEqualOneProcess) {
+    for (const char* name : {"light_group", "light_group_nesting", "media_density_file",
+                             "pigment_density_file"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        expect_same_images(
+            scene, "-W 40 -H 30",
+            {"--mode screen --procs 2", "--boxes 2x2x2", "--boxes 2x2x2 --procs 2"});
+    }
+}
+
 // Media (trace/media.h) act on a ray's colour as fog does, from its origin to its hit:
 // every mode gives the one-process image, anti-aliased too.
 TEST(Tcp, MediaInEveryModeEqualOneProcess) {
