@@ -15,13 +15,29 @@ namespace {
 
 struct WorldCrossing {
     Real t;
-    Vector3 normal;
     const Object* leaf;
     // Where the shape says the crossing is, when that is not at distance t along the ray
     // (a julia_fractal's later crossings: POV-Ray's depth there lags its point).
     bool own_point = false;
     Point3 point{0, 0, 0};
+    // The outward normal is found only for the crossing a ray keeps (most crossings are
+    // behind it, and a shadow ray keeps none): from the shape's hit, or given (a sphere
+    // met in world space); `flip` negates it (an inverse object, a difference's cutter).
+    bool flip = false;
+    bool has_normal = false;
+    Vector3 given{0, 0, 0};
+    ShapeHit hit{};
     Point3 at(const Ray& ray) const { return own_point ? point : ray.at(t); }
+    Vector3 normal() const {
+        const Vector3 n = has_normal ? given : leaf_world_normal(*leaf, hit);
+        return flip ? -n : n;
+    }
+};
+
+// World distances along a ray, [lo, hi), and whether any crossing there will do.
+struct WantedRange {
+    Real lo, hi;
+    bool any = false;
 };
 
 }  // namespace
@@ -67,7 +83,7 @@ namespace {
 
 // Leaf shape crossings along a world ray, in world distances, with outward world normals.
 void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
-                    std::vector<WorldCrossing>& out) {
+                    std::vector<WorldCrossing>& out, const WantedRange* wanted) {
     // A sphere moved, turned or scaled evenly is a sphere in world space, met by the
     // world ray as it is (POV-Ray moves its centre and radius; only an ellipsoid works in
     // its own space): the same last bits as a sphere outside CSG, which decide hits on a
@@ -79,8 +95,11 @@ void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
         Crossings cs;
         intersect_sphere(world, ray.origin, ray.direction, cs);
         for (int i = 0; i < cs.n; ++i) {
-            const Vector3 n = sphere_normal(world, ray.at(cs.c[i].t));
-            out.push_back({cs.c[i].t, o.inverse ? -n : n, &o});
+            WorldCrossing c{cs.c[i].t, &o};
+            c.flip = o.inverse;
+            c.has_normal = true;
+            c.given = sphere_normal(world, ray.at(cs.c[i].t));
+            out.push_back(c);
         }
         return;
     }
@@ -89,14 +108,21 @@ void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
     // A clip filters the hits after the shape: a shape that stops at its first hit must
     // go on past clipped ones, as POV-Ray's (which tests clips before it stops).
     local.csg_child = csg_child || !o.clipped_by->empty();
+    if (wanted && !local.csg_child) {
+        local.nearest_only = true;
+        local.want_lo = wanted->lo;
+        local.want_hi = wanted->hi;
+        local.any_crossing = wanted->any;
+    }
     thread_local ShapeHits hits;
     hits.clear();
     leaf_hits(o, local, hits);
     for (const ShapeHit& h : hits) {
-        Vector3 n = leaf_world_normal(o, h);
-        if (o.inverse) n = -n;
-        out.push_back(
-            {h.t, n, &o, h.own_point, h.own_point ? o.transform.point(h.p) : Point3{}});
+        WorldCrossing c{h.t, &o, h.own_point,
+                        h.own_point ? o.transform.point(h.p) : Point3{}};
+        c.flip = o.inverse;
+        c.hit = h;
+        out.push_back(c);
     }
 }
 
@@ -107,8 +133,10 @@ bool inside_clips(const Object& o, const Point3& p) {
     return true;
 }
 
+// `wanted`: the world distances the caller keeps the nearest crossing of, when it uses
+// no other (a leaf outside CSG may then leave out the crossings beyond).
 void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out,
-                      bool csg_child = false);
+                      bool csg_child = false, const WantedRange* wanted = nullptr);
 
 // POV-Ray's Ray_In_Bound: the ray passes when, for every bounding object, it meets it
 // somewhere ahead (MIN_ISECT_DEPTH on, as Find_Intersection; the bound's own bounds and
@@ -128,7 +156,7 @@ bool ray_in_bound(const std::vector<Object>& bound, const Ray& ray) {
 }
 
 void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out,
-                      bool csg_child) {
+                      bool csg_child, const WantedRange* wanted) {
     size_t start = out.size();
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
         // In POV-Ray's push order: a plain union pushes its children's intersections as
@@ -167,15 +195,15 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
                     }
                 }
                 if (!keep) continue;
-                if (csg->kind == CsgKind::Difference && i > 0) c.normal = -c.normal;
+                if (csg->kind == CsgKind::Difference && i > 0) c.flip = !c.flip;
                 out.push_back(c);
             }
         }
         if (o.inverse) {
-            for (size_t k = start; k < out.size(); ++k) out[k].normal = -out[k].normal;
+            for (size_t k = start; k < out.size(); ++k) out[k].flip = !out[k].flip;
         }
     } else {
-        leaf_crossings(o, ray, csg_child, out);
+        leaf_crossings(o, ray, csg_child, out, wanted);
     }
     if (!o.clipped_by->empty()) {
         size_t w = start;
@@ -855,7 +883,7 @@ inline size_t leading_spheres(const uint32_t* ids, size_t n, uint32_t sphere_cou
 
 bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, const PovRayOnce& pov_ray,
                                    Real t_min, Real t_max, Hit& hit, Real tie_tolerance,
-                                   bool* tie) const {
+                                   bool* tie, bool material_only) const {
     const Real lo = std::max(t_min, kMinIsectDepth);
     switch (kind_[id]) {
         case PrimKind::Sphere: {
@@ -930,7 +958,8 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, const PovRayOnce
             if (pov_keeps_bound(obj) && !ray_in_bound(*obj.bounded_by, ray)) return false;
             thread_local std::vector<WorldCrossing> crossings;
             crossings.clear();
-            object_crossings(obj, ray, crossings);
+            const WantedRange wanted{lo, t_max, material_only};
+            object_crossings(obj, ray, crossings, false, &wanted);
             // The crossings are in the order POV-Ray pops them last (object_crossings):
             // of equal depths it keeps the last.
             const WorldCrossing* best = nullptr;
@@ -948,7 +977,8 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, const PovRayOnce
             hit.t = best->t;
             hit.prim = id;
             hit.point = best->at(ray);
-            hit.normal = best->normal;
+            // (material_only: a leaf outside CSG may have given any of its crossings.)
+            if (!material_only) hit.normal = best->normal();
             hit.material = material_for(best->leaf);
             if (!hit.material) hit.material = &materials_[material_[id]];
             return true;
@@ -1128,7 +1158,8 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
             return caster(materials_[material_[id]]);
         }
         Hit h;
-        if (!test_primitive(id, ray, pov_ray, t_min, t_max, h)) return 0;
+        if (!test_primitive(id, ray, pov_ray, t_min, t_max, h, 0, nullptr, true))
+            return 0;
         return caster(*h.material);
     };
     uint32_t* cache = light >= 0 && size_t(light) < ctx.last_blocker.size()

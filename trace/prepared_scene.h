@@ -221,9 +221,12 @@ class PreparedScene {
     uint32_t add_material(const Object& obj);
     // `tie`, when given: set when the object's nearest crossing has a crossing of another
     // of its leaves within `tie_tolerance` (relative) of it (CSG objects only).
+    // `material_only`: only whether the ray meets the primitive in [t_min, t_max) and
+    // the hit's material are used (a shadow test): a leaf shape outside CSG may give
+    // any of its crossings there, and the normal is not computed.
     bool test_primitive(uint32_t id, const Ray& ray, const PovRayOnce& pov_ray,
                         Real t_min, Real t_max, Hit& hit, Real tie_tolerance = 0,
-                        bool* tie = nullptr) const;
+                        bool* tie = nullptr, bool material_only = false) const;
     // On an exact tie in depth: whether POV-Ray would see `candidate`'s surface rather
     // than `nearest`'s (trace/pov_order.h).
     bool pov_takes(const Material& candidate, const Material& nearest,

@@ -59,6 +59,19 @@ struct LocalRay {
     // The object is a part of a CSG object. Some POV-Ray shapes stop at their first hit
     // otherwise (the nearest but for its depth tolerances).
     bool csg_child = false;
+    // The query keeps only the nearest crossing with a world distance in [want_lo,
+    // want_hi) (a closest-hit or shadow test outside CSG): the shape may leave out
+    // crossings it proves lie beyond want_hi, or beyond a crossing it returns that lies
+    // in that range.
+    bool nearest_only = false;
+    Real want_lo = 0, want_hi = kInfinity;
+    // With nearest_only: the query asks only whether there is a crossing in that range
+    // (a shadow ray); the shape may stop at the first it finds there.
+    bool any_crossing = false;
+    // Whether a crossing at world distance t ends the search (any_crossing).
+    bool ends_search(Real t) const {
+        return nearest_only && any_crossing && t >= want_lo && t < want_hi;
+    }
 };
 
 // One crossing of a leaf shape's surface.

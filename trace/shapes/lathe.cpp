@@ -70,7 +70,8 @@ Real height_at(const Seg& e, Real t) { return t * (t * (t * e.aw + e.bw) + e.cw)
 }  // namespace
 
 void intersect_lathe(const Lathe& s, const Point3& p, const Vector3& d, Real dir_length,
-                     ShapeHits& out) {
+                     ShapeHits& out, bool nearest_only, Real want_lo, Real want_hi,
+                     bool any_crossing) {
     const LatheSpline& sp = *s.spline;
     if ((d.y >= 0 && p.y > sp.height2) || (d.y <= 0 && p.y < sp.height1) ||
         (d.x >= 0 && p.x > sp.radius2) || (d.x <= 0 && p.x < -sp.radius2))
@@ -87,17 +88,37 @@ void intersect_lathe(const Lathe& s, const Point3& p, const Vector3& d, Real dir
     const int degree = degree_of(sp.kind);
     // The linear case is a quadratic: POV-Ray solves it in closed form, sturm or not.
     const bool sturm = s.sturm && sp.kind != LatheSplineKind::Linear;
+    // Crossings past `cutoff` are not wanted: want_hi, lowered to each crossing kept in
+    // the wanted range.
+    Real cutoff = want_hi;
     auto push = [&](Real t_world, Real k, int segment, Real param) {
-        if (t_world > kMinIsectDepth && t_world < kMaxDistance)
+        if (t_world > kMinIsectDepth && t_world < kMaxDistance) {
             out.push_back({t_world, p + d * k, segment, param});
+            if (t_world >= want_lo && t_world < cutoff) cutoff = t_world;
+        }
     };
+    // A root's height lies within its segment's heights h1..h2 (the bounding cylinders
+    // bound the spline there), so along a ray that is not level its world distance
+    // (height - Py) / Dy is at least that of the nearer height, less a margin far above
+    // the rounding of the height polynomial and of this quotient. Level rays (the
+    // circle's quadratic) are always solved.
+    const bool prunable = nearest_only && std::fabs(d.y) > kPovEpsilon;
+    const Real margin = 1e-9 * (std::fabs(sp.height1) + std::fabs(sp.height2) +
+                                std::fabs(p.y) + sp.radius2);
     for (const SegmentInterval& in : intervals) {
         const Seg& e = sp.segments[in.segment];
+        if (prunable) {
+            const BoundingCylinders::Segment& bc = sp.cylinders.segments[in.segment];
+            const Real near = d.y > 0 ? sp.cylinders.heights[bc.h1] - p.y - margin
+                                      : sp.cylinders.heights[bc.h2] - p.y + margin;
+            if (near / dy_world > cutoff) continue;
+        }
         Real x[7], roots[6];  // degree 6 at most (cubic and Bezier segments)
         segment_polynomial(sp.kind, e, p, d, rho, m, dy2, x);
         // Only spline parameters w in [0, 1] are kept: Sturm need not search above.
         int n = pov_solve_polynomial(degree, x, roots, sturm, 0, 1.0);
         const int seg = int(in.segment);
+        const size_t found = out.size();
         while (n--) {
             const Real w = roots[n];
             if (!(w >= 0.0 && w <= 1.0)) continue;
@@ -112,6 +133,10 @@ void intersect_lathe(const Lathe& s, const Point3& p, const Vector3& d, Real dir
                 int n2 = pov_solve_polynomial(2, q, ks, false);
                 while (n2--) push(ks[n2] / dir_length, ks[n2], seg, w);
             }
+        }
+        if (any_crossing) {
+            for (size_t i = found; i < out.size(); ++i)
+                if (out[i].t >= want_lo && out[i].t < want_hi) return;
         }
     }
 }
@@ -153,7 +178,8 @@ bool inside_lathe(const Lathe& s, const Point3& p) {
 
 void shape_hits(const Lathe& s, const LocalRay& r, ShapeHits& out) {
     const size_t first = out.size();
-    intersect_lathe(s, r.origin, r.unit, r.length, out);
+    intersect_lathe(s, r.origin, r.unit, r.length, out, r.nearest_only, r.want_lo,
+                    r.want_hi, r.nearest_only && r.any_crossing);
     std::sort(out.begin() + first, out.end(),
               [](const ShapeHit& a, const ShapeHit& b) { return a.t < b.t; });
 }

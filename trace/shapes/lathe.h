@@ -13,9 +13,13 @@ struct OracleBest;
 
 // The crossings along a unit direction from `o` whose world distance (object distance
 // / `dir_length`) lies in (1e-4, 1e7), in POV-Ray's order (not sorted); each hit's face
-// is its segment and `param` its t.
+// is its segment and `param` its t. With `nearest_only` (the caller keeps only the
+// nearest crossing in [want_lo, want_hi)), a segment whose heights put all its crossings
+// beyond want_hi, or beyond a crossing found in that range, is not solved; with
+// `any_crossing` too, the search ends at the first segment with a crossing there.
 void intersect_lathe(const Lathe& s, const Point3& o, const Vector3& dir, Real dir_length,
-                     ShapeHits& out);
+                     ShapeHits& out, bool nearest_only = false, Real want_lo = 0,
+                     Real want_hi = kInfinity, bool any_crossing = false);
 Vector3 lathe_normal(const Lathe& s, const Point3& p, int segment, Real t);
 bool inside_lathe(const Lathe& s, const Point3& p);
 

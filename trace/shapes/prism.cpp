@@ -70,6 +70,55 @@ int wall_roots(const Prism& p, const Real c[4], Real roots[3]) {
     return 0;
 }
 
+// The crossings of segment j's wall, in POV-Ray's order: push(k, j, t) for each at
+// object depth k whose height lies between the prism's (k1..k3: the conic sweep's plane
+// through the apex and the ray).
+template <class Push>
+void wall_hits(const Prism& p, const PrismSegment& s, int j, const Point3& P,
+               const Vector3& D, Real k1, Real k2, Real k3, Push&& push) {
+    Real c[4];
+    if (!p.conic) {
+        // Where the ray's (x, z) line crosses the curve: D.z (u - Px) = D.x (v - Pz).
+        c[0] = s.a[0] * D.z - s.a[1] * D.x;
+        c[1] = s.b[0] * D.z - s.b[1] * D.x;
+        c[2] = s.c[0] * D.z - s.c[1] * D.x;
+        c[3] = D.z * (s.d[0] - P.x) - D.x * (s.d[1] - P.z);
+        const bool cubic =
+            p.spline == Prism::Spline::Cubic || p.spline == Prism::Spline::Bezier;
+        if (cubic && !meets_rectangle(s, P, D)) return;
+    } else {
+        // Where the plane through the apex and the ray crosses the curve at y = 1.
+        c[0] = s.a[0] * k1 + s.a[1] * k2;
+        c[1] = s.b[0] * k1 + s.b[1] * k2;
+        c[2] = s.c[0] * k1 + s.c[1] * k2;
+        c[3] = s.d[0] * k1 + s.d[1] * k2 + k3;
+    }
+    Real roots[3];
+    const int n = wall_roots(p, c, roots);
+    for (int i = n - 1; i >= 0; --i) {
+        const Real t = roots[i];
+        if (!(t >= 0 && t <= 1)) continue;
+        Real k;
+        if (!p.conic) {
+            k = std::fabs(D.x) > kEpsilon ? (at(s, 0, t) - P.x) / D.x
+                                          : (at(s, 1, t) - P.z) / D.z;
+        } else {
+            const Real U = at(s, 0, t);
+            Real h = D.x - U * D.y;
+            if (std::fabs(h) > kEpsilon) {
+                k = (U * P.y - P.x) / h;
+            } else {
+                const Real V = at(s, 1, t);
+                h = D.z - V * D.y;
+                if (!(std::fabs(h) > kEpsilon)) continue;
+                k = (V * P.y - P.z) / h;
+            }
+        }
+        const Real y = P.y + k * D.y;
+        if (y >= p.height1 && y <= p.height2) push(k, j, t);
+    }
+}
+
 }  // namespace
 
 bool prism_in_curve(const Prism& p, Real u, Real v) {
@@ -103,16 +152,73 @@ void shape_hits(const Prism& p, const LocalRay& r, ShapeHits& out) {
             out.push_back({w, P + D * k, face, s});
     };
     const Real H1 = p.height1, H2 = p.height2;
-    if (std::fabs(D.y) < kEpsilon) {
-        if (P.y < H1 || P.y > H2) return;
-    } else if (!p.open) {
-        // The cap (height2) first, then the base; the object-space depth is checked too.
-        for (int end = 0; end < 2; ++end) {
+    if (std::fabs(D.y) < kEpsilon && (P.y < H1 || P.y > H2)) return;
+    // With r.nearest_only, crossings past `cutoff` (world) are not wanted: want_hi,
+    // lowered to each crossing found in [want_lo, want_hi). A wall segment or cap whose
+    // crossings all lie beyond it is not solved. The walls are found first for that,
+    // the caps then go before them in the list, as found in POV-Ray's order.
+    Real cutoff = r.want_hi;
+    auto lower_cutoff = [&](size_t from) {
+        for (size_t i = from; i < out.size(); ++i)
+            if (out[i].t >= r.want_lo && out[i].t < cutoff) cutoff = out[i].t;
+    };
+    // A margin far above the rounding of a crossing's depth (relative 1e-16 of the
+    // coordinates involved) for the lower bounds below.
+    const Real margin = 1e-9 * (std::fabs(P.x) + std::fabs(P.y) + std::fabs(P.z) +
+                                std::fabs(H1) + std::fabs(H2) + std::fabs(p.x1) +
+                                std::fabs(p.x2) + std::fabs(p.y1) + std::fabs(p.y2));
+    const bool prunable = r.nearest_only && std::isfinite(margin);
+    // A wall crossing lies between the heights: along a ray that is not level, its
+    // object depth is at least that of the nearer height.
+    Real wall_floor = -kHuge;
+    if (prunable && std::fabs(D.y) >= kEpsilon)
+        wall_floor = (D.y > 0 ? H1 - P.y - margin : H2 - P.y + margin) / D.y;
+    const size_t walls_at = out.size();
+    // Whether a crossing from `from` on ends the search (r.any_crossing).
+    bool ended_search = false;
+    auto ended = [&](size_t from) {
+        for (size_t i = from; i < out.size() && !ended_search; ++i)
+            ended_search = r.ends_search(out[i].t);
+        return ended_search;
+    };
+    // Walls (an exactly vertical ray in object space meets none, even conic ones).
+    if (std::fabs(D.x) > kEpsilon || std::fabs(D.z) > kEpsilon) {
+        const Real k1 = P.z * D.y - P.y * D.z, k2 = P.y * D.x - P.x * D.y,
+                   k3 = P.x * D.z - P.z * D.x;
+        for (size_t j = 0; j < p.segments.size(); ++j) {
+            const PrismSegment& s = p.segments[j];
+            if (leaves_rectangle(s.x1, s.x2, s.y1, s.y2, P, D)) continue;
+            if (prunable) {
+                // A linear sweep's wall crossing lies in the segment's rectangle, its
+                // depth from x (or z) as below.
+                Real floor = wall_floor;
+                if (!p.conic) {
+                    const Real near =
+                        std::fabs(D.x) > kEpsilon
+                            ? (D.x > 0 ? s.x1 - P.x - margin : s.x2 - P.x + margin) / D.x
+                            : (D.z > 0 ? s.y1 - P.z - margin : s.y2 - P.z + margin) / D.z;
+                    floor = std::max(floor, near);
+                }
+                if (floor / len > cutoff) continue;
+            }
+            const size_t found = out.size();
+            wall_hits(p, s, int(j), P, D, k1, k2, k3, push);
+            if (prunable) lower_cutoff(found);
+            if (ended(found)) break;
+        }
+    }
+    // The cap (height2) first, then the base; the object-space depth is checked too.
+    thread_local ShapeHits walls;
+    walls.assign(out.begin() + std::ptrdiff_t(walls_at), out.end());
+    out.resize(walls_at);
+    if (std::fabs(D.y) >= kEpsilon && !p.open && !ended_search) {
+        for (int end = 0; end < 2 && !ended(walls_at); ++end) {
             const Real H = end == 0 ? H2 : H1;
             const int face = end == 0 ? kPrismCap : kPrismBase;
             if (p.conic && !(std::fabs(H) > kEpsilon)) continue;
             const Real k = (H - P.y) / D.y;
             if (!(k > kDepthTolerance && k < kMaxDistance)) continue;
+            if (prunable && k / len > cutoff) continue;
             Real u = P.x + k * D.x, v = P.z + k * D.z;
             if (p.conic) {
                 u /= H;
@@ -121,58 +227,7 @@ void shape_hits(const Prism& p, const LocalRay& r, ShapeHits& out) {
             if (prism_in_curve(p, u, v)) push(k, face, 0);
         }
     }
-    // Walls (an exactly vertical ray in object space meets none, even conic ones).
-    if (std::fabs(D.x) > kEpsilon || std::fabs(D.z) > kEpsilon) {
-        const Real k1 = P.z * D.y - P.y * D.z, k2 = P.y * D.x - P.x * D.y,
-                   k3 = P.x * D.z - P.z * D.x;
-        for (size_t j = 0; j < p.segments.size(); ++j) {
-            const PrismSegment& s = p.segments[j];
-            if (leaves_rectangle(s.x1, s.x2, s.y1, s.y2, P, D)) continue;
-            Real c[4];
-            if (!p.conic) {
-                // Where the ray's (x, z) line crosses the curve: D.z (u - Px) = D.x (v -
-                // Pz).
-                c[0] = s.a[0] * D.z - s.a[1] * D.x;
-                c[1] = s.b[0] * D.z - s.b[1] * D.x;
-                c[2] = s.c[0] * D.z - s.c[1] * D.x;
-                c[3] = D.z * (s.d[0] - P.x) - D.x * (s.d[1] - P.z);
-                const bool cubic =
-                    p.spline == Prism::Spline::Cubic || p.spline == Prism::Spline::Bezier;
-                if (cubic && !meets_rectangle(s, P, D)) continue;
-            } else {
-                // Where the plane through the apex and the ray crosses the curve at y
-                // = 1.
-                c[0] = s.a[0] * k1 + s.a[1] * k2;
-                c[1] = s.b[0] * k1 + s.b[1] * k2;
-                c[2] = s.c[0] * k1 + s.c[1] * k2;
-                c[3] = s.d[0] * k1 + s.d[1] * k2 + k3;
-            }
-            Real roots[3];
-            const int n = wall_roots(p, c, roots);
-            for (int i = n - 1; i >= 0; --i) {
-                const Real t = roots[i];
-                if (!(t >= 0 && t <= 1)) continue;
-                Real k;
-                if (!p.conic) {
-                    k = std::fabs(D.x) > kEpsilon ? (at(s, 0, t) - P.x) / D.x
-                                                  : (at(s, 1, t) - P.z) / D.z;
-                } else {
-                    const Real U = at(s, 0, t);
-                    Real h = D.x - U * D.y;
-                    if (std::fabs(h) > kEpsilon) {
-                        k = (U * P.y - P.x) / h;
-                    } else {
-                        const Real V = at(s, 1, t);
-                        h = D.z - V * D.y;
-                        if (!(std::fabs(h) > kEpsilon)) continue;
-                        k = (V * P.y - P.z) / h;
-                    }
-                }
-                const Real y = P.y + k * D.y;
-                if (y >= H1 && y <= H2) push(k, int(j), t);
-            }
-        }
-    }
+    out.insert(out.end(), walls.begin(), walls.end());
     std::stable_sort(out.begin() + std::ptrdiff_t(first), out.end(),
                      [](const ShapeHit& a, const ShapeHit& b) { return a.t < b.t; });
 }

@@ -161,30 +161,45 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
     const Vector3& D = r.direction;  // POV-Ray does not normalise it: t is world depth
     const Real depth = g.depth;
     const bool caps = std::fabs(D.z) >= kPovEpsilon;
+    const size_t first = out.size();
     Real y_front = 0, y_back = 0;  // the ray's height at z = 0 and at z = depth
+    Real x_front = 0, x_back = 0;  // and its x there
     if (caps) {
         Real t = -P.z / D.z;
         Real x = P.x + t * D.x, y = P.y + t * D.y;
-        const bool front = inside_glyph_outline(outline, x, y);
         const Real t_front = t;
         t += depth / D.z;
         const Real xb = P.x + t * D.x, yb = P.y + t * D.y;
-        const bool back = inside_glyph_outline(outline, xb, yb);
         y_front = y;
         y_back = yb;
-        if (front && t_front > 0.0 && t_front > kGlyphTolerance)
+        x_front = x;
+        x_back = xb;
+        // (A shadow ray that needs any crossing stops at the front cap's.)
+        const bool front_counts = t_front > 0.0 && t_front > kGlyphTolerance;
+        if (front_counts && r.ends_search(t_front) &&
+            inside_glyph_outline(outline, x, y)) {
             out.push_back({t_front, {x, y, 0.0}, kFrontFace});
+            return;
+        }
+        const bool front = inside_glyph_outline(outline, x, y);
+        const bool back = inside_glyph_outline(outline, xb, yb);
+        if (front && front_counts) out.push_back({t_front, {x, y, 0.0}, kFrontFace});
         if (back && t > 0.0 && t > kGlyphTolerance)
             out.push_back({t, {xb, yb, depth}, kBackFace});
+        for (size_t i = first; i < out.size(); ++i)
+            if (r.ends_search(out[i].t)) return;
     }
     const bool use_x = std::fabs(D.x) >= kPovEpsilon;
     if (!use_x && std::fabs(D.y) < kPovEpsilon) return;  // parallel to the walls
     // The projected ray as the implicit line a x + b y + c = 0.
     const Real a = D.y, b = -D.x, c = P.y * D.x - P.x * D.y;
+    bool ended = false;  // a crossing ended the search (r.any_crossing)
     auto push_side = [&](Real t, int index, Real x, Real y) {
         const Real z = P.z + t * D.z;
-        if (z >= 0 && z <= depth && t > kGlyphTolerance)
+        if (z >= 0 && z <= depth && t > kGlyphTolerance) {
             out.push_back({t, {x, y, z}, index});
+            ended = ended || r.ends_search(t);
+        }
     };
     // The projected line's value at a point, and a margin far above the rounding of the
     // coefficients below (relative 1e-16) yet far below any real crossing's: a segment
@@ -213,9 +228,33 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
                             outline.point_ymax};
         if (clear_of(bx, by, 4)) return;
     }
+    // Where the depth comes from x, a wall crossing's x is the ray's at a depth between
+    // the caps' (z within 0..depth): between x_front and x_back up to rounding (relative
+    // 1e-16 of the coordinates), far below the margin. A segment whose points all lie
+    // outside that range has none (a curve lies in its points' hull).
+    Real x_lo = -kInfinity, x_hi = kInfinity;
+    if (caps && use_x) {
+        const Real m = 1e-7 * (std::fabs(P.x) + std::fabs(x_front) + std::fabs(x_back) +
+                               std::max(std::fabs(outline.point_xmin),
+                                        std::fabs(outline.point_xmax)));
+        if (std::isfinite(m)) {
+            x_lo = std::min(x_front, x_back) - m;
+            x_hi = std::max(x_front, x_back) + m;
+        }
+    }
+    auto beside_window = [&](const GlyphSegment& s) {
+        const int n = s.curve ? 3 : 2;
+        bool left = true, right = true;
+        for (int k = 0; k < n; ++k) {
+            left = left && s.x[k] < x_lo;
+            right = right && s.x[k] > x_hi;
+        }
+        return left || right;
+    };
     auto cross_segment = [&](size_t i) {
+        if (ended) return;
         const GlyphSegment& s = outline.segments[i];
-        if (clear_of(s.x, s.y, s.curve ? 3 : 2)) return;
+        if (beside_window(s) || clear_of(s.x, s.y, s.curve ? 3 : 2)) return;
         if (!s.curve) {
             const Real d0 = s.x[1] - s.x[0], d1 = s.y[1] - s.y[0];
             const Real den = d1 * D.x - d0 * D.y;
