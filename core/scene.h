@@ -865,8 +865,9 @@ struct GlobalSettings {
 // What an interior stack needs of a node of an object the parse left out (see
 // Scene::left_out_nodes): a ray that entered the object in another process may still
 // count as inside it here, where the object is not (POV-Ray's interior list is not
-// geometry: a shadow ray from the object's surface keeps the object, and so does a ray
-// leaving an inner object that pokes out of it).
+// geometry: a ray leaving two glass objects through a face they share crosses one of
+// the surfaces only, and a media sample on a container's surface sends shadow rays that
+// start outside the container, inside its interior).
 struct LeftOutNode {
     uint32_t node = 0;    // its number in the whole scene's walk (object_first_node)
     bool hollow = false;  // media and fog fill it (its interior's flag when it has one)
