@@ -423,7 +423,10 @@ TEST(Tcp, InteriorsOfLeftOutObjectsInEveryModeEqualOneProcess) {
             scene.string(), "-W 48 -H 36",
             {"--mode screen --procs 2", "--boxes 2x2x2", "--boxes 4x1x1",
              "--boxes 2x2x2 --procs 2", "--boxes 4x1x1 --procs 2",
-             "--boxes 4x1x1 --procs 4", "--boxes 3x1x2 --procs 2 --results parents"});
+             "--boxes 4x1x1 --procs 4", "--boxes 3x1x2 --procs 2 --results parents",
+             // Workers that parse the scene themselves (keep_object) rather than
+             // take it from the coordinator's parse (take_scene_keeping).
+             "--boxes 4x1x1 --procs 2 --worker-start exec"});
     }
 }
 
