@@ -14,6 +14,7 @@
 
 #include "cli/interrupt.h"
 #include "cli/options.h"
+#include "cli/tile_worker_job.h"
 #include "core/self_exe.h"
 #include "distrib/tcp.h"
 #include "output/image_io.h"
@@ -84,6 +85,11 @@ const char* kUsage =
 
 int render_main(const std::vector<std::string>& args) {
     RenderOptions o;
+    // A screen worker: its settings are the coordinator's (cli/tile_worker_job.h).
+    if (!args.empty() && args[0] == TileWorkerJob::kFlag) {
+        TileWorkerJob::from_argv(args).apply_to(o);
+        return run_render(o);
+    }
     CLI::App app{"Render a POV-Ray scene", "povwall render"};
     std::string scene;
     app.add_option("SCENE", scene, "scene file (.pov)");
@@ -114,9 +120,6 @@ int render_main(const std::vector<std::string>& args) {
     app.add_option("--procs", o.procs,
                    "worker processes: screen tiles, or with --boxes black boxes over TCP "
                    "(loopback)");
-    app.add_flag("--tile-worker", o.tile_worker,
-                 "internal: serve screen tiles on stdin/stdout")
-        ->group("");
     app.add_option("--results", o.results,
                    "how boxes return colours: forward contributions, parents, or auto")
         ->check(CLI::IsMember({"auto", "forward", "parents"}))
@@ -133,13 +136,6 @@ int render_main(const std::vector<std::string>& args) {
                    "override the scene's adc_bailout (0..1)")
         ->check(CLI::Range(0.0, 1.0));
     add_parse_limit_options(app, o.max_loop_iterations, o.max_parse_seconds);
-    // Internal (screen tile workers): the frame of an animation this process renders, as
-    // number,clock,clock_delta,initial_frame,final_frame,initial_clock,final_clock.
-    std::vector<double> frame_values;
-    app.add_option("--frame-values", frame_values)
-        ->delimiter(',')
-        ->expected(7)
-        ->group("");
     app.add_option("--workers", o.workers,
                    "black boxes in running workers, host:port,...")
         ->delimiter(',');
@@ -207,14 +203,6 @@ int render_main(const std::vector<std::string>& args) {
     o.recover = !no_recover;
     if (max_trace_level) o.max_trace_level = max_trace_level;
     if (adc_bailout) o.adc_bailout = adc_bailout;
-    if (frame_values.size() == 7) {
-        o.frame = RenderOptions::FrameValues{int(frame_values[0]), frame_values[1],
-                                             frame_values[2]};
-        o.animation.initial_frame = int(frame_values[3]);
-        o.animation.final_frame = int(frame_values[4]);
-        o.animation.initial_clock = frame_values[5];
-        o.animation.final_clock = frame_values[6];
-    }
     if (!rendezvous.empty()) {
         if (!o.workers.empty() || o.procs > 0)
             throw UsageError("--rendezvous finds the workers: no --workers or --procs");
@@ -264,7 +252,7 @@ int main(int argc, char** argv) {
     // print the coordinator's line).
     bool worker = argc > 1 && std::strcmp(argv[1], "worker") == 0;
     for (int i = 1; i < argc && !worker; ++i)
-        worker = std::strcmp(argv[i], "--tile-worker") == 0;
+        worker = std::strcmp(argv[i], TileWorkerJob::kFlag) == 0;
     // Test hook: a Ctrl-C that lands after the restart's exec, before the handler is set.
     if (std::getenv("POVWALL_HEAP_SET") &&
         std::getenv("POVWALL_FAULT_INTERRUPT_AT_RESTART"))

@@ -63,6 +63,7 @@ struct RenderOptions {
     struct FrameValues {
         int number = 0;
         double clock = 0.0, clock_delta = 0.0;
+        bool operator==(const FrameValues&) const = default;
     };
     std::optional<FrameValues> frame;  // set while one frame of an animation renders
     // Set by an animation for all its frames: the black-box workers (--procs, --workers)

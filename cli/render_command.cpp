@@ -14,6 +14,7 @@
 #include "cli/interrupt.h"
 #include "cli/options.h"
 #include "cli/progress_bar.h"
+#include "cli/tile_worker_job.h"
 #include "core/self_exe.h"
 #include "distrib/distribution_plan.h"
 #include "distrib/screen_render.h"
@@ -45,65 +46,8 @@ std::vector<std::string> tile_worker_command(const RenderOptions& o) {
     const std::string exe = self_exe();
     if (exe.empty())
         throw UsageError("cannot find the povwall binary for worker processes");
-    std::vector<std::string> cmd = {exe,
-                                    "render",
-                                    o.scene,
-                                    "-W",
-                                    std::to_string(o.width),
-                                    "-H",
-                                    std::to_string(o.height),
-                                    "--threads",
-                                    "1",
-                                    "--plan",
-                                    o.plan,
-                                    "--tile-worker",
-                                    "-q"};
-    for (const auto& dir : o.library_paths) {
-        cmd.push_back("-L");
-        cmd.push_back(dir);
-    }
-    for (const auto& [name, value] : o.declares) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "%.17g", value);
-        cmd.push_back("Declare=" + name + "=" + buf);
-    }
-    if (o.render.alpha) cmd.push_back("+UA");
-    cmd.push_back("+Q" + std::to_string(o.render.quality));
-    if (o.render.antialias) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "+A%.17g", o.render.aa_threshold);
-        cmd.push_back(buf);
-        cmd.push_back("+AM" + std::to_string(o.render.aa_method));
-        cmd.push_back("+R" + std::to_string(o.render.aa_depth));
-        std::snprintf(buf, sizeof buf, "+J%.17g", o.render.aa_jitter_amount);
-        cmd.push_back(o.render.aa_jitter ? std::string(buf) : std::string("-J"));
-        std::snprintf(buf, sizeof buf, "+AG%.17g", o.render.aa_gamma);
-        cmd.push_back(buf);
-    }
-    if (o.language_version)
-        cmd.push_back("+MV" + std::to_string(*o.language_version / 100) + "." +
-                      std::to_string(*o.language_version % 100 / 10) +
-                      std::to_string(*o.language_version % 10));
-    if (o.max_trace_level)
-        cmd.push_back("--max-trace-level=" + std::to_string(*o.max_trace_level));
-    if (o.adc_bailout) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "--adc-bailout=%.17g", *o.adc_bailout);
-        cmd.push_back(buf);
-    }
-    cmd.push_back("--max-loop-iterations=" + std::to_string(o.max_loop_iterations));
-    if (o.frame) {  // the frame's clock, exactly as this process has it
-        char buf[256];
-        std::snprintf(buf, sizeof buf, "--frame-values=%d,%.17g,%.17g,%d,%d,%.17g,%.17g",
-                      o.frame->number, o.frame->clock, o.frame->clock_delta,
-                      o.animation.initial_frame, o.animation.final_frame,
-                      o.animation.initial_clock, o.animation.final_clock);
-        cmd.push_back(buf);
-    } else if (o.animation.clock != 0.0) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "+K%.17g", o.animation.clock);
-        cmd.push_back(buf);
-    }
+    std::vector<std::string> cmd = {exe, "render"};
+    for (std::string& a : TileWorkerJob::of(o).to_argv()) cmd.push_back(std::move(a));
     return cmd;
 }
 
@@ -195,7 +139,7 @@ int run_render(RenderOptions o) {
     if (o.scene.empty())
         throw UsageError("no scene file given (+ISCENE.pov or render SCENE.pov)");
     if (o.width <= 0 || o.height <= 0) throw UsageError("image size must be positive");
-    if (!o.frame) {
+    if (!o.frame && !o.tile_worker) {  // a tile worker renders the still it was given
         const std::vector<Frame> frames = animation_frames(o);
         if (!frames.empty()) return run_animation(o, frames);
     }

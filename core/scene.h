@@ -314,6 +314,10 @@ struct Interior {
     // them when it places an object in the scene (0: not numbered).
     uint32_t id = 0;
 };
+// Whether an interior acts as none at all (ior 1, no media, fade, caustics or refraction
+// scale, default dispersion), its id and hollow flag aside. A field added to Interior is
+// added here.
+bool interior_is_default(const Interior& in);
 
 // ---------------------------------------------------------------- shapes (object space)
 
@@ -889,6 +893,20 @@ struct GlobalSettings {
     int number_of_waves = 10;
 };
 
+// What an interior stack needs of a node of an object the parse left out (see
+// Scene::left_out_nodes): a ray that entered the object in another process may still
+// count as inside it here, where the object is not (POV-Ray's interior list is not
+// geometry: a ray leaving two glass objects through a face they share crosses one of
+// the surfaces only, and a media sample on a container's surface sends shadow rays that
+// start outside the container, inside its interior).
+struct LeftOutNode {
+    uint32_t node = 0;    // its number in the whole scene's walk (object_first_node)
+    bool hollow = false;  // media and fog fill it (its interior's flag when it has one)
+    // Null: a default interior (interior_is_default). Held by Scene::left_out_interiors,
+    // one for all the nodes of a tree that share it.
+    const Interior* interior = nullptr;
+};
+
 // Everything a render needs besides the output settings.
 struct Scene {
     std::vector<std::string>
@@ -916,6 +934,18 @@ struct Scene {
     bool objects_filtered() const {
         return objects_left_out > 0 || !object_first_node.empty();
     }
+    // The left-out objects' nodes (CSG children included) whose interior is not a
+    // default one or that are hollow, by ascending node number: an interior stack entry
+    // naming one of them (wire/items.h, ObjectNumbers) gets its ior, media and hollow
+    // flag without the object's shape or textures. Any other left-out node has a default
+    // interior and is not hollow.
+    std::vector<LeftOutNode> left_out_nodes;
+    std::vector<std::shared_ptr<const Interior>> left_out_interiors;
+    // Records what interior stacks need of `o`, left out, whose first node is
+    // `first_node` (every node after the last one recorded).
+    void leave_out(const Object& o, uint32_t first_node);
+    // The record of left-out node `node`; null: a default interior, not hollow.
+    const LeftOutNode* left_out_node(uint32_t node) const;
     // POV-Ray's effective language version at the end of parsing, times 100 (e.g. 362,
     // 370): the #version in force then, or 362 for a scene that never set one (+MV sets
     // one too). What the `version` identifier reads is the parser's business.

@@ -848,6 +848,7 @@ void Interpreter::add_scene_object(Object&& obj) {
         scene_.object_first_node.push_back(scene_.object_nodes_total);
         scene_.objects.push_back(std::move(obj));
     } else {
+        scene_.leave_out(obj, scene_.object_nodes_total);
         ++scene_.objects_left_out;
     }
     scene_.object_nodes_total += nodes;

@@ -614,8 +614,6 @@ Material interior_side(const Material& m) {
 
 uint32_t PreparedScene::add_material(const Object& o) {
     materials_.push_back(material_of(o, o.texture));
-    if (materials_.back().interior && !materials_.back().interior->media.empty())
-        interior_media_ = true;
     material_frame_.push_back(adding_frame_);
     uint32_t index = uint32_t(materials_.size()) - 1;
     leaf_materials_.push_back({&o, index});

@@ -190,8 +190,6 @@ class PreparedScene {
     size_t resident_bytes() const;
     // +UA: the background's filter/transmit count (POV-Ray's alphaBackground).
     bool alpha_background() const { return alpha_background_; }
-    // Some object's interior holds media (rays inside objects then integrate them).
-    bool has_interior_media() const { return interior_media_; }
     void set_alpha_background(bool on) { alpha_background_ = on; }
     void init_context(RayContext& ctx) const {
         ctx.mailbox.resize(kind_.size());
@@ -280,7 +278,6 @@ class PreparedScene {
     std::vector<PovPrim> pov_;
     PatternEnv env_;
     bool alpha_background_ = false;
-    bool interior_media_ = false;
     std::vector<Material> materials_;  // reserved up front: pointers stay valid
     // Per RayUse: whether any material hides from that kind of ray.
     std::array<bool, 4> hides_{};

@@ -819,6 +819,16 @@ bool hollow_ray(const InteriorStack& interiors) {
     return true;
 }
 
+// Whether an interior the ray is inside of has media. (Not whether the box tracing it
+// holds objects with media: the ray may have entered one in another box.)
+bool in_media(const InteriorStack& interiors) {
+    for (int i = 0; i < interiors.size && i < InteriorStack::kCapacity; ++i) {
+        const Material* m = interiors.items[i];
+        if (m && m->interior && !m->interior->media.empty()) return true;
+    }
+    return false;
+}
+
 // The media of the interiors a ray is inside of, in the order it entered them.
 void interior_media(const InteriorStack& interiors, std::vector<const Media*>& list) {
     list.clear();
@@ -936,8 +946,7 @@ FogEffect viewing_media(const PreparedScene& scene, std::span<const Media* const
 FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
                     const MediaShadows& shadows) {
     const Scene& sc = scene.scene();
-    if (sc.fogs.empty() && sc.atmosphere_media.empty() &&
-        (ray.interiors.size == 0 || !scene.has_interior_media()))
+    if (sc.fogs.empty() && sc.atmosphere_media.empty() && !in_media(ray.interiors))
         return {};
     if (!hollow_ray(ray.interiors)) return {};
     // POV-Ray: the interiors' media on the surface's colour, then the atmosphere's,
@@ -1232,8 +1241,8 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
                                           m.interior ? m.interior->caustics : 0.0f, hit,
                                           nullptr, ray);
         }
-        if (!black && state.inside.size > 0 && scene.has_interior_media() &&
-            scene.plan().quality.atmosphere() && hollow_ray(state.inside)) {
+        if (!black && in_media(state.inside) && scene.plan().quality.atmosphere() &&
+            hollow_ray(state.inside)) {
             // The media of every interior the ray is in dim the stretch since the last
             // crossing (whatever the light's media_attenuation says, as POV-Ray).
             thread_local std::vector<const Media*> list;

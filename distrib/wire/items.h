@@ -23,10 +23,12 @@ namespace povwall::distrib {
 // that parsed only its part of the scene numbers its objects as in the whole scene
 // (Scene::object_first_node); a number it does not hold reads as a stand-in that keeps
 // the number (a ray inside a media container that crosses a worker without it keeps the
-// container for the workers that hold it), hollow and without an interior of its own.
+// container for the workers that hold it) and what the parse kept of the object's
+// interior for interior stacks (Scene::left_out_nodes: ior, media, hollow flag).
 class ObjectNumbers {
   public:
-    explicit ObjectNumbers(const Scene& scene) : sparse_(scene.objects_filtered()) {
+    explicit ObjectNumbers(const Scene& scene)
+        : scene_(scene), sparse_(scene.objects_filtered()) {
         int32_t next = 0;
         for (size_t i = 0; i < scene.objects.size(); ++i) {
             if (sparse_) next = int32_t(scene.object_first_node[i]);
@@ -74,9 +76,14 @@ class ObjectNumbers {
         auto& s = stand_ins_[n];
         if (!s) {
             s = std::make_unique<StandIn>();
-            s->object.hollow = true;
             s->material.object = &s->object;
             s->material.interior_id = trace::interior_key(s->object);
+            if (const LeftOutNode* left = scene_.left_out_node(uint32_t(n))) {
+                s->object.hollow = left->hollow;
+                s->material.interior = left->interior;
+                if (left->interior && left->interior->id != 0)
+                    s->material.interior_id = left->interior->id;
+            }
             stand_in_numbers_.emplace(&s->object, n);
         }
         return &s->material;
@@ -89,6 +96,7 @@ class ObjectNumbers {
             for (const Object& ch : c->children) add(ch, next);
         }
     }
+    const Scene& scene_;
     bool sparse_;
     int32_t end_number_ = 0;  // one past the last number of the whole scene
     std::vector<const Object*> objects_;

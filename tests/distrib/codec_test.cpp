@@ -297,6 +297,58 @@ TEST(WireItems, AnInteriorNumberNotHeldReadsAsNoObject) {
     EXPECT_EQ(read[0].ray.trace.interiors.items[1], numbers.material(1));
 }
 
+// A worker that left an object out of its parse reads its number as a stand-in with what
+// an interior stack reads of the object in the whole scene (ior, media, hollow: kept by
+// the parse, Scene::left_out_nodes), and writes it back as the same number.
+TEST(WireItems, StandInsOfLeftOutObjectsKeepTheirInteriors) {
+    const char* text =
+        "#version 3.7;\n"
+        "sphere { 0, 1 interior { ior 1.5 media { absorption 1 } } }\n"
+        "union { box { -1, 1 } sphere { 2, 1 interior { ior 1.2 } } hollow }\n"
+        "merge { box { -1, 1 } sphere { 2, 1 } interior { ior 1.7 } }\n"
+        "sphere { <5, 0, 0>, 1 hollow }\n";
+    parser::ParseOptions keep_last;
+    keep_last.keep_object = [](const Object& o) {
+        auto s = std::get_if<Sphere>(&o.shape);
+        return s && s->centre.x > 0;
+    };
+    const Scene part = parser::parse_scene_text(text, "part.pov", keep_last);
+    const Scene whole = parser::parse_scene_text(text, "whole.pov", {});
+    ASSERT_EQ(part.objects.size(), 1u);
+    const ObjectNumbers numbers(part), all(whole);
+    auto hollow = [](const trace::Material& m) {
+        return m.interior ? m.interior->hollow : m.object->hollow;
+    };
+    auto ior = [](const trace::Material& m) {
+        return m.interior ? m.interior->ior : 1.0f;
+    };
+    auto media = [](const trace::Material& m) {
+        return m.interior ? m.interior->media.size() : size_t(0);
+    };
+    // Nodes: sphere 0; union 1 (2, 3); merge 4 (5, 6); sphere 7 (kept).
+    ASSERT_EQ(all.size(), 8u);
+    for (int32_t n = 0; n < 8; ++n) {
+        SCOPED_TRACE(n);
+        const trace::Material* m = numbers.material(n);
+        const trace::Material* w = all.material(n);
+        ASSERT_TRUE(m && w);
+        EXPECT_EQ(hollow(*m), hollow(*w));
+        EXPECT_EQ(ior(*m), ior(*w));
+        EXPECT_EQ(media(*m), media(*w));
+        // (A default interior's stand-in has an id of its own: no object held here
+        // shares it.)
+        if (m->interior) {
+            EXPECT_EQ(m->interior_id, w->interior_id);
+        }
+        EXPECT_EQ(numbers.number(m), n);
+    }
+    EXPECT_FLOAT_EQ(ior(*numbers.material(0)), 1.5f);
+    EXPECT_EQ(media(*numbers.material(0)), 1u);
+    EXPECT_FLOAT_EQ(ior(*numbers.material(3)), 1.2f);
+    EXPECT_TRUE(hollow(*numbers.material(1)));
+    EXPECT_EQ(numbers.material(8), nullptr);  // past the scene's numbers
+}
+
 TEST(WireItems, RecordsNamingWhatTheReceiverLacksAreRefused) {
     const ObjectNumbers numbers(codec_scene());
     auto refused = [&](int box, const Item& item) {

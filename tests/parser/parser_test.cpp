@@ -619,6 +619,54 @@ light_source { <0, 10, 0> rgb 1 looks_like { sphere { 0, 0.1 } } }
     EXPECT_TRUE(all.objects_filtered());
 }
 
+// What a filtered parse keeps of the objects it leaves out: for each node whose interior
+// is not a default one, or that is hollow, that interior (one for the sharers in a CSG)
+// and the hollow flag, so that a ray counted as inside a left-out object keeps its ior
+// and media (wire/items.h, ObjectNumbers). A forked worker's take_scene_keeping agrees.
+TEST(KeepObjects, LeftOutObjectsKeepWhatInteriorStacksNeed) {
+    const std::string text = R"(
+sphere { <-3, 0, 0>, 1 hollow }
+union { sphere { <3, 0, 0>, 1 } box { <2, -1, -1>, <4, 1, 1> } }
+difference { box { -1, 1 } sphere { 0, 1.2 interior { ior 1.3 } }
+  interior { ior 1.5 media { absorption 1 } } translate <-3, 2, 0> }
+sphere { <3, 2, 0>, 0.5 interior { ior 2 } }
+sphere { <-3, -2, 0>, 0.5 }
+)";
+    auto right = [](const Object& o) {
+        if (auto sp = std::get_if<Sphere>(&o.shape)) return sp->centre.x > 0;
+        return std::holds_alternative<Csg>(o.shape) &&
+               std::get<Csg>(o.shape).kind == CsgKind::Union;
+    };
+    ParseOptions o;
+    o.keep_object = right;
+    const Scene filtered = parse_scene_text(text, "test.pov", o);
+    const Scene taken =
+        take_scene_keeping(parse_scene_text(text, "test.pov", ParseOptions{}), {1, 3});
+    for (const Scene* s : {&filtered, &taken}) {
+        SCOPED_TRACE(s == &filtered ? "filtered parse" : "taken from a whole parse");
+        // Nodes: sphere 0; union 1 (2, 3); difference 4 (5, 6); sphere 7; sphere 8.
+        ASSERT_EQ(s->left_out_nodes.size(), 4u);
+        const LeftOutNode* sphere = s->left_out_node(0);
+        ASSERT_TRUE(sphere);
+        EXPECT_TRUE(sphere->hollow);
+        EXPECT_EQ(sphere->interior, nullptr);  // a default interior
+        const LeftOutNode* difference = s->left_out_node(4);
+        const LeftOutNode* box = s->left_out_node(5);
+        const LeftOutNode* inner = s->left_out_node(6);
+        ASSERT_TRUE(difference && box && inner);
+        ASSERT_TRUE(difference->interior && inner->interior);
+        EXPECT_EQ(box->interior, difference->interior);  // shared, held once
+        EXPECT_FLOAT_EQ(difference->interior->ior, 1.5f);
+        EXPECT_EQ(difference->interior->media.size(), 1u);
+        EXPECT_FALSE(difference->hollow);
+        EXPECT_FLOAT_EQ(inner->interior->ior, 1.3f);
+        EXPECT_EQ(s->left_out_interiors.size(), 2u);
+        // Kept objects and default left-out ones have no record.
+        for (uint32_t n : {1u, 2u, 3u, 7u, 8u})
+            EXPECT_EQ(s->left_out_node(n), nullptr) << n;
+    }
+}
+
 TEST(Prism, PointCountsAndClosureAsPovRay) {
     EXPECT_EQ(error_of("prism { 0, 1, 2, <0,0>, <1,0> }"),
               "test.pov:1:15: error: Prism with linear splines must have at least three "
