@@ -101,7 +101,10 @@ void read(std::string_view name, std::string_view s, RenderOptions::FrameValues&
 }
 template <class T>
 void read(std::string_view name, std::string_view s, std::optional<T>& out) {
-    read(name, s, out.emplace());
+    T value{};  // (not out.emplace(): clang reads a nested struct with member
+                // initialisers as not default-constructible there)
+    read(name, s, value);
+    out = value;
 }
 // Lists and maps: one argument per entry.
 void read(std::string_view, std::string_view s, std::vector<std::string>& out) {
