@@ -63,4 +63,16 @@ Show("sum prod", Sums(4))
 Show("nested sum", Nested(0.5, 0, 0))
 #declare Shadow = function { sum(x, 1, 2, x) }
 Show("shadowed counter", Shadow(7, 0, 0))
+// functions.inc's f_helix1 (internal 25) and f_rounded_box (internal 60).
+#declare Helix = function { internal(25) }
+#declare RBox = function { internal(60) }
+Show("helix circle", Helix(0.7, 0.3, 0.4, 2, 1.5, 0.1, 0.6, 1, 1, 0))
+Show("helix axis", Helix(0, 0.2, 0, 3, 2, 0.1, 0.5, 1, 1, 0))
+Show("helix diamond", Helix(-0.5, 1.1, 0.2, 1, 0.5, 0.2, 0.4, 0.8, 2, 0))
+Show("helix square turned", Helix(0.3, -0.4, -0.6, 2, 1, 0.1, 0.6, 1, 0, 30))
+Show("helix rounded", Helix(0.2, 2.5, 0.9, 4, 3, 0.05, 0.8, 2, 0.5, 15))
+Show("rounded box out", RBox(1.5, 0.2, -2, 0.1, 1, 0.5, 0.8))
+Show("rounded box in", RBox(0.1, 0.2, 0.3, 0.1, 1, 0.5, 0.8))
+Show("rounded box corner", RBox(-1.2, 0.7, 0.9, 0.25, 1, 0.5, 0.8))
+Show("rounded box thin", RBox(0.3, 0.05, 0, 0.5, 1, 0.2, 0.8))
 #debug "END\n"
