@@ -57,8 +57,7 @@ class ShapeQueries final : public ObjectQueries {
         auto p = std::make_unique<Prepared>();
         p->object = object;
         p->scene.objects.push_back(*object);
-        PrepareOptions options;
-        p->prepared = std::make_unique<PreparedScene>(p->scene, nullptr, options);
+        p->prepared = std::make_unique<PreparedScene>(p->scene);
         p->prepared->init_context(p->context);
         cache_.push_front(std::move(p));
         if (cache_.size() > kKept) cache_.pop_back();
