@@ -15,14 +15,14 @@ using povwall::cli::UsageError;
 // Every field away from its default, doubles that need all 17 digits.
 TileWorkerJob populated() {
     TileWorkerJob j;
-    j.scene = "dir with space/a=b.pov";
+    j.name = "dir with space/a=b.pov";
     j.width = 641;
     j.height = 479;
     j.plan = "all";
     j.library_paths = {"/inc", "rel/dir", "x=y"};
     j.declares = {{"Angle", 0.1}, {"N", -3}, {"Tiny", 1e-300}};
     j.language_version = 362;
-    j.format = 'E';
+    j.output_file_type = 'E';
     j.alpha = true;
     j.quality = 5;
     j.antialias = true;
@@ -78,9 +78,9 @@ TEST(TileWorkerJob, UnknownOrMalformedArgumentsAreRefused) {
     std::vector<std::string> argv = TileWorkerJob{}.to_argv();
     EXPECT_THROW(TileWorkerJob::from_argv({}), UsageError);
     EXPECT_THROW(TileWorkerJob::from_argv({"--width=3"}), UsageError);
-    for (const char* bad :
-         {"--colour=3", "--width=3x", "--width=", "--alpha=2", "--clock=abc",
-          "--frame=1,2", "--declare=3", "scene.pov", "--format=EX"}) {
+    for (const char* bad : {"--colour=3", "--width=3x", "--width=", "--alpha=2",
+                            "--clock=abc", "--frame=1,2", "--declare=3", "scene.pov",
+                            "--output_file_type=EX", "--aa-method=2"}) {
         std::vector<std::string> a = argv;
         a.push_back(bad);
         EXPECT_THROW(TileWorkerJob::from_argv(a), UsageError) << bad;

@@ -2,6 +2,7 @@
 // the parts of control messages that carry numbers.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -575,6 +576,56 @@ TEST(WireJob, AMalformedJobThrowsNamingTheField) {
                   j["output_file_type"] = "";
               }).find("output_file_type"),
               std::string::npos);
+}
+
+// The field lists are flattened into one JSON object (and one command line): two fields
+// of one name would overwrite each other.
+TEST(WireJob, EveryFieldOfAJobHasItsOwnName) {
+    std::vector<std::string> names;
+    WorkerJob job;
+    visit_job_fields(job,
+                     [&](const char* name, const auto&) { names.emplace_back(name); });
+    EXPECT_EQ(names.size(), 33u);
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end());
+    EXPECT_EQ(std::count(names.begin(), names.end(), "type"), 0);
+}
+
+// The same field list writes a job as a command line: every field, lists one argument
+// per entry, doubles to the last bit, enums by name.
+TEST(WireJob, AFixedJobReadsBackFromItsCommandLine) {
+    FixedJob job;
+    job.scene = "sphere { 0, 1 } // --x=y";
+    job.name = "dir with space/a=b.pov";
+    job.library_paths = {"/inc", "x=y"};
+    job.declares = {{"A", 0.1 + 0.2}, {"Tiny", 1e-300}};
+    job.language_version = 362;
+    job.output_file_type = 'E';
+    job.max_loop_iterations = std::numeric_limits<uint64_t>::max();
+    job.max_trace_level = 12;
+    job.width = 641, job.height = 479;
+    job.antialias = true;
+    job.results = SpaceOptions::Results::Forward;
+    job.queue = QueuePolicy::Fifo;
+    job.boxes = {3, 1, 2};
+    std::vector<std::string> args;
+    job_to_argv(job, args);
+    EXPECT_NE(std::find(args.begin(), args.end(), "--boxes=3,1,2"), args.end());
+    EXPECT_NE(std::find(args.begin(), args.end(), "--queue=fifo"), args.end());
+    EXPECT_EQ(
+        std::count_if(args.begin(), args.end(),
+                      [](const std::string& a) { return a.starts_with("--declare="); }),
+        2);
+    EXPECT_EQ(std::find(args.begin(), args.end(), "--adc_bailout="), args.end());
+    FixedJob back;
+    job_from_argv(args, 0, back);
+    EXPECT_EQ(back, job);
+    for (const char* bad :
+         {"--boxes=3,1", "--boxes=3,1,2,4", "--queue=lifo", "--width=3x", "--alpha=2",
+          "--declare=3", "--colour=3", "width=3"}) {
+        FixedJob j;
+        EXPECT_THROW(job_from_argv({bad}, 0, j), JobArgumentError) << bad;
+    }
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "distrib/wire/control.h"
 #include "distrib/wire/frame.h"
 #include "distrib/wire/items.h"
+#include "distrib/wire/job.h"
 #include "distrib/wire/pixels.h"
 #include "distrib/wire/samples.h"
 #include "parser/parser.h"
@@ -72,6 +73,13 @@ void control(const Frame& f) {
         } catch (const nlohmann::json::exception&) {
         }
     }
+    // The job messages: a malformed one throws a JSON error naming its field.
+    const nlohmann::json type = j.value("type", nlohmann::json());
+    try {
+        if (type == "job") (void)worker_job_from_json(j);
+        if (type == "frame") (void)frame_job_from_json(j);
+    } catch (const nlohmann::json::exception&) {
+    }
     if (j.contains("reach")) {
         std::vector<Bounds3> reach;
         (void)reach_from_json(j["reach"], 4, reach);
@@ -115,6 +123,13 @@ void write_seeds(const std::string& dir) {
     trace::RenderPlan plan;
     plan.lights.push_back({});
     seeds.push_back(*control_frame({{"type", "frame"}, {"plan", plan_to_json(plan)}}));
+    WorkerJob job;
+    job.fixed.scene = "sphere { 0, 1 }";
+    job.fixed.width = job.fixed.height = 8;
+    job.frame.plan = plan;
+    job.frame.expected_objects = {1};
+    job.workers = {"127.0.0.1:1"};
+    seeds.push_back(*control_frame(to_json(job)));
     seeds.push_back(*control_frame(
         {{"type", "start"}, {"reach", reach_to_json(std::vector<Bounds3>(4))}}));
     for (size_t i = 0; i < seeds.size(); ++i) {
