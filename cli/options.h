@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "parser/parser.h"
 #include "trace/render.h"
 
 namespace povwall::distrib {
@@ -105,6 +106,11 @@ struct RenderOptions {
     // or the render stops with it named (false, --no-recover).
     bool recover = true;
 };
+
+// The parse options `render` uses for `o` (the frame `o.frame`, or the still's clock;
+// #write files go to `output_dir`).
+parser::ParseOptions render_parse_options(const RenderOptions& o,
+                                          const std::string& output_dir);
 
 // The scene as `render` parses it for `o` (no messages, no #write files); throws
 // parser::ParseError.

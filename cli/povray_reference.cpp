@@ -36,19 +36,12 @@ uint64_t fnv1a(uint64_t h, std::string_view bytes) {
 // render is reused only when none of them changed. Empty when the scene does not parse.
 std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cmd,
                       bool& random) {
-    parser::ParseOptions popts;
-    popts.library_paths = o.library_paths;
-    popts.image_width = o.width;
-    popts.image_height = o.height;
-    popts.declares = o.declares;
-    popts.language_version = o.language_version;
-    popts.output_file_type = o.format;
     // Files the scene writes go to a folder of their own, removed after: a scene that
     // reads back what it wrote (fileio.pov) parses as it does in a render.
     std::error_code dir_error;
     const fs::path written = fs::temp_directory_path(dir_error) /
                              ("povwall-cache-key-" + std::to_string(::getpid()) + "-" +
-                              std::to_string(reinterpret_cast<uintptr_t>(&popts)));
+                              std::to_string(reinterpret_cast<uintptr_t>(&o)));
     fs::create_directories(written, dir_error);
     struct RemoveAfter {
         fs::path dir;
@@ -57,25 +50,14 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
             fs::remove_all(dir, ignored);
         }
     } remove_after{written};
-    popts.output_dir = written.string();
-    popts.function_hooks = trace::parse_time_function_hooks();
-    popts.object_queries = trace::parse_time_object_queries();
     // The values of the frame rendered: an animation's first (of the subset), as
     // run_render has them; a scene may read a different set of files in another frame.
-    if (const std::vector<Frame> frames = animation_frames(o); !frames.empty()) {
-        popts.initial_frame = o.animation.initial_frame;
-        popts.final_frame = o.animation.final_frame;
-        popts.initial_clock = o.animation.initial_clock;
-        popts.final_clock = o.animation.final_clock;
-        popts.clock = frames.front().clock;
-        popts.clock_delta = frames.front().clock_delta;
-        popts.frame_number = frames.front().number;
-    } else {
-        popts.initial_frame = popts.final_frame = o.animation.initial_frame;
-        popts.initial_clock = o.animation.initial_clock;
-        popts.final_clock = o.animation.final_clock;
-        popts.clock = o.animation.clock;
-    }
+    RenderOptions first = o;
+    if (const std::vector<Frame> frames = animation_frames(o); !frames.empty())
+        first.frame = RenderOptions::FrameValues{
+            frames.front().number, frames.front().clock, frames.front().clock_delta};
+    parser::ParseOptions popts = render_parse_options(first, written.string());
+    popts.messages = nullptr;
     Scene scene;
     try {
         scene = parser::parse_scene_file(o.scene, popts);
