@@ -11,6 +11,7 @@
 #include "distrib/object_boxes.h"
 #include "distrib/shared_pixel_sums.h"
 #include "trace/camera.h"
+#include "trace/forward_sum.h"
 #include "trace/sample_waves.h"
 #include "trace/shading.h"
 
@@ -327,23 +328,26 @@ Box* BoxHost::go_on_in(Box& current, int dest) {
 }
 
 void BoxHost::add_pixel(int thread, int pixel, const Rgb& c, float transmit) {
+    // Forward contributions go on the sum's grid (trace/forward_sum.h), so the sums are
+    // exact whatever the order they arrive in, and equal the single-process tracer's.
+    // With parents a slot gets one value: its camera ray's colour, as it is.
+    const double v[4] = {parents_ ? double(c.r) : trace::on_sum_grid(c.r),
+                         parents_ ? double(c.g) : trace::on_sum_grid(c.g),
+                         parents_ ? double(c.b) : trace::on_sum_grid(c.b),
+                         parents_ ? double(transmit) : trace::on_sum_grid(transmit)};
     if (shared_sums_) {
-        // Other processes add to the same pixels; the sums stay in double, so the order
-        // of the additions does not show in the image.
+        // Other processes add to the same pixels.
         const size_t log =
             size_t(thread) * SharedPixelSums::kStripes + size_t(pixel) / stripe_pixels_;
         std::vector<PixelAdd>& adds = sum_logs_[log];
-        adds.push_back({uint32_t(pixel), {c.r, c.g, c.b, transmit}});
+        adds.push_back({uint32_t(pixel), {v[0], v[1], v[2], v[3]}});
         if (adds.size() >= kSumLogAdd) add_sum_log(log, adds.size() >= kSumLogWait);
         return;
     }
     PixelSums& sums = accum_[size_t(thread)];
     sums.written[size_t(pixel) >> kSumRunShift] = 1;
     double* a = &sums.values[size_t(pixel) * size_t(sum_channels_)];
-    a[0] += c.r;
-    a[1] += c.g;
-    a[2] += c.b;
-    if (sum_channels_ == 4) a[3] += transmit;
+    for (int k = 0; k < sum_channels_; ++k) a[k] += v[k];
 }
 
 void BoxHost::add_sum_log(size_t log, bool wait) {

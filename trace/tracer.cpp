@@ -3,9 +3,17 @@
 #include <cmath>
 
 namespace povwall::trace {
-Tracer::Tracer(const PreparedScene& scene) : scene_(scene) { scene.init_context(ctx_); }
+Tracer::Tracer(const PreparedScene& scene)
+    : scene_(scene), forward_(!scene.plan().parent_tracking) {
+    scene.init_context(ctx_);
+}
 
-TraceResult Tracer::trace(const TraceRay& ray) { return trace_at(ray, 0); }
+TraceResult Tracer::trace(const TraceRay& ray) {
+    if (!forward_) return trace_at(ray, 0);
+    ForwardSum sum;
+    trace_forward(ray, Rgb(1.0f), 1.0f, 0, sum);
+    return {Rgb(float(sum.r), float(sum.g), float(sum.b)), float(sum.transmit)};
+}
 
 TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
     if (refuse_ray(ray, scene_.scene().settings, counters_)) return {};
@@ -44,6 +52,60 @@ TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
         results_[level][i] = r;
     }
     return combine_children(records_[level], results_[level].data());
+}
+
+// The same steps as BoxHost::process_ray without parents, and the same arithmetic.
+void Tracer::trace_forward(const TraceRay& ray, const Rgb& contribution,
+                           float transmit_contribution, size_t level, ForwardSum& sum) {
+    if (refuse_ray(ray, scene_.scene().settings, counters_)) return;  // black, opaque
+    count_ray(ray, counters_);
+    Hit hit;
+    const Real probe = ray.depth <= tie_levels_ ? tie_tolerance_ : 0;
+    ctx_.tie_tolerance = probe;
+    const bool found = scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_);
+    ctx_.tie_tolerance = 0;
+    if (!found) {
+        const TraceResult m = miss_colour(scene_, ray, &ctx_);
+        sum.add(contribution * m.colour, transmit_contribution * m.transmit);
+        return;
+    }
+    if (probe > 0 && on_pattern_boundary(scene_, hit, probe)) ++ctx_.pattern_ties;
+    if (records_.size() <= level) {
+        records_.resize(level + 1);
+        results_.resize(level + 1);
+    }
+    spawn_children(scene_, ray, hit, records_[level], &ctx_);
+    {
+        // Fog along this ray is affine (add + mul x colour): its added part is this
+        // ray's, its factor goes into every child's contribution.
+        const ShadingRecord& rec = records_[level];
+        sum.add(contribution * (rec.fog.add + rec.fog.mul * rec.local),
+                transmit_contribution * rec.fog.add_transmit);
+    }
+    // records_ may grow in the recursion below: index, don't hold references across
+    // calls.
+    const size_t n = records_[level].children.size();
+    for (size_t i = 0; i < n; ++i) {
+        const ChildRay child = records_[level].children[i];
+        const FogEffect& fog = records_[level].fog;
+        const Rgb child_contribution = contribution * fog.mul * child.coeff;
+        if (child.kind == ChildRay::Kind::Shadow) {
+            Rgb filter(1.0f);
+            if (!child.unoccluded) {
+                ++counters_.shadow;
+                ctx_.tie_tolerance = probe;
+                filter = shadow_transmittance(scene_, child, ctx_);
+                ctx_.tie_tolerance = 0;
+            }
+            sum.add(child_contribution * filter, 0.0f);
+            continue;
+        }
+        const float child_transmit =
+            child.kind == ChildRay::Kind::Transmission
+                ? transmit_contribution * fog.mul_transmit * child.transmit_factor
+                : 0.0f;
+        trace_forward(child.trace, child_contribution, child_transmit, level + 1, sum);
+    }
 }
 
 }  // namespace povwall::trace

@@ -1,9 +1,12 @@
 // The single-process driver: traces a ray by calling spawn_children / combine_children
 // recursively (the distributed back end drives the same two steps through messages).
+// When the shading is linear it sums the rays' forward contributions instead, as the
+// black boxes do without parent tracking.
 #pragma once
 
 #include <algorithm>
 
+#include "trace/forward_sum.h"
 #include "trace/shading.h"
 
 namespace povwall::trace {
@@ -75,8 +78,14 @@ class Tracer {
 
   private:
     TraceResult trace_at(const TraceRay& ray, size_t level);
+    // Linear shading (the plan needs no parent tracking): the ray's share of its camera
+    // sample, `contribution` times what it sees, added into `sum` as black boxes add it
+    // (trace/forward_sum.h), so every driver gives the same bits.
+    void trace_forward(const TraceRay& ray, const Rgb& contribution,
+                       float transmit_contribution, size_t level, ForwardSum& sum);
 
     const PreparedScene& scene_;
+    bool forward_ = false;
     RayContext ctx_;
     TraceCounters counters_;
     Real tie_tolerance_ = 0;
