@@ -474,6 +474,285 @@ double quantum(const double* a, const FunctionHooks&) {
     return (psi * psi - 12.0) * (-0.1);
 }
 
+// ---------------------------------------------------------- algebraic surfaces
+
+// Most algebraic surfaces give their polynomial times the field strength p[0], kept in
+// [-10, 10] (a NaN gives 10, as POV-Ray's std::min/std::max order has it).
+double field(double strength, double polynomial) {
+    return std::min(10., std::max(strength * polynomial, -10.));
+}
+
+// f_bicorn: p[1] scale.
+double bicorn(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    const double s2 = p[1] * p[1];
+    const double q = (x2 + z2 + 2 * p[1] * a[1] - s2);
+    return field(p[0], (y2 * (s2 - (x2 + z2)) - q * q));
+}
+
+// f_bifolia: p[1] scale.
+double bifolia(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double x2 = a[0] * a[0], z2 = a[2] * a[2];
+    const double r2 = x2 + a[1] * a[1] + z2;
+    return field(p[0], -(r2 * r2 - p[1] * (x2 + z2) * a[1]));
+}
+
+// f_boy_surface: p[1] scales the polynomial.
+double boy_surface(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double x = a[0], y = a[1], z = a[2];
+    const double x2 = x * x, y2 = y * y, z2 = z * z;
+    const double w = 1 - z, rho2 = x2 + y2;
+    const double poly =
+        p[1] * (64 * w * w * w * z2 * z - 48 * w * w * z2 * (3 * x2 + 3 * y2 + 2 * z2) +
+                12 * w * z *
+                    (27 * rho2 * rho2 - 24 * z2 * rho2 +
+                     36 * std::sqrt(2.0) * y * z * (y2 - 3 * x2) + 4 * z2 * z2) +
+                (9 * x2 + 9 * y2 - 2 * z2) *
+                    (-81 * rho2 * rho2 - 72 * z2 * rho2 +
+                     108 * std::sqrt(2.0) * x * z * (x2 - 3 * y2) + 4 * z2 * z2));
+    return field(p[0], poly);
+}
+
+double crossed_trough(const double* a, const FunctionHooks&) {
+    return field(a[3], (a[0] * a[0] * a[2] * a[2] - a[1]));
+}
+
+double cubic_saddle(const double* a, const FunctionHooks&) {
+    const double x = a[0], y = a[1];
+    return field(a[3], -(x * x * x - y * y * y - a[2]));
+}
+
+// f_cushion and f_odd: one polynomial, its x2 y2 term written both ways round.
+double cushion(const double* a, const FunctionHooks&) {
+    const double z = a[2];
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = z * z;
+    return field(
+        a[3], (z2 * x2 - z2 * z2 - 2 * z * x2 + 2 * z2 * z + x2 - z2 -
+               (x2 - z) * (x2 - z) - y2 * y2 - 2 * x2 * y2 - y2 * z2 + 2 * y2 * z + y2));
+}
+
+double odd(const double* a, const FunctionHooks&) {
+    const double z = a[2];
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = z * z;
+    return field(
+        a[3], (z2 * x2 - z2 * z2 - 2 * z * x2 + 2 * z2 * z + x2 - z2 -
+               (x2 - z) * (x2 - z) - y2 * y2 - 2 * y2 * x2 - y2 * z2 + 2 * y2 * z + y2));
+}
+
+double devils_curve(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    return field(a[3],
+                 -(x2 * x2 + 2 * x2 * z2 - 0.36 * x2 - y2 * y2 + 0.25 * y2 + z2 * z2));
+}
+
+// f_dupin_cyclid: the inversion (radius p[5]) of a torus of radii p[1], p[2] displaced
+// by p[3] along x and p[4] along y.
+double dupin_cyclid(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double x = a[0], y = a[1];
+    const double x2 = x * x, y2 = y * y, z2 = a[2] * a[2];
+    const double k2 = p[5] * p[5];
+    const double b2 = p[2] * p[2], d2 = p[4] * p[4];
+    const double outer = b2 - d2 - (p[3] + p[1]) * (p[3] + p[1]);
+    const double inner = b2 - d2 - (p[3] - p[1]) * (p[3] - p[1]);
+    const double c2 = p[3] * p[3], a2 = p[1] * p[1];
+    const double poly =
+        -(outer * inner * (x2 * x2 + y2 * y2 + z2 * z2) +
+          2 * (outer * inner * (x2 * y2 + x2 * z2 + y2 * z2)) +
+          2 * k2 *
+              ((-d2 - c2 + b2 + a2) * (2 * x * p[3] + 2 * y * p[4] - k2) -
+               4 * p[4] * b2 * y) *
+              (x2 + y2 + z2) +
+          4 * k2 * k2 * (p[3] * x + p[4] * y) * (-k2 + p[4] * y + p[3] * x) +
+          4 * k2 * k2 * a2 * y2 + k2 * k2 * k2 * k2);
+    return field(p[0], poly);
+}
+
+// f_enneper: |z| below 0.2 taken as 0.2 where z divides. POV-Ray's constants 2/3, 1/4,
+// 8/9 and 2/9 are integer divisions, so 0.
+double enneper(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    const double z = std::fabs(a[2]) < 0.2 ? 0.2 : a[2];
+    const double u = ((y2 - x2) / (2 * z) + 2 * z2 / 9 + 0.0);
+    const double v = ((y2 - x2) / (4 * z) - 0.0 * (x2 + y2 + 0.0 * z2) + 0.0);
+    return field(a[3], -(u * u * u - 6 * v * v));
+}
+
+// f_folium_surface: p[1] neck width, p[2] divergence.
+double folium_surface(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    return field(p[0], ((y2 + z2) * (1 + (p[2] - 4 * p[1]) * a[0]) + x2 * (1 + p[2])));
+}
+
+double glob(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0];
+    return field(a[3],
+                 (0.5 * x2 * x2 * a[0] + 0.5 * x2 * x2 - (a[1] * a[1] + a[2] * a[2])));
+}
+
+double heart(const double* a, const FunctionHooks&) {
+    const double z = a[2];
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = z * z;
+    const double s = (2 * x2 + y2 + z2 - 1);
+    return field(a[3], -(s * s * s - 0.1 * x2 * z2 * z - y2 * z2 * z));
+}
+
+double hunt_surface(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    const double s = (x2 + y2 + z2 - 13), t = (3 * x2 + y2 - 4 * z2 - 12);
+    return field(a[3], -(4 * s * s * s + 27 * t * t));
+}
+
+// The quartic tori: p[1] major radius, p[2] minor radius.
+double hyperbolic_torus(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    const double R2 = p[1] * p[1], r2 = p[2] * p[2];
+    return field(p[0], -(x2 * x2 + 2 * x2 * y2 - 2 * x2 * z2 - 2 * (R2 + r2) * x2 +
+                         y2 * y2 - 2 * y2 * z2 + 2 * (R2 - r2) * y2 + z2 * z2 +
+                         2 * (R2 + r2) * z2 + (R2 - r2) * (R2 - r2)));
+}
+
+double parabolic_torus(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double z = a[2];
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = z * z;
+    const double R2 = p[1] * p[1], r2 = p[2] * p[2];
+    return field(p[0], -(x2 * x2 + 2 * x2 * y2 - 2 * x2 * z - (R2 + r2) * x2 + y2 * y2 -
+                         2 * y2 * z + (R2 - r2) * y2 + z2 + (R2 + r2) * z +
+                         (R2 - r2) * (R2 - r2)));
+}
+
+double torus2(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    const double R2 = p[1] * p[1], r2 = p[2] * p[2];
+    return field(p[0], -(x2 * x2 + y2 * y2 + z2 * z2 + 2 * x2 * y2 + 2 * x2 * z2 +
+                         2 * y2 * z2 - 2 * (R2 + r2) * x2 + 2 * (R2 - r2) * y2 -
+                         2 * (R2 + r2) * z2 + (R2 - r2) * (R2 - r2)));
+}
+
+// f_kampyle_of_eudoxus: p[1] dimple, p[2] closeness.
+double kampyle_of_eudoxus(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double x2 = a[0] * a[0];
+    return field(p[0], -((a[1] * a[1] + a[2] * a[2]) - p[2] * p[2] * x2 * x2 +
+                         p[2] * p[2] * p[1] * p[1] * x2));
+}
+
+double klein_bottle(const double* a, const FunctionHooks&) {
+    const double x = a[0], y = a[1], z = a[2];
+    const double x2 = x * x, y2 = y * y, z2 = z * z;
+    const double lower = (x2 + y2 + z2 - 2 * y - 1);
+    return field(a[3], -((x2 + y2 + z2 + 2 * y - 1) * (lower * lower - 8 * z2) +
+                         16 * x * z * lower));
+}
+
+double kummer_surface_v1(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    return field(a[3], -(x2 * x2 + y2 * y2 + z2 * z2 - x2 - y2 - z2 - x2 * y2 - x2 * z2 -
+                         y2 * z2 + 1));
+}
+
+// f_kummer_surface_v2: p[1] rod width, p[2] divergence, p[3] rod length.
+double kummer_surface_v2(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    return field(p[0],
+                 -(x2 * x2 + y2 * y2 + z2 * z2 + p[1] * (x2 + y2 + z2) +
+                   p[2] * (x2 * y2 + x2 * z2 + y2 * z2) + p[3] * a[0] * a[1] * a[2] - 1));
+}
+
+double lemniscate_of_gerono(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    return field(a[3], -(x2 * x2 - x2 + y2 + z2));
+}
+
+double mitre(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    return field(a[3], -(4 * x2 * (x2 + y2 + z2) - y2 * (1 - y2 - z2)));
+}
+
+double nodal_cubic(const double* a, const FunctionHooks&) {
+    const double y = a[1], z = a[2];
+    return field(a[3], -(y * y * y + z * z * z - 6 * y * z));
+}
+
+// f_ovals_of_cassini: p[1] major radius, p[2] filling, p[3] thickness.
+double ovals_of_cassini(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    const double s = (x2 + y2 + z2 + p[1] * p[1]);
+    return field(p[0], -(s * s - p[3] * p[1] * p[1] * (x2 + z2) - p[2] * p[2]));
+}
+
+double paraboloid(const double* a, const FunctionHooks&) {
+    return field(a[3], -(a[0] * a[0] - a[1] + a[2] * a[2]));
+}
+
+double pillow(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    return field(a[3], (x2 * x2 + y2 * y2 + z2 * z2 - (x2 + y2 + z2)));
+}
+
+// f_piriform: the only one whose clamped field is negated.
+double piriform(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0];
+    return -field(a[3], -((x2 * x2 - x2 * a[0]) + a[1] * a[1] + a[2] * a[2]));
+}
+
+double quartic_paraboloid(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0], z2 = a[2] * a[2];
+    return field(a[3], -(x2 * x2 + z2 * z2 - a[1]));
+}
+
+double quartic_saddle(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0], z2 = a[2] * a[2];
+    return field(a[3], -(x2 * x2 - z2 * z2 - a[1]));
+}
+
+// f_quartic_cylinder: p[1] the egg's diameter, p[2] the tube's width.
+double quartic_cylinder(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double x2 = a[0] * a[0], z2 = a[2] * a[2];
+    return field(p[0], -((x2 + z2) * a[1] * a[1] + p[2] * p[2] * (x2 + z2) -
+                         p[2] * p[2] * p[1] * p[1]));
+}
+
+double steiners_roman(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    return field(a[3], -(x2 * y2 + x2 * z2 + y2 * z2 + a[0] * a[1] * a[2]));
+}
+
+// f_strophoid: p[1] bulb size, p[2] sharpness, p[3] fatness.
+double strophoid(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const double x = a[0], x2 = x * x;
+    const double f2 = p[3] * p[3];
+    return field(
+        p[0], -((p[2] - x) * (a[1] * a[1] + a[2] * a[2]) - f2 * p[1] * x2 - f2 * x2 * x));
+}
+
+double torus_gumdrop(const double* a, const FunctionHooks&) {
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    return field(a[3], -(4 * (x2 * x2 + (y2 + z2) * (y2 + z2)) + 17 * x2 * (y2 + z2) -
+                         20 * (x2 + y2 + z2) + 17));
+}
+
+double umbrella(const double* a, const FunctionHooks&) {
+    return field(a[3], -(a[0] * a[0] - a[1] * a[2] * a[2]));
+}
+
+// f_witch_of_agnesi: p[1] the spike's width.
+double witch_of_agnesi(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    return field(p[0], -(p[1] * (a[1] - 1) + (a[0] * a[0] + a[2] * a[2]) * a[1]));
+}
+
 // --------------------------------------------------------------------------- table
 
 using InternalFn = double (*)(const double* a, const FunctionHooks& hooks);
@@ -488,59 +767,59 @@ constexpr InternalEntry kInternals[] = {
     {5, nullptr},                  // 1 f_algbr_cyl2
     {5, nullptr},                  // 2 f_algbr_cyl3
     {5, nullptr},                  // 3 f_algbr_cyl4
-    {2, nullptr},                  // 4 f_bicorn
-    {2, nullptr},                  // 5 f_bifolia
+    {2, bicorn},                   // 4 f_bicorn
+    {2, bifolia},                  // 5 f_bifolia
     {5, blob},                     // 6 f_blob
     {4, blob2},                    // 7 f_blob2
-    {2, nullptr},                  // 8 f_boy_surface
+    {2, boy_surface},              // 8 f_boy_surface
     {1, comma},                    // 9 f_comma
     {4, cross_ellipsoids},         // 10 f_cross_ellipsoids
-    {1, nullptr},                  // 11 f_crossed_trough
-    {1, nullptr},                  // 12 f_cubic_saddle
-    {1, nullptr},                  // 13 f_cushion
-    {1, nullptr},                  // 14 f_devils_curve
+    {1, crossed_trough},           // 11 f_crossed_trough
+    {1, cubic_saddle},             // 12 f_cubic_saddle
+    {1, cushion},                  // 13 f_cushion
+    {1, devils_curve},             // 14 f_devils_curve
     {6, nullptr},                  // 15 f_devils_curve_2d
-    {6, nullptr},                  // 16 f_dupin_cyclid
+    {6, dupin_cyclid},             // 16 f_dupin_cyclid
     {3, ellipsoid},                // 17 f_ellipsoid
-    {1, nullptr},                  // 18 f_enneper
+    {1, enneper},                  // 18 f_enneper
     {4, flange_cover},             // 19 f_flange_cover
-    {3, nullptr},                  // 20 f_folium_surface
+    {3, folium_surface},           // 20 f_folium_surface
     {6, nullptr},                  // 21 f_folium_surface_2d
-    {1, nullptr},                  // 22 f_glob
-    {1, nullptr},                  // 23 f_heart
+    {1, glob},                     // 22 f_glob
+    {1, heart},                    // 23 f_heart
     {10, helical_torus},           // 24 f_helical_torus
     {7, helix1},                   // 25 f_helix1
     {7, helix2},                   // 26 f_helix2
     {1, hex_x},                    // 27 f_hex_x
     {1, hex_y},                    // 28 f_hex_y
     {6, hetero_mf},                // 29 f_hetero_mf
-    {1, nullptr},                  // 30 f_hunt_surface
-    {3, nullptr},                  // 31 f_hyperbolic_torus
+    {1, hunt_surface},             // 30 f_hunt_surface
+    {3, hyperbolic_torus},         // 31 f_hyperbolic_torus
     {4, isect_ellipsoids},         // 32 f_isect_ellipsoids
-    {3, nullptr},                  // 33 f_kampyle_of_eudoxus
+    {3, kampyle_of_eudoxus},       // 33 f_kampyle_of_eudoxus
     {6, nullptr},                  // 34 f_kampyle_of_eudoxus_2d
-    {1, nullptr},                  // 35 f_klein_bottle
-    {1, nullptr},                  // 36 f_kummer_surface_v1
-    {4, nullptr},                  // 37 f_kummer_surface_v2
-    {1, nullptr},                  // 38 f_lemniscate_of_gerono
+    {1, klein_bottle},             // 35 f_klein_bottle
+    {1, kummer_surface_v1},        // 36 f_kummer_surface_v1
+    {4, kummer_surface_v2},        // 37 f_kummer_surface_v2
+    {1, lemniscate_of_gerono},     // 38 f_lemniscate_of_gerono
     {6, nullptr},                  // 39 f_lemniscate_of_gerono_2d
     {5, mesh1},                    // 40 f_mesh1
-    {1, nullptr},                  // 41 f_mitre
-    {1, nullptr},                  // 42 f_nodal_cubic
-    {1, nullptr},                  // 43 f_odd
-    {4, nullptr},                  // 44 f_ovals_of_cassini
-    {1, nullptr},                  // 45 f_paraboloid
-    {3, nullptr},                  // 46 f_parabolic_torus
+    {1, mitre},                    // 41 f_mitre
+    {1, nodal_cubic},              // 42 f_nodal_cubic
+    {1, odd},                      // 43 f_odd
+    {4, ovals_of_cassini},         // 44 f_ovals_of_cassini
+    {1, paraboloid},               // 45 f_paraboloid
+    {3, parabolic_torus},          // 46 f_parabolic_torus
     {0, ph},                       // 47 f_ph
-    {1, nullptr},                  // 48 f_pillow
-    {1, nullptr},                  // 49 f_piriform
+    {1, pillow},                   // 48 f_pillow
+    {1, piriform},                 // 49 f_piriform
     {7, nullptr},                  // 50 f_piriform_2d
     {5, poly4},                    // 51 f_poly4
     {6, polytubes},                // 52 f_polytubes
     {1, quantum},                  // 53 f_quantum
-    {1, nullptr},                  // 54 f_quartic_paraboloid
-    {1, nullptr},                  // 55 f_quartic_saddle
-    {3, nullptr},                  // 56 f_quartic_cylinder
+    {1, quartic_paraboloid},       // 54 f_quartic_paraboloid
+    {1, quartic_saddle},           // 55 f_quartic_saddle
+    {3, quartic_cylinder},         // 56 f_quartic_cylinder
     {0, r},                        // 57 f_r
     {6, ridge},                    // 58 f_ridge
     {6, ridged_mf},                // 59 f_ridged_mf
@@ -549,16 +828,16 @@ constexpr InternalEntry kInternals[] = {
     {5, spikes},                   // 62 f_spikes
     {4, spikes_2d},                // 63 f_spikes_2d
     {6, spiral},                   // 64 f_spiral
-    {1, nullptr},                  // 65 f_steiners_roman
-    {4, nullptr},                  // 66 f_strophoid
+    {1, steiners_roman},           // 65 f_steiners_roman
+    {4, strophoid},                // 66 f_strophoid
     {7, nullptr},                  // 67 f_strophoid_2d
     {2, superellipsoid},           // 68 f_superellipsoid
     {0, th},                       // 69 f_th
     {2, torus},                    // 70 f_torus
-    {3, nullptr},                  // 71 f_torus2
-    {1, nullptr},                  // 72 f_torus_gumdrop
-    {1, nullptr},                  // 73 f_umbrella
-    {2, nullptr},                  // 74 f_witch_of_agnesi
+    {3, torus2},                   // 71 f_torus2
+    {1, torus_gumdrop},            // 72 f_torus_gumdrop
+    {1, umbrella},                 // 73 f_umbrella
+    {2, witch_of_agnesi},          // 74 f_witch_of_agnesi
     {6, nullptr},                  // 75 f_witch_of_agnesi_2d
     {0, noise3d},                  // 76 f_noise3d
     {0, pattern_without_pattern},  // 77 f_pattern
