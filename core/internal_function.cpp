@@ -4,11 +4,12 @@
 // isosurfaces and the function pattern must see exactly POV-Ray's values. `a` holds x, y,
 // z and then the parameters; `p` below is the parameters alone (functions.inc's P0, P1,
 // ...).
+#include "core/internal_function.h"
+
 #include <algorithm>
 #include <climits>
 #include <cmath>
 
-#include "core/internal_function.h"
 #include "core/noise.h"
 
 namespace povwall {
@@ -753,6 +754,119 @@ double witch_of_agnesi(const double* a, const FunctionHooks&) {
     return field(p[0], -(p[1] * (a[1] - 1) + (a[0] * a[0] + a[2] * a[2]) * a[1]));
 }
 
+// ----------------------------------------------------------------- the 2d curves
+
+// A 2d curve in x and y, as POV-Ray's _2d functions and f_algbr_cyl* take the point: when
+// the "SOR switch" is on (> 0) the curve is revolved around y: x becomes the distance
+// from the y axis less the SOR offset, then (x, y) is turned by the SOR angle (degrees).
+struct CurvePoint {
+    double x, y, x2, y2;
+};
+CurvePoint curve_point(const double* a, double sor_switch, double sor_offset,
+                       double sor_degrees) {
+    CurvePoint c{a[0], a[1], a[0] * a[0], a[1] * a[1]};
+    if (sor_switch > 0) {
+        const double radial = std::sqrt(c.x2 + a[2] * a[2]) - sor_offset;
+        const double angle = sor_degrees * kRadiansPerDegree;
+        if (angle != 0) {
+            c.x = radial * std::cos(angle) - c.y * std::sin(angle);
+            c.y = radial * std::sin(angle) + c.y * std::cos(angle);
+        } else {
+            c.x = radial;
+        }
+        c.x2 = c.x * c.x;
+        c.y2 = c.y * c.y;
+    }
+    return c;
+}
+
+// The f_algbr_cyl* fields: the polynomial times p[0], kept in [-p[1], p[1]].
+double limited(const double* p, double polynomial) {
+    return std::min(p[1], std::max(p[0] * polynomial, -p[1]));
+}
+
+// f_algbr_cyl1 mirrors the curve in x after squaring it, and negates its field.
+double algbr_cyl1(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const CurvePoint c = curve_point(a, p[2], p[3], p[4]);
+    return -limited(p, -(c.x2 * std::fabs(c.x) - c.x2 + c.y2));
+}
+
+double algbr_cyl2(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const CurvePoint c = curve_point(a, p[2], p[3], p[4]);
+    const double x2 = c.x2, y2 = c.y2, y = c.y;
+    return limited(p, -(2 * x2 * x2 - 3 * x2 * y + y2 - 2 * y2 * y + y2 * y2));
+}
+
+double algbr_cyl3(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const CurvePoint c = curve_point(a, p[2], p[3], p[4]);
+    const double x2 = c.x2, y2 = c.y2;
+    return limited(p, -(x2 * x2 + x2 * y2 - 2 * x2 * c.y - c.x * y2 + y2));
+}
+
+double algbr_cyl4(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const CurvePoint c = curve_point(a, p[2], p[3], p[4]);
+    const double x2 = c.x2, y2 = c.y2;
+    return limited(p, -(x2 * x2 + y2 * y2 + 2 * x2 * y2 + 3 * x2 * c.y - y2 * c.y));
+}
+
+// f_devils_curve_2d: p[1] x factor, p[2] y factor; SOR p[3], p[4], p[5].
+double devils_curve_2d(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const CurvePoint c = curve_point(a, p[3], p[4], p[5]);
+    return field(p[0], -(c.x2 * (c.x2 - p[1] * p[1]) - c.y2 * (c.y2 - p[2] * p[2])));
+}
+
+// f_folium_surface_2d: p[1] neck width, p[2] divergence; SOR p[3], p[4], p[5].
+double folium_surface_2d(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const CurvePoint c = curve_point(a, p[3], p[4], p[5]);
+    return field(p[0], -(c.y2 * (1 + (p[2] - 4 * p[1]) * c.x) + c.x2 * (1 + p[2])));
+}
+
+// f_kampyle_of_eudoxus_2d: p[1] dimple, p[2] closeness; SOR p[3], p[4], p[5]. POV-Ray
+// multiplies by p[1] p[2] where the 3d surface has p[1] p[1].
+double kampyle_of_eudoxus_2d(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const CurvePoint c = curve_point(a, p[3], p[4], p[5]);
+    return field(p[0],
+                 -(c.y2 - p[2] * p[2] * c.x2 * c.x2 + p[2] * p[2] * p[1] * p[2] * c.x2));
+}
+
+// f_lemniscate_of_gerono_2d: p[1] size, p[2] width; SOR p[3], p[4], p[5].
+double lemniscate_of_gerono_2d(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const CurvePoint c = curve_point(a, p[3], p[4], p[5]);
+    return field(p[0],
+                 -(c.y2 - p[2] * p[2] * p[1] * p[1] * c.x2 + p[2] * p[2] * c.x2 * c.x2));
+}
+
+// f_piriform_2d: p[1], p[2] size factors, p[3] fatness; SOR p[4], p[5], p[6].
+double piriform_2d(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const CurvePoint c = curve_point(a, p[4], p[5], p[6]);
+    return field(p[0], -(c.y * c.y - p[1] * p[3] * p[3] * c.x2 * c.x -
+                         p[2] * p[3] * p[3] * c.x2 * c.x2));
+}
+
+// f_strophoid_2d: p[1] bulb size, p[2] sharpness, p[3] fatness; SOR p[4], p[5], p[6].
+double strophoid_2d(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const CurvePoint c = curve_point(a, p[4], p[5], p[6]);
+    const double f2 = p[3] * p[3];
+    return field(p[0], -((p[2] - c.x) * c.y2 - f2 * p[1] * c.x2 - f2 * c.x2 * c.x));
+}
+
+// f_witch_of_agnesi_2d: p[1] the spike's size, p[2] its height; SOR p[3], p[4], p[5].
+double witch_of_agnesi_2d(const double* a, const FunctionHooks&) {
+    const double* p = a + 3;
+    const CurvePoint c = curve_point(a, p[3], p[4], p[5]);
+    return field(p[0], -(p[1] * p[1] * c.y + c.x2 * c.y - p[2]));
+}
+
 // --------------------------------------------------------------------------- table
 
 using InternalFn = double (*)(const double* a, const FunctionHooks& hooks);
@@ -763,10 +877,10 @@ struct InternalEntry {
 
 // Indexed by N of internal(N).
 constexpr InternalEntry kInternals[] = {
-    {5, nullptr},                  // 0 f_algbr_cyl1
-    {5, nullptr},                  // 1 f_algbr_cyl2
-    {5, nullptr},                  // 2 f_algbr_cyl3
-    {5, nullptr},                  // 3 f_algbr_cyl4
+    {5, algbr_cyl1},               // 0 f_algbr_cyl1
+    {5, algbr_cyl2},               // 1 f_algbr_cyl2
+    {5, algbr_cyl3},               // 2 f_algbr_cyl3
+    {5, algbr_cyl4},               // 3 f_algbr_cyl4
     {2, bicorn},                   // 4 f_bicorn
     {2, bifolia},                  // 5 f_bifolia
     {5, blob},                     // 6 f_blob
@@ -778,13 +892,13 @@ constexpr InternalEntry kInternals[] = {
     {1, cubic_saddle},             // 12 f_cubic_saddle
     {1, cushion},                  // 13 f_cushion
     {1, devils_curve},             // 14 f_devils_curve
-    {6, nullptr},                  // 15 f_devils_curve_2d
+    {6, devils_curve_2d},          // 15 f_devils_curve_2d
     {6, dupin_cyclid},             // 16 f_dupin_cyclid
     {3, ellipsoid},                // 17 f_ellipsoid
     {1, enneper},                  // 18 f_enneper
     {4, flange_cover},             // 19 f_flange_cover
     {3, folium_surface},           // 20 f_folium_surface
-    {6, nullptr},                  // 21 f_folium_surface_2d
+    {6, folium_surface_2d},        // 21 f_folium_surface_2d
     {1, glob},                     // 22 f_glob
     {1, heart},                    // 23 f_heart
     {10, helical_torus},           // 24 f_helical_torus
@@ -797,12 +911,12 @@ constexpr InternalEntry kInternals[] = {
     {3, hyperbolic_torus},         // 31 f_hyperbolic_torus
     {4, isect_ellipsoids},         // 32 f_isect_ellipsoids
     {3, kampyle_of_eudoxus},       // 33 f_kampyle_of_eudoxus
-    {6, nullptr},                  // 34 f_kampyle_of_eudoxus_2d
+    {6, kampyle_of_eudoxus_2d},    // 34 f_kampyle_of_eudoxus_2d
     {1, klein_bottle},             // 35 f_klein_bottle
     {1, kummer_surface_v1},        // 36 f_kummer_surface_v1
     {4, kummer_surface_v2},        // 37 f_kummer_surface_v2
     {1, lemniscate_of_gerono},     // 38 f_lemniscate_of_gerono
-    {6, nullptr},                  // 39 f_lemniscate_of_gerono_2d
+    {6, lemniscate_of_gerono_2d},  // 39 f_lemniscate_of_gerono_2d
     {5, mesh1},                    // 40 f_mesh1
     {1, mitre},                    // 41 f_mitre
     {1, nodal_cubic},              // 42 f_nodal_cubic
@@ -813,7 +927,7 @@ constexpr InternalEntry kInternals[] = {
     {0, ph},                       // 47 f_ph
     {1, pillow},                   // 48 f_pillow
     {1, piriform},                 // 49 f_piriform
-    {7, nullptr},                  // 50 f_piriform_2d
+    {7, piriform_2d},              // 50 f_piriform_2d
     {5, poly4},                    // 51 f_poly4
     {6, polytubes},                // 52 f_polytubes
     {1, quantum},                  // 53 f_quantum
@@ -830,7 +944,7 @@ constexpr InternalEntry kInternals[] = {
     {6, spiral},                   // 64 f_spiral
     {1, steiners_roman},           // 65 f_steiners_roman
     {4, strophoid},                // 66 f_strophoid
-    {7, nullptr},                  // 67 f_strophoid_2d
+    {7, strophoid_2d},             // 67 f_strophoid_2d
     {2, superellipsoid},           // 68 f_superellipsoid
     {0, th},                       // 69 f_th
     {2, torus},                    // 70 f_torus
@@ -838,7 +952,7 @@ constexpr InternalEntry kInternals[] = {
     {1, torus_gumdrop},            // 72 f_torus_gumdrop
     {1, umbrella},                 // 73 f_umbrella
     {2, witch_of_agnesi},          // 74 f_witch_of_agnesi
-    {6, nullptr},                  // 75 f_witch_of_agnesi_2d
+    {6, witch_of_agnesi_2d},       // 75 f_witch_of_agnesi_2d
     {0, noise3d},                  // 76 f_noise3d
     {0, pattern_without_pattern},  // 77 f_pattern
     {1, noise_generator},          // 78 f_noise_generator
