@@ -4,7 +4,7 @@
 #include <climits>
 #include <cmath>
 
-#include "core/noise.h"
+#include "core/internal_function.h"
 
 namespace povwall {
 
@@ -52,113 +52,7 @@ double int32_cast(double v) {
     return double(int(v));
 }
 
-enum Internal {
-    kHelix1 = 25,
-    kPh = 47,
-    kR = 57,
-    kRoundedBox = 60,
-    kSphere = 61,
-    kTh = 69,
-    kNoise3d = 76,
-    kNoiseGen = 78
-};
-
-// functions.inc's f_helix1: `a[3]` helices of minor radius a[5] wound around a torus-like
-// core of major radius a[6] along y; a[4] turns per unit of y, a[7] stretches the
-// section along the winding, a[8] its shape (1 circle, 2 diamond, other superellipse
-// exponents, 0 a square) turned by a[9] degrees. POV-Ray's sums in its order.
-double helix1(const double* a) {
-    const double x = a[0], y = a[1], z = a[2];
-    const double count = a[3], frequency = a[4], minor = a[5], major = a[6];
-    const double stretch = a[7], section = a[8], turn = a[9];
-    const double r = std::sqrt(x * x + z * z);
-    // The axis itself: atan2 of a point just off it.
-    double angle = std::atan2(z, x == 0 && z == 0 ? 1e-6 : x);
-    angle = std::fmod(angle * count + y * frequency * count, 2 * M_PI);
-    if (angle < 0) angle += 2 * M_PI;
-    double across = (angle - M_PI) / stretch / (frequency * count);
-    double out = r - major;
-    double dist;
-    if (section == 1) {
-        dist = std::sqrt(out * out + across * across);
-    } else {
-        if (turn != 0) {
-            const double rad = turn * 0.01745329251994329576;  // M_PI_180
-            const double c = std::cos(rad), s = std::sin(rad);
-            const double turned = out * c - across * s;
-            across = out * s + across * c;
-            out = turned;
-        }
-        if (section != 0) {
-            const double e = 2. / section;
-            dist = std::pow(std::pow(std::fabs(out), e) + std::pow(std::fabs(across), e),
-                            section * .5);
-        } else {
-            dist = std::max(std::fabs(out), std::fabs(across));
-        }
-    }
-    return -minor + std::min(major + r, dist);
-}
-
-// functions.inc's f_rounded_box: the distance outside a box of half sizes a[4], a[5],
-// a[6] whose edges are rounded with radius a[3] (less 1e-6, as POV-Ray).
-double rounded_box(const double* a) {
-    const double radius = a[3];
-    double sum = 0;
-    for (int k = 0; k < 3; ++k) {
-        const double inner = a[4 + k] - radius;  // the rounding's centre, each side
-        const double above = a[k] < inner ? 0 : a[k] - inner;
-        const double below = a[k] > -inner ? 0 : -inner - a[k];
-        const double d = std::max(below, above);
-        sum = k == 0 ? d * d : sum + d * d;
-    }
-    return -radius + std::sqrt(sum) - 1e-6;
-}
-
-double internal_function(int n, const double* a, const FunctionHooks& hooks) {
-    const double x = a[0], y = a[1], z = a[2];
-    switch (n) {
-        case kHelix1:
-            return helix1(a);
-        case kRoundedBox:
-            return rounded_box(a);
-        case kPh:
-            return std::atan2(std::sqrt(x * x + z * z), y);
-        case kR:
-            return std::sqrt(x * x + y * y + z * z);
-        case kSphere:
-            return std::sqrt(x * x + y * y + z * z) - a[3];
-        case kTh:
-            return std::atan2(x, z);
-        case kNoise3d:
-            return noise(Vector3(x, y, z), hooks.noise_generator);
-        case kNoiseGen:
-            return noise(Vector3(x, y, z), int(a[3]) & 3);
-        default:
-            return 0;
-    }
-}
-
 }  // namespace
-
-int internal_extra(int n) {
-    switch (n) {
-        case kPh:
-        case kR:
-        case kTh:
-        case kNoise3d:
-            return 0;
-        case kSphere:
-        case kNoiseGen:
-            return 1;
-        case kRoundedBox:
-            return 4;
-        case kHelix1:
-            return 7;
-        default:
-            return -1;
-    }
-}
 
 double evaluate_function(const FunctionProgram& f, const double* args,
                          const FunctionHooks& hooks) {

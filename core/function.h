@@ -114,8 +114,8 @@ constexpr int kMaxFunctionParameters = 56;  // POV-Ray's limit
 // Functions calling functions: each level is a C++ frame of about 1.2 KB.
 constexpr int kMaxFunctionCallDepth = 1000;
 
-// functions.inc's internal(n) that povwall has: how many parameters after x, y, z;
-// -1 for the others.
+// functions.inc's internal(n) (core/internal_function.h): how many parameters after x,
+// y, z; -1 for an n POV-Ray 3.7 does not have (it has 0 ... 78).
 int internal_extra(int n);
 
 // Runs `f` (a float function) on parameter_count() arguments.

@@ -72,7 +72,7 @@ Tables build_tables() {
             }
             s = dot(v, v);
         } while (s > 1.0 || s < 1.0e-5);
-        t.grad[i] = v / std::sqrt(s);
+        t.grad[i] = v * (1.0 / std::sqrt(s));  // POV-Ray scales by the reciprocal
     }
     for (int i = 0; i < kPerlinEntries; ++i) t.perm[i] = i;
     for (int i = kPerlinEntries; i > 0; i -= 2) {

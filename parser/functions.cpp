@@ -6,9 +6,9 @@
 // identifiers (their value when the function is declared), pi and the frame values, the
 // float built-ins (int and div cast to a 32-bit int), min/max of two or more arguments,
 // select with 3 or 4, other user functions (a vector function needs a member:
-// `F(x).y`), sum and prod, functions.inc's internal(N) that povwall has, and POV-Ray's
-// operators with
-// its precedence: |, &, comparisons, + -, * /, one unary sign. No ?: and no !.
+// `F(x).y`), sum and prod, functions.inc's internal(N) (all of POV-Ray's 0 ... 78), and
+// POV-Ray's operators with its precedence: |, &, comparisons, + -, * /, one unary sign.
+// No ?: and no !.
 #include <algorithm>
 #include <cmath>
 
@@ -389,8 +389,8 @@ std::shared_ptr<const FunctionProgram> Interpreter::parse_function_block(
         const int n = parse_int();
         expect_punct(')', "after internal's number");
         const int extra = internal_extra(n);
-        if (extra < 0)
-            unsupported(at, "function { internal(" + std::to_string(n) + ") }");
+        if (extra < 0)  // POV-Ray 3.7 has internal(0) ... internal(78)
+            error(at, "Function 'internal(" + std::to_string(n) + ")' does not exist.");
         // The internal function's own parameters, whatever list was written.
         f->parameter_names = {"x", "y", "z"};
         for (int i = 0; i < extra; ++i)

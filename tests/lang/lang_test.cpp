@@ -53,8 +53,9 @@ TEST_P(LangFixture, DebugOutputMatchesPovRay) {
 
 INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
                          ::testing::Values("expressions", "directives", "colours",
-                                           "splines", "functions", "fileio", "keywords",
-                                           "text_extents", "object_queries"));
+                                           "splines", "functions", "functions_internal",
+                                           "fileio", "keywords", "text_extents",
+                                           "object_queries"));
 
 }  // namespace
 }  // namespace povwall::parser
