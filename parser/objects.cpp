@@ -120,16 +120,20 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
     // POV-Ray recomputes a julia_fractal's box at each transform, which clears its
     // inverse flag.
     if (std::holds_alternative<JuliaFractal>(obj.shape)) obj.inverse = false;
-    transform_textures(obj.texture, t);
-    if (obj.interior_texture.allocated())
-        transform_textures(obj.interior_texture.edit(), t);
+    // Under uv_mapping the textures are fixed to the surface coordinates.
+    if (!obj.uv_mapping) {
+        transform_textures(obj.texture, t);
+        if (obj.interior_texture.allocated())
+            transform_textures(obj.interior_texture.edit(), t);
+    }
     transform_interior(obj.interior, t);
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
         for (Object& child : csg->children) apply_transform(child, t, step);
         for (Light& l : csg->lights) transform_light(l, t, step);
         if (csg->pov_box) move_pov_box(*csg->pov_box, t);
     }
-    if (auto mesh = std::get_if<Mesh>(&obj.shape)) {  // per-face textures move too
+    if (auto mesh = std::get_if<Mesh>(&obj.shape); mesh && !obj.uv_mapping) {
+        // per-face textures move too
         for (LayeredTexture& tex : mesh->textures) transform_textures(tex, t);
     }
     if (auto blob = std::get_if<Blob>(&obj.shape)) {  // and a blob's component textures
@@ -429,7 +433,10 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
                   "cutaway_textures can only be used with intersection and difference");
         unsupported(t, "cutaway_textures");
     } else if (w == "uv_mapping") {
-        unsupported(t, "uv_mapping");
+        // Textures given after it are evaluated at the surface coordinates and stay
+        // where the transforms leave the object (POV-Ray's UV_FLAG).
+        if (!obj.texture.empty()) error(t, "uv_mapping must be specified before texture");
+        obj.uv_mapping = true;
     } else {
         return false;
     }
@@ -780,11 +787,21 @@ void Interpreter::finish_object(Object& obj) {
 void Interpreter::place_object(Object& obj, const Object* parent,
                                std::unordered_map<uint32_t, Interior>& shared) {
     if (parent) {
-        if (obj.texture.empty()) obj.texture = parent->texture;
+        // uv_mapping comes down with the textures it applies to (POV-Ray's
+        // Post_Process).
+        if (obj.texture.empty()) {
+            obj.texture = parent->texture;
+            obj.uv_mapping |= parent->uv_mapping;
+        }
         // The interior texture comes down on its own, whether the child has a texture
         // of its own or not (POV-Ray's Post_Process).
-        if (obj.interior_texture->empty() && !parent->interior_texture->empty())
-            obj.interior_texture = parent->interior_texture;
+        if (obj.interior_texture->empty()) {
+            if (!parent->interior_texture->empty())
+                obj.interior_texture = parent->interior_texture;
+            // (POV-Ray passes the flag on here whether the parent has an interior
+            // texture or not: a child with a texture of its own gets it too.)
+            obj.uv_mapping |= parent->uv_mapping;
+        }
         if (!obj.interior) obj.interior = *parent->interior;
         obj.no_shadow |= parent->no_shadow;
         obj.no_image |= parent->no_image;
