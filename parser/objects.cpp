@@ -26,6 +26,42 @@ void transform_normal(Normal& n, const Transform& t) {
     transform_pattern(n.pattern.edit(), t);
 }
 
+bool pigment_uses_uv(const Pigment& p) {
+    if (p.pattern->kind == PatternKind::UvMapping) return true;
+    for (const Pigment& sub : p.maps->list)
+        if (pigment_uses_uv(sub)) return true;
+    return false;
+}
+
+bool textures_use_uv(const LayeredTexture& layers) {
+    for (const Texture& t : layers) {
+        if (pigment_uses_uv(t.pigment)) return true;
+        if (t.normal && t.normal->pattern->kind == PatternKind::UvMapping) return true;
+        if (t.map_pattern && t.map_pattern->kind == PatternKind::UvMapping) return true;
+        for (const LayeredTexture& e : t.map->entries)
+            if (textures_use_uv(e)) return true;
+    }
+    return false;
+}
+
+// POV-Ray moves and scales a box's corners until its first turn or matrix, so a
+// mirroring scale before that flips its surface coordinates and one after it does not;
+// a turned, mirrored box does not say which it had (a box only moved and scaled is
+// mapped exactly, trace/uv_mapping.cpp).
+bool turned_mirrored_uv_box(const Object& obj) {
+    if (!std::holds_alternative<Box>(obj.shape) || obj.transform.is_identity())
+        return false;
+    const Matrix34& m = obj.transform.forward();
+    const bool diagonal = m.m[0][1] == 0 && m.m[0][2] == 0 && m.m[1][0] == 0 &&
+                          m.m[1][2] == 0 && m.m[2][0] == 0 && m.m[2][1] == 0;
+    const Real det = m.m[0][0] * (m.m[1][1] * m.m[2][2] - m.m[1][2] * m.m[2][1]) -
+                     m.m[0][1] * (m.m[1][0] * m.m[2][2] - m.m[1][2] * m.m[2][0]) +
+                     m.m[0][2] * (m.m[1][0] * m.m[2][1] - m.m[1][1] * m.m[2][0]);
+    if (diagonal || det >= 0) return false;
+    return obj.uv_mapping || textures_use_uv(obj.texture) ||
+           (obj.interior_texture.allocated() && textures_use_uv(*obj.interior_texture));
+}
+
 }  // namespace
 
 // Pigment and normal map/list entries are evaluated at the outer pattern's point (as
@@ -748,6 +784,8 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         return false;
     }
     parse_object_modifiers(out);
+    if (turned_mirrored_uv_box(out))
+        unsupported(t, "uv_mapping on a box both mirrored and turned");
     check_algebraic_bounds(out, t);
     if (pending_height_field) finish_height_field(out, std::move(*pending_height_field));
     // Its set-up after the modifiers clears the inverse flag (as a transform does).

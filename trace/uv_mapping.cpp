@@ -7,6 +7,7 @@
 
 #include "trace/pattern_internal.h"
 #include "trace/shapes/common.h"
+#include "trace/shapes/sor.h"
 
 namespace povwall::trace {
 namespace {
@@ -91,9 +92,9 @@ Point3 sor_uv(const Sor& s, const Point3& p, const Hit& hit) {
     const SorSpline& sp = *s.spline;
     const Real radius = std::sqrt(p.x * p.x + p.z * p.z);
     Real v;
-    if (hit.face == -1) {  // base cap: 0 at the rim, -1 on the axis
+    if (hit.face == kSorBase) {  // base cap: 0 at the rim, -1 on the axis
         v = radius / std::sqrt(sp.base_radius2) - 1;
-    } else if (hit.face == -2) {  // top cap: 1 at the rim, 2 on the axis
+    } else if (hit.face == kSorCap) {  // top cap: 1 at the rim, 2 on the axis
         v = -radius / std::sqrt(sp.cap_radius2) + 2;
     } else {
         const BoundingCylinders::Segment& bc = sp.cylinders.segments[size_t(hit.face)];

@@ -351,8 +351,9 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
 // with the pattern, not with the scene's objects a black box keeps): every mode gives
 // the one-process image.
 TEST(Tcp, TextureSpacePatternsInEveryModeEqualOneProcess) {
-    for (const char* name : {"uv_mapping_image", "uv_mapping_patterns", "uv_mapping_mesh",
-                             "material_map", "image_pattern", "object_pattern"}) {
+    for (const char* name :
+         {"uv_mapping_image", "uv_mapping_patterns", "uv_mapping_mesh",
+          "uv_mapping_mirrored", "material_map", "image_pattern", "object_pattern"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(scene, "-W 40 -H 30",

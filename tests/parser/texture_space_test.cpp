@@ -82,6 +82,20 @@ TEST(UvMapping, InAPigmentFunctionOrADensityIsAnError) {
     EXPECT_NE(e->message().find("uv_mapping"), std::string::npos);
 }
 
+TEST(UvMapping, TurnedMirroredBoxIsRefused) {
+    // POV-Ray's coordinates depend on whether the mirror came before the first turn.
+    const auto e = error_of(
+        "box { -1, 1 pigment { uv_mapping checker } scale <-1, 1, 1> rotate 30 * y }");
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->kind(), ParseError::Kind::Unsupported);
+    EXPECT_EQ(e->message(), "unsupported: uv_mapping on a box both mirrored and turned");
+    EXPECT_EQ(e->loc().column, 1);
+    // Mirrored only, or turned only: mapped.
+    EXPECT_FALSE(
+        error_of("box { -1, 1 pigment { uv_mapping checker } scale <-1, 1, 1> }"));
+    EXPECT_FALSE(error_of("box { -1, 1 uv_mapping pigment { checker } rotate 30 * y }"));
+}
+
 TEST(MeshUv, Mesh2IndicesAndDefaults) {
     Scene s = parse(
         "mesh2 { vertex_vectors { 3, 0, x, y } uv_vectors { 2, <0, 0>, <1, 0.5> } "
