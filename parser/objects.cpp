@@ -62,6 +62,15 @@ bool turned_mirrored_uv_box(const Object& obj) {
            (obj.interior_texture.allocated() && textures_use_uv(*obj.interior_texture));
 }
 
+// The same anywhere in a placed object's tree (a CSG's children inherit its textures).
+bool any_turned_mirrored_uv_box(const Object& obj) {
+    if (turned_mirrored_uv_box(obj)) return true;
+    if (const Csg* csg = std::get_if<Csg>(&obj.shape))
+        for (const Object& c : csg->children)
+            if (any_turned_mirrored_uv_box(c)) return true;
+    return false;
+}
+
 }  // namespace
 
 // Pigment and normal map/list entries are evaluated at the outer pattern's point (as
@@ -967,9 +976,14 @@ void Interpreter::parse_top_level_item(const Token& t) {
                 warn(t, "unnecessary bounding object removed");
             }
         };
+        auto refuse_uv_boxes = [&](const Object& o) {
+            if (std::holds_alternative<Csg>(o.shape) && any_turned_mirrored_uv_box(o))
+                unsupported(t, "uv_mapping on a box both mirrored and turned");
+        };
         Object obj;
         if (try_parse_object(t, obj)) {
             finish_object(obj);
+            refuse_uv_boxes(obj);
             warn_removed_bounds(warn_removed_bounds, obj);
             assign_light_groups(obj);
             collect_lights(obj);
@@ -984,6 +998,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
             Object copy = **o;
             copy.loc = sources_.location(t);
             finish_object(copy);
+            refuse_uv_boxes(copy);
             warn_removed_bounds(warn_removed_bounds, copy);
             assign_light_groups(copy);
             collect_lights(copy);

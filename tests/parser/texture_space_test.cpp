@@ -90,6 +90,10 @@ TEST(UvMapping, TurnedMirroredBoxIsRefused) {
     EXPECT_EQ(e->kind(), ParseError::Kind::Unsupported);
     EXPECT_EQ(e->message(), "unsupported: uv_mapping on a box both mirrored and turned");
     EXPECT_EQ(e->loc().column, 1);
+    // Inherited from a union under uv_mapping: refused at the union.
+    EXPECT_TRUE(
+        error_of("union { box { -1, 1 scale <-1, 1, 1> rotate 30 * y } sphere { 0, 1 } "
+                 "uv_mapping pigment { checker } }"));
     // Mirrored only, or turned only: mapped.
     EXPECT_FALSE(
         error_of("box { -1, 1 pigment { uv_mapping checker } scale <-1, 1, 1> }"));
