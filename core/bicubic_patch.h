@@ -19,6 +19,9 @@ struct BicubicPatchData {
     int type = 1;
     int u_steps = 0, v_steps = 0;
     Real flatness = 0;
+    // `uv_vectors`: the texture coordinates of the patch's corners (u, v) = (0, 0),
+    // (1, 0), (1, 1), (0, 1), which uv_mapping interpolates bilinearly.
+    std::array<std::array<Real, 2>, 4> uv_vectors{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
 
     // A leaf's triangle with what POV-Ray's test derives from its corners: the dual basis
     // of its edges and unit normal (zero `e2` when POV-Ray drops it as degenerate), and

@@ -65,6 +65,15 @@ enum class PatternKind : uint8_t {
     Slope,           // the surface's slope (and altitude), PatternSpec::slope
     Aoi,             // the angle between the surface normal and the ray
     DensityFile,     // a df3 voxel grid over the unit cube, PatternSpec::density_file
+    // `uv_mapping INNER` as a pigment's, normal's or texture's pattern: its one entry
+    // (Pigment::maps->list[0], Normal::list[0], Texture::map->entries[0]) is evaluated
+    // at the hit's surface coordinates (u, v, 0) (trace/uv_mapping.h).
+    UvMapping,
+    ObjectInside,  // `object { OBJ }`: 1 inside PatternSpec::object, else 0
+    ImagePattern,  // `image_pattern { }`: an image's grey (PatternSpec::image)
+    // `material_map { }`: the texture map entry an image's pixel indexes (a texture's
+    // map pattern only, PatternSpec::image).
+    MaterialMap,
 };
 
 enum class WaveType : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
@@ -124,6 +133,9 @@ struct ImageMapping {
     int map_type = 0;     // 0 planar, 1 spherical, 2 cylindrical, 5 torus
     int interpolate = 0;  // 0 none, 2 bilinear, 3 bicubic, 4 normalised distance
     bool once = false;
+    // image_pattern's value: 0 the grey, 1 the transmit (use_alpha, an image with an
+    // alpha channel), 2 the red (use_alpha, an image without).
+    uint8_t image_value = 0;
     // bump_map: heights are palette indices (ImagePixels::indices); for other images
     // the colours' grey, as use_color.
     bool use_index = false;
@@ -143,6 +155,7 @@ struct DensityFile {
 };
 
 struct Pigment;
+struct Object;
 
 // Everything that turns a point into a pattern value in [0,1].
 struct PatternSpec {
@@ -181,6 +194,7 @@ struct PatternSpec {
     std::shared_ptr<const ImageMapping> image;        // PatternKind::ImageMap only
     std::shared_ptr<const FunctionProgram> function;  // PatternKind::Function only
     std::shared_ptr<const Pigment> pigment;           // PatternKind::PigmentPattern only
+    std::shared_ptr<const Object> object;             // PatternKind::ObjectInside only
     // PatternKind::DensityFile only: the file (shared by every copy of the pattern) and
     // `interpolate` as written (POV-Ray reads it modulo 10: 0 none, 1 trilinear, else
     // tricubic).
@@ -375,6 +389,11 @@ struct Mesh {
     };
     std::vector<Face> faces;
     std::vector<LayeredTexture> textures;  // per-face textures (mesh2 texture_list)
+    // Texture coordinates (mesh2 uv_vectors, a mesh triangle's uv_vectors) and per face,
+    // parallel to `faces`, the indices of its corners' coordinates; both empty when the
+    // mesh has none (every corner then has (0, 0), as POV-Ray's).
+    std::vector<std::array<Real, 2>> uvs;
+    std::vector<std::array<uint32_t, 3>> uv_faces;
     // Faces with a texture per corner (mesh2 `<a, b, c>, t0, t1, t2`, a mesh triangle's
     // texture_list): POV-Ray blends them by the hit's barycentric weights.
     std::vector<std::array<int32_t, 3>> texture_triples;
@@ -736,6 +755,9 @@ struct Object {
     bool hollow_given = false;  // `hollow` was written on it (a CSG's then leaves it)
     bool no_shadow = false, no_image = false, no_reflection = false;
     bool double_illuminate = false;
+    // `uv_mapping` on the object (POV-Ray's UV_FLAG): its textures are evaluated at the
+    // hit's surface coordinates (u, v, 0), and its transforms do not move them.
+    bool uv_mapping = false;
     // Light groups (POV-Ray 3.7's LLights and NO_GLOBAL_LIGHTS_FLAG), set on the leaves
     // when the object is placed: the lights of Scene::lights whose Light::light_group
     // equals this (0: none) light it, and the lights of no group light it only when

@@ -382,6 +382,7 @@ std::shared_ptr<const FunctionProgram> Interpreter::parse_function_block(
         next();
         no_parameters("pigment");
         f->pigment = std::make_shared<Pigment>(parse_pigment_block());
+        refuse_uv_mapping(*f->pigment, first, "a pigment function");
     } else if (!inline_form && is_word(first, "internal")) {
         next();
         expect_punct('(', "after internal");

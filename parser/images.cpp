@@ -1,6 +1,7 @@
-// image_map { } and bump_map { }: the file reference, POV-Ray 3.7's input gamma rules and
-// the mapping attributes. Pixels come from ParseOptions::image_reader (the parser itself
-// has no image library); without one, only the reference is recorded.
+// image_map { }, bump_map { }, image_pattern { } and material_map { }: the file
+// reference, POV-Ray 3.7's input gamma rules and the mapping attributes. Pixels come from
+// ParseOptions::image_reader (the parser itself has no image library); without one, only
+// the reference is recorded.
 #include <cmath>
 #include <filesystem>
 
@@ -76,9 +77,16 @@ Interpreter::ImageFileRef Interpreter::parse_image_file_ref(bool height_field) {
 }
 
 std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& keyword,
-                                                                   Normal* bump) {
-    expect_punct('{', bump ? "after 'bump_map'" : "after 'image_map'");
+                                                                   Normal* bump,
+                                                                   ImageBlock block) {
+    if (bump) block = ImageBlock::BumpMap;
+    expect_punct('{', "after '" + std::string(keyword.text) + "'");
     const bool is_bump = bump != nullptr;
+    // Only image_map decodes the file's gamma by default: the others read heights,
+    // grey values or indices (POV-Ray's Parse_Image without GammaCorrect).
+    const bool raw = block != ImageBlock::ImageMap;
+    const bool is_pattern = block == ImageBlock::ImagePattern;
+    const bool is_material = block == ImageBlock::MaterialMap;
     if (const Token& first = peek(); is_word(first, "function"))
         unsupported(first, std::string(keyword.text) + " function");
     const ImageFileRef ref = parse_image_file_ref(false);
@@ -108,6 +116,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
     mapping->path = path;
     image_files_.push_back(path);
     bool colour_mapped = false;
+    bool has_alpha = false;  // the file has an alpha channel (or palette transparency)
     std::shared_ptr<ImagePixels> pixels;  // editable while the block is read
     std::optional<Token> use_index_at;
     if (options_.image_reader) {
@@ -127,7 +136,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         // decode with the file type's gamma. bump_map reads raw unless a gamma is given
         // (POV-Ray treats its data as heights, not colours).
         const float working = scene_.settings.assumed_gamma.value_or(1.0f);
-        bool correct = gamma_mode_ != GammaMode::None && !is_bump;
+        bool correct = gamma_mode_ != GammaMode::None && !raw;
         std::optional<Curve> fallback;  // POV-Ray's options.defaultGamma
         if (correct && gamma_mode_ == GammaMode::Assumed36) fallback = power(working);
         if (explicit_gamma) {
@@ -149,7 +158,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             }
         }
         // Decoded values are re-encoded in the working gamma (image_map only).
-        const bool encode_working = correct && !is_bump && working != 1.0f;
+        const bool encode_working = correct && !raw && working != 1.0f;
         auto px = std::make_shared<ImagePixels>();
         px->width = stored.pixels.width;
         px->height = stored.pixels.height;
@@ -167,6 +176,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             d[4] = stored.has_alpha ? 1.0f - s[3] : 0.0f;
         }
         colour_mapped = stored.colour_mapped;
+        has_alpha = stored.has_alpha;
         px->indices = std::move(stored.indices);
         px->palette_size = stored.palette_size;
         pixels = px;
@@ -179,17 +189,23 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         Numeric n = parse_express();
         return n.size == 1 ? std::pair{n.c[0], n.c[0]} : std::pair{n.c[0], n.c[1]};
     };
+    std::optional<Token> interpolate_at;
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) break;
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        if (is_material && w == "texture") {  // the textures follow
+            unget(t);
+            break;
+        }
         if (w == "once") {
             mapping->once = true;
         } else if (w == "interpolate") {
             Token at = peek();
+            interpolate_at = at;
             mapping->interpolate = parse_int();
-            if (!is_bump && mapping->interpolate != 2 && mapping->interpolate != 3 &&
-                mapping->interpolate != 4)
+            if (block == ImageBlock::ImageMap && mapping->interpolate != 2 &&
+                mapping->interpolate != 3 && mapping->interpolate != 4)
                 error(at, "invalid interpolate value (2, 3 or 4)");
         } else if (w == "map_type") {
             Token at = peek();
@@ -199,9 +215,17 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             int mt = mapping->map_type;
             if (mt != 0 && mt != 1 && mt != 2 && mt != 5)
                 error(at, "invalid map_type value");
-        } else if (w == "use_color" || w == "use_colour") {
+        } else if (!is_material && (w == "use_color" || w == "use_colour")) {
             mapping->use_index = false;
-        } else if (w == "use_index") {
+            mapping->image_value = 0;
+        } else if (is_pattern && w == "use_alpha") {
+            // The transmit of an image with an alpha channel, else its red.
+            mapping->image_value = has_alpha ? 1 : 2;
+        } else if (is_pattern && w == "use_index") {
+            // image_pattern reads the grey whatever it is told (POV-Ray's image_pattern
+            // takes an index only with no `use` at all, which it never has).
+            mapping->image_value = 0;
+        } else if (!is_material && w == "use_index") {
             // A bump map of palette indices takes each index itself as the height; of
             // other images, the colours' grey (POV-Ray 3.7's bump_map).
             if (is_bump && colour_mapped && pixels && pixels->indices.empty())
@@ -221,7 +245,8 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             mapping->offset_v = -ov * (mapping->pixels ? mapping->pixels->height : 0);
         } else if (is_bump && w == "bump_size") {
             bump->amount = parse_float();
-        } else if (!is_bump && (w == "filter" || w == "transmit" || w == "alpha")) {
+        } else if (block == ImageBlock::ImageMap &&
+                   (w == "filter" || w == "transmit" || w == "alpha")) {
             if (w == "alpha")
                 warn(t, "keyword 'alpha' discontinued; use 'filter' instead");
             // A palette image keeps filter and transmit per palette entry, which these
@@ -259,8 +284,16 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
                              std::string(w) + " all");
             }
         } else {
-            expected(is_bump ? "a bump_map item or '}'" : "an image_map item or '}'", t);
+            expected("a " + std::string(keyword.text) + " item or '}'", t);
         }
+    }
+    if (is_material) {
+        // POV-Ray picks by the palette index (of other images, by red * 255); the
+        // interpolated index it computes then is not reproduced.
+        if (interpolate_at && mapping->interpolate != 0)
+            unsupported(*interpolate_at, "material_map with interpolate");
+        if (colour_mapped && pixels && pixels->indices.empty())
+            unsupported(keyword, "material_map of a palette image that repeats a colour");
     }
     // POV-Ray averages the corners' indices when it interpolates them.
     if (is_bump && use_index_at && mapping->use_index && colour_mapped &&

@@ -176,6 +176,14 @@ class Interpreter {
     ColourMap parse_colour_map_block();  // after 'color_map'
     bool try_pattern_keyword(const Token& t, PatternSpec& spec);
     PatternSpec::Slope parse_slope();  // after 'slope' (the pattern)
+    // After `object` as a pattern: `{ OBJECT [transforms]` up to its list entries, which
+    // the caller reads (as checker's) before the closing '}' (parser/pattern_object.cpp).
+    void parse_object_pattern(const Token& keyword, PatternSpec& spec);
+    // After `material_map` in a texture: the image and its textures (texture_maps.cpp).
+    void parse_material_map(const Token& keyword, Texture& into);
+    // A located error where a pigment that uv_mapping, which needs a surface hit, is
+    // used where there is none (a pigment function, a media density).
+    void refuse_uv_mapping(const Pigment& p, const Token& at, std::string_view where);
     bool try_pattern_keyword(const Token& t, HeapValue<PatternSpec>& spec);
     // An image file named in a scene: `[TYPE] "name"` (POV-Ray's Parse_Image), its type
     // (from the keyword, else the name's extension, else the output file type) and the
@@ -187,9 +195,11 @@ class Interpreter {
         std::string path;
     };
     ImageFileRef parse_image_file_ref(bool height_field);
-    // After image_map / bump_map (`bump` receives bump_size): the mapping, pixels loaded.
-    std::shared_ptr<const ImageMapping> parse_image_block(const Token& keyword,
-                                                          Normal* bump);
+    // After image_map / bump_map (`bump` receives bump_size), image_pattern or
+    // material_map (which stops before its first `texture`): the mapping, pixels loaded.
+    enum class ImageBlock : uint8_t { ImageMap, BumpMap, ImagePattern, MaterialMap };
+    std::shared_ptr<const ImageMapping> parse_image_block(
+        const Token& keyword, Normal* bump, ImageBlock block = ImageBlock::ImageMap);
     // After `density_file`: `df3 "name"`, the file found as POV-Ray finds it and read
     // (density_files.cpp; one read per file and parse, shared by every pattern naming
     // it).

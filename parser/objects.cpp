@@ -26,6 +26,51 @@ void transform_normal(Normal& n, const Transform& t) {
     transform_pattern(n.pattern.edit(), t);
 }
 
+bool pigment_uses_uv(const Pigment& p) {
+    if (p.pattern->kind == PatternKind::UvMapping) return true;
+    for (const Pigment& sub : p.maps->list)
+        if (pigment_uses_uv(sub)) return true;
+    return false;
+}
+
+bool textures_use_uv(const LayeredTexture& layers) {
+    for (const Texture& t : layers) {
+        if (pigment_uses_uv(t.pigment)) return true;
+        if (t.normal && t.normal->pattern->kind == PatternKind::UvMapping) return true;
+        if (t.map_pattern && t.map_pattern->kind == PatternKind::UvMapping) return true;
+        for (const LayeredTexture& e : t.map->entries)
+            if (textures_use_uv(e)) return true;
+    }
+    return false;
+}
+
+// POV-Ray moves and scales a box's corners until its first turn or matrix, so a
+// mirroring scale before that flips its surface coordinates and one after it does not;
+// a turned, mirrored box does not say which it had (a box only moved and scaled is
+// mapped exactly, trace/uv_mapping.cpp).
+bool turned_mirrored_uv_box(const Object& obj) {
+    if (!std::holds_alternative<Box>(obj.shape) || obj.transform.is_identity())
+        return false;
+    const Matrix34& m = obj.transform.forward();
+    const bool diagonal = m.m[0][1] == 0 && m.m[0][2] == 0 && m.m[1][0] == 0 &&
+                          m.m[1][2] == 0 && m.m[2][0] == 0 && m.m[2][1] == 0;
+    const Real det = m.m[0][0] * (m.m[1][1] * m.m[2][2] - m.m[1][2] * m.m[2][1]) -
+                     m.m[0][1] * (m.m[1][0] * m.m[2][2] - m.m[1][2] * m.m[2][0]) +
+                     m.m[0][2] * (m.m[1][0] * m.m[2][1] - m.m[1][1] * m.m[2][0]);
+    if (diagonal || det >= 0) return false;
+    return obj.uv_mapping || textures_use_uv(obj.texture) ||
+           (obj.interior_texture.allocated() && textures_use_uv(*obj.interior_texture));
+}
+
+// The same anywhere in a placed object's tree (a CSG's children inherit its textures).
+bool any_turned_mirrored_uv_box(const Object& obj) {
+    if (turned_mirrored_uv_box(obj)) return true;
+    if (const Csg* csg = std::get_if<Csg>(&obj.shape))
+        for (const Object& c : csg->children)
+            if (any_turned_mirrored_uv_box(c)) return true;
+    return false;
+}
+
 }  // namespace
 
 // Pigment and normal map/list entries are evaluated at the outer pattern's point (as
@@ -120,16 +165,20 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
     // POV-Ray recomputes a julia_fractal's box at each transform, which clears its
     // inverse flag.
     if (std::holds_alternative<JuliaFractal>(obj.shape)) obj.inverse = false;
-    transform_textures(obj.texture, t);
-    if (obj.interior_texture.allocated())
-        transform_textures(obj.interior_texture.edit(), t);
+    // Under uv_mapping the textures are fixed to the surface coordinates.
+    if (!obj.uv_mapping) {
+        transform_textures(obj.texture, t);
+        if (obj.interior_texture.allocated())
+            transform_textures(obj.interior_texture.edit(), t);
+    }
     transform_interior(obj.interior, t);
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
         for (Object& child : csg->children) apply_transform(child, t, step);
         for (Light& l : csg->lights) transform_light(l, t, step);
         if (csg->pov_box) move_pov_box(*csg->pov_box, t);
     }
-    if (auto mesh = std::get_if<Mesh>(&obj.shape)) {  // per-face textures move too
+    if (auto mesh = std::get_if<Mesh>(&obj.shape); mesh && !obj.uv_mapping) {
+        // per-face textures move too
         for (LayeredTexture& tex : mesh->textures) transform_textures(tex, t);
     }
     if (auto blob = std::get_if<Blob>(&obj.shape)) {  // and a blob's component textures
@@ -429,7 +478,10 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
                   "cutaway_textures can only be used with intersection and difference");
         unsupported(t, "cutaway_textures");
     } else if (w == "uv_mapping") {
-        unsupported(t, "uv_mapping");
+        // Textures given after it are evaluated at the surface coordinates and stay
+        // where the transforms leave the object (POV-Ray's UV_FLAG).
+        if (!obj.texture.empty()) error(t, "uv_mapping must be specified before texture");
+        obj.uv_mapping = true;
     } else {
         return false;
     }
@@ -741,6 +793,8 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         return false;
     }
     parse_object_modifiers(out);
+    if (turned_mirrored_uv_box(out))
+        unsupported(t, "uv_mapping on a box both mirrored and turned");
     check_algebraic_bounds(out, t);
     if (pending_height_field) finish_height_field(out, std::move(*pending_height_field));
     // Its set-up after the modifiers clears the inverse flag (as a transform does).
@@ -780,11 +834,21 @@ void Interpreter::finish_object(Object& obj) {
 void Interpreter::place_object(Object& obj, const Object* parent,
                                std::unordered_map<uint32_t, Interior>& shared) {
     if (parent) {
-        if (obj.texture.empty()) obj.texture = parent->texture;
+        // uv_mapping comes down with the textures it applies to (POV-Ray's
+        // Post_Process).
+        if (obj.texture.empty()) {
+            obj.texture = parent->texture;
+            obj.uv_mapping |= parent->uv_mapping;
+        }
         // The interior texture comes down on its own, whether the child has a texture
         // of its own or not (POV-Ray's Post_Process).
-        if (obj.interior_texture->empty() && !parent->interior_texture->empty())
-            obj.interior_texture = parent->interior_texture;
+        if (obj.interior_texture->empty()) {
+            if (!parent->interior_texture->empty())
+                obj.interior_texture = parent->interior_texture;
+            // (POV-Ray passes the flag on here whether the parent has an interior
+            // texture or not: a child with a texture of its own gets it too.)
+            obj.uv_mapping |= parent->uv_mapping;
+        }
         if (!obj.interior) obj.interior = *parent->interior;
         obj.no_shadow |= parent->no_shadow;
         obj.no_image |= parent->no_image;
@@ -912,9 +976,14 @@ void Interpreter::parse_top_level_item(const Token& t) {
                 warn(t, "unnecessary bounding object removed");
             }
         };
+        auto refuse_uv_boxes = [&](const Object& o) {
+            if (std::holds_alternative<Csg>(o.shape) && any_turned_mirrored_uv_box(o))
+                unsupported(t, "uv_mapping on a box both mirrored and turned");
+        };
         Object obj;
         if (try_parse_object(t, obj)) {
             finish_object(obj);
+            refuse_uv_boxes(obj);
             warn_removed_bounds(warn_removed_bounds, obj);
             assign_light_groups(obj);
             collect_lights(obj);
@@ -929,6 +998,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
             Object copy = **o;
             copy.loc = sources_.location(t);
             finish_object(copy);
+            refuse_uv_boxes(copy);
             warn_removed_bounds(warn_removed_bounds, copy);
             assign_light_groups(copy);
             collect_lights(copy);

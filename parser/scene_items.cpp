@@ -657,6 +657,7 @@ Fog Interpreter::parse_fog() {
 void Interpreter::parse_mesh(Object& out) {
     Mesh mesh;
     std::vector<LayeredTexture> textures;
+    bool any_uv = false;
     for (;;) {
         const Token& p = peek();
         bool smooth = is_word(p, "smooth_triangle");
@@ -674,6 +675,16 @@ void Interpreter::parse_mesh(Object& out) {
                 face.n[i] = int32_t(mesh.normals.size());
                 mesh.normals.push_back(parse_vector());
             }
+        }
+        // `uv_vectors A, B, C`: the corners' texture coordinates; (0, 0) without.
+        std::array<std::array<Real, 2>, 3> corner_uvs{};
+        if (accept_word("uv_vectors")) {
+            for (int k = 0; k < 3; ++k) {
+                if (k) accept_punct(',');
+                const ProfilePoint q = parse_uv_vector();
+                corner_uvs[size_t(k)] = {q.x, q.y};
+            }
+            any_uv = true;
         }
         for (;;) {
             Token m = next();
@@ -708,7 +719,16 @@ void Interpreter::parse_mesh(Object& out) {
         // Degenerate triangles are dropped silently, as POV-Ray does in meshes.
         const Point3 corners[3] = {mesh.vertices[face.v[0]], mesh.vertices[face.v[1]],
                                    mesh.vertices[face.v[2]]};
-        if (!degenerate_corners(corners)) mesh.faces.push_back(face);
+        if (!degenerate_corners(corners)) {
+            mesh.faces.push_back(face);
+            const auto first = uint32_t(mesh.uvs.size());
+            mesh.uv_faces.push_back({first, first + 1, first + 2});
+            for (const auto& uv : corner_uvs) mesh.uvs.push_back(uv);
+        }
+    }
+    if (!any_uv) {  // all (0, 0): no coordinates kept
+        mesh.uvs.clear();
+        mesh.uv_faces.clear();
     }
     if (accept_word("inside_vector")) {
         mesh.inside_vector = parse_vector();
@@ -802,7 +822,7 @@ void Interpreter::parse_mesh2(Object& out) {
         expect_punct('}');
     };
     std::vector<std::array<int, 3>> normal_idx;
-    std::vector<Vector3> ignored;
+    std::optional<Token> uv_indices_at;
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) {
@@ -815,12 +835,17 @@ void Interpreter::parse_mesh2(Object& out) {
         } else if (w == "normal_vectors") {
             read_vectors(mesh.normals);
         } else if (w == "uv_vectors") {
-            std::vector<Vector3> uv;
+            // A second block replaces the first (POV-Ray warns).
+            if (!mesh.uvs.empty())
+                warn(t, "duplicate uv_vectors block; ignoring previous block");
+            mesh.uvs.clear();
             expect_punct('{');
             int n = parse_count();
+            reserve_list(mesh.uvs, n);
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
-                parse_numeric();
+                const ProfilePoint q = parse_uv_vector();
+                mesh.uvs.push_back({q.x, q.y});
             }
             accept_punct(',');  // trailing comma
             expect_punct('}');
@@ -919,11 +944,32 @@ void Interpreter::parse_mesh2(Object& out) {
             accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "uv_indices") {
+            if (uv_indices_at)
+                error(t, "only one uv_indices section is allowed in mesh2");
+            uv_indices_at = t;
             expect_punct('{');
+            const Token count_at = peek();
             int n = parse_count();
+            if (size_t(n) != mesh.faces.size())
+                error(count_at, "number of uv indices must equal number of faces");
+            reserve_list(mesh.uv_faces, n);
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
-                parse_vector();
+                Token at;
+                Vector3 v;
+                if (!try_plain_vector(v, &at)) {
+                    at = peek();
+                    v = parse_vector();
+                }
+                std::array<uint32_t, 3> idx;
+                for (int k = 0; k < 3; ++k) {
+                    // POV-Ray keeps one (0, 0) coordinate when none were given.
+                    const size_t count = std::max<size_t>(mesh.uvs.size(), 1);
+                    if (!(v[k] >= 0 && v[k] < double(count)))
+                        error(at, "mesh2 uv index out of range");
+                    idx[size_t(k)] = uint32_t(v[k]);
+                }
+                mesh.uv_faces.push_back(idx);
             }
             accept_punct(',');  // trailing comma
             expect_punct('}');
@@ -944,14 +990,33 @@ void Interpreter::parse_mesh2(Object& out) {
                 f.n[k] = int32_t(f.v[k]);
         }
     }
-    mesh.faces.erase(std::remove_if(mesh.faces.begin(), mesh.faces.end(),
-                                    [&](const Mesh::Face& f) {
-                                        const Point3 p[3] = {mesh.vertices[f.v[0]],
-                                                             mesh.vertices[f.v[1]],
-                                                             mesh.vertices[f.v[2]]};
-                                        return degenerate_corners(p);
-                                    }),
-                     mesh.faces.end());
+    // Texture coordinates without uv_indices: indexed like the vertices, or the one
+    // coordinate for every corner (POV-Ray's rules).
+    if (!uv_indices_at && !mesh.uvs.empty()) {
+        if (mesh.uvs.size() == mesh.vertices.size()) {
+            mesh.uv_faces.reserve(mesh.faces.size());
+            for (const Mesh::Face& f : mesh.faces)
+                mesh.uv_faces.push_back({f.v[0], f.v[1], f.v[2]});
+        } else if (mesh.uvs.size() == 1) {
+            mesh.uv_faces.assign(mesh.faces.size(), {0, 0, 0});
+        } else {
+            error(peek(), "missing uv_indices section in mesh2");
+        }
+    }
+    if (mesh.uvs.empty()) mesh.uv_faces.clear();  // every corner (0, 0)
+    // Degenerate faces are dropped (with their coordinates).
+    size_t kept = 0;
+    for (size_t i = 0; i < mesh.faces.size(); ++i) {
+        const Mesh::Face& f = mesh.faces[i];
+        const Point3 p[3] = {mesh.vertices[f.v[0]], mesh.vertices[f.v[1]],
+                             mesh.vertices[f.v[2]]};
+        if (degenerate_corners(p)) continue;
+        mesh.faces[kept] = f;
+        if (!mesh.uv_faces.empty()) mesh.uv_faces[kept] = mesh.uv_faces[i];
+        ++kept;
+    }
+    mesh.faces.resize(kept);
+    if (!mesh.uv_faces.empty()) mesh.uv_faces.resize(kept);
     out.shape = std::move(mesh);
 }
 

@@ -1,5 +1,6 @@
 // bicubic_patch { [type N | flatness F | u_steps N | v_steps N | accuracy F]...
-//                 [uv_vectors ...] P00, ..., P33 }, as POV-Ray 3.7's Parse_Bicubic_Patch.
+//                 [uv_vectors UV00, UV10, UV11, UV01] P00, ..., P33 }, as POV-Ray 3.7's
+//                 Parse_Bicubic_Patch.
 #include <memory>
 
 #include "core/bicubic_patch.h"
@@ -38,12 +39,13 @@ void Interpreter::parse_bicubic_patch(Object& out, const Token& keyword) {
                 next();
                 parse_float();  // read and never used, as in POV-Ray
             } else if (is_word(t, "uv_vectors")) {
-                // Texture coordinates only uv_mapping reads (refused for now); they end
-                // the keywords, as in POV-Ray.
+                // The corners' texture coordinates (uv_mapping); they end the keywords,
+                // as in POV-Ray.
                 next();
                 for (int i = 0; i < 4; ++i) {
                     if (i) accept_punct(',');
-                    parse_numeric();
+                    const ProfilePoint q = parse_uv_vector();
+                    data->uv_vectors[size_t(i)] = {q.x, q.y};
                 }
                 break;
             } else {

@@ -53,9 +53,8 @@ constexpr PatternName kPatterns[] = {
 
 bool is_unsupported_pattern(std::string_view w) {
     static constexpr std::string_view kNames[] = {
-        "material_map", "object", "facets",        "pavement",  "tiling",
-        "julia",        "magnet", "image_pattern", "tiles",     "proportion",
-        "gradient_map", "cubic",  "square",        "triangular"};
+        "material_map", "facets",     "pavement",     "tiling", "julia",  "magnet",
+        "tiles",        "proportion", "gradient_map", "cubic",  "square", "triangular"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -250,6 +249,15 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
     if (t.kind != TokenKind::Word) return false;
     std::string_view w = t.text;
     if (is_unsupported_pattern(w)) unsupported(t, w);
+    if (w == "object") {
+        parse_object_pattern(t, spec);  // its entries and '}' are the caller's
+        return true;
+    }
+    if (w == "image_pattern") {
+        spec.kind = PatternKind::ImagePattern;
+        spec.image = parse_image_block(t, nullptr, ImageBlock::ImagePattern);
+        return true;
+    }
     if (w == "function") {
         // `function { EXPR }` of x, y, z (a declared function is called inside it:
         // `function { F(x, y, z) }`).
@@ -563,9 +571,10 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
         if (!colour && try_pattern_keyword(t, p.pattern)) {
             // checker/hexagon/brick take their colours or pigments right after the
             // keyword
+            const bool object_pattern = p.pattern->kind == PatternKind::ObjectInside;
             if (p.pattern->kind == PatternKind::Checker ||
                 p.pattern->kind == PatternKind::Hexagon ||
-                p.pattern->kind == PatternKind::Brick) {
+                p.pattern->kind == PatternKind::Brick || object_pattern) {
                 // The list replaces the map an earlier block gave.
                 if (p.maps.allocated()) {
                     PigmentMaps& m = p.maps.edit();
@@ -592,6 +601,7 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                         p.maps.edit().list.push_back(sub);
                     }
                 }
+                if (object_pattern) expect_punct('}', "to close the object pattern");
             }
             continue;
         }
@@ -654,7 +664,15 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
             p.pattern.edit().kind = PatternKind::ImageMap;
             p.pattern.edit().image = parse_image_block(t, nullptr);
         } else if (w == "uv_mapping") {
-            unsupported(t, w);
+            // The rest of the block is one pigment evaluated at the surface coordinates
+            // (POV-Ray's Parse_Item_Into_Blend_List): it takes every later item.
+            Pigment inner = default_texture_.pigment;
+            parse_pigment_body(inner, terminator);
+            p.pattern = PatternSpec{};
+            p.pattern.edit().kind = PatternKind::UvMapping;
+            p.maps = PigmentMaps{};
+            p.maps.edit().list.push_back(std::move(inner));
+            return;
         } else {
             expected("a pigment item or '}'", t);
         }
@@ -700,9 +718,10 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
         Token t = next();
         if (is_punct(t, terminator)) return;
         if (try_pattern_keyword(t, n.pattern)) {
+            const bool object_pattern = n.pattern->kind == PatternKind::ObjectInside;
             if (n.pattern->kind == PatternKind::Checker ||
                 n.pattern->kind == PatternKind::Hexagon ||
-                n.pattern->kind == PatternKind::Brick) {
+                n.pattern->kind == PatternKind::Brick || object_pattern) {
                 // checker normal{..} normal{..}: entries follow the keyword and replace
                 // the map an earlier block gave.
                 n.list.clear();
@@ -714,6 +733,7 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
                     n.list.push_back(parse_normal_block());
                     n.map_values.push_back(float(i));
                 }
+                if (object_pattern) expect_punct('}', "to close the object pattern");
             }
             // `bumps 0.5`, `gradient x, 5.6`: an optional bump size follows the pattern.
             accept_punct(',');
@@ -766,7 +786,14 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
             n.pattern.edit().kind = PatternKind::ImageMap;
             n.pattern.edit().image = parse_image_block(t, &n);
         } else if (is_word(t, "uv_mapping")) {
-            unsupported(t, t.text);
+            // The rest of the block is one normal, at the surface coordinates.
+            Normal inner;
+            if (default_texture_.normal) inner = *default_texture_.normal;
+            parse_normal_body(inner, terminator);
+            n = Normal{};
+            n.pattern.edit().kind = PatternKind::UvMapping;
+            n.list.push_back(std::move(inner));
+            return;
         } else {
             expected("a normal item or '}'", t);
         }
@@ -988,8 +1015,10 @@ void Interpreter::parse_interior_into(Interior& in) {
 Pigment Interpreter::parse_density_block() {
     Pigment d;
     d.colour = Colour{};
+    const Token at = peek();
     expect_punct('{', "after 'density'");
     parse_pigment_body(d, '}');
+    refuse_uv_mapping(d, at, "a media density");
     return d;
 }
 
@@ -1167,8 +1196,21 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
                 top.map.edit().values.push_back(value);
                 top.map.edit().entries.push_back(std::move(entry));
             }
-        } else if (w == "material_map" || w == "tiles" || w == "uv_mapping" ||
-                   w == "image_pattern") {
+        } else if (w == "uv_mapping") {
+            // The rest of the block is one texture, at the surface coordinates; the
+            // transforms of its object move nothing but the normals' frame (POV-Ray
+            // keeps them on this pattern, which it never warps the point by).
+            LayeredTexture inner;
+            parse_texture_body(inner, terminator);
+            Texture uv;
+            uv.map_pattern = PatternSpec{};
+            uv.map_pattern->kind = PatternKind::UvMapping;
+            uv.map.edit().entries.push_back(std::move(inner));
+            layers.assign(1, std::move(uv));
+            return;
+        } else if (w == "material_map") {
+            parse_material_map(t, top);
+        } else if (w == "tiles") {
             unsupported(t, w);
         } else if (top.map_pattern && try_pattern_modifier(t, *top.map_pattern)) {
             continue;
@@ -1176,9 +1218,10 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
             PatternSpec spec;
             if (t.kind == TokenKind::Word && try_pattern_keyword(t, spec)) {
                 top.map_pattern = spec;
+                const bool object_pattern = spec.kind == PatternKind::ObjectInside;
                 if (spec.kind == PatternKind::Checker ||
                     spec.kind == PatternKind::Hexagon ||
-                    spec.kind == PatternKind::Brick) {
+                    spec.kind == PatternKind::Brick || object_pattern) {
                     // checker texture{..} texture{..}: entries follow the keyword.
                     top.map.edit().entries.clear();
                     top.map.edit().values.clear();
@@ -1189,6 +1232,7 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
                         top.map.edit().entries.push_back(parse_texture_block());
                         top.map.edit().values.push_back(float(i));
                     }
+                    if (object_pattern) expect_punct('}', "to close the object pattern");
                 }
                 continue;
             }

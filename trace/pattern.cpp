@@ -573,6 +573,13 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
             return s.density_file
                        ? density_file_value(*s.density_file, s.density_interpolation, p)
                        : 0;
+        case PatternKind::ObjectInside:
+            return s.object && inside_pattern_object(*s.object, p) ? 1.0 : 0.0;
+        case PatternKind::ImagePattern:
+            return s.image ? image_pattern_value(*s.image, p) : 0;
+        case PatternKind::UvMapping:  // their entries are evaluated, never their value
+        case PatternKind::MaterialMap:
+            return 0;
     }
     return 0;
 }
@@ -580,7 +587,7 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
 // POV-Ray sets frequency 0 (no wrapping) for these patterns; the data model cannot tell
 // an explicit `frequency 1` apart, so they always skip it.
 bool has_no_frequency(PatternKind k) {
-    return is_discrete(k) || k == PatternKind::Quilted;
+    return is_discrete(k) || k == PatternKind::Quilted || k == PatternKind::ImagePattern;
 }
 
 }  // namespace
@@ -765,7 +772,18 @@ Vector3 normal_out_of_pattern(const PatternSpec& spec, const Vector3& n) {
 MapPick pick_map_entries(const PatternSpec& spec, const float* values, int count,
                          const Point3& world, const PatternEnv& env) {
     MapPick pick;
+    if (spec.kind == PatternKind::UvMapping) {
+        // The one entry, at the surface coordinates.
+        pick.point = detail::uv_of(env);
+        return pick;
+    }
     pick.point = detail::warp_point(spec, world);
+    if (spec.kind == PatternKind::MaterialMap) {
+        // The entry the image's pixel names, never a blend.
+        pick.lookup.prev = pick.lookup.cur =
+            spec.image ? detail::material_map_index(*spec.image, pick.point, count) : 0;
+        return pick;
+    }
     Real value = detail::value_at(spec, pick.point, env);
     if (values == nullptr || count <= 0) {
         int index = std::clamp(int(value), 0, 2);

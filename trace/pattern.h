@@ -20,11 +20,15 @@
 
 namespace povwall::trace {
 
-// A hit as the surface patterns see it (POV-Ray's Intersection for slope and aoi).
+struct Hit;
+
+// A hit as the surface patterns see it (POV-Ray's Intersection for slope, aoi and
+// uv_mapping).
 struct SurfaceAtHit {
     Vector3 normal;  // faces the ray; a layer's normal pattern perturbs it (PNormal)
     Point3 point;    // world
     Vector3 ray_direction;
+    const Hit* hit = nullptr;  // the hit itself (its surface coordinates); may be null
 };
 
 struct PatternEnv {

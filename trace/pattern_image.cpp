@@ -224,3 +224,34 @@ void bump_map_normal(const ImageMapping& m, Real amount, const Point3& p, Vector
 }
 
 }  // namespace povwall::trace::detail
+
+namespace povwall::trace::detail {
+
+Real image_pattern_value(const ImageMapping& m, const Point3& p) {
+    Real x, y;
+    if (!m.pixels || !image_coordinates(m, p, x, y)) return 0;
+    const Colour c = sample(m, x, y);
+    const Real v = m.image_value == 1   ? c.transmit
+                   : m.image_value == 2 ? c.rgb.r
+                                        : c.rgb.grey();
+    return std::clamp(v, 0.0, 1.0);
+}
+
+int material_map_index(const ImageMapping& m, const Point3& p, int count) {
+    Real x, y;
+    if (count <= 0 || !m.pixels || !image_coordinates(m, p, x, y)) return 0;
+    int n;
+    if (!m.pixels->indices.empty()) {
+        int ix, iy;
+        pixel_at(m, x, y, ix, iy);
+        n = m.pixels->indices[size_t(iy) * size_t(m.pixels->width) + size_t(ix)];
+    } else {
+        n = int(double(sample(m, x, y).rgb.r) * 255.0);
+    }
+    // POV-Ray wraps only numbers above the count; the count itself (and anything the
+    // list runs out before) takes the last texture.
+    if (n > count) n %= count;
+    return std::clamp(n, 0, count - 1);
+}
+
+}  // namespace povwall::trace::detail

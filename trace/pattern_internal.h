@@ -40,7 +40,19 @@ inline int resolve_generator(const PatternSpec& spec, const PatternEnv& env) {
 
 inline bool is_discrete(PatternKind k) {
     return k == PatternKind::Checker || k == PatternKind::Brick ||
-           k == PatternKind::Hexagon;
+           k == PatternKind::Hexagon || k == PatternKind::ObjectInside;
 }
+
+// The surface coordinates (u, v, 0) of the hit `env` sees (trace/uv_mapping.h); the
+// origin where there is none (the parser refuses uv_mapping where no hit can be).
+Point3 uv_of(const PatternEnv& env);
+
+// image_pattern: the image's value at pattern-space point p (0 off the image).
+Real image_pattern_value(const ImageMapping& m, const Point3& p);
+// material_map: the index of the texture the image's pixel at p picks among `count`.
+int material_map_index(const ImageMapping& m, const Point3& p, int count);
+
+// Whether world point p is inside `object` (the object pattern; trace/prepared_scene.h).
+bool inside_pattern_object(const Object& object, const Point3& p);
 
 }  // namespace povwall::trace::detail

@@ -104,6 +104,13 @@ Vector3 perturb_normal(const Normal& normal, const Point3& world,
                        const Vector3& geometric, const PatternEnv& env) {
     const PatternSpec& spec = *normal.pattern;
     if (spec.kind == PatternKind::Solid) return normalize(geometric);
+    if (spec.kind == PatternKind::UvMapping) {
+        // The entry perturbs the world normal itself, at the surface coordinates (as
+        // POV-Ray's: no warp of the normal into them).
+        if (normal.list.empty()) return normalize(geometric);
+        return normalize(
+            perturb_normal(normal.list.front(), detail::uv_of(env), geometric, env));
+    }
 
     // normal_map: perturb by the two neighbouring normals and blend the results.
     if (spec.kind != PatternKind::Average && !normal.map_values.empty() &&

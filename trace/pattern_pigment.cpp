@@ -61,6 +61,7 @@ const DefaultMap& default_map(PatternKind k) {
         case PatternKind::Hexagon:
             return kHex;
         case PatternKind::Checker:
+        case PatternKind::ObjectInside:  // POV-Ray gives it checker's default list
             return kChecker;
         default:
             return kGray;
@@ -84,6 +85,12 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
         return *pigment.maps->quick_colour;
     const PatternSpec& spec = *pigment.pattern;
     if (spec.kind == PatternKind::Solid) return pigment.colour;
+    if (spec.kind == PatternKind::UvMapping) {
+        // Its one entry at the surface coordinates; its own transforms (those after the
+        // keyword) apply there, the object's do not.
+        if (pigment.maps->list.empty()) return pigment.colour;
+        return evaluate_pigment(pigment.maps->list.front(), detail::uv_of(env), env);
+    }
     Point3 p = detail::warp_point(spec, world);
     if (spec.kind == PatternKind::ImageMap) {
         return spec.image ? detail::image_map_colour(*spec.image, p)

@@ -537,6 +537,7 @@ Material material_of(const Object& o, const LayeredTexture& texture) {
     m.no_image = o.no_image;
     m.no_reflection = o.no_reflection;
     m.double_illuminate = o.double_illuminate;
+    m.uv_mapping = o.uv_mapping;
     m.global_lights = o.global_lights;
     m.light_group = o.light_group;
     m.opaque = texture_opaque(texture);
@@ -777,9 +778,11 @@ void PreparedScene::add_object(const Object& o, uint32_t frame) {
             material_frame_.push_back(material_frame_[base]);
             return uint32_t(materials_.size()) - 1;
         };
-        for (const auto& f : m->faces) {
+        for (size_t fi = 0; fi < m->faces.size(); ++fi) {
+            const Mesh::Face& f = m->faces[fi];
             TrianglePrim tri;
             tri.mirrored = mirrored;
+            tri.face = uint32_t(fi);
             Bounds3 b;
             for (int k = 0; k < 3; ++k) {
                 // POV-Ray keeps a mesh's vertices in single precision.
@@ -946,6 +949,7 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, const PovRayOnce
                 if (tri.mirrored) hit.normal = -hit.normal;
             }
             hit.material = &materials_[material_[id]];
+            hit.face = int32_t(tri.face);
             return true;
         }
         case PrimKind::Object: {
@@ -979,6 +983,9 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, const PovRayOnce
             if (!material_only) hit.normal = best->normal();
             hit.material = material_for(best->leaf);
             if (!hit.material) hit.material = &materials_[material_[id]];
+            hit.face = best->hit.face;
+            hit.param = best->hit.param;
+            hit.param2 = best->hit.param2;
             return true;
         }
     }

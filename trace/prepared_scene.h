@@ -40,6 +40,8 @@ struct Material {
     uintptr_t interior_id = 0;           // interior_key(*object)
     bool no_shadow = false, no_image = false, no_reflection = false;
     bool double_illuminate = false;
+    // Object::uv_mapping: its patterns are evaluated at the hit's (u, v, 0).
+    bool uv_mapping = false;
     // Which lights light it (Object::global_lights, Object::light_group).
     bool global_lights = true;
     uint32_t light_group = 0;
@@ -117,6 +119,7 @@ struct TrianglePrim {
     Point3 p[3];
     Vector3 n[3];
     bool smooth = false;
+    uint32_t face = 0;  // its index in the mesh's faces (its texture coordinates)
     // The mesh's transform mirrors: the corners' normal points against the one POV-Ray
     // transforms from mesh space.
     bool mirrored = false;
@@ -134,6 +137,10 @@ struct Hit {
     // ray).
     Vector3 normal;
     const Material* material = nullptr;
+    // Where on the leaf's surface (its ShapeHit's face and parameters; a mesh triangle's
+    // face index), for the surface coordinates uv_mapping reads (trace/uv_mapping.h).
+    int32_t face = 0;
+    Real param = 0, param2 = 0;
 };
 
 struct RayContext {

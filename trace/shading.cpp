@@ -9,6 +9,7 @@
 #include "core/noise.h"
 #include "trace/media.h"
 #include "trace/shapes/shape.h"
+#include "trace/uv_mapping.h"
 
 namespace povwall::trace {
 namespace {
@@ -217,10 +218,16 @@ ChildRay shadow_child(const TraceRay& from, const Point3& at, const LightSample&
     return child;
 }
 
-// Where a material's patterns are evaluated: the hit point, or for a texture_map entry
+// Where the patterns of a material's top level are evaluated: the hit point, or its
+// surface coordinates on an object with uv_mapping.
+Point3 surface_point(const Material& m, const Hit& hit) {
+    return m.uv_mapping ? surface_uv(hit) : hit.point;
+}
+
+// Where a material's patterns are evaluated: surface_point(), or for a texture_map entry
 // the map pattern's point.
-const Point3& texture_point(const Material& m, const Hit& hit) {
-    return m.nesting ? m.nesting->point : hit.point;
+Point3 texture_point(const Material& m, const Hit& hit) {
+    return m.nesting ? m.nesting->point : surface_point(m, hit);
 }
 
 // A layer's normal perturbed as POV-Ray does inside texture maps: the normal goes into
@@ -243,7 +250,7 @@ Vector3 perturb_nested(const Normal& normal, const Point3& at, Vector3 n,
 // The surface as POV-Ray's patterns see a hit: its normal turned to face `direction`.
 SurfaceAtHit surface_facing(const Hit& hit, const Vector3& direction) {
     return {dot(hit.normal, direction) > 0 ? -hit.normal : hit.normal, hit.point,
-            direction};
+            direction, &hit};
 }
 
 Rgb rgb_transm(const Colour& c) { return c.rgb * c.filter + Rgb(c.transmit); }
@@ -1072,9 +1079,9 @@ float caustic_gain(const PreparedScene& scene, const Texture* t, float caustics,
     SurfaceAtHit facing = surface_facing(hit, ray.direction);
     Vector3 n = facing.normal;
     if (t && t->normal) {
-        n = perturb_nested(*t->normal, nesting ? nesting->point : hit.point, n,
-                           scene.pattern_env().at_surface(surface ? surface : &facing),
-                           nesting);
+        n = perturb_nested(
+            *t->normal, nesting ? nesting->point : surface_point(*hit.material, hit), n,
+            scene.pattern_env().at_surface(surface ? surface : &facing), nesting);
         if (surface) surface->normal = n;
     }
     return float(1 + std::pow(std::fabs(dot(n, ray.direction)), Real(caustics)));
@@ -1087,7 +1094,7 @@ float caustic_gain(const PreparedScene& scene, const Texture* t, float caustics,
 Rgb shadow_filter(const PreparedScene& scene, const LayeredTexture& layers,
                   float caustics, const Hit& hit, const TextureNesting* nesting,
                   const Ray& ray) {
-    const Point3& at = nesting ? nesting->point : hit.point;
+    const Point3 at = nesting ? nesting->point : surface_point(*hit.material, hit);
     if (layers.size() == 1 && layers.front().map_pattern &&
         !layers.front().map->entries.empty()) {
         const Texture& t = layers.front();

@@ -360,6 +360,22 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
     }
 }
 
+// uv_mapping (each shape's surface coordinates, read from the hit in the process that
+// finds it), material_map, image_pattern and the object pattern (its object travels
+// with the pattern, not with the scene's objects a black box keeps): every mode gives
+// the one-process image.
+TEST(Tcp, TextureSpacePatternsInEveryModeEqualOneProcess) {
+    for (const char* name :
+         {"uv_mapping_image", "uv_mapping_patterns", "uv_mapping_mesh",
+          "uv_mapping_mirrored", "material_map", "image_pattern", "object_pattern"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        expect_same_images(scene, "-W 40 -H 30",
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents"});
+    }
+}
+
 // Light groups (parser/light_groups.cpp: which lights light which leaves, numbered in
 // parse order before a worker leaves objects out) and df3 density files (found and read
 // by every process that parses the scene): every mode gives the one-process image.
