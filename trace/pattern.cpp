@@ -152,7 +152,9 @@ Point3 apply_mapping_warp(const Warp& w, const Point3& p) {
 
 Real brick(const PatternSpec& s, const Point3& p) {
     Vector3 size = s.vector2 == Vector3(0, 0, 0) ? Vector3(8.0, 3.0, 4.5) : s.vector2;
-    Real mortar = s.scalar != 0 ? s.scalar : 0.5 - kEpsilon * 2.0;
+    // POV-Ray keeps `mortar` minus 2e-10 in single precision: the default 0.5 stays 0.5,
+    // so a face on a joint (the mortar's far edge plus 1e-10) reads as mortar.
+    const Real mortar = float((s.scalar != 0 ? s.scalar : 0.5) - kEpsilon * 2.0);
     Real fudge = kEpsilon + mortar;
     Real x = p.x + fudge, y = p.y + fudge, z = p.z + fudge;
     auto frac = [](Real v) {

@@ -117,6 +117,21 @@ TEST(BlockPatternsVsPovray, AsNormalsAndInMaps) {
         kTol);
 }
 
+// A plane on a brick joint (textures/patterns/brick.pov's box faces): POV-Ray keeps the
+// mortar in single precision, so the default 0.5 (less 2e-10) is 0.5 and the joint plane
+// reads as mortar.
+TEST(BlockPatternsVsPovray, BrickJointPlanes) {
+    test::TopView view;
+    view.extent = 9.7;
+    view.height = 2.5;
+    EXPECT_LE(max_pigment_error("brick", view), kTol);
+    view.height = 0.9;
+    EXPECT_LE(max_pigment_error("brick brick_size <1, 0.5, 1> mortar 0.1", view), kTol);
+    view.height = 0.7;
+    EXPECT_LE(max_pigment_error("brick rgb 1, rgb 0 brick_size 1.4 mortar 0.3", view),
+              kTol);
+}
+
 TEST(WarpsVsPovray, CubicWarp) {
     test::TopView view;
     view.extent = 4.1;
@@ -159,6 +174,19 @@ TEST(FractalsVsPovray, JuliaMandelExponentsMagnet) {
         EXPECT_LE(max_pigment_error(f + " rotate x*90", view), kTol) << f;
     }
     EXPECT_LE(max_normal_error("julia <-0.745, 0.113>, 40 0.3 rotate x*90", view), kTol);
+    // fractals1.pov's floor: magnet colourings, and its normal with a slope_map at a tiny
+    // accuracy.
+    view.extent = 1.3;
+    view.centre = {0.4, 0, 0.3};
+    EXPECT_LE(
+        max_pigment_error("magnet 1 mandel 50 colour_map { [0 rgb <1,.8,.5>] [1 rgb "
+                          "<.8,.5,.4>] } interior 1,200 exterior 5,1 rotate x*90",
+                          view),
+        kTol);
+    EXPECT_LE(max_normal_error("magnet 1 mandel 50 .2 slope_map { [0 <1,0>][1 <0,-1>] } "
+                               "interior 1,200 accuracy .0005 rotate x*90",
+                               view),
+              kTol);
 }
 
 TEST(TilingVsPovray, TheImplementedTilings) {
