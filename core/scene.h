@@ -74,7 +74,17 @@ enum class PatternKind : uint8_t {
     // `material_map { }`: the texture map entry an image's pixel indexes (a texture's
     // map pattern only, PatternSpec::image).
     MaterialMap,
+    Square,          // four entries over the x-z unit squares
+    Triangular,      // six entries over x-z triangles
+    Cubic,           // six entries, one per face direction of a cube around the origin
+    Julia,           // julia fractal in x-y (PatternSpec::fractal)
+    Magnet,          // magnet 1 or 2, mandel or julia form (PatternSpec::fractal)
+    Facets,          // normals only: flat facets (PatternSpec::facets)
+    Tiling,          // `tiling N` in x-z (N in PatternSpec::scalar)
 };
+
+// The `tiling` numbers trace/pattern_tiling.cpp evaluates: 1 to this (POV-Ray has 27).
+constexpr int kTilingsImplemented = 22;
 
 enum class WaveType : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
 
@@ -86,7 +96,8 @@ struct Warp {
         Cylindrical,
         Spherical,
         Toroidal,
-        Planar
+        Planar,
+        Cubic  // the six faces of a cube around the origin onto a cross in x-y
     } kind = Kind::Turbulence;
     Vector3 turbulence{0, 0, 0};
     int octaves = 6;
@@ -173,12 +184,23 @@ struct PatternSpec {
     // The transforms written after the last warp (all of them when there is none),
     // object transforms included: its inverse applies to hit points first.
     CompactTransform transform;
-    // Mandel only: how points that escape (exterior, types 0-8) and points that stay
-    // (interior, types 0-6) get their value, each with its factor (POV-Ray's defaults).
+    // Mandel, julia and magnet (iterations in `scalar`): how points that escape
+    // (exterior, types 0-8) and points that stay (interior, types 0-6) get their value,
+    // each with its factor (POV-Ray's defaults); the exponent (2-33, mandel and julia),
+    // julia's constant, and magnet's formula (1 or 2) and form (mandel or julia).
     struct Fractal {
         uint8_t exterior_type = 1, interior_type = 0;
         Real exterior_factor = 1, interior_factor = 1;
+        uint8_t exponent = 2;
+        uint8_t magnet_formula = 1;
+        bool magnet_julia = false;
+        Real c_re = 0, c_im = 0;  // julia (and magnet julia) constant
     } fractal;
+    // Facets only: `coords` (0: facets follow the normal, else the point and the
+    // perturbation's weight), `size` and `metric`.
+    struct Facets {
+        Real coords = 0, size = 0.1, metric = 2;
+    } facets;
     // Slope only (PatternSpec::slope), as POV-Ray keeps it: the unit directions (or
     // point_at's point), each modulation as (low, high - low), 0 range for none, and the
     // shares of slope and altitude in the value. `axis` is +-(1 + index) when a

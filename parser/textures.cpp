@@ -49,16 +49,45 @@ constexpr PatternName kPatterns[] = {
     {"planar", PatternKind::Planar},
     {"cells", PatternKind::Cells},
     {"average", PatternKind::Average},
+    {"square", PatternKind::Square},
+    {"triangular", PatternKind::Triangular},
+    {"cubic", PatternKind::Cubic},
+    {"julia", PatternKind::Julia},
+    {"magnet", PatternKind::Magnet},
+    {"tiling", PatternKind::Tiling},
 };
 
 bool is_unsupported_pattern(std::string_view w) {
-    static constexpr std::string_view kNames[] = {
-        "material_map", "facets",     "pavement",     "tiling", "julia",  "magnet",
-        "tiles",        "proportion", "gradient_map", "cubic",  "square", "triangular"};
+    static constexpr std::string_view kNames[] = {"material_map", "pavement"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
     return false;
+}
+
+// How many entries the block patterns take right after their keyword (checker
+// rgb A, rgb B; ...); 0 for the other patterns.
+int entry_list_size(PatternKind k) {
+    switch (k) {
+        case PatternKind::Checker:
+        case PatternKind::Brick:
+        case PatternKind::ObjectInside:
+            return 2;
+        case PatternKind::Hexagon:
+            return 3;
+        case PatternKind::Square:
+            return 4;
+        case PatternKind::Triangular:
+        case PatternKind::Cubic:
+            return 6;
+        default:
+            return 0;
+    }
+}
+
+bool is_fractal(PatternKind k) {
+    return k == PatternKind::Mandel || k == PatternKind::Julia ||
+           k == PatternKind::Magnet;
 }
 
 }  // namespace
@@ -258,6 +287,9 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
         spec.image = parse_image_block(t, nullptr, ImageBlock::ImagePattern);
         return true;
     }
+    // parse_normal_body reads facets before coming here.
+    if (w == "facets")
+        error(t, "Keyword 'facets' can only be used in a normal statement.");
     if (w == "function") {
         // `function { EXPR }` of x, y, z (a declared function is called inside it:
         // `function { F(x, y, z) }`).
@@ -321,9 +353,54 @@ bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
                 spec.wave = WaveType::Triangle;
                 break;
             case PatternKind::Mandel:
-                spec.scalar = parse_float();
-                spec.fractal = {};  // POV-Ray's default colouring
+                spec.fractal = {};  // POV-Ray's default colouring, exponent 2
+                spec.scalar = parse_int();
                 break;
+            case PatternKind::Tiling: {
+                const Token at = peek();
+                const int n = saturating_int(parse_float());
+                if (n < 1 || n > 27) error(at, "Tiling number must be between 1 and 27.");
+                if (n > kTilingsImplemented)
+                    unsupported(at, "tiling " + std::to_string(n));
+                spec.scalar = n;
+                break;
+            }
+            case PatternKind::Julia: {
+                spec.fractal = {};
+                const ProfilePoint c = parse_uv_vector();
+                spec.fractal.c_re = c.x;
+                spec.fractal.c_im = c.y;
+                accept_punct(',');
+                spec.scalar = parse_int();
+                break;
+            }
+            case PatternKind::Magnet: {
+                // `magnet 1|2 mandel ITERATIONS` or `magnet 1|2 julia <c>, ITERATIONS`.
+                spec.fractal = {};
+                const Token at = peek();
+                const int formula = parse_int();
+                const Token form = next();
+                const bool julia = is_word(form, "julia");
+                if (!julia && !is_word(form, "mandel"))
+                    error(form,
+                          "Invalid magnet pattern found. Valid types are 'mandel' and "
+                          "'julia'.");
+                if (formula != 1 && formula != 2)
+                    error(at, julia ? "Invalid magnet-julia pattern type found. Valid "
+                                      "types are 1 and 2."
+                                    : "Invalid magnet-mandel pattern type found. Valid "
+                                      "types are 1 and 2.");
+                spec.fractal.magnet_formula = uint8_t(formula);
+                spec.fractal.magnet_julia = julia;
+                if (julia) {
+                    const ProfilePoint c = parse_uv_vector();
+                    spec.fractal.c_re = c.x;
+                    spec.fractal.c_im = c.y;
+                    accept_punct(',');
+                }
+                spec.scalar = parse_int();
+                break;
+            }
             case PatternKind::Quilted:
                 spec.vector = {1, 1, 0};  // control0, control1 defaults
                 break;
@@ -411,7 +488,37 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     } else if (w == "brick_size") {
         spec.vector2 = parse_vector();
     } else if (w == "metric") {
-        spec.scalar = parse_float();  // crackle: scalar = metric, vector = form
+        // A vector (POV-Ray reads its x); crackle keeps it in scalar.
+        const Real metric = parse_vector().x;
+        if (spec.kind == PatternKind::Facets)
+            spec.facets.metric = metric;
+        else if (spec.kind == PatternKind::Crackle)
+            spec.scalar = metric;
+        else
+            error(t,
+                  "Keyword 'metric' can only be used in a facets or crackle statement.");
+    } else if (w == "size") {
+        if (spec.kind != PatternKind::Facets)
+            error(t, "Keyword 'size' can only be used in a facets statement.");
+        spec.facets.size = parse_float();
+    } else if (w == "coords") {
+        if (spec.kind != PatternKind::Facets)
+            error(t, "Keyword 'coords' can only be used in a facets statement.");
+        spec.facets.coords = parse_float();
+    } else if (w == "exponent") {
+        if (spec.kind != PatternKind::Mandel && spec.kind != PatternKind::Julia)
+            error(t,
+                  "Keyword 'exponent' can only be used in a mandel or julia statement.");
+        const int n = parse_int();
+        if (n >= 2 && n <= 33) {
+            spec.fractal.exponent = uint8_t(n);
+        } else {
+            warn(t, std::string("Invalid ") +
+                        (spec.kind == PatternKind::Julia ? "julia" : "mandel") +
+                        " pattern exponent found. Supported exponents are 2 to 33. Using "
+                        "default exponent 2.");
+            spec.fractal.exponent = 2;
+        }
     } else if (w == "form") {
         spec.vector = parse_vector();
     } else if (w == "offset") {
@@ -420,9 +527,8 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
         spec.vector2.y = 1;
     } else if (w == "interior" || w == "exterior") {
         // Fractal colouring: `exterior TYPE, FACTOR`, `interior TYPE, FACTOR`. POV-Ray
-        // takes them on mandel, julia, magnet and pavement; povwall has mandel only (the
-        // others are refused as patterns).
-        if (spec.kind != PatternKind::Mandel)
+        // takes them on mandel, julia, magnet and pavement (refused as a pattern).
+        if (!is_fractal(spec.kind))
             error(t, "keyword '" + std::string(w) +
                          "' can only be used in a mandel, julia, magnet or pavement "
                          "statement");
@@ -483,6 +589,8 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
                 accept_punct(',');
                 wp.plane_offset = parse_float();
             }
+        } else if (kind == "cubic") {
+            wp.kind = Warp::Kind::Cubic;
         } else {
             unsupported(k, "warp " + std::string(k.text));
         }
@@ -569,12 +677,10 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
         // the common case (the pattern tables are long).
         const bool colour = t.kind == TokenKind::Word && is_colour_word(t.text);
         if (!colour && try_pattern_keyword(t, p.pattern)) {
-            // checker/hexagon/brick take their colours or pigments right after the
-            // keyword
+            // The block patterns (and the object pattern) take their colours or
+            // pigments right after the keyword (POV-Ray's Parse_Blend_List).
             const bool object_pattern = p.pattern->kind == PatternKind::ObjectInside;
-            if (p.pattern->kind == PatternKind::Checker ||
-                p.pattern->kind == PatternKind::Hexagon ||
-                p.pattern->kind == PatternKind::Brick || object_pattern) {
+            if (const int count = entry_list_size(p.pattern->kind)) {
                 // The list replaces the map an earlier block gave.
                 if (p.maps.allocated()) {
                     PigmentMaps& m = p.maps.edit();
@@ -582,12 +688,13 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                     m.map_values.clear();
                     m.list.clear();
                 }
-                int count = p.pattern->kind == PatternKind::Hexagon ? 3 : 2;
-                for (int i = 0; i < count; ++i) {
-                    if (i) accept_punct(',');
+                const bool pigments = is_word(peek(), "pigment");
+                int given = 0;
+                for (; given < count; ++given) {
+                    if (given) accept_punct(',');
                     const Token& n = peek();
-                    if (is_word(n, "pigment")) {
-                        next();
+                    if (pigments) {
+                        if (!accept_word("pigment")) break;
                         p.maps.edit().list.push_back(parse_pigment_block());
                     } else if (is_punct(n, '}') ||
                                (n.kind == TokenKind::Word && !lookup(n) &&
@@ -601,6 +708,10 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                         p.maps.edit().list.push_back(sub);
                     }
                 }
+                // Missing pigments are the default pigment (missing colours, the
+                // pattern's default colours, come from the evaluator).
+                for (; pigments && given < count; ++given)
+                    p.maps.edit().list.push_back(default_texture_.pigment);
                 if (object_pattern) expect_punct('}', "to close the object pattern");
             }
             continue;
@@ -613,8 +724,12 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                 p.pattern.edit().kind = PatternKind::Solid;
             p.colour = parse_colour_value();
         } else if (w == "color_map" || w == "colour_map") {
+            if (entry_list_size(p.pattern->kind))
+                error(t, "Cannot use color_map with this pattern type.");
             p.maps.edit().colour_map = parse_colour_map_block();
         } else if (w == "pigment_map" || w == "density_map") {
+            if (w == "pigment_map" && entry_list_size(p.pattern->kind))
+                error(t, "Keyword 'pigment_map' cannot be used with this pigment type.");
             // A density_map blends densities as a pigment_map blends pigments (POV-Ray
             // evaluates both as pigments); its entries start from an empty density.
             const bool density = w == "density_map";
@@ -623,6 +738,9 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                     case PatternKind::Checker:
                     case PatternKind::Brick:
                     case PatternKind::Hexagon:
+                    case PatternKind::Square:
+                    case PatternKind::Triangular:
+                    case PatternKind::Cubic:
                     case PatternKind::Solid:
                     case PatternKind::ImageMap:
                         error(t, "a density_map cannot be used with this pattern type");
@@ -716,21 +834,40 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
     }
     for (;;) {
         Token t = next();
-        if (is_punct(t, terminator)) return;
-        if (try_pattern_keyword(t, n.pattern)) {
+        if (is_punct(t, terminator)) {
+            // POV-Ray has no facets value to look a map up with: it stops rendering
+            // ("Problem in Evaluate_TPat").
+            if (n.pattern->kind == PatternKind::Facets && !n.map_values.empty())
+                error(t, "facets cannot select from a normal_map");
+            return;
+        }
+        // facets is a pattern of normals only (try_pattern_keyword refuses it).
+        const bool facets = is_word(t, "facets");
+        if (facets) {
+            PatternSpec& spec = n.pattern.edit();
+            spec.kind = PatternKind::Facets;
+            spec.facets = {};
+        }
+        if (facets || try_pattern_keyword(t, n.pattern)) {
             const bool object_pattern = n.pattern->kind == PatternKind::ObjectInside;
-            if (n.pattern->kind == PatternKind::Checker ||
-                n.pattern->kind == PatternKind::Hexagon ||
-                n.pattern->kind == PatternKind::Brick || object_pattern) {
+            if (const int count = entry_list_size(n.pattern->kind)) {
                 // checker normal{..} normal{..}: entries follow the keyword and replace
-                // the map an earlier block gave.
+                // the map an earlier block gave; once one is given, the missing ones are
+                // the #default normal (without one POV-Ray crashes on them: refused).
                 n.list.clear();
                 n.map_values.clear();
-                int count = n.pattern->kind == PatternKind::Hexagon ? 3 : 2;
                 for (int i = 0; i < count; ++i) {
                     if (i) accept_punct(',');
-                    if (!accept_word("normal")) break;
-                    n.list.push_back(parse_normal_block());
+                    if (i == 0 && !is_word(peek(), "normal")) break;
+                    if (accept_word("normal")) {
+                        n.list.push_back(parse_normal_block());
+                    } else {
+                        if (!default_texture_.normal)
+                            error(t, "give all " + std::to_string(count) +
+                                         " normals of '" + std::string(t.text) +
+                                         "' (POV-Ray 3.7 crashes on the missing ones)");
+                        n.list.push_back(*default_texture_.normal);
+                    }
                     n.map_values.push_back(float(i));
                 }
                 if (object_pattern) expect_punct('}', "to close the object pattern");
@@ -1211,7 +1348,40 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
         } else if (w == "material_map") {
             parse_material_map(t, top);
         } else if (w == "tiles") {
-            unsupported(t, w);
+            // The old checker of textures: `tiles { texture {..}.. tile2 texture {..}..
+            // }`, the first ones on the checker's odd squares; only transforms may
+            // follow.
+            PatternSpec checker;
+            checker.kind = PatternKind::Checker;
+            TextureMap map;
+            map.values = {0, 1};
+            map.entries.resize(2);
+            expect_punct('{', "after 'tiles'");
+            while (accept_word("texture")) {
+                LayeredTexture layer = parse_texture_block();
+                map.entries[1].insert(map.entries[1].end(), layer.begin(), layer.end());
+            }
+            const Token tile2 = next();
+            if (!is_word(tile2, "tile2")) expected("'tile2'", tile2);
+            while (accept_word("texture")) {
+                LayeredTexture layer = parse_texture_block();
+                map.entries[0].insert(map.entries[0].end(), layer.begin(), layer.end());
+            }
+            expect_punct('}', "to close 'tiles'");
+            if (map.entries[1].empty()) error(t, "First texture missing from tiles");
+            if (map.entries[0].empty()) map.entries[0].push_back(default_texture_);
+            Texture tiles;
+            tiles.map_pattern = checker;
+            tiles.map = map;
+            layers = {std::move(tiles)};
+            for (;;) {
+                Token m = next();
+                if (is_punct(m, terminator)) return;
+                Transform step;
+                if (!try_transform(m, step))
+                    expected("a transform or '" + std::string(1, terminator) + "'", m);
+                transform_textures(layers, step);
+            }
         } else if (top.map_pattern && try_pattern_modifier(t, *top.map_pattern)) {
             continue;
         } else {
@@ -1219,17 +1389,17 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
             if (t.kind == TokenKind::Word && try_pattern_keyword(t, spec)) {
                 top.map_pattern = spec;
                 const bool object_pattern = spec.kind == PatternKind::ObjectInside;
-                if (spec.kind == PatternKind::Checker ||
-                    spec.kind == PatternKind::Hexagon ||
-                    spec.kind == PatternKind::Brick || object_pattern) {
-                    // checker texture{..} texture{..}: entries follow the keyword.
+                if (const int count = entry_list_size(spec.kind)) {
+                    // checker texture{..} texture{..}: entries follow the keyword; the
+                    // missing ones are the default texture.
                     top.map.edit().entries.clear();
                     top.map.edit().values.clear();
-                    int count = spec.kind == PatternKind::Hexagon ? 3 : 2;
                     for (int i = 0; i < count; ++i) {
                         if (i) accept_punct(',');
-                        if (!accept_word("texture")) break;
-                        top.map.edit().entries.push_back(parse_texture_block());
+                        if (accept_word("texture"))
+                            top.map.edit().entries.push_back(parse_texture_block());
+                        else
+                            top.map.edit().entries.push_back({default_texture_});
                         top.map.edit().values.push_back(float(i));
                     }
                     if (object_pattern) expect_punct('}', "to close the object pattern");

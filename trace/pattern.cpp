@@ -141,6 +141,8 @@ Point3 apply_mapping_warp(const Warp& w, const Point3& p) {
         }
         case Warp::Kind::Planar:
             return orient(w, x, y, w.plane_offset);
+        case Warp::Kind::Cubic:
+            return cubic_warp(p);
         default:
             return p;
     }
@@ -150,7 +152,9 @@ Point3 apply_mapping_warp(const Warp& w, const Point3& p) {
 
 Real brick(const PatternSpec& s, const Point3& p) {
     Vector3 size = s.vector2 == Vector3(0, 0, 0) ? Vector3(8.0, 3.0, 4.5) : s.vector2;
-    Real mortar = s.scalar != 0 ? s.scalar : 0.5 - kEpsilon * 2.0;
+    // POV-Ray keeps `mortar` minus 2e-10 in single precision: the default 0.5 stays 0.5,
+    // so a face on a joint (the mortar's far edge plus 1e-10) reads as mortar.
+    const Real mortar = float((s.scalar != 0 ? s.scalar : 0.5) - kEpsilon * 2.0);
     Real fudge = kEpsilon + mortar;
     Real x = p.x + fudge, y = p.y + fudge, z = p.z + fudge;
     auto frac = [](Real v) {
@@ -225,71 +229,6 @@ Real wrinkles(const Point3& p, int gen) {
         omega *= 0.5;
     }
     return value / 2.0;
-}
-
-// POV-Ray's mandel: z -> z^2 + c from z = c = (x, y); a point escapes once |z|^2 > 4.
-// The colouring types follow fractal_exterior_color / fractal_interior_color, interior
-// type 6's missing parentheses included.
-Real mandel(const Point3& p, int iterations, const PatternSpec::Fractal& f) {
-    Real a = p.x, b = p.y, x = a, y = b, a2 = a * a, b2 = b * b;
-    Real mindist2 = a2 + b2;
-    int col = 0;
-    for (; col < iterations; ++col) {
-        b = 2.0 * a * b + y;
-        a = a2 - b2 + x;
-        a2 = a * a;
-        b2 = b * b;
-        const Real dist2 = a2 + b2;
-        if (dist2 < mindist2) mindist2 = dist2;
-        if (dist2 > 4.0) {
-            const Real e = f.exterior_factor;
-            switch (f.exterior_type) {
-                case 0:
-                    return e;
-                case 1:
-                    return Real(col) / Real(iterations);
-                case 2:
-                    return a * e;
-                case 3:
-                    return b * e;
-                case 4:
-                    return a * a * e;
-                case 5:
-                    return b * b * e;
-                case 6:
-                    return std::sqrt(a * a + b * b) * e;
-                case 7: {  // 0 .. (n-1)/n
-                    const auto n = unsigned(e);
-                    return n ? Real(unsigned(col) % n) / e : 0.0;
-                }
-                case 8: {  // 0 .. 1
-                    const auto n = unsigned(1 + e);
-                    return n ? Real(unsigned(col) % n) / e : 0.0;
-                }
-                default:
-                    return 0;
-            }
-        }
-    }
-    const Real i = f.interior_factor;
-    switch (f.interior_type) {
-        case 0:
-            return i;
-        case 1:
-            return std::sqrt(mindist2) * i;
-        case 2:
-            return a * i;
-        case 3:
-            return b * i;
-        case 4:
-            return a * a * i;
-        case 5:
-            return b * b * i;
-        case 6:
-            return a * a + b * b * i;  // sic
-        default:
-            return 0;
-    }
 }
 
 Real spiral_angle_term(const Point3& p, Real arms, Real& rad) {
@@ -505,7 +444,19 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
             return v * v;
         }
         case PatternKind::Mandel:
-            return mandel(p, int(s.scalar), s.fractal);
+        case PatternKind::Julia:
+        case PatternKind::Magnet:
+            return fractal_value(s, p);
+        case PatternKind::Square:
+            return square_value(p);
+        case PatternKind::Triangular:
+            return triangular_value(p);
+        case PatternKind::Cubic:
+            return cubic_value(p);
+        case PatternKind::Tiling:
+            return tiling_value(int(s.scalar), p);
+        case PatternKind::Facets:  // a normal only (its value where a pattern is read)
+            return 0;
         case PatternKind::Marble: {
             Real t =
                 turb ? turb->turbulence.x * turbulence(p, turb_params(turb), gen) : 0.0;
@@ -786,7 +737,7 @@ MapPick pick_map_entries(const PatternSpec& spec, const float* values, int count
     }
     Real value = detail::value_at(spec, pick.point, env);
     if (values == nullptr || count <= 0) {
-        int index = std::clamp(int(value), 0, 2);
+        int index = std::clamp(int(value), 0, detail::list_size(spec.kind) - 1);
         pick.lookup.prev = pick.lookup.cur = index;
         return pick;
     }

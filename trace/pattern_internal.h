@@ -34,13 +34,46 @@ void bump_map_normal(const ImageMapping& m, Real amount, const Point3& p, Vector
 // density_pattern; `interpolation` as the scene wrote it).
 Real density_file_value(const DensityFile& file, int interpolation, const Point3& p);
 
+// mandel, julia and magnet (pattern_fractal.cpp).
+Real fractal_value(const PatternSpec& spec, const Point3& p);
+
+// The block patterns and the cubic warp (pattern_blocks.cpp).
+Real square_value(const Point3& p);
+Real triangular_value(const Point3& p);
+Real cubic_value(const Point3& p);
+Point3 cubic_warp(const Point3& p);
+
+// `tiling n` (pattern_tiling.cpp) for n up to kTilingsImplemented (others: square).
+Real tiling_value(int n, const Point3& p);
+
+// facets: replaces (or with `coords`, perturbs) pattern-space normal n at point p
+// (pattern_facets.cpp).
+void facets_normal(const PatternSpec::Facets& facets, const Point3& p, Vector3& n);
+
 inline int resolve_generator(const PatternSpec& spec, const PatternEnv& env) {
     return spec.noise_generator != 0 ? spec.noise_generator : env.noise_generator;
 }
 
+// The patterns whose value is an entry index (their lists: checker 2, brick 2, hexagon
+// 3, square 4, triangular and cubic 6 entries).
 inline bool is_discrete(PatternKind k) {
     return k == PatternKind::Checker || k == PatternKind::Brick ||
-           k == PatternKind::Hexagon || k == PatternKind::ObjectInside;
+           k == PatternKind::Hexagon || k == PatternKind::Square ||
+           k == PatternKind::Triangular || k == PatternKind::Cubic ||
+           k == PatternKind::ObjectInside;
+}
+inline int list_size(PatternKind k) {
+    switch (k) {
+        case PatternKind::Hexagon:
+            return 3;
+        case PatternKind::Square:
+            return 4;
+        case PatternKind::Triangular:
+        case PatternKind::Cubic:
+            return 6;
+        default:
+            return 2;
+    }
 }
 
 // The surface coordinates (u, v, 0) of the hit `env` sees (trace/uv_mapping.h); the

@@ -1,6 +1,6 @@
 // Normal perturbation as POV-Ray 3.7's Perturb_Normal: the dedicated bumps/dents/ripples/
-// waves/wrinkles normals, any other pattern sampled at four points of a tetrahedron
-// (accuracy) and scaled by bump_size, and normal_map blending.
+// waves/wrinkles/quilted/facets normals, any other pattern sampled at four points of a
+// tetrahedron (accuracy) and scaled by bump_size, and normal_map blending.
 #include <algorithm>
 #include <cmath>
 
@@ -20,7 +20,7 @@ bool has_dedicated_normal(PatternKind k) {
     return k == PatternKind::Bumps || k == PatternKind::Dents ||
            k == PatternKind::Ripples || k == PatternKind::Waves ||
            k == PatternKind::Wrinkles || k == PatternKind::Quilted ||
-           k == PatternKind::ImageMap;
+           k == PatternKind::ImageMap || k == PatternKind::Facets;
 }
 
 // Adds the dedicated normal pattern's displacement at pattern-space point p to n.
@@ -74,6 +74,9 @@ void displace(const Normal& nm, const Point3& p, Vector3& n, const PatternEnv& e
         }
         case PatternKind::ImageMap:
             if (s.image) detail::bump_map_normal(*s.image, nm.amount, p, n);
+            break;
+        case PatternKind::Facets:
+            detail::facets_normal(s.facets, p, n);
             break;
         default:
             break;

@@ -19,7 +19,8 @@ constexpr Rgb kBlack{0, 0, 0}, kWhite{1, 1, 1}, kRed{1, 0, 0}, kGreen{0, 1, 0},
     kBlue{0, 0, 1}, kCyan{0, 1, 1}, kYellow{1, 1, 0}, kMagenta{1, 0, 1};
 
 // POV-Ray's built-in maps for pigments given without a colour_map (pigment.cpp).
-const DefaultMap& default_map(PatternKind k) {
+const DefaultMap& default_map(const PatternSpec& spec) {
+    const PatternKind k = spec.kind;
     static const DefaultMap kGray{2, {0, 1}, {kBlack, kWhite}};
     static const DefaultMap kBozo{6,
                                   {0.4f, 0.4f, 0.6f, 0.6f, 0.8f, 0.8f},
@@ -43,6 +44,13 @@ const DefaultMap& default_map(PatternKind k) {
     // Checker reuses the hexagon entries (first two), as POV-Ray does.
     static const DefaultMap kHex{3, {0.0f, 1.0f, 2.0f}, {kBlue, kGreen, kRed}};
     static const DefaultMap kChecker{2, {0.0f, 1.0f}, {kBlue, kGreen}};
+    // Square and triangular take the first four or all six cubic colours, as POV-Ray
+    // does (entry lists select by index).
+    static const DefaultMap kCubic{6,
+                                   {0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f},
+                                   {kRed, kGreen, kBlue, kYellow, kCyan, kMagenta}};
+    static const DefaultMap kSquare{
+        4, {0.0f, 1.0f, 2.0f, 3.0f}, {kRed, kGreen, kBlue, kYellow}};
     switch (k) {
         case PatternKind::Bozo:
             return kBozo;
@@ -50,8 +58,8 @@ const DefaultMap& default_map(PatternKind k) {
             return kBrick;
         case PatternKind::Wood:
             return kWood;
-        case PatternKind::Mandel:
-            return kMandel;
+        case PatternKind::Mandel:  // the other exponents read as another pattern
+            return spec.fractal.exponent == 2 ? kMandel : kGray;
         case PatternKind::Radial:
             return kRadial;
         case PatternKind::Agate:
@@ -63,6 +71,11 @@ const DefaultMap& default_map(PatternKind k) {
         case PatternKind::Checker:
         case PatternKind::ObjectInside:  // POV-Ray gives it checker's default list
             return kChecker;
+        case PatternKind::Square:
+            return kSquare;
+        case PatternKind::Triangular:
+        case PatternKind::Cubic:
+            return kCubic;
         default:
             return kGray;
     }
@@ -111,14 +124,15 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
     }
     Real value = detail::value_at(spec, p, env);
 
-    // checker/hexagon/brick with their own entries: the value is the entry index.
+    // checker/hexagon/brick/square/triangular/cubic: the value is the index into their
+    // entries, the default colours standing for the entries not given.
     if (detail::is_discrete(spec.kind) && pigment.maps->map_values.empty() &&
         pigment.maps->colour_map.empty()) {
-        int index = std::clamp(int(value), 0, 2);
+        int index = std::clamp(int(value), 0, detail::list_size(spec.kind) - 1);
         if (index < int(pigment.maps->list.size())) {
             return evaluate_pigment(pigment.maps->list[size_t(index)], p, env);
         }
-        const DefaultMap& d = default_map(spec.kind);
+        const DefaultMap& d = default_map(spec);
         return Colour{d.colours[size_t(std::min(index, d.count - 1))]};
     }
 
@@ -146,7 +160,7 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
         return blend(map[size_t(m.prev)].colour, cur, m.fraction);
     }
 
-    const DefaultMap& d = default_map(spec.kind);
+    const DefaultMap& d = default_map(spec);
     MapLookup m = search_map(d.values.data(), d.count, value);
     Colour cur{d.colours[size_t(m.cur)]};
     if (m.prev == m.cur) return cur;

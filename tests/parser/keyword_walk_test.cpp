@@ -7,9 +7,9 @@
 //   - in scenes/golden/*.pov and *.inc (the golden suite renders each with both and
 //     compares the images) or tests/lang/*.pov (each prints values that must equal
 //     POV-Ray's printout), outside comments and string literals;
-//   - in a string literal of tests/trace/pattern_test.cpp, normal_test.cpp or
-//     pov_compare_test.cpp: those literals are the .pov text those tests hand to POV-Ray
-//     and compare with povwall's result.
+//   - in a string literal of tests/trace/pattern_test.cpp, normal_test.cpp,
+//     pov_compare_test.cpp or pattern_parsed_test.cpp: those literals are the .pov text
+//     those tests hand to POV-Ray and compare with povwall's result.
 // Every other keyword has exactly one line in keyword_classes.txt, which says why it is
 // not implemented, and this test checks what the line claims:
 //   refused KEYWORD | FEATURE | SNIPPET
@@ -171,8 +171,9 @@ std::set<std::string> compared_words() {
                 add_pov_words(read_file(e.path()), words);
         }
     }
-    for (const char* f : {"tests/trace/pattern_test.cpp", "tests/trace/normal_test.cpp",
-                          "tests/trace/pov_compare_test.cpp"})
+    for (const char* f :
+         {"tests/trace/pattern_test.cpp", "tests/trace/normal_test.cpp",
+          "tests/trace/pov_compare_test.cpp", "tests/trace/pattern_parsed_test.cpp"})
         add_cpp_string_words(read_file(root / f), words);
     return words;
 }

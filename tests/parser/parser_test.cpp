@@ -497,6 +497,54 @@ TEST(Errors, UnsupportedFeatureIsNamed) {
     }
 }
 
+// The patterns of textures II: the tilings povwall lacks and pavement are refused by
+// name; the misuses POV-Ray rejects are errors with its messages; proportion and
+// gradient_map (no pattern in any POV-Ray) are plain words.
+TEST(Errors, PatternRefusalsAndMisuses) {
+    auto refusal = [](const std::string& text) {
+        try {
+            parse(text);
+        } catch (const ParseError& e) {
+            return e.kind() == ParseError::Kind::Unsupported ? e.message() : "(an error)";
+        }
+        return std::string("(no error)");
+    };
+    auto message = [](const std::string& text) {
+        try {
+            parse(text);
+        } catch (const ParseError& e) {
+            return e.message();
+        }
+        return std::string("(no error)");
+    };
+    for (int n = kTilingsImplemented + 1; n <= 27; ++n)
+        EXPECT_EQ(refusal("plane { y, 0 pigment { tiling " + std::to_string(n) + " } }"),
+                  "unsupported: tiling " + std::to_string(n));
+    EXPECT_EQ(message("plane { y, 0 pigment { tiling 28 } }"),
+              "Tiling number must be between 1 and 27.");
+    EXPECT_EQ(
+        message("plane { y, 0 normal { checker normal { bumps } } }"),
+        "give all 2 normals of 'checker' (POV-Ray 3.7 crashes on the missing ones)");
+    EXPECT_EQ(refusal("plane { y, 0 pigment { pavement } }"), "unsupported: pavement");
+    EXPECT_EQ(refusal("plane { y, 0 pigment { proportion } }"), "(an error)");
+    EXPECT_EQ(refusal("plane { y, 0 pigment { gradient_map } }"), "(an error)");
+    EXPECT_EQ(
+        message("plane { y, 0 pigment { square colour_map { [0 rgb 0] [1 rgb 1] } } }"),
+        "Cannot use color_map with this pattern type.");
+    EXPECT_EQ(message("plane { y, 0 pigment { checker pigment_map { [0 rgb 0] } } }"),
+              "Keyword 'pigment_map' cannot be used with this pigment type.");
+    EXPECT_EQ(message("plane { y, 0 pigment { facets } }"),
+              "Keyword 'facets' can only be used in a normal statement.");
+    EXPECT_EQ(message("plane { y, 0 pigment { magnet 3 mandel 20 } }"),
+              "Invalid magnet-mandel pattern type found. Valid types are 1 and 2.");
+    EXPECT_EQ(message("plane { y, 0 pigment { magnet 1 mandel 20 exponent 3 } }"),
+              "Keyword 'exponent' can only be used in a mandel or julia statement.");
+    EXPECT_EQ(message("plane { y, 0 normal { bumps size 0.3 } }"),
+              "Keyword 'size' can only be used in a facets statement.");
+    EXPECT_EQ(message("plane { y, 0 texture { tiles { tile2 texture { } } } }"),
+              "First texture missing from tiles");
+}
+
 }  // namespace
 }  // namespace povwall::parser
 
