@@ -485,7 +485,7 @@ DistributionPlan plan_distribution(const Scene& scene,
         if (ph->loc.valid() && size_t(ph->loc.file) < scene.files.size())
             at = scene.files[size_t(ph->loc.file)] + ":" + std::to_string(ph->loc.line) +
                  ":" + std::to_string(ph->loc.column) + ": ";
-        throw DistributionError(at +
+        throw UnsupportedInMode(at +
                                 "error: unsupported: photons with space subdivision "
                                 "(black boxes hold parts of the scene; the photon map "
                                 "needs the whole): use --mode single or screen");

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <queue>
 #include <unordered_set>
@@ -111,6 +113,7 @@ class Shooter {
 
     void shoot(const Light& light, size_t light_index, const Target& target,
                size_t target_index, const std::vector<const Object*>& frames);
+    uint64_t shot() const { return shot_; }
 
   private:
     void trace(const TraceRay& ray, Rgb colour, int level, bool prev_pass, double depth);
@@ -127,6 +130,7 @@ class Shooter {
     const Target* target_ = nullptr;
     double spread_ = 0;
     bool hit_target_ = false;
+    uint64_t shot_ = 0;
 };
 
 void Shooter::shoot(const Light& light, size_t light_index, const Target& target,
@@ -217,6 +221,7 @@ void Shooter::shoot(const Light& light, size_t light_index, const Target& target
             ray.ray = {light.location, normalize(dir)};
             ray.use = RayUse::Camera;
             ray.interiors = start;
+            ++shot_;
             trace(ray, light.colour * float(attenuation), 0, false, 0);
         }
         if (hit_target_) hit_once = true;
@@ -253,7 +258,7 @@ void Shooter::trace(const TraceRay& ray, Rgb colour, int level, bool prev_pass,
     const Rgb arriving = colour;
     Rgb att(m.interior ? m.interior->old_refract : 1.0f);
     if (m.interior && ray.interiors.contains(m.interior_id))
-        att *= interior_attenuation(*m.interior, hit.t, false);
+        att *= interior_attenuation(*m.interior, hit.t, true);  // fade_power > 0 only
     colour *= att;
     depth += hit.t;
     if (level > 1 && !prev_pass && ph.collect && m.global_lights)
@@ -282,7 +287,14 @@ void Shooter::trace(const TraceRay& ray, Rgb colour, int level, bool prev_pass,
                 const float e = 1 / child.exponent;
                 c = Rgb(std::pow(c.r, e), std::pow(c.g, e), std::pow(c.b, e));
             }
-            trace(child.trace, c * child.coeff, level, false, depth);
+            // POV-Ray's photon pass weighs a reflected photon by the reflectivity twice
+            // (ComputeReflectivity scales the layer's weight, then the reflection is
+            // traced with that weight times the reflectivity again), so adc_bailout
+            // ends reflection chains sooner than in the render.
+            TraceRay next = child.trace;
+            next.weight *=
+                std::max(child.coeff.r, std::max(child.coeff.g, child.coeff.b));
+            trace(next, c * child.coeff, level, false, depth);
         }
     }
 }
@@ -511,6 +523,11 @@ std::shared_ptr<const PhotonMap> build_photon_map(const PreparedScene& scene) {
     if (map->photons_.empty()) return map;
     map->build_tree(0, map->photons_.size());
     map->estimate_gather_radius();
+    // POVWALL_PHOTON_STATS=1: what the pass made (to set beside POV-Ray's statistics).
+    if (std::getenv("POVWALL_PHOTON_STATS"))
+        std::fprintf(stderr, "photons: %zu stored, %llu shot, gather radius %g\n",
+                     map->photons_.size(), (unsigned long long)shooter.shot(),
+                     map->min_radius_);
     return map;
 }
 
