@@ -13,8 +13,8 @@ using test::parse;
 
 TEST(Photons, GlobalBlockTakesPovRaysDefaultsThenItsItems) {
     auto s = parse("global_settings { photons { spacing 0.02 } }");
-    ASSERT_TRUE(s->settings.photons);
-    const PhotonSettings& p = *s->settings.photons;
+    ASSERT_TRUE(s.settings.photons);
+    const PhotonSettings& p = *s.settings.photons;
     EXPECT_FLOAT_EQ(p.spacing, 0.02f);
     EXPECT_EQ(p.count, 0);
     EXPECT_EQ(p.gather_min, 20);
@@ -30,7 +30,7 @@ TEST(Photons, GlobalBlockTakesPovRaysDefaultsThenItsItems) {
         "global_settings { photons { count 5000 gather 10, 50 jitter 0.2 autostop 0 "
         "expand_thresholds 0.1, 20 max_trace_level 4 adc_bailout 0.01 radius 0.3, 2 "
         "media 0 } }");
-    const PhotonSettings& q = *s->settings.photons;
+    const PhotonSettings& q = *s.settings.photons;
     EXPECT_EQ(q.count, 5000);
     EXPECT_EQ(q.gather_min, 10);
     EXPECT_EQ(q.gather_max, 50);
@@ -43,7 +43,7 @@ TEST(Photons, GlobalBlockTakesPovRaysDefaultsThenItsItems) {
     EXPECT_FLOAT_EQ(q.radius, 0.3f);
     EXPECT_FLOAT_EQ(q.radius_multiplier, 2);
     // gather's maximum 0: no photon maps (POV-Ray).
-    EXPECT_FALSE(parse("global_settings { photons { gather 0, 0 } }")->settings.photons);
+    EXPECT_FALSE(parse("global_settings { photons { gather 0, 0 } }").settings.photons);
 }
 
 TEST(Photons, ObjectFlagsComeDownToTheChildren) {
@@ -53,8 +53,8 @@ TEST(Photons, ObjectFlagsComeDownToTheChildren) {
         "  photons { target 0.5 refraction on reflection on collect off } "
         "split_union off }\n"
         "sphere { 0, 1 photons { pass_through } }");
-    ASSERT_EQ(s->objects.size(), 2u);
-    const Csg& u = std::get<Csg>(s->objects[0].shape);
+    ASSERT_EQ(s.objects.size(), 2u);
+    const Csg& u = std::get<Csg>(s.objects[0].shape);
     for (const Object& c : u.children) {
         EXPECT_TRUE(c.photons.target);
         EXPECT_FLOAT_EQ(c.photons.spacing_multiplier, 0.5f);
@@ -63,9 +63,9 @@ TEST(Photons, ObjectFlagsComeDownToTheChildren) {
         EXPECT_EQ(c.photons.reflection, PhotonSwitch::On);
         EXPECT_FALSE(c.photons.collect);
     }
-    EXPECT_FALSE(s->objects[0].split_union);
-    EXPECT_TRUE(s->objects[1].photons.pass_through);
-    EXPECT_FALSE(s->objects[1].photons.target);
+    EXPECT_FALSE(s.objects[0].split_union);
+    EXPECT_TRUE(s.objects[1].photons.pass_through);
+    EXPECT_FALSE(s.objects[1].photons.target);
 }
 
 TEST(Photons, PassThroughWithTargetAndRefractionGivesWay) {
@@ -73,16 +73,16 @@ TEST(Photons, PassThroughWithTargetAndRefractionGivesWay) {
     auto s = parse(
         "sphere { 0, 1 photons { target refraction on pass_through } }\n"
         "sphere { 0, 1 photons { pass_through target } }");
-    EXPECT_EQ(s->objects[0].photons.refraction, PhotonSwitch::Off);
-    EXPECT_TRUE(s->objects[0].photons.pass_through);
-    EXPECT_EQ(s->objects[1].photons.refraction, PhotonSwitch::Off);
-    EXPECT_TRUE(s->objects[1].photons.pass_through);
+    EXPECT_EQ(s.objects[0].photons.refraction, PhotonSwitch::Off);
+    EXPECT_TRUE(s.objects[0].photons.pass_through);
+    EXPECT_EQ(s.objects[1].photons.refraction, PhotonSwitch::Off);
+    EXPECT_TRUE(s.objects[1].photons.pass_through);
 }
 
 TEST(Photons, LightSwitches) {
     auto s = parse("light_source { 0, 1 photons { refraction on reflection off } }");
-    EXPECT_EQ(s->lights[0].photon_refraction, PhotonSwitch::On);
-    EXPECT_EQ(s->lights[0].photon_reflection, PhotonSwitch::Off);
+    EXPECT_EQ(s.lights[0].photon_refraction, PhotonSwitch::On);
+    EXPECT_EQ(s.lights[0].photon_reflection, PhotonSwitch::Off);
 }
 
 TEST(Photons, RefusedWhereTheMapDoesNotGoYet) {
