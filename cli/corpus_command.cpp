@@ -373,10 +373,10 @@ SceneResult run_scene(const CorpusSettings& s, const CorpusScene& scene, size_t 
                       number_text(s.thresholds.warn, "%g");
     }
     if (result.block_mean) {
-        result.note += std::string(result.note.empty() ? "" : "; ") + "compared as " +
-                       std::to_string(result.block_mean) + "x" +
-                       std::to_string(result.block_mean) +
-                       " block means (POV-Ray's area-light jitter is random)";
+        result.note +=
+            std::string(result.note.empty() ? "" : "; ") + "compared as " +
+            std::to_string(result.block_mean) + "x" + std::to_string(result.block_mean) +
+            " block means (POV-Ray's area-light jitter and photons are random)";
     }
     return result;
 }

@@ -239,6 +239,9 @@ int run_render(RenderOptions o) {
         if (!o.worker_memory.empty())
             request.worker_memory = distrib::parse_memory_size(o.worker_memory);
         dplan = distrib::plan_distribution(scene, request);
+    } catch (const distrib::UnsupportedInMode& e) {
+        std::cerr << e.what() << "\n";
+        return 2;
     } catch (const distrib::DistributionError& e) {
         throw UsageError(e.what());
     }

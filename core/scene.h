@@ -736,6 +736,22 @@ struct Isosurface {
 struct Object;
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
+
+// POV-Ray's on/off switches that also remember whether they were given: an object's
+// `refraction on` or a light's turns photon refraction on unless the other says off.
+enum class PhotonSwitch : uint8_t { Unset, On, Off };
+
+// An object's `photons { target [spacing_multiplier] refraction reflection collect
+// pass_through }` (POV-Ray 3.7's PH_TARGET, PH_RFR/RFL_ON/OFF, PH_IGNORE_PHOTONS and
+// PH_PASSTHRU flags, Ph_Density).
+struct ObjectPhotons {
+    bool target = false;
+    float spacing_multiplier = 1;  // Ph_Density
+    PhotonSwitch refraction = PhotonSwitch::Unset, reflection = PhotonSwitch::Unset;
+    bool collect = true;
+    bool pass_through = false;
+};
+
 struct Csg {
     CsgKind kind = CsgKind::Union;
     std::vector<Object> children;
@@ -786,6 +802,9 @@ struct Object {
     // `global_lights` (the outermost enclosing light group's setting).
     bool global_lights = true;
     uint32_t light_group = 0;
+    // The object's `photons { }` block (POV-Ray 3.7's PH_* flags), brought down to the
+    // leaves when the object is placed (trace/photon_map.h reads the leaves' flags).
+    ObjectPhotons photons;
     // `split_union off` on a union: POV-Ray links it to the scene whole, not child by
     // child (which keeps its children's bounded_by, see pov_splits_union()).
     bool split_union = true;
@@ -851,6 +870,9 @@ struct Light {
     uint32_t light_group = 0;
     std::optional<AreaLight> area;
     std::vector<Object> looks_like;  // rendered as an object with no shadow
+    // The light's `photons { refraction reflection }` (its PH_RFR/RFL flags).
+    PhotonSwitch photon_refraction = PhotonSwitch::Unset;
+    PhotonSwitch photon_reflection = PhotonSwitch::Unset;
     SourceLoc loc;
 };
 
@@ -923,6 +945,23 @@ enum class GammaMode : uint8_t {
     Implied37,  // a 3.7 scene without assumed_gamma: working gamma 1.0
 };
 
+// global_settings { photons { } } (POV-Ray 3.7's ScenePhotonSettings with the values its
+// parser sets when the block is given). trace/photon_map.h builds the map.
+struct PhotonSettings {
+    float spacing = 1;  // surfaceSeparation
+    int count = 0;      // surfaceCount: 0 unless `count` chose the spacing
+    int gather_min = 20, gather_max = 100;
+    float jitter = 0.4f;
+    float autostop = 0.5f;
+    float expand_tolerance = 0.2f;
+    int expand_min = 35;
+    int max_trace_level = -1;  // < 0: global_settings' max_trace_level
+    float adc_bailout = -1;    // < 0: global_settings' adc_bailout
+    float radius = -1;         // gather radius; <= 0: estimated from the map
+    float radius_multiplier = 1;
+    SourceLoc loc;  // the `photons` keyword
+};
+
 struct GlobalSettings {
     int max_trace_level = 5;
     float adc_bailout = 1.0f / 255.0f;
@@ -935,6 +974,8 @@ struct GlobalSettings {
         0.70f, 0.52f,
         0.48f};  // POV-Ray 3.7's (not the 0.25, 0.18, 0.14 its documentation gives)
     int number_of_waves = 10;
+    // A photons block with gather_max > 0 (POV-Ray's photonsEnabled before +Q).
+    std::optional<PhotonSettings> photons;
 };
 
 // What an interior stack needs of a node of an object the parse left out (see

@@ -67,6 +67,11 @@ struct DistributionPlan {
 struct DistributionError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
+// The scene has a feature the chosen mode cannot render (a located `unsupported:`
+// diagnostic, printed as a parse error is).
+struct UnsupportedInMode : DistributionError {
+    using DistributionError::DistributionError;
+};
 
 // Parses "4x4x4" (equal slabs), "N" (balanced N x N x N) or "auto". Throws
 // DistributionError on a bad value.

@@ -219,11 +219,22 @@ class Interpreter {
     void check_light_groups_and_media();
     uint32_t light_groups_ = 0;  // groups numbered so far (Light::light_group)
     std::optional<Token> first_light_group_;
+    // The global photons keyword, and the first parallel or cylinder light (photons.cpp).
+    std::optional<Token> photons_at_, first_parallel_light_;
+    void check_photons();
     CameraSpec parse_camera_block();
     // The rest of a camera block read as POV-Ray read it before 3.5, from `c`.
     CameraSpec parse_legacy_camera(CameraSpec c);
     bool parse_focal_blur_item(const Token& t, CameraSpec& c);
     void parse_global_settings();
+    // photons.cpp
+    void parse_photon_settings(const Token& at);
+    void parse_light_photons(Light& l);
+    void parse_object_photons(Object& obj);
+    enum class PhotonPassThroughCause { Target, Refraction, PassThrough };
+    void check_photon_pass_through(ObjectPhotons& ph, const Token& at,
+                                   PhotonPassThroughCause cause);
+    static void inherit_photons(ObjectPhotons& child, const ObjectPhotons& parent);
     Value parse_declared_value(const Token& first);
     Value parse_item_value(const Token& t);
     void parse_array_initializer(ArrayValue& a, size_t dim, size_t base);

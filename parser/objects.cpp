@@ -454,8 +454,10 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
                             "clipped_by on a quadric by shapes other than boxes, "
                             "planes and quadrics");
         }
-    } else if (w == "photons" || w == "radiosity") {
-        // Photon and radiosity hints on an object do not change a render without them.
+    } else if (w == "photons") {
+        parse_object_photons(obj);
+    } else if (w == "radiosity") {
+        // Radiosity hints on an object do not change a render without radiosity.
         expect_punct('{');
         int depth = 1;
         while (depth > 0) {
@@ -854,6 +856,7 @@ void Interpreter::place_object(Object& obj, const Object* parent,
         obj.no_image |= parent->no_image;
         obj.no_reflection |= parent->no_reflection;
         obj.double_illuminate |= parent->double_illuminate;
+        inherit_photons(obj.photons, parent->photons);
     }
     if (obj.texture.empty()) obj.texture.push_back(default_texture_);
     if (!obj.interior) obj.interior = Interior{};

@@ -479,12 +479,14 @@ Light Interpreter::parse_light_block() {
             expect_punct('}');
             finish_object(obj);
             obj.no_shadow = true;
+            obj.photons.pass_through =
+                true;  // POV-Ray: photons leave the light through it
             obj.transform = obj.transform;
             apply_transform(obj, Transform::translate(l.location),
                             {TransformStep::Kind::Translate, l.location});
             l.looks_like.push_back(std::move(obj));
         } else if (w == "photons") {
-            unsupported(t, "photons");
+            parse_light_photons(l);
         } else {
             expected("a light_source item or '}'", t);
         }
@@ -493,6 +495,9 @@ Light Interpreter::parse_light_block() {
     // direction at full strength (POV-Ray's spot cone then sees the axis itself).
     if (parallel && l.kind == Light::Kind::Point) l.kind = Light::Kind::Parallel;
     l.parallel = parallel && l.kind == Light::Kind::Spot;
+    if (!first_parallel_light_ && (l.parallel || l.kind == Light::Kind::Parallel ||
+                                   l.kind == Light::Kind::Cylinder))
+        first_parallel_light_ = open;
     // The atmosphere's media on an area light's shadow rays: POV-Ray applies them per
     // sample and once more over a leftover stretch of its last sample; not yet.
     if (l.media_attenuation && l.area && attenuation_at) {
@@ -557,8 +562,9 @@ void Interpreter::parse_global_settings() {
                 expected("ascii, utf8 or sys", c);
         } else if (w == "hf_gray_16") {
             parse_bool_opt();
-        } else if (w == "radiosity" || w == "photons" || w == "subsurface" ||
-                   w == "mm_per_unit") {
+        } else if (w == "photons") {
+            parse_photon_settings(t);
+        } else if (w == "radiosity" || w == "subsurface" || w == "mm_per_unit") {
             unsupported(t, w);
         } else {
             expected("a global setting or '}'", t);

@@ -29,6 +29,7 @@ inline uintptr_t interior_key(const Object& o) {
 }
 
 struct TextureBlend;
+class PhotonMap;
 
 struct Material {
     const LayeredTexture* texture = nullptr;
@@ -198,6 +199,10 @@ class PreparedScene {
     // +UA: the background's filter/transmit count (POV-Ray's alphaBackground).
     bool alpha_background() const { return alpha_background_; }
     void set_alpha_background(bool on) { alpha_background_ = on; }
+    // The frame's photon map (trace/photon_map.h), built from the whole scene before
+    // tracing; null: no photons.
+    const PhotonMap* photons() const { return photons_.get(); }
+    void set_photons(std::shared_ptr<const PhotonMap> map) { photons_ = std::move(map); }
     void init_context(RayContext& ctx) const {
         ctx.mailbox.resize(kind_.size());
         ctx.last_blocker.assign(scene_.lights.size(), ~0u);
@@ -285,6 +290,7 @@ class PreparedScene {
     std::vector<PovPrim> pov_;
     PatternEnv env_;
     bool alpha_background_ = false;
+    std::shared_ptr<const PhotonMap> photons_;
     std::vector<Material> materials_;  // reserved up front: pointers stay valid
     // Per RayUse: whether any material hides from that kind of ray.
     std::array<bool, 4> hides_{};

@@ -11,6 +11,7 @@
 #include "trace/camera.h"
 #include "trace/camera_interiors.h"
 #include "trace/focal_blur.h"
+#include "trace/photon_map.h"
 #include "trace/prepared_scene.h"
 #include "trace/tracer.h"
 
@@ -103,6 +104,7 @@ Image render_scene(const Scene& scene, const RenderSettings& settings, RenderSta
     prepare.progress = settings.progress;
     PreparedScene prepared(scene, &plan, prepare);
     prepared.set_alpha_background(settings.alpha);
+    prepared.set_photons(build_photon_map(prepared));
     const CameraInteriors camera_interiors(scene);
     auto t1 = Clock::now();
     const int W = settings.width, H = settings.height;

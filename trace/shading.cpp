@@ -8,6 +8,7 @@
 
 #include "core/noise.h"
 #include "trace/media.h"
+#include "trace/photon_map.h"
 #include "trace/shapes/shape.h"
 #include "trace/uv_mapping.h"
 
@@ -531,6 +532,16 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     // those of the layers whose normal is the top layer's (POV-Ray 3.7).
     thread_local std::vector<std::pair<size_t, Vector3>> reflection_normals;
     reflection_normals.clear();
+    // The photon map, when the surface collects photons (`collect` on, lit by the
+    // global lights that shot them).
+    const PhotonMap* photons = scene.photons();
+    if (photons && (photons->size() == 0 || !m.global_lights ||
+                    (m.object && !m.object->photons.collect)))
+        photons = nullptr;
+    thread_local std::vector<const Photon*> found_photons;
+    found_photons.clear();
+    bool gathered = false;
+    double photon_radius = 0;
     for (int li = nlayers - 1; li >= 0 && trans > adc; --li) {
         const Texture* tex = layers ? &(*layers)[size_t(li)] : nullptr;
         Vector3 Nl = N;
@@ -549,6 +560,56 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                   lay.rgb * f.emission * att;
         out.local += tmp * fil;
 
+        // The layer's diffuse, phong, specular and iridescence response to light coming
+        // from `dir` (unit), scaled by the light's colour by the caller; false when the
+        // light is behind the surface and there is no diffuse back.
+        auto light_response = [&](const Vector3& dir, bool shadowless, size_t index,
+                                  Rgb& c) {
+            Real cos_nl = dot(Nl, dir);
+            // A light behind the surface lights it only with diffuse back (and then
+            // without highlights), unless the object is double_illuminate.
+            bool backside = false;
+            if (cos_nl < kPovEpsilon) {
+                if (m.double_illuminate)
+                    cos_nl = -cos_nl;
+                else if (f.diffuse_back != 0)
+                    backside = true;
+                else
+                    return false;
+            }
+            c = Rgb{};
+            const float diffuse = backside ? f.diffuse_back : f.diffuse;
+            if (diffuse > 0) {
+                Real base = std::fabs(cos_nl);
+                Real k = (f.brilliance != 1 ? std::pow(base, Real(f.brilliance)) : base) *
+                         diffuse * att;
+                // crand: POV-Ray subtracts a fresh random number per light and point;
+                // ours is a hash of the point (the same in every mode and process).
+                if (f.crand > 0) k -= crand_sample(P, index) * f.crand;
+                c += lay.rgb * float(k);
+            }
+            if (!shadowless && !backside) {
+                if (f.phong > 0) {
+                    Vector3 R = D - Nl * (2 * dot(D, Nl));
+                    Real cc = dot(R, dir);
+                    if (cc > 0 && !(f.phong_size >= 60 && cc <= 0.0008)) {
+                        float k = float(f.phong * std::pow(cc, Real(f.phong_size)));
+                        c += metallic_tint(f.metallic, cos_nl, lay.rgb) * k;
+                    }
+                }
+                if (f.specular > 0) {
+                    Vector3 H = (dir - D) * 0.5;
+                    Real hl = length(H);
+                    Real cc = hl > 0 ? dot(H, Nl) / hl : 0;
+                    if (cc > 0) {
+                        float k = float(f.specular * std::pow(cc, Real(1 / f.roughness)));
+                        c += metallic_tint(f.metallic, cos_nl, lay.rgb) * k;
+                    }
+                }
+            }
+            if (f.irid > 0) c *= iridescence(f, sc, P, Nl, dir, D);
+            return true;
+        };
         if (f.diffuse != 0 || f.diffuse_back != 0 || f.phong != 0 || f.specular != 0) {
             for (size_t l = 0; l < nlights; ++l) {
                 const Light& light = sc.lights[l];
@@ -566,53 +627,33 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                 }
                 if (!sample_ok[l]) continue;
                 const LightSample& s = samples[l];
-                Real cos_nl = dot(Nl, s.dir);
-                // A light behind the surface lights it only with diffuse back (and then
-                // without highlights), unless the object is double_illuminate.
-                bool backside = false;
-                if (cos_nl < kPovEpsilon) {
-                    if (m.double_illuminate)
-                        cos_nl = -cos_nl;
-                    else if (f.diffuse_back != 0)
-                        backside = true;
-                    else
-                        continue;
-                }
                 Rgb c;
-                const float diffuse = backside ? f.diffuse_back : f.diffuse;
-                if (diffuse > 0) {
-                    Real base = std::fabs(cos_nl);
-                    Real k =
-                        (f.brilliance != 1 ? std::pow(base, Real(f.brilliance)) : base) *
-                        diffuse * att;
-                    // crand: POV-Ray subtracts a fresh random number per light and point;
-                    // ours is a hash of the point (the same in every mode and process).
-                    if (f.crand > 0) k -= crand_sample(P, l) * f.crand;
-                    c += lay.rgb * float(k);
-                }
-                if (!light.shadowless && !backside) {
-                    if (f.phong > 0) {
-                        Vector3 R = D - Nl * (2 * dot(D, Nl));
-                        Real cc = dot(R, s.dir);
-                        if (cc > 0 && !(f.phong_size >= 60 && cc <= 0.0008)) {
-                            float k = float(f.phong * std::pow(cc, Real(f.phong_size)));
-                            c += metallic_tint(f.metallic, cos_nl, lay.rgb) * k;
-                        }
-                    }
-                    if (f.specular > 0) {
-                        Vector3 H = (s.dir - D) * 0.5;
-                        Real hl = length(H);
-                        Real cc = hl > 0 ? dot(H, Nl) / hl : 0;
-                        if (cc > 0) {
-                            float k =
-                                float(f.specular * std::pow(cc, Real(1 / f.roughness)));
-                            c += metallic_tint(f.metallic, cos_nl, lay.rgb) * k;
-                        }
-                    }
-                }
-                if (f.irid > 0) c *= iridescence(f, sc, P, Nl, s.dir, D);
+                if (!light_response(s.dir, light.shadowless, l, c)) continue;
                 lit[l] += c * s.colour * fil;
             }
+        }
+        // Photons: their light is added as a light's would be (POV-Ray's
+        // ComputePhotonDiffuseLight), gathered once per hit with the first such layer's
+        // normal.
+        if (photons &&
+            (f.diffuse != 0 || f.diffuse_back != 0 || f.phong != 0 || f.specular != 0)) {
+            if (!gathered) {
+                photon_radius = photons->gather(P, Nl, found_photons);
+                gathered = true;
+            }
+            Rgb sum;
+            for (const Photon* ph : found_photons) {
+                const Vector3 d = PhotonMap::incoming(*ph);
+                // Lambertian compensation with the raw normal, at most 10x.
+                Real a = dot(N, d);
+                if (a > 1) a = 1;
+                if (a < 0.1) a = 0.1;
+                Rgb c;
+                if (!light_response(d, false, nlights, c)) continue;
+                sum += c * PhotonMap::flux(*ph) * float(1 / a);
+            }
+            if (!found_photons.empty())
+                out.local += sum * float(1 / (kPi * photon_radius * photon_radius)) * fil;
         }
 
         // Reflection of this layer; not scaled by the layers above (POV-Ray 3.7).
@@ -691,6 +732,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         const LightSample& s = samples[l];
         ChildRay child = shadow_child(ray, P, s, l);
         child.coeff = lit[l];
+        child.photon_caustics = photons != nullptr;
         child.area = light.area.has_value();
         child.light_colour = s.colour;
         // Below +Q4 nothing blocks a light; below +Q5 an area light is its centre.
@@ -756,6 +798,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                 // inside; the layers whose normal is the top one reflect no more.
                 const Vector3 R = reflected_direction(D, top_normal, N);
                 child.kind = ChildRay::Kind::Reflection;
+                child.internal_reflection = true;
                 child.trace.ray = {P, R};
                 child.trace.use = RayUse::Reflection;
                 child.trace.interiors = ray.interiors;
@@ -1201,6 +1244,10 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
             ++ctx.pattern_ties;
         const Material& m = *hit.material;
         bool black = m.opaque;
+        if (state.photon_caustics && m.object && state.light >= 0 &&
+            refracts_photons(m.object->photons,
+                             scene.scene().lights[size_t(state.light)]))
+            black = true;
         if (!black && shows_interior_texture(m, hit, ray)) {
             state.filter *= shadow_filter(scene, *m.interior_texture,
                                           m.interior ? m.interior->caustics : 0.0f, hit,
@@ -1309,6 +1356,7 @@ Rgb point_shadow(const ChildRay& shadow, const PreparedScene& scene, const Ray& 
     ShadowState state;
     state.inside = shadow.trace.interiors;
     state.light = shadow.light;
+    state.photon_caustics = shadow.photon_caustics;
     if (!shadow_segment(scene, ray, kInfinity, distance, state, ctx))
         shadow_last_leg(scene, ray, distance, state);
     return state.filter;

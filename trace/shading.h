@@ -92,6 +92,12 @@ struct ChildRay {
     // The render plan proved nothing can block this shadow ray: its result is 1 without a
     // query (kept as a child so the colour is summed exactly as when traced).
     bool unoccluded = false;
+    // A reflection made by total internal reflection (the photon pass follows it as
+    // refraction, as POV-Ray does).
+    bool internal_reflection = false;
+    // Shadow rays: the lit surface collects photons, so a blocker that refracts this
+    // light's photons shadows fully (its caustic is in the photon map).
+    bool photon_caustics = false;
 };
 
 // Fog along a ray of known length: the ray's colour c becomes add + mul * c (affine, so
@@ -187,6 +193,7 @@ struct ShadowState {
     bool blocked = false;
     InteriorStack inside;  // start with the lit ray's interiors
     int light = -1;        // the light it goes to (for the box's last-blocker cache)
+    bool photon_caustics = false;  // see ChildRay::photon_caustics
 };
 // Advances `state` over hits with t in [state.t_min, min(segment_end, light_distance -
 // 1e-3)). Returns true once the light is fully blocked.

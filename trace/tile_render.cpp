@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "trace/photon_map.h"
+
 namespace povwall::trace {
 
 TileRenderer::TileRenderer(const Scene& scene, const RenderSettings& settings)
@@ -14,6 +16,9 @@ TileRenderer::TileRenderer(const Scene& scene, const RenderSettings& settings)
       samples_(tracer_, scene.camera, camera_interiors_, settings_),
       sampler_(sampler_settings(settings, scene)) {
     prepared_.set_alpha_background(settings.alpha);
+    // Each screen-mode worker builds the map from the whole scene: the same map as in
+    // one process (trace/photon_map.h).
+    prepared_.set_photons(build_photon_map(prepared_));
 }
 
 void TileRenderer::render(int x0, int y0, int x1, int y1, float* out) {

@@ -1,0 +1,534 @@
+#include "trace/photon_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <queue>
+#include <unordered_set>
+
+#include "trace/prepared_scene.h"
+#include "trace/shading.h"
+
+namespace povwall::trace {
+namespace {
+
+constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON in the photon code
+// POV-Ray's box of an unbounded object: corner -BOUND_HUGE/2, lengths BOUND_HUGE.
+constexpr double kBoundHuge = 2e10;
+
+// Our random numbers: a hash of what the number is for, so that the map depends only on
+// the scene (splitmix64's finaliser over the combined key).
+double hashed_unit(uint64_t a, uint64_t b, uint64_t c, uint64_t d) {
+    uint64_t x =
+        a * 0x9E3779B97F4A7C15ull ^ (b + 0x632BE59BD9B4E019ull) * 0xBF58476D1CE4E5B9ull;
+    x ^= (c + 0x85EBCA77C2B2AE63ull) * 0x94D049BB133111EBull;
+    x ^= (d + 0x27D4EB2F165667C5ull) * 0xD6E8FEB86659FD93ull;
+    x ^= x >> 30;
+    x *= 0xBF58476D1CE4E5B9ull;
+    x ^= x >> 27;
+    x *= 0x94D049BB133111EBull;
+    x ^= x >> 31;
+    return double(x >> 11) * (1.0 / 9007199254740992.0);
+}
+
+bool switch_on(PhotonSwitch object, PhotonSwitch light) {
+    return (object == PhotonSwitch::On && light != PhotonSwitch::Off) ||
+           (object != PhotonSwitch::Off && light == PhotonSwitch::On);
+}
+
+// POV-Ray's frame objects: the top-level objects after plain unions are split into their
+// children (recursively), as Link_To_Frame does after the flags came down.
+void frame_objects(const Object& o, std::vector<const Object*>& out) {
+    if (pov_splits_union(o)) {
+        for (const Object& c : std::get<Csg>(o.shape).children) frame_objects(c, out);
+        return;
+    }
+    out.push_back(&o);
+}
+
+// POV-Ray's SearchThroughObjects: a target is shot at whole; a CSG that is none is
+// searched for targets among its children.
+void find_targets(const Object& o, std::vector<const Object*>& out) {
+    if (o.photons.target) {
+        out.push_back(&o);
+        return;
+    }
+    if (const Csg* csg = std::get_if<Csg>(&o.shape))
+        for (const Object& c : csg->children) find_targets(c, out);
+}
+
+void leaves_of(const Object& o, std::unordered_set<const Object*>& out) {
+    out.insert(&o);
+    if (const Csg* csg = std::get_if<Csg>(&o.shape))
+        for (const Object& c : csg->children) leaves_of(c, out);
+}
+
+// Ward's RGBE with POV-Ray's exponent offset of 250 (colour2photonRgbe).
+void encode_rgbe(const Rgb& c, uint8_t out[4]) {
+    float v = std::max(c.r, std::max(c.g, c.b));
+    if (v < 1e-32f) {
+        out[0] = out[1] = out[2] = out[3] = 0;
+        return;
+    }
+    int e = 0;
+    v = float(std::frexp(v, &e) * 256.0 / v);
+    out[0] = uint8_t(c.r * v);
+    out[1] = uint8_t(c.g * v);
+    out[2] = uint8_t(c.b * v);
+    out[3] = uint8_t(e + 250);
+}
+
+// The unit vector from the photon toward where it came from in POV-Ray's two bytes.
+void encode_direction(const Vector3& d, Photon& ph) {
+    const double dl = std::sqrt(d.x * d.x + d.z * d.z);
+    double phi = dl > 0 ? std::acos(std::clamp(d.x / dl, -1.0, 1.0)) : 0;
+    if (d.z < 0) phi = -phi;
+    double theta = std::acos(std::clamp(dl, -1.0, 1.0));
+    if (d.y < 0) theta = -theta;
+    ph.theta = int8_t(theta * 127.0 / kPi);
+    ph.phi = int8_t(phi * 127.0 / kPi);
+}
+
+struct Target {
+    const Object* object;
+    std::unordered_set<const Object*> leaves;
+};
+
+// One light shooting at one target (POV-Ray's LightTargetCombo and ShootingDirection).
+class Shooter {
+  public:
+    Shooter(const PreparedScene& scene, const PhotonSettings& settings, int max_level,
+            float adc, const std::vector<Material>& light_interiors_materials,
+            std::vector<Photon>& out)
+        : scene_(scene),
+          settings_(settings),
+          max_level_(max_level),
+          adc_(adc),
+          stand_ins_(light_interiors_materials),
+          out_(out) {
+        scene.init_context(ctx_);
+    }
+
+    void shoot(const Light& light, size_t light_index, const Target& target,
+               size_t target_index, const std::vector<const Object*>& frames);
+    uint64_t shot() const { return shot_; }
+
+  private:
+    void trace(const TraceRay& ray, Rgb colour, int level, bool prev_pass, double depth);
+    void deposit(const Point3& at, const Point3& from, const Rgb& colour, double depth);
+
+    const PreparedScene& scene_;
+    const PhotonSettings& settings_;
+    int max_level_;
+    float adc_;
+    const std::vector<Material>& stand_ins_;
+    std::vector<Photon>& out_;
+    RayContext ctx_;
+    const Light* light_ = nullptr;
+    const Target* target_ = nullptr;
+    double spread_ = 0;
+    bool hit_target_ = false;
+    uint64_t shot_ = 0;
+};
+
+void Shooter::shoot(const Light& light, size_t light_index, const Target& target,
+                    size_t target_index, const std::vector<const Object*>& frames) {
+    const ObjectPhotons& ph = target.object->photons;
+    if (!switch_on(ph.refraction, light.photon_refraction) &&
+        !switch_on(ph.reflection, light.photon_reflection))
+        return;
+    light_ = &light;
+    target_ = &target;
+    // The bounding sphere of the target's box.
+    Bounds3 b = object_world_bounds(*target.object);
+    Point3 ctr;
+    double rad;
+    if (std::isinf(b.lo.x) || std::isinf(b.hi.x) || std::isinf(b.lo.y) ||
+        std::isinf(b.hi.y) || std::isinf(b.lo.z) || std::isinf(b.hi.z)) {
+        ctr = Point3{0, 0, 0};
+        rad = std::sqrt(3.0) * kBoundHuge / 2;
+    } else {
+        ctr = b.lo + (b.hi - b.lo) * 0.5;
+        rad = length(ctr - b.lo);
+    }
+    Vector3 toctr = ctr - light.location;
+    double dist = length(toctr);
+    if (dist > 0) toctr = toctr * (1 / dist);
+    Vector3 up =
+        std::fabs(std::fabs(toctr.z) - 1) < 0.1 ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
+    Vector3 left = normalize(cross(toctr, up));
+    spread_ = ph.spacing_multiplier * settings_.spacing / dist;
+    const double dtheta = std::atan(spread_);
+    if (spread_ <= 0) return;
+    double maxtheta;
+    if (dist >= rad) {
+        maxtheta = std::asin(rad / dist);
+    } else {
+        maxtheta = kPi;
+        if (std::fabs(dist) < kEpsilon) {
+            up = {1, 0, 0};
+            left = {0, 1, 0};
+            toctr = {0, 0, 1};
+        }
+        dist = rad;
+    }
+    // The interiors around the light (POV-Ray: of the frame objects containing it).
+    InteriorStack start;
+    for (size_t i = 0; i < frames.size(); ++i)
+        if (inside_object(*frames[i], light.location)) start.push(&stand_ins_[i]);
+
+    const Vector3 axis = normalize(light.point_at - light.location);
+    const double radius_cos = std::cos(light.radius * kPi / 180);
+    const double falloff_cos = std::cos(light.falloff * kPi / 180);
+    bool hit_once = false;
+    uint64_t ring = 0;
+    for (double theta = 0; theta < maxtheta; theta += dtheta, ++ring) {
+        hit_target_ = false;
+        const double dphi = theta < kEpsilon ? 2 * kPi : dtheta / std::sin(theta);
+        const uint64_t key = (uint64_t(light_index) << 32) | uint64_t(target_index);
+        const double minphi = -kPi + dphi * hashed_unit(key, ring, ~0ull, 0) * 0.5;
+        const double maxphi = kPi - dphi / 2 + (minphi + kPi);
+        uint64_t k = 0;
+        for (double phi = minphi; phi < maxphi; phi += dphi, ++k) {
+            const double jitphi =
+                phi + dphi * (hashed_unit(key, ring, k, 1) - 0.5) * settings_.jitter;
+            const double jittheta =
+                theta + dtheta * (hashed_unit(key, ring, k, 2) - 0.5) * settings_.jitter;
+            // toctr turned by theta toward -left, then about toctr by phi.
+            const Vector3 v = toctr * std::cos(jittheta) - left * std::sin(jittheta);
+            const double c = std::cos(jitphi), s = std::sin(jitphi);
+            const Vector3 dir =
+                v * c + cross(toctr, v) * s + toctr * (dot(toctr, v) * (1 - c));
+            double attenuation = 1;
+            if (light.kind == Light::Kind::Spot) {
+                const double cs = dot(dir, axis);
+                if (cs > 0) {
+                    attenuation = std::pow(cs, light.tightness);
+                    if (radius_cos > 0 && cs < radius_cos)
+                        attenuation *= cs < falloff_cos ? 0.0 : [&] {
+                            const double x =
+                                (cs - falloff_cos) / (radius_cos - falloff_cos);
+                            return x * x * (3 - 2 * x);
+                        }();
+                } else {
+                    attenuation = 0;
+                }
+            }
+            if (attenuation < 0.00001) continue;
+            TraceRay ray;
+            ray.ray = {light.location, normalize(dir)};
+            ray.use = RayUse::Camera;
+            ray.interiors = start;
+            ++shot_;
+            trace(ray, light.colour * float(attenuation), 0, false, 0);
+        }
+        if (hit_target_) hit_once = true;
+        if (hit_once && !hit_target_ && theta > settings_.autostop * maxtheta) break;
+    }
+}
+
+// POV-Ray's PhotonTrace::TraceRay and ComputeLightedTexture for a caustic photon: the
+// first surface must be the target (or let photons pass), then each surface stores the
+// photon (from the second on) and sends it on by the target's reflection and refraction.
+void Shooter::trace(const TraceRay& ray, Rgb colour, int level, bool prev_pass,
+                    double depth) {
+    if (level >= max_level_ || ray.weight < adc_) return;
+    ++level;
+    Hit hit;
+    if (!scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_)) return;
+    const Material& m = *hit.material;
+    static const ObjectPhotons kNone;
+    const ObjectPhotons& ph = m.object ? m.object->photons : kNone;
+    bool pass = false;
+    if (level == 1 || prev_pass) {
+        const bool is_target = ph.target && target_->leaves.count(m.object);
+        if (ph.target && !is_target) {
+            if (!ph.pass_through) return;
+            pass = true;
+        } else if (is_target) {
+            hit_target_ = true;
+        } else {
+            if (!ph.pass_through) return;
+            pass = true;
+        }
+    }
+    // The interior's `refraction` and, inside it, its fade dim the photon first.
+    const Rgb arriving = colour;
+    Rgb att(m.interior ? m.interior->old_refract : 1.0f);
+    if (m.interior && ray.interiors.contains(m.interior_id))
+        att *= interior_attenuation(*m.interior, hit.t, true);  // fade_power > 0 only
+    colour *= att;
+    depth += hit.t;
+    if (level > 1 && !prev_pass && ph.collect && m.global_lights)
+        deposit(hit.point, ray.ray.origin, colour, depth);
+    if (pass) {
+        // Straight through, unfiltered, entering or leaving the object.
+        TraceRay next = ray;
+        next.ray = {hit.point, ray.ray.direction};
+        if (!next.interiors.remove(m.interior_id)) next.interiors.push(&m);
+        trace(next, colour, level, pass, depth);
+        return;
+    }
+    const bool refract = switch_on(ph.refraction, light_->photon_refraction);
+    const bool reflect = switch_on(ph.reflection, light_->photon_reflection);
+    if (!refract && !reflect) return;
+    ShadingRecord record;
+    spawn_children(scene_, ray, hit, record, &ctx_);
+    for (const ChildRay& child : record.children) {
+        if (child.kind == ChildRay::Kind::Shadow) continue;
+        if (child.kind == ChildRay::Kind::Transmission || child.internal_reflection) {
+            // The child's coefficient holds the interior's dimming already.
+            if (refract) trace(child.trace, arriving * child.coeff, level, false, depth);
+        } else if (reflect) {
+            Rgb c = colour;
+            if (child.exponent != 1) {
+                const float e = 1 / child.exponent;
+                c = Rgb(std::pow(c.r, e), std::pow(c.g, e), std::pow(c.b, e));
+            }
+            // POV-Ray's photon pass weighs a reflected photon by the reflectivity twice
+            // (ComputeReflectivity scales the layer's weight, then the reflection is
+            // traced with that weight times the reflectivity again), so adc_bailout
+            // ends reflection chains sooner than in the render.
+            TraceRay next = child.trace;
+            next.weight *=
+                std::max(child.coeff.r, std::max(child.coeff.g, child.coeff.b));
+            trace(next, c * child.coeff, level, false, depth);
+        }
+    }
+}
+
+// POV-Ray's addSurfacePhoton: the flux a photon of this spread carries to this depth
+// (lights do not dim with distance, so the photon's share grows with the square of it).
+void Shooter::deposit(const Point3& at, const Point3& from, const Rgb& colour,
+                      double depth) {
+    const Light& l = *light_;
+    double attenuation = 1;
+    if (l.fade_power > 0 && std::fabs(l.fade_distance) > kEpsilon)
+        attenuation = 2 / (1 + std::pow(depth / l.fade_distance, l.fade_power));
+    const Rgb flux = colour * float(attenuation * spread_ * spread_ * depth * depth);
+    Photon ph;
+    encode_rgbe(flux, ph.rgbe);
+    ph.pos[0] = float(at.x);
+    ph.pos[1] = float(at.y);
+    ph.pos[2] = float(at.z);
+    encode_direction(normalize(from - at), ph);
+    out_.push_back(ph);
+}
+
+// POV-Ray's PhotonEstimationTask: the spacing `count` asks for.
+double spacing_for_count(const Scene& sc, const std::vector<Target>& targets,
+                         const PhotonSettings& s) {
+    double estimate = 0;
+    for (const Light& light : sc.lights) {
+        if (light.light_group != 0) continue;
+        for (const Target& t : targets) {
+            const ObjectPhotons& ph = t.object->photons;
+            const bool rfr = switch_on(ph.refraction, light.photon_refraction);
+            const bool rfl = switch_on(ph.reflection, light.photon_reflection);
+            if (!rfr && !rfl) continue;
+            const Bounds3 b = object_world_bounds(*t.object);
+            const Point3 ctr = b.lo + (b.hi - b.lo) * 0.5;
+            const double rad = length(ctr - b.lo);
+            double x = rad / (ph.spacing_multiplier * s.spacing);
+            x = x * x * kPi;
+            if (rfr && rfl) x *= 1.5;
+            if (ph.collect) x *= rfr && rfl ? 3 : rfr ? 2 : 1;
+            estimate += x * 0.5;
+        }
+    }
+    return s.spacing * std::sqrt(estimate / s.count);
+}
+
+}  // namespace
+
+bool refracts_photons(const ObjectPhotons& leaf, const Light& light) {
+    return leaf.target && leaf.refraction != PhotonSwitch::Off &&
+           light.photon_refraction != PhotonSwitch::Off &&
+           (leaf.refraction == PhotonSwitch::On ||
+            light.photon_refraction == PhotonSwitch::On);
+}
+
+Rgb PhotonMap::flux(const Photon& ph) {
+    if (ph.rgbe[3] == 0) return Rgb{};
+    const float f = float(std::ldexp(1.0, int(ph.rgbe[3]) - (250 + 8)));
+    return Rgb(ph.rgbe[0] * f, ph.rgbe[1] * f, ph.rgbe[2] * f);
+}
+
+Vector3 PhotonMap::incoming(const Photon& ph) {
+    const double theta = double(ph.theta) * kPi / 127.0;
+    const double phi = double(ph.phi) * kPi / 127.0;
+    const double ct = std::cos(theta);
+    return {ct * std::cos(phi), std::sin(theta), ct * std::sin(phi)};
+}
+
+void PhotonMap::build_tree(size_t lo, size_t hi) {
+    if (hi - lo < 1) return;
+    float mn[3] = {1e30f, 1e30f, 1e30f}, mx[3] = {-1e30f, -1e30f, -1e30f};
+    for (size_t i = lo; i < hi; ++i)
+        for (int a = 0; a < 3; ++a) {
+            mn[a] = std::min(mn[a], photons_[i].pos[a]);
+            mx[a] = std::max(mx[a], photons_[i].pos[a]);
+        }
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+        if (mx[a] - mn[a] > mx[axis] - mn[axis]) axis = a;
+    const size_t mid = lo + (hi - lo) / 2;
+    std::nth_element(
+        photons_.begin() + long(lo), photons_.begin() + long(mid),
+        photons_.begin() + long(hi),
+        [axis](const Photon& a, const Photon& b) { return a.pos[axis] < b.pos[axis]; });
+    photons_[mid].axis = uint8_t(axis);
+    build_tree(lo, mid);
+    build_tree(mid + 1, hi);
+}
+
+double PhotonMap::nearest(const Point3& p, const Vector3* n, double radius,
+                          std::vector<const Photon*>& out) const {
+    out.clear();
+    const size_t k = size_t(std::max(1, settings_.gather_max));
+    // Max-heap of (flattened squared distance, photon) holding the k nearest so far.
+    thread_local std::vector<std::pair<double, const Photon*>> heap;
+    heap.clear();
+    double dmax = radius * radius;
+    bool overflowed = false;
+    const double q[3] = {p.x, p.y, p.z};
+    auto visit = [&](auto&& self, size_t lo, size_t hi) -> void {
+        if (lo >= hi) return;
+        const size_t mid = lo + (hi - lo) / 2;
+        const Photon& ph = photons_[mid];
+        const double v[3] = {ph.pos[0] - q[0], ph.pos[1] - q[1], ph.pos[2] - q[2]};
+        double d = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        if (n) d += std::fabs(n->x * v[0] + n->y * v[1] + n->z * v[2]) * d * 16;
+        if (d < dmax) {
+            if (heap.size() < k) {
+                heap.push_back({d, &ph});
+                std::push_heap(heap.begin(), heap.end());
+            } else {
+                std::pop_heap(heap.begin(), heap.end());
+                heap.back() = {d, &ph};
+                std::push_heap(heap.begin(), heap.end());
+                dmax = heap.front().first;
+                overflowed = true;
+            }
+        }
+        const int a = ph.axis;
+        const double delta = q[a] - ph.pos[a];
+        if (delta < 0) {
+            self(self, lo, mid);
+            if (delta * delta < dmax) self(self, mid + 1, hi);
+        } else {
+            self(self, mid + 1, hi);
+            if (delta * delta < dmax) self(self, lo, mid);
+        }
+    };
+    visit(visit, 0, photons_.size());
+    for (const auto& e : heap) out.push_back(e.second);
+    return overflowed ? std::sqrt(dmax) : radius;
+}
+
+double PhotonMap::gather(const Point3& p, const Vector3& n,
+                         std::vector<const Photon*>& out) const {
+    double size = min_radius_;
+    double radius = nearest(p, &n, size, out);
+    size_t num = out.size();
+    double prev_density = double(num) / (radius * radius);
+    if (prev_density == 0) prev_density = 1e-16;
+    // POV-Ray expands at most once (gatherNumSteps 2).
+    if (int(num) < settings_.gather_min) {
+        thread_local std::vector<const Photon*> wider;
+        size += radius_step_;
+        const double r2 = nearest(p, &n, size, wider);
+        const size_t n2 = wider.size();
+        const double density = double(n2) / (r2 * r2);
+        if ((density - prev_density) / prev_density < settings_.expand_tolerance ||
+            (int(n2) < settings_.expand_min && n2 > 0)) {
+            out.swap(wider);
+            radius = r2;
+        }
+    }
+    return radius;
+}
+
+// POV-Ray's setGatherOptions for a surface map: the radius holding gather_max photons at
+// the average density of sampled photons, widened where many samples are sparse.
+void PhotonMap::estimate_gather_radius() {
+    double r = settings_.radius;
+    if (r <= 0) {
+        const size_t count = photons_.size();
+        size_t samples = std::clamp<size_t>(count / 20, 100, 1000);
+        std::vector<const Photon*> found;
+        double sum = 0;
+        for (size_t i = 0; i < samples; ++i) {
+            const Photon& ph = photons_[size_t(hashed_unit(i, 7, 0, 3) * double(count))];
+            const Point3 at{ph.pos[0], ph.pos[1], ph.pos[2]};
+            const double rr = nearest(at, nullptr, 10000000.0, found);
+            const double density = rr > 0 ? double(found.size()) / (kPi * rr * rr)
+                                          : (i > 0 ? sum / double(i) : 0);
+            sum += density;
+        }
+        const double average = sum / double(samples);
+        r = std::sqrt(settings_.gather_max / (average * kPi));
+        size_t sparse = 0;
+        for (size_t i = 0; i < samples; ++i) {
+            const Photon& ph = photons_[size_t(hashed_unit(i, 7, 1, 3) * double(count))];
+            const Point3 at{ph.pos[0], ph.pos[1], ph.pos[2]};
+            const double rr = nearest(at, nullptr, r, found);
+            if (rr > 0) {
+                const double density = double(found.size()) / (kPi * rr * rr);
+                if (density < average * 0.7 && density > average * 0.05) ++sparse;
+            }
+        }
+        r *= 1.0 + 20.0 * (double(sparse) / double(samples));
+    }
+    min_radius_ = r * settings_.radius_multiplier;
+    radius_step_ = min_radius_ * 2;
+}
+
+std::shared_ptr<const PhotonMap> build_photon_map(const PreparedScene& scene) {
+    const Scene& sc = scene.scene();
+    if (!sc.settings.photons || !scene.plan().quality.atmosphere()) return nullptr;
+    auto map = std::make_shared<PhotonMap>();
+    PhotonSettings& s = map->settings_;
+    s = *sc.settings.photons;
+    std::vector<const Object*> frames;
+    for (const Object& o : sc.objects) frame_objects(o, frames);
+    std::vector<Target> targets;
+    for (const Object* f : frames) {
+        std::vector<const Object*> found;
+        find_targets(*f, found);
+        for (const Object* t : found) {
+            if (!t->global_lights) continue;  // POV-Ray: no photons without global lights
+            Target target{t, {}};
+            leaves_of(*t, target.leaves);
+            targets.push_back(std::move(target));
+        }
+    }
+    if (s.count > 0 && !targets.empty())
+        s.spacing = float(spacing_for_count(sc, targets, s));
+    const int max_level =
+        s.max_trace_level >= 0 ? s.max_trace_level : sc.settings.max_trace_level;
+    const float adc = s.adc_bailout >= 0 ? s.adc_bailout : sc.settings.adc_bailout;
+    std::vector<Material> stand_ins;
+    stand_ins.reserve(frames.size());
+    for (const Object* f : frames) stand_ins.push_back(material_of(*f, f->texture));
+    Shooter shooter(scene, s, max_level, adc, stand_ins, map->photons_);
+    for (size_t l = 0; l < sc.lights.size(); ++l) {
+        const Light& light = sc.lights[l];
+        if (light.light_group != 0 || targets.empty()) continue;
+        for (size_t t = 0; t < targets.size(); ++t)
+            shooter.shoot(light, l, targets[t], t, frames);
+    }
+    if (map->photons_.empty()) return map;
+    map->build_tree(0, map->photons_.size());
+    map->estimate_gather_radius();
+    // POVWALL_PHOTON_STATS=1: what the pass made (to set beside POV-Ray's statistics).
+    if (std::getenv("POVWALL_PHOTON_STATS"))
+        std::fprintf(stderr, "photons: %zu stored, %llu shot, gather radius %g\n",
+                     map->photons_.size(), (unsigned long long)shooter.shot(),
+                     map->min_radius_);
+    return map;
+}
+
+}  // namespace povwall::trace

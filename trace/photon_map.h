@@ -1,0 +1,75 @@
+// POV-Ray 3.7's surface photon map (caustics): photons shot from the lights at each
+// photon target's bounding sphere, followed through the targets' reflection and
+// refraction, and stored where they land; shading gathers the nearest ones at a hit (see
+// photon_contribution in shading.cpp).
+//
+// The map is built once per frame, before tracing, from the whole scene, by one thread,
+// with our own random numbers drawn from a hash of (light, target, ring, photon): every
+// process that holds the whole scene (one process, each screen-mode worker) builds the
+// same map and renders the same image. POV-Ray draws its jitter from per-thread random
+// sequences, so its photons and ours agree statistically (compared by block means).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/scene.h"
+
+namespace povwall::trace {
+
+class PreparedScene;
+
+// One stored photon, as POV-Ray keeps it: a single-precision position, the flux in
+// Ward's RGBE (exponent offset 250) and the incoming direction in two signed bytes.
+struct Photon {
+    float pos[3];
+    uint8_t rgbe[4];
+    int8_t theta, phi;
+    uint8_t axis = 0;  // kd-tree split axis of this node
+};
+
+class PhotonMap {
+  public:
+    size_t size() const { return photons_.size(); }
+    // The gather radius the map starts with (POV-Ray's minGatherRad, times the radius
+    // multiplier).
+    double min_gather_radius() const { return min_radius_; }
+    // POV-Ray's adaptive gather at `p` with surface normal `n`: up to gather_max photons
+    // within the start radius (distances flattened along `n`), expanded once when fewer
+    // than gather_min are found and the density holds. Returns the radius the estimate
+    // divides by; `out` gets the photons.
+    double gather(const Point3& p, const Vector3& n,
+                  std::vector<const Photon*>& out) const;
+
+    // The flux and the unit direction toward where the photon came from.
+    static Rgb flux(const Photon& ph);
+    static Vector3 incoming(const Photon& ph);
+
+    // Shoots the photons of `scene` (whose Scene has settings.photons) and sorts them.
+    friend std::shared_ptr<const PhotonMap> build_photon_map(const PreparedScene& scene);
+
+  private:
+    // k nearest within `radius` (flattened distance); returns the radius POV-Ray reports:
+    // the farthest kept photon's distance when more than k were in reach, else `radius`.
+    double nearest(const Point3& p, const Vector3* n, double radius,
+                   std::vector<const Photon*>& out) const;
+    void build_tree(size_t lo, size_t hi);
+    void estimate_gather_radius();
+
+    PhotonSettings settings_;
+    std::vector<Photon> photons_;  // a balanced kd-tree: each range's middle is its node
+    double min_radius_ = 0, radius_step_ = 0;
+};
+
+// The map for `scene` when its scene has photons and the quality level renders them
+// (+Q9); null otherwise. Stops with a located `unsupported:` for what the map does not do
+// yet (photons in media, parallel and cylinder lights).
+std::shared_ptr<const PhotonMap> build_photon_map(const PreparedScene& scene);
+
+// Whether `leaf` (hit by a shadow ray toward `light`) makes caustics with photons: a
+// target whose photon refraction is on for that light (POV-Ray 3.7's
+// ComputeShadowColour: its filtered shadow is black, the photons bring the light).
+bool refracts_photons(const ObjectPhotons& leaf, const Light& light);
+
+}  // namespace povwall::trace
