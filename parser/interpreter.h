@@ -174,7 +174,10 @@ class Interpreter {
     // layer over or with a patterned texture as POV-Ray's Link_Textures does.
     void link_textures(LayeredTexture& onto, LayeredTexture&& layers, const Token& at);
     ColourMap parse_colour_map_block();  // after 'color_map'
+    // A pattern keyword and what follows it; the patterns POV-Ray starts at frequency 0
+    // (no wrapping: the block patterns, object, quilted, image_pattern) get it here.
     bool try_pattern_keyword(const Token& t, PatternSpec& spec);
+    bool try_pattern_keyword_kind(const Token& t, PatternSpec& spec);
     PatternSpec::Slope parse_slope();  // after 'slope' (the pattern)
     // After `object` as a pattern: `{ OBJECT [transforms]` up to its list entries, which
     // the caller reads (as checker's) before the closing '}' (parser/pattern_object.cpp).

@@ -274,7 +274,24 @@ PatternSpec::Slope Interpreter::parse_slope() {
     return s;
 }
 
+namespace {
+
+// POV-Ray's parser sets Frequency 0 for these: their value is taken as it is, and
+// `phase` alone does nothing.
+bool starts_at_frequency_zero(PatternKind k) {
+    return entry_list_size(k) != 0 || k == PatternKind::Quilted ||
+           k == PatternKind::ImagePattern;
+}
+
+}  // namespace
+
 bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
+    if (!try_pattern_keyword_kind(t, spec)) return false;
+    if (starts_at_frequency_zero(spec.kind)) spec.frequency = 0;
+    return true;
+}
+
+bool Interpreter::try_pattern_keyword_kind(const Token& t, PatternSpec& spec) {
     if (t.kind != TokenKind::Word) return false;
     std::string_view w = t.text;
     if (is_unsupported_pattern(w)) unsupported(t, w);
@@ -463,6 +480,10 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
         turbulence_warp().lambda = parse_float();
     } else if (w == "frequency") {
         spec.frequency = parse_float();
+        // POV-Ray wraps a block or object pattern's entry number then, and blends the
+        // neighbouring entries of its list at the fraction: not done here.
+        if (spec.frequency != 0 && entry_list_size(spec.kind) != 0)
+            unsupported(t, "frequency on a block or object pattern");
     } else if (w == "phase") {
         spec.phase = parse_float();
     } else if (w == "ramp_wave") {
@@ -1353,6 +1374,7 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
             // follow.
             PatternSpec checker;
             checker.kind = PatternKind::Checker;
+            checker.frequency = 0;
             TextureMap map;
             map.values = {0, 1};
             map.entries.resize(2);

@@ -535,12 +535,6 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
     return 0;
 }
 
-// POV-Ray sets frequency 0 (no wrapping) for these patterns; the data model cannot tell
-// an explicit `frequency 1` apart, so they always skip it.
-bool has_no_frequency(PatternKind k) {
-    return is_discrete(k) || k == PatternKind::Quilted || k == PatternKind::ImagePattern;
-}
-
 }  // namespace
 
 Real quilt_cubic(Real t, Real p1, Real p2) {
@@ -616,13 +610,12 @@ Vector3 unwarp_normal(const PatternSpec& spec, const Vector3& n) {
 
 Real value_at(const PatternSpec& spec, const Point3& p, const PatternEnv& env) {
     Real value = raw_value(spec, p, env);
-    if (has_no_frequency(spec.kind)) {
-        if (value < 0.0) value -= std::floor(value);
-    } else {
-        if (spec.frequency != 0.0)
-            value = std::fmod(value * spec.frequency + spec.phase, 1.00001);
-        if (value < 0.0) value -= std::floor(value);
-    }
+    // Quilted and image_pattern start at frequency 0, as POV-Ray's parser sets them; so
+    // do the block and object patterns, whose entry number is never wrapped here (the
+    // parser refuses a frequency on them).
+    if (spec.frequency != 0.0 && !is_discrete(spec.kind))
+        value = std::fmod(value * spec.frequency + spec.phase, 1.00001);
+    if (value < 0.0) value -= std::floor(value);
     switch (spec.wave) {
         case WaveType::Ramp:
             break;

@@ -241,6 +241,14 @@ TEST(Keywords, RefusedOrCheckedWhereTheyStand) {
         "test.pov:1:48: error: unsupported: cutaway_textures\n"
         "intersection { sphere { 0, 1 } sphere { x, 1 } cutaway_textures }\n"
         "                                               ^~~~~~~~~~~~~~~~");
+    // A frequency wraps a block pattern's entry number in POV-Ray (and blends entries);
+    // 0 changes nothing.
+    EXPECT_EQ(
+        error_of("plane { y, 0 pigment { hexagon frequency 2 } }"),
+        "test.pov:1:32: error: unsupported: frequency on a block or object pattern\n"
+        "plane { y, 0 pigment { hexagon frequency 2 } }\n"
+        "                               ^~~~~~~~~");
+    EXPECT_EQ(error_of("plane { y, 0 pigment { checker frequency 0 } }"), "(no error)");
     EXPECT_EQ(error_of("light_source { 0, 1 area_light x, y, 2, 2 area_illumination }"),
               "test.pov:1:43: error: unsupported: area_illumination\n"
               "light_source { 0, 1 area_light x, y, 2, 2 area_illumination }\n"
