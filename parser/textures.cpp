@@ -1,6 +1,7 @@
 // Textures: pigments (colours and patterns), normals, finishes, interiors, colour maps.
 #include <cmath>
 
+#include "core/pattern_lists.h"
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
@@ -67,23 +68,7 @@ bool is_unsupported_pattern(std::string_view w) {
 
 // How many entries the block patterns take right after their keyword (checker
 // rgb A, rgb B; ...); 0 for the other patterns.
-int entry_list_size(PatternKind k) {
-    switch (k) {
-        case PatternKind::Checker:
-        case PatternKind::Brick:
-        case PatternKind::ObjectInside:
-            return 2;
-        case PatternKind::Hexagon:
-            return 3;
-        case PatternKind::Square:
-            return 4;
-        case PatternKind::Triangular:
-        case PatternKind::Cubic:
-            return 6;
-        default:
-            return 0;
-    }
-}
+int entry_list_size(PatternKind k) { return pattern_list_size(k); }
 
 bool is_fractal(PatternKind k) {
     return k == PatternKind::Mandel || k == PatternKind::Julia ||

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/noise.h"
+#include "core/pattern_lists.h"
 #include "core/scene.h"
 #include "trace/pattern.h"
 
@@ -54,26 +55,12 @@ inline int resolve_generator(const PatternSpec& spec, const PatternEnv& env) {
     return spec.noise_generator != 0 ? spec.noise_generator : env.noise_generator;
 }
 
-// The patterns whose value is an entry index (their lists: checker 2, brick 2, hexagon
-// 3, square 4, triangular and cubic 6 entries).
-inline bool is_discrete(PatternKind k) {
-    return k == PatternKind::Checker || k == PatternKind::Brick ||
-           k == PatternKind::Hexagon || k == PatternKind::Square ||
-           k == PatternKind::Triangular || k == PatternKind::Cubic ||
-           k == PatternKind::ObjectInside;
-}
+// The patterns whose value is an entry index, and their lists' sizes (2 for the others,
+// whose lists are maps).
+inline bool is_discrete(PatternKind k) { return pattern_list_size(k) != 0; }
 inline int list_size(PatternKind k) {
-    switch (k) {
-        case PatternKind::Hexagon:
-            return 3;
-        case PatternKind::Square:
-            return 4;
-        case PatternKind::Triangular:
-        case PatternKind::Cubic:
-            return 6;
-        default:
-            return 2;
-    }
+    const int n = pattern_list_size(k);
+    return n ? n : 2;
 }
 
 // The surface coordinates (u, v, 0) of the hit `env` sees (trace/uv_mapping.h); the

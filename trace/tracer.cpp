@@ -15,16 +15,31 @@ TraceResult Tracer::trace(const TraceRay& ray) {
     return {Rgb(float(sum.r), float(sum.g), float(sum.b)), float(sum.transmit)};
 }
 
+bool Tracer::nearest_hit(const TraceRay& ray, Hit& hit, Real& probe) {
+    probe = ray.depth <= tie_levels_ ? tie_tolerance_ : 0;
+    ctx_.tie_tolerance = probe;
+    const bool found = scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_);
+    ctx_.tie_tolerance = 0;
+    if (found && probe > 0 && on_pattern_boundary(scene_, hit, probe))
+        ++ctx_.pattern_ties;
+    return found;
+}
+
+Rgb Tracer::shadow_filter(const ChildRay& shadow, Real probe) {
+    if (shadow.unoccluded) return Rgb(1.0f);
+    ++counters_.shadow;
+    ctx_.tie_tolerance = probe;
+    const Rgb filter = shadow_transmittance(scene_, shadow, ctx_);
+    ctx_.tie_tolerance = 0;
+    return filter;
+}
+
 TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
     if (refuse_ray(ray, scene_.scene().settings, counters_)) return {};
     count_ray(ray, counters_);
     Hit hit;
-    const Real probe = ray.depth <= tie_levels_ ? tie_tolerance_ : 0;
-    ctx_.tie_tolerance = probe;
-    const bool found = scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_);
-    ctx_.tie_tolerance = 0;
-    if (!found) return miss_colour(scene_, ray, &ctx_);
-    if (probe > 0 && on_pattern_boundary(scene_, hit, probe)) ++ctx_.pattern_ties;
+    Real probe = 0;
+    if (!nearest_hit(ray, hit, probe)) return miss_colour(scene_, ray, &ctx_);
     if (records_.size() <= level) {
         records_.resize(level + 1);
         results_.resize(level + 1);
@@ -38,14 +53,7 @@ TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
         const ChildRay child = records_[level].children[i];
         TraceResult r;
         if (child.kind == ChildRay::Kind::Shadow) {
-            if (child.unoccluded) {
-                r.colour = Rgb(1.0f);
-            } else {
-                ++counters_.shadow;
-                ctx_.tie_tolerance = probe;
-                r.colour = shadow_transmittance(scene_, child, ctx_);
-                ctx_.tie_tolerance = 0;
-            }
+            r.colour = shadow_filter(child, probe);
         } else {
             r = trace_at(child.trace, level + 1);
         }
@@ -60,16 +68,12 @@ void Tracer::trace_forward(const TraceRay& ray, const Rgb& contribution,
     if (refuse_ray(ray, scene_.scene().settings, counters_)) return;  // black, opaque
     count_ray(ray, counters_);
     Hit hit;
-    const Real probe = ray.depth <= tie_levels_ ? tie_tolerance_ : 0;
-    ctx_.tie_tolerance = probe;
-    const bool found = scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_);
-    ctx_.tie_tolerance = 0;
-    if (!found) {
+    Real probe = 0;
+    if (!nearest_hit(ray, hit, probe)) {
         const TraceResult m = miss_colour(scene_, ray, &ctx_);
         sum.add(contribution * m.colour, transmit_contribution * m.transmit);
         return;
     }
-    if (probe > 0 && on_pattern_boundary(scene_, hit, probe)) ++ctx_.pattern_ties;
     if (records_.size() <= level) {
         records_.resize(level + 1);
         results_.resize(level + 1);
@@ -90,14 +94,7 @@ void Tracer::trace_forward(const TraceRay& ray, const Rgb& contribution,
         const FogEffect& fog = records_[level].fog;
         const Rgb child_contribution = contribution * fog.mul * child.coeff;
         if (child.kind == ChildRay::Kind::Shadow) {
-            Rgb filter(1.0f);
-            if (!child.unoccluded) {
-                ++counters_.shadow;
-                ctx_.tie_tolerance = probe;
-                filter = shadow_transmittance(scene_, child, ctx_);
-                ctx_.tie_tolerance = 0;
-            }
-            sum.add(child_contribution * filter, 0.0f);
+            sum.add(child_contribution * shadow_filter(child, probe), 0.0f);
             continue;
         }
         const float child_transmit =

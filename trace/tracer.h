@@ -77,6 +77,10 @@ class Tracer {
     uint64_t pattern_ties() const { return ctx_.pattern_ties; }
 
   private:
+    // The nearest hit, with the tie probe of the ray's level (`probe`, 0: none).
+    bool nearest_hit(const TraceRay& ray, Hit& hit, Real& probe);
+    // What reaches a shadow child's light through what lies between (1: nothing can).
+    Rgb shadow_filter(const ChildRay& shadow, Real probe);
     TraceResult trace_at(const TraceRay& ray, size_t level);
     // Linear shading (the plan needs no parent tracking): the ray's share of its camera
     // sample, `contribution` times what it sees, added into `sum` as black boxes add it
