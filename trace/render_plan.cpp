@@ -68,11 +68,16 @@ bool any_refracting(const Object& o, bool transparent_above) {
     return false;
 }
 
-// A convex (or flat) surface cannot stand between one of its own lit points and a point
-// light: the segment toward the light leaves it at once. Affine transforms keep this.
-bool convex_surface(const Object& o) {
+// A flat surface cannot stand between one of its own points and a light: the segment
+// toward the light leaves its plane at once. (A convex solid can: a point whose bumped
+// normal turns toward a light behind its face, or a camera inside it, sees the light
+// through the solid, which POV-Ray's shadow ray meets.) Affine transforms keep this.
+bool flat_surface(const Object& o) {
     if (o.inverse || !o.clipped_by->empty() || o.double_illuminate) return false;
-    return !std::holds_alternative<Csg>(o.shape) && leaf_convex(o);
+    return std::holds_alternative<Plane>(o.shape) ||
+           std::holds_alternative<Disc>(o.shape) ||
+           std::holds_alternative<Triangle>(o.shape) ||
+           std::holds_alternative<Polygon>(o.shape);
 }
 
 const char* light_kind(const Light& l) {
@@ -240,16 +245,14 @@ RenderPlan make_render_plan(const Scene& scene, bool everything_on, int quality)
     plan.refraction_rays = everything_on || refracting;
 
     // Who can cast a shadow: top-level objects without no_shadow (looks_like objects
-    // never do). None, or one opaque convex surface that is the whole scene: no shadow
-    // ray can be blocked. (A transparent one shadows the points inside it: its far side
-    // is lit through its near side.)
+    // never do). None, or one opaque flat surface that is the whole scene: no shadow ray
+    // can be blocked.
     size_t casters = 0;
     for (const Object& o : scene.objects) casters += o.no_shadow ? 0 : 1;
     size_t looks_like = 0;
     for (const Light& l : scene.lights) looks_like += l.looks_like.size();
-    const bool lone_convex = scene.objects.size() == 1 && looks_like == 0 &&
-                             casters == 1 && !transparent &&
-                             convex_surface(scene.objects[0]);
+    const bool lone_flat = scene.objects.size() == 1 && looks_like == 0 && casters == 1 &&
+                           !transparent && flat_surface(scene.objects[0]);
     for (const Light& l : scene.lights) {
         LightPlan lp;
         if (l.shadowless) {
@@ -261,11 +264,11 @@ RenderPlan make_render_plan(const Scene& scene, bool everything_on, int quality)
             lp.shadow_rays = false;
             lp.unoccluded = true;
             lp.reason = "no object casts shadows: no shadow rays";
-        } else if (lone_convex && !l.area) {
+        } else if (lone_flat && !l.area) {
             lp.shadow_rays = false;
             lp.unoccluded = true;
             lp.reason =
-                "the only object is convex and cannot shadow itself: no shadow rays";
+                "the only object is flat and cannot shadow itself: no shadow rays";
         } else if (l.area) {
             lp.reason = "shadow rays (" + std::to_string(l.area->size1 * l.area->size2) +
                         "-sample area grid, adaptive " +

@@ -41,12 +41,21 @@ sphere { <0, 1, 0>, 0.9 pigment { rgbf <1, 1, 1, 0.9> } interior { ior 1.5 } }
 box { <1, 0, -1>, <2, 1, 0> pigment { color rgb <0.2, 0.4, 1> } no_shadow }
 )";
 
-// One convex object: nothing can stand between its lit points and the light.
-const char* kLoneSphere = R"(
+// One flat object: nothing can stand between its points and the light.
+const char* kLoneDisc = R"(
 camera { location <0, 0, -4> look_at 0 }
 light_source { <2, 4, -3> color rgb 1 }
 light_source { <-5, 1, -1> color rgb 0.5 }
-sphere { 0, 1 pigment { color rgb <1, 0.6, 0.3> } finish { phong 0.6 } scale <1, 0.7, 1.2> }
+disc { 0, <0.2, 0.3, -1>, 1.5 pigment { color rgb <1, 0.6, 0.3> } finish { phong 0.6 }
+       normal { bumps 0.8 scale 0.2 } scale <1, 0.7, 1.2> }
+)";
+
+// One convex solid: a bumped normal turned toward a light behind its face, or a camera
+// inside it, sees that light through the solid itself.
+const char* kLoneSphere = R"(
+camera { location <0, 0, -4> look_at 0 }
+light_source { <2, 4, -3> color rgb 1 }
+sphere { 0, 1 pigment { color rgb <1, 0.6, 0.3> } normal { bumps 1 scale 0.2 } }
 )";
 
 // Every object no_shadow: no shadow ray can be blocked.
@@ -124,7 +133,7 @@ TEST(RenderPlan, GlassSceneNeedsEverything) {
 }
 
 TEST(RenderPlan, UnblockableShadowRaysAreLeftOut) {
-    for (const char* text : {kLoneSphere, kNoShadow}) {
+    for (const char* text : {kLoneDisc, kNoShadow}) {
         Scene scene = parse(text);
         trace::RenderPlan plan = trace::make_render_plan(scene);
         for (const auto& l : plan.lights) {
@@ -137,14 +146,16 @@ TEST(RenderPlan, UnblockableShadowRaysAreLeftOut) {
         EXPECT_EQ(left_out.rays.shadow, 0u);
         EXPECT_GT(forced.rays.shadow, 0u);
     }
-    // A second object that casts shadows brings them back.
-    std::string two = std::string(kLoneSphere) + "sphere { <1, 2, -1>, 0.3 }\n";
+    // A second object that casts shadows brings them back; so does a lone solid.
+    std::string two = std::string(kLoneDisc) + "sphere { <1, 2, -1>, 0.3 }\n";
     for (const auto& l : trace::make_render_plan(parse(two.c_str())).lights)
+        EXPECT_TRUE(l.shadow_rays);
+    for (const auto& l : trace::make_render_plan(parse(kLoneSphere)).lights)
         EXPECT_TRUE(l.shadow_rays);
 }
 
 TEST(RenderPlan, ForcedOnPlanChangesNoPixel) {
-    for (const char* text : {kDiffuse, kGlass, kLoneSphere, kNoShadow}) {
+    for (const char* text : {kDiffuse, kGlass, kLoneDisc, kLoneSphere, kNoShadow}) {
         Scene scene = parse(text);
         // The plan on forces parent tracking: colours combine as the ray tree returns
         // instead of as forward contributions (trace/forward_sum.h), the same sums in
@@ -190,12 +201,11 @@ TEST(RenderPlan, ExplainsInPlainWords) {
         "shading is linear: contributions go straight to the pixel, no parent table",
     };
     EXPECT_EQ(lines, expected);
-    Scene lone = parse(kLoneSphere);
+    Scene lone = parse(kLoneDisc);
     auto lone_lines = trace::explain_plan(trace::make_render_plan(lone), lone);
-    EXPECT_EQ(
-        lone_lines[2],
-        "light 1 (point light): the only object is convex and cannot shadow itself: no "
-        "shadow rays");
+    EXPECT_EQ(lone_lines[2],
+              "light 1 (point light): the only object is flat and cannot shadow itself: "
+              "no shadow rays");
     EXPECT_EQ(lone_lines[5], "1 bounded primitives (< 24): no octree, a flat list");
 }
 
