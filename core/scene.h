@@ -74,13 +74,13 @@ enum class PatternKind : uint8_t {
     // `material_map { }`: the texture map entry an image's pixel indexes (a texture's
     // map pattern only, PatternSpec::image).
     MaterialMap,
-    Square,          // four entries over the x-z unit squares
-    Triangular,      // six entries over x-z triangles
-    Cubic,           // six entries, one per face direction of a cube around the origin
-    Julia,           // julia fractal in x-y (PatternSpec::fractal)
-    Magnet,          // magnet 1 or 2, mandel or julia form (PatternSpec::fractal)
-    Facets,          // normals only: flat facets (PatternSpec::facets)
-    Tiling,          // `tiling N` in x-z (N in PatternSpec::scalar)
+    Square,      // four entries over the x-z unit squares
+    Triangular,  // six entries over x-z triangles
+    Cubic,       // six entries, one per face direction of a cube around the origin
+    Julia,       // julia fractal in x-y (PatternSpec::fractal)
+    Magnet,      // magnet 1 or 2, mandel or julia form (PatternSpec::fractal)
+    Facets,      // normals only: flat facets (PatternSpec::facets)
+    Tiling,      // `tiling N` in x-z (N in PatternSpec::scalar)
 };
 
 // The `tiling` numbers trace/pattern_tiling.cpp evaluates: 1 to this (POV-Ray has 27).
