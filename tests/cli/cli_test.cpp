@@ -578,7 +578,7 @@ TEST(Cli, ExplainPrintsThePlanAndStatsShowWhatWasLeftOut) {
     fs::path scene = write_scene("plan.pov", R"(
 camera { location <0, 0, -4> look_at 0 }
 light_source { <2, 4, -3> color rgb 1 }
-sphere { 0, 1 pigment { color rgb <1, 0.6, 0.3> } }
+disc { 0, <0, 0.2, -1>, 1 pigment { color rgb <1, 0.6, 0.3> } }
 )");
     fs::path out = scratch() / "plan.png", stats = scratch() / "plan.json";
     RunResult r = run("render " + scene.string() +
@@ -591,14 +591,14 @@ sphere { 0, 1 pigment { color rgb <1, 0.6, 0.3> } }
             ":\n"
             "  no reflective materials: reflection rays off\n"
             "  no transparent materials: transmission and refraction rays off\n"
-            "  light 1 (point light): the only object is convex and cannot shadow "
+            "  light 1 (point light): the only object is flat and cannot shadow "
             "itself: no shadow rays\n"
             "  points a light does not reach (back faces, outside spot cones): no "
             "shadow ray\n"
             "  1 bounded primitives (< 24): no octree, a flat list\n"
             "  shading is linear: contributions go straight to the pixel, no parent "
             "table\n"
-            "  scene 0.9 KB fits the 1.0 GB worker budget: one process, no walls; 2 "
+            "  scene 0.8 KB fits the 1.0 GB worker budget: one process, no walls; 2 "
             "threads take render blocks as they finish (screen subdivision, one shared "
             "scene)\n");
     // "--stats -": the same JSON on standard output.
