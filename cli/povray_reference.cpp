@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "cli/process.h"
+#include "core/self_exe.h"
 #include "parser/parser.h"
 #include "trace/object_queries.h"
 #include "trace/pattern.h"
@@ -105,6 +106,27 @@ std::string shortest(double v) {
 }
 
 }  // namespace
+
+std::vector<std::string> povwall_command(const RenderOptions& o,
+                                         const std::string& out_png, int threads,
+                                         const std::vector<std::string>& extra) {
+    const std::string exe = self_exe();
+    if (exe.empty()) throw UsageError("cannot find the povwall binary");
+    std::vector<std::string> cmd{exe,
+                                 "render",
+                                 o.scene,
+                                 "-o",
+                                 out_png,
+                                 "-W",
+                                 std::to_string(o.width),
+                                 "-H",
+                                 std::to_string(o.height),
+                                 "-q"};
+    if (threads > 0) cmd.insert(cmd.end(), {"--threads", std::to_string(threads)});
+    for (const auto& l : o.library_paths) cmd.insert(cmd.end(), {"-L", l});
+    cmd.insert(cmd.end(), extra.begin(), extra.end());
+    return cmd;
+}
 
 std::vector<std::string> povray_command(const RenderOptions& o,
                                         const std::string& out_png, int threads,

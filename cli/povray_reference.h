@@ -18,6 +18,14 @@ std::vector<std::string> povray_command(const RenderOptions& o,
                                         const std::string& out_png, int threads,
                                         const std::vector<std::string>& extra = {});
 
+// The same render by this povwall binary as a process of its own (as POV-Ray runs: from
+// start to exit): the scene, size and include folders of `o`, `threads` threads (0: its
+// default), quiet; then `extra` switches. Throws UsageError when the binary cannot be
+// found.
+std::vector<std::string> povwall_command(const RenderOptions& o,
+                                         const std::string& out_png, int threads,
+                                         const std::vector<std::string>& extra = {});
+
 struct PovrayRun {
     enum class Status { Ok, NotInstalled, SceneError, Failed } status = Status::Ok;
     // Wall time of the render; for a cached image the time recorded when it was made (0
