@@ -158,6 +158,7 @@ std::vector<std::string> povray_command(const RenderOptions& o,
         cmd.push_back("-A");
     }
     if (o.render.alpha) cmd.push_back("+UA");
+    if (o.file_gamma) cmd.push_back("File_Gamma=" + shortest(*o.file_gamma));
     if (o.render.quality != 9) cmd.push_back("+Q" + std::to_string(o.render.quality));
     // Every other setting that changes the image, as povwall has it from its switches
     // and .ini files.
