@@ -206,12 +206,12 @@ bool Interpreter::try_transform(const Token& t, Transform& out, TransformStep* s
         Token at = peek();
         Vector3 s = parse_vector();
         for (int i = 0; i < 3; ++i) {
-            // POV-Ray warns and substitutes 1.0; a scene that scales by 0 almost surely
-            // has a bug, and any stand-in value makes a singular (or wildly stretched)
-            // inverse.
-            if (s[i] == 0)
-                error(at, std::string("singular transform: scale by 0 in ") + "xyz"[i] +
-                              " (the object would be flattened)");
+            // POV-Ray's Parse_Scale_Vector, wherever `scale` is read: a 0 becomes 1.
+            if (s[i] == 0) {
+                s[i] = 1;
+                warn(at, std::string("Illegal Value: Scale ") + "XYZ"[i] +
+                             " by 0.0. Changed to 1.0.");
+            }
         }
         out = Transform::scale(s);
         kind = {TransformStep::Kind::Scale, s};
@@ -728,6 +728,22 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 !is_word(c, "normal") && !is_word(c, "interior") &&
                 !is_word(c, "material")) {
                 next();
+                // A declared object named bare is a child, as object { Id } without
+                // modifiers (POV-Ray's Parse_Object). First in the braces POV-Ray takes
+                // it as the CSG to extend: the same as a child when it is a CSG of this
+                // kind, something else otherwise.
+                const Value* v = lookup(c);
+                if (auto id = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr) {
+                    const Csg* base = std::get_if<Csg>(&(*id)->shape);
+                    if (csg.children.empty() && csg.lights.empty() &&
+                        (!base || base->kind != csg.kind))
+                        unsupported(
+                            c, "an object identifier first in a CSG of another kind");
+                    child = **id;
+                    child.loc = sources_.location(c);
+                    csg.children.push_back(std::move(child));
+                    continue;
+                }
                 if (try_parse_object(c, child)) {
                     csg.children.push_back(std::move(child));
                     continue;

@@ -152,7 +152,8 @@ Numeric Interpreter::parse_colour() {
         }
         any = true;
     }
-    if (!any) expected("a colour", peek());
+    // No colour at all is black, as POV-Ray's Parse_Colour leaves it (a light_source
+    // written with its location alone is a black light there).
     return c;
 }
 

@@ -482,3 +482,42 @@ TEST(RepeatedBlocks, DefaultsAccumulateAndDeclarationsStartFromThem) {
 
 }  // namespace
 }  // namespace povwall::parser
+
+namespace povwall::parser {
+namespace {
+
+// Forms real scenes write that POV-Ray 3.7 reads (found in public scenes).
+TEST(RealSceneForms, NoColourIsBlack) {
+    // POV-Ray's Parse_Colour leaves the colour black when none follows.
+    const Scene s =
+        parse("light_source { <1, 20, -5> }\nsphere { 0, 1 pigment { color } }");
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].colour.r, 0.0f);
+    EXPECT_EQ(s.lights[0].colour.g, 0.0f);
+    EXPECT_EQ(s.lights[0].colour.b, 0.0f);
+}
+
+TEST(RealSceneForms, BareObjectIdentifierInCsg) {
+    // A declared object named bare inside a CSG is a child (POV-Ray's Parse_Object).
+    const Scene s = parse(
+        "#declare S = sphere { <0, 0, -1>, 0.8 }\n"
+        "#declare D = difference { box { -1, 1 } sphere { 0, 1.2 } }\n"
+        "difference { box { -1, 1 } S }\n"
+        "difference { D S }\n");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const Csg* a = std::get_if<Csg>(&s.objects[0].shape);
+    ASSERT_NE(a, nullptr);
+    ASSERT_EQ(a->children.size(), 2u);
+    EXPECT_NE(std::get_if<Sphere>(&a->children[1].shape), nullptr);
+    // First in the braces POV-Ray extends the named CSG: a child when it is of this kind.
+    const Csg* b = std::get_if<Csg>(&s.objects[1].shape);
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(b->children.size(), 2u);
+    EXPECT_EQ(error_of("#declare S = sphere { 0, 1 }\nunion { S sphere { 1, 1 } }"),
+              "test.pov:2:9: error: unsupported: an object identifier first in a CSG of "
+              "another "
+              "kind");
+}
+
+}  // namespace
+}  // namespace povwall::parser

@@ -9,7 +9,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "distrib/space_render.h"
@@ -169,18 +171,34 @@ TEST(StressOctree, CoincidentCopiesBuildBoundedAndRenderAsOne) {
     EXPECT_EQ(many.rgba, one.rgba);
 }
 
-TEST(StressErrors, ScaleByZeroIsALocatedError) {
-    try {
-        load("singular_scale");
-        FAIL() << "no error";
-    } catch (const parser::ParseError& e) {
-        std::string first =
-            std::string(e.what()).substr(0, std::string(e.what()).find('\n'));
-        EXPECT_EQ(first,
-                  std::string(POVWALL_STRESS_DIR) +
-                      "/singular_scale.pov:4:21: error: singular transform: scale by 0 "
-                      "in y (the object would be flattened)");
+TEST(StressErrors, ScaleByZeroBecomesOneWithPovRaysWarning) {
+    parser::ParseOptions po;
+    po.image_width = kW;
+    po.image_height = kH;
+    std::ostringstream messages;
+    po.messages = &messages;
+    const std::string path = std::string(POVWALL_STRESS_DIR) + "/singular_scale.pov";
+    Scene zero = parser::parse_scene_file(path, po);
+    EXPECT_EQ(messages.str().substr(0, messages.str().find('\n')),
+              path + ":6:21: warning: Illegal Value: Scale Y by 0.0. Changed to 1.0.");
+    // The same image as the sphere scaled by <1, 1, 1>.
+    const std::string unscaled = ::testing::TempDir() + "unscaled_sphere.pov";
+    {
+        std::ofstream out(unscaled);
+        out << "#version 3.7;\ncamera { location <0, 0, -5> look_at 0 }\n"
+               "light_source { <3, 5, -5> color rgb 1 }\n"
+               "sphere { 0, 1 scale <1, 1, 1> pigment { rgb 1 } }\n";
     }
+    Scene one = parser::parse_scene_file(unscaled, po);
+    trace::RenderSettings rs;
+    rs.width = kW;
+    rs.height = kH;
+    rs.threads = 1;
+    const Image a = trace::render_scene(zero, rs), b = trace::render_scene(one, rs);
+    size_t lit = 0;
+    for (size_t i = 0; i < a.rgba.size(); i += 4) lit += a.rgba[i] > 0.3f;
+    EXPECT_GT(lit, size_t(kW * kH / 20));
+    EXPECT_EQ(a.rgba, b.rgba);
 }
 
 TEST(StressErrors, SingularMatrixIsALocatedError) {
