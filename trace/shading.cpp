@@ -141,9 +141,11 @@ bool lights_material(const Light& light, const Material& m) {
 
 bool light_at(const Light& l, const Point3& p, LightSample& s) {
     if (l.kind == Light::Kind::Parallel) {
+        // The depth to the light is the distance to its plane, negative behind it
+        // (POV-Ray's ComputeOneWhiteLightRay): nothing blocks a point there, and it is
+        // lit from the light's side like any other.
         s.dir = normalize(l.location - l.point_at);
-        Real d = dot(l.location - p, s.dir);
-        s.distance = d > 0 ? d : kInfinity;
+        s.distance = dot(l.location - p, s.dir);
     } else {
         Vector3 v = l.location - p;
         s.distance = length(v);
@@ -183,11 +185,10 @@ bool light_at(const Light& l, const Point3& p, LightSample& s) {
         }
         if (att <= 0) return false;
     }
-    if (l.fade_power > 0 && att > 0 && s.distance < kInfinity) {
-        // POV-Ray's Attenuate_Light: without a fade_distance the power law applies alone.
-        att *= std::fabs(l.fade_distance) >= kPovEpsilon
-                   ? float(2 / (1 + std::pow(s.distance / l.fade_distance, l.fade_power)))
-                   : float(std::pow(s.distance, -l.fade_power));
+    if (l.fade_power > 0 && std::fabs(l.fade_distance) > kPovEpsilon && att > 0 &&
+        s.distance < kInfinity) {
+        // POV-Ray 3.7's Attenuate_Light: no fade without a fade_distance.
+        att *= float(2 / (1 + std::pow(s.distance / l.fade_distance, l.fade_power)));
     }
     s.colour = l.colour * att;
     return !s.colour.is_black();
@@ -216,6 +217,8 @@ ChildRay shadow_child(const TraceRay& from, const Point3& at, const LightSample&
     child.trace.use = RayUse::Shadow;
     child.t_max = s.distance;
     child.light = int(l);
+    // A parallel light's depth is negative behind its plane: a test over it finds nothing.
+    child.unoccluded = !(s.distance > 0);
     return child;
 }
 
@@ -620,7 +623,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     // media_attenuation: fog dims the light along its way (no fog colour
                     // is added to light, as for POV-Ray's shadow test rays).
                     if (sample_ok[l] && light.media_attenuation && !sc.fogs.empty() &&
-                        quality.atmosphere() && samples[l].distance < kInfinity) {
+                        quality.atmosphere() && samples[l].distance > 0 &&
+                        samples[l].distance < kInfinity) {
                         LightSample& ls = samples[l];
                         ls.colour *= fog_effect(sc, {P, ls.dir}, ls.distance).mul;
                     }
@@ -736,14 +740,16 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         child.area = light.area.has_value();
         child.light_colour = s.colour;
         // Below +Q4 nothing blocks a light; below +Q5 an area light is its centre.
-        child.unoccluded =
-            (l < plan.lights.size() && plan.lights[l].unoccluded) || !quality.shadows();
+        child.unoccluded = child.unoccluded ||
+                           (l < plan.lights.size() && plan.lights[l].unoccluded) ||
+                           !quality.shadows();
         child.area = child.area && quality.area_lights();
         out.children.push_back(child);
     }
 
-    // What shows through the surface: straight on when the IOR does not change (no trace
-    // level used, POV-Ray 3.7), refracted otherwise.
+    // What shows through the surface: straight on when the IOR does not change (a
+    // continued ray: no trace level used, though met at the last one), refracted
+    // otherwise.
     if (trans > adc && quality.refraction()) {
         ChildRay child;
         child.kind = ChildRay::Kind::Transmission;
@@ -781,6 +787,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         if (std::fabs(eta - 1) < kPovEpsilon) {
             child.trace.ray = {P, D};
             child.trace.depth = ray.depth;
+            child.trace.continued = true;
         } else {
             // Bent about the top layer's normal turned to face the ray (a perturbed
             // normal may point away from it).
@@ -935,7 +942,8 @@ class SampleLight final : public MediaLightProbe {
         to_light = s.dir;
         const Quality quality = scene_.plan().quality;
         // As for a lit surface: fog dims a light with media_attenuation.
-        if (light.media_attenuation && !sc.fogs.empty() && s.distance < kInfinity)
+        if (light.media_attenuation && !sc.fogs.empty() && s.distance > 0 &&
+            s.distance < kInfinity)
             s.colour *= fog_effect(sc, {at, s.dir}, s.distance).mul;
         if (!quality.shadows()) return s.colour;
         ChildRay child = shadow_child(ray_, at, s, l);

@@ -63,8 +63,12 @@ struct InteriorStack {
 
 // A ray to trace, with what exact POV-Ray semantics need to know about it.
 struct TraceRay {
-    Ray ray;           // unit direction
-    int depth = 1;     // 1 for camera rays; refused when above max_trace_level
+    Ray ray;        // unit direction
+    int depth = 1;  // 1 for camera rays; refused when above max_trace_level
+    // Passed straight through a surface between equal indices of refraction (POV-Ray's
+    // continued ray): it keeps its parent's depth, and is refused already at
+    // max_trace_level, where POV-Ray's level test meets it.
+    bool continued = false;
     float weight = 1;  // adc_bailout weight
     RayUse use = RayUse::Camera;
     InteriorStack interiors;

@@ -30,10 +30,13 @@ struct TraceCounters {
     }
 };
 
-// POV-Ray's entry test of a ray (TraceRay): refused past max_trace_level or below
-// adc_bailout, when it is black and opaque. A refusal for its weight is counted.
+// POV-Ray's entry test of a ray (TraceRay): refused at max_trace_level or below
+// adc_bailout, when it is black and opaque. The level it tests is the parent's: a
+// continued ray's depth, one less than any other ray's. A refusal for its weight is
+// counted.
 inline bool refuse_ray(const TraceRay& ray, const GlobalSettings& g, TraceCounters& c) {
-    if (ray.depth <= g.max_trace_level && ray.weight >= g.adc_bailout) return false;
+    const int entry_level = ray.continued ? ray.depth : ray.depth - 1;
+    if (entry_level < g.max_trace_level && ray.weight >= g.adc_bailout) return false;
     if (ray.weight < g.adc_bailout) ++c.adc_saved;
     return true;
 }
