@@ -175,7 +175,7 @@ bool read_record(Reader& rd, const ItemLimits& limits, int& box, Item& item,
         r.trace.depth = rd.raw<int32_t>();
         r.trace.weight = rd.raw<float>();
         uint8_t use = rd.raw<uint8_t>();
-        if (use > uint8_t(trace::RayUse::Shadow)) return false;
+        if (use > uint8_t(trace::kLastRayUse)) return false;
         r.trace.use = trace::RayUse(use);
         read_stack(rd, r.trace.interiors, numbers);
         r.t_from = rd.raw<Real>();
