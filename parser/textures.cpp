@@ -676,13 +676,24 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                w == "srgbt" || w == "srgbft" || w == "red" || w == "green" ||
                w == "blue" || w == "filter" || w == "transmit" || w == "alpha";
     };
+    // POV-Ray reads the pattern only as the first item (after the identifier): one after
+    // a modifier or another pattern ends the block there (Parse_Pattern, then the
+    // caller's closing brace).
+    bool first_item = true;
     for (;;) {
         Token t = next();
         if (is_punct(t, terminator)) return;
+        const bool pattern_allowed = first_item;
+        first_item = false;
         // Colours first: no pattern keyword or modifier is one, and solid pigments are
         // the common case (the pattern tables are long).
         const bool colour = t.kind == TokenKind::Word && is_colour_word(t.text);
         if (!colour && try_pattern_keyword(t, p.pattern)) {
+            if (!pattern_allowed)
+                error(t, terminator == '}'
+                             ? "No matching } in 'pigment', " + std::string(t.text) +
+                                   " found instead"
+                             : "Expected ']', " + std::string(t.text) + " found instead");
             // The block patterns (and the object pattern) take their colours or
             // pigments right after the keyword (POV-Ray's Parse_Blend_List).
             const bool object_pattern = p.pattern->kind == PatternKind::ObjectInside;

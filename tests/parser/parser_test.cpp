@@ -545,6 +545,38 @@ TEST(Errors, PatternRefusalsAndMisuses) {
               "First texture missing from tiles");
 }
 
+// POV-Ray reads a pigment's pattern only as its first item (after an identifier): one
+// after a modifier or another pattern ends the block, and its closing brace (a
+// pigment_map entry's ']') is missing there (its messages, same place).
+TEST(Errors, PigmentPatternAfterAModifier) {
+    auto located = [](const std::string& text) {
+        try {
+            parse(text);
+        } catch (const ParseError& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    EXPECT_EQ(located("sphere { 0, 1 pigment { phase 0.4 quilted } }"),
+              "test.pov:1:35: error: No matching } in 'pigment', quilted found instead\n"
+              "sphere { 0, 1 pigment { phase 0.4 quilted } }\n"
+              "                                  ^~~~~~~");
+    EXPECT_EQ(located("sphere { 0, 1 pigment { checker quilted } }"),
+              "test.pov:1:33: error: No matching } in 'pigment', quilted found instead\n"
+              "sphere { 0, 1 pigment { checker quilted } }\n"
+              "                                ^~~~~~~");
+    EXPECT_EQ(located("sphere { 0, 1 pigment { gradient x pigment_map { [0 phase 0.4 "
+                      "quilted] [1 rgb 1] } } }"),
+              "test.pov:1:63: error: Expected ']', quilted found instead\n"
+              "sphere { 0, 1 pigment { gradient x pigment_map { [0 phase 0.4 quilted] [1 "
+              "rgb 1] } } }\n"
+              "                                                              ^~~~~~~");
+    // After an identifier the pattern is still the first item.
+    EXPECT_EQ(located("#declare P = pigment { rgb 1 }\n"
+                      "sphere { 0, 1 pigment { P quilted phase 0.4 } }"),
+              "(no error)");
+}
+
 }  // namespace
 }  // namespace povwall::parser
 
