@@ -123,6 +123,10 @@ class Interpreter {
     Numeric parse_numeric(bool no_gt = false);  // POV-Ray's Parse_Float/Vector level
     Numeric parse_express();                    // full expression (Parse_Express)
     double parse_float();
+    // A float POV-Ray stores in single precision (a SNGL field: a pattern's frequency,
+    // phase, wave exponent, agate_turb, quilted controls, turbulence omega and lambda, a
+    // normal's amount and accuracy), rounded as it stores it.
+    double parse_single();
     // A float read as POV-Ray reads counts and indices, truncated toward zero; values
     // past int's range (or NaN) saturate instead of being undefined.
     int parse_int() { return saturating_int(parse_float()); }

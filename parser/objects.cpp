@@ -398,7 +398,19 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         };
         morph(morph, obj);
     } else if (w == "double_illuminate") {
-        obj.double_illuminate = true;
+        // On a CSG it goes at once to every node below, on or off (POV-Ray's
+        // Set_CSG_Tree_Flag), so the outermost setting wins; unlike the ray flags it
+        // does not come down when the object is placed.
+        obj.double_illuminate = parse_bool_opt();
+        auto set_tree = [&](auto& self, Object& o) -> void {
+            if (auto csg = std::get_if<Csg>(&o.shape)) {
+                for (Object& c : csg->children) {
+                    c.double_illuminate = obj.double_illuminate;
+                    self(self, c);
+                }
+            }
+        };
+        set_tree(set_tree, obj);
     } else if (w == "sturm") {
         bool* sturm = nullptr;
         if (auto torus = std::get_if<Torus>(&obj.shape)) sturm = &torus->sturm;
@@ -868,10 +880,10 @@ void Interpreter::place_object(Object& obj, const Object* parent,
             obj.uv_mapping |= parent->uv_mapping;
         }
         if (!obj.interior) obj.interior = *parent->interior;
+        // The ray flags come down (never off); where POV-Ray tests them, ray_use.h.
         obj.no_shadow |= parent->no_shadow;
         obj.no_image |= parent->no_image;
         obj.no_reflection |= parent->no_reflection;
-        obj.double_illuminate |= parent->double_illuminate;
         inherit_photons(obj.photons, parent->photons);
     }
     if (obj.texture.empty()) obj.texture.push_back(default_texture_);

@@ -646,10 +646,10 @@ Fog Interpreter::parse_fog() {
             f.octaves = std::clamp(parse_int(), 1, 10);
         } else if (w == "omega") {
             f.turbulent = true;
-            f.omega = parse_float();
+            f.omega = parse_single();  // POV-Ray's TURB keeps them in single precision
         } else if (w == "lambda") {
             f.turbulent = true;
-            f.lambda = parse_float();
+            f.lambda = parse_single();
         } else if (t.kind == TokenKind::Word && lookup(t) &&
                    std::holds_alternative<Numeric>(*lookup(t))) {
             unget(t);  // fog { Blue+Gray70 ... }: a colour expression without keyword

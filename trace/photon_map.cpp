@@ -219,7 +219,7 @@ void Shooter::shoot(const Light& light, size_t light_index, const Target& target
             if (attenuation < 0.00001) continue;
             TraceRay ray;
             ray.ray = {light.location, normalize(dir)};
-            ray.use = RayUse::Camera;
+            ray.use = RayUse::Photon;
             ray.interiors = start;
             ++shot_;
             trace(ray, light.colour * float(attenuation), 0, false, 0);

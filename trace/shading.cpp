@@ -704,7 +704,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
             child.trace.ray = {P, R};
             child.trace.depth = ray.depth + 1;
             child.trace.weight = reflection_weight;
-            child.trace.use = RayUse::Reflection;
+            child.trace.use = reflected_use(ray.use);
             child.trace.interiors = ray.interiors;
             child.coeff = reflectivity;
             child.exponent = f.reflection_exponent;
@@ -756,7 +756,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         child.coeff = fil;
         child.transmit_factor = trans;
         child.trace.interiors = ray.interiors;
-        child.trace.use = RayUse::Refraction;
+        child.trace.use = transmitted_use(ray.use);
         child.trace.weight =
             ray.weight * max3(Rgb(std::fabs(fil.r), std::fabs(fil.g), std::fabs(fil.b)));
         // The interior list, POV-Ray's rules (ComputeRefraction): entering from outside
@@ -807,7 +807,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                 child.kind = ChildRay::Kind::Reflection;
                 child.internal_reflection = true;
                 child.trace.ray = {P, R};
-                child.trace.use = RayUse::Reflection;
+                child.trace.use = reflected_use(ray.use);
                 child.trace.interiors = ray.interiors;
                 child.coeff = att;
                 child.transmit_factor = 0;

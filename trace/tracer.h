@@ -51,9 +51,13 @@ inline void count_ray(const TraceRay& ray, TraceCounters& c) {
             ++c.reflected;
             break;
         case RayUse::Refraction:
+        case RayUse::ReflectedRefraction:
             ++c.refracted;
             break;
         case RayUse::Shadow:
+        case RayUse::Query:
+        case RayUse::Photon:
+        case RayUse::PhotonReflection:
             return;
     }
     c.max_level = std::max(c.max_level, ray.depth);

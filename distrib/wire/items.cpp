@@ -179,7 +179,7 @@ bool read_record(Reader& rd, const ItemLimits& limits, int& box, Item& item,
         uint8_t use = rd.raw<uint8_t>();
         r.trace.continued = use & kContinuedUse;
         use &= uint8_t(~kContinuedUse);
-        if (use > uint8_t(trace::RayUse::Shadow)) return false;
+        if (use > uint8_t(trace::kLastRayUse)) return false;
         r.trace.use = trace::RayUse(use);
         read_stack(rd, r.trace.interiors, numbers);
         r.t_from = rd.raw<Real>();

@@ -101,7 +101,7 @@ class RandomItems {
         r.trace.ray.direction = {d(), d(), d()};
         r.trace.depth = int(rng_() % 12);
         r.trace.weight = f();
-        r.trace.use = trace::RayUse(rng_() % (int(trace::RayUse::Shadow) + 1));
+        r.trace.use = trace::RayUse(rng_() % trace::kRayUses);
         r.trace.continued = rng_() % 2;
         stack(r.trace.interiors);
         r.t_from = d();

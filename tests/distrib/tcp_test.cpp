@@ -360,6 +360,24 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
     }
 }
 
+// no_image, no_reflection and no_shadow on CSG children and looks_like objects
+// (scenes/golden/csg_flags_*.pov, each matching POV-Ray in tests/golden): a black box
+// keeps whole frame objects and the rays' kinds, so every mode gives the one-process
+// image.
+TEST(Tcp, CsgFlagsInEveryModeEqualOneProcess) {
+    for (const char* name :
+         {"csg_flags_union_split", "csg_flags_union_clipped", "csg_flags_union_infinite",
+          "csg_flags_union_bounded", "csg_flags_merge", "csg_flags_intersection",
+          "csg_flags_difference", "csg_flags_nested", "csg_flags_looks_like",
+          "csg_flags_looks_like_unbounded"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        expect_same_images(scene, "-W 40 -H 30",
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents"});
+    }
+}
+
 // uv_mapping (each shape's surface coordinates, read from the hit in the process that
 // finds it), material_map, image_pattern and the object pattern (its object travels
 // with the pattern, not with the scene's objects a black box keeps): every mode gives
