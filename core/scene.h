@@ -727,6 +727,11 @@ struct Isosurface {
     Real threshold = 0, accuracy = 0.001, max_gradient = 1.1;
     int max_trace = 1;
     bool closed = true;
+    // `evaluate P0, P1, P2`: max_gradient adapts along each ray (POV-Ray's dynamic
+    // estimate: above P0 it decays by P2, below P1 times a gradient seen it grows to P1^2
+    // times that).
+    bool evaluate = false;
+    Real eval_param[3] = {0, 0, 0};
     // The global settings the function's patterns and f_noise3d read (set when the
     // parse ends).
     int noise_generator = 2;
