@@ -301,7 +301,10 @@ class Interpreter {
     // and parametric): box corners sorted per axis.
     void parse_contained_by(bool& sphere, Point3& corner1, Point3& corner2,
                             Point3& centre, Real& radius);
-    // At the end of the parse: the global settings every isosurface's function reads.
+    // parser/shape_parametric.cpp: the functions, the uv rectangle and the options.
+    void parse_parametric(Object& out, const Token& keyword);
+    // At the end of the parse: the global settings every isosurface's and parametric's
+    // function reads.
     void settle_isosurfaces();
     // POV-Ray's UV vector: a float stands for both; 3 or more components are an error.
     ProfilePoint parse_uv_vector();
