@@ -80,7 +80,7 @@ TEST(ShapeParametric, PrecomputeTree) {
                      .precompute);
     EXPECT_EQ(error_of(std::string("parametric { ") + kTorus + "0, 1 precompute 5 z, y }")
                   .substr(0, 21),
-              "test.pov:1:122: error");
+              "test.pov:1:131: error");
 }
 
 TEST(ShapeParametric, Interval) {
@@ -102,16 +102,16 @@ TEST(ShapeParametric, Interval) {
 TEST(ShapeParametric, ErrorsAndWarnings) {
     const std::string torus = std::string("parametric { ") + kTorus + "0, 1 ";
     EXPECT_EQ(error_of(torus + "precompute 21 x }"),
-              "test.pov:1:122: error: Precompute: invalid depth");
+              "test.pov:1:117: error: Precompute: invalid depth");
     EXPECT_EQ(error_of(torus + "sturm }"),
-              "test.pov:1:122: error: 'sturm' cannot be used with this object");
+              "test.pov:1:117: error: 'sturm' cannot be used with this object");
     EXPECT_EQ(error_of("difference { sphere { 0, 1 } union { " + torus +
                        "} sphere { 0, 1 } } }"),
-              "test.pov:1:31: error: unsupported: a CSG holding a parametric cut from a "
+              "test.pov:1:30: error: unsupported: a CSG holding a parametric cut from a "
               "difference");
     EXPECT_EQ(
         error_of("union { " + torus + "} sphere { 0, 1 } inverse }"),
-        "test.pov:1:142: error: unsupported: inverse on a CSG holding a parametric");
+        "test.pov:1:143: error: unsupported: inverse on a CSG holding a parametric");
     std::string messages;
     auto p = only_shape<Parametric>(parse(torus + "inverse }", &messages));
     EXPECT_NE(messages.find("Cannot invert a patch object."), std::string::npos);
