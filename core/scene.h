@@ -727,7 +727,36 @@ struct Isosurface {
     Real threshold = 0, accuracy = 0.001, max_gradient = 1.1;
     int max_trace = 1;
     bool closed = true;
+    // `evaluate P0, P1, P2`: max_gradient adapts along each ray (POV-Ray's dynamic
+    // estimate: above P0 it decays by P2, below P1 times a gradient seen it grows to P1^2
+    // times that).
+    bool evaluate = false;
+    Real eval_param[3] = {0, 0, 0};
     // The global settings the function's patterns and f_noise3d read (set when the
+    // parse ends).
+    int noise_generator = 2;
+    int number_of_waves = 10;
+};
+
+// parametric { function { X } function { Y } function { Z } <u1, v1>, <u2, v2>
+// contained_by { box | sphere } max_gradient accuracy precompute N x, y, z }: the surface
+// (X, Y, Z)(u, v) over the uv rectangle, met by POV-Ray 3.7's subdivision of that
+// rectangle (trace/shapes/parametric.h). No inside (POV-Ray's PATCH_OBJECT).
+struct ParametricPrecompute {
+    int depth = 1;  // the tree has 2^depth entries (index 1 the root)
+    bool axis[3] = {false, false, false};  // x, y, z precomputed
+    std::vector<Real> low[3], high[3];  // per axis, by sector index (core/parametric.h)
+};
+struct Parametric {
+    std::shared_ptr<const FunctionProgram> functions[3];  // of u, v (x, y)
+    Real umin = 0, vmin = 0, umax = 1, vmax = 1;
+    bool sphere_container = false;
+    Point3 corner1{-1, -1, -1}, corner2{1, 1, 1};  // the box (sorted per axis)
+    Point3 centre{0, 0, 0};
+    Real radius = 1;
+    Real accuracy = 0.001, max_gradient = 1;
+    std::shared_ptr<const ParametricPrecompute> precompute;  // null: none
+    // The global settings the functions' patterns and f_noise3d read (set when the
     // parse ends).
     int noise_generator = 2;
     int number_of_waves = 10;
@@ -778,7 +807,7 @@ using ShapeData =
     std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
                  SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor, Lathe, Prism,
                  BicubicPatch, JuliaFractal, Glyph, HeightField, SphereSweep, Poly,
-                 Quadric, Blob, Isosurface, Csg>;
+                 Quadric, Blob, Isosurface, Parametric, Csg>;
 
 struct Object {
     ShapeData shape;

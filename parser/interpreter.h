@@ -301,7 +301,14 @@ class Interpreter {
     void parse_blob_component_modifiers(BlobElement& e, LayeredTexture& tex);
     // parser/shape_isosurface.cpp: the function and the isosurface's own options.
     void parse_isosurface(Object& out, const Token& keyword);
-    // At the end of the parse: the global settings every isosurface's function reads.
+    // `contained_by { box { C1, C2 } | sphere { C, R } }` after its keyword (isosurface
+    // and parametric): box corners sorted per axis.
+    void parse_contained_by(bool& sphere, Point3& corner1, Point3& corner2,
+                            Point3& centre, Real& radius);
+    // parser/shape_parametric.cpp: the functions, the uv rectangle and the options.
+    void parse_parametric(Object& out, const Token& keyword);
+    // At the end of the parse: the global settings every isosurface's and parametric's
+    // function reads.
     void settle_isosurfaces();
     // POV-Ray's UV vector: a float stands for both; 3 or more components are an error.
     ProfilePoint parse_uv_vector();

@@ -9,9 +9,18 @@
 namespace povwall::parser {
 namespace {
 
+bool holds_parametric(const Object& o) {
+    if (std::holds_alternative<Parametric>(o.shape)) return true;
+    if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
+        for (const Object& c : csg->children)
+            if (holds_parametric(c)) return true;
+    }
+    return false;
+}
+
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
-    static constexpr std::string_view kNames[] = {"parametric", "lemon"};
+    static constexpr std::string_view kNames[] = {"lemon"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -382,8 +391,18 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
             }
         };
         pass_down(pass_down, obj);
-    } else if (w == "inverse" && std::holds_alternative<BicubicPatch>(obj.shape)) {
+    } else if (w == "inverse" && (std::holds_alternative<BicubicPatch>(obj.shape) ||
+                                  std::holds_alternative<Parametric>(obj.shape) ||
+                                  std::holds_alternative<Triangle>(obj.shape) ||
+                                  std::holds_alternative<SmoothTriangle>(obj.shape))) {
+        // POV-Ray's Invert of these does nothing (trace/shapes/shape.h, leaf_invertible).
         warn(t, "Cannot invert a patch object.");
+    } else if (w == "inverse" && std::holds_alternative<Polygon>(obj.shape)) {
+        // Nor of a polygon, which is no patch object: no warning.
+    } else if (w == "inverse" && holds_parametric(obj)) {
+        // POV-Ray inverts a CSG child by child, which leaves a parametric as it is: the
+        // CSG's inside is not the complement of its children's.
+        unsupported(t, "inverse on a CSG holding a parametric");
     } else if (w == "inverse") {
         obj.inverse = !obj.inverse;
         // POV-Ray inverts a CSG by inverting its children and morphing every CSG of the
@@ -629,6 +648,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "isosurface") {
         open();
         if (!copy_identifier()) parse_isosurface(out, t);
+    } else if (w == "parametric") {
+        open();
+        if (!copy_identifier()) parse_parametric(out, t);
     } else if (w == "superellipsoid") {
         open();
         if (!copy_identifier()) parse_superellipsoid(out);
@@ -757,6 +779,18 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                     continue;
                 }
                 if (try_parse_object(c, child)) {
+                    if (holds_parametric(child)) {
+                        // A patch object: POV-Ray warns, and keeps it.
+                        if (csg.kind == CsgKind::Intersection ||
+                            csg.kind == CsgKind::Difference)
+                            warn(c, "Patch objects not allowed in intersection.");
+                        // A difference inverts a CSG after the first child by inverting
+                        // its children, which leaves a parametric as it is.
+                        if (csg.kind == CsgKind::Difference && !csg.children.empty() &&
+                            std::holds_alternative<Csg>(child.shape))
+                            unsupported(
+                                c, "a CSG holding a parametric cut from a difference");
+                    }
                     csg.children.push_back(std::move(child));
                     continue;
                 }

@@ -161,6 +161,10 @@ void Interpreter::settle_isosurfaces() {
             iso->noise_generator = g.noise_generator;
             iso->number_of_waves = g.number_of_waves;
         }
+        if (auto par = std::get_if<Parametric>(&o.shape)) {
+            par->noise_generator = g.noise_generator;
+            par->number_of_waves = g.number_of_waves;
+        }
         if (auto csg = std::get_if<Csg>(&o.shape)) {
             for (Object& c : csg->children) self(self, c);
             for (Light& l : csg->lights)

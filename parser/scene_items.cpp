@@ -1131,9 +1131,8 @@ Value Interpreter::parse_item_value(const Token& t) {
             return a;
         }
         static constexpr std::string_view kUnsupportedItems[] = {
-            "rainbow",      "photons",     "radiosity",   "pigment_map",
-            "normal_map",   "texture_map", "density_map", "slope_map",
-            "material_map", "parametric",  "lemon"};
+            "rainbow",     "photons",     "radiosity", "pigment_map",  "normal_map",
+            "texture_map", "density_map", "slope_map", "material_map", "lemon"};
         for (std::string_view item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }

@@ -202,12 +202,16 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
                             keep = in;
                             break;
                         case CsgKind::Difference:
-                            keep = (j == 0) ? in : !in;
+                            keep = (j == 0 || !difference_inverts(csg->children[j]))
+                                       ? in
+                                       : !in;
                             break;
                     }
                 }
                 if (!keep) continue;
-                if (csg->kind == CsgKind::Difference && i > 0) c.flip = !c.flip;
+                if (csg->kind == CsgKind::Difference && i > 0 &&
+                    difference_inverts(child))
+                    c.flip = !c.flip;
                 out.push_back(c);
             }
         }
@@ -303,7 +307,8 @@ bool inside_object(const Object& o, const Point3& p) {
             case CsgKind::Difference:
                 in = !csg->children.empty() && inside_object(csg->children[0], p);
                 for (size_t i = 1; i < csg->children.size() && in; ++i) {
-                    in = !inside_object(csg->children[i], p);
+                    const Object& c = csg->children[i];
+                    in = inside_object(c, p) != difference_inverts(c);
                 }
                 break;
         }

@@ -31,6 +31,9 @@ struct StressCase {
     // distance error allowed for them against the oracle.
     std::vector<std::string> kinds;
     double max_rel_error;
+    // Rays where the fast path hits and the oracle misses or the reverse, allowed where
+    // POV-Ray is pixel-identical to the fast path there (`check-numerics --povray`).
+    uint64_t allowed_hit_miss = 0;
 };
 
 const StressCase kCases[] = {
@@ -72,6 +75,12 @@ const StressCase kCases[] = {
     // root (accuracy 0.001 in object units): ~1e-4 relative (pixel-identical to POV-Ray
     // at 160x120).
     {"isosurface_stiff", {"isosurface"}, 5e-4},
+    // POV-Ray's parametric hit is the start of the last axis's span through the first
+    // uv piece smaller than `accuracy` (in uv or in those spans): where the ray is nearly
+    // parallel to that axis the span starts early, up to 8 % of the distance here, and
+    // the padded spans meet rays that pass the surface near a silhouette (4 rays).
+    // POV-Ray is pixel-identical on all of them (`check-numerics --povray`).
+    {"parametric_stiff", {"parametric"}, 0.1, 4},
 };
 
 Scene load(const std::string& name) {
@@ -97,7 +106,7 @@ TEST_P(Stress, OracleBoundsAndNoNonFinitePixels) {
     }
     for (const auto& [kind, k] : rep.kinds) {
         SCOPED_TRACE(kind);
-        EXPECT_EQ(k.hit_miss, 0u);
+        EXPECT_LE(k.hit_miss, c.allowed_hit_miss);
         EXPECT_EQ(k.other_object, 0u);
         EXPECT_LE(k.max_rel_error, c.max_rel_error);
     }

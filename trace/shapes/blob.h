@@ -34,6 +34,7 @@ Bounds3 shape_bounds(const Blob& s);
 PovBBox shape_pov_bbox(const Blob& s, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Blob&) { return true; }
 constexpr bool shape_convex(const Blob&) { return false; }
+constexpr bool shape_invertible(const Blob&) { return true; }
 bool shape_oracle_first(const Blob& s, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace
