@@ -35,9 +35,9 @@ struct PovrayRun {
     bool timed_out = false;  // killed after the time limit (status Failed)
     int exit_code = 0;       // POV-Ray's, when it failed
     std::string log;         // POV-Ray's console output when it failed
-    // POV-Ray's image of this scene is random (an area light with `jitter` or photons:
-    // it draws the offsets from per-run sequences), so pixels are to be compared as block
-    // means.
+    // POV-Ray's image of this scene is random (an area light with `jitter`, photons or a
+    // rainbow's `jitter`: it draws them from per-run sequences), so pixels are to be
+    // compared as block means.
     // Known when the scene was parsed for a cache key (with a cache folder; corpus always
     // has one).
     bool random = false;

@@ -905,6 +905,8 @@ struct Light {
     SourceLoc loc;
 };
 
+struct MeshCamera;  // core/mesh_camera.h
+
 struct Camera {
     enum class Kind : uint8_t {
         Perspective,
@@ -917,8 +919,10 @@ struct Camera {
         Cylinder3,
         Cylinder4,  // `cylinder N`
         Omnimax,
-        Spherical
+        Spherical,
+        Mesh  // `mesh_camera { }`: rays from the faces of meshes (`mesh`)
     } kind = Kind::Perspective;
+    std::shared_ptr<const MeshCamera> mesh;
     // Final vectors after look_at, angle, sky and transforms have been applied.
     Point3 location{0, 0, 0};
     Vector3 direction{0, 0, 1};
@@ -958,6 +962,18 @@ struct Fog {
     Transform transform;
 };
 
+// `rainbow { }` (POV-Ray 3.7's RAINBOW): a colour band at `angle` (radians, as all
+// angles here) from the antisolar direction, `width` wide, looked up in `pigment` (its
+// colour map along x from 0 to 1), fading in with distance; `arc_angle` limits it around
+// `up`, fading over falloff_angle to arc_angle. `jitter` blurs the band at random.
+struct Rainbow {
+    Vector3 antisolar{0, 0, 1};           // unit
+    Vector3 up{0, 1, 0}, right{1, 0, 0};  // unit, perpendicular to antisolar
+    Real angle = 0, width = 0, distance = 0, jitter = 0;
+    Real arc_angle = kPi, falloff_angle = kPi, falloff_width = 0;
+    HeapOptional<Pigment> pigment;
+};
+
 struct SkySphere {
     std::vector<Pigment> pigments;  // layered, first on top
     Rgb emission{1.0f};             // scales the pigments' colour
@@ -988,6 +1004,13 @@ struct PhotonSettings {
     float adc_bailout = -1;    // < 0: global_settings' adc_bailout
     float radius = -1;         // gather radius; <= 0: estimated from the map
     float radius_multiplier = 1;
+    // Media photons (`media steps[, factor]`; `radius`'s third and fourth values): at
+    // most `media_steps` photons stored per media interval a photon crosses, spaced
+    // `media_spacing_factor` times the surface spacing; none when 0.
+    int media_steps = 0;
+    float media_spacing_factor = 1;
+    float media_radius = -1;  // <= 0: estimated from the media map
+    float media_radius_multiplier = 1;
     SourceLoc loc;  // the `photons` keyword
 };
 
@@ -1034,6 +1057,7 @@ struct Scene {
     bool background_legacy = false;
     std::optional<SkySphere> sky_sphere;
     std::vector<Fog> fogs;
+    std::vector<Rainbow> rainbows;        // applied in reverse order of appearance
     std::vector<Media> atmosphere_media;  // scene-level `media { }`
     GlobalSettings settings;
     // Set when the parse left objects out (ParseOptions::keep_object: a black-box worker

@@ -223,9 +223,7 @@ class Interpreter {
     void assign_light_groups(Object& obj);
     // At the end of the parse: light groups whose lights would light media differently
     // from the global lights are refused (light_groups.cpp).
-    void check_light_groups_and_media();
     uint32_t light_groups_ = 0;  // groups numbered so far (Light::light_group)
-    std::optional<Token> first_light_group_;
     // The global photons keyword, and the first parallel or cylinder light (photons.cpp).
     std::optional<Token> photons_at_, first_parallel_light_;
     void check_photons();
@@ -233,6 +231,8 @@ class Interpreter {
     // The rest of a camera block read as POV-Ray read it before 3.5, from `c`.
     CameraSpec parse_legacy_camera(CameraSpec c);
     bool parse_focal_blur_item(const Token& t, CameraSpec& c);
+    std::shared_ptr<const MeshCamera> parse_mesh_camera(const Token& at);
+    Rainbow parse_rainbow(const Token& at);
     void parse_global_settings();
     // photons.cpp
     void parse_photon_settings(const Token& at);

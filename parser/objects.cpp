@@ -1029,7 +1029,11 @@ void Interpreter::parse_top_level_item(const Token& t) {
             scene_.atmosphere_media.push_back(parse_media());
             return;
         }
-        if (w == "atmosphere" || w == "rainbow" || w == "photons" || w == "radiosity") {
+        if (w == "rainbow") {
+            scene_.rainbows.push_back(parse_rainbow(t));
+            return;
+        }
+        if (w == "atmosphere" || w == "photons" || w == "radiosity") {
             unsupported(t, w);
         }
         // POV-Ray's Link_To_Frame removes the bound of a shape placed in the scene (as

@@ -9,6 +9,7 @@
 #include "core/noise.h"
 #include "trace/media.h"
 #include "trace/photon_map.h"
+#include "trace/rainbow.h"
 #include "trace/shapes/shape.h"
 #include "trace/uv_mapping.h"
 
@@ -317,7 +318,10 @@ namespace {
 void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                ShadingRecord& out, const MediaShadows& shadows, bool with_fog);
 FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
-                    const MediaShadows& shadows);
+                    MediaEndLights end, const MediaShadows& shadows);
+MediaEndLights media_end_lights(const Material& m) {
+    return {m.global_lights, m.light_group};
+}
 
 // Shades `hit` once with each of `n` stand-in materials and merges the records with
 // their weights (POV-Ray sums the weighted colours of the textures it finds for a hit);
@@ -474,6 +478,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                         staging.children.end());
     out.media_samples = staging.media_samples;
     out.media_depth = hit.t;
+    out.media_lights = media_end_lights(*hit.material);
 }
 
 namespace {
@@ -498,7 +503,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     }
     out.clear();
     const Quality quality = scene.plan().quality;
-    if (with_fog && quality.atmosphere()) out.fog = along_ray(scene, ray, hit.t, shadows);
+    if (with_fog && quality.atmosphere())
+        out.fog = along_ray(scene, ray, hit.t, media_end_lights(*hit.material), shadows);
     if (spawn_corner_blend(scene, ray, hit, out)) return;
     if (spawn_blob_blend(scene, ray, hit, out)) return;
     if (spawn_texture_map(scene, ray, hit, out)) return;
@@ -642,7 +648,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         if (photons &&
             (f.diffuse != 0 || f.diffuse_back != 0 || f.phong != 0 || f.specular != 0)) {
             if (!gathered) {
-                photon_radius = photons->gather(P, Nl, found_photons);
+                photon_radius = photons->gather(P, &Nl, found_photons);
                 gathered = true;
             }
             Rgb sum;
@@ -867,6 +873,12 @@ FogEffect as_fog_effect(const MediaEffect& m) {
     return {m.add, m.mul, 0.0f, m.mul_transmit};
 }
 
+FogEffect rainbows(const PreparedScene& scene, const Ray& ray, Real depth) {
+    const RainbowEffect r =
+        rainbow_effect(scene.scene(), ray, depth, scene.pattern_env());
+    return {r.add, r.mul, 0.0f, r.mul_transmit};
+}
+
 // Media and fog fill only "hollow" space: not the inside of a solid (non-hollow) object.
 bool hollow_ray(const InteriorStack& interiors) {
     for (int i = 0; i < interiors.size && i < InteriorStack::kCapacity; ++i) {
@@ -931,8 +943,12 @@ bool operator<(const MediaSampleKey& a, const MediaSampleKey& b) {
 class SampleLight final : public MediaLightProbe {
   public:
     SampleLight(const PreparedScene& scene, const TraceRay& ray,
-                const MediaShadows& shadows, uint8_t list)
-        : scene_(scene), ray_(ray), shadows_(shadows), list_(list) {}
+                const MediaShadows& shadows, uint8_t list, bool photon_caustics)
+        : scene_(scene),
+          ray_(ray),
+          shadows_(shadows),
+          list_(list),
+          photon_caustics_(photon_caustics) {}
     Rgb arriving(size_t l, const Point3& at, Vector3& to_light,
                  uint64_t sample) override {
         const Scene& sc = scene_.scene();
@@ -947,6 +963,7 @@ class SampleLight final : public MediaLightProbe {
             s.colour *= fog_effect(sc, {at, s.dir}, s.distance).mul;
         if (!quality.shadows()) return s.colour;
         ChildRay child = shadow_child(ray_, at, s, l);
+        child.photon_caustics = photon_caustics_;
         child.area = light.area.has_value() && quality.area_lights();
         child.light_colour = s.colour;
         child.coeff = Rgb{0.0f};  // counts through the media effect only
@@ -983,42 +1000,54 @@ class SampleLight final : public MediaLightProbe {
     const TraceRay& ray_;
     const MediaShadows& shadows_;
     uint8_t list_;
+    bool photon_caustics_;
 };
 
 // The media of `list` (0: the interiors', 1: the atmosphere's) along a viewing ray up
 // to `depth`, lit by the scene's lights.
 FogEffect viewing_media(const PreparedScene& scene, std::span<const Media* const> list,
                         uint8_t which, const TraceRay& ray, Real depth,
-                        const MediaShadows& shadows) {
+                        MediaEndLights end, const MediaShadows& shadows) {
     if (shadows.collect) {
         // Its value comes from replay_media() once the shadow rays are in.
         for (const Media* m : list)
             if (m->scatters()) shadows.collect->media_replay = true;
     }
-    SampleLight probe(scene, ray, shadows, which);
-    MediaLights lights{scene.scene().lights, &probe, shadows.collect != nullptr};
+    // POV-Ray's litObjectIgnoresPhotons for a media sample: unless every media ignores
+    // photons (`collect off`), a blocker that refracts the light's photons shadows it
+    // fully (the photons bring that light), as for a lit surface.
+    bool collects = false;
+    for (const Media* m : list) collects = collects || m->collect;
+    const PhotonMap* photons = scene.photons();
+    SampleLight probe(scene, ray, shadows, which,
+                      collects && photons && photons->size() > 0);
+    MediaLights lights{scene.scene().lights, end.global_lights, end.light_group, &probe,
+                       shadows.collect != nullptr};
+    if (scene.photons()) lights.media_photons = scene.photons()->media();
     return as_fog_effect(
         media_effect(list, ray.ray, 0, depth, false, scene.pattern_env(), &lights));
 }
 
 FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
-                    const MediaShadows& shadows) {
+                    MediaEndLights end, const MediaShadows& shadows) {
     const Scene& sc = scene.scene();
-    if (sc.fogs.empty() && sc.atmosphere_media.empty() && !in_media(ray.interiors))
+    if (sc.fogs.empty() && sc.atmosphere_media.empty() && sc.rainbows.empty() &&
+        !in_media(ray.interiors))
         return {};
     if (!hollow_ray(ray.interiors)) return {};
-    // POV-Ray: the interiors' media on the surface's colour, then the atmosphere's,
-    // then fog, each on what the one before gave.
+    // POV-Ray: the interiors' media on the surface's colour, then rainbows, the
+    // atmosphere's media and fog, each on what the one before gave.
     FogEffect e;
     if (ray.interiors.size > 0) {
         thread_local std::vector<const Media*> list;
         interior_media(ray.interiors, list);
-        if (!list.empty()) e = viewing_media(scene, list, 0, ray, depth, shadows);
+        if (!list.empty()) e = viewing_media(scene, list, 0, ray, depth, end, shadows);
     }
+    if (!sc.rainbows.empty()) e = then(e, rainbows(scene, ray.ray, depth));
     if (!sc.atmosphere_media.empty()) {
         thread_local std::vector<const Media*> list;
         atmosphere_list(sc, list);
-        e = then(e, viewing_media(scene, list, 1, ray, depth, shadows));
+        e = then(e, viewing_media(scene, list, 1, ray, depth, end, shadows));
     }
     if (!sc.fogs.empty()) e = then(e, fog_effect(sc, ray.ray, depth));
     return e;
@@ -1031,13 +1060,15 @@ FogEffect along_missing_ray(const PreparedScene& scene, const TraceRay& ray,
                             const MediaShadows& shadows) {
     const Scene& sc = scene.scene();
     FogEffect f;
-    if ((sc.fogs.empty() && sc.atmosphere_media.empty()) ||
+    if ((sc.fogs.empty() && sc.atmosphere_media.empty() && sc.rainbows.empty()) ||
         !scene.plan().quality.atmosphere())
         return f;
+    if (!sc.rainbows.empty() && hollow_ray(ray.interiors))
+        f = rainbows(scene, ray.ray, 2e10);
     if (!sc.atmosphere_media.empty() && hollow_ray(ray.interiors)) {
         thread_local std::vector<const Media*> list;
         atmosphere_list(sc, list);
-        f = viewing_media(scene, list, 1, ray, 2e10, shadows);
+        f = then(f, viewing_media(scene, list, 1, ray, 2e10, {}, shadows));
     }
     if (!sc.fogs.empty()) f = then(f, fog_effect(sc, ray.ray, kMaxDistance));
     return f;
@@ -1046,10 +1077,25 @@ FogEffect along_missing_ray(const PreparedScene& scene, const TraceRay& ray,
 }  // namespace
 
 FogEffect along_ray_effect(const PreparedScene& scene, const TraceRay& ray, Real depth,
-                           RayContext* ctx) {
+                           MediaEndLights end, RayContext* ctx) {
     MediaShadows shadows;
     shadows.trace = ctx;
-    return along_ray(scene, ray, depth, shadows);
+    return along_ray(scene, ray, depth, end, shadows);
+}
+
+Rgb photon_through_media(const PreparedScene& scene, const TraceRay& ray, Real depth,
+                         MediaEndLights end, const Rgb& colour, MediaPhotonSink* sink) {
+    if (!in_media(ray.interiors) || !hollow_ray(ray.interiors)) return colour;
+    thread_local std::vector<const Media*> list;
+    interior_media(ray.interiors, list);
+    MediaLights lights{scene.scene().lights, end.global_lights, end.light_group};
+    lights.photon = true;
+    if (sink)
+        return deposit_media_photons(list, ray.ray, depth, lights, scene.pattern_env(),
+                                     colour, *sink);
+    const MediaEffect e =
+        media_effect(list, ray.ray, 0, depth, false, scene.pattern_env(), &lights);
+    return e.add + e.mul * colour;
 }
 
 void replay_media(const PreparedScene& scene, const TraceRay& ray, ShadingRecord& record,
@@ -1066,7 +1112,8 @@ void replay_media(const PreparedScene& scene, const TraceRay& ray, ShadingRecord
     shadows.results = results;
     shadows.order = order.data();
     record.fog = record.media_miss ? along_missing_ray(scene, ray, shadows)
-                                   : along_ray(scene, ray, record.media_depth, shadows);
+                                   : along_ray(scene, ray, record.media_depth,
+                                               record.media_lights, shadows);
 }
 
 FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth) {

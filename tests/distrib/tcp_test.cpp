@@ -398,8 +398,8 @@ TEST(Tcp, TextureSpacePatternsInEveryModeEqualOneProcess) {
 // parse order before a worker leaves objects out) and df3 density files (found and read
 // by every process that parses the scene): every mode gives the one-process image.
 TEST(Tcp, LightGroupsAndDensityFilesInEveryModeEqualOneProcess) {
-    for (const char* name : {"light_group", "light_group_nesting", "media_density_file",
-                             "pigment_density_file"}) {
+    for (const char* name : {"light_group", "light_group_nesting", "light_group_media",
+                             "media_density_file", "pigment_density_file"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(
@@ -408,12 +408,13 @@ TEST(Tcp, LightGroupsAndDensityFilesInEveryModeEqualOneProcess) {
     }
 }
 
-// Media (trace/media.h) act on a ray's colour as fog does, from its origin to its hit:
-// every mode gives the one-process image, anti-aliased too.
+// Media (trace/media.h) and rainbows (trace/rainbow.h) act on a ray's colour as fog
+// does, from its origin to its hit: every mode gives the one-process image,
+// anti-aliased too.
 TEST(Tcp, MediaInEveryModeEqualOneProcess) {
     for (const char* name :
          {"media_emission_absorption", "media_density_methods", "media_legacy_csg",
-          "media_atmosphere", "media_atmosphere_sky"}) {
+          "media_atmosphere", "media_atmosphere_sky", "rainbow"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         for (const char* aa : {"-A", "+A0.1 +AM2 -J"})
@@ -505,10 +506,10 @@ TEST(Tcp, QualityLevelsInEveryModeEqualOneProcess) {
     }
 }
 
-// The omnimax and spherical cameras, camera normals and focal blur (golden scenes, each
-// matching POV-Ray): focal blur's rays go through the black boxes in waves, batch by
-// batch, named by sample position and ray index, so every mode gives the one-process
-// image, anti-aliased too.
+// The omnimax, spherical and mesh cameras, camera normals and focal blur (golden
+// scenes, each matching POV-Ray): focal blur's rays (and a mesh camera's rays per pixel)
+// go through the black boxes in waves, batch by batch, named by sample position and ray
+// index, so every mode gives the one-process image, anti-aliased too.
 TEST(Tcp, CamerasAndFocalBlurInEveryModeEqualOneProcess) {
     const std::pair<const char*, const char*> cases[] = {
         {"camera_omnimax", "+UA"},
@@ -524,7 +525,12 @@ TEST(Tcp, CamerasAndFocalBlurInEveryModeEqualOneProcess) {
         {"camera_focal_blur_kinds", ""},
         {"camera_focal_blur_fisheye", "+UA +A0.3"},
         {"camera_focal_blur_antialias", "+A0.1 +AM2 +R2"},
-        {"camera_focal_blur_antialias", "+A0.3 +AM1 +J"}};
+        {"camera_focal_blur_antialias", "+A0.3 +AM1 +J"},
+        {"camera_mesh_rays", "+UA"},
+        {"camera_mesh_rays", "+A0.3 +AM2"},
+        {"camera_mesh_split", "+UA"},
+        {"camera_mesh_side", "+UA"},
+        {"camera_mesh_uv", "+UA +A0.3"}};
     for (const auto& [name, args] : cases) {
         SCOPED_TRACE(std::string(name) + " " + args);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
@@ -540,7 +546,8 @@ TEST(Tcp, CamerasAndFocalBlurInEveryModeEqualOneProcess) {
 // refused with a located `unsupported:`.
 TEST(Tcp, PhotonsInEveryModeEqualOneProcess) {
     for (const char* name :
-         {"photons_glass_sphere", "photons_metal_ring", "photons_csg_glass"}) {
+         {"photons_glass_sphere", "photons_metal_ring", "photons_csg_glass",
+          "photons_media", "photons_media_scattering"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         for (const char* aa : {"-A", "+A0.1 +AM2 -J"})
