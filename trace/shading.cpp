@@ -218,7 +218,8 @@ ChildRay shadow_child(const TraceRay& from, const Point3& at, const LightSample&
     child.trace.use = RayUse::Shadow;
     child.t_max = s.distance;
     child.light = int(l);
-    // A parallel light's depth is negative behind its plane: a test over it finds nothing.
+    // A parallel light's depth is negative behind its plane: a test over it finds
+    // nothing.
     child.unoccluded = !(s.distance > 0);
     return child;
 }

@@ -342,16 +342,30 @@ TEST(Tcp, EveryShapeSceneIsInTheEveryModeList) {
 
 // The fixes of the real-scene issue (version state, tilted-normal reflection and
 // refraction, iridescence, inverse CSG, map entries, palette and corner textures, object
-// flags): each matches POV-Ray in tests/golden and gives the one-process image in every
-// mode.
+// flags, continued rays at the last trace level, parallel lights behind their plane):
+// each matches POV-Ray in tests/golden and gives the one-process image in every mode.
 TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
-    for (const char* name :
-         {"version_include", "version_switch", "version_background_first",
-          "legacy_version36", "reflection_bumped_normals", "caustics_bumped",
-          "irid_reflection", "inverse_csg", "map_entries", "palette_images",
-          "mesh_corner_textures", "object_flags", "image_map_file_types",
-          "area_light_jitter", "slope_aoi", "texture_map_nested_spaces",
-          "parse_time_queries"}) {
+    for (const char* name : {"version_include",
+                             "version_switch",
+                             "version_background_first",
+                             "legacy_version36",
+                             "reflection_bumped_normals",
+                             "caustics_bumped",
+                             "irid_reflection",
+                             "inverse_csg",
+                             "map_entries",
+                             "palette_images",
+                             "mesh_corner_textures",
+                             "object_flags",
+                             "image_map_file_types",
+                             "area_light_jitter",
+                             "slope_aoi",
+                             "texture_map_nested_spaces",
+                             "parse_time_queries",
+                             "trace_level_one",
+                             "trace_level_continued_rays",
+                             "light_parallel_behind_plane",
+                             "light_fade_power_alone"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(scene, "-W 40 -H 30",
