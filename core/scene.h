@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/bicubic_patch.h"
+#include "core/blob_tree.h"
 #include "core/colour.h"
 #include "core/compact_transform.h"
 #include "core/function.h"
@@ -700,6 +701,9 @@ struct BlobElement {
 struct BlobData {
     Real threshold = 1;
     std::vector<BlobElement> elements;
+    // Over blob_element_box of each element (make_blob builds it; empty: every element
+    // is visited).
+    BlobTree tree;
 };
 struct Blob {
     std::shared_ptr<const BlobData> data;  // shared by copies
@@ -714,6 +718,9 @@ struct Blob {
 // source order; cylinders with their matrix and length, spheres perhaps ellipsoids, c[2]
 // the strength): reversed, cylinders expanded, the field coefficients filled in.
 BlobData make_blob(Real threshold, const std::vector<BlobElement>& components);
+// A box in blob space holding the element's region (where its field is not zero), a
+// little larger than it so that rounding in the element's own tests stays inside.
+Bounds3 blob_element_box(const BlobElement& e);
 
 // isosurface { function { F } contained_by { box | sphere } threshold accuracy
 // max_gradient max_trace open }: F(x, y, z) - threshold = 0 inside its container, found

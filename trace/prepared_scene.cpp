@@ -669,7 +669,9 @@ int blob_texture_weights(const BlobTextureBlend& b, const Point3& world, float m
     w.clear();
     // POV-Ray's weights are single-precision colour values, summed and scaled so.
     float sum = 0;
-    for (size_t i = 0; i < blob.data->elements.size(); ++i) {
+    thread_local std::vector<uint32_t> near;
+    blob_elements_at(*blob.data, q, near);
+    for (const uint32_t i : near) {
         const Real d = std::fabs(blob_element_field(blob.data->elements[i], q));
         if (!(d > 0.0)) continue;
         materials.push_back(b.elements[i]);
