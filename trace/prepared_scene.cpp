@@ -503,6 +503,7 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
         hides_[size_t(RayUse::Camera)] |= m.no_image;
         hides_[size_t(RayUse::Reflection)] |= m.no_reflection;
         hides_[size_t(RayUse::Shadow)] |= m.no_shadow;
+        hides_[size_t(RayUse::Radiosity)] |= m.no_radiosity;
     }
     // A box's resident scene is what it keeps: drop the growth slack of push_back.
     spheres_.shrink_to_fit();
@@ -536,6 +537,8 @@ Material material_of(const Object& o, const LayeredTexture& texture) {
     m.no_shadow = o.no_shadow;
     m.no_image = o.no_image;
     m.no_reflection = o.no_reflection;
+    m.no_radiosity = o.no_radiosity;
+    m.radiosity_importance = o.radiosity_importance;
     m.double_illuminate = o.double_illuminate;
     m.uv_mapping = o.uv_mapping;
     m.global_lights = o.global_lights;
@@ -1049,7 +1052,8 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
         const Material& m = materials_[material];
         return (use == RayUse::Camera && m.no_image) ||
                (use == RayUse::Reflection && m.no_reflection) ||
-               (use == RayUse::Shadow && m.no_shadow);
+               (use == RayUse::Shadow && m.no_shadow) ||
+               (use == RayUse::Radiosity && m.no_radiosity);
     };
     // Spheres: distance only; the nearest one's point and normal are computed once at the
     // end.

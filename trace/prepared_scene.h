@@ -19,6 +19,11 @@
 
 namespace povwall::trace {
 
+class RadiosityGatherer;
+namespace radiosity {
+struct RadiosityRender;
+}
+
 // What a ray may see of an object, and where its surface description lives.
 // Which interior an object has, for the interior stack: the parser's number of the
 // interior (shared by a CSG's children, see Interior::id), or for a scene built without
@@ -40,6 +45,8 @@ struct Material {
     const Object* object = nullptr;      // the leaf: its number on the wire
     uintptr_t interior_id = 0;           // interior_key(*object)
     bool no_shadow = false, no_image = false, no_reflection = false;
+    bool no_radiosity = false;
+    float radiosity_importance = 0;  // Object::radiosity_importance (<= 0: the default)
     bool double_illuminate = false;
     // Object::uv_mapping: its patterns are evaluated at the hit's (u, v, 0).
     bool uv_mapping = false;
@@ -127,7 +134,9 @@ struct TrianglePrim {
 };
 
 // Kind of ray, for no_image / no_reflection / no_shadow.
-enum class RayUse : uint8_t { Camera, Reflection, Refraction, Shadow };
+// Radiosity: a radiosity sample ray (trace/radiosity/), which no_radiosity objects let
+// by.
+enum class RayUse : uint8_t { Camera, Reflection, Refraction, Shadow, Radiosity };
 
 struct Hit {
     Real t = kInfinity;
@@ -158,6 +167,9 @@ struct RayContext {
     // Per light: the primitive that last blocked a shadow ray toward it. Neighbouring
     // points are usually shadowed by the same object, so it is tried first.
     std::vector<uint32_t> last_blocker;
+    // The radiosity of the thread tracing with this context (trace/radiosity/gatherer.h);
+    // null: none (no radiosity, or black boxes).
+    RadiosityGatherer* radiosity = nullptr;
 };
 
 struct RenderProgress;
@@ -203,6 +215,12 @@ class PreparedScene {
     // tracing; null: no photons.
     const PhotonMap* photons() const { return photons_.get(); }
     void set_photons(std::shared_ptr<const PhotonMap> map) { photons_ = std::move(map); }
+    // The frame's radiosity pretrace (trace/radiosity/pretrace.h): the cache every
+    // tracer made after it is set reads; null: no radiosity.
+    const radiosity::RadiosityRender* radiosity() const { return radiosity_.get(); }
+    void set_radiosity(std::shared_ptr<const radiosity::RadiosityRender> r) {
+        radiosity_ = std::move(r);
+    }
     void init_context(RayContext& ctx) const {
         ctx.mailbox.resize(kind_.size());
         ctx.last_blocker.assign(scene_.lights.size(), ~0u);
@@ -291,9 +309,10 @@ class PreparedScene {
     PatternEnv env_;
     bool alpha_background_ = false;
     std::shared_ptr<const PhotonMap> photons_;
+    std::shared_ptr<const radiosity::RadiosityRender> radiosity_;
     std::vector<Material> materials_;  // reserved up front: pointers stay valid
     // Per RayUse: whether any material hides from that kind of ray.
-    std::array<bool, 4> hides_{};
+    std::array<bool, 5> hides_{};
     std::vector<TextureBlend> blends_;  // the same
     std::deque<BlobTextureBlend> blob_blends_;
     // Per primitive id.

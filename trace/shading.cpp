@@ -9,6 +9,7 @@
 #include "core/noise.h"
 #include "trace/media.h"
 #include "trace/photon_map.h"
+#include "trace/radiosity/gatherer.h"
 #include "trace/shapes/shape.h"
 #include "trace/uv_mapping.h"
 
@@ -451,12 +452,29 @@ bool spawn_blob_blend(const PreparedScene& scene, const TraceRay& ray, const Hit
 
 }  // namespace
 
+namespace {
+
+// Rays under a radiosity sample ray pass on its limits and recursion depth, and see an
+// area light as a point at its centre (POV-Ray's radiosity quality flags).
+void pass_on_radiosity(const TraceRay& ray, ShadingRecord& out) {
+    if (ray.radiosity_depth == 0) return;
+    for (ChildRay& c : out.children) {
+        c.trace.radiosity_depth = ray.radiosity_depth;
+        c.trace.max_level = ray.max_level;
+        c.trace.adc_bailout = ray.adc_bailout;
+        c.area = false;
+    }
+}
+
+}  // namespace
+
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     ShadingRecord& out, RayContext* ctx) {
     MediaShadows shadows;
     if (ctx) {
         shadows.trace = ctx;
         spawn_hit(scene, ray, hit, out, shadows, true);
+        pass_on_radiosity(ray, out);
         return;
     }
     // Black boxes: the media samples' shadow rays become children after the others.
@@ -511,7 +529,17 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     const PatternEnv env = scene.pattern_env().at_surface(&surface);
     if (!quality.lighting()) return pigment_only(scene, m, Ptex, env, out);
     const bool legacy = sc.language_version < 370;
-    const float adc = sc.settings.adc_bailout;
+    const float adc = ray.adc_bailout >= 0 ? ray.adc_bailout : sc.settings.adc_bailout;
+    // Radiosity (from +Q9): the ambient light is gathered (trace/radiosity/), and
+    // `ambient` counts only in scenes before #version 3.7.
+    const bool radiosity_on = sc.settings.radiosity && quality.level >= 9;
+    RadiosityGatherer* const gatherer = radiosity_on && shadows.trace &&
+                                                shadows.trace->radiosity &&
+                                                shadows.trace->radiosity->active_for(ray)
+                                            ? shadows.trace->radiosity
+                                            : nullptr;
+    bool radiosity_done = false, radiosity_back_done = false;
+    Rgb radiosity_front, radiosity_back;
     // A plain material (see Material::plain) is one layer read from the material itself.
     const LayeredTexture* layers = m.plain ? nullptr : &texture_of(m);
     const int nlayers = m.plain ? 1 : int(layers->size());
@@ -556,8 +584,34 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                                  : 1 - lay.filter - lay.transmit;
         const Finish& f = tex ? *tex->finish : m.plain_finish;
         if (li == nlayers - 1) top_finish = &f;
-        Rgb tmp = lay.rgb * f.ambient * sc.settings.ambient_light * att +
-                  lay.rgb * f.emission * att;
+        Rgb tmp;
+        if (gatherer) {
+            // POV-Ray gathers once per hit, with the first layer whose diffuse can
+            // add enough to the ray.
+            if (!radiosity_done) {
+                const float most = (fil * lay.rgb).grey() * att * f.raw_diffuse;
+                if (most > adc) {
+                    radiosity_front =
+                        gatherer->ambient(ray, P, N, Nl, double(ray.weight) * most);
+                    radiosity_done = true;
+                }
+            }
+            tmp += lay.rgb * radiosity_front * (att * f.raw_diffuse);
+            if (f.diffuse_back != 0) {
+                if (!radiosity_back_done) {
+                    const float most = (fil * lay.rgb).grey() * att * f.raw_diffuse_back;
+                    if (most > adc) {
+                        radiosity_back =
+                            gatherer->ambient(ray, P, -N, -Nl, double(ray.weight) * most);
+                        radiosity_back_done = true;
+                    }
+                }
+                tmp += lay.rgb * radiosity_back * (att * f.raw_diffuse_back);
+            }
+        }
+        if (!radiosity_on || legacy)
+            tmp += lay.rgb * f.ambient * sc.settings.ambient_light * att;
+        tmp += lay.rgb * f.emission * att;
         out.local += tmp * fil;
 
         // The layer's diffuse, phong, specular and iridescence response to light coming
@@ -588,7 +642,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                 if (f.crand > 0) k -= crand_sample(P, index) * f.crand;
                 c += lay.rgb * float(k);
             }
-            if (!shadowless && !backside) {
+            // No highlights at a radiosity sample ray's hit (POV-Ray).
+            if (!shadowless && !backside && ray.use != RayUse::Radiosity) {
                 if (f.phong > 0) {
                     Vector3 R = D - Nl * (2 * dot(D, Nl));
                     Real cc = dot(R, dir);
@@ -996,6 +1051,8 @@ FogEffect viewing_media(const PreparedScene& scene, std::span<const Media* const
 FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
                     const MediaShadows& shadows) {
     const Scene& sc = scene.scene();
+    // Under a radiosity sample ray: no fog or media (POV-Ray's radiosity quality).
+    if (ray.radiosity_depth > 0) return {};
     if (sc.fogs.empty() && sc.atmosphere_media.empty() && !in_media(ray.interiors))
         return {};
     if (!hollow_ray(ray.interiors)) return {};
@@ -1024,7 +1081,7 @@ FogEffect along_missing_ray(const PreparedScene& scene, const TraceRay& ray,
     const Scene& sc = scene.scene();
     FogEffect f;
     if ((sc.fogs.empty() && sc.atmosphere_media.empty()) ||
-        !scene.plan().quality.atmosphere())
+        !scene.plan().quality.atmosphere() || ray.radiosity_depth > 0)
         return f;
     if (!sc.atmosphere_media.empty() && hollow_ray(ray.interiors)) {
         thread_local std::vector<const Media*> list;
