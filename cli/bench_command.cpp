@@ -17,7 +17,6 @@
 #include "cli/options.h"
 #include "cli/povray_reference.h"
 #include "cli/process.h"
-#include "core/self_exe.h"
 #include "output/diff.h"
 #include "output/image_io.h"
 
@@ -36,11 +35,6 @@ using Clock = std::chrono::steady_clock;
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v[(v.size() - 1) / 2];
-}
-
-std::string self_binary() {
-    const std::string self = self_exe();
-    return self.empty() ? "povwall" : self;
 }
 
 std::string slurp(const std::string& path) {
@@ -93,22 +87,11 @@ int run_bench(int argc, char** argv) {
     const std::string pov_log = (dir / "povray.log").string();
     const std::string our_log = (dir / "povwall.log").string();
     const std::vector<std::string> pov_cmd = povray_command(o, pov_png, threads);
-    // povwall as POV-Ray runs: a process of its own, from start to exit.
-    std::vector<std::string> our_cmd{self_binary(),
-                                     "render",
-                                     o.scene,
-                                     "-o",
-                                     our_png,
-                                     "-W",
-                                     std::to_string(o.width),
-                                     "-H",
-                                     std::to_string(o.height),
-                                     "--threads",
-                                     std::to_string(threads),
-                                     "-q"};
-    for (const auto& l : o.library_paths) our_cmd.insert(our_cmd.end(), {"-L", l});
-    if (!boxes.empty()) our_cmd.insert(our_cmd.end(), {"--boxes", boxes});
-    our_cmd.insert(our_cmd.end(), pov_switches.begin(), pov_switches.end());
+    std::vector<std::string> our_extra;
+    if (!boxes.empty()) our_extra = {"--boxes", boxes};
+    our_extra.insert(our_extra.end(), pov_switches.begin(), pov_switches.end());
+    const std::vector<std::string> our_cmd =
+        povwall_command(o, our_png, threads, our_extra);
 
     std::vector<double> pov_s, our_s;
     for (int i = 0; i < runs; ++i) {

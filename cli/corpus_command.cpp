@@ -376,7 +376,8 @@ SceneResult run_scene(const CorpusSettings& s, const CorpusScene& scene, size_t 
         result.note +=
             std::string(result.note.empty() ? "" : "; ") + "compared as " +
             std::to_string(result.block_mean) + "x" + std::to_string(result.block_mean) +
-            " block means (POV-Ray's area-light jitter and photons are random)";
+            " block means (POV-Ray's area-light jitter, photons and rainbow jitter are "
+            "random)";
     }
     return result;
 }

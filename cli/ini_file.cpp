@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 #include "cli/options.h"
 
@@ -74,7 +75,7 @@ constexpr Key kKeys[] = {
     {"Debug_File", Use::Silent, Type::String},
     {"Declare", Use::Act, Type::Special},
     {"Display", Use::Silent, Type::Bool},
-    {"Display_Gamma", Use::Warn, Type::Special, "srgb"},
+    {"Display_Gamma", Use::Act, Type::Special},
     {"Dither", Use::Warn, Type::Bool, "off"},
     {"Dither_Method", Use::Warn, Type::Special},
     {"Draw_Vistas", Use::Silent, Type::Bool},
@@ -85,7 +86,7 @@ constexpr Key kKeys[] = {
     {"Fatal_Error_Return", Use::Silent, Type::Special},
     {"Fatal_File", Use::Silent, Type::String},
     {"Field_Render", Use::Warn, Type::Bool, "off"},
-    {"File_Gamma", Use::Warn, Type::Special, "srgb"},
+    {"File_Gamma", Use::Act, Type::Special},
     {"Final_Clock", Use::Act, Type::Float},
     {"Final_Frame", Use::Act, Type::Int},
     {"Frame_Step", Use::Warn, Type::Int, "1"},
@@ -433,6 +434,19 @@ class IniReader {
             const size_t at = value.find_first_not_of(" \t");
             apply_switch("+F" + (at == std::string::npos ? std::string("?")
                                                          : value.substr(at, 1)));
+        } else if (k == "file_gamma" || k == "display_gamma") {
+            // A number (1: neutral, above 0: a power law) or sRGB, as POV-Ray reads
+            // both. Display_Gamma is the preview window's: POV-Ray's files never depend
+            // on it (a legacy scene's values are written raw whatever it is).
+            const double g = std::atof(value.c_str());
+            const bool srgb = !(g > 0) && lower(value) == "srgb";
+            if (!(g > 0) && !srgb) error("Unrecognized gamma setting '" + value + "'.");
+            if (k == "file_gamma") {
+                if (srgb)
+                    o_.file_gamma.reset();
+                else
+                    o_.file_gamma = float(g);
+            }
         } else if (k == "bits_per_color" || k == "bits_per_colour") {
             o_.bits = *i;
         } else if (k == "antialias") {
@@ -594,6 +608,20 @@ void apply_ini_file(const std::string& spec, RenderOptions& o, std::ostream* war
     }
     if (found.empty()) throw UsageError("cannot open option file '" + path + "'");
     IniReader(o, warnings, depth).read(in, found, section);
+}
+
+bool looks_like_ini_option(const std::string& arg) {
+    const size_t eq = arg.find('=');
+    if (arg.empty() || arg[0] == '+' || arg[0] == '-' || eq == std::string::npos)
+        return false;
+    std::string key = arg.substr(0, eq);
+    key.erase(key.find_last_not_of(" \t") + 1);
+    return find_key(key) != nullptr;
+}
+
+void apply_ini_option(const std::string& arg, RenderOptions& o) {
+    std::istringstream line(arg);
+    IniReader(o, &std::cerr, 0).read(line, "command line", "");
 }
 
 void apply_ini_stream(std::istream& in, const std::string& path, RenderOptions& o,

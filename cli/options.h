@@ -39,6 +39,9 @@ struct RenderOptions {
     std::vector<std::string> library_paths;
     trace::RenderSettings render;  // threads, antialias, alpha, partial rows
     int bits = 8;
+    // File_Gamma: the output file's encoding as a power law of this display gamma (1:
+    // linear values); none: sRGB, POV-Ray's default.
+    std::optional<float> file_gamma;
     char format = 'N';          // POV-Ray +F letter: N png, T tga, P ppm, E exr
     bool format_given = false;  // +F seen: that format whatever -o's extension says
     // +SR/+ER/+SC/+EC as given: a row/column number (1-based) or, written with a decimal
@@ -129,6 +132,10 @@ bool looks_like_pov_switch(const std::string& arg);
 // one warning line on `warnings` (none when null or o.quiet); errors (an unknown key, a
 // bad number) throw UsageError("file:line: ...").
 bool looks_like_ini_file(const std::string& arg);
+// An INI option given on the command line (`File_Gamma=1.0`), as POV-Ray takes them: a
+// known key, '=', a value. looks_like_pov_switch and apply_pov_switch take them too.
+bool looks_like_ini_option(const std::string& arg);
+void apply_ini_option(const std::string& arg, RenderOptions& o);
 void apply_ini_file(const std::string& spec, RenderOptions& o,
                     std::ostream* warnings = &std::cerr, int depth = 0);
 // Same, from a stream; `path` names it in messages ("file:line: ...").

@@ -59,6 +59,7 @@ void resolve_partial_render(RenderOptions& o) {
 bool looks_like_pov_switch(const std::string& arg) {
     if (arg.size() >= 2 && arg[0] == '+') return true;
     if (arg.rfind("Declare=", 0) == 0 || arg.rfind("declare=", 0) == 0) return true;
+    if (looks_like_ini_option(arg)) return true;
     if (arg.size() >= 2 && arg[0] == '-' && arg[1] != '-') {
         // povwall's own short options: -o -W -H -L -h (with a separate or attached
         // value).
@@ -77,6 +78,10 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
         if (eq == std::string::npos)
             throw UsageError("expected Declare=NAME=VALUE: '" + arg + "'");
         o.declares[rest.substr(0, eq)] = number(arg, rest.substr(eq + 1));
+        return true;
+    }
+    if (looks_like_ini_option(arg)) {
+        apply_ini_option(arg, o);
         return true;
     }
     if (arg.size() < 2 || (arg[0] != '+' && arg[0] != '-')) return false;

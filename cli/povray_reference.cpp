@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "cli/process.h"
+#include "core/self_exe.h"
 #include "parser/parser.h"
 #include "trace/object_queries.h"
 #include "trace/pattern.h"
@@ -67,7 +68,9 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
     }
     random = std::any_of(scene.lights.begin(), scene.lights.end(),
                          [](const Light& l) { return l.area && l.area->jitter; }) ||
-             scene.settings.photons.has_value() || scene.settings.radiosity.has_value();
+             scene.settings.photons.has_value() || scene.settings.radiosity.has_value() ||
+             std::any_of(scene.rainbows.begin(), scene.rainbows.end(),
+                         [](const Rainbow& r) { return r.jitter > 0; });
     uint64_t h = 1469598103934665603ull;
     for (const std::string& f : scene.files) {
         std::ifstream in(f, std::ios::binary);
@@ -106,6 +109,27 @@ std::string shortest(double v) {
 
 }  // namespace
 
+std::vector<std::string> povwall_command(const RenderOptions& o,
+                                         const std::string& out_png, int threads,
+                                         const std::vector<std::string>& extra) {
+    const std::string exe = self_exe();
+    if (exe.empty()) throw UsageError("cannot find the povwall binary");
+    std::vector<std::string> cmd{exe,
+                                 "render",
+                                 o.scene,
+                                 "-o",
+                                 out_png,
+                                 "-W",
+                                 std::to_string(o.width),
+                                 "-H",
+                                 std::to_string(o.height),
+                                 "-q"};
+    if (threads > 0) cmd.insert(cmd.end(), {"--threads", std::to_string(threads)});
+    for (const auto& l : o.library_paths) cmd.insert(cmd.end(), {"-L", l});
+    cmd.insert(cmd.end(), extra.begin(), extra.end());
+    return cmd;
+}
+
 std::vector<std::string> povray_command(const RenderOptions& o,
                                         const std::string& out_png, int threads,
                                         const std::vector<std::string>& extra) {
@@ -136,6 +160,7 @@ std::vector<std::string> povray_command(const RenderOptions& o,
         cmd.push_back("-A");
     }
     if (o.render.alpha) cmd.push_back("+UA");
+    if (o.file_gamma) cmd.push_back("File_Gamma=" + shortest(*o.file_gamma));
     if (o.render.quality != 9) cmd.push_back("+Q" + std::to_string(o.render.quality));
     // Every other setting that changes the image, as povwall has it from its switches
     // and .ini files.

@@ -18,6 +18,14 @@ std::vector<std::string> povray_command(const RenderOptions& o,
                                         const std::string& out_png, int threads,
                                         const std::vector<std::string>& extra = {});
 
+// The same render by this povwall binary as a process of its own (as POV-Ray runs: from
+// start to exit): the scene, size and include folders of `o`, `threads` threads (0: its
+// default), quiet; then `extra` switches. Throws UsageError when the binary cannot be
+// found.
+std::vector<std::string> povwall_command(const RenderOptions& o,
+                                         const std::string& out_png, int threads,
+                                         const std::vector<std::string>& extra = {});
+
 struct PovrayRun {
     enum class Status { Ok, NotInstalled, SceneError, Failed } status = Status::Ok;
     // Wall time of the render; for a cached image the time recorded when it was made (0
@@ -27,9 +35,9 @@ struct PovrayRun {
     bool timed_out = false;  // killed after the time limit (status Failed)
     int exit_code = 0;       // POV-Ray's, when it failed
     std::string log;         // POV-Ray's console output when it failed
-    // POV-Ray's image of this scene is random (an area light with `jitter` or photons:
-    // it draws the offsets from per-run sequences), so pixels are to be compared as block
-    // means.
+    // POV-Ray's image of this scene is random (an area light with `jitter`, photons or a
+    // rainbow's `jitter`: it draws them from per-run sequences), so pixels are to be
+    // compared as block means.
     // Known when the scene was parsed for a cache key (with a cache folder; corpus always
     // has one).
     bool random = false;

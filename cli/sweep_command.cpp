@@ -17,7 +17,6 @@
 #include "cli/options.h"
 #include "cli/povray_reference.h"
 #include "cli/process.h"
-#include "core/self_exe.h"
 #include "output/diff.h"
 #include "output/error_time_plot.h"
 #include "output/image_io.h"
@@ -68,12 +67,6 @@ double median(std::vector<double> v) {
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-std::string self_binary() {
-    const std::string exe = self_exe();
-    if (exe.empty()) throw UsageError("cannot find the povwall binary");
-    return exe;
-}
-
 // Applies POV-Ray switches of a rung to options used for the POV-Ray command line.
 RenderOptions with_switches(RenderOptions o, const std::vector<std::string>& switches) {
     for (const auto& s : switches) apply_pov_switch(s, o);
@@ -113,7 +106,6 @@ int run_sweep(int argc, char** argv) {
                                             ("povwall-sweep-" + std::to_string(getpid()))
                                       : fs::path(keep);
     fs::create_directories(dir);
-    const std::string exe = self_binary();
 
     // The reference: POV-Ray, every pixel supersampled 3x3 (threshold 0).
     RenderOptions ref_opts = with_switches(o, aa_switches("0.0", 3));
@@ -148,22 +140,7 @@ int run_sweep(int argc, char** argv) {
             if (r.povray) {
                 cmd = povray_command(with_switches(o, r.args), png, threads);
             } else {
-                cmd = {exe,
-                       "render",
-                       o.scene,
-                       "-o",
-                       png,
-                       "-W",
-                       std::to_string(o.width),
-                       "-H",
-                       std::to_string(o.height),
-                       "-q"};
-                if (threads > 0) {
-                    cmd.push_back("--threads");
-                    cmd.push_back(std::to_string(threads));
-                }
-                for (const auto& l : o.library_paths) cmd.insert(cmd.end(), {"-L", l});
-                cmd.insert(cmd.end(), r.args.begin(), r.args.end());
+                cmd = povwall_command(o, png, threads, r.args);
             }
             const auto t0 = std::chrono::steady_clock::now();
             const int rc = run_process(cmd, log);

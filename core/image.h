@@ -28,7 +28,9 @@ struct OutputEncoding {
     float working_gamma = 1.0f;  // assumed_gamma
     bool file_srgb = true;  // File_Gamma sRGB (POV-Ray's Unix default); else file_gamma
     float file_gamma = 2.2f;
-    int bits = 8;        // 8 or 16 per channel
+    // Colour depth as +F gives it (POV-Ray takes 5..16): PNG stores it in 8 or 16 bits
+    // by left bit replication, PPM as is; other formats 8 bits or floats.
+    int bits = 8;
     bool alpha = false;  // +UA: write RGBA (non-premultiplied)
 };
 

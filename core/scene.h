@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/bicubic_patch.h"
+#include "core/blob_tree.h"
 #include "core/colour.h"
 #include "core/compact_transform.h"
 #include "core/function.h"
@@ -703,6 +704,9 @@ struct BlobElement {
 struct BlobData {
     Real threshold = 1;
     std::vector<BlobElement> elements;
+    // Over blob_element_box of each element (make_blob builds it; empty: every element
+    // is visited).
+    BlobTree tree;
 };
 struct Blob {
     std::shared_ptr<const BlobData> data;  // shared by copies
@@ -717,6 +721,9 @@ struct Blob {
 // source order; cylinders with their matrix and length, spheres perhaps ellipsoids, c[2]
 // the strength): reversed, cylinders expanded, the field coefficients filled in.
 BlobData make_blob(Real threshold, const std::vector<BlobElement>& components);
+// A box in blob space holding the element's region (where its field is not zero), a
+// little larger than it so that rounding in the element's own tests stays inside.
+Bounds3 blob_element_box(const BlobElement& e);
 
 // isosurface { function { F } contained_by { box | sphere } threshold accuracy
 // max_gradient max_trace open }: F(x, y, z) - threshold = 0 inside its container, found
@@ -730,7 +737,36 @@ struct Isosurface {
     Real threshold = 0, accuracy = 0.001, max_gradient = 1.1;
     int max_trace = 1;
     bool closed = true;
+    // `evaluate P0, P1, P2`: max_gradient adapts along each ray (POV-Ray's dynamic
+    // estimate: above P0 it decays by P2, below P1 times a gradient seen it grows to P1^2
+    // times that).
+    bool evaluate = false;
+    Real eval_param[3] = {0, 0, 0};
     // The global settings the function's patterns and f_noise3d read (set when the
+    // parse ends).
+    int noise_generator = 2;
+    int number_of_waves = 10;
+};
+
+// parametric { function { X } function { Y } function { Z } <u1, v1>, <u2, v2>
+// contained_by { box | sphere } max_gradient accuracy precompute N x, y, z }: the surface
+// (X, Y, Z)(u, v) over the uv rectangle, met by POV-Ray 3.7's subdivision of that
+// rectangle (trace/shapes/parametric.h). No inside (POV-Ray's PATCH_OBJECT).
+struct ParametricPrecompute {
+    int depth = 1;  // the tree has 2^depth entries (index 1 the root)
+    bool axis[3] = {false, false, false};  // x, y, z precomputed
+    std::vector<Real> low[3], high[3];  // per axis, by sector index (core/parametric.h)
+};
+struct Parametric {
+    std::shared_ptr<const FunctionProgram> functions[3];  // of u, v (x, y)
+    Real umin = 0, vmin = 0, umax = 1, vmax = 1;
+    bool sphere_container = false;
+    Point3 corner1{-1, -1, -1}, corner2{1, 1, 1};  // the box (sorted per axis)
+    Point3 centre{0, 0, 0};
+    Real radius = 1;
+    Real accuracy = 0.001, max_gradient = 1;
+    std::shared_ptr<const ParametricPrecompute> precompute;  // null: none
+    // The global settings the functions' patterns and f_noise3d read (set when the
     // parse ends).
     int noise_generator = 2;
     int number_of_waves = 10;
@@ -781,7 +817,7 @@ using ShapeData =
     std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, Triangle,
                  SmoothTriangle, Polygon, Mesh, Superellipsoid, Ovus, Sor, Lathe, Prism,
                  BicubicPatch, JuliaFractal, Glyph, HeightField, SphereSweep, Poly,
-                 Quadric, Blob, Isosurface, Csg>;
+                 Quadric, Blob, Isosurface, Parametric, Csg>;
 
 struct Object {
     ShapeData shape;
@@ -882,6 +918,8 @@ struct Light {
     SourceLoc loc;
 };
 
+struct MeshCamera;  // core/mesh_camera.h
+
 struct Camera {
     enum class Kind : uint8_t {
         Perspective,
@@ -894,8 +932,10 @@ struct Camera {
         Cylinder3,
         Cylinder4,  // `cylinder N`
         Omnimax,
-        Spherical
+        Spherical,
+        Mesh  // `mesh_camera { }`: rays from the faces of meshes (`mesh`)
     } kind = Kind::Perspective;
+    std::shared_ptr<const MeshCamera> mesh;
     // Final vectors after look_at, angle, sky and transforms have been applied.
     Point3 location{0, 0, 0};
     Vector3 direction{0, 0, 1};
@@ -935,6 +975,18 @@ struct Fog {
     Transform transform;
 };
 
+// `rainbow { }` (POV-Ray 3.7's RAINBOW): a colour band at `angle` (radians, as all
+// angles here) from the antisolar direction, `width` wide, looked up in `pigment` (its
+// colour map along x from 0 to 1), fading in with distance; `arc_angle` limits it around
+// `up`, fading over falloff_angle to arc_angle. `jitter` blurs the band at random.
+struct Rainbow {
+    Vector3 antisolar{0, 0, 1};           // unit
+    Vector3 up{0, 1, 0}, right{1, 0, 0};  // unit, perpendicular to antisolar
+    Real angle = 0, width = 0, distance = 0, jitter = 0;
+    Real arc_angle = kPi, falloff_angle = kPi, falloff_width = 0;
+    HeapOptional<Pigment> pigment;
+};
+
 struct SkySphere {
     std::vector<Pigment> pigments;  // layered, first on top
     Rgb emission{1.0f};             // scales the pigments' colour
@@ -965,6 +1017,13 @@ struct PhotonSettings {
     float adc_bailout = -1;    // < 0: global_settings' adc_bailout
     float radius = -1;         // gather radius; <= 0: estimated from the map
     float radius_multiplier = 1;
+    // Media photons (`media steps[, factor]`; `radius`'s third and fourth values): at
+    // most `media_steps` photons stored per media interval a photon crosses, spaced
+    // `media_spacing_factor` times the surface spacing; none when 0.
+    int media_steps = 0;
+    float media_spacing_factor = 1;
+    float media_radius = -1;  // <= 0: estimated from the media map
+    float media_radius_multiplier = 1;
     SourceLoc loc;  // the `photons` keyword
 };
 
@@ -1036,6 +1095,7 @@ struct Scene {
     bool background_legacy = false;
     std::optional<SkySphere> sky_sphere;
     std::vector<Fog> fogs;
+    std::vector<Rainbow> rainbows;        // applied in reverse order of appearance
     std::vector<Media> atmosphere_media;  // scene-level `media { }`
     GlobalSettings settings;
     // Set when the parse left objects out (ParseOptions::keep_object: a black-box worker

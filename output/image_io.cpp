@@ -16,6 +16,7 @@
 #include "output/image_backend.h"
 #include "output/palette.h"
 #include "output/png_writer.h"
+#include "output/ppm_writer.h"
 #include "output/radiance_rgbe.h"
 
 namespace povwall::output {
@@ -148,15 +149,23 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
     if (ext == ".tga") ext = ".targa";  // OIIO's plugin names
     if (ext == ".ppm") ext = ".pnm";
     const bool linear_format = ext == ".exr" || ext == ".hdr";
-    // Radiance RGBE has no alpha channel (POV-Ray's +FH ignores +UA likewise).
-    const int channels = enc.alpha && ext != ".hdr" ? 4 : 3;
+    const bool png = ext == ".png", ppm = ext == ".pnm";
+    // PPM and Radiance RGBE have no alpha channel (POV-Ray's +FP and +FH ignore +UA).
+    const int channels = enc.alpha && ext != ".hdr" && !ppm ? 4 : 3;
     const int W = image.width, H = image.height;
-    const bool sixteen = enc.bits > 8 && !linear_format;
+    // POV-Ray's colour depth (+FN12: 12 bits; it takes 5..16): PNG and PPM quantise to
+    // it, PNG then fills its 8- or 16-bit samples by left bit replication (12-bit v is
+    // stored as v << 4 | v >> 8); its other formats are 8 bits.
+    const int depth = png || ppm ? std::clamp(enc.bits == 0 ? 8 : enc.bits, 5, 16) : 8;
+    const int container = ppm ? depth : depth > 8 ? 16 : 8;
+    const bool sixteen = container > 8 && !linear_format;
+    const int replicate_up = ppm ? 0 : container - depth,
+              replicate_down = depth - replicate_up;
     std::vector<float> floats;
     std::vector<uint16_t> words;
     std::vector<uint8_t> bytes;
     const size_t n = size_t(W) * H;
-    const float maxv = sixteen ? 65535.0f : 255.0f;
+    const float maxv = float((1 << depth) - 1);
     for (size_t i = 0; i < n; ++i) {
         for (int c = 0; c < channels; ++c) {
             float v = image.rgba[i * 4 + c];
@@ -174,7 +183,8 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
             if (enc.alpha && c < 3) v = a > 0.0f ? v / a : 0.0f;
             float e = c == 3 ? std::clamp(v, 0.0f, 1.0f) : encode_channel(v, enc);
             // POV-Ray quantises with floor(x * max + 0.5).
-            float q = std::floor(e * maxv + 0.5f);
+            unsigned q = unsigned(std::floor(e * maxv + 0.5f));
+            if (replicate_up > 0) q = q << replicate_up | q >> replicate_down;
             if (sixteen)
                 words.push_back(uint16_t(q));
             else
@@ -199,7 +209,9 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
                         : enc.file_srgb     ? PngEncoding::Kind::Srgb
                                             : PngEncoding::Kind::Gamma;
         declared.gamma = enc.file_gamma;
-        err = write_png(tmp.string(), W, H, channels, sixteen ? 16 : 8, data, declared);
+        err = write_png(tmp.string(), W, H, channels, container, data, declared);
+    } else if (ppm) {
+        err = write_ppm(tmp.string(), W, H, depth, data);
     } else {
         // OIIO picks the format from the file name unless told: the temporary keeps the
         // extension.

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <limits>
 
 #include "core/noise.h"
 #include "parser/expression_program.h"
@@ -761,6 +762,14 @@ Numeric Interpreter::parse_express() {
 double Interpreter::parse_float() {
     Numeric n = parse_numeric();
     return n.c[0];
+}
+
+double Interpreter::parse_single() {
+    const double v = parse_float();
+    // Past float's range the conversion is undefined in C++; the FPU gives infinity.
+    if (std::fabs(v) > double(std::numeric_limits<float>::max()) && std::isfinite(v))
+        return std::copysign(std::numeric_limits<double>::infinity(), v);
+    return double(static_cast<float>(v));
 }
 
 double Interpreter::parse_condition() {

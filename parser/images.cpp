@@ -244,7 +244,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             mapping->offset_u = -ou * (mapping->pixels ? mapping->pixels->width : 0);
             mapping->offset_v = -ov * (mapping->pixels ? mapping->pixels->height : 0);
         } else if (is_bump && w == "bump_size") {
-            bump->amount = parse_float();
+            bump->amount = parse_single();
         } else if (block == ImageBlock::ImageMap &&
                    (w == "filter" || w == "transmit" || w == "alpha")) {
             if (w == "alpha")

@@ -123,6 +123,10 @@ class Interpreter {
     Numeric parse_numeric(bool no_gt = false);  // POV-Ray's Parse_Float/Vector level
     Numeric parse_express();                    // full expression (Parse_Express)
     double parse_float();
+    // A float POV-Ray stores in single precision (a SNGL field: a pattern's frequency,
+    // phase, wave exponent, agate_turb, quilted controls, turbulence omega and lambda, a
+    // normal's amount and accuracy), rounded as it stores it.
+    double parse_single();
     // A float read as POV-Ray reads counts and indices, truncated toward zero; values
     // past int's range (or NaN) saturate instead of being undefined.
     int parse_int() { return saturating_int(parse_float()); }
@@ -219,9 +223,7 @@ class Interpreter {
     void assign_light_groups(Object& obj);
     // At the end of the parse: light groups whose lights would light media differently
     // from the global lights are refused (light_groups.cpp).
-    void check_light_groups_and_media();
     uint32_t light_groups_ = 0;  // groups numbered so far (Light::light_group)
-    std::optional<Token> first_light_group_;
     // The global photons keyword, and the first parallel or cylinder light (photons.cpp).
     std::optional<Token> photons_at_, first_parallel_light_;
     void check_photons();
@@ -234,6 +236,8 @@ class Interpreter {
     // The rest of a camera block read as POV-Ray read it before 3.5, from `c`.
     CameraSpec parse_legacy_camera(CameraSpec c);
     bool parse_focal_blur_item(const Token& t, CameraSpec& c);
+    std::shared_ptr<const MeshCamera> parse_mesh_camera(const Token& at);
+    Rainbow parse_rainbow(const Token& at);
     void parse_global_settings();
     // photons.cpp
     void parse_photon_settings(const Token& at);
@@ -302,7 +306,14 @@ class Interpreter {
     void parse_blob_component_modifiers(BlobElement& e, LayeredTexture& tex);
     // parser/shape_isosurface.cpp: the function and the isosurface's own options.
     void parse_isosurface(Object& out, const Token& keyword);
-    // At the end of the parse: the global settings every isosurface's function reads.
+    // `contained_by { box { C1, C2 } | sphere { C, R } }` after its keyword (isosurface
+    // and parametric): box corners sorted per axis.
+    void parse_contained_by(bool& sphere, Point3& corner1, Point3& corner2,
+                            Point3& centre, Real& radius);
+    // parser/shape_parametric.cpp: the functions, the uv rectangle and the options.
+    void parse_parametric(Object& out, const Token& keyword);
+    // At the end of the parse: the global settings every isosurface's and parametric's
+    // function reads.
     void settle_isosurfaces();
     // POV-Ray's UV vector: a float stands for both; 3 or more components are an error.
     ProfilePoint parse_uv_vector();

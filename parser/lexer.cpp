@@ -154,10 +154,16 @@ void lex(SourceManager& sm, int file_index, SourceFile& f) {
         if (c == '"') {
             ++i;
             auto value = std::make_unique<std::string>();
+            // A line break is part of the string, as in POV-Ray (shapes3.inc has one);
+            // a backslash right before it is an error there.
             while (i < n && s[i] != '"') {
-                if (s[i] == '\n') break;
                 if (s[i] == '\\' && i + 1 < n) {
                     char e = s[i + 1];
+                    if (e == '\n' || e == '\r')
+                        lex_error(
+                            sm, file_index, uint32_t(i), 1,
+                            "unterminated string literal (a backslash before a line "
+                            "break)");
                     switch (e) {
                         case 'n':
                             value->push_back('\n');

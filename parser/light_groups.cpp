@@ -36,7 +36,6 @@ bool has_looks_like(const Object& o) {
 
 void Interpreter::parse_light_group(const Token& keyword, Object& out) {
     expect_punct('{', "after 'light_group'");
-    if (!first_light_group_) first_light_group_ = keyword;
     Csg csg;
     csg.kind = CsgKind::Union;
     csg.light_group = true;
@@ -112,33 +111,6 @@ void Interpreter::assign_light_groups(Object& obj) {
         for (Object& c : csg->children) self(self, c, outer_global, group);
     };
     visit(visit, obj, std::nullopt, 0);
-}
-
-void Interpreter::check_light_groups_and_media() {
-    if (!first_light_group_) return;
-    // POV-Ray lights media by the lights of the object a ray segment ends on
-    // (MediaFunction::ComputeMediaLightInterval); povwall's media see the global lights.
-    // That is the same only while no group light interacts with media and every object
-    // sees the global lights.
-    bool group_light_in_media = false;
-    for (const Light& l : scene_.lights)
-        group_light_in_media =
-            group_light_in_media || (l.light_group != 0 && l.media_interaction);
-    bool has_media = !scene_.atmosphere_media.empty();
-    bool global_off = false;
-    auto visit = [&](auto& self, const Object& o) -> void {
-        if (o.interior && !o.interior->media.empty()) has_media = true;
-        if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
-            for (const Object& c : csg->children) self(self, c);
-        } else if (!o.global_lights) {
-            global_off = true;
-        }
-    };
-    for (const Object& o : scene_.objects) visit(visit, o);
-    if (has_media && (group_light_in_media || global_off))
-        unsupported(*first_light_group_,
-                    "light_group in a scene with media (group lights with "
-                    "media_interaction, or objects without the global lights)");
 }
 
 }  // namespace povwall::parser

@@ -9,10 +9,12 @@ namespace povwall::parser {
 
 namespace {
 
-// POV-Ray's PATCH_OBJECT: a bicubic patch or a mesh without inside_vector, and any CSG
-// holding one (CHILDREN_FLAGS); such objects have no inside.
+// POV-Ray's PATCH_OBJECT: a bicubic patch, a parametric or a mesh without inside_vector,
+// and any CSG holding one (CHILDREN_FLAGS); such objects have no inside.
 bool is_patch(const Object& o) {
-    if (std::holds_alternative<BicubicPatch>(o.shape)) return true;
+    if (std::holds_alternative<BicubicPatch>(o.shape) ||
+        std::holds_alternative<Parametric>(o.shape))
+        return true;
     if (const Mesh* m = std::get_if<Mesh>(&o.shape)) return !m->inside_vector;
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
         for (const Object& c : csg->children)

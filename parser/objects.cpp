@@ -9,9 +9,18 @@
 namespace povwall::parser {
 namespace {
 
+bool holds_parametric(const Object& o) {
+    if (std::holds_alternative<Parametric>(o.shape)) return true;
+    if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
+        for (const Object& c : csg->children)
+            if (holds_parametric(c)) return true;
+    }
+    return false;
+}
+
 // Shapes the scene model does not have yet: used, they are a located "unsupported" error.
 bool is_unsupported_shape(std::string_view w) {
-    static constexpr std::string_view kNames[] = {"parametric", "lemon"};
+    static constexpr std::string_view kNames[] = {"lemon"};
     for (std::string_view n : kNames) {
         if (w == n) return true;
     }
@@ -206,12 +215,12 @@ bool Interpreter::try_transform(const Token& t, Transform& out, TransformStep* s
         Token at = peek();
         Vector3 s = parse_vector();
         for (int i = 0; i < 3; ++i) {
-            // POV-Ray warns and substitutes 1.0; a scene that scales by 0 almost surely
-            // has a bug, and any stand-in value makes a singular (or wildly stretched)
-            // inverse.
-            if (s[i] == 0)
-                error(at, std::string("singular transform: scale by 0 in ") + "xyz"[i] +
-                              " (the object would be flattened)");
+            // POV-Ray's Parse_Scale_Vector, wherever `scale` is read: a 0 becomes 1.
+            if (s[i] == 0) {
+                s[i] = 1;
+                warn(at, std::string("Illegal Value: Scale ") + "XYZ"[i] +
+                             " by 0.0. Changed to 1.0.");
+            }
         }
         out = Transform::scale(s);
         kind = {TransformStep::Kind::Scale, s};
@@ -382,8 +391,18 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
             }
         };
         pass_down(pass_down, obj);
-    } else if (w == "inverse" && std::holds_alternative<BicubicPatch>(obj.shape)) {
+    } else if (w == "inverse" && (std::holds_alternative<BicubicPatch>(obj.shape) ||
+                                  std::holds_alternative<Parametric>(obj.shape) ||
+                                  std::holds_alternative<Triangle>(obj.shape) ||
+                                  std::holds_alternative<SmoothTriangle>(obj.shape))) {
+        // POV-Ray's Invert of these does nothing (trace/shapes/shape.h, leaf_invertible).
         warn(t, "Cannot invert a patch object.");
+    } else if (w == "inverse" && std::holds_alternative<Polygon>(obj.shape)) {
+        // Nor of a polygon, which is no patch object: no warning.
+    } else if (w == "inverse" && holds_parametric(obj)) {
+        // POV-Ray inverts a CSG child by child, which leaves a parametric as it is: the
+        // CSG's inside is not the complement of its children's.
+        unsupported(t, "inverse on a CSG holding a parametric");
     } else if (w == "inverse") {
         obj.inverse = !obj.inverse;
         // POV-Ray inverts a CSG by inverting its children and morphing every CSG of the
@@ -398,7 +417,19 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         };
         morph(morph, obj);
     } else if (w == "double_illuminate") {
-        obj.double_illuminate = true;
+        // On a CSG it goes at once to every node below, on or off (POV-Ray's
+        // Set_CSG_Tree_Flag), so the outermost setting wins; unlike the ray flags it
+        // does not come down when the object is placed.
+        obj.double_illuminate = parse_bool_opt();
+        auto set_tree = [&](auto& self, Object& o) -> void {
+            if (auto csg = std::get_if<Csg>(&o.shape)) {
+                for (Object& c : csg->children) {
+                    c.double_illuminate = obj.double_illuminate;
+                    self(self, c);
+                }
+            }
+        };
+        set_tree(set_tree, obj);
     } else if (w == "sturm") {
         bool* sturm = nullptr;
         if (auto torus = std::get_if<Torus>(&obj.shape)) sturm = &torus->sturm;
@@ -609,6 +640,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "isosurface") {
         open();
         if (!copy_identifier()) parse_isosurface(out, t);
+    } else if (w == "parametric") {
+        open();
+        if (!copy_identifier()) parse_parametric(out, t);
     } else if (w == "superellipsoid") {
         open();
         if (!copy_identifier()) parse_superellipsoid(out);
@@ -720,7 +754,35 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 !is_word(c, "normal") && !is_word(c, "interior") &&
                 !is_word(c, "material")) {
                 next();
+                // A declared object named bare is a child, as object { Id } without
+                // modifiers (POV-Ray's Parse_Object). First in the braces POV-Ray takes
+                // it as the CSG to extend: the same as a child when it is a CSG of this
+                // kind, something else otherwise.
+                const Value* v = lookup(c);
+                if (auto id = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr) {
+                    const Csg* base = std::get_if<Csg>(&(*id)->shape);
+                    if (csg.children.empty() && csg.lights.empty() &&
+                        (!base || base->kind != csg.kind))
+                        unsupported(
+                            c, "an object identifier first in a CSG of another kind");
+                    child = **id;
+                    child.loc = sources_.location(c);
+                    csg.children.push_back(std::move(child));
+                    continue;
+                }
                 if (try_parse_object(c, child)) {
+                    if (holds_parametric(child)) {
+                        // A patch object: POV-Ray warns, and keeps it.
+                        if (csg.kind == CsgKind::Intersection ||
+                            csg.kind == CsgKind::Difference)
+                            warn(c, "Patch objects not allowed in intersection.");
+                        // A difference inverts a CSG after the first child by inverting
+                        // its children, which leaves a parametric as it is.
+                        if (csg.kind == CsgKind::Difference && !csg.children.empty() &&
+                            std::holds_alternative<Csg>(child.shape))
+                            unsupported(
+                                c, "a CSG holding a parametric cut from a difference");
+                    }
                     csg.children.push_back(std::move(child));
                     continue;
                 }
@@ -844,13 +906,13 @@ void Interpreter::place_object(Object& obj, const Object* parent,
             obj.uv_mapping |= parent->uv_mapping;
         }
         if (!obj.interior) obj.interior = *parent->interior;
+        // The ray flags come down (never off); where POV-Ray tests them, ray_use.h.
         obj.no_shadow |= parent->no_shadow;
         obj.no_image |= parent->no_image;
         obj.no_reflection |= parent->no_reflection;
         obj.no_radiosity |= parent->no_radiosity;
         if (obj.radiosity_importance <= 0)
             obj.radiosity_importance = parent->radiosity_importance;
-        obj.double_illuminate |= parent->double_illuminate;
         inherit_photons(obj.photons, parent->photons);
     }
     if (obj.texture.empty()) obj.texture.push_back(default_texture_);
@@ -962,7 +1024,11 @@ void Interpreter::parse_top_level_item(const Token& t) {
             scene_.atmosphere_media.push_back(parse_media());
             return;
         }
-        if (w == "atmosphere" || w == "rainbow" || w == "photons" || w == "radiosity") {
+        if (w == "rainbow") {
+            scene_.rainbows.push_back(parse_rainbow(t));
+            return;
+        }
+        if (w == "atmosphere" || w == "photons" || w == "radiosity") {
             unsupported(t, w);
         }
         // POV-Ray's Link_To_Frame removes the bound of a shape placed in the scene (as

@@ -144,7 +144,6 @@ Scene Interpreter::run(int root_file) {
     for (const auto& f : image_files_) scene_.files.push_back(f);
     finish_version_state();
     settle_isosurfaces();
-    check_light_groups_and_media();
     check_photons();
     check_radiosity();
     // A camera normal's patterns read the final settings too.
@@ -161,6 +160,10 @@ void Interpreter::settle_isosurfaces() {
         if (auto iso = std::get_if<Isosurface>(&o.shape)) {
             iso->noise_generator = g.noise_generator;
             iso->number_of_waves = g.number_of_waves;
+        }
+        if (auto par = std::get_if<Parametric>(&o.shape)) {
+            par->noise_generator = g.noise_generator;
+            par->number_of_waves = g.number_of_waves;
         }
         if (auto csg = std::get_if<Csg>(&o.shape)) {
             for (Object& c : csg->children) self(self, c);

@@ -55,15 +55,14 @@ void Interpreter::parse_photon_settings(const Token& at) {
         } else if (w == "radius") {
             p.radius = starts_float(peek()) ? float(parse_float()) : -1.0f;
             p.radius_multiplier = optional_float(1);
-            // The media map's radius and multiplier: no media photons (see `media`).
-            optional_float(-1);
-            optional_float(1);
+            p.media_radius = optional_float(-1);
+            p.media_radius_multiplier = optional_float(1);
         } else if (w == "media") {
-            const int steps = parse_int();
-            if (steps < 0) error(t, "max media steps must be non-negative");
-            const float factor = optional_float(1);
-            if (factor <= 0) error(t, "media spacing factor must be greater than zero");
-            if (steps > 0) unsupported(t, "photons in media");
+            p.media_steps = parse_int();
+            if (p.media_steps < 0) error(t, "max media steps must be non-negative");
+            p.media_spacing_factor = optional_float(1);
+            if (p.media_spacing_factor <= 0)
+                error(t, "media spacing factor must be greater than zero");
         } else if (w == "save_file" || w == "load_file") {
             unsupported(t, std::string("photons ") + std::string(w));
         } else {
@@ -83,19 +82,10 @@ void Interpreter::parse_photon_settings(const Token& at) {
     photons_at_ = at;
 }
 
-// What the photon map does not do yet, once the scene is known: photons through media
-// (POV-Ray dims them by the media they cross and can store them there), from parallel
+// What the photon map does not do yet, once the scene is known: photons from parallel
 // and cylinder lights (shot from a disc instead of a point).
 void Interpreter::check_photons() {
     if (!scene_.settings.photons) return;
-    bool has_media = !scene_.atmosphere_media.empty();
-    auto visit = [&](auto& self, const Object& o) -> void {
-        if (o.interior && !o.interior->media.empty()) has_media = true;
-        if (const Csg* csg = std::get_if<Csg>(&o.shape))
-            for (const Object& c : csg->children) self(self, c);
-    };
-    for (const Object& o : scene_.objects) visit(visit, o);
-    if (has_media) unsupported(*photons_at_, "photons in a scene with media");
     if (first_parallel_light_)
         unsupported(*first_parallel_light_, "photons from parallel and cylinder lights");
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <optional>
 
+#include "core/mesh_camera.h"
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
@@ -37,6 +38,9 @@ CameraSpec Interpreter::parse_camera_block() {
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) {
+            // POV-Ray's focal blur takes no account of a mesh camera's rays.
+            if (c.kind == Camera::Kind::Mesh && c.aperture != 0 && c.blur_samples > 0)
+                unsupported(t, "focal blur with a mesh_camera");
             c.parsed = true;
             return c;
         }
@@ -125,7 +129,10 @@ CameraSpec Interpreter::parse_camera_block() {
         } else if (w == "focal_point") {
             c.focal_point = parse_vector();
             c.has_focal_point = true;
-        } else if (w == "mesh_camera" || w == "user_defined") {
+        } else if (w == "mesh_camera") {
+            c.kind = Camera::Kind::Mesh;
+            c.mesh = parse_mesh_camera(t);
+        } else if (w == "user_defined") {
             unsupported(t, "camera " + std::string(w));
         } else {
             expected("a camera item or '}'", t);
@@ -288,6 +295,7 @@ Camera Interpreter::finish_camera(const CameraSpec& s) {
     cam.confidence = s.confidence;
     cam.variance = s.variance;
     cam.bokeh = s.bokeh;
+    cam.mesh = s.mesh;
     // No focal point: POV-Ray's Direction_Length (1, or the direction's length as angle
     // and look_at set it); 0 means 1.
     auto focal = [](double given, double direction_length) {
@@ -648,10 +656,10 @@ Fog Interpreter::parse_fog() {
             f.octaves = std::clamp(parse_int(), 1, 10);
         } else if (w == "omega") {
             f.turbulent = true;
-            f.omega = parse_float();
+            f.omega = parse_single();  // POV-Ray's TURB keeps them in single precision
         } else if (w == "lambda") {
             f.turbulent = true;
-            f.lambda = parse_float();
+            f.lambda = parse_single();
         } else if (t.kind == TokenKind::Word && lookup(t) &&
                    std::holds_alternative<Numeric>(*lookup(t))) {
             unget(t);  // fog { Blue+Gray70 ... }: a colour expression without keyword
@@ -1133,9 +1141,8 @@ Value Interpreter::parse_item_value(const Token& t) {
             return a;
         }
         static constexpr std::string_view kUnsupportedItems[] = {
-            "rainbow",      "photons",     "radiosity",   "pigment_map",
-            "normal_map",   "texture_map", "density_map", "slope_map",
-            "material_map", "parametric",  "lemon"};
+            "rainbow",     "photons",     "radiosity", "pigment_map",  "normal_map",
+            "texture_map", "density_map", "slope_map", "material_map", "lemon"};
         for (std::string_view item : kUnsupportedItems) {
             if (w == item) unsupported(t, w);
         }

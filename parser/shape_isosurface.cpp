@@ -1,10 +1,37 @@
 // isosurface { function { F } [contained_by { box { C1, C2 } | sphere { C, R } }]
-//   [threshold T] [accuracy A] [max_gradient G] [max_trace N | all_intersections] [open]
+//   [threshold T] [accuracy A] [max_gradient G] [max_trace N | all_intersections]
+//   [evaluate P0, P1, P2] [open]
 //   modifiers }, as POV-Ray 3.7's Parse_Isosurface (notes: shape-isosurface.md section
 //   1).
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
+
+void Interpreter::parse_contained_by(bool& sphere, Point3& corner1, Point3& corner2,
+                                     Point3& centre, Real& radius) {
+    // At most one box or sphere; an empty block keeps the container.
+    expect_punct('{', "after contained_by");
+    if (accept_word("box")) {
+        expect_punct('{', "after box");
+        Point3 c1 = parse_vector();
+        accept_punct(',');
+        Point3 c2 = parse_vector();
+        expect_punct('}', "after the box's corners");
+        for (int a = 0; a < 3; ++a)
+            if (c1[a] > c2[a]) std::swap(c1[a], c2[a]);
+        sphere = false;
+        corner1 = c1;
+        corner2 = c2;
+    } else if (accept_word("sphere")) {
+        expect_punct('{', "after sphere");
+        centre = parse_vector();
+        accept_punct(',');
+        radius = parse_float();
+        expect_punct('}', "after the sphere's radius");
+        sphere = true;
+    }
+    expect_punct('}', "to close contained_by");
+}
 
 void Interpreter::parse_isosurface(Object& out, const Token& keyword) {
     Isosurface iso;
@@ -16,27 +43,8 @@ void Interpreter::parse_isosurface(Object& out, const Token& keyword) {
         const Token t = peek();
         if (is_word(t, "contained_by")) {
             next();
-            expect_punct('{', "after contained_by");
-            if (accept_word("box")) {
-                expect_punct('{', "after box");
-                Point3 c1 = parse_vector();
-                accept_punct(',');
-                Point3 c2 = parse_vector();
-                expect_punct('}', "after the box's corners");
-                for (int a = 0; a < 3; ++a)
-                    if (c1[a] > c2[a]) std::swap(c1[a], c2[a]);
-                iso.sphere_container = false;
-                iso.corner1 = c1;
-                iso.corner2 = c2;
-            } else if (accept_word("sphere")) {
-                expect_punct('{', "after sphere");
-                iso.centre = parse_vector();
-                accept_punct(',');
-                iso.radius = parse_float();
-                expect_punct('}', "after the sphere's radius");
-                iso.sphere_container = true;
-            }
-            expect_punct('}', "to close contained_by");
+            parse_contained_by(iso.sphere_container, iso.corner1, iso.corner2, iso.centre,
+                               iso.radius);
         } else if (is_word(t, "threshold")) {
             next();
             iso.threshold = parse_float();
@@ -61,9 +69,12 @@ void Interpreter::parse_isosurface(Object& out, const Token& keyword) {
             next();
             iso.closed = false;
         } else if (is_word(t, "evaluate")) {
-            // POV-Ray adapts max_gradient ray by ray and writes it back into the object,
-            // shared by every thread: the image depends on the order of the rays.
-            unsupported(t, "isosurface evaluate");
+            next();
+            iso.evaluate = true;
+            for (int i = 0; i < 3; ++i) {
+                if (i) accept_punct(',');
+                iso.eval_param[i] = parse_float();
+            }
         } else {
             break;
         }

@@ -152,7 +152,8 @@ Numeric Interpreter::parse_colour() {
         }
         any = true;
     }
-    if (!any) expected("a colour", peek());
+    // No colour at all is black, as POV-Ray's Parse_Colour leaves it (a light_source
+    // written with its location alone is a black light there).
     return c;
 }
 
@@ -460,17 +461,17 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     } else if (w == "octaves") {
         turbulence_warp().octaves = parse_int();
     } else if (w == "omega") {
-        turbulence_warp().omega = parse_float();
+        turbulence_warp().omega = parse_single();
     } else if (w == "lambda") {
-        turbulence_warp().lambda = parse_float();
+        turbulence_warp().lambda = parse_single();
     } else if (w == "frequency") {
-        spec.frequency = parse_float();
+        spec.frequency = parse_single();
         // POV-Ray wraps a block or object pattern's entry number then, and blends the
         // neighbouring entries of its list at the fraction: not done here.
         if (spec.frequency != 0 && entry_list_size(spec.kind) != 0)
             unsupported(t, "frequency on a block or object pattern");
     } else if (w == "phase") {
-        spec.phase = parse_float();
+        spec.phase = parse_single();
     } else if (w == "ramp_wave") {
         spec.wave = WaveType::Ramp;
     } else if (w == "triangle_wave") {
@@ -484,11 +485,11 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     } else if (w == "poly_wave") {
         spec.wave = WaveType::Poly;
         const Token& n = peek();
-        if (starts_float(n)) spec.wave_exponent = parse_float();
+        if (starts_float(n)) spec.wave_exponent = parse_single();
     } else if (w == "noise_generator") {
         spec.noise_generator = parse_int();
     } else if (w == "agate_turb") {
-        spec.scalar = parse_float();
+        spec.scalar = parse_single();
     } else if (w == "mortar") {
         spec.scalar = parse_float();
     } else if (w == "brick_size") {
@@ -558,9 +559,9 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
             error(t, "keyword 'interpolate' cannot be used with non-density_file");
         spec.density_interpolation = parse_int();
     } else if (w == "control0") {
-        spec.vector.x = parse_float();
+        spec.vector.x = parse_single();
     } else if (w == "control1") {
-        spec.vector.y = parse_float();
+        spec.vector.y = parse_single();
     } else if (w == "warp") {
         expect_punct('{', "after 'warp'");
         Warp wp;
@@ -607,9 +608,9 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
             if (mw == "octaves")
                 wp.octaves = parse_int();
             else if (mw == "omega")
-                wp.omega = parse_float();
+                wp.omega = parse_single();
             else if (mw == "lambda")
-                wp.lambda = parse_float();
+                wp.lambda = parse_single();
             else if (mw == "offset")
                 wp.offset = parse_vector();
             else if (mw == "flip")
@@ -676,13 +677,24 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                w == "srgbt" || w == "srgbft" || w == "red" || w == "green" ||
                w == "blue" || w == "filter" || w == "transmit" || w == "alpha";
     };
+    // POV-Ray reads the pattern only as the first item (after the identifier): one after
+    // a modifier or another pattern ends the block there (Parse_Pattern, then the
+    // caller's closing brace).
+    bool first_item = true;
     for (;;) {
         Token t = next();
         if (is_punct(t, terminator)) return;
+        const bool pattern_allowed = first_item;
+        first_item = false;
         // Colours first: no pattern keyword or modifier is one, and solid pigments are
         // the common case (the pattern tables are long).
         const bool colour = t.kind == TokenKind::Word && is_colour_word(t.text);
         if (!colour && try_pattern_keyword(t, p.pattern)) {
+            if (!pattern_allowed)
+                error(t, terminator == '}'
+                             ? "No matching } in 'pigment', " + std::string(t.text) +
+                                   " found instead"
+                             : "Expected ']', " + std::string(t.text) + " found instead");
             // The block patterns (and the object pattern) take their colours or
             // pigments right after the keyword (POV-Ray's Parse_Blend_List).
             const bool object_pattern = p.pattern->kind == PatternKind::ObjectInside;
@@ -880,14 +892,14 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
             }
             // `bumps 0.5`, `gradient x, 5.6`: an optional bump size follows the pattern.
             accept_punct(',');
-            if (starts_float(peek())) n.amount = parse_float();
+            if (starts_float(peek())) n.amount = parse_single();
             continue;
         }
         if (try_pattern_modifier(t, n.pattern)) continue;
         if (is_word(t, "bump_size")) {
-            n.amount = parse_float();
+            n.amount = parse_single();
         } else if (is_word(t, "accuracy")) {
-            n.accuracy = parse_float();
+            n.accuracy = parse_single();
         } else if (is_word(t, "normal_map")) {
             expect_punct('{', "after 'normal_map'");
             n.list.clear();

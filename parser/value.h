@@ -105,6 +105,7 @@ struct CameraSpec {
     bool has_focal_point = false;
     Vector3 focal_point{0, 0, 1};
     HeapOptional<Pigment> bokeh;
+    std::shared_ptr<const MeshCamera> mesh;  // mesh_camera
     // A legacy camera's length of `direction` as its angle and look_at left it (POV-Ray's
     // Direction_Length: the focal distance when none is given).
     double legacy_direction_length = 1;

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/scene.h"
+#include "trace/mesh_camera.h"
 #include "trace/pattern.h"
 
 namespace povwall::trace {
@@ -23,9 +24,11 @@ struct ApertureShift {
 // (outside the fisheye circle), which POV-Ray renders black and fully transparent.
 // POV-Ray's own form: its pixel position (x, y) (pixel i's centre at i), which it moves
 // to (x + 0.5, y - 0.5) before scaling; `shifted` is that moved position.
+// `mesh_ray`: which of a mesh camera's rays per pixel.
 inline std::optional<Ray> camera_ray_shifted(const Camera& cam, Real shifted_x,
                                              Real shifted_y, int width, int height,
-                                             const ApertureShift* shift = nullptr);
+                                             const ApertureShift* shift = nullptr,
+                                             int mesh_ray = 0);
 
 inline std::optional<Ray> camera_ray(const Camera& cam, Real px, Real py, int width,
                                      int height) {
@@ -41,7 +44,7 @@ inline std::optional<Ray> camera_ray_pov(const Camera& cam, Real x, Real y, int 
 
 inline std::optional<Ray> camera_ray_shifted(const Camera& cam, Real shifted_x,
                                              Real shifted_y, int width, int height,
-                                             const ApertureShift* shift) {
+                                             const ApertureShift* shift, int mesh_ray) {
     using Kind = Camera::Kind;
     // Image position from -0.5 to 0.5, right and up, rounded as POV-Ray computes it
     // (y from the bottom row). The last bits decide which side of a surface lying on a
@@ -61,6 +64,15 @@ inline std::optional<Ray> camera_ray_shifted(const Camera& cam, Real shifted_x,
         return Ray{cam.location + shift->deflection, normalize(dir)};
     };
     switch (cam.kind) {
+        case Kind::Mesh: {
+            // Its pattern position for a camera normal stays (0, 0), as POV-Ray's.
+            pattern_x = pattern_y = 0;
+            const std::optional<Ray> r = mesh_camera_ray(
+                *cam.mesh, cam, shifted_x, shifted_y, width, height, mesh_ray);
+            if (!r) return std::nullopt;
+            ray = Ray{r->origin, normalize(r->direction)};
+            break;
+        }
         case Kind::Perspective:
             ray = make(cam.location, cam.direction + cam.right * x0 + cam.up * y0);
             break;

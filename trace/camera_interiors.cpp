@@ -1,7 +1,9 @@
 #include "trace/camera_interiors.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "core/mesh_camera.h"
 #include "trace/prepared_scene.h"
 
 namespace povwall::trace {
@@ -30,6 +32,25 @@ CameraInteriors::CameraInteriors(const Scene& scene) {
         for (int sx = -1; sx <= 1; sx += 2)
             for (int sy = -1; sy <= 1; sy += 2)
                 origins.extend(cam.location + right * Real(sx) + up * Real(sy));
+    }
+    if (cam.kind == Kind::Mesh) {
+        // From the faces (moved along their unit normals by location.z), each ray its
+        // own. POV-Ray takes the interiors of the first ray's start for all: the same
+        // while the faces lie in the same objects.
+        per_ray_ = true;
+        for (const MeshCamera::Part& part : cam.mesh->meshes) {
+            Bounds3 b;
+            Real longest = 1;  // smooth normals need not be unit
+            for (const MeshCamera::Face& f : part.faces) {
+                for (const Point3& p : f.p) b.extend(p);
+                for (const Vector3& n : f.n) longest = std::max(longest, length(n));
+            }
+            if (b.empty()) continue;
+            const Real reach = std::fabs(cam.location.z) * longest;
+            b.lo -= Vector3(reach);
+            b.hi += Vector3(reach);
+            origins.extend(part.transform.bounds(b));
+        }
     }
     if (cam.aperture != 0 && cam.blur_samples > 0) {
         // Focal blur starts rays at points of the aperture around the location (within

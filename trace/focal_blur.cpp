@@ -69,6 +69,12 @@ double chi_square_exceeded(double df, double y) {
 }  // namespace
 
 FocalBlur::FocalBlur(const Camera& camera, const PatternEnv& env) : camera_(camera) {
+    if (camera.kind == Camera::Kind::Mesh) {
+        mesh_rays_ = true;
+        max_rays_ = min_rays_ = camera.mesh->rays_per_pixel;
+        batches_ = {max_rays_, 0};
+        return;
+    }
     const int n = camera.blur_samples;
     max_rays_ = n;
     min_rays_ = camera.blur_samples_min;
@@ -166,7 +172,7 @@ FocalBlur::FocalBlur(const Camera& camera, const PatternEnv& env) : camera_(came
 }
 
 bool FocalBlur::good_enough(int n, const float* s1, const float* s2) const {
-    if (n < min_rays_) return false;
+    if (n < min_rays_ || mesh_rays_) return false;
     const double count = n, threshold = thresholds_[size_t(n - 1)];
     for (int ch = 0; ch < 4; ++ch) {
         const double mean = s1[ch] / count;

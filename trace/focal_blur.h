@@ -21,12 +21,19 @@
 
 namespace povwall::trace {
 
+// A mesh camera with several rays per pixel goes the same way (POV-Ray's TracePixel):
+// each sample averages its rays_per_pixel rays, all in one batch, over the rays that
+// found a face (none: transparent black).
 class FocalBlur {
   public:
-    // Focal blur is on when the camera has an aperture and blur samples.
+    // Focal blur is on when the camera has an aperture and blur samples; a mesh camera
+    // with more than one ray per pixel averages them here too.
     static bool enabled(const Camera& camera) {
-        return camera.aperture != 0 && camera.blur_samples > 0;
+        return (camera.aperture != 0 && camera.blur_samples > 0) ||
+               (camera.kind == Camera::Kind::Mesh && camera.mesh->rays_per_pixel > 1);
     }
+    // The mesh camera's rays rather than focal blur's.
+    bool mesh_rays() const { return mesh_rays_; }
     // `env`: for the bokeh pigment.
     FocalBlur(const Camera& camera, const PatternEnv& env);
     const Camera& camera() const { return camera_; }
@@ -49,6 +56,7 @@ class FocalBlur {
 
   private:
     const Camera& camera_;
+    bool mesh_rays_ = false;
     int max_rays_ = 0, min_rays_ = 0;
     std::vector<int> batches_;           // rays per batch (0 ends the list: 4 from there)
     std::vector<double> thresholds_;     // of the mean's variance after n rays, at n - 1
@@ -61,6 +69,9 @@ class FocalBlur {
 // camera sees nothing).
 inline std::optional<Ray> focal_blur_ray(const FocalBlur& blur, Real x, Real y, int ray,
                                          int width, int height) {
+    if (blur.mesh_rays())
+        return camera_ray_shifted(blur.camera(), x + 0.5, y - 0.5, width, height, nullptr,
+                                  ray);
     Real rx, ry;
     blur.ray_position(x, y, ray, rx, ry);
     const Real sx = rx + 0.5, sy = ry - 0.5;  // POV-Ray's shift to the pixel centre
@@ -76,8 +87,21 @@ enum class RayAnswer { Traced, NoRay, Missing };
 struct FocalProgress {
     float sum[4] = {0, 0, 0, 0}, s1[4] = {0, 0, 0, 0}, s2[4] = {0, 0, 0, 0};
     int rays = 0, level = 0;
+    int traced = 0;  // rays the camera had
     bool finished = false;
 };
+
+// The sample's colour (rgbt) from its finished rays: focal blur divides by all its rays,
+// a mesh camera by those it traced.
+inline void focal_mean(const FocalBlur& blur, const FocalProgress& p, float* rgbt) {
+    if (blur.mesh_rays() && p.traced == 0) {
+        rgbt[0] = rgbt[1] = rgbt[2] = 0;
+        rgbt[3] = 1;
+        return;
+    }
+    const int n = blur.mesh_rays() ? p.traced : p.rays;
+    for (int ch = 0; ch < 4; ++ch) rgbt[ch] = float(double(p.sum[ch]) / double(n));
+}
 
 // The sample's colour (rgbt) from its rays as POV-Ray averages them, going on from
 // `progress`: `ray(k, rgbt)` gives ray k. Every ray of a batch is asked for before giving
@@ -104,6 +128,7 @@ bool continue_focal_rays(const FocalBlur& blur, RayColour&& ray, FocalProgress& 
             const float* col = &colours[size_t(k - p.rays) * 4];
             float v[4] = {0, 0, 0, 1};
             if (answers[size_t(k - p.rays)] == RayAnswer::Traced) {
+                ++p.traced;
                 for (int ch = 0; ch < 4; ++ch) {
                     v[ch] = col[ch];
                     p.sum[ch] += col[ch];
@@ -118,7 +143,7 @@ bool continue_focal_rays(const FocalBlur& blur, RayColour&& ray, FocalProgress& 
         ++p.level;
         p.finished = blur.good_enough(p.rays, p.s1, p.s2) || p.rays >= blur.max_rays();
     }
-    for (int ch = 0; ch < 4; ++ch) rgbt[ch] = float(double(p.sum[ch]) / double(p.rays));
+    focal_mean(blur, p, rgbt);
     return true;
 }
 

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "trace/photon_map.h"
+
 namespace povwall::trace {
 
 namespace {
@@ -154,14 +156,15 @@ bool cylinder_interval(const Light& l, const Point3& O, const Vector3& D, Real& 
 // on; shadowless lights never do), each with the part of [0, L] it lights, and the lit
 // and unlit intervals they make. Spans keep the lights' order; the intervals come from
 // the sorted starts and ends, each lit one standing for all lights.
-void light_intervals(std::span<const Light> lights, const Point3& O, const Vector3& D,
-                     Real L, std::vector<LightSpan>& spans,
-                     std::vector<LitInterval>& lits) {
+void light_intervals(const MediaLights& in, const Point3& O, const Vector3& D, Real L,
+                     std::vector<LightSpan>& spans, std::vector<LitInterval>& lits) {
     spans.clear();
     lits.clear();
-    for (size_t i = 0; i < lights.size(); ++i) {
-        const Light& l = lights[i];
+    for (size_t i = 0; i < in.lights.size(); ++i) {
+        const Light& l = in.lights[i];
         if (!l.media_interaction || l.shadowless) continue;
+        if (l.light_group == 0 ? !in.global_lights : l.light_group != in.light_group)
+            continue;
         Real t1 = 0, t2 = L;
         bool keep = true;
         if (l.kind == Light::Kind::Spot || l.kind == Light::Kind::Cylinder) {
@@ -255,7 +258,7 @@ class Integrator {
   public:
     Integrator(std::span<const Media* const> list, const Ray& ray, Real t0, bool shadow,
                const PatternEnv& env, std::span<const LightSpan> spans,
-               MediaLightProbe* probe, bool scattering)
+               MediaLightProbe* probe, const PhotonMap* photons, bool scattering)
         : list_(list),
           ray_(ray),
           t0_(t0),
@@ -263,6 +266,7 @@ class Integrator {
           env_(env),
           spans_(spans),
           probe_(probe),
+          photons_(photons),
           scattering_(scattering),
           draws_(ray, t0) {}
 
@@ -291,6 +295,17 @@ class Integrator {
                 c.emission +=
                     scattering * light * media_phase(list_, to_light, ray_.direction);
             }
+        }
+        if (photons_ && scattering_ && !shadow_) {
+            // POV-Ray's ComputeMediaPhotons: the flux of the photons around, each by
+            // the phase for its direction, over the sphere they were gathered in.
+            thread_local std::vector<const Photon*> found;
+            const double r = photons_->gather(p, nullptr, found);
+            Rgb sum{0.0f};
+            for (const Photon* ph : found)
+                sum += PhotonMap::flux(*ph) *
+                       media_phase(list_, PhotonMap::incoming(*ph), ray_.direction);
+            c.emission += scattering * sum * float(3.0 / (kPi * r * r * r * 4.0));
         }
         return c;
     }
@@ -350,6 +365,7 @@ class Integrator {
     const PatternEnv& env_;
     std::span<const LightSpan> spans_;
     MediaLightProbe* probe_;
+    const PhotonMap* photons_;
     bool scattering_;
     Draws draws_;
 };
@@ -377,6 +393,66 @@ bool media_has_extinction(std::span<const Media* const> list) {
         if (e.r != 0 || e.g != 0 || e.b != 0) return true;
     }
     return false;
+}
+
+Rgb deposit_media_photons(std::span<const Media* const> list, const Ray& ray, Real t1,
+                          const MediaLights& lights, const PatternEnv& env,
+                          const Rgb& colour, MediaPhotonSink& sink) {
+    const Media* im = list[0];
+    bool extinction = false, scattering = false, collect = false;
+    for (const Media* m : list) {
+        if (m->intervals > im->intervals) im = m;
+        extinction = extinction || !m->absorption.is_black() || m->scatters();
+        scattering = scattering || m->scatters();
+        collect = collect || m->collect;
+    }
+    if (!extinction) return colour;
+    thread_local std::vector<LightSpan> spans;
+    thread_local std::vector<LitInterval> lits;
+    thread_local std::vector<SampleInterval> intervals;
+    light_intervals(lights, ray.origin, ray.direction, t1, spans, lits);
+    if (lits.empty()) lits.push_back({false, 0, t1});
+    sample_intervals(lits, *im, t1, intervals);
+    Rgb depth{0.0f};
+    bool emptied = false;
+    for (const SampleInterval& iv : intervals) {
+        // As many steps as the photons' spacing here fits, at most max_steps (then
+        // spaced wider, each photon carrying more).
+        const double spacing = sink.spread_at_unit * sink.travelled;
+        int steps = int(iv.ds / (spacing * sink.spacing_factor));
+        double factor = sink.spacing_factor;
+        if (steps > sink.max_steps) {
+            steps = sink.max_steps;
+            factor = iv.ds / (spacing * steps);
+        }
+        Rgb od{0.0f};
+        for (int j = 0; j < steps; ++j) {
+            const Real d0 =
+                (j + 0.5 + sink.draw() * sink.step_jitter - 0.5 * sink.step_jitter) /
+                steps;
+            const Real along = iv.s0 + d0 * iv.ds;
+            const Point3 p = ray.at(along);
+            for (const Media* m : list) {
+                Rgb rho{1.0f};
+                for (const Pigment& density : m->density)
+                    rho *= evaluate_pigment(density, p, env).rgb;
+                od += rho * m->extinction() * float(iv.ds);
+            }
+            if (scattering && collect)
+                sink.store(p, along,
+                           colour * float(factor * sink.spread_at_unit *
+                                          (sink.travelled + along)));
+        }
+        // POV-Ray divides the interval's optical depth by its sample count: 0 / 0 for
+        // an interval too short for one step, which turns the photon's colour into
+        // NaNs it then stores as black photons.
+        if (steps == 0)
+            emptied = true;
+        else
+            depth += od / float(steps);
+    }
+    if (emptied) return Rgb{0.0f};
+    return colour * exp_neg(depth);
 }
 
 MediaEffect media_effect(std::span<const Media* const> list, const Ray& ray, Real t0,
@@ -411,13 +487,19 @@ MediaEffect media_effect(std::span<const Media* const> list, const Ray& ray, Rea
     spans.clear();
     lits.clear();
     if (!shadow && lights)
-        light_intervals(lights->lights, ray.at(t0), ray.direction, L, spans, lits);
+        light_intervals(*lights, ray.at(t0), ray.direction, L, spans, lits);
     if (lits.empty()) lits.push_back({false, 0, L});
     sample_intervals(lits, *im, L, intervals);
+    if (lights && lights->photon) scattering = false;
     MediaLightProbe* probe = lights ? lights->probe : nullptr;
     if (scattering && !shadow && !spans.empty() && !probe)
         throw std::logic_error("media scattering without shadow tests");
-    Integrator in(list, ray, t0, shadow, env, spans, probe, scattering && !spans.empty());
+    const PhotonMap* photons =
+        lights && lights->media_photons && lights->media_photons->size() > 0
+            ? lights->media_photons
+            : nullptr;
+    Integrator in(list, ray, t0, shadow, env, spans, probe, photons,
+                  scattering && (!spans.empty() || photons));
     Rgb te_total{0.0f}, od_total{0.0f};
     // Sample ids: each interval numbers the samples it may take (method 3: its S + 1
     // ends, then the midpoints each sub-interval's refinement may ask for).

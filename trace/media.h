@@ -13,6 +13,8 @@
 
 namespace povwall::trace {
 
+class PhotonMap;
+
 struct MediaEffect {
     Rgb mul{1.0f}, add{0.0f};
     float mul_transmit = 1;  // POV-Ray scales the transmit by the grey of mul
@@ -36,10 +38,21 @@ class MediaLightProbe {
 // of scattering media.
 struct MediaLights {
     std::span<const Light> lights;
+    // Light groups (POV-Ray's ComputeMediaLightInterval): a stretch is lit by the lights
+    // of the object it ends on, the global ones unless that object's group turned them
+    // off; a ray that hits nothing sees the global lights only (light_group 0).
+    bool global_lights = true;
+    uint32_t light_group = 0;
     MediaLightProbe* probe = nullptr;
     // Sample every position method 3's refinement might ask for (whatever the samples
     // say): how black boxes learn which shadow rays a stretch may need.
     bool every_sample = false;
+    // A photon in flight (POV-Ray's IsPhotonRay): the lights split it into intervals
+    // as a viewing ray, but its samples gather no scattered light.
+    bool photon = false;
+    // The media photon map (PhotonMap::media()): every sample of scattering media, lit
+    // or not, gathers the photons around it too.
+    const PhotonMap* media_photons = nullptr;
 };
 
 // The media `list` over [t0, t1] of `ray` (unit direction). A shadow ray gathers only
@@ -49,6 +62,35 @@ struct MediaLights {
 MediaEffect media_effect(std::span<const Media* const> list, const Ray& ray, Real t0,
                          Real t1, bool shadow, const PatternEnv& env,
                          const MediaLights* lights = nullptr);
+
+// A photon crossing media in the photon pass that stores media photons (POV-Ray's
+// ComputeMediaAndDepositPhotons): where each sample interval is sampled and what is
+// stored there.
+class MediaPhotonSink {
+  public:
+    // The photons' spacing at unit distance from the light (POV-Ray's photonSpread),
+    // the distance the photon has come before this stretch, the spacing factor and the
+    // most steps per interval (`media steps, factor`), the jitter of the steps.
+    double spread_at_unit = 0, travelled = 0, spacing_factor = 1;
+    int max_steps = 0;
+    float step_jitter = 0;
+    virtual Real draw() = 0;  // uniform in [0, 1): a step's jitter
+    // A media photon at `at`, `along` the stretch, with `colour` (before the light's
+    // fade and the spread's scaling).
+    virtual void store(const Point3& at, Real along, const Rgb& colour) = 0;
+
+  protected:
+    ~MediaPhotonSink() = default;
+};
+
+// The media `list` over [0, t1] of a photon `ray` with `colour`, storing media photons
+// into `sink` (only where the media scatter and some media collects them), evenly
+// spaced and jittered along each sample interval; returns the photon's colour
+// afterwards, dimmed by the extinction of those samples (no emission: POV-Ray's method
+// 2 on the stored steps). POV-Ray leaves media without absorption or scattering alone.
+Rgb deposit_media_photons(std::span<const Media* const> list, const Ray& ray, Real t1,
+                          const MediaLights& lights, const PatternEnv& env,
+                          const Rgb& colour, MediaPhotonSink& sink);
 
 // Whether any media of `list` dims what lies behind it (a shadow ray then needs it).
 bool media_has_extinction(std::span<const Media* const> list);

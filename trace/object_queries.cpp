@@ -19,9 +19,9 @@ class ShapeQueries final : public ObjectQueries {
         Prepared& p = prepared(object);
         const Ray ray{origin, direction};
         trace::Hit hit;
-        // Find_Intersection sees every object: no no_image, no_reflection or no_shadow.
-        if (!p.prepared->closest_hit(ray, 0, kInfinity, RayUse::Refraction, hit,
-                                     p.context))
+        // Find_Intersection tests no flag of the object itself; its CSG nodes test their
+        // children's as for a camera ray (trace() makes a primary ray).
+        if (!p.prepared->closest_hit(ray, 0, kInfinity, RayUse::Query, hit, p.context))
             return std::nullopt;
         return Hit{hit.point, hit.normal};
     }

@@ -67,10 +67,12 @@ Real bounds_entry(const Object& o, const Ray& ray, Real t_min) {
 }
 
 // An object the oracle cannot evaluate only makes the ray unsupported if the ray reaches
-// its bounds before the oracle's first hit.
+// its bounds before the oracle's first hit. `frame`: o is one of POV-Ray's frame objects,
+// whose no_image a camera ray tests (a union it keeps whole does not test its
+// children's on camera rays, ray_use.h).
 void object_first(const Object& o, const Ray& ray, Real t_min, OracleHit& out,
-                  Real& unsupported_from) {
-    if (o.no_image) return;
+                  Real& unsupported_from, bool frame = true) {
+    if (frame && o.no_image) return;
     auto give_up = [&] {
         unsupported_from = std::min(unsupported_from, bounds_entry(o, ray, t_min));
     };
@@ -80,7 +82,8 @@ void object_first(const Object& o, const Ray& ray, Real t_min, OracleHit& out,
             return;
         }
         for (const Object& c : csg->children)
-            object_first(c, ray, t_min, out, unsupported_from);
+            object_first(c, ray, t_min, out, unsupported_from,
+                         frame && pov_splits_union(o));
         return;
     }
     if (o.inverse || !o.clipped_by->empty()) {
@@ -107,32 +110,15 @@ void object_first(const Object& o, const Ray& ray, Real t_min, OracleHit& out,
 }  // namespace
 
 std::string shape_kind_name(const Object& leaf) {
-    static const char* names[] = {"sphere",
-                                  "box",
-                                  "plane",
-                                  "cylinder",
-                                  "cone",
-                                  "torus",
-                                  "disc",
-                                  "triangle",
-                                  "smooth_triangle",
-                                  "polygon",
-                                  "mesh",
-                                  "superellipsoid",
-                                  "ovus",
-                                  "sor",
-                                  "lathe",
-                                  "prism",
-                                  "bicubic_patch",
-                                  "julia_fractal",
-                                  "glyph",
-                                  "height_field",
-                                  "sphere_sweep",
-                                  "poly",
-                                  "quadric",
-                                  "blob",
-                                  "isosurface",
-                                  "csg"};
+    static const char* names[] = {"sphere",     "box",           "plane",
+                                  "cylinder",   "cone",          "torus",
+                                  "disc",       "triangle",      "smooth_triangle",
+                                  "polygon",    "mesh",          "superellipsoid",
+                                  "ovus",       "sor",           "lathe",
+                                  "prism",      "bicubic_patch", "julia_fractal",
+                                  "glyph",      "height_field",  "sphere_sweep",
+                                  "poly",       "quadric",       "blob",
+                                  "isosurface", "parametric",    "csg"};
     static_assert(std::variant_size_v<ShapeData> == std::size(names),
                   "one name per shape alternative");
     return names[leaf.shape.index()];

@@ -148,7 +148,9 @@ Vector3 perturb_normal(const Normal& normal, const Point3& world,
     } else if (has_dedicated_normal(spec.kind)) {
         displace(normal, p, n, env);
     } else {
-        Real accuracy = normal.accuracy > 0 ? normal.accuracy : 0.02;
+        // POV-Ray keeps the accuracy (its default 0.02 too) in single precision.
+        const Real accuracy =
+            Real(static_cast<float>(normal.accuracy > 0 ? normal.accuracy : 0.02));
         Real amount = normal.amount * -5.0 * (0.02 / accuracy);
         for (const Vector3& dir : kPyramid) {
             Real v =

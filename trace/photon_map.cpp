@@ -8,6 +8,7 @@
 #include <queue>
 #include <unordered_set>
 
+#include "trace/media.h"
 #include "trace/prepared_scene.h"
 #include "trace/shading.h"
 
@@ -97,27 +98,39 @@ struct Target {
 };
 
 // One light shooting at one target (POV-Ray's LightTargetCombo and ShootingDirection).
-class Shooter {
+class Shooter final : public MediaPhotonSink {
   public:
     Shooter(const PreparedScene& scene, const PhotonSettings& settings, int max_level,
             float adc, const std::vector<Material>& light_interiors_materials,
-            std::vector<Photon>& out)
+            std::vector<Photon>& out, std::vector<Photon>& media_out)
         : scene_(scene),
           settings_(settings),
           max_level_(max_level),
           adc_(adc),
           stand_ins_(light_interiors_materials),
-          out_(out) {
+          out_(out),
+          media_out_(media_out) {
         scene.init_context(ctx_);
+        spacing_factor = settings.media_spacing_factor;
+        max_steps = settings.media_steps;
+        step_jitter = settings.jitter;
     }
 
     void shoot(const Light& light, size_t light_index, const Target& target,
                size_t target_index, const std::vector<const Object*>& frames);
     uint64_t shot() const { return shot_; }
 
+    // MediaPhotonSink: the jitter of the media steps, from one running count (the pass
+    // runs on one thread, in the same order in every process).
+    Real draw() override { return hashed_unit(media_draws_++, 0, 0, 5); }
+    void store(const Point3& at, Real along, const Rgb& colour) override {
+        deposit(media_out_, at, media_from_, colour, travelled + along);
+    }
+
   private:
     void trace(const TraceRay& ray, Rgb colour, int level, bool prev_pass, double depth);
-    void deposit(const Point3& at, const Point3& from, const Rgb& colour, double depth);
+    void deposit(std::vector<Photon>& into, const Point3& at, const Point3& from,
+                 const Rgb& colour, double depth);
 
     const PreparedScene& scene_;
     const PhotonSettings& settings_;
@@ -125,6 +138,9 @@ class Shooter {
     float adc_;
     const std::vector<Material>& stand_ins_;
     std::vector<Photon>& out_;
+    std::vector<Photon>& media_out_;
+    Point3 media_from_;  // the origin of the ray storing media photons
+    uint64_t media_draws_ = 0;
     RayContext ctx_;
     const Light* light_ = nullptr;
     const Target* target_ = nullptr;
@@ -160,6 +176,7 @@ void Shooter::shoot(const Light& light, size_t light_index, const Target& target
         std::fabs(std::fabs(toctr.z) - 1) < 0.1 ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
     Vector3 left = normalize(cross(toctr, up));
     spread_ = ph.spacing_multiplier * settings_.spacing / dist;
+    spread_at_unit = spread_;
     const double dtheta = std::atan(spread_);
     if (spread_ <= 0) return;
     double maxtheta;
@@ -219,7 +236,7 @@ void Shooter::shoot(const Light& light, size_t light_index, const Target& target
             if (attenuation < 0.00001) continue;
             TraceRay ray;
             ray.ray = {light.location, normalize(dir)};
-            ray.use = RayUse::Camera;
+            ray.use = RayUse::Photon;
             ray.interiors = start;
             ++shot_;
             trace(ray, light.colour * float(attenuation), 0, false, 0);
@@ -254,7 +271,16 @@ void Shooter::trace(const TraceRay& ray, Rgb colour, int level, bool prev_pass,
             pass = true;
         }
     }
-    // The interior's `refraction` and, inside it, its fade dim the photon first.
+    // The media it crossed act on the photon first (their glow adds to it, or it
+    // stores media photons along them), then the interior's `refraction` and, inside
+    // it, its fade dim it.
+    const bool store_in_media = settings_.media_steps > 0 && level > 1 && !prev_pass;
+    if (store_in_media) {
+        travelled = depth;
+        media_from_ = ray.ray.origin;
+    }
+    colour = photon_through_media(scene_, ray, hit.t, {m.global_lights, m.light_group},
+                                  colour, store_in_media ? this : nullptr);
     const Rgb arriving = colour;
     Rgb att(m.interior ? m.interior->old_refract : 1.0f);
     if (m.interior && ray.interiors.contains(m.interior_id))
@@ -262,7 +288,7 @@ void Shooter::trace(const TraceRay& ray, Rgb colour, int level, bool prev_pass,
     colour *= att;
     depth += hit.t;
     if (level > 1 && !prev_pass && ph.collect && m.global_lights)
-        deposit(hit.point, ray.ray.origin, colour, depth);
+        deposit(out_, hit.point, ray.ray.origin, colour, depth);
     if (pass) {
         // Straight through, unfiltered, entering or leaving the object.
         TraceRay next = ray;
@@ -301,8 +327,8 @@ void Shooter::trace(const TraceRay& ray, Rgb colour, int level, bool prev_pass,
 
 // POV-Ray's addSurfacePhoton: the flux a photon of this spread carries to this depth
 // (lights do not dim with distance, so the photon's share grows with the square of it).
-void Shooter::deposit(const Point3& at, const Point3& from, const Rgb& colour,
-                      double depth) {
+void Shooter::deposit(std::vector<Photon>& into, const Point3& at, const Point3& from,
+                      const Rgb& colour, double depth) {
     const Light& l = *light_;
     double attenuation = 1;
     if (l.fade_power > 0 && std::fabs(l.fade_distance) > kEpsilon)
@@ -314,7 +340,7 @@ void Shooter::deposit(const Point3& at, const Point3& from, const Rgb& colour,
     ph.pos[1] = float(at.y);
     ph.pos[2] = float(at.z);
     encode_direction(normalize(from - at), ph);
-    out_.push_back(ph);
+    into.push_back(ph);
 }
 
 // POV-Ray's PhotonEstimationTask: the spacing `count` asks for.
@@ -428,10 +454,10 @@ double PhotonMap::nearest(const Point3& p, const Vector3* n, double radius,
     return overflowed ? std::sqrt(dmax) : radius;
 }
 
-double PhotonMap::gather(const Point3& p, const Vector3& n,
+double PhotonMap::gather(const Point3& p, const Vector3* n,
                          std::vector<const Photon*>& out) const {
     double size = min_radius_;
-    double radius = nearest(p, &n, size, out);
+    double radius = nearest(p, n, size, out);
     size_t num = out.size();
     double prev_density = double(num) / (radius * radius);
     if (prev_density == 0) prev_density = 1e-16;
@@ -439,7 +465,7 @@ double PhotonMap::gather(const Point3& p, const Vector3& n,
     if (int(num) < settings_.gather_min) {
         thread_local std::vector<const Photon*> wider;
         size += radius_step_;
-        const double r2 = nearest(p, &n, size, wider);
+        const double r2 = nearest(p, n, size, wider);
         const size_t n2 = wider.size();
         const double density = double(n2) / (r2 * r2);
         if ((density - prev_density) / prev_density < settings_.expand_tolerance ||
@@ -451,10 +477,16 @@ double PhotonMap::gather(const Point3& p, const Vector3& n,
     return radius;
 }
 
-// POV-Ray's setGatherOptions for a surface map: the radius holding gather_max photons at
-// the average density of sampled photons, widened where many samples are sparse.
-void PhotonMap::estimate_gather_radius() {
-    double r = settings_.radius;
+// POV-Ray's setGatherOptions: the radius holding gather_max photons at the average
+// density of sampled photons (per area on surfaces, per volume in media), widened where
+// many samples are sparse; a media map's is doubled.
+void PhotonMap::estimate_gather_radius(double radius, double multiplier, bool media) {
+    // POV-Ray's density of n photons within r (the media's with its 0.3333 for 1/3).
+    auto density_of = [media](size_t n, double r) {
+        return media ? 3.0 * double(n) / (4.0 * kPi * r * r * r)
+                     : double(n) / (kPi * r * r);
+    };
+    double r = radius;
     if (r <= 0) {
         const size_t count = photons_.size();
         size_t samples = std::clamp<size_t>(count / 20, 100, 1000);
@@ -464,25 +496,27 @@ void PhotonMap::estimate_gather_radius() {
             const Photon& ph = photons_[size_t(hashed_unit(i, 7, 0, 3) * double(count))];
             const Point3 at{ph.pos[0], ph.pos[1], ph.pos[2]};
             const double rr = nearest(at, nullptr, 10000000.0, found);
-            const double density = rr > 0 ? double(found.size()) / (kPi * rr * rr)
-                                          : (i > 0 ? sum / double(i) : 0);
+            const double density =
+                rr > 0 ? density_of(found.size(), rr) : (i > 0 ? sum / double(i) : 0);
             sum += density;
         }
         const double average = sum / double(samples);
-        r = std::sqrt(settings_.gather_max / (average * kPi));
+        r = media ? std::pow(3.0 * settings_.gather_max / (average * kPi * 4.0), 0.3333)
+                  : std::sqrt(settings_.gather_max / (average * kPi));
         size_t sparse = 0;
         for (size_t i = 0; i < samples; ++i) {
             const Photon& ph = photons_[size_t(hashed_unit(i, 7, 1, 3) * double(count))];
             const Point3 at{ph.pos[0], ph.pos[1], ph.pos[2]};
             const double rr = nearest(at, nullptr, r, found);
             if (rr > 0) {
-                const double density = double(found.size()) / (kPi * rr * rr);
+                const double density = density_of(found.size(), rr);
                 if (density < average * 0.7 && density > average * 0.05) ++sparse;
             }
         }
         r *= 1.0 + 20.0 * (double(sparse) / double(samples));
     }
-    min_radius_ = r * settings_.radius_multiplier;
+    min_radius_ = r * multiplier;
+    if (media) min_radius_ *= 2;
     radius_step_ = min_radius_ * 2;
 }
 
@@ -513,21 +547,34 @@ std::shared_ptr<const PhotonMap> build_photon_map(const PreparedScene& scene) {
     std::vector<Material> stand_ins;
     stand_ins.reserve(frames.size());
     for (const Object* f : frames) stand_ins.push_back(material_of(*f, f->texture));
-    Shooter shooter(scene, s, max_level, adc, stand_ins, map->photons_);
+    std::vector<Photon> media_photons;
+    Shooter shooter(scene, s, max_level, adc, stand_ins, map->photons_, media_photons);
     for (size_t l = 0; l < sc.lights.size(); ++l) {
         const Light& light = sc.lights[l];
         if (light.light_group != 0 || targets.empty()) continue;
         for (size_t t = 0; t < targets.size(); ++t)
             shooter.shoot(light, l, targets[t], t, frames);
     }
-    if (map->photons_.empty()) return map;
-    map->build_tree(0, map->photons_.size());
-    map->estimate_gather_radius();
+    if (!media_photons.empty()) {
+        map->media_ = std::make_shared<PhotonMap>();
+        PhotonMap& media = *map->media_;
+        media.settings_ = s;
+        media.photons_ = std::move(media_photons);
+        media.build_tree(0, media.photons_.size());
+        media.estimate_gather_radius(s.media_radius, s.media_radius_multiplier, true);
+    }
+    if (!map->photons_.empty()) {
+        map->build_tree(0, map->photons_.size());
+        map->estimate_gather_radius(s.radius, s.radius_multiplier, false);
+    }
     // POVWALL_PHOTON_STATS=1: what the pass made (to set beside POV-Ray's statistics).
     if (std::getenv("POVWALL_PHOTON_STATS"))
-        std::fprintf(stderr, "photons: %zu stored, %llu shot, gather radius %g\n",
-                     map->photons_.size(), (unsigned long long)shooter.shot(),
-                     map->min_radius_);
+        std::fprintf(stderr,
+                     "photons: %zu stored, %zu in media, %llu shot, gather radius %g, "
+                     "media %g\n",
+                     map->photons_.size(), map->media_ ? map->media_->size() : size_t(0),
+                     (unsigned long long)shooter.shot(), map->min_radius_,
+                     map->media_ ? map->media_->min_radius_ : 0.0);
     return map;
 }
 

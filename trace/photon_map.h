@@ -32,14 +32,18 @@ struct Photon {
 class PhotonMap {
   public:
     size_t size() const { return photons_.size(); }
+    // The media map (POV-Ray's mediaPhotonMap: photons stored along the media intervals
+    // photons cross, gathered at the samples of scattering media); null without
+    // `media` in the photons block.
+    const PhotonMap* media() const { return media_.get(); }
     // The gather radius the map starts with (POV-Ray's minGatherRad, times the radius
     // multiplier).
     double min_gather_radius() const { return min_radius_; }
     // POV-Ray's adaptive gather at `p` with surface normal `n`: up to gather_max photons
-    // within the start radius (distances flattened along `n`), expanded once when fewer
-    // than gather_min are found and the density holds. Returns the radius the estimate
-    // divides by; `out` gets the photons.
-    double gather(const Point3& p, const Vector3& n,
+    // within the start radius (distances flattened along `n`; a media map has no
+    // normal), expanded once when fewer than gather_min are found and the density
+    // holds. Returns the radius the estimate divides by; `out` gets the photons.
+    double gather(const Point3& p, const Vector3* n,
                   std::vector<const Photon*>& out) const;
 
     // The flux and the unit direction toward where the photon came from.
@@ -55,16 +59,19 @@ class PhotonMap {
     double nearest(const Point3& p, const Vector3* n, double radius,
                    std::vector<const Photon*>& out) const;
     void build_tree(size_t lo, size_t hi);
-    void estimate_gather_radius();
+    // POV-Ray's setGatherOptions: `radius` and `multiplier` as the settings give them
+    // (the surface's or the media's); a media map counts density per volume.
+    void estimate_gather_radius(double radius, double multiplier, bool media);
 
     PhotonSettings settings_;
     std::vector<Photon> photons_;  // a balanced kd-tree: each range's middle is its node
     double min_radius_ = 0, radius_step_ = 0;
+    std::shared_ptr<PhotonMap> media_;
 };
 
 // The map for `scene` when its scene has photons and the quality level renders them
-// (+Q9); null otherwise. Stops with a located `unsupported:` for what the map does not do
-// yet (photons in media, parallel and cylinder lights).
+// (+Q9); null otherwise. (The parser refuses what the map does not do yet: media
+// photons, parallel and cylinder lights.)
 std::shared_ptr<const PhotonMap> build_photon_map(const PreparedScene& scene);
 
 // Whether `leaf` (hit by a shadow ray toward `light`) makes caustics with photons: a

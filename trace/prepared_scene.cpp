@@ -134,9 +134,12 @@ bool inside_clips(const Object& o, const Point3& p) {
 }
 
 // `wanted`: the world distances the caller keeps the nearest crossing of, when it uses
-// no other (a leaf outside CSG may then leave out the crossings beyond).
+// no other (a leaf outside CSG may then leave out the crossings beyond). `flags`: the
+// ray's, for the children a CSG leaves out (csg_skips(); null: none left out);
+// `inverted`: whether o's CSG ancestors were inverted an odd number of times.
 void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out,
-                      bool csg_child = false, const WantedRange* wanted = nullptr);
+                      bool csg_child = false, const WantedRange* wanted = nullptr,
+                      const RayFlags* flags = nullptr, bool inverted = false);
 
 // POV-Ray's Ray_In_Bound: the ray passes when, for every bounding object, it meets it
 // somewhere ahead (MIN_ISECT_DEPTH on, as Find_Intersection; the bound's own bounds and
@@ -156,9 +159,17 @@ bool ray_in_bound(const std::vector<Object>& bound, const Ray& ray) {
 }
 
 void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out,
-                      bool csg_child, const WantedRange* wanted) {
+                      bool csg_child, const WantedRange* wanted, const RayFlags* flags,
+                      bool inverted) {
     size_t start = out.size();
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
+        // The children this ray does not see: neither their crossings nor (in a merge)
+        // their insides count.
+        inverted = inverted != o.inverse;
+        const PovCsg pov = pov_csg(csg->kind, inverted);
+        auto skipped = [&](size_t i) {
+            return flags && csg_skips(pov, csg->children[i], *flags);
+        };
         // In POV-Ray's push order: a plain union pushes its children's intersections as
         // they come; every other CSG collects each child's on a stack of its own and
         // moves them over from the top, reversing them (csg.cpp All_Intersections).
@@ -170,15 +181,16 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             // A child's bound is never removed: a ray outside it skips the child (its
             // inside still counts for the others' crossings).
             const Object& child = csg->children[i];
+            if (skipped(i)) continue;
             if (!child.bounded_by->empty() && !ray_in_bound(*child.bounded_by, ray))
                 continue;
-            object_crossings(child, ray, tmp, true);
+            object_crossings(child, ray, tmp, true, nullptr, flags, inverted);
             if (reversed) std::reverse(tmp.begin(), tmp.end());
             for (WorldCrossing c : tmp) {
                 Point3 p = c.at(ray);
                 bool keep = true;
                 for (size_t j = 0; j < csg->children.size() && keep; ++j) {
-                    if (j == i) continue;
+                    if (j == i || skipped(j)) continue;
                     bool in = inside_object(csg->children[j], p);
                     switch (csg->kind) {
                         case CsgKind::Union:
@@ -190,12 +202,16 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
                             keep = in;
                             break;
                         case CsgKind::Difference:
-                            keep = (j == 0) ? in : !in;
+                            keep = (j == 0 || !difference_inverts(csg->children[j]))
+                                       ? in
+                                       : !in;
                             break;
                     }
                 }
                 if (!keep) continue;
-                if (csg->kind == CsgKind::Difference && i > 0) c.flip = !c.flip;
+                if (csg->kind == CsgKind::Difference && i > 0 &&
+                    difference_inverts(child))
+                    c.flip = !c.flip;
                 out.push_back(c);
             }
         }
@@ -291,7 +307,8 @@ bool inside_object(const Object& o, const Point3& p) {
             case CsgKind::Difference:
                 in = !csg->children.empty() && inside_object(csg->children[0], p);
                 for (size_t i = 1; i < csg->children.size() && in; ++i) {
-                    in = !inside_object(csg->children[i], p);
+                    const Object& c = csg->children[i];
+                    in = inside_object(c, p) != difference_inverts(c);
                 }
                 break;
         }
@@ -380,17 +397,24 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
                            : ~0u);
     }
     // A light's looks_like object is visible but casts no shadow (it would block its
-    // light).
-    const size_t first_looks_like = materials_.size();
+    // light). POV-Ray links the light to the scene, whole (a union it looks like is not
+    // split), with no_shadow alone; its bounding-slab tree holds the object in the
+    // light's place, so there the object's own flags are tested.
+    const bool slab_tree = options_.pov_bounding_threshold != kPovBoundingOff &&
+                           pov_frame_objects(scene) >= options_.pov_bounding_threshold;
     for (size_t l = 0; l < scene.lights.size(); ++l) {
         bool first = true;
         for (const Object& o : scene.lights[l].looks_like) {
-            add_object(o, frames_known && first ? frames.of_light[l] : ~0u);
+            const size_t first_material = materials_.size();
+            add_frame_object(o, frames_known && first ? frames.of_light[l] : ~0u);
+            const FrameFlags flags{true, slab_tree && o.no_image,
+                                   slab_tree && o.no_reflection,
+                                   slab_tree && o.no_radiosity};
+            for (size_t i = first_material; i < materials_.size(); ++i)
+                materials_[i].frame = flags;
             first = false;
         }
     }
-    for (size_t i = first_looks_like; i < materials_.size(); ++i)
-        materials_[i].no_shadow = true;
     std::sort(leaf_materials_.begin(), leaf_materials_.end());
     octree::BuildInput input;
     std::vector<uint32_t> bounded_ids;
@@ -500,10 +524,8 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     lanes_.build(tree_.ids(), spheres_.data(), sphere_count_);
     hides_ = {};
     for (const Material& m : materials_) {
-        hides_[size_t(RayUse::Camera)] |= m.no_image;
-        hides_[size_t(RayUse::Reflection)] |= m.no_reflection;
-        hides_[size_t(RayUse::Shadow)] |= m.no_shadow;
-        hides_[size_t(RayUse::Radiosity)] |= m.no_radiosity;
+        for (size_t u = 0; u < kRayUses; ++u)
+            hides_[u] = hides_[u] || frame_hides(m.frame, ray_flags(RayUse(u)));
     }
     // A box's resident scene is what it keeps: drop the growth slack of push_back.
     spheres_.shrink_to_fit();
@@ -534,10 +556,7 @@ Material material_of(const Object& o, const LayeredTexture& texture) {
     m.interior = o.interior ? &*o.interior : nullptr;
     m.object = &o;
     m.interior_id = interior_key(o);
-    m.no_shadow = o.no_shadow;
-    m.no_image = o.no_image;
-    m.no_reflection = o.no_reflection;
-    m.no_radiosity = o.no_radiosity;
+    m.frame = FrameFlags{o.no_shadow, o.no_image, o.no_reflection, o.no_radiosity};
     m.radiosity_importance = o.radiosity_importance;
     m.double_illuminate = o.double_illuminate;
     m.uv_mapping = o.uv_mapping;
@@ -652,7 +671,9 @@ int blob_texture_weights(const BlobTextureBlend& b, const Point3& world, float m
     w.clear();
     // POV-Ray's weights are single-precision colour values, summed and scaled so.
     float sum = 0;
-    for (size_t i = 0; i < blob.data->elements.size(); ++i) {
+    thread_local std::vector<uint32_t> near;
+    blob_elements_at(*blob.data, q, near);
+    for (const uint32_t i : near) {
         const Real d = std::fabs(blob_element_field(blob.data->elements[i], q));
         if (!(d > 0.0)) continue;
         materials.push_back(b.elements[i]);
@@ -698,6 +719,14 @@ void PreparedScene::add_object(const Object& o, uint32_t frame) {
         }
         return;
     }
+    const size_t first = materials_.size();
+    add_frame_object(o, frame);
+    const FrameFlags flags = frame_flags(o);
+    for (size_t i = first; i < materials_.size(); ++i) materials_[i].frame = flags;
+}
+
+void PreparedScene::add_frame_object(const Object& o, uint32_t frame) {
+    const Csg* csg = std::get_if<Csg>(&o.shape);
     if (frame != kSameFrame) {
         adding_frame_ = frame;
     }
@@ -887,7 +916,8 @@ inline size_t leading_spheres(const uint32_t* ids, size_t n, uint32_t sphere_cou
 
 bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, const PovRayOnce& pov_ray,
                                    Real t_min, Real t_max, Hit& hit, Real tie_tolerance,
-                                   bool* tie, bool material_only) const {
+                                   bool* tie, bool material_only,
+                                   const RayFlags* flags) const {
     const Real lo = std::max(t_min, kMinIsectDepth);
     switch (kind_[id]) {
         case PrimKind::Sphere: {
@@ -964,7 +994,7 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, const PovRayOnce
             thread_local std::vector<WorldCrossing> crossings;
             crossings.clear();
             const WantedRange wanted{lo, t_max, material_only};
-            object_crossings(obj, ray, crossings, false, &wanted);
+            object_crossings(obj, ray, crossings, false, &wanted, flags);
             // The crossings are in the order POV-Ray pops them last (object_crossings):
             // of equal depths it keeps the last.
             const WorldCrossing* best = nullptr;
@@ -1041,19 +1071,17 @@ bool PreparedScene::pov_takes(const Material& candidate, const Material& nearest
 }
 
 bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use,
-                                Hit& hit, RayContext& ctx) const {
+                                Hit& hit, RayContext& ctx, bool radiosity_ray) const {
     bool found = false;
     const PovRayOnce pov_ray(ray);
     // Materials are only looked at when some object hides from this kind of ray or at a
     // tie: a sphere's candidate hit then costs no load of its (large) material.
-    const bool may_hide = hides_[size_t(use)];
+    RayFlags flags = ray_flags(use);
+    flags.radiosity = flags.radiosity || radiosity_ray;
+    const bool may_hide =
+        hides_[size_t(use)] || (flags.radiosity && hides_[size_t(RayUse::Radiosity)]);
     auto hidden = [&](uint32_t material) {
-        if (!may_hide) return false;
-        const Material& m = materials_[material];
-        return (use == RayUse::Camera && m.no_image) ||
-               (use == RayUse::Reflection && m.no_reflection) ||
-               (use == RayUse::Shadow && m.no_shadow) ||
-               (use == RayUse::Radiosity && m.no_radiosity);
+        return may_hide && frame_hides(materials_[material].frame, flags);
     };
     // Spheres: distance only; the nearest one's point and normal are computed once at the
     // end.
@@ -1109,7 +1137,7 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
         Hit h;
         bool inner_tie = false;
         if (!test_primitive(id, ray, pov_ray, t_min, reach, h, probe,
-                            probe > 0 ? &inner_tie : nullptr))
+                            probe > 0 ? &inner_tie : nullptr, false, &flags))
             return;
         const uint32_t m = uint32_t(h.material - materials_.data());
         if (hidden(m)) return;
@@ -1157,7 +1185,10 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
     const PovRayOnce pov_ray(ray);
     const Real lo = std::max(t_min, kMinIsectDepth);
     // 1: an opaque shadow caster; 0: none; -1: a see-through one.
-    auto caster = [](const Material& m) { return m.no_shadow ? 0 : m.opaque ? 1 : -1; };
+    // (Inside a CSG POV-Ray's shadow rays meet every child, no_shadow or not.)
+    auto caster = [](const Material& m) {
+        return m.frame.no_shadow ? 0 : m.opaque ? 1 : -1;
+    };
     auto meets = [&](uint32_t id) {
         ++ctx.tests;
         if (id < sphere_count_) {

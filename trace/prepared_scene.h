@@ -14,6 +14,7 @@
 #include "trace/pattern.h"
 #include "trace/pov_bounds.h"
 #include "trace/pov_order.h"
+#include "trace/ray_use.h"
 #include "trace/render_plan.h"
 #include "trace/sphere_lanes.h"
 
@@ -44,8 +45,10 @@ struct Material {
     const Interior* interior = nullptr;  // null: default interior (ior 1)
     const Object* object = nullptr;      // the leaf: its number on the wire
     uintptr_t interior_id = 0;           // interior_key(*object)
-    bool no_shadow = false, no_image = false, no_reflection = false;
-    bool no_radiosity = false;
+    // The flags of the frame object it is part of (ray_use.h): those decide whether a ray
+    // passes the whole object by. Inside a CSG each node tests its children's flags by
+    // its own rule (csg_skips()).
+    FrameFlags frame;
     float radiosity_importance = 0;  // Object::radiosity_importance (<= 0: the default)
     bool double_illuminate = false;
     // Object::uv_mapping: its patterns are evaluated at the hit's (u, v, 0).
@@ -132,11 +135,6 @@ struct TrianglePrim {
     // transforms from mesh space.
     bool mirrored = false;
 };
-
-// Kind of ray, for no_image / no_reflection / no_shadow.
-// Radiosity: a radiosity sample ray (trace/radiosity/), which no_radiosity objects let
-// by.
-enum class RayUse : uint8_t { Camera, Reflection, Refraction, Shadow, Radiosity };
 
 struct Hit {
     Real t = kInfinity;
@@ -227,9 +225,11 @@ class PreparedScene {
     }
 
     // Nearest hit with t in (t_min, t_max), never closer than MIN_ISECT_DEPTH (1e-4),
-    // respecting no_image / no_reflection / no_shadow.
+    // respecting no_image / no_reflection / no_shadow / no_radiosity as POV-Ray does for
+    // a ray of this use (ray_use.h). `radiosity_ray`: the ray is, or was spawned under, a
+    // radiosity sample ray (POV-Ray's radiosity flag, which its child rays keep).
     bool closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use, Hit& hit,
-                     RayContext& ctx) const;
+                     RayContext& ctx, bool radiosity_ray = false) const;
 
     // Shadow-ray fast path: true if an opaque, shadow-casting surface lies in (t_min,
     // t_max). Sets `transparent` when a see-through surface was met there (the caller
@@ -246,15 +246,20 @@ class PreparedScene {
     // first), ~0u when unknown, kSameFrame for a part of a frame object being added.
     static constexpr uint32_t kSameFrame = ~0u - 1;
     void add_object(const Object& obj, uint32_t frame);
+    // A frame object (one POV-Ray links to the scene whole): its primitives and
+    // materials, which take its flags.
+    void add_frame_object(const Object& obj, uint32_t frame);
     uint32_t add_material(const Object& obj);
     // `tie`, when given: set when the object's nearest crossing has a crossing of another
     // of its leaves within `tie_tolerance` (relative) of it (CSG objects only).
     // `material_only`: only whether the ray meets the primitive in [t_min, t_max) and
     // the hit's material are used (a shadow test): a leaf shape outside CSG may give
-    // any of its crossings there, and the normal is not computed.
+    // any of its crossings there, and the normal is not computed. `flags`: the ray's,
+    // for the CSG children it does not see (null: it sees all, as a shadow ray does).
     bool test_primitive(uint32_t id, const Ray& ray, const PovRayOnce& pov_ray,
                         Real t_min, Real t_max, Hit& hit, Real tie_tolerance = 0,
-                        bool* tie = nullptr, bool material_only = false) const;
+                        bool* tie = nullptr, bool material_only = false,
+                        const RayFlags* flags = nullptr) const;
     // On an exact tie in depth: whether POV-Ray would see `candidate`'s surface rather
     // than `nearest`'s (trace/pov_order.h).
     bool pov_takes(const Material& candidate, const Material& nearest,
@@ -311,8 +316,8 @@ class PreparedScene {
     std::shared_ptr<const PhotonMap> photons_;
     std::shared_ptr<const radiosity::RadiosityRender> radiosity_;
     std::vector<Material> materials_;  // reserved up front: pointers stay valid
-    // Per RayUse: whether any material hides from that kind of ray.
-    std::array<bool, 5> hides_{};
+    // Per RayUse: whether any frame object hides from that kind of ray.
+    std::array<bool, kRayUses> hides_{};
     std::vector<TextureBlend> blends_;  // the same
     std::deque<BlobTextureBlend> blob_blends_;
     // Per primitive id.

@@ -248,7 +248,7 @@ RenderPlan make_render_plan(const Scene& scene, bool everything_on, int quality)
     // never do). None, or one opaque flat surface that is the whole scene: no shadow ray
     // can be blocked.
     size_t casters = 0;
-    for (const Object& o : scene.objects) casters += o.no_shadow ? 0 : 1;
+    for (const Object& o : scene.objects) casters += frame_flags(o).no_shadow ? 0 : 1;
     size_t looks_like = 0;
     for (const Light& l : scene.lights) looks_like += l.looks_like.size();
     const bool lone_flat = scene.objects.size() == 1 && looks_like == 0 && casters == 1 &&

@@ -190,7 +190,8 @@ class FocalSamples final : public SampleSource {
           blur_(blur),
           settings_(settings),
           may_miss_(blur.camera().kind == Camera::Kind::Fisheye ||
-                    blur.camera().kind == Camera::Kind::Omnimax) {}
+                    blur.camera().kind == Camera::Kind::Omnimax ||
+                    blur.camera().kind == Camera::Kind::Mesh) {}
     bool sample(Real x, Real y, float* rgbt) override {
         const Key key{std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(y)};
         FocalProgress& progress = progress_[key];
@@ -237,9 +238,7 @@ class FocalSamples final : public SampleSource {
         auto it =
             progress_.find(Key{std::bit_cast<uint64_t>(x), std::bit_cast<uint64_t>(y)});
         if (it == progress_.end() || !it->second.finished) return nullptr;
-        const FocalProgress& p = it->second;
-        for (int ch = 0; ch < 4; ++ch)
-            rgbt[ch] = float(double(p.sum[ch]) / double(p.rays));
+        focal_mean(blur_, it->second, rgbt);
         return rgbt;
     }
     bool estimate(Real x, Real y, float* rgbt) const {

@@ -10,6 +10,7 @@
 #include "trace/media.h"
 #include "trace/photon_map.h"
 #include "trace/radiosity/gatherer.h"
+#include "trace/rainbow.h"
 #include "trace/shapes/shape.h"
 #include "trace/uv_mapping.h"
 
@@ -142,9 +143,11 @@ bool lights_material(const Light& light, const Material& m) {
 
 bool light_at(const Light& l, const Point3& p, LightSample& s) {
     if (l.kind == Light::Kind::Parallel) {
+        // The depth to the light is the distance to its plane, negative behind it
+        // (POV-Ray's ComputeOneWhiteLightRay): nothing blocks a point there, and it is
+        // lit from the light's side like any other.
         s.dir = normalize(l.location - l.point_at);
-        Real d = dot(l.location - p, s.dir);
-        s.distance = d > 0 ? d : kInfinity;
+        s.distance = dot(l.location - p, s.dir);
     } else {
         Vector3 v = l.location - p;
         s.distance = length(v);
@@ -184,11 +187,10 @@ bool light_at(const Light& l, const Point3& p, LightSample& s) {
         }
         if (att <= 0) return false;
     }
-    if (l.fade_power > 0 && att > 0 && s.distance < kInfinity) {
-        // POV-Ray's Attenuate_Light: without a fade_distance the power law applies alone.
-        att *= std::fabs(l.fade_distance) >= kPovEpsilon
-                   ? float(2 / (1 + std::pow(s.distance / l.fade_distance, l.fade_power)))
-                   : float(std::pow(s.distance, -l.fade_power));
+    if (l.fade_power > 0 && std::fabs(l.fade_distance) > kPovEpsilon && att > 0 &&
+        s.distance < kInfinity) {
+        // POV-Ray 3.7's Attenuate_Light: no fade without a fade_distance.
+        att *= float(2 / (1 + std::pow(s.distance / l.fade_distance, l.fade_power)));
     }
     s.colour = l.colour * att;
     return !s.colour.is_black();
@@ -217,6 +219,9 @@ ChildRay shadow_child(const TraceRay& from, const Point3& at, const LightSample&
     child.trace.use = RayUse::Shadow;
     child.t_max = s.distance;
     child.light = int(l);
+    // A parallel light's depth is negative behind its plane: a test over it finds
+    // nothing.
+    child.unoccluded = !(s.distance > 0);
     return child;
 }
 
@@ -315,7 +320,10 @@ namespace {
 void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                ShadingRecord& out, const MediaShadows& shadows, bool with_fog);
 FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
-                    const MediaShadows& shadows);
+                    MediaEndLights end, const MediaShadows& shadows);
+MediaEndLights media_end_lights(const Material& m) {
+    return {m.global_lights, m.light_group};
+}
 
 // Shades `hit` once with each of `n` stand-in materials and merges the records with
 // their weights (POV-Ray sums the weighted colours of the textures it finds for a hit);
@@ -489,6 +497,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                         staging.children.end());
     out.media_samples = staging.media_samples;
     out.media_depth = hit.t;
+    out.media_lights = media_end_lights(*hit.material);
 }
 
 namespace {
@@ -513,7 +522,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     }
     out.clear();
     const Quality quality = scene.plan().quality;
-    if (with_fog && quality.atmosphere()) out.fog = along_ray(scene, ray, hit.t, shadows);
+    if (with_fog && quality.atmosphere())
+        out.fog = along_ray(scene, ray, hit.t, media_end_lights(*hit.material), shadows);
     if (spawn_corner_blend(scene, ray, hit, out)) return;
     if (spawn_blob_blend(scene, ray, hit, out)) return;
     if (spawn_texture_map(scene, ray, hit, out)) return;
@@ -642,8 +652,9 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                 if (f.crand > 0) k -= crand_sample(P, index) * f.crand;
                 c += lay.rgb * float(k);
             }
-            // No highlights at a radiosity sample ray's hit (POV-Ray).
-            if (!shadowless && !backside && ray.use != RayUse::Radiosity) {
+            // No highlights under a radiosity sample ray (POV-Ray's radiosity flag, which
+            // the rays it spawns keep).
+            if (!shadowless && !backside && ray.radiosity_depth == 0) {
                 if (f.phong > 0) {
                     Vector3 R = D - Nl * (2 * dot(D, Nl));
                     Real cc = dot(R, dir);
@@ -675,7 +686,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     // media_attenuation: fog dims the light along its way (no fog colour
                     // is added to light, as for POV-Ray's shadow test rays).
                     if (sample_ok[l] && light.media_attenuation && !sc.fogs.empty() &&
-                        quality.atmosphere() && samples[l].distance < kInfinity) {
+                        quality.atmosphere() && samples[l].distance > 0 &&
+                        samples[l].distance < kInfinity) {
                         LightSample& ls = samples[l];
                         ls.colour *= fog_effect(sc, {P, ls.dir}, ls.distance).mul;
                     }
@@ -693,7 +705,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         if (photons &&
             (f.diffuse != 0 || f.diffuse_back != 0 || f.phong != 0 || f.specular != 0)) {
             if (!gathered) {
-                photon_radius = photons->gather(P, Nl, found_photons);
+                photon_radius = photons->gather(P, &Nl, found_photons);
                 gathered = true;
             }
             Rgb sum;
@@ -755,7 +767,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
             child.trace.ray = {P, R};
             child.trace.depth = ray.depth + 1;
             child.trace.weight = reflection_weight;
-            child.trace.use = RayUse::Reflection;
+            child.trace.use = reflected_use(ray.use);
             child.trace.interiors = ray.interiors;
             child.coeff = reflectivity;
             child.exponent = f.reflection_exponent;
@@ -791,21 +803,23 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         child.area = light.area.has_value();
         child.light_colour = s.colour;
         // Below +Q4 nothing blocks a light; below +Q5 an area light is its centre.
-        child.unoccluded =
-            (l < plan.lights.size() && plan.lights[l].unoccluded) || !quality.shadows();
+        child.unoccluded = child.unoccluded ||
+                           (l < plan.lights.size() && plan.lights[l].unoccluded) ||
+                           !quality.shadows();
         child.area = child.area && quality.area_lights();
         out.children.push_back(child);
     }
 
-    // What shows through the surface: straight on when the IOR does not change (no trace
-    // level used, POV-Ray 3.7), refracted otherwise.
+    // What shows through the surface: straight on when the IOR does not change (a
+    // continued ray: no trace level used, though met at the last one), refracted
+    // otherwise.
     if (trans > adc && quality.refraction()) {
         ChildRay child;
         child.kind = ChildRay::Kind::Transmission;
         child.coeff = fil;
         child.transmit_factor = trans;
         child.trace.interiors = ray.interiors;
-        child.trace.use = RayUse::Refraction;
+        child.trace.use = transmitted_use(ray.use);
         child.trace.weight =
             ray.weight * max3(Rgb(std::fabs(fil.r), std::fabs(fil.g), std::fabs(fil.b)));
         // The interior list, POV-Ray's rules (ComputeRefraction): entering from outside
@@ -836,6 +850,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         if (std::fabs(eta - 1) < kPovEpsilon) {
             child.trace.ray = {P, D};
             child.trace.depth = ray.depth;
+            child.trace.continued = true;
         } else {
             // Bent about the top layer's normal turned to face the ray (a perturbed
             // normal may point away from it).
@@ -855,7 +870,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                 child.kind = ChildRay::Kind::Reflection;
                 child.internal_reflection = true;
                 child.trace.ray = {P, R};
-                child.trace.use = RayUse::Reflection;
+                child.trace.use = reflected_use(ray.use);
                 child.trace.interiors = ray.interiors;
                 child.coeff = att;
                 child.transmit_factor = 0;
@@ -913,6 +928,12 @@ FogEffect then(const FogEffect& before, const FogEffect& after) {
 
 FogEffect as_fog_effect(const MediaEffect& m) {
     return {m.add, m.mul, 0.0f, m.mul_transmit};
+}
+
+FogEffect rainbows(const PreparedScene& scene, const Ray& ray, Real depth) {
+    const RainbowEffect r =
+        rainbow_effect(scene.scene(), ray, depth, scene.pattern_env());
+    return {r.add, r.mul, 0.0f, r.mul_transmit};
 }
 
 // Media and fog fill only "hollow" space: not the inside of a solid (non-hollow) object.
@@ -979,8 +1000,12 @@ bool operator<(const MediaSampleKey& a, const MediaSampleKey& b) {
 class SampleLight final : public MediaLightProbe {
   public:
     SampleLight(const PreparedScene& scene, const TraceRay& ray,
-                const MediaShadows& shadows, uint8_t list)
-        : scene_(scene), ray_(ray), shadows_(shadows), list_(list) {}
+                const MediaShadows& shadows, uint8_t list, bool photon_caustics)
+        : scene_(scene),
+          ray_(ray),
+          shadows_(shadows),
+          list_(list),
+          photon_caustics_(photon_caustics) {}
     Rgb arriving(size_t l, const Point3& at, Vector3& to_light,
                  uint64_t sample) override {
         const Scene& sc = scene_.scene();
@@ -990,10 +1015,12 @@ class SampleLight final : public MediaLightProbe {
         to_light = s.dir;
         const Quality quality = scene_.plan().quality;
         // As for a lit surface: fog dims a light with media_attenuation.
-        if (light.media_attenuation && !sc.fogs.empty() && s.distance < kInfinity)
+        if (light.media_attenuation && !sc.fogs.empty() && s.distance > 0 &&
+            s.distance < kInfinity)
             s.colour *= fog_effect(sc, {at, s.dir}, s.distance).mul;
         if (!quality.shadows()) return s.colour;
         ChildRay child = shadow_child(ray_, at, s, l);
+        child.photon_caustics = photon_caustics_;
         child.area = light.area.has_value() && quality.area_lights();
         child.light_colour = s.colour;
         child.coeff = Rgb{0.0f};  // counts through the media effect only
@@ -1030,44 +1057,56 @@ class SampleLight final : public MediaLightProbe {
     const TraceRay& ray_;
     const MediaShadows& shadows_;
     uint8_t list_;
+    bool photon_caustics_;
 };
 
 // The media of `list` (0: the interiors', 1: the atmosphere's) along a viewing ray up
 // to `depth`, lit by the scene's lights.
 FogEffect viewing_media(const PreparedScene& scene, std::span<const Media* const> list,
                         uint8_t which, const TraceRay& ray, Real depth,
-                        const MediaShadows& shadows) {
+                        MediaEndLights end, const MediaShadows& shadows) {
     if (shadows.collect) {
         // Its value comes from replay_media() once the shadow rays are in.
         for (const Media* m : list)
             if (m->scatters()) shadows.collect->media_replay = true;
     }
-    SampleLight probe(scene, ray, shadows, which);
-    MediaLights lights{scene.scene().lights, &probe, shadows.collect != nullptr};
+    // POV-Ray's litObjectIgnoresPhotons for a media sample: unless every media ignores
+    // photons (`collect off`), a blocker that refracts the light's photons shadows it
+    // fully (the photons bring that light), as for a lit surface.
+    bool collects = false;
+    for (const Media* m : list) collects = collects || m->collect;
+    const PhotonMap* photons = scene.photons();
+    SampleLight probe(scene, ray, shadows, which,
+                      collects && photons && photons->size() > 0);
+    MediaLights lights{scene.scene().lights, end.global_lights, end.light_group, &probe,
+                       shadows.collect != nullptr};
+    if (scene.photons()) lights.media_photons = scene.photons()->media();
     return as_fog_effect(
         media_effect(list, ray.ray, 0, depth, false, scene.pattern_env(), &lights));
 }
 
 FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
-                    const MediaShadows& shadows) {
+                    MediaEndLights end, const MediaShadows& shadows) {
     const Scene& sc = scene.scene();
     // Under a radiosity sample ray: no fog or media (POV-Ray's radiosity quality).
     if (ray.radiosity_depth > 0) return {};
-    if (sc.fogs.empty() && sc.atmosphere_media.empty() && !in_media(ray.interiors))
+    if (sc.fogs.empty() && sc.atmosphere_media.empty() && sc.rainbows.empty() &&
+        !in_media(ray.interiors))
         return {};
     if (!hollow_ray(ray.interiors)) return {};
-    // POV-Ray: the interiors' media on the surface's colour, then the atmosphere's,
-    // then fog, each on what the one before gave.
+    // POV-Ray: the interiors' media on the surface's colour, then rainbows, the
+    // atmosphere's media and fog, each on what the one before gave.
     FogEffect e;
     if (ray.interiors.size > 0) {
         thread_local std::vector<const Media*> list;
         interior_media(ray.interiors, list);
-        if (!list.empty()) e = viewing_media(scene, list, 0, ray, depth, shadows);
+        if (!list.empty()) e = viewing_media(scene, list, 0, ray, depth, end, shadows);
     }
+    if (!sc.rainbows.empty()) e = then(e, rainbows(scene, ray.ray, depth));
     if (!sc.atmosphere_media.empty()) {
         thread_local std::vector<const Media*> list;
         atmosphere_list(sc, list);
-        e = then(e, viewing_media(scene, list, 1, ray, depth, shadows));
+        e = then(e, viewing_media(scene, list, 1, ray, depth, end, shadows));
     }
     if (!sc.fogs.empty()) e = then(e, fog_effect(sc, ray.ray, depth));
     return e;
@@ -1080,13 +1119,15 @@ FogEffect along_missing_ray(const PreparedScene& scene, const TraceRay& ray,
                             const MediaShadows& shadows) {
     const Scene& sc = scene.scene();
     FogEffect f;
-    if ((sc.fogs.empty() && sc.atmosphere_media.empty()) ||
+    if ((sc.fogs.empty() && sc.atmosphere_media.empty() && sc.rainbows.empty()) ||
         !scene.plan().quality.atmosphere() || ray.radiosity_depth > 0)
         return f;
+    if (!sc.rainbows.empty() && hollow_ray(ray.interiors))
+        f = rainbows(scene, ray.ray, 2e10);
     if (!sc.atmosphere_media.empty() && hollow_ray(ray.interiors)) {
         thread_local std::vector<const Media*> list;
         atmosphere_list(sc, list);
-        f = viewing_media(scene, list, 1, ray, 2e10, shadows);
+        f = then(f, viewing_media(scene, list, 1, ray, 2e10, {}, shadows));
     }
     if (!sc.fogs.empty()) f = then(f, fog_effect(sc, ray.ray, kMaxDistance));
     return f;
@@ -1095,10 +1136,25 @@ FogEffect along_missing_ray(const PreparedScene& scene, const TraceRay& ray,
 }  // namespace
 
 FogEffect along_ray_effect(const PreparedScene& scene, const TraceRay& ray, Real depth,
-                           RayContext* ctx) {
+                           MediaEndLights end, RayContext* ctx) {
     MediaShadows shadows;
     shadows.trace = ctx;
-    return along_ray(scene, ray, depth, shadows);
+    return along_ray(scene, ray, depth, end, shadows);
+}
+
+Rgb photon_through_media(const PreparedScene& scene, const TraceRay& ray, Real depth,
+                         MediaEndLights end, const Rgb& colour, MediaPhotonSink* sink) {
+    if (!in_media(ray.interiors) || !hollow_ray(ray.interiors)) return colour;
+    thread_local std::vector<const Media*> list;
+    interior_media(ray.interiors, list);
+    MediaLights lights{scene.scene().lights, end.global_lights, end.light_group};
+    lights.photon = true;
+    if (sink)
+        return deposit_media_photons(list, ray.ray, depth, lights, scene.pattern_env(),
+                                     colour, *sink);
+    const MediaEffect e =
+        media_effect(list, ray.ray, 0, depth, false, scene.pattern_env(), &lights);
+    return e.add + e.mul * colour;
 }
 
 void replay_media(const PreparedScene& scene, const TraceRay& ray, ShadingRecord& record,
@@ -1115,7 +1171,8 @@ void replay_media(const PreparedScene& scene, const TraceRay& ray, ShadingRecord
     shadows.results = results;
     shadows.order = order.data();
     record.fog = record.media_miss ? along_missing_ray(scene, ray, shadows)
-                                   : along_ray(scene, ray, record.media_depth, shadows);
+                                   : along_ray(scene, ray, record.media_depth,
+                                               record.media_lights, shadows);
 }
 
 FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth) {

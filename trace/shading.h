@@ -63,8 +63,12 @@ struct InteriorStack {
 
 // A ray to trace, with what exact POV-Ray semantics need to know about it.
 struct TraceRay {
-    Ray ray;           // unit direction
-    int depth = 1;     // 1 for camera rays; refused when above max_trace_level
+    Ray ray;        // unit direction
+    int depth = 1;  // 1 for camera rays; refused when above max_trace_level
+    // Passed straight through a surface between equal indices of refraction (POV-Ray's
+    // continued ray): it keeps its parent's depth, and is refused already at
+    // max_trace_level, where POV-Ray's level test meets it.
+    bool continued = false;
     float weight = 1;  // adc_bailout weight
     RayUse use = RayUse::Camera;
     // Radiosity bounces above this ray (0: the camera's ray tree). Its children keep
@@ -114,12 +118,31 @@ struct FogEffect {
 };
 FogEffect fog_effect(const Scene& scene, const Ray& ray, Real depth);
 
+// Which lights light the media along a ray (light groups, as POV-Ray's
+// ComputeMediaLightInterval): those of the object the ray ends on; a ray that hits
+// nothing, the global lights.
+struct MediaEndLights {
+    bool global_lights = true;
+    uint32_t light_group = 0;
+};
+
 // What lies along a ray up to `depth` does to the colour there: the media of the
 // interiors it is in, the atmosphere's media, then fog (POV-Ray's order); identity
 // inside a solid (non-hollow) object. The caller checks the quality level.
-// Scattering media light their samples with shadow rays traced at once with `ctx`.
+// Scattering media light their samples with shadow rays traced at once with `ctx`;
+// `end` (the object at `depth`) says which lights light them.
 FogEffect along_ray_effect(const PreparedScene& scene, const TraceRay& ray, Real depth,
-                           RayContext* ctx = nullptr);
+                           MediaEndLights end, RayContext* ctx = nullptr);
+
+class MediaPhotonSink;
+// A photon in flight (POV-Ray's PhotonTrace::ComputeLightedTexture): the media of the
+// interiors it is in act on its `colour` up to `depth` (the object there, `end`, says
+// which lights split the stretch into intervals): their extinction dims it and their
+// emission adds to it, as on a viewing ray, but they scatter no light into it; with a
+// `sink`, they store media photons instead (deposit_media_photons). The atmosphere's
+// media and fog leave photons alone. Returns the photon's colour at `depth`.
+Rgb photon_through_media(const PreparedScene& scene, const TraceRay& ray, Real depth,
+                         MediaEndLights end, const Rgb& colour, MediaPhotonSink* sink);
 
 // Which shadow ray of a media stretch: the list (0: the interiors' media, 1: the
 // atmosphere's), the sample (MediaLightProbe) and the light.
@@ -142,6 +165,7 @@ struct ShadingRecord {
     std::vector<MediaSampleKey> media_samples;
     size_t media_first = 0;
     Real media_depth = 0;
+    MediaEndLights media_lights;
     bool media_miss = false, media_replay = false;
     void clear() {
         local = Rgb{};
@@ -151,6 +175,7 @@ struct ShadingRecord {
         media_samples.clear();
         media_first = 0;
         media_depth = 0;
+        media_lights = {};
         media_miss = false;
         media_replay = false;
     }

@@ -37,7 +37,8 @@ TraceResult Tracer::trace(const TraceRay& ray) {
 bool Tracer::nearest_hit(const TraceRay& ray, Hit& hit, Real& probe) {
     probe = ray.depth <= tie_levels_ ? tie_tolerance_ : 0;
     ctx_.tie_tolerance = probe;
-    const bool found = scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_);
+    const bool found = scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_,
+                                          ray.radiosity_depth > 0);
     ctx_.tie_tolerance = 0;
     if (found && probe > 0 && on_pattern_boundary(scene_, hit, probe))
         ++ctx_.pattern_ties;

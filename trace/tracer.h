@@ -34,14 +34,16 @@ struct TraceCounters {
     }
 };
 
-// POV-Ray's entry test of a ray (TraceRay): refused past max_trace_level or below
-// adc_bailout, when it is black and opaque. A refusal for its weight is counted.
-// Rays under a radiosity sample ray carry their own limits (TraceRay::max_level,
-// adc_bailout).
+// POV-Ray's entry test of a ray (TraceRay): refused at max_trace_level or below
+// adc_bailout, when it is black and opaque. The level it tests is the parent's: a
+// continued ray's depth, one less than any other ray's. A refusal for its weight is
+// counted. Rays under a radiosity sample ray carry their own limits
+// (TraceRay::max_level, adc_bailout).
 inline bool refuse_ray(const TraceRay& ray, const GlobalSettings& g, TraceCounters& c) {
     const int max_level = ray.max_level > 0 ? ray.max_level : g.max_trace_level;
     const float adc = ray.adc_bailout >= 0 ? ray.adc_bailout : g.adc_bailout;
-    if (ray.depth <= max_level && ray.weight >= adc) return false;
+    const int entry_level = ray.continued ? ray.depth : ray.depth - 1;
+    if (entry_level < max_level && ray.weight >= adc) return false;
     if (ray.weight < adc) ++c.adc_saved;
     return true;
 }
@@ -56,12 +58,16 @@ inline void count_ray(const TraceRay& ray, TraceCounters& c) {
             ++c.reflected;
             break;
         case RayUse::Refraction:
+        case RayUse::ReflectedRefraction:
             ++c.refracted;
             break;
         case RayUse::Radiosity:
             ++c.radiosity;
             break;
         case RayUse::Shadow:
+        case RayUse::Query:
+        case RayUse::Photon:
+        case RayUse::PhotonReflection:
             return;
     }
     c.max_level = std::max(c.max_level, ray.depth);

@@ -170,6 +170,8 @@ Point3 surface_uv(const Hit& hit) {
     if (const BicubicPatch* b = std::get_if<BicubicPatch>(&o->shape))
         return patch_uv(*b, hit);
     if (const Mesh* m = std::get_if<Mesh>(&o->shape)) return mesh_uv(*m, *o, hit);
+    // A parametric's hit keeps the (u, v) of the piece it was found in.
+    if (std::holds_alternative<Parametric>(o->shape)) return {hit.param, hit.param2, 0};
     // Shapes without coordinates of their own: the world point's x and y.
     return {hit.point.x, hit.point.y, 0};
 }

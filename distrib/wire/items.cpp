@@ -86,6 +86,8 @@ enum RecordFlags : uint8_t {
     kTransmitZero = 64,  // transmit contribution 0 (not sent)
     kUnused = 128,
 };
+// The ray-use byte's top bit: a continued ray (trace::TraceRay::continued).
+constexpr uint8_t kContinuedUse = 128;
 
 template <class T>
 bool same_bits(T a, T b) {
@@ -128,7 +130,7 @@ void write_fields(RecordWriter& w, int box, const Item& item,
     w.vec(r.trace.ray.direction);
     w.raw(int32_t(r.trace.depth));
     w.raw(r.trace.weight);
-    w.raw(uint8_t(r.trace.use));
+    w.raw(uint8_t(uint8_t(r.trace.use) | (r.trace.continued ? kContinuedUse : 0)));
     write_stack(w, r.trace.interiors, numbers);
     w.raw(r.t_from);
     if (shadow_state) {
@@ -175,7 +177,9 @@ bool read_record(Reader& rd, const ItemLimits& limits, int& box, Item& item,
         r.trace.depth = rd.raw<int32_t>();
         r.trace.weight = rd.raw<float>();
         uint8_t use = rd.raw<uint8_t>();
-        if (use > uint8_t(trace::RayUse::Shadow)) return false;
+        r.trace.continued = use & kContinuedUse;
+        use &= uint8_t(~kContinuedUse);
+        if (use > uint8_t(trace::kLastRayUse)) return false;
         r.trace.use = trace::RayUse(use);
         read_stack(rd, r.trace.interiors, numbers);
         r.t_from = rd.raw<Real>();

@@ -231,7 +231,7 @@ TEST(CorpusFolder, RandomPovRayImagesAreComparedAsBlockMeans) {
     EXPECT_TRUE(std::regex_search(
         r.out,
         std::regex(R"(jitter\.pov +matched .*compared as 8x8 block means \(POV-Ray's )"
-                   R"(area-light jitter and photons are random\)\n)")))
+                   R"(area-light jitter, photons and rainbow jitter are random\)\n)")))
         << r.out;
     EXPECT_TRUE(
         std::regex_search(r.out, std::regex(R"(csg\.pov +matched [^\n]*[0-9] *\n)")))

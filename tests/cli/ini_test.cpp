@@ -117,6 +117,42 @@ TEST(Ini, AntialiasGammaAndRenderBlockSize) {
     EXPECT_EQ(r.o.render.block_size, 16);
 }
 
+TEST(Ini, FileGammaAsPovRayReadsIt) {
+    // A number above 0 is a power law (1: neutral), else only sRGB (any case).
+    EXPECT_EQ(read_ini("File_Gamma=1.0").o.file_gamma, 1.0f);
+    EXPECT_EQ(read_ini("File_Gamma=1.8").o.file_gamma, 1.8f);
+    EXPECT_EQ(read_ini("File_Gamma=2.2abc").o.file_gamma, 2.2f);
+    EXPECT_EQ(read_ini("File_Gamma=1.8\nFile_Gamma=SRGB").o.file_gamma, std::nullopt);
+    EXPECT_EQ(read_ini("File_Gamma=srgb").warnings, "");
+    EXPECT_EQ(error_of("File_Gamma=0"), "t.ini:1: Unrecognized gamma setting '0'.");
+    EXPECT_EQ(error_of("File_Gamma=-2.2"), "t.ini:1: Unrecognized gamma setting '-2.2'.");
+    EXPECT_EQ(error_of("File_Gamma=bt709"),
+              "t.ini:1: Unrecognized gamma setting 'bt709'.");
+    // Display_Gamma is the preview window's: checked the same way, the file keeps sRGB.
+    Read d = read_ini("Display_Gamma=1.8");
+    EXPECT_EQ(d.o.file_gamma, std::nullopt);
+    EXPECT_EQ(d.warnings, "");
+    EXPECT_EQ(error_of("Display_Gamma=x"), "t.ini:1: Unrecognized gamma setting 'x'.");
+}
+
+TEST(Ini, OptionsOnTheCommandLineAsPovRayTakesThem) {
+    RenderOptions o;
+    EXPECT_TRUE(povwall::cli::looks_like_pov_switch("File_Gamma=1.0"));
+    EXPECT_TRUE(povwall::cli::looks_like_pov_switch("width=64"));
+    EXPECT_FALSE(povwall::cli::looks_like_pov_switch("Not_A_Key=1"));
+    EXPECT_FALSE(povwall::cli::looks_like_pov_switch("scene.pov"));
+    EXPECT_TRUE(povwall::cli::apply_pov_switch("File_Gamma=1.0", o));
+    EXPECT_TRUE(povwall::cli::apply_pov_switch("width=64", o));
+    EXPECT_EQ(o.file_gamma, 1.0f);
+    EXPECT_EQ(o.width, 64);
+    try {
+        povwall::cli::apply_pov_switch("File_Gamma=0", o);
+        ADD_FAILURE() << "no error";
+    } catch (const UsageError& e) {
+        EXPECT_STREQ(e.what(), "command line:1: Unrecognized gamma setting '0'.");
+    }
+}
+
 TEST(Ini, KeysThatCouldChangeTheImageWarnOnceEachDisplayKeysStaySilent) {
     Read r = read_ini(
         "Quality=4\nVerbose=on\nTest_Abort_Count=100\nPause_When_Done=on\n"
@@ -128,10 +164,6 @@ TEST(Ini, KeysThatCouldChangeTheImageWarnOnceEachDisplayKeysStaySilent) {
         "Buffer_Output=on\nHistogram_Type=C\n");
     EXPECT_EQ(
         r.warnings,
-        "povwall: warning: t.ini:6: File_Gamma=2.2 is accepted but has no effect in "
-        "povwall\n"
-        "povwall: warning: t.ini:7: Display_Gamma=1.8 is accepted but has no effect "
-        "in povwall\n"
         "povwall: warning: t.ini:8: Grayscale_Output=on is accepted but has no "
         "effect in povwall\n"
         "povwall: warning: t.ini:9: Dither=on is accepted but has no effect in "
@@ -309,10 +341,6 @@ TEST(Ini, PovRayExampleFilesAreAccepted) {
             const std::string at = e.path().string() + ":";
             EXPECT_EQ(warnings.str(),
                       "povwall: warning: " + at +
-                          "17: Display_Gamma=2.2 is accepted but has no effect in "
-                          "povwall\n"
-                          "povwall: warning: " +
-                          at +
                           "41: Output_To_File=Off is accepted but has no effect in "
                           "povwall\n");
             EXPECT_EQ(o.width, 512);

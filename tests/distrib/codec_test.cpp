@@ -101,7 +101,8 @@ class RandomItems {
         r.trace.ray.direction = {d(), d(), d()};
         r.trace.depth = int(rng_() % 12);
         r.trace.weight = f();
-        r.trace.use = trace::RayUse(rng_() % (int(trace::RayUse::Shadow) + 1));
+        r.trace.use = trace::RayUse(rng_() % trace::kRayUses);
+        r.trace.continued = rng_() % 2;
         stack(r.trace.interiors);
         r.t_from = d();
         if (coin(0.5)) {
@@ -217,6 +218,9 @@ TEST(WireItems, RecordsRoundTripBitForBit) {
         }
         EXPECT_EQ(std::bit_cast<uint64_t>(a.ray.trace.ray.origin.x),
                   std::bit_cast<uint64_t>(b.ray.trace.ray.origin.x));
+        EXPECT_EQ(a.ray.trace.use, b.ray.trace.use);
+        EXPECT_EQ(a.ray.trace.continued, b.ray.trace.continued);
+        EXPECT_EQ(a.ray.trace.depth, b.ray.trace.depth);
         EXPECT_EQ(a.ray.trace.interiors.size, b.ray.trace.interiors.size);
         for (int k = 0; k < a.ray.trace.interiors.size; ++k)
             EXPECT_EQ(a.ray.trace.interiors.items[k], b.ray.trace.interiors.items[k]);

@@ -342,16 +342,48 @@ TEST(Tcp, EveryShapeSceneIsInTheEveryModeList) {
 
 // The fixes of the real-scene issue (version state, tilted-normal reflection and
 // refraction, iridescence, inverse CSG, map entries, palette and corner textures, object
-// flags): each matches POV-Ray in tests/golden and gives the one-process image in every
-// mode.
+// flags, continued rays at the last trace level, parallel lights behind their plane):
+// each matches POV-Ray in tests/golden and gives the one-process image in every mode.
 TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
+    for (const char* name : {"version_include",
+                             "version_switch",
+                             "version_background_first",
+                             "legacy_version36",
+                             "reflection_bumped_normals",
+                             "caustics_bumped",
+                             "irid_reflection",
+                             "inverse_csg",
+                             "map_entries",
+                             "palette_images",
+                             "mesh_corner_textures",
+                             "object_flags",
+                             "image_map_file_types",
+                             "area_light_jitter",
+                             "slope_aoi",
+                             "texture_map_nested_spaces",
+                             "parse_time_queries",
+                             "trace_level_one",
+                             "trace_level_continued_rays",
+                             "light_parallel_behind_plane",
+                             "light_fade_power_alone"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        expect_same_images(scene, "-W 40 -H 30",
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents"});
+    }
+}
+
+// no_image, no_reflection and no_shadow on CSG children and looks_like objects
+// (scenes/golden/csg_flags_*.pov, each matching POV-Ray in tests/golden): a black box
+// keeps whole frame objects and the rays' kinds, so every mode gives the one-process
+// image.
+TEST(Tcp, CsgFlagsInEveryModeEqualOneProcess) {
     for (const char* name :
-         {"version_include", "version_switch", "version_background_first",
-          "legacy_version36", "reflection_bumped_normals", "caustics_bumped",
-          "irid_reflection", "inverse_csg", "map_entries", "palette_images",
-          "mesh_corner_textures", "object_flags", "image_map_file_types",
-          "area_light_jitter", "slope_aoi", "texture_map_nested_spaces",
-          "parse_time_queries"}) {
+         {"csg_flags_union_split", "csg_flags_union_clipped", "csg_flags_union_infinite",
+          "csg_flags_union_bounded", "csg_flags_merge", "csg_flags_intersection",
+          "csg_flags_difference", "csg_flags_nested", "csg_flags_looks_like",
+          "csg_flags_looks_like_unbounded"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(scene, "-W 40 -H 30",
@@ -380,8 +412,8 @@ TEST(Tcp, TextureSpacePatternsInEveryModeEqualOneProcess) {
 // parse order before a worker leaves objects out) and df3 density files (found and read
 // by every process that parses the scene): every mode gives the one-process image.
 TEST(Tcp, LightGroupsAndDensityFilesInEveryModeEqualOneProcess) {
-    for (const char* name : {"light_group", "light_group_nesting", "media_density_file",
-                             "pigment_density_file"}) {
+    for (const char* name : {"light_group", "light_group_nesting", "light_group_media",
+                             "media_density_file", "pigment_density_file"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(
@@ -390,12 +422,13 @@ TEST(Tcp, LightGroupsAndDensityFilesInEveryModeEqualOneProcess) {
     }
 }
 
-// Media (trace/media.h) act on a ray's colour as fog does, from its origin to its hit:
-// every mode gives the one-process image, anti-aliased too.
+// Media (trace/media.h) and rainbows (trace/rainbow.h) act on a ray's colour as fog
+// does, from its origin to its hit: every mode gives the one-process image,
+// anti-aliased too.
 TEST(Tcp, MediaInEveryModeEqualOneProcess) {
     for (const char* name :
          {"media_emission_absorption", "media_density_methods", "media_legacy_csg",
-          "media_atmosphere", "media_atmosphere_sky"}) {
+          "media_atmosphere", "media_atmosphere_sky", "rainbow"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         for (const char* aa : {"-A", "+A0.1 +AM2 -J"})
@@ -487,10 +520,10 @@ TEST(Tcp, QualityLevelsInEveryModeEqualOneProcess) {
     }
 }
 
-// The omnimax and spherical cameras, camera normals and focal blur (golden scenes, each
-// matching POV-Ray): focal blur's rays go through the black boxes in waves, batch by
-// batch, named by sample position and ray index, so every mode gives the one-process
-// image, anti-aliased too.
+// The omnimax, spherical and mesh cameras, camera normals and focal blur (golden
+// scenes, each matching POV-Ray): focal blur's rays (and a mesh camera's rays per pixel)
+// go through the black boxes in waves, batch by batch, named by sample position and ray
+// index, so every mode gives the one-process image, anti-aliased too.
 TEST(Tcp, CamerasAndFocalBlurInEveryModeEqualOneProcess) {
     const std::pair<const char*, const char*> cases[] = {
         {"camera_omnimax", "+UA"},
@@ -506,7 +539,12 @@ TEST(Tcp, CamerasAndFocalBlurInEveryModeEqualOneProcess) {
         {"camera_focal_blur_kinds", ""},
         {"camera_focal_blur_fisheye", "+UA +A0.3"},
         {"camera_focal_blur_antialias", "+A0.1 +AM2 +R2"},
-        {"camera_focal_blur_antialias", "+A0.3 +AM1 +J"}};
+        {"camera_focal_blur_antialias", "+A0.3 +AM1 +J"},
+        {"camera_mesh_rays", "+UA"},
+        {"camera_mesh_rays", "+A0.3 +AM2"},
+        {"camera_mesh_split", "+UA"},
+        {"camera_mesh_side", "+UA"},
+        {"camera_mesh_uv", "+UA +A0.3"}};
     for (const auto& [name, args] : cases) {
         SCOPED_TRACE(std::string(name) + " " + args);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
@@ -522,7 +560,8 @@ TEST(Tcp, CamerasAndFocalBlurInEveryModeEqualOneProcess) {
 // refused with a located `unsupported:`.
 TEST(Tcp, PhotonsInEveryModeEqualOneProcess) {
     for (const char* name :
-         {"photons_glass_sphere", "photons_metal_ring", "photons_csg_glass"}) {
+         {"photons_glass_sphere", "photons_metal_ring", "photons_csg_glass",
+          "photons_media", "photons_media_scattering"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         for (const char* aa : {"-A", "+A0.1 +AM2 -J"})

@@ -108,6 +108,35 @@ TEST(WriteImage, Png8And16BitQuantiseAsPovRay) {
     EXPECT_NEAR(back.pixel(0, 0)[0] * 65535.0f, 48192.0f, 1e-2);  // POV-Ray's PNG16 value
 }
 
+TEST(WriteImage, ColourDepthsAsPovRayStoresThem) {
+    // 0.5 linear is 0.735358 in sRGB: at 5 bits 23, at 12 bits 3011 (floor(x max + 0.5)).
+    Image img = flat(1, 1, 0.5f, 0.5f, 0.5f);
+    OutputEncoding e;
+    auto stored = [&](int bits, const std::string& name) {
+        e.bits = bits;
+        const fs::path p = scratch() / name;
+        write_image(img, p.string(), e);
+        return read_image(p.string()).pixel(0, 0)[0];
+    };
+    // PNG: 8- or 16-bit samples filled by left bit replication (23 << 3 | 23 >> 2 = 189,
+    // 3011 << 4 | 3011 >> 8 = 48187), as POV-Ray's +FN5 and +FN12.
+    EXPECT_FLOAT_EQ(stored(5, "d5.png") * 255.0f, 189.0f);
+    EXPECT_NEAR(stored(12, "d12.png") * 65535.0f, 48187.0f, 1e-2);
+    // Out of 5..16 as POV-Ray clamps it.
+    EXPECT_FLOAT_EQ(stored(2, "d2.png") * 255.0f, 189.0f);
+    // PPM: the depth's largest value is the maxval and the samples are stored as is.
+    e.bits = 12;
+    const fs::path ppm = scratch() / "d12.ppm";
+    write_image(img, ppm.string(), e);
+    EXPECT_EQ(head_bytes(ppm, 19),
+              std::string("P6\n1 1\n4095\n\x0b\xc3\x0b\xc3\x0b\xc3", 18));
+    e.bits = 8;
+    e.alpha = true;  // PPM has no alpha channel (POV-Ray's +FP ignores +UA)
+    const fs::path ppm8 = scratch() / "d8.ppm";
+    write_image(img, ppm8.string(), e);
+    EXPECT_EQ(head_bytes(ppm8, 15), std::string("P6\n1 1\n255\n\xbc\xbc\xbc", 14));
+}
+
 // The chunk types of a PNG file in order, with the gAMA value (gamma x 100000) if any.
 std::vector<std::string> png_chunks(const fs::path& p, uint32_t* gama = nullptr) {
     std::ifstream in(p, std::ios::binary);

@@ -437,6 +437,23 @@ TEST(Lexer, NestedCommentsAndStrayHash) {
     EXPECT_EQ(out, "xy");
 }
 
+TEST(Lexer, StringsSpanLinesAsInPovRay) {
+    // A line break inside quotes is part of the string (shapes3.inc writes one), and the
+    // tokens after it keep their own lines.
+    std::string out;
+    parse("#declare S = concat(\"one\n two\");\n#debug S\n#debug str(strlen(S), 0, 0)",
+          &out);
+    EXPECT_EQ(out, "one\n two8");
+    EXPECT_EQ(error_of("#declare S = \"one\n two\";\n#declare T = Q;").substr(0, 35),
+              "test.pov:3:14: error: undeclared id");
+    // A backslash right before the break, or no closing quote, is an error.
+    EXPECT_EQ(error_of("#declare S = \"one\\\n two\";").substr(0, 76),
+              "test.pov:1:18: error: unterminated string literal (a backslash before a "
+              "line");
+    EXPECT_EQ(error_of("#declare S = \"one\n two;").substr(0, 42),
+              "test.pov:1:14: error: unterminated string\n");
+}
+
 // Short decimals take an integer-and-division fast path; every literal must read as the
 // correctly rounded double that from_chars gives (exact equality, 20,000 random literals
 // of 1 to 18 digits with and without fraction, exponent or leading zeros).

@@ -78,14 +78,9 @@ TEST(LightGroup, NestingAndCopies) {
 }
 
 TEST(LightGroup, RefusalsAndErrors) {
-    // Media see the global lights only: refused where a group changes that.
-    EXPECT_EQ(
-        error_of("light_group { light_source { 0 rgb 1 } sphere { 0, 1 } }\n"
-                 "sphere { 0, 1 hollow interior { media { emission 1 } } }"),
-        "test.pov:1:1: error: unsupported: light_group in a scene with media (group "
-        "lights with media_interaction, or objects without the global lights)");
-    EXPECT_EQ(error_of("light_group { light_source { 0 rgb 1 media_interaction off }\n"
-                       "  sphere { 0, 1 } global_lights on }\n"
+    // Media are lit by the lights of the object a ray ends on (golden
+    // light_group_media): no refusal.
+    EXPECT_EQ(error_of("light_group { light_source { 0 rgb 1 } sphere { 0, 1 } }\n"
                        "sphere { 0, 1 hollow interior { media { emission 1 } } }"),
               "(no error)");
     EXPECT_EQ(

@@ -489,11 +489,11 @@ TEST(Errors, TraceInADeclareStopsAtOnce) {
 
 TEST(Errors, UnsupportedFeatureIsNamed) {
     try {
-        parse("rainbow { angle 42 }");
+        parse("atmosphere { }");
         FAIL();
     } catch (const ParseError& e) {
         EXPECT_EQ(e.kind(), ParseError::Kind::Unsupported);
-        EXPECT_EQ(e.message(), "unsupported: rainbow");
+        EXPECT_EQ(e.message(), "unsupported: atmosphere");
     }
 }
 
@@ -543,6 +543,67 @@ TEST(Errors, PatternRefusalsAndMisuses) {
               "Keyword 'size' can only be used in a facets statement.");
     EXPECT_EQ(message("plane { y, 0 texture { tiles { tile2 texture { } } } }"),
               "First texture missing from tiles");
+}
+
+// POV-Ray keeps a pattern's frequency, phase, wave exponent, agate_turb, quilted
+// controls, turbulence omega and lambda, and a normal's amount and accuracy in single
+// precision (SNGL): 0.1 is stored as 0.100000001490116...
+TEST(Parser, PatternSettingsInSinglePrecision) {
+    Scene s = parse(R"(
+plane { y, 0 pigment { agate phase 0.1 frequency 0.3 agate_turb 0.7 poly_wave 1.1
+                       turbulence 0.2 omega 0.6 lambda 2.1 } }
+plane { y, 0 pigment { quilted control0 0.3 control1 0.9 }
+             normal { bumps 0.3 accuracy 0.01 } }
+)");
+    auto single = [](double v) { return double(float(v)); };
+    const PatternSpec& a = *s.objects[0].texture[0].pigment.pattern;
+    EXPECT_EQ(a.phase, single(0.1));
+    EXPECT_NE(a.phase, 0.1);
+    EXPECT_EQ(a.frequency, single(0.3));
+    EXPECT_EQ(a.scalar, single(0.7));
+    EXPECT_EQ(a.wave_exponent, single(1.1));
+    ASSERT_EQ(a.warps.size(), 1u);
+    EXPECT_EQ(a.warps[0].omega, single(0.6));
+    EXPECT_EQ(a.warps[0].lambda, single(2.1));
+    EXPECT_EQ(a.warps[0].turbulence.x, 0.2);  // a vector: double
+    const Texture& q = s.objects[1].texture[0];
+    EXPECT_EQ(q.pigment.pattern->vector.x, single(0.3));
+    EXPECT_EQ(q.pigment.pattern->vector.y, single(0.9));
+    ASSERT_TRUE(q.normal);
+    EXPECT_EQ(q.normal->amount, single(0.3));
+    EXPECT_EQ(q.normal->accuracy, single(0.01));
+}
+
+// POV-Ray reads a pigment's pattern only as its first item (after an identifier): one
+// after a modifier or another pattern ends the block, and its closing brace (a
+// pigment_map entry's ']') is missing there (its messages, same place).
+TEST(Errors, PigmentPatternAfterAModifier) {
+    auto located = [](const std::string& text) {
+        try {
+            parse(text);
+        } catch (const ParseError& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    EXPECT_EQ(located("sphere { 0, 1 pigment { phase 0.4 quilted } }"),
+              "test.pov:1:35: error: No matching } in 'pigment', quilted found instead\n"
+              "sphere { 0, 1 pigment { phase 0.4 quilted } }\n"
+              "                                  ^~~~~~~");
+    EXPECT_EQ(located("sphere { 0, 1 pigment { checker quilted } }"),
+              "test.pov:1:33: error: No matching } in 'pigment', quilted found instead\n"
+              "sphere { 0, 1 pigment { checker quilted } }\n"
+              "                                ^~~~~~~");
+    EXPECT_EQ(located("sphere { 0, 1 pigment { gradient x pigment_map { [0 phase 0.4 "
+                      "quilted] [1 rgb 1] } } }"),
+              "test.pov:1:63: error: Expected ']', quilted found instead\n"
+              "sphere { 0, 1 pigment { gradient x pigment_map { [0 phase 0.4 quilted] [1 "
+              "rgb 1] } } }\n"
+              "                                                              ^~~~~~~");
+    // After an identifier the pattern is still the first item.
+    EXPECT_EQ(located("#declare P = pigment { rgb 1 }\n"
+                      "sphere { 0, 1 pigment { P quilted phase 0.4 } }"),
+              "(no error)");
 }
 
 }  // namespace

@@ -42,6 +42,16 @@ TEST(Photons, GlobalBlockTakesPovRaysDefaultsThenItsItems) {
     EXPECT_FLOAT_EQ(q.adc_bailout, 0.01f);
     EXPECT_FLOAT_EQ(q.radius, 0.3f);
     EXPECT_FLOAT_EQ(q.radius_multiplier, 2);
+    EXPECT_EQ(q.media_steps, 0);
+    // Media photons: steps and spacing factor; radius's third and fourth values are the
+    // media map's.
+    const PhotonSettings m =
+        *parse("global_settings { photons { media 100, 2 radius 0, 1, 0.5, 3 } }")
+             .settings.photons;
+    EXPECT_EQ(m.media_steps, 100);
+    EXPECT_FLOAT_EQ(m.media_spacing_factor, 2);
+    EXPECT_FLOAT_EQ(m.media_radius, 0.5f);
+    EXPECT_FLOAT_EQ(m.media_radius_multiplier, 3);
     // gather's maximum 0: no photon maps (POV-Ray).
     EXPECT_FALSE(parse("global_settings { photons { gather 0, 0 } }").settings.photons);
 }
@@ -86,15 +96,13 @@ TEST(Photons, LightSwitches) {
 }
 
 TEST(Photons, RefusedWhereTheMapDoesNotGoYet) {
-    EXPECT_EQ(error_of("global_settings { photons { media 100 } }"),
-              "test.pov:1:29: error: unsupported: photons in media");
     EXPECT_EQ(error_of("global_settings { photons { spacing 0.1 save_file \"a.ph\" } }"),
               "test.pov:1:41: error: unsupported: photons save_file");
     EXPECT_EQ(error_of("global_settings { photons { load_file \"a.ph\" } }"),
               "test.pov:1:29: error: unsupported: photons load_file");
     EXPECT_EQ(error_of("global_settings { photons { spacing 0.1 } }\n"
                        "sphere { 0, 1 hollow interior { media { absorption 1 } } }"),
-              "test.pov:1:19: error: unsupported: photons in a scene with media");
+              "(no error)");
     EXPECT_EQ(error_of("light_source { 0, 1 parallel }\n"
                        "global_settings { photons { spacing 0.1 } }"),
               "test.pov:1:14: error: unsupported: photons from parallel and cylinder "

@@ -264,5 +264,30 @@ TEST(Keywords, RefusedOrCheckedWhereTheyStand) {
               "(no error)");
 }
 
+// double_illuminate on a CSG is set on every node below when read, on or off (POV-Ray's
+// Set_CSG_Tree_Flag); the ray flags come down when the object is placed, never off.
+TEST(PostProcess, DoubleIlluminateSetsTheTreeRayFlagsComeDown) {
+    Scene s = parse(R"(
+union { sphere { 0, 1 double_illuminate } union { sphere { x, 1 double_illuminate } }
+        double_illuminate off }
+merge { sphere { 0, 1 } intersection { sphere { x, 1 } sphere { y, 1 } } double_illuminate 1 }
+sphere { 0, 1 double_illuminate 0 }
+union { sphere { 0, 1 no_image off } merge { sphere { x, 1 } } no_image no_shadow }
+)");
+    const Object& off = s.objects[0];
+    EXPECT_FALSE(off.double_illuminate);
+    EXPECT_FALSE(child(off, 0).double_illuminate);
+    EXPECT_FALSE(child(child(off, 1), 0).double_illuminate);
+    const Object& on = s.objects[1];
+    EXPECT_TRUE(child(on, 0).double_illuminate);
+    EXPECT_TRUE(child(child(on, 1), 1).double_illuminate);
+    EXPECT_FALSE(s.objects[2].double_illuminate);
+    const Object& flags = s.objects[3];
+    EXPECT_TRUE(child(flags, 0).no_image);
+    EXPECT_TRUE(child(flags, 0).no_shadow);
+    EXPECT_TRUE(child(child(flags, 1), 0).no_image);
+    EXPECT_FALSE(child(flags, 0).no_reflection);
+}
+
 }  // namespace
 }  // namespace povwall::parser

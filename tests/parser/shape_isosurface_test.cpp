@@ -44,6 +44,17 @@ TEST(ShapeIsosurface, DefaultsAndOptions) {
     EXPECT_EQ(s.max_trace, 10);
 }
 
+TEST(ShapeIsosurface, Evaluate) {
+    auto e = only_shape<Isosurface>(
+        parse("isosurface { function { x } evaluate 1, 10 0.99 max_gradient 1.4 }"));
+    EXPECT_TRUE(e.evaluate);
+    EXPECT_EQ(e.eval_param[0], 1.0);
+    EXPECT_EQ(e.eval_param[1], 10.0);
+    EXPECT_EQ(e.eval_param[2], 0.99);
+    EXPECT_EQ(e.max_gradient, 1.4);
+    EXPECT_FALSE(only_shape<Isosurface>(parse("isosurface { function { x } }")).evaluate);
+}
+
 TEST(ShapeIsosurface, ClampedValuesWarn) {
     std::string messages;
     auto i = only_shape<Isosurface>(
@@ -71,8 +82,6 @@ TEST(ShapeIsosurface, TheFunctionReadsTheFinalSettings) {
 }
 
 TEST(ShapeIsosurface, Errors) {
-    EXPECT_EQ(error_of("isosurface { function { x } evaluate 1, 1, 1 }"),
-              "test.pov:1:29: error: unsupported: isosurface evaluate");
     EXPECT_EQ(error_of("isosurface { function { x } clipped_by { plane { y, 0 } } }"),
               "test.pov:1:29: error: unsupported: clipped_by on an isosurface");
     EXPECT_EQ(error_of("isosurface { function { x } sturm }"),

@@ -399,7 +399,7 @@ TEST(RepeatedBlocks, NormalsAndInteriors) {
         "sphere { 0, 1 interior { ior 1.5 } interior { I fade_power 3 } }\n");
     const Normal& n = *top_layer(s, 0).normal;
     EXPECT_EQ(n.pattern->kind, PatternKind::Bumps);
-    EXPECT_DOUBLE_EQ(n.amount, 0.6);
+    EXPECT_EQ(n.amount, double(0.6f));  // single precision, as POV-Ray keeps it
     EXPECT_NEAR(n.pattern->transform.point(Point3(1, 0, 0)).x, 0.4, 1e-15);
     EXPECT_EQ(top_layer(s, 1).normal->pattern->kind, PatternKind::Dents);
     EXPECT_DOUBLE_EQ(top_layer(s, 1).normal->amount, 0.3);
@@ -470,7 +470,7 @@ TEST(RepeatedBlocks, DefaultsAccumulateAndDeclarationsStartFromThem) {
     EXPECT_FLOAT_EQ(t.finish->phong, 1.0f);
     EXPECT_FLOAT_EQ(t.finish->ambient.r, 0.4f);
     ASSERT_TRUE(t.normal);
-    EXPECT_DOUBLE_EQ(t.normal->amount, 0.4);
+    EXPECT_EQ(t.normal->amount, double(0.4f));  // single precision
     EXPECT_EQ(error_of("#default { texture { pigment { rgb 1 } } texture { } }"),
               "(no error)");
     EXPECT_EQ(error_of("#declare T = texture { pigment { rgb 1 } } texture { };\n"
@@ -478,6 +478,45 @@ TEST(RepeatedBlocks, DefaultsAccumulateAndDeclarationsStartFromThem) {
               "test.pov:2:12: error: the default texture cannot be layered");
     EXPECT_EQ(error_of("#default { texture { checker } }"),
               "test.pov:1:12: error: the default texture cannot be patterned");
+}
+
+}  // namespace
+}  // namespace povwall::parser
+
+namespace povwall::parser {
+namespace {
+
+// Forms real scenes write that POV-Ray 3.7 reads (found in public scenes).
+TEST(RealSceneForms, NoColourIsBlack) {
+    // POV-Ray's Parse_Colour leaves the colour black when none follows.
+    const Scene s =
+        parse("light_source { <1, 20, -5> }\nsphere { 0, 1 pigment { color } }");
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].colour.r, 0.0f);
+    EXPECT_EQ(s.lights[0].colour.g, 0.0f);
+    EXPECT_EQ(s.lights[0].colour.b, 0.0f);
+}
+
+TEST(RealSceneForms, BareObjectIdentifierInCsg) {
+    // A declared object named bare inside a CSG is a child (POV-Ray's Parse_Object).
+    const Scene s = parse(
+        "#declare S = sphere { <0, 0, -1>, 0.8 }\n"
+        "#declare D = difference { box { -1, 1 } sphere { 0, 1.2 } }\n"
+        "difference { box { -1, 1 } S }\n"
+        "difference { D S }\n");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const Csg* a = std::get_if<Csg>(&s.objects[0].shape);
+    ASSERT_NE(a, nullptr);
+    ASSERT_EQ(a->children.size(), 2u);
+    EXPECT_NE(std::get_if<Sphere>(&a->children[1].shape), nullptr);
+    // First in the braces POV-Ray extends the named CSG: a child when it is of this kind.
+    const Csg* b = std::get_if<Csg>(&s.objects[1].shape);
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(b->children.size(), 2u);
+    EXPECT_EQ(error_of("#declare S = sphere { 0, 1 }\nunion { S sphere { 1, 1 } }"),
+              "test.pov:2:9: error: unsupported: an object identifier first in a CSG of "
+              "another "
+              "kind");
 }
 
 }  // namespace

@@ -9,7 +9,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "distrib/space_render.h"
@@ -29,6 +31,9 @@ struct StressCase {
     // distance error allowed for them against the oracle.
     std::vector<std::string> kinds;
     double max_rel_error;
+    // Rays where the fast path hits and the oracle misses or the reverse, allowed where
+    // POV-Ray is pixel-identical to the fast path there (`check-numerics --povray`).
+    uint64_t allowed_hit_miss = 0;
 };
 
 const StressCase kCases[] = {
@@ -70,6 +75,12 @@ const StressCase kCases[] = {
     // root (accuracy 0.001 in object units): ~1e-4 relative (pixel-identical to POV-Ray
     // at 160x120).
     {"isosurface_stiff", {"isosurface"}, 5e-4},
+    // POV-Ray's parametric hit is the start of the last axis's span through the first
+    // uv piece smaller than `accuracy` (in uv or in those spans): where the ray is nearly
+    // parallel to that axis the span starts early, up to 8 % of the distance here, and
+    // the padded spans meet rays that pass the surface near a silhouette (4 rays).
+    // POV-Ray is pixel-identical on all of them (`check-numerics --povray`).
+    {"parametric_stiff", {"parametric"}, 0.1, 4},
 };
 
 Scene load(const std::string& name) {
@@ -95,7 +106,7 @@ TEST_P(Stress, OracleBoundsAndNoNonFinitePixels) {
     }
     for (const auto& [kind, k] : rep.kinds) {
         SCOPED_TRACE(kind);
-        EXPECT_EQ(k.hit_miss, 0u);
+        EXPECT_LE(k.hit_miss, c.allowed_hit_miss);
         EXPECT_EQ(k.other_object, 0u);
         EXPECT_LE(k.max_rel_error, c.max_rel_error);
     }
@@ -169,18 +180,34 @@ TEST(StressOctree, CoincidentCopiesBuildBoundedAndRenderAsOne) {
     EXPECT_EQ(many.rgba, one.rgba);
 }
 
-TEST(StressErrors, ScaleByZeroIsALocatedError) {
-    try {
-        load("singular_scale");
-        FAIL() << "no error";
-    } catch (const parser::ParseError& e) {
-        std::string first =
-            std::string(e.what()).substr(0, std::string(e.what()).find('\n'));
-        EXPECT_EQ(first,
-                  std::string(POVWALL_STRESS_DIR) +
-                      "/singular_scale.pov:4:21: error: singular transform: scale by 0 "
-                      "in y (the object would be flattened)");
+TEST(StressErrors, ScaleByZeroBecomesOneWithPovRaysWarning) {
+    parser::ParseOptions po;
+    po.image_width = kW;
+    po.image_height = kH;
+    std::ostringstream messages;
+    po.messages = &messages;
+    const std::string path = std::string(POVWALL_STRESS_DIR) + "/singular_scale.pov";
+    Scene zero = parser::parse_scene_file(path, po);
+    EXPECT_EQ(messages.str().substr(0, messages.str().find('\n')),
+              path + ":6:21: warning: Illegal Value: Scale Y by 0.0. Changed to 1.0.");
+    // The same image as the sphere scaled by <1, 1, 1>.
+    const std::string unscaled = ::testing::TempDir() + "unscaled_sphere.pov";
+    {
+        std::ofstream out(unscaled);
+        out << "#version 3.7;\ncamera { location <0, 0, -5> look_at 0 }\n"
+               "light_source { <3, 5, -5> color rgb 1 }\n"
+               "sphere { 0, 1 scale <1, 1, 1> pigment { rgb 1 } }\n";
     }
+    Scene one = parser::parse_scene_file(unscaled, po);
+    trace::RenderSettings rs;
+    rs.width = kW;
+    rs.height = kH;
+    rs.threads = 1;
+    const Image a = trace::render_scene(zero, rs), b = trace::render_scene(one, rs);
+    size_t lit = 0;
+    for (size_t i = 0; i < a.rgba.size(); i += 4) lit += a.rgba[i] > 0.3f;
+    EXPECT_GT(lit, size_t(kW * kH / 20));
+    EXPECT_EQ(a.rgba, b.rgba);
 }
 
 TEST(StressErrors, SingularMatrixIsALocatedError) {

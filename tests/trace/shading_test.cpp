@@ -50,10 +50,10 @@ TEST(Shading, SphereLitHeadOnByHand) {
     Rgb expected =
         pig * 0.1f + pig * (0.6f * light) + Rgb(0.5f * light) + Rgb(0.3f * light);
     expect_rgb(centre_pixel(s), expected);
-    // fade_power without fade_distance: distance^-power (POV-Ray's Attenuate_Light).
+    // fade_power without fade_distance: no fade (POV-Ray 3.7's Attenuate_Light).
     s.lights[0].fade_distance = 0;
     {
-        const float l2 = 0.5f / 16.0f;  // 4^-2
+        const float l2 = 0.5f;
         Rgb e2 = pig * 0.1f + pig * (0.6f * l2) + Rgb(0.5f * l2) + Rgb(0.3f * l2);
         expect_rgb(centre_pixel(s), e2);
     }
@@ -97,17 +97,23 @@ TEST(Shading, ReflectionAndMaxTraceLevel) {
     expect_rgb(centre_pixel(s), Rgb(0.0f));
 }
 
-TEST(Shading, PassThroughTransparencyUsesNoTraceLevel) {
-    // rgbf <1,0.5,0,1> filters twice (two surfaces) even at max_trace_level 1, since
-    // a surface without IOR change continues the ray at the same level (POV-Ray 3.7).
+TEST(Shading, PassThroughTransparencyKeepsItsParentsTraceLevel) {
+    // A surface without IOR change continues the ray at its level (POV-Ray 3.7's
+    // continued ray), but TraceRay meets every ray at that level first: at
+    // max_trace_level 1 the camera ray's level is used up and nothing shows through.
     Scene s;
     s.background = Colour(Rgb(1.0f));
     s.settings.max_trace_level = 1;
     Texture t = solid({1.0f, 0.5f, 0.0f}, 1.0f, 0.0f);
     t.finish.edit().ambient = Rgb(1.0f);
     s.objects.push_back(object(Sphere{{0, 0, 5}, 1}, {}, {t}));
+    expect_rgb(centre_pixel(s), Rgb(0.0f));
+    // At level 2 the ray filters twice (two surfaces, one level: the second continued
+    // ray starts at level 1 too).
+    s.settings.max_trace_level = 2;
     expect_rgb(centre_pixel(s), Rgb(1.0f, 0.25f, 0.0f));
-    // With an IOR change the refracted ray needs a level: black at level 1.
+    // With an IOR change the refracted ray takes a level: still through at 2, but it
+    // leaves the sphere by a second refraction at level 2: black.
     Interior in;
     in.ior = 1.5f;
     s.objects[0].interior = in;

@@ -3,7 +3,10 @@
 // inside margin and normals.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
+#include <random>
 
 #include "trace/shapes/blob.h"
 
@@ -132,6 +135,83 @@ TEST(ShapeBlob, CylinderFieldAndBoxes) {
     EXPECT_EQ(centre.z, 0.0);
     EXPECT_NEAR(r2, 2.0, 1e-6);
     EXPECT_EQ(float(r2), float(Real(float(std::sqrt(2.0))) * float(std::sqrt(2.0))));
+}
+
+// Components at random: spheres, ellipsoids and cylinders turned every way, some
+// negative.
+std::vector<BlobElement> random_components(int n, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<Real> u(-1, 1);
+    std::vector<BlobElement> comps;
+    for (int i = 0; i < n; ++i) {
+        const Point3 at{4 * u(rng), 4 * u(rng), 4 * u(rng)};
+        const Real r = 0.3 + 0.4 * std::fabs(u(rng));
+        const Real strength = i % 7 == 3 ? -1.0 : 1.5 + u(rng);
+        const Vector3 turn{180 * u(rng), 180 * u(rng), 180 * u(rng)};
+        BlobElement e = sphere(at, r, strength);
+        if (i % 3 == 1) {
+            e.kind = BlobElementKind::Ellipsoid;
+            e.origin = {0, 0, 0};
+            e.transform = Transform::scale({1, 0.5 + std::fabs(u(rng)), 1.5})
+                              .then(Transform::rotate(turn))
+                              .then(Transform::translate(at));
+        } else if (i % 3 == 2) {
+            e.kind = BlobElementKind::Cylinder;
+            e.len = 0.5 + 2 * std::fabs(u(rng));
+            e.transform = Transform::rotate(turn).then(Transform::translate(at));
+        }
+        comps.push_back(e);
+    }
+    return comps;
+}
+
+TEST(ShapeBlob, TheTreeFindsWhatVisitingEveryElementFinds) {
+    // The hierarchy only leaves out elements the line or point cannot reach: the same
+    // bits as the blob without it, for hits, normals, the field and the nearest-only
+    // queries (which stop after the first interval giving a wanted hit).
+    const Blob with_tree = make(0.6, random_components(300, 7));
+    ASSERT_FALSE(with_tree.data->tree.empty());
+    Blob without = with_tree;
+    auto plain = std::make_shared<BlobData>(*with_tree.data);
+    plain->tree = BlobTree{};
+    without.data = plain;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<Real> u(-1, 1);
+    int hit_rays = 0;
+    for (int k = 0; k < 3000; ++k) {
+        // Origins outside and inside the cloud; directions of other lengths too.
+        const Real reach = k % 2 ? 12 : 4;
+        const Point3 o{reach * u(rng), reach * u(rng), reach * u(rng)};
+        const Point3 aim{3 * u(rng), 3 * u(rng), 3 * u(rng)};
+        const Vector3 d = (aim - o) * (k % 3 ? 1.0 : 0.37 / length(aim - o));
+        LocalRay r = ray(o, d);
+        ShapeHits a, b;
+        shape_hits(with_tree, r, a);
+        shape_hits(without, r, b);
+        ASSERT_EQ(a.size(), b.size()) << k;
+        for (size_t i = 0; i < a.size(); ++i) {
+            ASSERT_EQ(a[i].t, b[i].t) << k;
+            ASSERT_EQ(shape_normal(with_tree, a[i]).x, shape_normal(without, b[i]).x);
+        }
+        hit_rays += !a.empty();
+        if (a.empty()) continue;
+        r.nearest_only = true;
+        r.want_lo = a[0].t + 1e-9;
+        const auto wanted = std::find_if(
+            a.begin(), a.end(), [&](const ShapeHit& h) { return h.t >= r.want_lo; });
+        ShapeHits nearest;
+        shape_hits(with_tree, r, nearest);
+        Real best = kInfinity;
+        for (const ShapeHit& h : nearest)
+            if (h.t >= r.want_lo && h.t < r.want_hi) best = std::min(best, h.t);
+        ASSERT_EQ(best, wanted == a.end() ? kInfinity : wanted->t) << k;
+    }
+    EXPECT_GT(hit_rays, 500);
+    for (int k = 0; k < 3000; ++k) {
+        const Point3 p{5 * u(rng), 5 * u(rng), 5 * u(rng)};
+        EXPECT_EQ(blob_field(*with_tree.data, p), blob_field(*without.data, p));
+        EXPECT_EQ(shape_inside(with_tree, p), shape_inside(without, p));
+    }
 }
 
 }  // namespace

@@ -180,6 +180,51 @@ void insert_interval(std::vector<Event>& ev, int element, Real t0, Real t1) {
     ev.insert(ev.begin() + std::ptrdiff_t(j), {t1, element, true});
 }
 
+// The list insert_interval builds from the intervals in their order, in O(n log n): while
+// every interval has t0 < t1 the list stays sorted and each bound goes before the equal
+// ones already there, so the list is the bounds sorted, ties latest first. Otherwise
+// (a hemisphere's interval clamped behind the ray) the insertions themselves.
+struct Interval {
+    int element;
+    Real t0, t1;
+};
+void sort_intervals(const std::vector<Interval>& in, std::vector<Event>& ev) {
+    ev.clear();
+    const bool ordered =
+        std::all_of(in.begin(), in.end(), [](const Interval& i) { return i.t0 < i.t1; });
+    if (!ordered) {
+        for (const Interval& i : in) insert_interval(ev, i.element, i.t0, i.t1);
+        return;
+    }
+    thread_local std::vector<std::pair<Event, uint32_t>> keyed;
+    keyed.clear();
+    uint32_t seq = 0;
+    for (const Interval& i : in) {
+        keyed.push_back({{i.t0, i.element, false}, seq++});
+        keyed.push_back({{i.t1, i.element, true}, seq++});
+    }
+    std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+        return a.first.bound < b.first.bound ||
+               (a.first.bound == b.first.bound && a.second > b.second);
+    });
+    for (const auto& k : keyed) ev.push_back(k.first);
+}
+
+// The elements whose region the line P + t D may meet, in their stored order (the order
+// POV-Ray's list without the tree visits them, which the sums keep).
+const std::vector<uint32_t>& line_elements(const BlobData& d, const Point3& P,
+                                           const Vector3& D) {
+    thread_local std::vector<uint32_t> found;
+    found.clear();
+    if (d.tree.empty() || d.tree.element_count() != d.elements.size()) {
+        for (uint32_t i = 0; i < uint32_t(d.elements.size()); ++i) found.push_back(i);
+        return found;
+    }
+    d.tree.line_candidates(P, D, found);
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
 // The element's quartic along P + s D (D not unit: the blob's ray scaled to the span of
 // the intervals), highest power first.
 void element_coefficients(const BlobElement& e, const Point3& P, const Vector3& D,
@@ -296,9 +341,22 @@ Real blob_element_field(const BlobElement& e, const Point3& p) {
     return r2 * (r2 * e.c[0] + e.c[1]) + e.c[2];
 }
 
+void blob_elements_at(const BlobData& d, const Point3& p, std::vector<uint32_t>& out) {
+    out.clear();
+    if (d.tree.empty() || d.tree.element_count() != d.elements.size()) {
+        for (uint32_t i = 0; i < uint32_t(d.elements.size()); ++i) out.push_back(i);
+        return;
+    }
+    d.tree.point_candidates(p, out);
+    std::sort(out.begin(), out.end());
+}
+
 Real blob_field(const BlobData& d, const Point3& p) {
+    thread_local std::vector<uint32_t> near;
+    blob_elements_at(d, p, near);
     Real density = 0.0;
-    for (const BlobElement& e : d.elements) {
+    for (const uint32_t i : near) {
+        const BlobElement& e = d.elements[i];
         Real r2;
         Vector3 v;
         if (element_at(e, p, false, r2, v))
@@ -308,8 +366,11 @@ Real blob_field(const BlobData& d, const Point3& p) {
 }
 
 Vector3 blob_gradient(const BlobData& d, const Point3& p) {
+    thread_local std::vector<uint32_t> near;
+    blob_elements_at(d, p, near);
     Vector3 n{0, 0, 0};
-    for (const BlobElement& e : d.elements) {
+    for (const uint32_t i : near) {
+        const BlobElement& e = d.elements[i];
         Real r2;
         Vector3 v;
         if (!element_at(e, p, true, r2, v)) continue;
@@ -364,16 +425,17 @@ void shape_hits(const Blob& s, const LocalRay& r, ShapeHits& out) {
     const Real len = r.transformed ? r.length : 1.0;
     const Real mindist = kBlobDepthTolerance;
 
+    thread_local std::vector<Interval> intervals;
     thread_local std::vector<Event> ev;
     thread_local std::vector<Real> fcoeffs;
-    ev.clear();
-    const int n = int(d.elements.size());
-    for (int i = 0; i < n; ++i) {
+    intervals.clear();
+    for (const uint32_t i : line_elements(d, P, D)) {
         Real t0, t1;
-        if (element_interval(d.elements[size_t(i)], P, D, mindist, t0, t1))
-            insert_interval(ev, i, t0, t1);
+        if (element_interval(d.elements[i], P, D, mindist, t0, t1))
+            intervals.push_back({int(i), t0, t1});
     }
-    if (ev.empty()) return;
+    if (intervals.empty()) return;
+    sort_intervals(intervals, ev);
 
     // Start at the first interval; scale the ray so that the intervals span [0, 1].
     Real start = ev[0].bound;
@@ -389,7 +451,7 @@ void shape_hits(const Blob& s, const LocalRay& r, ShapeHits& out) {
         max_bound = 1;
     }
 
-    fcoeffs.resize(size_t(n) * 5);
+    fcoeffs.resize(d.elements.size() * 5);
     Real coeffs[5] = {0.0, 0.0, 0.0, 0.0, -d.threshold};
     const size_t first = out.size();
     int active = 0;
@@ -408,21 +470,27 @@ void shape_hits(const Blob& s, const LocalRay& r, ShapeHits& out) {
         // A neighbouring bound: take its change in before looking for roots.
         if (std::fabs(ev[i].bound - ev[i + 1].bound) < kEpsilon) continue;
         const Real lo = ev[i].bound, hi = ev[i + 1].bound;
+        // Every root from here on is at least this far (the distance grows with the
+        // root): past the wanted range, none is wanted.
+        if (r.nearest_only && (lo * max_bound + start) / len >= r.want_hi) break;
         if (hull_misses(coeffs, lo, hi - lo)) continue;
         Real roots[4];
         const int nroots = pov_solve_polynomial(4, coeffs, roots, s.sturm, 1.0e-11);
+        bool wanted = false;
         for (int j = 0; j < nroots; ++j) {
             const Real root = roots[j];
             if (!(root >= lo && root <= hi)) continue;
             const Real dist = (root * max_bound + start) / len;
             if (dist > kBlobDepthTolerance && dist < kMaxDistance) {
                 out.push_back({dist, r.origin + r.direction * dist, 0});
+                wanted = wanted || (dist >= r.want_lo && dist < r.want_hi);
             }
         }
         // POV-Ray stops here outside CSG once an interval gave a hit: the later ones are
         // farther, and it finds them again from a ray restarted at the hit (shadows
         // through a transparent blob). povwall follows one ray through every crossing, so
-        // it keeps them all.
+        // it keeps them all, unless the query wants only the nearest in its range.
+        if (wanted && r.nearest_only) break;
     }
     std::stable_sort(out.begin() + std::ptrdiff_t(first), out.end(),
                      [](const ShapeHit& a, const ShapeHit& b) { return a.t < b.t; });

@@ -19,6 +19,9 @@ constexpr Real kBlobInsideTolerance = 1e-6;
 
 // One element's field at a point in blob space (0 outside its region).
 Real blob_element_field(const BlobElement& e, const Point3& p);
+// The indices of the elements whose region may hold p (blob space), in their stored
+// order: the others' field there is zero.
+void blob_elements_at(const BlobData& d, const Point3& p, std::vector<uint32_t>& out);
 // The field at a point in blob space (the elements' sum in their stored order).
 Real blob_field(const BlobData& d, const Point3& p);
 // The field's gradient direction as POV-Ray's normal sums it (not normalised; (1, 0, 0)
@@ -34,6 +37,7 @@ Bounds3 shape_bounds(const Blob& s);
 PovBBox shape_pov_bbox(const Blob& s, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Blob&) { return true; }
 constexpr bool shape_convex(const Blob&) { return false; }
+constexpr bool shape_invertible(const Blob&) { return true; }
 bool shape_oracle_first(const Blob& s, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

@@ -40,6 +40,7 @@ Bounds3 shape_bounds(const Box& b);
 PovBBox shape_pov_bbox(const Box& b, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Box&) { return false; }
 constexpr bool shape_convex(const Box&) { return true; }
+constexpr bool shape_invertible(const Box&) { return true; }
 bool shape_oracle_first(const Box& b, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

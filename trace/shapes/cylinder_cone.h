@@ -25,6 +25,7 @@ Bounds3 shape_bounds(const Cylinder& c);
 PovBBox shape_pov_bbox(const Cylinder& c, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Cylinder&) { return true; }
 inline bool shape_convex(const Cylinder& c) { return !c.open; }
+constexpr bool shape_invertible(const Cylinder&) { return true; }
 bool shape_oracle_first(const Cylinder& c, const OracleRay& r, OracleBest& best);
 
 void shape_hits(const Cone& c, const LocalRay& r, ShapeHits& out);
@@ -34,6 +35,7 @@ Bounds3 shape_bounds(const Cone& c);
 PovBBox shape_pov_bbox(const Cone& c, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Cone&) { return true; }
 inline bool shape_convex(const Cone& c) { return !c.open; }
+constexpr bool shape_invertible(const Cone&) { return true; }
 bool shape_oracle_first(const Cone& c, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

@@ -21,6 +21,7 @@ Bounds3 shape_bounds(const Disc& d);
 PovBBox shape_pov_bbox(const Disc& d, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Disc&) { return true; }
 constexpr bool shape_convex(const Disc&) { return true; }
+constexpr bool shape_invertible(const Disc&) { return true; }
 bool shape_oracle_first(const Disc& d, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

@@ -28,6 +28,7 @@ Bounds3 shape_bounds(const HeightField& h);
 PovBBox shape_pov_bbox(const HeightField& h, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const HeightField&) { return true; }
 constexpr bool shape_convex(const HeightField&) { return false; }
+constexpr bool shape_invertible(const HeightField&) { return true; }
 bool shape_oracle_first(const HeightField& h, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

@@ -5,7 +5,7 @@
 
 #include "core/function.h"
 #include "trace/pattern.h"
-#include "trace/shapes/box.h"
+#include "trace/shapes/function_container.h"
 #include "trace/shapes/oracle_math.h"
 
 namespace povwall::trace {
@@ -14,32 +14,8 @@ namespace {
 constexpr Real kIsoBoundHuge = 2e10;  // BOUND_HUGE
 constexpr Real kIsoEpsilon = 1e-10;   // EPSILON
 
-// The container's span along o + t d (world distances; d the object-space direction, not
-// normalised) and the box faces there as POV-Ray's sides (1..6, 0: none).
-bool container_span(const Isosurface& s, const Point3& o, const Vector3& d, Real& t1,
-                    Real& t2, int& side1, int& side2) {
-    side1 = side2 = 0;
-    if (!s.sphere_container) {
-        int f1, f2;
-        if (!box_span_pov(s.corner1, s.corner2, o, d, t1, t2, f1, f2)) return false;
-        side1 = f1 + 1;
-        side2 = f2 + 1;
-        return true;
-    }
-    // Sphere::Intersect along the unit direction, then back to world distances.
-    const Real len = length(d);
-    const Vector3 u = d * (1.0 / len);
-    const Vector3 oc = s.centre - o;
-    const Real oc2 = dot(oc, oc);
-    const Real tca = dot(oc, u);
-    const Real r2 = s.radius * s.radius;
-    if (oc2 >= r2 && tca < kIsoEpsilon) return false;
-    const Real h2 = r2 - oc2 + tca * tca;
-    if (!(h2 > kIsoEpsilon)) return false;
-    const Real h = std::sqrt(h2);
-    t1 = (tca - h) / len;
-    t2 = (tca + h) / len;
-    return true;
+FunctionContainer container(const Isosurface& s) {
+    return {s.sphere_container, s.corner1, s.corner2, s.centre, s.radius};
 }
 
 struct Evaluator {
@@ -74,7 +50,19 @@ struct RootSearch {
         Real t, f;
     };
 
-    bool recurse(const Pair& a, const Pair& b, Real dt, Real w) {
+    // `evaluate` (POV-Ray's dynamic max_gradient): the parameters, null when not given.
+    const Real* eval = nullptr;
+    Real vlength = 0;
+
+    // `len` is 1 / the world length of [a, b]: |b.f - a.f| * len the gradient seen there.
+    bool recurse(const Pair& a, const Pair& b, Real dt, Real w, Real len, Real& maxg) {
+        if (eval) {
+            const Real seen = std::fabs((b.f - a.f) * len);
+            if (maxg < seen * eval[1]) {
+                maxg = seen * eval[1] * eval[1];
+                dt = maxg * vlength * w;
+            }
+        }
         if (w < accuracy) {
             if (b.f < 0) {
                 found = b.t;
@@ -88,14 +76,16 @@ struct RootSearch {
             Pair m;
             m.t = a.t + w;
             m.f = g(m.t);
-            if (!recurse(a, m, dt, w)) return recurse(m, b, dt, w);
+            if (!recurse(a, m, dt, w, len * 2.0, maxg))
+                return recurse(m, b, dt, w, len * 2.0, maxg);
             return true;
         }
         return false;
     }
 
-    bool find(Real& t1, Real t2, Real maxg, bool closed) {
-        const Real vlength = length(D);
+    // maxg: the ray's max_gradient, which `evaluate` changes for the rest of the ray.
+    bool find(Real& t1, Real t2, Real& maxg, bool closed) {
+        vlength = length(D);
         Pair a{t1, g(t1)};
         if (!closed && a.f < 0.0) {
             sign = -sign;
@@ -103,8 +93,10 @@ struct RootSearch {
         }
         const Pair b{t2, g(t2)};
         const Real w = t2 - t1;
+        // Above P0 the estimate first decays by P2.
+        if (eval && maxg > eval[0]) maxg = maxg * eval[2];
         const Real dt = maxg * vlength * w;
-        if (recurse(a, b, dt, w)) {
+        if (recurse(a, b, dt, w, 1.0 / (vlength * w), maxg)) {
             t1 = found;
             return true;
         }
@@ -120,19 +112,21 @@ Real isosurface_function(const Isosurface& s, const Point3& p) {
 
 namespace {
 
-// One POV-Ray All_Intersections along P + t D (world distances t).
-void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, ShapeHits& out) {
+// One POV-Ray All_Intersections along P + t D (world distances t). `maxg` is the
+// max_gradient the search starts from; with `evaluate` it is left at the ray's estimate.
+void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, Real& maxg,
+               ShapeHits& out) {
     Real depth1 = 0, depth2 = 0;
     int side1, side2;
-    if (!container_span(s, P, D, depth1, depth2, side1, side2)) return;
+    if (!container_span(container(s), P, D, depth1, depth2, side1, side2)) return;
     if (depth1 < 0.0) depth1 = 0.0;
     const Evaluator f(s);
     const Real acc = s.accuracy;
-    const Real maxg = s.max_gradient;
     const size_t first = out.size();
     auto push = [&](Real t, int side) { out.push_back({t, P + D * t, side}); };
     int itrace = 0;
     RootSearch search{f, P, D, acc};
+    if (s.evaluate) search.eval = s.eval_param;
     if (s.closed) {
         const Real f1 = f(P + D * depth1);
         if (depth1 > acc) {
@@ -177,7 +171,14 @@ void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, ShapeHits
 
 void shape_hits(const Isosurface& s, const LocalRay& r, ShapeHits& out) {
     const size_t first = out.size();
-    hits_once(s, r.origin, r.direction, out);
+    // With `evaluate` POV-Ray writes each search's final estimate back into the object
+    // (the larger of the two), shared by all later rays of every thread, so its image
+    // depends on the order of its rays. Here each ray starts from the parsed
+    // max_gradient (the same image in every mode); its restarts below start from its own
+    // estimate, as POV-Ray's restarted ray starts from the written-back one.
+    Real start = s.max_gradient;
+    Real reached = start;
+    hits_once(s, r.origin, r.direction, reached, out);
     if (r.csg_child) return;
     // Outside CSG POV-Ray looks past a hit (a shadow through a transparent isosurface)
     // with a ray restarted there, where povwall follows one ray: the restarts are made
@@ -186,7 +187,9 @@ void shape_hits(const Isosurface& s, const LocalRay& r, ShapeHits& out) {
     for (int restart = 0; restart < 32 && out.size() > first; ++restart) {
         const Real t0 = out.back().t;
         more.clear();
-        hits_once(s, r.origin + r.direction * t0, r.direction, more);
+        start = std::max(start, reached);
+        reached = start;
+        hits_once(s, r.origin + r.direction * t0, r.direction, reached, more);
         bool progressed = false;
         for (const ShapeHit& h : more) {
             if (!(h.t > 0)) continue;
@@ -229,26 +232,10 @@ bool shape_inside(const Isosurface& s, const Point3& p) {
     return !(Evaluator(s)(p) > 0);
 }
 
-Bounds3 shape_bounds(const Isosurface& s) {
-    if (s.sphere_container)
-        return {s.centre - Vector3(s.radius), s.centre + Vector3(s.radius)};
-    return {s.corner1, s.corner2};
-}
+Bounds3 shape_bounds(const Isosurface& s) { return container_bounds(container(s)); }
 
 PovBBox shape_pov_bbox(const Isosurface& s, const CompactTransform& xf) {
-    PovBBox b;
-    for (int a = 0; a < 3; ++a) {
-        if (s.sphere_container) {
-            b.lo[a] = float(s.centre[a] - s.radius);
-            b.len[a] = float(s.radius * 2);
-        } else {
-            b.lo[a] = float(s.corner1[a]);
-            b.len[a] = float(s.corner2[a] - s.corner1[a]);
-        }
-    }
-    // POV-Ray's isosurface always has a matrix: the box always goes through it.
-    return pov_bbox(pov_corners_bounds(pov_bbox_bounds(b),
-                                       [&](const Point3& p) { return xf.point(p); }));
+    return container_pov_bbox(container(s), xf);
 }
 
 bool shape_oracle_first(const Isosurface& s, const OracleRay& r, OracleBest& best) {

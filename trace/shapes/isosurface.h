@@ -24,6 +24,7 @@ Bounds3 shape_bounds(const Isosurface& s);
 PovBBox shape_pov_bbox(const Isosurface& s, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Isosurface&) { return true; }
 constexpr bool shape_convex(const Isosurface&) { return false; }
+constexpr bool shape_invertible(const Isosurface&) { return true; }
 // The first sign change of F inside the container, found by dense sampling (POV-Ray's
 // roots are only `accuracy` close to it).
 bool shape_oracle_first(const Isosurface& s, const OracleRay& r, OracleBest& best);

@@ -21,6 +21,7 @@ Bounds3 shape_bounds(const JuliaFractal& j);
 PovBBox shape_pov_bbox(const JuliaFractal& j, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const JuliaFractal&) { return true; }
 constexpr bool shape_convex(const JuliaFractal&) { return false; }
+constexpr bool shape_invertible(const JuliaFractal&) { return true; }
 // No oracle, for every algebra and function: the surface POV-Ray draws is what its march
 // finds (steps of at least 1 / precision, bisection to 1e-7, and for exp ... pwr a plain
 // iteration started from (x, y, y)), not the root of an equation a 50-digit solver could

@@ -30,6 +30,7 @@ Bounds3 shape_bounds(const Lathe& s);
 PovBBox shape_pov_bbox(const Lathe& s, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Lathe&) { return true; }
 constexpr bool shape_convex(const Lathe&) { return false; }
+constexpr bool shape_invertible(const Lathe&) { return true; }
 bool shape_oracle_first(const Lathe& s, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

@@ -24,6 +24,7 @@ Bounds3 shape_bounds(const Mesh& m);
 PovBBox shape_pov_bbox(const Mesh& m, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Mesh&) { return true; }
 constexpr bool shape_convex(const Mesh&) { return false; }
+constexpr bool shape_invertible(const Mesh&) { return true; }
 bool shape_oracle_first(const Mesh& m, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

@@ -27,6 +27,7 @@ Bounds3 shape_bounds(const Ovus& s);
 PovBBox shape_pov_bbox(const Ovus& s, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Ovus&) { return true; }
 constexpr bool shape_convex(const Ovus&) { return false; }
+constexpr bool shape_invertible(const Ovus&) { return true; }
 bool shape_oracle_first(const Ovus& s, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

@@ -20,6 +20,7 @@ Bounds3 shape_bounds(const Plane& p);  // everything
 PovBBox shape_pov_bbox(const Plane& p, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Plane&) { return false; }
 constexpr bool shape_convex(const Plane&) { return true; }
+constexpr bool shape_invertible(const Plane&) { return true; }
 bool shape_oracle_first(const Plane& p, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

@@ -37,6 +37,7 @@ Bounds3 shape_bounds(const Poly& s);                                // everythin
 PovBBox shape_pov_bbox(const Poly& s, const CompactTransform& xf);  // infinite
 constexpr bool shape_pov_tests_own_bbox(const Poly&) { return false; }
 constexpr bool shape_convex(const Poly&) { return false; }
+constexpr bool shape_invertible(const Poly&) { return true; }
 bool shape_oracle_first(const Poly& s, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

@@ -25,6 +25,7 @@ Bounds3 shape_bounds(const Prism& p);
 PovBBox shape_pov_bbox(const Prism& p, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Prism&) { return true; }
 constexpr bool shape_convex(const Prism&) { return false; }
+constexpr bool shape_invertible(const Prism&) { return true; }
 bool shape_oracle_first(const Prism& p, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

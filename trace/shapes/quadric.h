@@ -25,6 +25,7 @@ Bounds3 shape_bounds(const Quadric& q);
 PovBBox shape_pov_bbox(const Quadric& q, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Quadric&) { return true; }
 constexpr bool shape_convex(const Quadric&) { return false; }
+constexpr bool shape_invertible(const Quadric&) { return true; }
 bool shape_oracle_first(const Quadric& q, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

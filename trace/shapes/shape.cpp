@@ -68,6 +68,10 @@ bool leaf_convex(const Object& leaf) {
     return visit_leaf<bool>(leaf, [&](const auto& s) { return shape_convex(s); });
 }
 
+bool leaf_invertible(const Object& leaf) {
+    return visit_leaf<bool>(leaf, [&](const auto& s) { return shape_invertible(s); });
+}
+
 bool leaf_oracle_first(const Object& leaf, const OracleRay& r, OracleBest& best) {
     return visit_leaf<bool>(
         leaf, [&](const auto& s) { return shape_oracle_first(s, r, best); });

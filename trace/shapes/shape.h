@@ -21,6 +21,7 @@
 #include "trace/shapes/lathe.h"
 #include "trace/shapes/mesh.h"
 #include "trace/shapes/ovus.h"
+#include "trace/shapes/parametric.h"
 #include "trace/shapes/plane.h"
 #include "trace/shapes/poly.h"
 #include "trace/shapes/polygon.h"
@@ -56,6 +57,15 @@ PovBBox leaf_pov_bbox(const Object& leaf);
 bool leaf_pov_tests_own_bbox(const Object& leaf);
 // Whether the surface is convex or flat: it cannot shadow one of its own lit points.
 bool leaf_convex(const Object& leaf);
+// Whether POV-Ray's Invert turns the leaf inside out. Triangles, polygons, bicubic
+// patches and parametrics keep no inverted flag (their Invert does nothing): `inverse`
+// and a difference leave their inside (none) and their normal as they are.
+bool leaf_invertible(const Object& leaf);
+// Whether a difference's Invert_Object turns a child after the first inside out (a CSG
+// always; a leaf when it is invertible).
+inline bool difference_inverts(const Object& child) {
+    return std::holds_alternative<Csg>(child.shape) || leaf_invertible(child);
+}
 // The oracle's first accepted object-space t (false: the shape has no oracle).
 bool leaf_oracle_first(const Object& leaf, const OracleRay& r, OracleBest& best);
 

@@ -28,6 +28,7 @@ Bounds3 shape_bounds(const Sor& s);
 PovBBox shape_pov_bbox(const Sor& s, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Sor&) { return true; }
 constexpr bool shape_convex(const Sor&) { return false; }
+constexpr bool shape_invertible(const Sor&) { return true; }
 bool shape_oracle_first(const Sor& s, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

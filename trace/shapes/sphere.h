@@ -23,6 +23,7 @@ Bounds3 shape_bounds(const Sphere& s);
 PovBBox shape_pov_bbox(const Sphere& s, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Sphere&) { return false; }
 constexpr bool shape_convex(const Sphere&) { return true; }
+constexpr bool shape_invertible(const Sphere&) { return true; }
 bool shape_oracle_first(const Sphere& s, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

@@ -37,6 +37,7 @@ Bounds3 shape_bounds(const SphereSweep& s);
 PovBBox shape_pov_bbox(const SphereSweep& s, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const SphereSweep&) { return true; }
 constexpr bool shape_convex(const SphereSweep&) { return false; }
+constexpr bool shape_invertible(const SphereSweep&) { return true; }
 bool shape_oracle_first(const SphereSweep& s, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

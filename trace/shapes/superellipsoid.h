@@ -30,6 +30,7 @@ constexpr bool shape_pov_tests_own_bbox(const Superellipsoid&) { return true; }
 // Convex for e, n <= 2, but its sampled hits are not exact: a lit point may find its own
 // surface again, as POV-Ray does, so it is never treated as convex.
 constexpr bool shape_convex(const Superellipsoid&) { return false; }
+constexpr bool shape_invertible(const Superellipsoid&) { return true; }
 bool shape_oracle_first(const Superellipsoid& s, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

@@ -29,6 +29,7 @@ Bounds3 shape_bounds(const Glyph& g);
 PovBBox shape_pov_bbox(const Glyph& g, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Glyph&) { return true; }
 constexpr bool shape_convex(const Glyph&) { return false; }
+constexpr bool shape_invertible(const Glyph&) { return true; }
 bool shape_oracle_first(const Glyph& g, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

@@ -29,6 +29,7 @@ Bounds3 shape_bounds(const Torus& t);
 PovBBox shape_pov_bbox(const Torus& t, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Torus&) { return true; }
 constexpr bool shape_convex(const Torus&) { return false; }
+constexpr bool shape_invertible(const Torus&) { return true; }
 bool shape_oracle_first(const Torus& t, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

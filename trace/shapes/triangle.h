@@ -33,6 +33,7 @@ Bounds3 shape_bounds(const Triangle& t);
 PovBBox shape_pov_bbox(const Triangle& t, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Triangle&) { return false; }
 constexpr bool shape_convex(const Triangle&) { return true; }
+constexpr bool shape_invertible(const Triangle&) { return false; }
 bool shape_oracle_first(const Triangle& t, const OracleRay& r, OracleBest& best);
 
 void shape_hits(const SmoothTriangle& t, const LocalRay& r, ShapeHits& out);
@@ -43,6 +44,7 @@ PovBBox shape_pov_bbox(const SmoothTriangle& t, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const SmoothTriangle&) { return false; }
 // Its shading normals bend: a lit point can face away from the light.
 constexpr bool shape_convex(const SmoothTriangle&) { return false; }
+constexpr bool shape_invertible(const SmoothTriangle&) { return false; }
 bool shape_oracle_first(const SmoothTriangle& t, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace
