@@ -454,7 +454,14 @@ bool spawn_blob_blend(const PreparedScene& scene, const TraceRay& ray, const Hit
     thread_local std::vector<float> w;
     const int n =
         blob_texture_weights(*b, hit.point, scene.scene().settings.adc_bailout, mats, w);
-    spawn_weighted(scene, ray, hit, mats.data(), w.data(), n, out);
+    if (!scene.scene().settings.radiosity) {
+        spawn_weighted(scene, ray, hit, mats.data(), w.data(), n, out);
+        return true;
+    }
+    // Under radiosity the entries' shading may come back here for another blob.
+    const std::vector<const Material*> own_mats(mats.begin(), mats.begin() + n);
+    const std::vector<float> own_w(w.begin(), w.begin() + n);
+    spawn_weighted(scene, ray, hit, own_mats.data(), own_w.data(), n, out);
     return true;
 }
 
@@ -501,6 +508,33 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
 }
 
 namespace {
+
+// The lists spawn_hit fills for one hit (kept per thread so that a ray allocates
+// nothing), one set per nesting level: under radiosity, spawn_hit runs again for the
+// sample rays' hits while the outer hit's lists are in use.
+struct ShadingScratch {
+    std::vector<Rgb> lit;
+    std::vector<LightSample> samples;
+    std::vector<uint8_t> sample_ok;
+    std::vector<std::pair<size_t, Vector3>> reflection_normals;
+    std::vector<const Photon*> found_photons;
+};
+thread_local std::deque<ShadingScratch> shading_scratch_pool;  // deque: no moves
+thread_local size_t shading_nesting = 0;
+
+ShadingScratch& shading_scratch() {
+    if (shading_scratch_pool.size() <= shading_nesting)
+        shading_scratch_pool.resize(shading_nesting + 1);
+    return shading_scratch_pool[shading_nesting];
+}
+
+// Holds the current nesting level's scratch while it lives.
+struct ScratchLevel {
+    ScratchLevel() { ++shading_nesting; }
+    ~ScratchLevel() { --shading_nesting; }
+    ScratchLevel(const ScratchLevel&) = delete;
+    ScratchLevel& operator=(const ScratchLevel&) = delete;
+};
 
 void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                ShadingRecord& out, const MediaShadows& shadows, bool with_fog) {
@@ -555,9 +589,13 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     const int nlayers = m.plain ? 1 : int(layers->size());
     const size_t nlights = sc.lights.size();
 
-    thread_local std::vector<Rgb> lit;
-    thread_local std::vector<LightSample> samples;
-    thread_local std::vector<uint8_t> sample_ok;
+    // Per nesting level: a radiosity gather in the layer loop shades its sample rays'
+    // hits with this same function before this hit's lights are added up.
+    ShadingScratch& scratch = shading_scratch();
+    const ScratchLevel level_guard;
+    std::vector<Rgb>& lit = scratch.lit;
+    std::vector<LightSample>& samples = scratch.samples;
+    std::vector<uint8_t>& sample_ok = scratch.sample_ok;
     lit.assign(nlights, Rgb{});
     samples.resize(nlights);
     sample_ok.assign(nlights, 2);  // 2: not computed yet
@@ -568,7 +606,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     const Finish* top_finish = nullptr;  // the top layer's (total internal reflection)
     // Each reflection child with its layer's normal: total internal reflection drops
     // those of the layers whose normal is the top layer's (POV-Ray 3.7).
-    thread_local std::vector<std::pair<size_t, Vector3>> reflection_normals;
+    std::vector<std::pair<size_t, Vector3>>& reflection_normals =
+        scratch.reflection_normals;
     reflection_normals.clear();
     // The photon map, when the surface collects photons (`collect` on, lit by the
     // global lights that shot them).
@@ -576,7 +615,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     if (photons && (photons->size() == 0 || !m.global_lights ||
                     (m.object && !m.object->photons.collect)))
         photons = nullptr;
-    thread_local std::vector<const Photon*> found_photons;
+    std::vector<const Photon*>& found_photons = scratch.found_photons;
     found_photons.clear();
     bool gathered = false;
     double photon_radius = 0;
