@@ -124,6 +124,36 @@ TEST(RadiosityCache, ReusesNearbyEntriesWithPovRaysWeights) {
     EXPECT_EQ(d.weights, 0);
 }
 
+// Which entries a lookup sees at all is POV-Ray's octree rule: an entry of depth 1 with
+// harmonic mean 1 is filed by radius 1 x 3.6 / 8 = 0.45 (diameter 0.9: side 0.5, whose
+// widened box [-0.25, 0.75] does not hold [-0.45, 0.45], so its parent, side 1, around
+// [0, 1]); a lookup sees it from (-0.5, 1.5) on each axis only, although the reuse rule
+// (error bound 3.6) would take it from 3.6 away.
+TEST(RadiosityCache, SeesDeeperEntriesThroughPovRaysOctreeNodes) {
+    IrradianceCache cache({1.8, 3.6 / 8});
+    CacheEntry e = entry_at({0, 0, 0}, {0, 1, 0}, 1, Rgb(1, 0, 0));
+    e.depth = 1;
+    cache.insert(e);
+    auto weight_at = [&](double x) {
+        Reuse r;
+        cache.accumulate({x, 0, 0}, {0, 1, 0}, 3.6, 1, false, r);
+        return r.weights;
+    };
+    EXPECT_NEAR(weight_at(1.4), 1 - 1.4 / 3.6, 1e-9);
+    EXPECT_NEAR(weight_at(-0.4), 1 - 0.4 / 3.6, 1e-9);
+    EXPECT_EQ(weight_at(-0.6), 0);  // within the error bound, outside the node
+    EXPECT_EQ(weight_at(1.6), 0);
+    // At the top level (address factor 1.8, no overfill) every entry within the error
+    // bound is seen: radius 1.8, side 2 (widened box [-1, 3]) is too small, side 4 holds.
+    IrradianceCache top({1.8});
+    top.insert(entry_at({0, 0, 0}, {0, 1, 0}, 1, Rgb(1, 0, 0)));
+    for (double x : {-1.7, 1.7}) {
+        Reuse r;
+        top.accumulate({x, 0, 0}, {0, 1, 0}, 1.8, 0, false, r);
+        EXPECT_NEAR(r.weights, 1 - 1.7 / 1.8, 1e-9) << x;
+    }
+}
+
 TEST(RadiosityPretrace, StepSizesArePovRays) {
     RadiositySettings s;  // 0.08 .. 0.04
     EXPECT_EQ(pretrace_sizes(s, 160, 120), (std::vector<double>{12.8, 6.4}));

@@ -3,11 +3,16 @@
 // (RadiosityCache::AverageNearBlock): which samples near a point may stand for it, and
 // their weighted average.
 //
-// Entries are filed in a grid per radius of influence (levels of cells of size 2^L, an
-// entry in the cell of its point at the smallest level whose cells are at least its
-// radius); a lookup visits the 27 cells around the point at each level in use. Lookups
-// visit levels, cells and each cell's entries in a fixed order, so the sum (and the
-// image) depends only on what was inserted in which order, never on threads.
+// Which entries a lookup considers at all is POV-Ray's octree rule (octree.cpp): an entry
+// is filed in the node of its sphere of influence (its harmonic mean distance times the
+// depth's address factor), the smallest cube of side 2^L, L from the float exponent of
+// the sphere's diameter, whose box widened by half a side on every face holds the
+// sphere; a lookup sees the entries of the nodes whose widened box holds the point. At
+// the top level that is every entry the reuse rule can accept; deeper (address factor
+// error bound / 8) only the near ones, so deeper bounces gather more often than a plain
+// distance search would let them. Nodes are kept in a hash map per (level, depth); a
+// lookup visits levels, nodes and each node's entries in a fixed order, so the sum (and
+// the image) depends only on what was inserted in which order, never on threads.
 #pragma once
 
 #include <cstdint>
@@ -58,7 +63,7 @@ class IrradianceCache {
 
   private:
     struct CellKey {
-        int32_t x, y, z;
+        int64_t x, y, z;
         int16_t level;
         uint8_t depth;
         bool operator==(const CellKey&) const = default;
@@ -66,7 +71,8 @@ class IrradianceCache {
     struct CellHash {
         size_t operator()(const CellKey& k) const;
     };
-    static int level_for(double radius);
+    // The octree node of a sphere (POV-Ray's ot_index_sphere).
+    static CellKey node_of(const Point3& centre, double radius, uint8_t depth);
     std::vector<double> address_factors_;
     std::vector<CacheEntry> entries_;
     std::unordered_map<CellKey, std::vector<uint32_t>, CellHash> cells_;
