@@ -34,9 +34,11 @@ using namespace radiosity;
 constexpr double kWeightErrorBoundOffset = 0.25;  // low weights loosen the error bound
 constexpr double kPovEpsilonWeight = 1e-10;
 
-// Where in the direction pool a gather at P starts: a hash of the point, so that
-// neighbouring gathers use different runs of the pool (POV-Ray continues one sequence
-// per thread; ours depends only on the point).
+// Where in the direction pool a render block's first gather of a depth starts: a hash
+// of its point. The block's later gathers of that depth continue the sequence, as
+// POV-Ray's do (one sequence per thread and depth), so neighbouring gathers use
+// consecutive runs of the low-discrepancy pool, which complement each other where the
+// cache averages them; ours restarts per block, so a pixel depends on its block only.
 size_t pool_start(const Point3& P, int depth, size_t pool) {
     uint64_t h = 0x2545f4914f6cdd1dull * uint64_t(depth + 1);
     for (Real v : {P.x, P.y, P.z}) {
@@ -67,6 +69,7 @@ class DirectionRun {
         x_ = normalize(cross(y_, off));
         z_ = normalize(cross(x_, y_));
     }
+    size_t position() const { return next_; }
     bool next(Vector3& dir) {
         while (left_ > 0) {
             --left_;
@@ -100,6 +103,9 @@ RadiosityGatherer::RadiosityGatherer(Tracer& tracer, const RadiosityFrame& frame
       pass_(pass),
       error_bound_(frame.settings.error_bound) {
     if (pass != kFinalPass) error_bound_ *= frame.settings.low_error_factor;
+    const size_t depths = size_t(std::max(1, frame.settings.recursion_limit)) + 1;
+    next_direction_.assign(depths, 0);
+    direction_fresh_.assign(depths, 1);
 }
 
 Rgb RadiosityGatherer::ambient(const TraceRay& ray, const Point3& P,
@@ -161,9 +167,15 @@ double RadiosityGatherer::gather(const TraceRay& ray, const Point3& P,
 
     const double saved_quality = quality_;
     bool raw_mode = similar(raw_normal, normal);
-    const size_t start = pool_start(P, depth, pool);
-    DirectionRun run(frame_.directions, start, raw_mode ? raw_normal : normal, raw_normal,
-                     raw_mode, raw_mode ? pool : std::min(count * 5, pool));
+    // By index: the sample rays' own gathers (one depth down) run in between.
+    const size_t d = size_t(depth);
+    if (direction_fresh_[d]) {
+        next_direction_[d] = pool_start(P, depth, pool);
+        direction_fresh_[d] = 0;
+    }
+    DirectionRun run(frame_.directions, next_direction_[d],
+                     raw_mode ? raw_normal : normal, raw_normal, raw_mode,
+                     raw_mode ? pool : std::min(count * 5, pool));
     Rgb sum;
     double quality_sum = 0, inverse_distance_sum = 0;
     double smallest = kInfinity;
@@ -174,8 +186,8 @@ double RadiosityGatherer::gather(const TraceRay& ray, const Point3& P,
         bool got = run.next(dir);
         if (!got && !raw_mode) {
             raw_mode = true;
-            run = DirectionRun(frame_.directions, start, raw_normal, raw_normal, true,
-                               pool);
+            run = DirectionRun(frame_.directions, run.position(), raw_normal, raw_normal,
+                               true, pool);
             got = run.next(dir);
         }
         if (!got) break;
@@ -206,6 +218,7 @@ double RadiosityGatherer::gather(const TraceRay& ray, const Point3& P,
         }
         inverse_distance_sum += 1 / hit_depth;
     }
+    next_direction_[d] = run.position() % pool;
     illuminance = quality_sum == 0 ? sum : sum * float(1 / quality_sum);
     const double quality = ok > 0 ? quality_sum / double(ok) : 0;
     quality_ = std::max(saved_quality, quality);

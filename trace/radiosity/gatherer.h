@@ -54,7 +54,10 @@ class RadiosityGatherer {
                       const radiosity::IrradianceCache* cache, int pass);
     // Pretrace: a new render block starts; its entries go to `block` (cleared by the
     // caller, read by the lookups too).
-    void begin_block(radiosity::IrradianceCache* block) { block_ = block; }
+    void begin_block(radiosity::IrradianceCache* block) {
+        block_ = block;
+        restart_directions();
+    }
     // Whether a hit of `ray` gathers radiosity (its recursion depth is below the limit).
     bool active_for(const TraceRay& ray) const {
         return ray.radiosity_depth < frame_.settings.recursion_limit;
@@ -68,9 +71,11 @@ class RadiosityGatherer {
     void begin_final_block() {
         final_block_.clear();
         block_ = &final_block_;
+        restart_directions();
     }
 
   private:
+    void restart_directions() { direction_fresh_.assign(direction_fresh_.size(), 1); }
     double gather(const TraceRay& ray, const Point3& P, const Vector3& raw_normal,
                   const Vector3& normal, Rgb& illuminance);
 
@@ -86,6 +91,10 @@ class RadiosityGatherer {
     // surfaces counts less).
     double quality_ = 1;
     uint64_t gathers_ = 0;
+    // Per radiosity depth: where the block's next gather reads the direction pool, and
+    // whether the block has gathered at that depth yet.
+    std::vector<size_t> next_direction_;
+    std::vector<uint8_t> direction_fresh_;
 };
 
 }  // namespace povwall::trace
