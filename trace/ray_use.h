@@ -97,8 +97,7 @@ constexpr RayUse transmitted_use(RayUse u) {
 // A frame object's flags as POV-Ray tests them on the objects it links to the scene (a
 // light's looks_like object: the light's, no_shadow alone).
 struct FrameFlags {
-    bool no_shadow = false, no_image = false, no_reflection = false,
-         no_radiosity = false;
+    bool no_shadow = false, no_image = false, no_reflection = false, no_radiosity = false;
 };
 
 // Whether a ray of these flags passes by a frame object with these flags (POV-Ray's

@@ -1,4 +1,4 @@
-// golden-args: --block-mean 8 --max-rmse 0.03 --fail 0.07 --max-bad-fraction 0
+// golden-args: --block-mean 8 --max-rmse 0.03 --fail 0.06 --max-bad-fraction 0
 // Radiosity from emission: no light source; a glowing sphere (finish emission, no
 // diffuse) is the only source, and a no_radiosity glowing disc shows in the image but
 // not in the sample rays. The objects' `ambient` is ignored under radiosity (#version

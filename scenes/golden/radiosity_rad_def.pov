@@ -1,4 +1,4 @@
-// golden-args: --block-mean 8 --max-rmse 0.03 --fail 0.05 --max-bad-fraction 0
+// golden-args: --block-mean 8 --max-rmse 0.03 --fail 0.02 --max-bad-fraction 0
 // rad_def.inc's Rad_Settings macro, as OpenSCAD's export uses it (there with
 // Radiosity_Normal; Radiosity_Fast here keeps the test fast): its settings come in
 // through the macro, inside the radiosity block. A #version 3.6 scene: `ambient` still

@@ -1,4 +1,4 @@
-// golden-args: --block-mean 8 --max-rmse 0.03 --fail 0.05 --max-bad-fraction 0
+// golden-args: --block-mean 8 --max-rmse 0.03 --fail 0.04 --max-bad-fraction 0
 // Radiosity outdoors: no light source, only a sky_sphere (a gradient from the horizon
 // up) whose light the sample rays gather; objects on a ground plane are lit from the
 // sky and shade each other where they are close (the sky is occluded). A recursion limit
