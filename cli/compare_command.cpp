@@ -59,13 +59,18 @@ using Clock = std::chrono::steady_clock;
 }  // namespace
 
 void add_diff_threshold_options(CLI::App& app, output::DiffThresholds& t) {
+    // Given twice, the last wins: a golden scene's `// golden-args:` line overrides the
+    // suite's thresholds (stochastic scenes compared by block means).
     app.add_option("--max-rmse", t.max_rmse, "largest RMSE that passes")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     app.add_option("--max-bad-fraction", t.max_bad_fraction,
                    "largest fraction of bad pixels that passes")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     app.add_option("--fail", t.fail, "per-channel difference making a pixel bad")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 }
 
 int parse_with_pov_switches(CLI::App& app, int argc, char** argv, RenderOptions& o,

@@ -68,7 +68,7 @@ std::string cache_key(const RenderOptions& o, const std::vector<std::string>& cm
     }
     random = std::any_of(scene.lights.begin(), scene.lights.end(),
                          [](const Light& l) { return l.area && l.area->jitter; }) ||
-             scene.settings.photons.has_value() ||
+             scene.settings.photons.has_value() || scene.settings.radiosity.has_value() ||
              std::any_of(scene.rainbows.begin(), scene.rainbows.end(),
                          [](const Rainbow& r) { return r.jitter > 0; });
     uint64_t h = 1469598103934665603ull;

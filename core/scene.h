@@ -268,6 +268,9 @@ struct Finish {
     Rgb emission{0.0f};
     float diffuse = 0.6f, brilliance = 1.0f, crand = 0.0f;
     float diffuse_back = 0.0f;  // `diffuse a, b`: light arriving from behind the surface
+    // diffuse and diffuse back before `albedo` scaled them (POV-Ray's RawDiffuse: what
+    // radiosity's ambient light is multiplied by).
+    float raw_diffuse = 0.6f, raw_diffuse_back = 0.0f;
     float phong = 0.0f, phong_size = 40.0f;
     float specular = 0.0f, roughness = 0.05f;
     float metallic = 0.0f;
@@ -828,6 +831,9 @@ struct Object {
     bool hollow = false;
     bool hollow_given = false;  // `hollow` was written on it (a CSG's then leaves it)
     bool no_shadow = false, no_image = false, no_reflection = false;
+    bool no_radiosity = false;  // radiosity sample rays pass through it
+    // radiosity { importance } (<= 0: the scene's default importance).
+    float radiosity_importance = 0;
     bool double_illuminate = false;
     // `uv_mapping` on the object (POV-Ray's UV_FLAG): its textures are evaluated at the
     // hit's surface coordinates (u, v, 0), and its transforms do not move them.
@@ -1021,6 +1027,29 @@ struct PhotonSettings {
     SourceLoc loc;  // the `photons` keyword
 };
 
+// global_settings { radiosity { } } (POV-Ray 3.7's SceneRadiositySettings with its
+// defaults; the block turns radiosity on, from +Q9). trace/radiosity/ renders it.
+struct RadiositySettings {
+    double brightness = 1;
+    int count = 35;
+    int direction_pool = 1600;  // count's second value: the sample direction set's size
+    double error_bound = 1.8;
+    double gray_threshold = 0;
+    double low_error_factor = 0.5;
+    double minimum_reuse = 0.015;
+    double maximum_reuse = 0.2;
+    int nearest_count = 5;
+    int nearest_count_pretrace = 0;  // nearest_count's second value (adaptive pretrace)
+    int recursion_limit = 2;
+    double max_sample = -1;  // <= 0: no limit
+    double adc_bailout = 0.01;
+    bool normal = false, media = false, subsurface = false;
+    double pretrace_start = 0.08, pretrace_end = 0.04;
+    bool always_sample = false;
+    float default_importance = 1;  // #default { radiosity { importance } }
+    SourceLoc loc;                 // the `radiosity` keyword
+};
+
 struct GlobalSettings {
     int max_trace_level = 5;
     float adc_bailout = 1.0f / 255.0f;
@@ -1035,6 +1064,8 @@ struct GlobalSettings {
     int number_of_waves = 10;
     // A photons block with gather_max > 0 (POV-Ray's photonsEnabled before +Q).
     std::optional<PhotonSettings> photons;
+    // A radiosity block (POV-Ray's radiosityEnabled before +Q).
+    std::optional<RadiositySettings> radiosity;
 };
 
 // What an interior stack needs of a node of an object the parse left out (see

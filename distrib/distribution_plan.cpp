@@ -490,6 +490,19 @@ DistributionPlan plan_distribution(const Scene& scene,
                                 "(black boxes hold parts of the scene; the photon map "
                                 "needs the whole): use --mode single or screen");
     }
+    if (const auto& rad = scene.settings.radiosity) {
+        // The irradiance cache is filled by rays through the whole scene and read
+        // everywhere; black boxes hold parts of the scene.
+        std::string at;
+        if (rad->loc.valid() && size_t(rad->loc.file) < scene.files.size())
+            at = scene.files[size_t(rad->loc.file)] + ":" +
+                 std::to_string(rad->loc.line) + ":" + std::to_string(rad->loc.column) +
+                 ": ";
+        throw UnsupportedInMode(at +
+                                "error: unsupported: radiosity with space subdivision "
+                                "(black boxes hold parts of the scene; the irradiance "
+                                "cache needs the whole): use --mode single or screen");
+    }
     plan.mode = RenderMode::Space;
     // Worker processes: those asked for; in auto mode, as many as the budget needs (a
     // scene over the budget cannot be in one process, this one included).

@@ -227,6 +227,11 @@ class Interpreter {
     // The global photons keyword, and the first parallel or cylinder light (photons.cpp).
     std::optional<Token> photons_at_, first_parallel_light_;
     void check_photons();
+    // The global radiosity keyword (radiosity.cpp).
+    std::optional<Token> radiosity_at_;
+    void parse_radiosity_settings(const Token& at);
+    void parse_object_radiosity(Object& obj);
+    void check_radiosity();
     CameraSpec parse_camera_block();
     // The rest of a camera block read as POV-Ray read it before 3.5, from `c`.
     CameraSpec parse_legacy_camera(CameraSpec c);

@@ -358,7 +358,7 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
     } else if (w == "no_reflection") {
         obj.no_reflection = parse_bool_opt();
     } else if (w == "no_radiosity") {
-        parse_bool_opt();  // radiosity rays: povwall renders no radiosity
+        obj.no_radiosity = parse_bool_opt();
     } else if (w == "dtag") {
         parse_string();  // a debugging tag: POV-Ray's release builds drop it
     } else if (w == "hierarchy") {
@@ -488,15 +488,7 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
     } else if (w == "photons") {
         parse_object_photons(obj);
     } else if (w == "radiosity") {
-        // Radiosity hints on an object do not change a render without radiosity.
-        expect_punct('{');
-        int depth = 1;
-        while (depth > 0) {
-            Token s = next();
-            if (s.kind == TokenKind::End) expected("'}'", s);
-            if (is_punct(s, '{')) ++depth;
-            if (is_punct(s, '}')) --depth;
-        }
+        parse_object_radiosity(obj);
     } else if (w == "split_union") {
         // How POV-Ray links a union: whole, its children keep their bounded_by.
         const Csg* csg = std::get_if<Csg>(&obj.shape);
@@ -918,6 +910,9 @@ void Interpreter::place_object(Object& obj, const Object* parent,
         obj.no_shadow |= parent->no_shadow;
         obj.no_image |= parent->no_image;
         obj.no_reflection |= parent->no_reflection;
+        obj.no_radiosity |= parent->no_radiosity;
+        if (obj.radiosity_importance <= 0)
+            obj.radiosity_importance = parent->radiosity_importance;
         inherit_photons(obj.photons, parent->photons);
     }
     if (obj.texture.empty()) obj.texture.push_back(default_texture_);

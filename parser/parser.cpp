@@ -145,6 +145,7 @@ Scene Interpreter::run(int root_file) {
     finish_version_state();
     settle_isosurfaces();
     check_photons();
+    check_radiosity();
     // A camera normal's patterns read the final settings too.
     scene_.camera.normal_noise_generator = scene_.settings.noise_generator;
     scene_.camera.normal_number_of_waves = scene_.settings.number_of_waves;

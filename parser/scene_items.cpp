@@ -572,7 +572,9 @@ void Interpreter::parse_global_settings() {
             parse_bool_opt();
         } else if (w == "photons") {
             parse_photon_settings(t);
-        } else if (w == "radiosity" || w == "subsurface" || w == "mm_per_unit") {
+        } else if (w == "radiosity") {
+            parse_radiosity_settings(t);
+        } else if (w == "subsurface" || w == "mm_per_unit") {
             unsupported(t, w);
         } else {
             expected("a global setting or '}'", t);

@@ -1093,6 +1093,8 @@ void Interpreter::parse_finish_into(Finish& f) {
             expected("a finish item or '}'", t);
         }
     }
+    f.raw_diffuse = f.diffuse;
+    f.raw_diffuse_back = f.diffuse_back;
     if (diffuse_albedo) {
         f.diffuse *= (f.brilliance + 1) / 2;
         f.diffuse_back *= (f.brilliance + 1) / 2;

@@ -408,7 +408,8 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
             const size_t first_material = materials_.size();
             add_frame_object(o, frames_known && first ? frames.of_light[l] : ~0u);
             const FrameFlags flags{true, slab_tree && o.no_image,
-                                   slab_tree && o.no_reflection};
+                                   slab_tree && o.no_reflection,
+                                   slab_tree && o.no_radiosity};
             for (size_t i = first_material; i < materials_.size(); ++i)
                 materials_[i].frame = flags;
             first = false;
@@ -555,7 +556,8 @@ Material material_of(const Object& o, const LayeredTexture& texture) {
     m.interior = o.interior ? &*o.interior : nullptr;
     m.object = &o;
     m.interior_id = interior_key(o);
-    m.frame = FrameFlags{o.no_shadow, o.no_image, o.no_reflection};
+    m.frame = FrameFlags{o.no_shadow, o.no_image, o.no_reflection, o.no_radiosity};
+    m.radiosity_importance = o.radiosity_importance;
     m.double_illuminate = o.double_illuminate;
     m.uv_mapping = o.uv_mapping;
     m.global_lights = o.global_lights;
@@ -1069,13 +1071,15 @@ bool PreparedScene::pov_takes(const Material& candidate, const Material& nearest
 }
 
 bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use,
-                                Hit& hit, RayContext& ctx) const {
+                                Hit& hit, RayContext& ctx, bool radiosity_ray) const {
     bool found = false;
     const PovRayOnce pov_ray(ray);
     // Materials are only looked at when some object hides from this kind of ray or at a
     // tie: a sphere's candidate hit then costs no load of its (large) material.
-    const bool may_hide = hides_[size_t(use)];
-    const RayFlags flags = ray_flags(use);
+    RayFlags flags = ray_flags(use);
+    flags.radiosity = flags.radiosity || radiosity_ray;
+    const bool may_hide =
+        hides_[size_t(use)] || (flags.radiosity && hides_[size_t(RayUse::Radiosity)]);
     auto hidden = [&](uint32_t material) {
         return may_hide && frame_hides(materials_[material].frame, flags);
     };

@@ -20,6 +20,11 @@
 
 namespace povwall::trace {
 
+class RadiosityGatherer;
+namespace radiosity {
+struct RadiosityRender;
+}
+
 // What a ray may see of an object, and where its surface description lives.
 // Which interior an object has, for the interior stack: the parser's number of the
 // interior (shared by a CSG's children, see Interior::id), or for a scene built without
@@ -44,6 +49,7 @@ struct Material {
     // passes the whole object by. Inside a CSG each node tests its children's flags by
     // its own rule (csg_skips()).
     FrameFlags frame;
+    float radiosity_importance = 0;  // Object::radiosity_importance (<= 0: the default)
     bool double_illuminate = false;
     // Object::uv_mapping: its patterns are evaluated at the hit's (u, v, 0).
     bool uv_mapping = false;
@@ -159,6 +165,9 @@ struct RayContext {
     // Per light: the primitive that last blocked a shadow ray toward it. Neighbouring
     // points are usually shadowed by the same object, so it is tried first.
     std::vector<uint32_t> last_blocker;
+    // The radiosity of the thread tracing with this context (trace/radiosity/gatherer.h);
+    // null: none (no radiosity, or black boxes).
+    RadiosityGatherer* radiosity = nullptr;
 };
 
 struct RenderProgress;
@@ -204,16 +213,23 @@ class PreparedScene {
     // tracing; null: no photons.
     const PhotonMap* photons() const { return photons_.get(); }
     void set_photons(std::shared_ptr<const PhotonMap> map) { photons_ = std::move(map); }
+    // The frame's radiosity pretrace (trace/radiosity/pretrace.h): the cache every
+    // tracer made after it is set reads; null: no radiosity.
+    const radiosity::RadiosityRender* radiosity() const { return radiosity_.get(); }
+    void set_radiosity(std::shared_ptr<const radiosity::RadiosityRender> r) {
+        radiosity_ = std::move(r);
+    }
     void init_context(RayContext& ctx) const {
         ctx.mailbox.resize(kind_.size());
         ctx.last_blocker.assign(scene_.lights.size(), ~0u);
     }
 
     // Nearest hit with t in (t_min, t_max), never closer than MIN_ISECT_DEPTH (1e-4),
-    // respecting no_image / no_reflection / no_shadow as POV-Ray does for a ray of this
-    // use (ray_use.h).
+    // respecting no_image / no_reflection / no_shadow / no_radiosity as POV-Ray does for
+    // a ray of this use (ray_use.h). `radiosity_ray`: the ray is, or was spawned under, a
+    // radiosity sample ray (POV-Ray's radiosity flag, which its child rays keep).
     bool closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use, Hit& hit,
-                     RayContext& ctx) const;
+                     RayContext& ctx, bool radiosity_ray = false) const;
 
     // Shadow-ray fast path: true if an opaque, shadow-casting surface lies in (t_min,
     // t_max). Sets `transparent` when a see-through surface was met there (the caller
@@ -298,6 +314,7 @@ class PreparedScene {
     PatternEnv env_;
     bool alpha_background_ = false;
     std::shared_ptr<const PhotonMap> photons_;
+    std::shared_ptr<const radiosity::RadiosityRender> radiosity_;
     std::vector<Material> materials_;  // reserved up front: pointers stay valid
     // Per RayUse: whether any frame object hides from that kind of ray.
     std::array<bool, kRayUses> hides_{};

@@ -1,4 +1,5 @@
-// What kind of ray a ray is, for the object flags no_image, no_reflection and no_shadow,
+// What kind of ray a ray is, for the object flags no_image, no_reflection, no_shadow and
+// no_radiosity,
 // and where POV-Ray 3.7 tests those flags: on the objects it links to the scene (its
 // frame objects: top-level objects, a plain union's children), and inside a union or a
 // merge on their children, each by its own rule.
@@ -23,15 +24,20 @@ enum class RayUse : uint8_t {
     Query,
     Photon,            // a photon from its light, or refracted, never reflected
     PhotonReflection,  // a photon reflected at some point
+    // A radiosity sample ray (trace/radiosity/): POV-Ray's "other" ray with the
+    // radiosity flag. The rays it spawns keep that flag (the `radiosity_ray` argument
+    // of PreparedScene::closest_hit).
+    Radiosity,
 };
-constexpr RayUse kLastRayUse = RayUse::PhotonReflection;
+constexpr RayUse kLastRayUse = RayUse::Radiosity;
 constexpr size_t kRayUses = size_t(kLastRayUse) + 1;
 
 // POV-Ray's flags of such a ray (Ray::IsPrimaryRay, IsImageRay, IsReflectionRay,
-// IsShadowTestRay, IsPhotonRay), and whether its frame objects' own flags are tested.
+// IsShadowTestRay, IsPhotonRay, IsRadiosityRay), and whether its frame objects' own
+// flags are tested.
 struct RayFlags {
     bool primary = false, image = false, reflection = false, shadow = false,
-         photon = false;
+         photon = false, radiosity = false;
     bool frame_test = true;
 };
 
@@ -62,6 +68,9 @@ constexpr RayFlags ray_flags(RayUse u) {
         case RayUse::PhotonReflection:
             f.reflection = f.photon = true;
             break;
+        case RayUse::Radiosity:
+            f.radiosity = true;
+            break;
     }
     return f;
 }
@@ -88,7 +97,7 @@ constexpr RayUse transmitted_use(RayUse u) {
 // A frame object's flags as POV-Ray tests them on the objects it links to the scene (a
 // light's looks_like object: the light's, no_shadow alone).
 struct FrameFlags {
-    bool no_shadow = false, no_image = false, no_reflection = false;
+    bool no_shadow = false, no_image = false, no_reflection = false, no_radiosity = false;
 };
 
 // Whether a ray of these flags passes by a frame object with these flags (POV-Ray's
@@ -97,14 +106,14 @@ struct FrameFlags {
 constexpr bool frame_hides(const FrameFlags& o, const RayFlags& f) {
     return f.frame_test &&
            ((f.image && o.no_image) || (f.reflection && o.no_reflection) ||
-            ((f.shadow || f.photon) && o.no_shadow));
+            ((f.shadow || f.photon) && o.no_shadow) || (f.radiosity && o.no_radiosity));
 }
 
 // The flags of frame object `o` (flags given to its CSG ancestors have come down to it):
 // its own, and, for a union (not a merge, not inverse: POV-Ray's inverse union is an
 // intersection) whose children all have no_shadow, no_shadow (Link_To_Frame).
 inline FrameFlags frame_flags(const Object& o) {
-    FrameFlags f{o.no_shadow, o.no_image, o.no_reflection};
+    FrameFlags f{o.no_shadow, o.no_image, o.no_reflection, o.no_radiosity};
     const Csg* csg = std::get_if<Csg>(&o.shape);
     if (csg && csg->kind == CsgKind::Union && !o.inverse) {
         bool all = true;
@@ -138,7 +147,8 @@ constexpr bool csg_skips(PovCsg csg, const Object& c, const RayFlags& f) {
     if (f.photon) return c.no_shadow;
     if (f.shadow) return false;
     const bool image = f.image && (csg == PovCsg::Merge || !f.primary);
-    return (image && c.no_image) || (f.reflection && c.no_reflection);
+    return (image && c.no_image) || (f.reflection && c.no_reflection) ||
+           (f.radiosity && c.no_radiosity);
 }
 
 }  // namespace povwall::trace

@@ -13,6 +13,7 @@
 #include "trace/focal_blur.h"
 #include "trace/photon_map.h"
 #include "trace/prepared_scene.h"
+#include "trace/radiosity/pretrace.h"
 #include "trace/tracer.h"
 
 namespace povwall::trace {
@@ -106,6 +107,8 @@ Image render_scene(const Scene& scene, const RenderSettings& settings, RenderSta
     prepared.set_alpha_background(settings.alpha);
     prepared.set_photons(build_photon_map(prepared));
     const CameraInteriors camera_interiors(scene);
+    prepared.set_radiosity(
+        radiosity::run_pretrace(prepared, camera_interiors, settings, settings.threads));
     auto t1 = Clock::now();
     const int W = settings.width, H = settings.height;
     Image image(W, H);
@@ -134,6 +137,7 @@ Image render_scene(const Scene& scene, const RenderSettings& settings, RenderSta
         uint64_t reported = 0;
         for (size_t k; (k = next_block.fetch_add(1)) < blocks.size();) {
             const PixelBlock& b = blocks[k];
+            tracer.begin_block();
             rgbt.resize(size_t(b.pixels()) * 4);
             sampler.render_block(b, samples, rgbt.data());
             const float* in = rgbt.data();

@@ -355,6 +355,17 @@ std::vector<std::string> explain_plan(const RenderPlan& plan, const Scene& scene
             std::to_string(plan.infinite_primitives) +
             " unbounded primitives (planes, unbounded CSG): tested by every ray");
     }
+    if (scene.settings.radiosity) {
+        out.push_back(
+            plan.quality.level >= 9
+                ? "radiosity: pretrace passes (pretrace_start down to pretrace_end) fill "
+                  "the irradiance cache, each pass reading the cache frozen after the "
+                  "one "
+                  "before and its blocks' entries merged in block order; the final "
+                  "render reads the cache and reuses what a block gathers only in that "
+                  "block (docs/radiosity.md)"
+                : "radiosity: off below +Q9");
+    }
     out.push_back(plan.parent_reason);
     return out;
 }

@@ -9,6 +9,7 @@
 #include "core/noise.h"
 #include "trace/media.h"
 #include "trace/photon_map.h"
+#include "trace/radiosity/gatherer.h"
 #include "trace/rainbow.h"
 #include "trace/shapes/shape.h"
 #include "trace/uv_mapping.h"
@@ -453,8 +454,31 @@ bool spawn_blob_blend(const PreparedScene& scene, const TraceRay& ray, const Hit
     thread_local std::vector<float> w;
     const int n =
         blob_texture_weights(*b, hit.point, scene.scene().settings.adc_bailout, mats, w);
-    spawn_weighted(scene, ray, hit, mats.data(), w.data(), n, out);
+    if (!scene.scene().settings.radiosity) {
+        spawn_weighted(scene, ray, hit, mats.data(), w.data(), n, out);
+        return true;
+    }
+    // Under radiosity the entries' shading may come back here for another blob.
+    const std::vector<const Material*> own_mats(mats.begin(), mats.begin() + n);
+    const std::vector<float> own_w(w.begin(), w.begin() + n);
+    spawn_weighted(scene, ray, hit, own_mats.data(), own_w.data(), n, out);
     return true;
+}
+
+}  // namespace
+
+namespace {
+
+// Rays under a radiosity sample ray pass on its limits and recursion depth, and see an
+// area light as a point at its centre (POV-Ray's radiosity quality flags).
+void pass_on_radiosity(const TraceRay& ray, ShadingRecord& out) {
+    if (ray.radiosity_depth == 0) return;
+    for (ChildRay& c : out.children) {
+        c.trace.radiosity_depth = ray.radiosity_depth;
+        c.trace.max_level = ray.max_level;
+        c.trace.adc_bailout = ray.adc_bailout;
+        c.area = false;
+    }
 }
 
 }  // namespace
@@ -465,6 +489,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     if (ctx) {
         shadows.trace = ctx;
         spawn_hit(scene, ray, hit, out, shadows, true);
+        pass_on_radiosity(ray, out);
         return;
     }
     // Black boxes: the media samples' shadow rays become children after the others.
@@ -483,6 +508,33 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
 }
 
 namespace {
+
+// The lists spawn_hit fills for one hit (kept per thread so that a ray allocates
+// nothing), one set per nesting level: under radiosity, spawn_hit runs again for the
+// sample rays' hits while the outer hit's lists are in use.
+struct ShadingScratch {
+    std::vector<Rgb> lit;
+    std::vector<LightSample> samples;
+    std::vector<uint8_t> sample_ok;
+    std::vector<std::pair<size_t, Vector3>> reflection_normals;
+    std::vector<const Photon*> found_photons;
+};
+thread_local std::deque<ShadingScratch> shading_scratch_pool;  // deque: no moves
+thread_local size_t shading_nesting = 0;
+
+ShadingScratch& shading_scratch() {
+    if (shading_scratch_pool.size() <= shading_nesting)
+        shading_scratch_pool.resize(shading_nesting + 1);
+    return shading_scratch_pool[shading_nesting];
+}
+
+// Holds the current nesting level's scratch while it lives.
+struct ScratchLevel {
+    ScratchLevel() { ++shading_nesting; }
+    ~ScratchLevel() { --shading_nesting; }
+    ScratchLevel(const ScratchLevel&) = delete;
+    ScratchLevel& operator=(const ScratchLevel&) = delete;
+};
 
 void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                ShadingRecord& out, const MediaShadows& shadows, bool with_fog) {
@@ -521,15 +573,29 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     const PatternEnv env = scene.pattern_env().at_surface(&surface);
     if (!quality.lighting()) return pigment_only(scene, m, Ptex, env, out);
     const bool legacy = sc.language_version < 370;
-    const float adc = sc.settings.adc_bailout;
+    const float adc = ray.adc_bailout >= 0 ? ray.adc_bailout : sc.settings.adc_bailout;
+    // Radiosity (from +Q9): the ambient light is gathered (trace/radiosity/), and
+    // `ambient` counts only in scenes before #version 3.7.
+    const bool radiosity_on = sc.settings.radiosity && quality.level >= 9;
+    RadiosityGatherer* const gatherer = radiosity_on && shadows.trace &&
+                                                shadows.trace->radiosity &&
+                                                shadows.trace->radiosity->active_for(ray)
+                                            ? shadows.trace->radiosity
+                                            : nullptr;
+    bool radiosity_done = false, radiosity_back_done = false;
+    Rgb radiosity_front, radiosity_back;
     // A plain material (see Material::plain) is one layer read from the material itself.
     const LayeredTexture* layers = m.plain ? nullptr : &texture_of(m);
     const int nlayers = m.plain ? 1 : int(layers->size());
     const size_t nlights = sc.lights.size();
 
-    thread_local std::vector<Rgb> lit;
-    thread_local std::vector<LightSample> samples;
-    thread_local std::vector<uint8_t> sample_ok;
+    // Per nesting level: a radiosity gather in the layer loop shades its sample rays'
+    // hits with this same function before this hit's lights are added up.
+    ShadingScratch& scratch = shading_scratch();
+    const ScratchLevel level_guard;
+    std::vector<Rgb>& lit = scratch.lit;
+    std::vector<LightSample>& samples = scratch.samples;
+    std::vector<uint8_t>& sample_ok = scratch.sample_ok;
     lit.assign(nlights, Rgb{});
     samples.resize(nlights);
     sample_ok.assign(nlights, 2);  // 2: not computed yet
@@ -540,7 +606,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     const Finish* top_finish = nullptr;  // the top layer's (total internal reflection)
     // Each reflection child with its layer's normal: total internal reflection drops
     // those of the layers whose normal is the top layer's (POV-Ray 3.7).
-    thread_local std::vector<std::pair<size_t, Vector3>> reflection_normals;
+    std::vector<std::pair<size_t, Vector3>>& reflection_normals =
+        scratch.reflection_normals;
     reflection_normals.clear();
     // The photon map, when the surface collects photons (`collect` on, lit by the
     // global lights that shot them).
@@ -548,7 +615,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     if (photons && (photons->size() == 0 || !m.global_lights ||
                     (m.object && !m.object->photons.collect)))
         photons = nullptr;
-    thread_local std::vector<const Photon*> found_photons;
+    std::vector<const Photon*>& found_photons = scratch.found_photons;
     found_photons.clear();
     bool gathered = false;
     double photon_radius = 0;
@@ -566,8 +633,34 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                                  : 1 - lay.filter - lay.transmit;
         const Finish& f = tex ? *tex->finish : m.plain_finish;
         if (li == nlayers - 1) top_finish = &f;
-        Rgb tmp = lay.rgb * f.ambient * sc.settings.ambient_light * att +
-                  lay.rgb * f.emission * att;
+        Rgb tmp;
+        if (gatherer) {
+            // POV-Ray gathers once per hit, with the first layer whose diffuse can
+            // add enough to the ray.
+            if (!radiosity_done) {
+                const float most = (fil * lay.rgb).grey() * att * f.raw_diffuse;
+                if (most > adc) {
+                    radiosity_front =
+                        gatherer->ambient(ray, P, N, Nl, double(ray.weight) * most);
+                    radiosity_done = true;
+                }
+            }
+            tmp += lay.rgb * radiosity_front * (att * f.raw_diffuse);
+            if (f.diffuse_back != 0) {
+                if (!radiosity_back_done) {
+                    const float most = (fil * lay.rgb).grey() * att * f.raw_diffuse_back;
+                    if (most > adc) {
+                        radiosity_back =
+                            gatherer->ambient(ray, P, -N, -Nl, double(ray.weight) * most);
+                        radiosity_back_done = true;
+                    }
+                }
+                tmp += lay.rgb * radiosity_back * (att * f.raw_diffuse_back);
+            }
+        }
+        if (!radiosity_on || legacy)
+            tmp += lay.rgb * f.ambient * sc.settings.ambient_light * att;
+        tmp += lay.rgb * f.emission * att;
         out.local += tmp * fil;
 
         // The layer's diffuse, phong, specular and iridescence response to light coming
@@ -598,7 +691,9 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                 if (f.crand > 0) k -= crand_sample(P, index) * f.crand;
                 c += lay.rgb * float(k);
             }
-            if (!shadowless && !backside) {
+            // No highlights under a radiosity sample ray (POV-Ray's radiosity flag, which
+            // the rays it spawns keep).
+            if (!shadowless && !backside && ray.radiosity_depth == 0) {
                 if (f.phong > 0) {
                     Vector3 R = D - Nl * (2 * dot(D, Nl));
                     Real cc = dot(R, dir);
@@ -1032,6 +1127,8 @@ FogEffect viewing_media(const PreparedScene& scene, std::span<const Media* const
 FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
                     MediaEndLights end, const MediaShadows& shadows) {
     const Scene& sc = scene.scene();
+    // Under a radiosity sample ray: no fog or media (POV-Ray's radiosity quality).
+    if (ray.radiosity_depth > 0) return {};
     if (sc.fogs.empty() && sc.atmosphere_media.empty() && sc.rainbows.empty() &&
         !in_media(ray.interiors))
         return {};
@@ -1062,7 +1159,7 @@ FogEffect along_missing_ray(const PreparedScene& scene, const TraceRay& ray,
     const Scene& sc = scene.scene();
     FogEffect f;
     if ((sc.fogs.empty() && sc.atmosphere_media.empty() && sc.rainbows.empty()) ||
-        !scene.plan().quality.atmosphere())
+        !scene.plan().quality.atmosphere() || ray.radiosity_depth > 0)
         return f;
     if (!sc.rainbows.empty() && hollow_ray(ray.interiors))
         f = rainbows(scene, ray.ray, 2e10);

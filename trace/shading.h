@@ -71,6 +71,12 @@ struct TraceRay {
     bool continued = false;
     float weight = 1;  // adc_bailout weight
     RayUse use = RayUse::Camera;
+    // Radiosity bounces above this ray (0: the camera's ray tree). Its children keep
+    // it; rays under a radiosity sample ray see no fog, media or area-light grid
+    // (POV-Ray's radiosity quality flags) and gather at the next recursion level.
+    uint8_t radiosity_depth = 0;
+    int max_level = 0;       // > 0: its max_trace_level (a radiosity gather's)
+    float adc_bailout = -1;  // >= 0: its adc_bailout (radiosity's)
     InteriorStack interiors;
 };
 

@@ -2,10 +2,29 @@
 
 #include <cmath>
 
+#include "trace/radiosity/pretrace.h"
+
 namespace povwall::trace {
 Tracer::Tracer(const PreparedScene& scene)
     : scene_(scene), forward_(!scene.plan().parent_tracking) {
     scene.init_context(ctx_);
+    if (const auto& r = scene.scene().settings.radiosity)
+        default_importance_ = r->default_importance;
+    attach_radiosity();
+}
+
+void Tracer::attach_radiosity() {
+    if (const radiosity::RadiosityRender* r = scene_.radiosity()) {
+        radiosity_ = std::make_unique<RadiosityGatherer>(*this, r->frame, &r->cache,
+                                                         radiosity::kFinalPass);
+        ctx_.radiosity = radiosity_.get();
+    }
+}
+
+Tracer::~Tracer() = default;
+
+void Tracer::begin_block() {
+    if (radiosity_) radiosity_->begin_final_block();
 }
 
 TraceResult Tracer::trace(const TraceRay& ray) {
@@ -18,7 +37,8 @@ TraceResult Tracer::trace(const TraceRay& ray) {
 bool Tracer::nearest_hit(const TraceRay& ray, Hit& hit, Real& probe) {
     probe = ray.depth <= tie_levels_ ? tie_tolerance_ : 0;
     ctx_.tie_tolerance = probe;
-    const bool found = scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_);
+    const bool found = scene_.closest_hit(ray.ray, 0, kInfinity, ray.use, hit, ctx_,
+                                          ray.radiosity_depth > 0);
     ctx_.tie_tolerance = 0;
     if (found && probe > 0 && on_pattern_boundary(scene_, hit, probe))
         ++ctx_.pattern_ties;
@@ -39,11 +59,39 @@ TraceResult Tracer::trace_at(const TraceRay& ray, size_t level) {
     count_ray(ray, counters_);
     Hit hit;
     Real probe = 0;
-    if (!nearest_hit(ray, hit, probe)) return miss_colour(scene_, ray, &ctx_);
+    const bool found = nearest_hit(ray, hit, probe);
+    return shade_at(ray, found, hit, probe, level);
+}
+
+Rgb Tracer::trace_radiosity_sample(const TraceRay& ray, float queried, Real& depth,
+                                   float& importance) {
+    depth = kInfinity;
+    importance = default_importance_;
+    if (refuse_ray(ray, scene_.scene().settings, counters_)) return {};
+    Hit hit;
+    Real probe = 0;
+    const bool found = nearest_hit(ray, hit, probe);
+    if (found) {
+        depth = hit.t;
+        const float own = hit.material ? hit.material->radiosity_importance : 0.0f;
+        if (own > 0) importance = own;
+    }
+    if (importance < queried) return {};
+    count_ray(ray, counters_);
+    const size_t saved = level_in_use_;
+    const TraceResult r = shade_at(ray, found, hit, probe, level_in_use_ + 1);
+    level_in_use_ = saved;
+    return r.colour;
+}
+
+TraceResult Tracer::shade_at(const TraceRay& ray, bool found, const Hit& hit, Real probe,
+                             size_t level) {
+    if (!found) return miss_colour(scene_, ray, &ctx_);
     if (records_.size() <= level) {
         records_.resize(level + 1);
         results_.resize(level + 1);
     }
+    level_in_use_ = level;
     spawn_children(scene_, ray, hit, records_[level], &ctx_);
     // records_ may grow in the recursion below: index, don't hold references across
     // calls.
@@ -78,6 +126,7 @@ void Tracer::trace_forward(const TraceRay& ray, const Rgb& contribution,
         records_.resize(level + 1);
         results_.resize(level + 1);
     }
+    level_in_use_ = level;
     spawn_children(scene_, ray, hit, records_[level], &ctx_);
     {
         // Fog along this ray is affine (add + mul x colour): its added part is this

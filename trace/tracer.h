@@ -5,6 +5,8 @@
 #pragma once
 
 #include <algorithm>
+#include <deque>
+#include <memory>
 
 #include "trace/forward_sum.h"
 #include "trace/shading.h"
@@ -16,6 +18,7 @@ namespace povwall::trace {
 // ray was traced at (its "Max Level", 1 for camera rays). Every driver counts with these.
 struct TraceCounters {
     uint64_t camera = 0, reflected = 0, refracted = 0, shadow = 0;
+    uint64_t radiosity = 0;  // radiosity sample rays
     uint64_t adc_saved = 0;
     int max_level = 0;
     uint64_t rays() const { return camera + reflected + refracted + shadow; }
@@ -24,6 +27,7 @@ struct TraceCounters {
         reflected += o.reflected;
         refracted += o.refracted;
         shadow += o.shadow;
+        radiosity += o.radiosity;
         adc_saved += o.adc_saved;
         max_level = std::max(max_level, o.max_level);
         return *this;
@@ -33,11 +37,14 @@ struct TraceCounters {
 // POV-Ray's entry test of a ray (TraceRay): refused at max_trace_level or below
 // adc_bailout, when it is black and opaque. The level it tests is the parent's: a
 // continued ray's depth, one less than any other ray's. A refusal for its weight is
-// counted.
+// counted. Rays under a radiosity sample ray carry their own limits
+// (TraceRay::max_level, adc_bailout).
 inline bool refuse_ray(const TraceRay& ray, const GlobalSettings& g, TraceCounters& c) {
+    const int max_level = ray.max_level > 0 ? ray.max_level : g.max_trace_level;
+    const float adc = ray.adc_bailout >= 0 ? ray.adc_bailout : g.adc_bailout;
     const int entry_level = ray.continued ? ray.depth : ray.depth - 1;
-    if (entry_level < g.max_trace_level && ray.weight >= g.adc_bailout) return false;
-    if (ray.weight < g.adc_bailout) ++c.adc_saved;
+    if (entry_level < max_level && ray.weight >= adc) return false;
+    if (ray.weight < adc) ++c.adc_saved;
     return true;
 }
 
@@ -54,6 +61,9 @@ inline void count_ray(const TraceRay& ray, TraceCounters& c) {
         case RayUse::ReflectedRefraction:
             ++c.refracted;
             break;
+        case RayUse::Radiosity:
+            ++c.radiosity;
+            break;
         case RayUse::Shadow:
         case RayUse::Query:
         case RayUse::Photon:
@@ -66,6 +76,7 @@ inline void count_ray(const TraceRay& ray, TraceCounters& c) {
 class Tracer {
   public:
     explicit Tracer(const PreparedScene& scene);
+    ~Tracer();
     TraceResult trace(const TraceRay& ray);
     const TraceCounters& counters() const { return counters_; }
     const PreparedScene& scene() const { return scene_; }
@@ -82,6 +93,22 @@ class Tracer {
     // pattern: the surface coincides with a colour boundary (a gradient's wrap exactly
     // at a box's face), so the last bits of the hit point pick the colour.
     uint64_t pattern_ties() const { return ctx_.pattern_ties; }
+    // Radiosity (trace/radiosity/gatherer.h): the gatherer the shading of this tracer's
+    // hits asks for ambient light (null: none).
+    void set_radiosity(RadiosityGatherer* gatherer) { ctx_.radiosity = gatherer; }
+    // The final render's gatherer over the scene's finished pretrace (made by the
+    // constructor when the pretrace is already there).
+    void attach_radiosity();
+    // The final render starts a render block: radiosity gathered in it is reused only
+    // within it (trace/radiosity/gatherer.h).
+    void begin_block();
+    // A radiosity sample ray, traced from inside the shading of the ray being traced
+    // (POV-Ray's TraceRay with an importance query): `depth` gets the distance to its
+    // first hit (infinity: none), `importance` that object's radiosity importance (the
+    // scene's default when it hits nothing or has none). Below `queried`, the ray is not
+    // shaded (black).
+    Rgb trace_radiosity_sample(const TraceRay& ray, float queried, Real& depth,
+                               float& importance);
 
   private:
     // The nearest hit, with the tie probe of the ray's level (`probe`, 0: none).
@@ -89,6 +116,9 @@ class Tracer {
     // What reaches a shadow child's light through what lies between (1: nothing can).
     Rgb shadow_filter(const ChildRay& shadow, Real probe);
     TraceResult trace_at(const TraceRay& ray, size_t level);
+    // trace_at() once the nearest hit is known.
+    TraceResult shade_at(const TraceRay& ray, bool found, const Hit& hit, Real probe,
+                         size_t level);
     // Linear shading (the plan needs no parent tracking): the ray's share of its camera
     // sample, `contribution` times what it sees, added into `sum` as black boxes add it
     // (trace/forward_sum.h), so every driver gives the same bits.
@@ -102,8 +132,15 @@ class Tracer {
     Real tie_tolerance_ = 0;
     int tie_levels_ = 0;
     // Records and result buffers reused per recursion level: no allocation per ray.
-    std::vector<ShadingRecord> records_;
-    std::vector<std::vector<TraceResult>> results_;
+    // Deques: a radiosity gather traces from inside spawn_children, which is filling
+    // records_[level]; growing must not move it.
+    std::deque<ShadingRecord> records_;
+    std::deque<std::vector<TraceResult>> results_;
+    // The deepest level whose record may be in use (radiosity samples trace below it).
+    size_t level_in_use_ = 0;
+    float default_importance_ = 1;
+    // The final render's gatherer, when the scene's radiosity pretrace is done.
+    std::unique_ptr<RadiosityGatherer> radiosity_;
 };
 
 }  // namespace povwall::trace

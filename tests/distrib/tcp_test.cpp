@@ -582,6 +582,34 @@ TEST(Tcp, PhotonsInEveryModeEqualOneProcess) {
     }
 }
 
+// Radiosity (trace/radiosity/): the pretrace passes read the cache frozen after the pass
+// before and merge their blocks' entries in block order, the final render only reads it,
+// and each screen-mode worker runs the same pretrace: every thread count and every
+// screen-mode split gives the one-thread image, anti-aliased too. Space subdivision is
+// refused with a located `unsupported:`.
+TEST(Tcp, RadiosityInEveryModeEqualOneProcess) {
+    for (const char* name : {"radiosity_cornell", "radiosity_emission"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        for (const char* aa : {"-A +WT1", "+A0.1 +AM2 -J +WT1"})
+            expect_same_images(
+                scene, std::string("-W 48 -H 36 ") + aa,
+                {"+WT2", "+WT3", "--mode screen --procs 2", "--mode screen --procs 3"},
+                true);
+        for (const char* boxes : {"--boxes 2x2x2", "--boxes 2x2x2 --procs 2"}) {
+            const RunResult r = run("render " + scene + " -W 40 -H 30 -q -o " +
+                                    (scratch() / "boxes.png").string() + " " + boxes);
+            EXPECT_NE(r.code, 0) << boxes;
+            EXPECT_TRUE(std::regex_search(
+                r.err, std::regex(std::string(name) +
+                                  R"(\.pov:[0-9]+:[0-9]+: error: unsupported: radiosity )"
+                                  "with space subdivision")))
+                << boxes << "\n"
+                << r.err;
+        }
+    }
+}
+
 TEST(Tcp, AlphaOutputOverProcessesEqualsOneProcess) {
     fs::path scene = scratch() / "glass_alpha.pov";
     std::ofstream(scene) << kGlassCsgScene;
