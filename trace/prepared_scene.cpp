@@ -862,6 +862,31 @@ PreparedScene::PovPrim PreparedScene::pov_prim(const Object& o, uint8_t extra) c
     return p;
 }
 
+// Whether slab_tree_accepts(pov_sphere_bbox(c, r), PovRay(ray)) surely holds, decided in
+// double without the float test: the midpoint of the ray's chord through the sphere
+// (at tca = (c - o).d) lies inside the sphere's box by a margin m. Each float slab bound
+// along axis a is (corner - o) / d_a with the corner, origin, 1/d_a and the two products
+// rounded to float: off by less than 10 * 2^-24 * (|c| + r + |o|) / |d_a|, while the
+// exact bounds lie m / |d_a| before and after tca. So with m beyond that error (32 *
+// 2^-24 here) every entry stays below every exit, and the exits above tca > EPSILON. Rays
+// with a component below 1e-20 (1/d beyond float) and coordinates beyond 1e15 are left to
+// the float test, as are NaNs (every compare fails).
+static bool pov_sphere_box_surely_accepts(Real cx, Real cy, Real cz, Real r,
+                                          const Ray& ray) {
+    const Vector3& d = ray.direction;
+    const Real ocx = cx - ray.origin.x, ocy = cy - ray.origin.y, ocz = cz - ray.origin.z;
+    const Real tca = ocx * d.x + ocy * d.y + ocz * d.z;
+    if (!(tca > 1e-6)) return false;
+    const Real far = std::max({std::fabs(ocx - d.x * tca), std::fabs(ocy - d.y * tca),
+                               std::fabs(ocz - d.z * tca)});
+    const Real scale = std::max({std::fabs(cx), std::fabs(cy), std::fabs(cz)}) + r +
+                       std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y),
+                                 std::fabs(ray.origin.z)});
+    auto representable = [](Real v) { return v == 0 || std::fabs(v) >= 1e-20; };
+    return r - far > 32.0 / 16777216.0 * scale && scale < 1e15 && representable(d.x) &&
+           representable(d.y) && representable(d.z);
+}
+
 bool PreparedScene::pov_accepts(uint32_t id, const PovRayOnce& pov_ray) const {
     auto root_accepts = [this](const PovRayOnce& r) {
         return r.root_accepts(
@@ -871,7 +896,8 @@ bool PreparedScene::pov_accepts(uint32_t id, const PovRayOnce& pov_ray) const {
         if (!pov_slab_tree_) return true;
         const SpherePrim& s = spheres_[id];
         return (!pov_root_tested_ || root_accepts(pov_ray)) &&
-               slab_tree_accepts(pov_sphere_bbox({s.x, s.y, s.z}, s.r), pov_ray.get());
+               (pov_sphere_box_surely_accepts(s.x, s.y, s.z, s.r, pov_ray.ray()) ||
+                slab_tree_accepts(pov_sphere_bbox({s.x, s.y, s.z}, s.r), pov_ray.get()));
     }
     const PovPrim& p = pov_[id - sphere_count_];
     if (!p.tests) return true;
