@@ -151,9 +151,26 @@ uint64_t sphere_distances(LaneWidth width, const SphereRun& run, size_t n, const
     }
 }
 
+namespace {
+// The widest kernel, chosen once: each leaf's call goes straight to it.
+using Distances = uint64_t (*)(const SphereRun&, size_t, const Ray&, Real, Real, Real*);
+const Distances kWidestDistances = [] {
+    switch (kWidest) {
+#ifdef POVWALL_LANES_AVX
+        case LaneWidth::Eight:
+            return &distances_avx512;
+        case LaneWidth::Four:
+            return &distances_avx;
+#endif
+        default:
+            return &distances_scalar;
+    }
+}();
+}  // namespace
+
 uint64_t sphere_distances(const SphereRun& run, size_t n, const Ray& ray, Real lo,
                           Real below, Real* t) {
-    return sphere_distances(kWidest, run, n, ray, lo, below, t);
+    return kWidestDistances(run, n, ray, lo, below, t);
 }
 
 }  // namespace povwall::trace
