@@ -864,6 +864,31 @@ PreparedScene::PovPrim PreparedScene::pov_prim(const Object& o, uint8_t extra) c
     return p;
 }
 
+// Whether slab_tree_accepts(pov_sphere_bbox(c, r), PovRay(ray)) surely holds, decided in
+// double without the float test: the midpoint of the ray's chord through the sphere
+// (at tca = (c - o).d) lies inside the sphere's box by a margin m. Each float slab bound
+// along axis a is (corner - o) / d_a with the corner, origin, 1/d_a and the two products
+// rounded to float: off by less than 10 * 2^-24 * (|c| + r + |o|) / |d_a|, while the
+// exact bounds lie m / |d_a| before and after tca. So with m beyond that error (32 *
+// 2^-24 here) every entry stays below every exit, and the exits above tca > EPSILON. Rays
+// with a component below 1e-20 (1/d beyond float) and coordinates beyond 1e15 are left to
+// the float test, as are NaNs (every compare fails).
+static inline bool pov_sphere_box_surely_accepts(Real cx, Real cy, Real cz, Real r,
+                                                 const Ray& ray) {
+    const Vector3& d = ray.direction;
+    const Real ocx = cx - ray.origin.x, ocy = cy - ray.origin.y, ocz = cz - ray.origin.z;
+    const Real tca = ocx * d.x + ocy * d.y + ocz * d.z;
+    if (!(tca > 1e-6)) return false;
+    const Real far = std::max({std::fabs(ocx - d.x * tca), std::fabs(ocy - d.y * tca),
+                               std::fabs(ocz - d.z * tca)});
+    const Real scale = std::max({std::fabs(cx), std::fabs(cy), std::fabs(cz)}) + r +
+                       std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y),
+                                 std::fabs(ray.origin.z)});
+    auto representable = [](Real v) { return v == 0 || std::fabs(v) >= 1e-20; };
+    return r - far > 32.0 / 16777216.0 * scale && scale < 1e15 && representable(d.x) &&
+           representable(d.y) && representable(d.z);
+}
+
 bool PreparedScene::pov_accepts(uint32_t id, const PovRayOnce& pov_ray) const {
     auto root_accepts = [this](const PovRayOnce& r) {
         return r.root_accepts(
@@ -873,7 +898,8 @@ bool PreparedScene::pov_accepts(uint32_t id, const PovRayOnce& pov_ray) const {
         if (!pov_slab_tree_) return true;
         const SpherePrim& s = spheres_[id];
         return (!pov_root_tested_ || root_accepts(pov_ray)) &&
-               slab_tree_accepts(pov_sphere_bbox({s.x, s.y, s.z}, s.r), pov_ray.get());
+               (pov_sphere_box_surely_accepts(s.x, s.y, s.z, s.r, pov_ray.ray()) ||
+                slab_tree_accepts(pov_sphere_bbox({s.x, s.y, s.z}, s.r), pov_ray.get()));
     }
     const PovPrim& p = pov_[id - sphere_count_];
     if (!p.tests) return true;
@@ -1048,7 +1074,7 @@ bool PreparedScene::for_sphere_hits(const uint32_t* ids, size_t spheres, const R
         for (; hits; hits &= hits - 1) {
             const size_t i = size_t(__builtin_ctzll(hits));
             if (!(t[i] < below)) continue;  // `below` shrank since
-            if (on_hit(ids[done + i], t[i])) return true;
+            if (on_hit(ids[done + i], t[i], p + i)) return true;
         }
     }
     return false;
@@ -1074,6 +1100,17 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
                                 Hit& hit, RayContext& ctx, bool radiosity_ray) const {
     bool found = false;
     const PovRayOnce pov_ray(ray);
+    // pov_accepts() of a sphere, its common answer decided here without the call.
+    // The sphere is read from its leaf's lanes (position `q` in lanes_, just loaded by
+    // the distance test) rather than from spheres_ (a cache miss there was most of
+    // the call's time).
+    auto sphere_accepted = [&](uint32_t id, size_t q) {
+        return !pov_slab_tree_ ||
+               (!pov_root_tested_ &&
+                pov_sphere_box_surely_accepts(lanes_.x[q], lanes_.y[q], lanes_.z[q],
+                                              lanes_.r[q], ray)) ||
+               pov_accepts(id, pov_ray);
+    };
     // Materials are only looked at when some object hides from this kind of ray or at a
     // tie: a sphere's candidate hit then costs no load of its (large) material.
     RayFlags flags = ray_flags(use);
@@ -1156,13 +1193,15 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
             // A sphere spanning several leaves is simply tested again (cheaper than its
             // mailbox check).
             const size_t spheres = leading_spheres(ids, n, sphere_count_);
-            for_sphere_hits(ids, spheres, ray, lo, reach, ctx, [&](uint32_t id, Real t) {
-                const uint32_t m = material_[id];
-                if (hidden(m) || !pov_accepts(id, pov_ray) || !offer(t, m)) return false;
-                accept(t, m);
-                nearest_sphere = id;
-                return false;
-            });
+            for_sphere_hits(ids, spheres, ray, lo, reach, ctx,
+                            [&](uint32_t id, Real t, size_t q) {
+                                const uint32_t m = material_[id];
+                                if (hidden(m) || !sphere_accepted(id, q) || !offer(t, m))
+                                    return false;
+                                accept(t, m);
+                                nearest_sphere = id;
+                                return false;
+                            });
             for (size_t i = spheres; i < n; ++i) {
                 // Objects hidden from this ray kind can have a hit beyond a visible one:
                 // a primitive seen in an earlier leaf was fully tested there.
@@ -1183,6 +1222,17 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
                                    bool& transparent, RayContext& ctx, int light) const {
     transparent = false;
     const PovRayOnce pov_ray(ray);
+    // pov_accepts() of a sphere, its common answer decided here without the call.
+    // The sphere is read from its leaf's lanes (position `q` in lanes_, just loaded by
+    // the distance test) rather than from spheres_ (a cache miss there was most of
+    // the call's time).
+    auto sphere_accepted = [&](uint32_t id, size_t q) {
+        return !pov_slab_tree_ ||
+               (!pov_root_tested_ &&
+                pov_sphere_box_surely_accepts(lanes_.x[q], lanes_.y[q], lanes_.z[q],
+                                              lanes_.r[q], ray)) ||
+               pov_accepts(id, pov_ray);
+    };
     const Real lo = std::max(t_min, kMinIsectDepth);
     // 1: an opaque shadow caster; 0: none; -1: a see-through one.
     // (Inside a CSG POV-Ray's shadow rays meet every child, no_shadow or not.)
@@ -1224,8 +1274,8 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
         [&](const uint32_t* ids, size_t n, Real&) {
             const size_t spheres = leading_spheres(ids, n, sphere_count_);
             if (for_sphere_hits(ids, spheres, ray, lo, t_max, ctx,
-                                [&](uint32_t id, Real) {
-                                    return pov_accepts(id, pov_ray) &&
+                                [&](uint32_t id, Real, size_t q) {
+                                    return sphere_accepted(id, q) &&
                                            blocks(id, caster(materials_[material_[id]]));
                                 }))
                 return blocked = true;

@@ -52,6 +52,12 @@ __attribute__((target("avx"))) uint64_t distances_avx(const SphereRun& s, size_t
         const __m256d t2hc = _mm256_add_pd(_mm256_sub_pd(_mm256_mul_pd(r, r), oc2),
                                            _mm256_mul_pd(tca, tca));
         const __m256d hit = _mm256_cmp_pd(t2hc, eps, _CMP_GT_OQ);
+        // Most lanes miss (a leaf holds a few dozen spheres, a ray meets one or two):
+        // no square root when all four do.
+        if (_mm256_movemask_pd(hit) == 0) {
+            _mm256_storeu_pd(t + i, inf);
+            continue;
+        }
         const __m256d th = _mm256_sqrt_pd(t2hc);  // NaN lanes are masked off by `hit`
         const __m256d near = _mm256_sub_pd(tca, th), far = _mm256_add_pd(tca, th);
         const __m256d near_ok = _mm256_and_pd(_mm256_cmp_pd(near, tol, _CMP_GT_OQ),
@@ -95,6 +101,10 @@ __attribute__((target("avx512f"))) uint64_t distances_avx512(const SphereRun& s,
         const __m512d t2hc = _mm512_add_pd(_mm512_sub_pd(_mm512_mul_pd(r, r), oc2),
                                            _mm512_mul_pd(tca, tca));
         const __mmask8 hit = _mm512_cmp_pd_mask(t2hc, eps, _CMP_GT_OQ);
+        if (hit == 0) {  // all eight miss (as above)
+            _mm512_storeu_pd(t + i, inf);
+            continue;
+        }
         // Lanes that miss keep inf (and GCC 12 warns on the unmasked form's undefined
         // source).
         const __m512d th = _mm512_mask_sqrt_pd(inf, hit, t2hc);
@@ -141,9 +151,26 @@ uint64_t sphere_distances(LaneWidth width, const SphereRun& run, size_t n, const
     }
 }
 
+namespace {
+// The widest kernel, chosen once: each leaf's call goes straight to it.
+using Distances = uint64_t (*)(const SphereRun&, size_t, const Ray&, Real, Real, Real*);
+const Distances kWidestDistances = [] {
+    switch (kWidest) {
+#ifdef POVWALL_LANES_AVX
+        case LaneWidth::Eight:
+            return &distances_avx512;
+        case LaneWidth::Four:
+            return &distances_avx;
+#endif
+        default:
+            return &distances_scalar;
+    }
+}();
+}  // namespace
+
 uint64_t sphere_distances(const SphereRun& run, size_t n, const Ray& ray, Real lo,
                           Real below, Real* t) {
-    return sphere_distances(kWidest, run, n, ray, lo, below, t);
+    return kWidestDistances(run, n, ray, lo, below, t);
 }
 
 }  // namespace povwall::trace
