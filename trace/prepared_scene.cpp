@@ -6,6 +6,7 @@
 
 #include "octree/overlap.h"
 #include "octree/spatial_order.h"
+#include "trace/pov_slab_test.h"
 #include "trace/render.h"
 #include "trace/shapes/shape.h"
 #include "trace/sphere_lanes.h"
@@ -906,6 +907,17 @@ inline Real sphere_distance(const PreparedScene::SpherePrim& sp, const Ray& ray,
     return sphere_distance(sp.x, sp.y, sp.z, sp.r, ray, lo);
 }
 
+// pov_accepts' first tests of a primitive in the slab tree, inline for the leaf loops
+// (most candidates in a leaf fail them): whether the tree's root (when tested) or the
+// primitive's box turns the ray away.
+inline bool pov_slab_rejects(const PovBBox& box, bool root_tested, const PovBBox& root,
+                             const PovRayOnce& pov_ray) {
+    if (root_tested &&
+        !pov_ray.root_accepts([&](const PovRay& r) { return slab_test(root, r); }))
+        return true;
+    return !slab_test(box, pov_ray.get());
+}
+
 // How many of a leaf's ids (sorted) are spheres: they come first.
 inline size_t leading_spheres(const uint32_t* ids, size_t n, uint32_t sphere_count) {
     if (n == 0 || ids[n - 1] < sphere_count) return n;
@@ -1072,6 +1084,12 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
                                 Hit& hit, RayContext& ctx) const {
     bool found = false;
     const PovRayOnce pov_ray(ray);
+    // A general object whose POV-Ray boxes turn the ray away: test_primitive is false.
+    auto box_rejects = [&](uint32_t id) {
+        const PovPrim& p = pov_[id - sphere_count_];
+        return kind_[id] == PrimKind::Object && (p.tests & kPovSlabTree) &&
+               pov_slab_rejects(p.box, pov_root_tested_, pov_root_, pov_ray);
+    };
     // Materials are only looked at when some object hides from this kind of ray or at a
     // tie: a sphere's candidate hit then costs no load of its (large) material.
     const bool may_hide = hides_[size_t(use)];
@@ -1163,6 +1181,10 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
                 // Objects hidden from this ray kind can have a hit beyond a visible one:
                 // a primitive seen in an earlier leaf was fully tested there.
                 if (!ctx.mailbox.first_visit(ids[i])) continue;
+                if (box_rejects(ids[i])) {
+                    ++ctx.tests;
+                    continue;
+                }
                 consider(ids[i]);
             }
             tmax = reach;
@@ -1179,6 +1201,12 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
                                    bool& transparent, RayContext& ctx, int light) const {
     transparent = false;
     const PovRayOnce pov_ray(ray);
+    // A general object whose POV-Ray boxes turn the ray away: test_primitive is false.
+    auto box_rejects = [&](uint32_t id) {
+        const PovPrim& p = pov_[id - sphere_count_];
+        return kind_[id] == PrimKind::Object && (p.tests & kPovSlabTree) &&
+               pov_slab_rejects(p.box, pov_root_tested_, pov_root_, pov_ray);
+    };
     const Real lo = std::max(t_min, kMinIsectDepth);
     // 1: an opaque shadow caster; 0: none; -1: a see-through one.
     // (Inside a CSG POV-Ray's shadow rays meet every child, no_shadow or not.)
@@ -1226,8 +1254,12 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
                                 }))
                 return blocked = true;
             for (size_t i = spheres; i < n; ++i) {
-                if (ctx.mailbox.first_visit(ids[i]) && blocks(ids[i], meets(ids[i])))
-                    return blocked = true;
+                if (!ctx.mailbox.first_visit(ids[i])) continue;
+                if (box_rejects(ids[i])) {
+                    ++ctx.tests;
+                    continue;
+                }
+                if (blocks(ids[i], meets(ids[i]))) return blocked = true;
             }
             return false;
         },
