@@ -200,6 +200,25 @@ struct SturmChain {
         }
         s[k].c[0] = -s[k].c[0];
         last = k;
+        pack();
+    }
+
+    // A short chain (a sextic's has at most 7 elements) is also kept by power, each
+    // element padded with leading zeros, so that changes() runs one Horner pass over all
+    // elements at once (vectorised). The bits are each element's own Horner's rule: a
+    // padding zero times x is zero, and zero plus the leading coefficient is that
+    // coefficient; the steps after it are the element's.
+    static constexpr int kLanes = 8;
+    bool packed = false;
+    int top = 0;                           // the highest degree in the chain
+    alignas(64) Real by_power[8][kLanes];  // [power][element]
+    void pack() {
+        if (last >= kLanes || s[0].degree >= 8) return;
+        top = s[0].degree;
+        for (int j = 0; j <= top; ++j)
+            for (int i = 0; i < kLanes; ++i)
+                by_power[j][i] = i <= last && j <= s[i].degree ? s[i].c[j] : 0.0;
+        packed = true;
     }
 
     // Above this x every element, evaluated by Horner's rule in doubles, has the sign of
@@ -234,6 +253,16 @@ struct SturmChain {
 
     // Sign changes along the chain at x; a zero value counts as a change after it.
     int changes(Real x) const {
+        if (packed) {
+            Real v[kLanes];
+            for (int i = 0; i < kLanes; ++i) v[i] = by_power[top][i];
+            for (int j = top - 1; j >= 0; --j)
+                for (int i = 0; i < kLanes; ++i) v[i] = v[i] * x + by_power[j][i];
+            int n = 0;
+            for (int i = 1; i <= last; ++i)
+                if (v[i - 1] == 0 || v[i - 1] * v[i] < 0) ++n;
+            return n;
+        }
         int n = 0;
         Real prev = s[0](x);
         for (int i = 1; i <= last; ++i) {
