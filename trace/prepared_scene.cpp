@@ -6,6 +6,7 @@
 
 #include "octree/overlap.h"
 #include "octree/spatial_order.h"
+#include "trace/object_placement.h"
 #include "trace/pov_slab_test.h"
 #include "trace/render.h"
 #include "trace/shapes/shape.h"
@@ -416,6 +417,12 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
         }
     }
     std::sort(leaf_materials_.begin(), leaf_materials_.end());
+    // General objects go into the octree by their placement bounds (narrower for a
+    // turned lathe or sor).
+    for (uint32_t id = 0; id < kind_.size(); ++id) {
+        if (kind_[id] == PrimKind::Object)
+            bounds_[id] = object_placement_bounds(*objects_[index_[id]], bounds_[id]);
+    }
     octree::BuildInput input;
     std::vector<uint32_t> bounded_ids;
     for (uint32_t id = 0; id < kind_.size(); ++id) {
