@@ -1031,7 +1031,11 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, const PovRayOnce
             hit.point = best->at(ray);
             // (material_only: a leaf outside CSG may have given any of its crossings.)
             if (!material_only) hit.normal = best->normal();
-            hit.material = material_for(best->leaf);
+            // A leaf object's own material is the primitive's (add_material gave both);
+            // a CSG's leaves are looked up.
+            hit.material = best->leaf == &obj && !std::holds_alternative<Csg>(obj.shape)
+                               ? &materials_[material_[id]]
+                               : material_for(best->leaf);
             if (!hit.material) hit.material = &materials_[material_[id]];
             hit.face = best->hit.face;
             hit.param = best->hit.param;
