@@ -6,6 +6,8 @@
 
 #include "octree/overlap.h"
 #include "octree/spatial_order.h"
+#include "trace/object_placement.h"
+#include "trace/pov_slab_test.h"
 #include "trace/render.h"
 #include "trace/shapes/shape.h"
 #include "trace/sphere_lanes.h"
@@ -416,6 +418,12 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
         }
     }
     std::sort(leaf_materials_.begin(), leaf_materials_.end());
+    // General objects go into the octree by their placement bounds (narrower for a
+    // turned lathe or sor).
+    for (uint32_t id = 0; id < kind_.size(); ++id) {
+        if (kind_[id] == PrimKind::Object)
+            bounds_[id] = object_placement_bounds(*objects_[index_[id]], bounds_[id]);
+    }
     octree::BuildInput input;
     std::vector<uint32_t> bounded_ids;
     for (uint32_t id = 0; id < kind_.size(); ++id) {
@@ -934,6 +942,17 @@ inline Real sphere_distance(const PreparedScene::SpherePrim& sp, const Ray& ray,
     return sphere_distance(sp.x, sp.y, sp.z, sp.r, ray, lo);
 }
 
+// pov_accepts' first tests of a primitive in the slab tree, inline for the leaf loops
+// (most candidates in a leaf fail them): whether the tree's root (when tested) or the
+// primitive's box turns the ray away.
+inline bool pov_slab_rejects(const PovBBox& box, bool root_tested, const PovBBox& root,
+                             const PovRayOnce& pov_ray) {
+    if (root_tested &&
+        !pov_ray.root_accepts([&](const PovRay& r) { return slab_test(root, r); }))
+        return true;
+    return !slab_test(box, pov_ray.get());
+}
+
 // How many of a leaf's ids (sorted) are spheres: they come first.
 inline size_t leading_spheres(const uint32_t* ids, size_t n, uint32_t sphere_count) {
     if (n == 0 || ids[n - 1] < sphere_count) return n;
@@ -1040,7 +1059,11 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, const PovRayOnce
             hit.point = best->at(ray);
             // (material_only: a leaf outside CSG may have given any of its crossings.)
             if (!material_only) hit.normal = best->normal();
-            hit.material = material_for(best->leaf);
+            // A leaf object's own material is the primitive's (add_material gave both);
+            // a CSG's leaves are looked up.
+            hit.material = best->leaf == &obj && !std::holds_alternative<Csg>(obj.shape)
+                               ? &materials_[material_[id]]
+                               : material_for(best->leaf);
             if (!hit.material) hit.material = &materials_[material_[id]];
             hit.face = best->hit.face;
             hit.param = best->hit.param;
@@ -1110,6 +1133,12 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
                 pov_sphere_box_surely_accepts(lanes_.x[q], lanes_.y[q], lanes_.z[q],
                                               lanes_.r[q], ray)) ||
                pov_accepts(id, pov_ray);
+    };
+    // A general object whose POV-Ray boxes turn the ray away: test_primitive is false.
+    auto box_rejects = [&](uint32_t id) {
+        const PovPrim& p = pov_[id - sphere_count_];
+        return kind_[id] == PrimKind::Object && (p.tests & kPovSlabTree) &&
+               pov_slab_rejects(p.box, pov_root_tested_, pov_root_, pov_ray);
     };
     // Materials are only looked at when some object hides from this kind of ray or at a
     // tie: a sphere's candidate hit then costs no load of its (large) material.
@@ -1206,6 +1235,10 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
                 // Objects hidden from this ray kind can have a hit beyond a visible one:
                 // a primitive seen in an earlier leaf was fully tested there.
                 if (!ctx.mailbox.first_visit(ids[i])) continue;
+                if (box_rejects(ids[i])) {
+                    ++ctx.tests;
+                    continue;
+                }
                 consider(ids[i]);
             }
             tmax = reach;
@@ -1232,6 +1265,12 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
                 pov_sphere_box_surely_accepts(lanes_.x[q], lanes_.y[q], lanes_.z[q],
                                               lanes_.r[q], ray)) ||
                pov_accepts(id, pov_ray);
+    };
+    // A general object whose POV-Ray boxes turn the ray away: test_primitive is false.
+    auto box_rejects = [&](uint32_t id) {
+        const PovPrim& p = pov_[id - sphere_count_];
+        return kind_[id] == PrimKind::Object && (p.tests & kPovSlabTree) &&
+               pov_slab_rejects(p.box, pov_root_tested_, pov_root_, pov_ray);
     };
     const Real lo = std::max(t_min, kMinIsectDepth);
     // 1: an opaque shadow caster; 0: none; -1: a see-through one.
@@ -1280,8 +1319,12 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
                                 }))
                 return blocked = true;
             for (size_t i = spheres; i < n; ++i) {
-                if (ctx.mailbox.first_visit(ids[i]) && blocks(ids[i], meets(ids[i])))
-                    return blocked = true;
+                if (!ctx.mailbox.first_visit(ids[i])) continue;
+                if (box_rejects(ids[i])) {
+                    ++ctx.tests;
+                    continue;
+                }
+                if (blocks(ids[i], meets(ids[i]))) return blocked = true;
             }
             return false;
         },

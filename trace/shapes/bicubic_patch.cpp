@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "trace/shapes/oracle_math.h"
+#include "trace/shapes/sort_hits.h"
 
 namespace povwall::trace {
 namespace {
@@ -57,8 +58,7 @@ void shape_hits(const BicubicPatch& p, const LocalRay& r, ShapeHits& out) {
             out.push_back({dist / r.length, hit, int(2 * leaf) + k, a, b});
         }
     });
-    std::stable_sort(out.begin() + std::ptrdiff_t(first), out.end(),
-                     [](const ShapeHit& a, const ShapeHit& b) { return a.t < b.t; });
+    stable_sort_by_depth(out, first);
 }
 
 Vector3 shape_normal(const BicubicPatch& p, const ShapeHit& h) {

@@ -7,6 +7,7 @@
 #include "core/pov_polysolve.h"
 #include "trace/roots_sturm.h"
 #include "trace/shapes/oracle_math.h"
+#include "trace/shapes/sort_hits.h"
 
 namespace povwall::trace {
 namespace {
@@ -492,8 +493,7 @@ void shape_hits(const Blob& s, const LocalRay& r, ShapeHits& out) {
         // it keeps them all, unless the query wants only the nearest in its range.
         if (wanted && r.nearest_only) break;
     }
-    std::stable_sort(out.begin() + std::ptrdiff_t(first), out.end(),
-                     [](const ShapeHit& a, const ShapeHit& b) { return a.t < b.t; });
+    stable_sort_by_depth(out, first);
 }
 
 Vector3 shape_normal(const Blob& s, const ShapeHit& h) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "trace/shapes/oracle_math.h"
+#include "trace/shapes/sort_hits.h"
 
 namespace povwall::trace {
 namespace {
@@ -298,8 +299,7 @@ void shape_hits(const HeightField& h, const LocalRay& r, ShapeHits& out) {
     } else {
         walk.blocks(start);
     }
-    std::stable_sort(out.begin() + std::ptrdiff_t(first), out.end(),
-                     [](const ShapeHit& a, const ShapeHit& b) { return a.t < b.t; });
+    stable_sort_by_depth(out, first);
 }
 
 Vector3 shape_normal(const HeightField& h, const ShapeHit& hit) {

@@ -7,6 +7,7 @@
 #include "trace/pattern.h"
 #include "trace/shapes/function_container.h"
 #include "trace/shapes/oracle_math.h"
+#include "trace/shapes/sort_hits.h"
 
 namespace povwall::trace {
 namespace {
@@ -163,8 +164,7 @@ void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, Real& max
         if (tmax - tmin < acc) break;
         search.sign = -search.sign;
     }
-    std::stable_sort(out.begin() + std::ptrdiff_t(first), out.end(),
-                     [](const ShapeHit& a, const ShapeHit& b) { return a.t < b.t; });
+    stable_sort_by_depth(out, first);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "core/pov_polysolve.h"
 #include "trace/roots_sturm.h"
 #include "trace/shapes/oracle_math.h"
+#include "trace/shapes/sort_hits.h"
 
 namespace povwall::trace {
 namespace {
@@ -191,8 +192,7 @@ void shape_hits(const Poly& s, const LocalRay& r, ShapeHits& out) {
         h.own_point = true;
         out.push_back(h);
     }
-    std::stable_sort(out.begin() + std::ptrdiff_t(first), out.end(),
-                     [](const ShapeHit& a, const ShapeHit& b) { return a.t < b.t; });
+    stable_sort_by_depth(out, first);
 }
 
 Vector3 shape_normal(const Poly& s, const ShapeHit& h) {

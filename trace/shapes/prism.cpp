@@ -6,6 +6,7 @@
 #include "core/pov_polysolve.h"
 #include "trace/roots_sturm.h"
 #include "trace/shapes/oracle_math.h"
+#include "trace/shapes/sort_hits.h"
 
 namespace povwall::trace {
 namespace {
@@ -228,8 +229,7 @@ void shape_hits(const Prism& p, const LocalRay& r, ShapeHits& out) {
         }
     }
     out.insert(out.end(), walls.begin(), walls.end());
-    std::stable_sort(out.begin() + std::ptrdiff_t(first), out.end(),
-                     [](const ShapeHit& a, const ShapeHit& b) { return a.t < b.t; });
+    stable_sort_by_depth(out, first);
 }
 
 Vector3 shape_normal(const Prism& p, const ShapeHit& h) {
