@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/quadric_bounds.h"
+
 namespace povwall {
 namespace {
 
@@ -255,6 +257,11 @@ void cut_by_box(const float box_lo[3], const float box_len[3], Vector3& lo, Vect
 }  // namespace
 
 bool quadric_clip_bounds(Quadric& q, const std::vector<Object>& clips) {
+    return quadric_clip_bounds(q, clips, PovBoxOf{});
+}
+
+bool quadric_clip_bounds(Quadric& q, const std::vector<Object>& clips,
+                         const PovBoxOf& box_of) {
     Vector3 lo(-2e10), hi(2e10);
     for (const Object& c : clips) {
         if (c.inverse) continue;
@@ -277,6 +284,9 @@ bool quadric_clip_bounds(Quadric& q, const std::vector<Object>& clips) {
                 blen[a] = float(bmax[a] - bmin[a]);
             }
             cut_by_box(blo, blen, lo, hi);
+        } else if (box_of) {
+            const Csg::PovBox b = box_of(c);
+            cut_by_box(b.lo, b.len, lo, hi);
         } else {
             return false;
         }
@@ -288,6 +298,11 @@ bool quadric_clip_bounds(Quadric& q, const std::vector<Object>& clips) {
 
 bool quadric_csg_bounds_impl(std::vector<Object>& children,
                              const std::vector<bool>& inverted) {
+    return quadric_csg_bounds_impl(children, inverted, PovBoxOf{});
+}
+
+bool quadric_csg_bounds_impl(std::vector<Object>& children,
+                             const std::vector<bool>& inverted, const PovBoxOf& box_of) {
     Vector3 lo(-2e10), hi(2e10);
     for (size_t i = 0; i < children.size(); ++i) {
         const Object& c = children[i];
@@ -297,9 +312,14 @@ bool quadric_csg_bounds_impl(std::vector<Object>& children,
             continue;
         }
         if (inverted[i] || std::holds_alternative<HeightField>(c.shape)) continue;
-        const Plane* plane = std::get_if<Plane>(&c.shape);
-        if (!plane) return false;
-        cut_by_plane(c, *plane, lo, hi);
+        if (const Plane* plane = std::get_if<Plane>(&c.shape)) {
+            cut_by_plane(c, *plane, lo, hi);
+        } else if (box_of) {
+            const Csg::PovBox b = box_of(c);
+            cut_by_box(b.lo, b.len, lo, hi);
+        } else {
+            return false;
+        }
     }
     for (size_t i = 0; i < children.size(); ++i) {
         Quadric* q = std::get_if<Quadric>(&children[i].shape);

@@ -86,9 +86,9 @@ void Interpreter::run_directive(const Token& t) {
                                : "scene for an unofficial POV-Ray");
         }
         const Token at = peek();
-        const double v = parse_float();
-        accept_semicolon();
+        const double v = parse_numeric(false, true).c[0];
         set_version(at, int(v * 100 + 0.5));
+        check_semicolon(t, false);
         return;
     }
     if (d == "undef") {
@@ -364,6 +364,7 @@ void Interpreter::directive_declare(const Token& t, bool local) {
         std::string feature = e.message().substr(std::string("unsupported: ").size());
         v = std::make_shared<UnsupportedValue>(UnsupportedValue{feature});
     }
+    const bool numeric = std::holds_alternative<Numeric>(v);
     // POV-Ray copies an array on assignment (`#declare B = A;` then `#declare B[0] = 5;`
     // leaves A as it was). Shared, it would also let `#declare A[0] = A;` make a cycle
     // that is never freed. A new array (the only owner) needs no copy.
@@ -398,7 +399,26 @@ void Interpreter::directive_declare(const Token& t, bool local) {
         declare_symbol(name.sym ? name.sym : sources_.intern(key), std::move(v), local,
                        name);
     }
-    accept_semicolon();
+    // POV-Ray's Parse_Semi_Colon(true) after a float, vector or colour; other values only
+    // allow one.
+    if (numeric)
+        check_semicolon(t, true);
+    else
+        accept_semicolon();
+}
+
+void Interpreter::check_semicolon(const Token& at, bool forced) {
+    if (accept_semicolon()) return;
+    if (forced && version_ >= 350) {
+        error(at,
+              "All #declares of float, vector, and color require semi-colon ';' at end "
+              "if the language version is set to 3.5 or higher. Either add the "
+              "semi-colon or set the language version to 3.1 or lower.");
+    }
+    if (version_ >= 310)
+        warn(at,
+             "All #version and #declares of float, vector, and color require "
+             "semi-colon ';' at end.");
 }
 
 // Skips the rest of a declaration's right-hand side without running it: up to a ';' or

@@ -57,6 +57,37 @@ Vector3 rotate_vector(const Vector3& v, const Vector3& degrees) {
     return Transform::rotate(degrees).vector(v);
 }
 
+// POV-Ray 3.7 compares strings by UCS2_strcmp: the difference of the first code units
+// that differ (a string's end counting as 0). Our strings hold the bytes POV-Ray reads
+// as one code unit each.
+int compare_strings(std::string_view a, std::string_view b) {
+    size_t i = 0;
+    while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
+    const int ca = i < a.size() ? (unsigned char)a[i] : 0;
+    const int cb = i < b.size() ? (unsigned char)b[i] : 0;
+    return ca - cb;
+}
+
+bool string_relation(BinaryOpCode code, int order) {
+    using C = BinaryOpCode;
+    switch (code) {
+        case C::Lt:
+            return order < 0;
+        case C::Le:
+            return order <= 0;
+        case C::Eq:
+            return order == 0;
+        case C::Ne:
+            return order != 0;
+        case C::Ge:
+            return order >= 0;
+        case C::Gt:
+            return order > 0;
+        default:
+            return false;
+    }
+}
+
 Vector3 axis_rotate(const Vector3& v, const Vector3& axis, double degrees) {
     Vector3 k = normalize(axis);
     double a = degrees * kPi / 180, c = std::cos(a), s = std::sin(a);
@@ -202,8 +233,12 @@ const char* type_name(const Value& v) {
 // A small recursive-descent evaluator bound to the interpreter's token stream.
 class ExpressionParser {
   public:
-    ExpressionParser(Interpreter& in, bool no_gt, bool full = true)
-        : in_(in), no_gt_(no_gt), full_(full) {}
+    // `hold`: directives and macro calls met where an operator could follow an operand
+    // end the expression unrun (POV-Ray's Ok_To_Declare = false while it reads the value
+    // of a #declare or #version, which is what lets a pre-3.5 `#declare X = 1` stand
+    // without its semicolon before the next directive).
+    ExpressionParser(Interpreter& in, bool no_gt, bool full = true, bool hold = false)
+        : in_(in), no_gt_(no_gt), full_(full), hold_(hold) {}
 
     // POV-Ray's Parse_Float/Parse_Vector read only sums of terms (no comparisons, logic
     // or
@@ -221,15 +256,30 @@ class ExpressionParser {
                   std::string("expected a numeric expression but found ") + type_name(v));
     }
 
+    // The token after an operand, where an operator may follow.
+    const Token& peek_operator() { return in_.peek_after_operand(hold_); }
+
+    // A value POV-Ray reads with Parse_Express, where a string can only start a
+    // comparison: a string left over is missing its comparison operator.
+    Numeric express_value(const Value& v, const Token& at) {
+        if (std::holds_alternative<std::string>(v))
+            in_.expected("a string comparison operator", in_.peek());
+        return num(v, at);
+    }
+
     Value ternary() {
         Token at = in_.peek();
         Value c = binary(kOrLevel);
         if (!numeric(c)) return c;
-        if (in_.is_punct(in_.peek(), '?')) {
+        if (in_.is_punct(peek_operator(), '?')) {
             in_.next();
+            Token a_at = in_.peek();
             Value a = ternary();
+            if (std::holds_alternative<std::string>(a)) express_value(a, a_at);
             in_.expect_punct(':', "in a conditional expression");
+            Token b_at = in_.peek();
             Value b = ternary();
+            if (std::holds_alternative<std::string>(b)) express_value(b, b_at);
             return num(c, at).c[0] != 0 ? a : b;
         }
         return c;
@@ -239,15 +289,38 @@ class ExpressionParser {
     // so an operand costs one look at the next token rather than one per level. An error
     // names the first token of the left operand's chain. Reads the operators of
     // `min_level` and tighter (the right operand of a looser operator).
+    //
+    // A string operand is POV-Ray's relational string term (Parse_Rel_Term): it must be
+    // compared with one string (UCS2_strcmp order), and the comparison is the whole
+    // term: only `&`, `|` and `?:` may follow it. `string_term_` tells the caller that
+    // the value it got ended with such a term. At the top (`min_level` kOrLevel) a string
+    // without a comparison is returned as a string value for the caller to judge.
     Value binary(int min_level) {
         Token at = in_.peek();
         Value a = unary();
+        bool string_term = false;
+        if (auto s = std::get_if<std::string>(&a); s && min_level <= kComparisonLevel) {
+            const BinaryOp op = binary_op(peek_operator(), false);
+            if (op.level != kComparisonLevel) {
+                string_term_ = false;
+                if (min_level == kOrLevel) return a;
+                in_.expected("a string comparison operator", in_.peek());
+            }
+            in_.next();
+            const std::string rhs = in_.parse_string();
+            a = Numeric::scalar(string_relation(op.code, compare_strings(*s, rhs)) ? 1
+                                                                                   : 0);
+            string_term = true;
+        }
         for (;;) {
+            string_term_ = string_term;
             if (!numeric(a)) return a;
-            const BinaryOp op = binary_op(in_.peek(), no_gt_);
+            const BinaryOp op = binary_op(peek_operator(), no_gt_);
             if (op.level < min_level || op.level == kNotAnOperator) return a;
+            if (string_term && op.level >= kComparisonLevel) return a;
             in_.next();
             Value b = binary(op.level + 1);
+            string_term = string_term_;
             a = apply_binary(op.code, std::get<Numeric>(a), num(b, at));
         }
     }
@@ -275,7 +348,7 @@ class ExpressionParser {
         Value v = primary();
         // Only numbers take operators: after an object, texture, array... nothing is read
         // ahead, so a directive following it runs in order.
-        while (numeric(v) && in_.is_punct(in_.peek(), '.')) {
+        while (numeric(v) && in_.is_punct(peek_operator(), '.')) {
             in_.next();
             Token m = in_.next();
             Numeric n = std::get<Numeric>(v);
@@ -342,7 +415,7 @@ class ExpressionParser {
     // Parse_Vector), which is what lets `vdot(<1,2,3> <4,5,6>)` read two vectors.
     double arg_float() {
         Token at = in_.peek();
-        return num(ExpressionParser(in_, false).parse(), at).c[0];
+        return express_value(ExpressionParser(in_, false).parse(), at).c[0];
     }
     double arg_sum() {
         Token at = in_.peek();
@@ -374,7 +447,9 @@ class ExpressionParser {
                 return std::string(t.text);
             case TokenKind::Punct:
                 if (in_.is_punct(t, '(')) {
-                    Value v = ExpressionParser(in_, false).parse();
+                    // POV-Ray's parenthesised expression is numeric: `("a")` is an error.
+                    Token at = in_.peek();
+                    Numeric v = express_value(ExpressionParser(in_, false).parse(), at);
                     in_.expect_punct(')', "to close '('");
                     return v;
                 }
@@ -392,6 +467,8 @@ class ExpressionParser {
     Interpreter& in_;
     bool no_gt_;
     bool full_;
+    bool hold_;
+    bool string_term_ = false;  // see binary()
 };
 
 Value ExpressionParser::word(const Token& t) {
@@ -647,11 +724,7 @@ Value ExpressionParser::word(const Token& t) {
         in_.accept_punct(',');
         std::string b = arg_string();
         in_.expect_punct(')');
-        size_t i = 0;
-        while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
-        const int ca = i < a.size() ? (unsigned char)a[i] : 0;
-        const int cb = i < b.size() ? (unsigned char)b[i] : 0;
-        return Numeric::scalar(double(ca - cb));
+        return Numeric::scalar(double(compare_strings(a, b)));
     }
     if (w == "strlen") {
         in_.expect_punct('(');
@@ -723,7 +796,7 @@ Value ExpressionParser::word(const Token& t) {
         w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit" ||
         w == "alpha") {
         in_.unget(t);
-        return in_.parse_colour();
+        return in_.parse_colour(hold_);
     }
     if (w == "eval_pigment") in_.unsupported(t, w);
     if (w.find('[') != std::string_view::npos) {
@@ -732,10 +805,35 @@ Value ExpressionParser::word(const Token& t) {
     return in_.parse_item_value(t);
 }
 
-Value Interpreter::parse_expression_value() {
+Value Interpreter::parse_expression_value(bool hold_directives) {
     peek();
     if (Numeric n; try_compiled_expression(true, false, n)) return n;
-    return ExpressionParser(*this, false).parse();
+    return ExpressionParser(*this, false, true, hold_directives).parse();
+}
+
+const Token& Interpreter::peek_after_operand(bool hold_directives) {
+    if (!hold_directives || !pushback_.empty()) return peek();
+    // The raw token, past the ends of finished macro bodies and files as next() goes;
+    // left in the stream, so that a directive or macro call runs after the value is
+    // stored (POV-Ray hands back its HASH or MACRO_ID token unrun).
+    const Token t = next_raw();
+    if (t.kind == TokenKind::End) return peek();
+    --frames_.back().pos;
+    bool held = t.kind == TokenKind::Directive;
+    if (t.kind == TokenKind::Word) {
+        const Value* v = lookup(t);
+        held = v && std::holds_alternative<std::shared_ptr<Macro>>(*v);
+    }
+    if (!held) return peek();
+    held_token_ = t;
+    return held_token_;
+}
+
+void Interpreter::not_numeric(const Value& v, const Token& at) {
+    // POV-Ray's Parse_Express meets a string as the left side of a comparison.
+    if (std::holds_alternative<std::string>(v))
+        expected("a string comparison operator", peek());
+    error(at, std::string("expected a numeric expression but found ") + type_name(v));
 }
 Value Interpreter::parse_value_additive() {
     peek();
@@ -743,20 +841,20 @@ Value Interpreter::parse_value_additive() {
     return ExpressionParser(*this, false, false).parse();
 }
 
-Numeric Interpreter::parse_numeric(bool no_gt) {
+Numeric Interpreter::parse_numeric(bool no_gt, bool hold_directives) {
     Token at = peek();
     if (Numeric n; try_compiled_expression(false, no_gt, n)) return n;
-    Value v = ExpressionParser(*this, no_gt, false).parse();
+    Value v = ExpressionParser(*this, no_gt, false, hold_directives).parse();
     if (auto n = std::get_if<Numeric>(&v)) return *n;
     error(at, std::string("expected a numeric expression but found ") + type_name(v));
 }
 
-Numeric Interpreter::parse_express() {
+Numeric Interpreter::parse_express(bool hold_directives) {
     Token at = peek();
     if (Numeric n; try_compiled_expression(true, false, n)) return n;
-    Value v = ExpressionParser(*this, false).parse();
+    Value v = ExpressionParser(*this, false, true, hold_directives).parse();
     if (auto n = std::get_if<Numeric>(&v)) return *n;
-    error(at, std::string("expected a numeric expression but found ") + type_name(v));
+    not_numeric(v, at);
 }
 
 double Interpreter::parse_float() {
@@ -785,8 +883,7 @@ double Interpreter::parse_condition() {
     }
     Value v = ExpressionParser(*this, false).parse();
     const Numeric* np = std::get_if<Numeric>(&v);
-    if (!np)
-        error(at, std::string("expected a numeric expression but found ") + type_name(v));
+    if (!np) not_numeric(v, at);
     Numeric n = *np;
     expect_punct(')', "to close the condition");
     return n.c[0];
@@ -809,7 +906,8 @@ std::string Interpreter::parse_string() {
         std::string_view w = t.text;
         if (lookup(t)) {
             unget(t);
-            Value val = ExpressionParser(*this, false).parse();
+            // An operand only: `S = "a"` after it is the caller's comparison.
+            Value val = ExpressionParser(*this, false, false).parse();
             if (auto s = std::get_if<std::string>(&val)) return *s;
             error(t, std::string("expected a string but found ") + type_name(val));
         }

@@ -117,11 +117,20 @@ class Interpreter {
     void declare_symbol(uint32_t sym, Value v, bool local, const Token& at);
 
     // ---- expressions (expressions.cpp)
-    Value parse_expression_value();  // float, vector, colour or string
+    // `hold_directives`: a directive or macro call where an operator could follow ends
+    // the value unrun (the value of a #declare or #version; see peek_after_operand).
+    Value parse_expression_value(bool hold_directives = false);  // float ... or string
     // Same without comparisons: POV-Ray's Parse_RValue (array items, macro arguments).
     Value parse_value_additive();
-    Numeric parse_numeric(bool no_gt = false);  // POV-Ray's Parse_Float/Vector level
-    Numeric parse_express();                    // full expression (Parse_Express)
+    // POV-Ray's Parse_Float/Vector level
+    Numeric parse_numeric(bool no_gt = false, bool hold_directives = false);
+    Numeric parse_express(bool hold_directives = false);  // full (Parse_Express)
+    // The next token where an operator may follow an operand. With `hold_directives` a
+    // directive or macro call there is returned without running it and left in the
+    // stream (POV-Ray's Ok_To_Declare = false).
+    const Token& peek_after_operand(bool hold_directives);
+    // Reports a non-numeric value where Parse_Express wanted one.
+    [[noreturn]] void not_numeric(const Value& v, const Token& at);
     double parse_float();
     // A float POV-Ray stores in single precision (a SNGL field: a pattern's frequency,
     // phase, wave exponent, agate_turb, quilted controls, turbulence omega and lambda, a
@@ -135,7 +144,8 @@ class Interpreter {
     double parse_condition();
     Vector3 parse_vector();  // float promoted to <f,f,f>
     std::string parse_string();
-    Numeric parse_colour();  // colour keyword forms, rgb, identifiers
+    // Colour keyword forms, rgb, identifiers; `hold_directives` as parse_express.
+    Numeric parse_colour(bool hold_directives = false);
     Colour parse_colour_value();
     bool parse_bool_opt();
     bool starts_float(const Token& t);  // can `t` begin a float expression?
@@ -248,6 +258,11 @@ class Interpreter {
                                    PhotonPassThroughCause cause);
     static void inherit_photons(ObjectPhotons& child, const ObjectPhotons& parent);
     Value parse_declared_value(const Token& first);
+    bool starts_string(const Token& t) const;  // a string literal, function or identifier
+    // A missing ';' after a declared float, vector or colour (`forced`) or after
+    // #version: POV-Ray 3.7's error (forced, from #version 3.5 on) or "possible error"
+    // (from 3.1).
+    void check_semicolon(const Token& at, bool forced);
     Value parse_item_value(const Token& t);
     void parse_array_initializer(ArrayValue& a, size_t dim, size_t base);
     // `spline { ... }` after the keyword, and a call `S(p [, kind])` after `S`.
@@ -446,6 +461,7 @@ class Interpreter {
     std::vector<uint8_t> bound_;  // by symbol: ever bound (keywords never are)
     std::unordered_map<uint64_t, uint64_t> loop_counts_;  // #while runs, by position
     std::vector<Token> pushback_;
+    Token held_token_;  // what peek_after_operand() returns for a held directive
     // --max-parse-seconds: the clock is read once per 4,096 tokens (a slow build reads
     // 4,096 tokens in a few milliseconds, so a limit of 0.02 s holds to about that);
     // resident memory, a /proc read, once per 16 clock reads.

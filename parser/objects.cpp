@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "core/quadric.h"
+#include "core/quadric_bounds.h"
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
@@ -78,6 +79,13 @@ bool any_turned_mirrored_uv_box(const Object& obj) {
         for (const Object& c : csg->children)
             if (any_turned_mirrored_uv_box(c)) return true;
     return false;
+}
+
+// POV-Ray's box of a clip or CSG sibling, for a quadric's box (core/quadric_bounds.h);
+// empty (the quadric refuses such siblings) without the trace/ queries.
+PovBoxOf pov_box_of(const ParseOptions& options) {
+    if (!options.object_queries) return {};
+    return [q = options.object_queries](const Object& o) { return q->box(o); };
 }
 
 }  // namespace
@@ -480,7 +488,7 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
             }
             // POV-Ray computes a quadric's box again from its clips.
             if (Quadric* q = std::get_if<Quadric>(&obj.shape);
-                q && clip && !quadric_clip_bounds(*q, list))
+                q && clip && !quadric_clip_bounds(*q, list, pov_box_of(options_)))
                 unsupported(t,
                             "clipped_by on a quadric by shapes other than boxes, "
                             "planes and quadrics");
@@ -802,7 +810,10 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                     bounds_quadric ||
                     (std::holds_alternative<Quadric>(csg.children[i].shape) &&
                      !inverted(i));
-            if (bounds_quadric && !quadric_csg_bounds(csg.children, inverted))
+            std::vector<bool> flags(csg.children.size());
+            for (size_t i = 0; i < csg.children.size(); ++i) flags[i] = inverted(i);
+            if (bounds_quadric &&
+                !quadric_csg_bounds_impl(csg.children, flags, pov_box_of(options_)))
                 unsupported(t,
                             "a quadric in an intersection or difference with shapes "
                             "other than planes and quadrics");

@@ -1223,9 +1223,25 @@ Numeric Interpreter::call_spline(const Spline& s) {
     return n;
 }
 
+// POV-Ray's Parse_RValue: a value that starts as a string is that string alone (a
+// comparison after it is an error there); other values are read with directives held
+// (see peek_after_operand), as POV-Ray reads a declared float, vector or colour.
 Value Interpreter::parse_declared_value(const Token& first) {
     unget(first);
-    return parse_expression_value();
+    if (starts_string(first)) return parse_string();
+    return parse_expression_value(true);
+}
+
+bool Interpreter::starts_string(const Token& t) const {
+    if (t.kind == TokenKind::String) return true;
+    if (t.kind != TokenKind::Word) return false;
+    if (const Value* v = lookup(t)) return std::holds_alternative<std::string>(*v);
+    static constexpr std::string_view kStringFunctions[] = {
+        "str", "vstr", "concat", "chr", "datetime", "substr", "strupr", "strlwr"};
+    for (std::string_view f : kStringFunctions) {
+        if (t.text == f) return true;
+    }
+    return false;
 }
 
 }  // namespace povwall::parser

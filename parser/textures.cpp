@@ -77,7 +77,7 @@ bool is_fractal(PatternKind k) {
 
 }  // namespace
 
-Numeric Interpreter::parse_colour() {
+Numeric Interpreter::parse_colour(bool hold_directives) {
     Numeric c;
     c.size = 5;
     c.colour = true;
@@ -100,8 +100,9 @@ Numeric Interpreter::parse_colour() {
             c.c[i] = (srgb && i < 3) ? decode_srgb(p.c[i]) : p.c[i];
         }
     };
+    auto express = [&] { return parse_express(hold_directives); };
     for (;;) {
-        const Token& t = peek();
+        const Token& t = any ? peek_after_operand(hold_directives) : peek();
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
         // A second form keyword starts the next colour (checker rgb A rgb B).
         bool form = w == "rgb" || w == "srgb" || w == "rgbf" || w == "srgbf" ||
@@ -110,13 +111,13 @@ Numeric Interpreter::parse_colour() {
         if (form) check_srgb(t);
         if (w == "rgb" || w == "srgb") {
             next();
-            set(parse_express(), 3, w == "srgb");
+            set(express(), 3, w == "srgb");
         } else if (w == "rgbf" || w == "srgbf") {
             next();
-            set(parse_express(), 4, w == "srgbf");
+            set(express(), 4, w == "srgbf");
         } else if (w == "rgbt" || w == "srgbt") {
             next();
-            Numeric v = parse_express();
+            Numeric v = express();
             Numeric p = v;
             if (p.size == 1) {
                 for (int i = 1; i < 5; ++i) p.c[i] = p.c[0];
@@ -126,7 +127,7 @@ Numeric Interpreter::parse_colour() {
             c.c[4] = p.c[3];
         } else if (w == "rgbft" || w == "srgbft") {
             next();
-            set(parse_express(), 5, w == "srgbft");
+            set(express(), 5, w == "srgbft");
         } else if (w == "red" || w == "green" || w == "blue" || w == "filter" ||
                    w == "transmit" || w == "alpha") {
             next();
@@ -137,11 +138,11 @@ Numeric Interpreter::parse_colour() {
                     : w == "blue"                   ? 2
                     : w == "filter" || w == "alpha" ? 3
                                                     : 4;
-            c.c[i] = parse_float();
+            c.c[i] = parse_numeric(false, hold_directives).c[0];
         } else if (!any &&
                    (t.kind == TokenKind::Number || is_punct(t, '<') || is_punct(t, '(') ||
                     is_punct(t, '-') || (t.kind == TokenKind::Word && lookup(t)))) {
-            Numeric v = parse_express();
+            Numeric v = express();
             if (v.size == 1) {
                 for (int i = 0; i < 5; ++i) c.c[i] = v.c[0];
             } else {

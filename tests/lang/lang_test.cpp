@@ -55,7 +55,8 @@ INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
                          ::testing::Values("expressions", "directives", "colours",
                                            "splines", "functions", "functions_internal",
                                            "fileio", "keywords", "text_extents",
-                                           "object_queries"));
+                                           "object_queries", "string_relations",
+                                           "legacy_semicolons"));
 
 }  // namespace
 }  // namespace povwall::parser

@@ -406,8 +406,10 @@ TEST(Errors, DirectivesNestedPastTheStackAreALocatedError) {
         std::string::npos)
         << e;
     // Deep but legitimate recursion still parses: 400 macro levels, each with a #local.
+    // (`#local R = #if (N > 0) ... #else 0 #end;` is POV-Ray's missing-';' error: the
+    // value ends at the #else.)
     Scene s = parse(
-        "#macro F(N) #local R = #if (N > 0) F(N - 1) + 1 #else 0 #end; R #end\n"
+        "#macro F(N) #local R = 0; #if (N > 0) #local R = F(N - 1) + 1; #end R #end\n"
         "sphere { 0, F(400) }");
     ASSERT_EQ(s.objects.size(), 1u);
     EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).radius, 400);

@@ -519,5 +519,131 @@ TEST(RealSceneForms, BareObjectIdentifierInCsg) {
               "kind");
 }
 
+// String relational operators (POV-Ray 3.7's Parse_Rel_String_Term; the values are in
+// tests/lang/string_relations.pov): a string can only be the left side of a comparison
+// with one string, and nothing tighter than `&` or `|` may follow that comparison. The
+// mixes POV-Ray 3.7 rejects are errors with its reason (its messages, in our form).
+TEST(StringRelations, MixesPovRayRejects) {
+    const std::string v = "#version 3.7;\n";
+    // POV-Ray: "Expected 'string comparison operator', ) found instead".
+    EXPECT_EQ(error_of(v + "#if (\"a\") #end"),
+              "test.pov:2:9: error: expected a string comparison operator but found ')'");
+    EXPECT_EQ(
+        error_of(v + "#if (\"a\" + \"b\") #end"),
+        "test.pov:2:10: error: expected a string comparison operator but found '+'");
+    EXPECT_EQ(
+        error_of(v + "#declare X = (\"a\" & 1);"),
+        "test.pov:2:19: error: expected a string comparison operator but found '&'");
+    EXPECT_EQ(
+        error_of(v + "#if ((\"a\") = \"a\") #end"),
+        "test.pov:2:10: error: expected a string comparison operator but found ')'");
+    EXPECT_EQ(
+        error_of(v + "#if (1 & \"a\") #end"),
+        "test.pov:2:13: error: expected a string comparison operator but found ')'");
+    EXPECT_EQ(
+        error_of(v + "#if (1 ? \"a\" : \"b\") #end"),
+        "test.pov:2:14: error: expected a string comparison operator but found ':'");
+    EXPECT_EQ(
+        error_of(v + "#declare X = sin(\"a\");"),
+        "test.pov:2:21: error: expected a string comparison operator but found ')'");
+    // POV-Ray: "Expected 'string expression', float function 'float constant' found".
+    EXPECT_EQ(error_of(v + "#if (\"a\" < 1) #end"),
+              "test.pov:2:12: error: expected a string but found '1'");
+    EXPECT_EQ(error_of(v + "#if (\"a\" = (\"a\")) #end"),
+              "test.pov:2:12: error: expected a string but found '('");
+    // POV-Ray: "Expected 'numeric expression', string literal found instead".
+    EXPECT_EQ(error_of(v + "#if (1 < \"a\") #end"),
+              "test.pov:2:6: error: expected a numeric expression but found string");
+    EXPECT_EQ(error_of(v + "#if (1 + \"a\" = \"b\") #end"),
+              "test.pov:2:6: error: expected a numeric expression but found string");
+    EXPECT_EQ(error_of(v + "#if (-\"a\" < \"b\") #end"),
+              "test.pov:2:6: error: expected a numeric expression but found string");
+    // POV-Ray: "Expected ')', < found instead": the comparison is the whole term.
+    EXPECT_EQ(error_of(v + "#if (\"a\" < \"b\" < \"c\") #end"),
+              "test.pov:2:16: error: expected ')' to close the condition but found '<'");
+    EXPECT_EQ(error_of(v + "#if (\"a\" < \"b\" + 1) #end"),
+              "test.pov:2:16: error: expected ')' to close the condition but found '+'");
+    EXPECT_EQ(error_of(v + "#if (1 & \"a\" = \"a\" = 1) #end"),
+              "test.pov:2:20: error: expected ')' to close the condition but found '='");
+    // A declared string is the string alone (POV-Ray's Parse_RValue): "Expected
+    // 'object or directive', < found instead".
+    EXPECT_NE(error_of(v + "#declare X = \"a\" < \"b\";"), "(no error)");
+    // Float and vector positions read sums only, as for numbers: `str("a" < "b", 0, 0)`
+    // is an error in POV-Ray too; parenthesised, the comparison is a float.
+    EXPECT_NE(error_of(v + "#debug str(\"a\" < \"b\", 0, 0)"), "(no error)");
+    EXPECT_EQ(debug_of(v + "#debug str((\"a\" < \"b\"), 0, 0)"), "1");
+}
+
+// A declared float, vector or colour without its ';' (POV-Ray 3.7's Parse_Semi_Colon):
+// the value ends at the next directive or macro call, which runs after the identifier
+// is declared; from #version 3.5 on a missing ';' is POV-Ray's error, from 3.1 its
+// "possible parse error" (a warning), before 3.1 nothing (values:
+// tests/lang/legacy_semicolons.pov, with POV-Ray's output).
+TEST(LegacySemicolons, WhenPovRayAcceptsThem) {
+    const std::string body =
+        "#declare X = 1\n#declare Y = X + 1\n"
+        "#debug concat(str(X, 0, 0), str(Y, 0, 0))\n";
+    const std::string warning =
+        "warning: All #version and #declares of float, vector, and color require "
+        "semi-colon ';' at end.";
+    std::string out;
+    parse("#version 3.0;\n" + body, &out);
+    EXPECT_EQ(out, "12");
+    parse("#version 3.1;\n" + body, &out);
+    EXPECT_EQ(out, "test.pov:2:1: " + warning + "\n#declare X = 1\n^~~~~~~~\n" +
+                       "test.pov:3:1: " + warning + "\n#declare Y = X + 1\n^~~~~~~~\n12");
+    const std::string error =
+        "error: All #declares of float, vector, and color require semi-colon ';' at "
+        "end if the language version is set to 3.5 or higher. Either add the "
+        "semi-colon or set the language version to 3.1 or lower.";
+    EXPECT_EQ(error_of("#version 3.5;\n" + body), "test.pov:2:1: " + error);
+    EXPECT_EQ(error_of(body), "test.pov:1:1: " + error);  // no #version: 3.7
+    EXPECT_EQ(error_of("#declare C = rgb <1, 0, 0>\nsphere { 0, 1 }"),
+              "test.pov:1:1: " + error);
+    // POV-Ray 3.7 rejects these too: the value ends at the #else.
+    EXPECT_EQ(error_of("#declare N = 1;\n#declare R = #if (N > 0) N #else 0 #end;"),
+              "test.pov:2:1: " + error);
+    EXPECT_EQ(error_of("#macro Mx(A, B) #if (A > B) A #else B #end #end\n"
+                       "#declare R = Mx(3, 2);"),
+              "test.pov:2:1: " + error);
+    // Other values only allow a ';'.
+    EXPECT_EQ(debug_of("#declare S = \"a\"\n#declare P = pigment { rgb 1 }\n#debug S"),
+              "a");
+    // #version itself: the warning from 3.1 on, never the error.
+    parse("#version 3.0\n#declare X = 1\n#debug str(X, 0, 0)", &out);
+    EXPECT_EQ(out, "1");
+    parse("#version 3.6\n#declare X = 1;\n#debug str(X, 0, 0)", &out);
+    EXPECT_EQ(out, "test.pov:1:1: " + warning + "\n#version 3.6\n^~~~~~~~\n1");
+}
+
+TEST(LegacySemicolons, MacroCallsAndLocals) {
+    // #version 3.1 (macros need it): what POV-Ray 3.7 prints, besides its 4 warnings
+    // (X, M, the #local L, K).
+    std::string out;
+    parse(
+        "#version 3.1;\n"
+        "#macro Twice(A) (2 * A) #end\n"
+        "#macro Note(T) #debug concat(\"note \", T, \"\\n\") #end\n"
+        "#macro Inner() #local L = 10 #debug concat(\"L=\", str(L, 0, 0), \"\\n\") L "
+        "#end\n"
+        "#declare X = 1\n"
+        "#declare M = Twice(X)\n"
+        "Note(str(M, 0, 0))\n"
+        "#declare K = Inner()\n"
+        "#debug concat(\"K=\", str(K, 0, 0), \"\\n\")\n",
+        &out);
+    std::string lines;
+    int warnings = 0;
+    std::istringstream in(out);
+    for (std::string line; std::getline(in, line);) {
+        if (line.find(": warning: All #version and #declares") != std::string::npos)
+            ++warnings;
+        if (line == "note 2" || line == "L=10" || line == "K=10") lines += line + " ";
+    }
+    EXPECT_EQ(lines, "note 2 L=10 K=10 ") << out;
+    EXPECT_EQ(warnings, 4) << out;
+    EXPECT_EQ(out.find("error"), std::string::npos) << out;
+}
+
 }  // namespace
 }  // namespace povwall::parser
