@@ -234,6 +234,26 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
     classify_boxes();
 }
 
+void BoxHost::build_photon_map() {
+    photons_ = nullptr;
+    if (scene_.settings.photons && plan_.quality.atmosphere()) {
+        // As render_scene prepares the scene for its pass (same plan, same options): the
+        // same hits, so the same photons.
+        trace::PrepareOptions prepare;
+        prepare.threads = settings_.threads;
+        trace::PreparedScene whole(scene_, &plan_, prepare);
+        whole.set_alpha_background(settings_.alpha);
+        photons_ = trace::build_photon_map(whole);
+    }
+    set_photon_map(photons_);
+}
+
+void BoxHost::set_photon_map(std::shared_ptr<const trace::PhotonMap> map) {
+    photons_ = std::move(map);
+    for (auto& box : boxes_)
+        if (box->scene) box->scene->set_photons(photons_);
+}
+
 void BoxHost::sleep_until_work() {
     std::unique_lock<std::mutex> lock(idle_mutex_);
     sleepers_.fetch_add(1);
@@ -540,6 +560,7 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
                 // As point_shadow() starts it in the single-process tracer.
                 child.shadow_state.inside = c.trace.interiors;
                 child.shadow_state.light = c.light;
+                child.shadow_state.photon_caustics = c.photon_caustics;
             }
             child.pixel = ray.pixel;
             if (parents_) {
@@ -989,6 +1010,7 @@ Image render_space(const Scene& scene, const trace::RenderSettings& settings,
     std::vector<int> all(host.walls().box_count());
     for (size_t b = 0; b < all.size(); ++b) all[b] = int(b);
     host.build_boxes(all);
+    host.build_photon_map();
     int threads = settings.threads > 0
                       ? settings.threads
                       : int(std::max(1u, std::thread::hardware_concurrency()));

@@ -389,6 +389,19 @@ Vector3 PhotonMap::incoming(const Photon& ph) {
     return {ct * std::cos(phi), std::sin(theta), ct * std::sin(phi)};
 }
 
+std::shared_ptr<PhotonMap> PhotonMap::assemble(const PhotonSettings& settings,
+                                               std::vector<Photon> photons,
+                                               double min_radius, double radius_step,
+                                               std::shared_ptr<PhotonMap> media) {
+    auto map = std::make_shared<PhotonMap>();
+    map->settings_ = settings;
+    map->photons_ = std::move(photons);
+    map->min_radius_ = min_radius;
+    map->radius_step_ = radius_step;
+    map->media_ = std::move(media);
+    return map;
+}
+
 void PhotonMap::build_tree(size_t lo, size_t hi) {
     if (hi - lo < 1) return;
     float mn[3] = {1e30f, 1e30f, 1e30f}, mx[3] = {-1e30f, -1e30f, -1e30f};
