@@ -224,9 +224,8 @@ class Interpreter {
     // At the end of the parse: light groups whose lights would light media differently
     // from the global lights are refused (light_groups.cpp).
     uint32_t light_groups_ = 0;  // groups numbered so far (Light::light_group)
-    // The global photons keyword, and the first parallel or cylinder light (photons.cpp).
-    std::optional<Token> photons_at_, first_parallel_light_;
-    void check_photons();
+    // The global photons keyword (photons.cpp).
+    std::optional<Token> photons_at_;
     CameraSpec parse_camera_block();
     // The rest of a camera block read as POV-Ray read it before 3.5, from `c`.
     CameraSpec parse_legacy_camera(CameraSpec c);
