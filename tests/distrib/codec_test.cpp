@@ -56,7 +56,7 @@ TEST(WireFrame, TruncatedNeedsMoreAndAWrongHeaderIsRefusedAtOnce) {
     };
     EXPECT_TRUE(refused(0, 0x00));                  // magic
     EXPECT_TRUE(refused(2, 1));                     // the retired fixed ray frame
-    EXPECT_TRUE(refused(2, 7));                     // no such type
+    EXPECT_TRUE(refused(2, 8));                     // no such type
     EXPECT_TRUE(refused(3, kProtocolVersion - 1));  // an older peer
     EXPECT_TRUE(refused(7, 0x7f));  // body length over the limit, before it arrives
 }
