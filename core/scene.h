@@ -915,6 +915,9 @@ struct Light {
     // The light's `photons { refraction reflection }` (its PH_RFR/RFL flags).
     PhotonSwitch photon_refraction = PhotonSwitch::Unset;
     PhotonSwitch photon_reflection = PhotonSwitch::Unset;
+    // `photons { area_light }`: an area light shoots photons from each point of its grid
+    // (else from its centre).
+    bool photon_area_light = false;
     SourceLoc loc;
 };
 

@@ -21,6 +21,7 @@
 #include "distrib/wire/items.h"
 #include "trace/camera_interiors.h"
 #include "trace/focal_blur.h"
+#include "trace/photon_map.h"
 #include "trace/prepared_scene.h"
 #include "trace/render_plan.h"
 #include "trace/shading.h"
@@ -107,6 +108,15 @@ class BoxHost {
         classify_boxes();
     }
     bool parent_tracking() const { return parents_; }
+
+    // The frame's photon map (trace/photon_map.h), which every hosted box gathers from.
+    // build_photon_map() shoots it from this host's scene, which must be whole (one
+    // process; the coordinator, which sends it to the workers), preparing the whole scene
+    // for the pass as one process does, before the boxes trace; a worker, whose scene is
+    // a part, takes the coordinator's with set_photon_map(). Call after build_boxes().
+    void build_photon_map();
+    void set_photon_map(std::shared_ptr<const trace::PhotonMap> map);
+    const trace::PhotonMap* photon_map() const { return photons_.get(); }
 
     // The camera samples the next runs trace, one slot each in place of the pixels
     // (anti-aliasing waves): POV-Ray pixel positions (pixel (i, j)'s centre at (i, j)).
@@ -265,6 +275,7 @@ class BoxHost {
     int total_pixels_ = 0;  // slots: the image's pixels, or samples_.size()
     std::vector<trace::SamplePosition> samples_;
     std::unique_ptr<trace::FocalBlur> blur_;
+    std::shared_ptr<const trace::PhotonMap> photons_;
     // Progress (settings.progress): pixels sent, scaled by the share of items finished.
     std::atomic<uint64_t> progress_reported_{0};
     void report_progress();

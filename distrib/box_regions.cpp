@@ -1,10 +1,12 @@
 // Where the black boxes are and what each holds: the walls, each box's local scene and
-// reach, and the route of a ray through the boxes (BoxHost's layout; distrib/box_host.h).
+// reach, the route of a ray through the boxes, and the photon map every box reads
+// (BoxHost's layout; distrib/box_host.h).
 #include <algorithm>
 #include <cmath>
 
 #include "distrib/box_host.h"
 #include "distrib/object_boxes.h"
+#include "trace/photon_map.h"
 
 namespace povwall::distrib {
 
@@ -168,6 +170,26 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
         boxes_.push_back(std::move(box));
     }
     classify_boxes();
+}
+
+void BoxHost::build_photon_map() {
+    photons_ = nullptr;
+    if (scene_.settings.photons && plan_.quality.atmosphere()) {
+        // As render_scene prepares the scene for its pass (same plan, same options): the
+        // same hits, so the same photons.
+        trace::PrepareOptions prepare;
+        prepare.threads = settings_.threads;
+        trace::PreparedScene whole(scene_, &plan_, prepare);
+        whole.set_alpha_background(settings_.alpha);
+        photons_ = trace::build_photon_map(whole);
+    }
+    set_photon_map(photons_);
+}
+
+void BoxHost::set_photon_map(std::shared_ptr<const trace::PhotonMap> map) {
+    photons_ = std::move(map);
+    for (auto& box : boxes_)
+        if (box->scene) box->scene->set_photons(photons_);
 }
 
 }  // namespace povwall::distrib

@@ -479,17 +479,6 @@ DistributionPlan plan_distribution(const Scene& scene,
             " take render blocks as they finish (screen subdivision, one shared scene)");
         return plan;
     }
-    if (const auto& ph = scene.settings.photons) {
-        // The photon map is shot through the whole scene; a black box holds a part.
-        std::string at;
-        if (ph->loc.valid() && size_t(ph->loc.file) < scene.files.size())
-            at = scene.files[size_t(ph->loc.file)] + ":" + std::to_string(ph->loc.line) +
-                 ":" + std::to_string(ph->loc.column) + ": ";
-        throw UnsupportedInMode(at +
-                                "error: unsupported: photons with space subdivision "
-                                "(black boxes hold parts of the scene; the photon map "
-                                "needs the whole): use --mode single or screen");
-    }
     if (const auto& rad = scene.settings.radiosity) {
         // The irradiance cache is filled by rays through the whole scene and read
         // everywhere; black boxes hold parts of the scene.

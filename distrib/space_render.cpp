@@ -327,6 +327,7 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
                 // As point_shadow() starts it in the single-process tracer.
                 child.shadow_state.inside = c.trace.interiors;
                 child.shadow_state.light = c.light;
+                child.shadow_state.photon_caustics = c.photon_caustics;
             }
             child.pixel = ray.pixel;
             if (parents_) {
@@ -650,6 +651,7 @@ Image render_space(const Scene& scene, const trace::RenderSettings& settings,
     std::vector<int> all(host.walls().box_count());
     for (size_t b = 0; b < all.size(); ++b) all[b] = int(b);
     host.build_boxes(all);
+    host.build_photon_map();
     int threads = settings.threads > 0
                       ? settings.threads
                       : int(std::max(1u, std::thread::hardware_concurrency()));

@@ -39,6 +39,7 @@
 #include "distrib/wire/control.h"
 #include "distrib/wire/items.h"
 #include "distrib/wire/job.h"
+#include "distrib/wire/photons.h"
 #include "distrib/wire/pixels.h"
 #include "distrib/wire/samples.h"
 #include "distrib/worker_processes.h"
@@ -115,6 +116,9 @@ class TcpCoordinator {
             }
             emitter_->build_boxes({});
         }
+        // While the workers prepare: the photon map, shot from the whole scene here
+        // (a worker holds a part), goes to each once it is ready.
+        emitter_->build_photon_map();
         const int boxes = emitter_->walls().box_count();
         empty_.assign(boxes, 1);
         created_ = 0;
@@ -510,6 +514,9 @@ class TcpCoordinator {
             }
             emitter_->set_box_reach(reach_);
             workers_ready_ = true;
+            const std::vector<Buffer> photons = photon_map_frames(emitter_->photon_map());
+            for (WorkerState& o : workers_)
+                for (const Buffer& b : photons) o.conn->send(b);
             send_samples();
         } else if (type == "samples") {  // it holds the wave's samples
             w.samples_taken = true;

@@ -40,6 +40,7 @@
 #include "distrib/wire/control.h"
 #include "distrib/wire/items.h"
 #include "distrib/wire/job.h"
+#include "distrib/wire/photons.h"
 #include "distrib/wire/pixels.h"
 #include "distrib/wire/samples.h"
 #include "parser/parser.h"
@@ -215,6 +216,7 @@ class Worker {
     void from_coordinator(Frame& f) {
         if (f.type == FrameType::Items) return items(f);
         if (f.type == FrameType::Samples) return sample_positions(f);
+        if (f.type == FrameType::Photons) return photon_records(f);
         const json j = parse_control(f);
         try {
             control(j);
@@ -241,6 +243,13 @@ class Worker {
             host_->set_samples(std::move(pending_samples_));
             pending_samples_ = {};
             coordinator_->send(control_frame({{"type", "samples"}}));
+        } else if (type == "photons") {
+            // The frame's photon map, whose photons came before (wire/photons.h).
+            std::shared_ptr<const trace::PhotonMap> map;
+            if (running_ || !photon_map_from_message(j, std::move(pending_photons_), map))
+                return fail_job("bad photon map");
+            pending_photons_ = {};
+            host_->set_photon_map(std::move(map));
         } else if (type == "start") {
             // A frame's first run, or (anti-aliasing) the next wave's.
             if (running_) return fail_job("'start' during a run");
@@ -554,6 +563,7 @@ class Worker {
         done_ = false;
         running_ = false;
         pending_samples_.clear();
+        pending_photons_.clear();
         coordinator_.reset();
     }
 
@@ -641,6 +651,14 @@ class Worker {
             return fail_job("bad sample frame");
     }
 
+    void photon_records(Frame& f) {
+        // At most 2^28 photons (5 GB): more is no map a scene asks for.
+        constexpr size_t kMostPhotons = size_t(1) << 28;
+        if (!host_ || running_ || pending_photons_.size() + f.count > kMostPhotons ||
+            !read_photons(f.body, f.count, pending_photons_))
+            return fail_job("bad photon frame");
+    }
+
     void finish() {
         running_ = false;
         host_->stop();
@@ -718,6 +736,7 @@ class Worker {
     bool running_ = false;                                // between "start" and "finish"
     long misroute_after_ = -1;                            // POVWALL_FAULT_MISROUTE
     std::vector<trace::SamplePosition> pending_samples_;  // of the next "samples"
+    std::vector<trace::Photon> pending_photons_;          // of the next "photons"
     int exit_code_ = 0;
 };
 

@@ -234,9 +234,8 @@ class Interpreter {
     // At the end of the parse: light groups whose lights would light media differently
     // from the global lights are refused (light_groups.cpp).
     uint32_t light_groups_ = 0;  // groups numbered so far (Light::light_group)
-    // The global photons keyword, and the first parallel or cylinder light (photons.cpp).
-    std::optional<Token> photons_at_, first_parallel_light_;
-    void check_photons();
+    // The global photons keyword (photons.cpp).
+    std::optional<Token> photons_at_;
     // The global radiosity keyword (radiosity.cpp).
     std::optional<Token> radiosity_at_;
     void parse_radiosity_settings(const Token& at);

@@ -144,7 +144,6 @@ Scene Interpreter::run(int root_file) {
     for (const auto& f : image_files_) scene_.files.push_back(f);
     finish_version_state();
     settle_isosurfaces();
-    check_photons();
     check_radiosity();
     // A camera normal's patterns read the final settings too.
     scene_.camera.normal_noise_generator = scene_.settings.noise_generator;

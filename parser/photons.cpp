@@ -82,14 +82,6 @@ void Interpreter::parse_photon_settings(const Token& at) {
     photons_at_ = at;
 }
 
-// What the photon map does not do yet, once the scene is known: photons from parallel
-// and cylinder lights (shot from a disc instead of a point).
-void Interpreter::check_photons() {
-    if (!scene_.settings.photons) return;
-    if (first_parallel_light_)
-        unsupported(*first_parallel_light_, "photons from parallel and cylinder lights");
-}
-
 // A light's photons { refraction on|off reflection on|off area_light }.
 void Interpreter::parse_light_photons(Light& l) {
     expect_punct('{', "after 'photons'");
@@ -101,7 +93,7 @@ void Interpreter::parse_light_photons(Light& l) {
         } else if (is_word(t, "reflection")) {
             l.photon_reflection = parse_int() ? PhotonSwitch::On : PhotonSwitch::Off;
         } else if (is_word(t, "area_light")) {
-            unsupported(t, "photons area_light");
+            l.photon_area_light = true;
         } else {
             expected("refraction, reflection, area_light or '}'", t);
         }

@@ -503,9 +503,6 @@ Light Interpreter::parse_light_block() {
     // direction at full strength (POV-Ray's spot cone then sees the axis itself).
     if (parallel && l.kind == Light::Kind::Point) l.kind = Light::Kind::Parallel;
     l.parallel = parallel && l.kind == Light::Kind::Spot;
-    if (!first_parallel_light_ && (l.parallel || l.kind == Light::Kind::Parallel ||
-                                   l.kind == Light::Kind::Cylinder))
-        first_parallel_light_ = open;
     // The atmosphere's media on an area light's shadow rays: POV-Ray applies them per
     // sample and once more over a leftover stretch of its last sample; not yet.
     if (l.media_attenuation && l.area && attenuation_at) {

@@ -418,7 +418,7 @@ Rgb deposit_media_photons(std::span<const Media* const> list, const Ray& ray, Re
     for (const SampleInterval& iv : intervals) {
         // As many steps as the photons' spacing here fits, at most max_steps (then
         // spaced wider, each photon carrying more).
-        const double spacing = sink.spread_at_unit * sink.travelled;
+        const double spacing = sink.spread_at_unit * (sink.parallel ? 1 : sink.travelled);
         int steps = int(iv.ds / (spacing * sink.spacing_factor));
         double factor = sink.spacing_factor;
         if (steps > sink.max_steps) {
@@ -441,7 +441,7 @@ Rgb deposit_media_photons(std::span<const Media* const> list, const Ray& ray, Re
             if (scattering && collect)
                 sink.store(p, along,
                            colour * float(factor * sink.spread_at_unit *
-                                          (sink.travelled + along)));
+                                          (sink.parallel ? 1 : sink.travelled + along)));
         }
         // POV-Ray divides the interval's optical depth by its sample count: 0 / 0 for
         // an interval too short for one step, which turns the photon's colour into

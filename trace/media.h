@@ -72,6 +72,8 @@ class MediaPhotonSink {
     // the distance the photon has come before this stretch, the spacing factor and the
     // most steps per interval (`media steps, factor`), the jitter of the steps.
     double spread_at_unit = 0, travelled = 0, spacing_factor = 1;
+    // From a parallel light: the spacing is spread_at_unit everywhere (no distance).
+    bool parallel = false;
     int max_steps = 0;
     float step_jitter = 0;
     virtual Real draw() = 0;  // uniform in [0, 1): a step's jitter

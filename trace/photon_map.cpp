@@ -92,6 +92,70 @@ void encode_direction(const Vector3& d, Photon& ph) {
     ph.phi = int8_t(phi * 127.0 / kPi);
 }
 
+// POV-Ray's Parallel lights (parallel point and spot lights, and cylinder lights): their
+// photons leave a disc across the light's direction, all along it, rather than a point.
+bool shoots_parallel(const Light& l) {
+    return l.parallel || l.kind == Light::Kind::Parallel ||
+           l.kind == Light::Kind::Cylinder;
+}
+
+// `v` turned about the unit `axis` by `angle`.
+Vector3 turned(const Vector3& v, const Vector3& axis, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1 - c));
+}
+
+// POV-Ray's cubic_spline: 0 below `low`, 1 from `high`, smooth between.
+double smooth_step(double low, double high, double pos) {
+    if (pos < low) return 0;
+    if (pos >= high) return 1;
+    const double x = (pos - low) / (high - low);
+    return x * x * (3 - 2 * x);
+}
+
+// POV-Ray's ShootingDirection from `from` toward the target's centre `ctr`: the unit
+// direction, a unit `left` across it (across the light's `parallel` direction for a
+// parallel light) and the distance.
+struct Aim {
+    Vector3 toctr, left;
+    double dist = 0;
+};
+Aim aim_at(const Point3& from, const Point3& ctr, const Vector3* parallel) {
+    Aim a;
+    const Vector3 t = ctr - from;
+    a.dist = length(t);
+    a.toctr = a.dist > 0 ? t * (1 / a.dist) : t;
+    const Vector3 up =
+        std::fabs(std::fabs(a.toctr.z) - 1) < 0.1 ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
+    a.left = normalize(cross(parallel ? *parallel : a.toctr, up));
+    return a;
+}
+
+// POV-Ray's computeAttenuation of a photon leaving along `dir`: a spot light's cone
+// about its `axis`; a cylinder light's by the distance `from_axis` of the photon's start
+// from the light's location, across the axis.
+double photon_attenuation(const Light& l, const Vector3& dir, const Vector3& axis,
+                          double from_axis) {
+    if (l.kind == Light::Kind::Spot) {
+        const double cs = dot(dir, axis);
+        if (cs <= 0) return 0;
+        double a = std::pow(cs, l.tightness);
+        const double radius_cos = std::cos(l.radius * kPi / 180);
+        if (radius_cos > 0)
+            a *= smooth_step(std::cos(l.falloff * kPi / 180), radius_cos, cs);
+        return a;
+    }
+    if (l.kind == Light::Kind::Cylinder) {
+        if (dot(dir, axis) <= 0 || from_axis >= l.falloff) return 0;
+        const double d = 1 - from_axis / l.falloff;
+        double a = std::pow(d, l.tightness);
+        if (l.radius > 0 && from_axis > l.radius)
+            a *= smooth_step(0, 1 - l.radius / l.falloff, d);
+        return a;
+    }
+    return 1;
+}
+
 struct Target {
     const Object* object;
     std::unordered_set<const Object*> leaves;
@@ -145,6 +209,7 @@ class Shooter final : public MediaPhotonSink {
     const Light* light_ = nullptr;
     const Target* target_ = nullptr;
     double spread_ = 0;
+    bool parallel_ = false;  // shoots_parallel(*light_)
     bool hit_target_ = false;
     uint64_t shot_ = 0;
 };
@@ -157,6 +222,14 @@ void Shooter::shoot(const Light& light, size_t light_index, const Target& target
         return;
     light_ = &light;
     target_ = &target;
+    parallel_ = shoots_parallel(light);
+    parallel = parallel_;
+    // An area light with `photons { area_light }` shoots from each point of its grid
+    // (not a parallel one), each photon carrying its share.
+    const AreaLight* area =
+        light.photon_area_light && !parallel_ && light.area ? &*light.area : nullptr;
+    const int samples1 = area ? std::max(1, area->size1) : 1;
+    const int samples2 = area ? std::max(1, area->size2) : 1;
     // The bounding sphere of the target's box.
     Bounds3 b = object_world_bounds(*target.object);
     Point3 ctr;
@@ -169,41 +242,48 @@ void Shooter::shoot(const Light& light, size_t light_index, const Target& target
         ctr = b.lo + (b.hi - b.lo) * 0.5;
         rad = length(ctr - b.lo);
     }
-    Vector3 toctr = ctr - light.location;
-    double dist = length(toctr);
-    if (dist > 0) toctr = toctr * (1 / dist);
-    Vector3 up =
-        std::fabs(std::fabs(toctr.z) - 1) < 0.1 ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
-    Vector3 left = normalize(cross(toctr, up));
-    spread_ = ph.spacing_multiplier * settings_.spacing / dist;
+    // The light's direction (POV-Ray's Direction: unit unless point_at is the location).
+    Vector3 axis = light.point_at - light.location;
+    if (const double len = length(axis); len > kEpsilon) axis = axis * (1 / len);
+    Aim aim = aim_at(light.location, ctr, parallel_ ? &axis : nullptr);
+    // A parallel light's photons start on the disc about the target's centre seen along
+    // the light, in the plane through the light's location.
+    const Point3 disc = ctr - axis * (dot(axis, aim.toctr) * aim.dist);
+    // The spacing at unit distance (for a parallel light: the spacing itself).
+    spread_ = ph.spacing_multiplier * settings_.spacing / (parallel_ ? 1 : aim.dist);
+    if (area) spread_ *= std::sqrt(double(samples1 * samples2));
     spread_at_unit = spread_;
-    const double dtheta = std::atan(spread_);
     if (spread_ <= 0) return;
+    // For a parallel light "theta" is the disc's radius.
+    const double dtheta = parallel_ ? spread_ : std::atan(spread_);
     double maxtheta;
-    if (dist >= rad) {
-        maxtheta = std::asin(rad / dist);
+    if (parallel_) {
+        maxtheta = rad;
+    } else if (aim.dist >= rad) {
+        maxtheta = std::asin(rad / aim.dist);
     } else {
         maxtheta = kPi;
-        if (std::fabs(dist) < kEpsilon) {
-            up = {1, 0, 0};
-            left = {0, 1, 0};
-            toctr = {0, 0, 1};
+        if (std::fabs(aim.dist) < kEpsilon) {
+            aim.left = {0, 1, 0};
+            aim.toctr = {0, 0, 1};
         }
-        dist = rad;
     }
-    // The interiors around the light (POV-Ray: of the frame objects containing it).
-    InteriorStack start;
-    for (size_t i = 0; i < frames.size(); ++i)
-        if (inside_object(*frames[i], light.location)) start.push(&stand_ins_[i]);
-
-    const Vector3 axis = normalize(light.point_at - light.location);
-    const double radius_cos = std::cos(light.radius * kPi / 180);
-    const double falloff_cos = std::cos(light.falloff * kPi / 180);
+    // The interiors around the photon's start (POV-Ray: of the frame objects containing
+    // it): the light's, or each photon's own where they start elsewhere.
+    auto interiors_at = [&](const Point3& p) {
+        InteriorStack inside;
+        for (size_t i = 0; i < frames.size(); ++i)
+            if (inside_object(*frames[i], p)) inside.push(&stand_ins_[i]);
+        return inside;
+    };
+    const InteriorStack at_light = interiors_at(light.location);
     bool hit_once = false;
     uint64_t ring = 0;
     for (double theta = 0; theta < maxtheta; theta += dtheta, ++ring) {
         hit_target_ = false;
-        const double dphi = theta < kEpsilon ? 2 * kPi : dtheta / std::sin(theta);
+        const double dphi = theta < kEpsilon ? 2 * kPi
+                            : parallel_      ? dtheta / theta
+                                             : dtheta / std::sin(theta);
         const uint64_t key = (uint64_t(light_index) << 32) | uint64_t(target_index);
         const double minphi = -kPi + dphi * hashed_unit(key, ring, ~0ull, 0) * 0.5;
         const double maxphi = kPi - dphi / 2 + (minphi + kPi);
@@ -213,33 +293,48 @@ void Shooter::shoot(const Light& light, size_t light_index, const Target& target
                 phi + dphi * (hashed_unit(key, ring, k, 1) - 0.5) * settings_.jitter;
             const double jittheta =
                 theta + dtheta * (hashed_unit(key, ring, k, 2) - 0.5) * settings_.jitter;
-            // toctr turned by theta toward -left, then about toctr by phi.
-            const Vector3 v = toctr * std::cos(jittheta) - left * std::sin(jittheta);
-            const double c = std::cos(jitphi), s = std::sin(jitphi);
-            const Vector3 dir =
-                v * c + cross(toctr, v) * s + toctr * (dot(toctr, v) * (1 - c));
-            double attenuation = 1;
-            if (light.kind == Light::Kind::Spot) {
-                const double cs = dot(dir, axis);
-                if (cs > 0) {
-                    attenuation = std::pow(cs, light.tightness);
-                    if (radius_cos > 0 && cs < radius_cos)
-                        attenuation *= cs < falloff_cos ? 0.0 : [&] {
-                            const double x =
-                                (cs - falloff_cos) / (radius_cos - falloff_cos);
-                            return x * x * (3 - 2 * x);
-                        }();
-                } else {
-                    attenuation = 0;
+            for (int u = 0; u < samples1; ++u) {
+                for (int v = 0; v < samples2; ++v) {
+                    Point3 origin = light.location;
+                    Vector3 dir;
+                    if (parallel_) {
+                        dir = axis;
+                        origin = disc + turned(aim.left * jittheta, axis, jitphi);
+                    } else {
+                        Aim from = aim;
+                        if (area) {
+                            // POV-Ray's grid: the axes' ends and evenly between.
+                            if (samples1 > 1)
+                                origin +=
+                                    area->axis1 * (double(u) / (samples1 - 1) - 0.5);
+                            if (samples2 > 1)
+                                origin +=
+                                    area->axis2 * (double(v) / (samples2 - 1) - 0.5);
+                            from = aim_at(origin, ctr, nullptr);
+                            if (std::fabs(from.dist) < kEpsilon) {
+                                from.left = {0, 1, 0};
+                                from.toctr = {0, 0, 1};
+                            }
+                        }
+                        // toctr turned by theta toward -left, then about toctr by phi.
+                        const Vector3 w = from.toctr * std::cos(jittheta) -
+                                          from.left * std::sin(jittheta);
+                        dir = normalize(turned(w, from.toctr, jitphi));
+                    }
+                    const double attenuation =
+                        photon_attenuation(
+                            light, dir, axis,
+                            parallel_ ? length(origin - light.location) : 0) /
+                        (samples1 * samples2);
+                    if (attenuation < 0.00001) continue;
+                    TraceRay ray;
+                    ray.ray = {origin, dir};
+                    ray.use = RayUse::Photon;
+                    ray.interiors = parallel_ || area ? interiors_at(origin) : at_light;
+                    ++shot_;
+                    trace(ray, light.colour * float(attenuation), 0, false, 0);
                 }
             }
-            if (attenuation < 0.00001) continue;
-            TraceRay ray;
-            ray.ray = {light.location, normalize(dir)};
-            ray.use = RayUse::Photon;
-            ray.interiors = start;
-            ++shot_;
-            trace(ray, light.colour * float(attenuation), 0, false, 0);
         }
         if (hit_target_) hit_once = true;
         if (hit_once && !hit_target_ && theta > settings_.autostop * maxtheta) break;
@@ -333,7 +428,9 @@ void Shooter::deposit(std::vector<Photon>& into, const Point3& at, const Point3&
     double attenuation = 1;
     if (l.fade_power > 0 && std::fabs(l.fade_distance) > kEpsilon)
         attenuation = 2 / (1 + std::pow(depth / l.fade_distance, l.fade_power));
-    const Rgb flux = colour * float(attenuation * spread_ * spread_ * depth * depth);
+    // A parallel light's photons do not spread out with distance.
+    const double spread = parallel_ ? 1 : depth * depth;
+    const Rgb flux = colour * float(attenuation * spread_ * spread_ * spread);
     Photon ph;
     encode_rgbe(flux, ph.rgbe);
     ph.pos[0] = float(at.x);
@@ -387,6 +484,19 @@ Vector3 PhotonMap::incoming(const Photon& ph) {
     const double phi = double(ph.phi) * kPi / 127.0;
     const double ct = std::cos(theta);
     return {ct * std::cos(phi), std::sin(theta), ct * std::sin(phi)};
+}
+
+std::shared_ptr<PhotonMap> PhotonMap::assemble(const PhotonSettings& settings,
+                                               std::vector<Photon> photons,
+                                               double min_radius, double radius_step,
+                                               std::shared_ptr<PhotonMap> media) {
+    auto map = std::make_shared<PhotonMap>();
+    map->settings_ = settings;
+    map->photons_ = std::move(photons);
+    map->min_radius_ = min_radius;
+    map->radius_step_ = radius_step;
+    map->media_ = std::move(media);
+    return map;
 }
 
 void PhotonMap::build_tree(size_t lo, size_t hi) {

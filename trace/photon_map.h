@@ -5,8 +5,10 @@
 //
 // The map is built once per frame, before tracing, from the whole scene, by one thread,
 // with our own random numbers drawn from a hash of (light, target, ring, photon): every
-// process that holds the whole scene (one process, each screen-mode worker) builds the
-// same map and renders the same image. POV-Ray draws its jitter from per-thread random
+// process that holds the whole scene (one process, each screen-mode worker, the black
+// boxes' host in one process, the TCP coordinator) builds the same map, and a TCP worker,
+// which holds a part of the scene, receives the coordinator's (distrib/wire/photons.h):
+// every mode renders the same image. POV-Ray draws its jitter from per-thread random
 // sequences, so its photons and ours agree statistically (compared by block means).
 #pragma once
 
@@ -45,6 +47,17 @@ class PhotonMap {
     // holds. Returns the radius the estimate divides by; `out` gets the photons.
     double gather(const Point3& p, const Vector3* n,
                   std::vector<const Photon*>& out) const;
+
+    // What another process needs to gather as this map does: the photons in kd-tree
+    // order, the radii and the gather settings (gather_min, gather_max, expand_*).
+    const std::vector<Photon>& photons() const { return photons_; }
+    double radius_step() const { return radius_step_; }
+    const PhotonSettings& settings() const { return settings_; }
+    // The map those make (`photons` in the order photons() gave them).
+    static std::shared_ptr<PhotonMap> assemble(const PhotonSettings& settings,
+                                               std::vector<Photon> photons,
+                                               double min_radius, double radius_step,
+                                               std::shared_ptr<PhotonMap> media);
 
     // The flux and the unit direction toward where the photon came from.
     static Rgb flux(const Photon& ph);

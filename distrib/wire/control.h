@@ -7,6 +7,8 @@
 //   coord -> worker   Control job (scene source, walls, box owners, worker addresses)
 //   worker -> coord   Control busy every second while parsing and building its boxes
 //   worker -> coord   Control ready (primitive count per hosted box)
+//   coord -> worker   photons only, once per frame: Photons (the map's photons), then
+//                     Control photons {counts, radii, gather settings} (wire/photons.h)
 //   coord -> worker   anti-aliasing only: Samples (the wave's positions), then Control
 //                     samples {count}; worker -> coord Control samples (taken)
 //   coord -> worker   Control start (each box's reach), then Control pixels {begin, end}

@@ -19,6 +19,7 @@ bool known_type(uint8_t type) {
         case FrameType::Control:
         case FrameType::Items:
         case FrameType::Samples:
+        case FrameType::Photons:
             return true;
     }
     return false;

@@ -3,9 +3,10 @@
 // A frame is a 12-byte header, all little-endian,
 //   magic u16 | type u8 | protocol version u8 | body length u32 | record count u32
 // followed by the body: JSON text (Control), item records (Items, wire/items.h), pixel
-// sum records (Pixels, wire/pixels.h) or camera sample positions (Samples,
-// wire/samples.h). The header is checked before the body is awaited:
-// a wrong magic, type or version, or a body over kMaxBodySize, is refused at once.
+// sum records (Pixels, wire/pixels.h), camera sample positions (Samples,
+// wire/samples.h) or photons (Photons, wire/photons.h). The header is checked before the
+// body is awaited: a wrong magic, type or version, or a body over kMaxBodySize, is
+// refused at once.
 #pragma once
 
 #include <cstddef>
@@ -15,12 +16,19 @@
 
 namespace povwall::distrib {
 
-enum class FrameType : uint8_t { Pixels = 3, Control = 4, Items = 5, Samples = 6 };
+enum class FrameType : uint8_t {
+    Pixels = 3,
+    Control = 4,
+    Items = 5,
+    Samples = 6,
+    Photons = 7
+};
 constexpr uint16_t kFrameMagic = 0x5057;  // "PW"
 // 2: ray records leave out defaults; 3: the fixed ray/result frames (1, 2) are gone;
 // 4: anti-aliasing samples (Samples frames, "samples" and later "start" messages);
-// 5: sample records carry a focal-blur ray index (20 bytes).
-constexpr uint8_t kProtocolVersion = 7;
+// 5: sample records carry a focal-blur ray index (20 bytes); 8: the photon map (Photons
+// frames, "photons" message), shadow states carry photon_caustics.
+constexpr uint8_t kProtocolVersion = 8;
 constexpr size_t kHeaderSize = 12;
 // Bounds memory per frame; senders split larger batches.
 constexpr size_t kMaxBodySize = size_t(4) << 20;

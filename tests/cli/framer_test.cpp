@@ -104,4 +104,37 @@ TEST(Framer, WorkerKilledDuringASequenceIsReplacedAndEveryFrameIsWhole) {
     }
 }
 
+// A caustic that moves with the clock, and a frame without photons between: each frame's
+// photon map goes to the kept workers, and none is left from the frame before.
+const char* kMovingCaustic = R"(#version 3.7;
+#if (frame_number != 2)
+global_settings { max_trace_level 10 photons { spacing 0.03 } }
+#end
+camera { location <0, 4, -4> look_at <0, 0.3, 0> angle 40 }
+light_source { <1, 7, 1> color rgb 1.2 }
+plane { y, 0 pigment { checker rgb 0.8 rgb 0.6 } }
+sphere { <clock - 0.5, 1, 0>, 0.8
+  pigment { rgbf <0.95, 1, 0.95, 0.95> } interior { ior 1.5 }
+  photons { target refraction on reflection on } }
+)";
+
+TEST(Framer, EachFramesPhotonMapReachesTheKeptWorkers) {
+    const fs::path dir = scratch() / "framer-photons";
+    fs::create_directories(dir);
+    const fs::path scene = write_scene("caustic.pov", kMovingCaustic);
+    const std::string frames = " +KFI1 +KFF3 -W 40 -H 30 -q ";
+    RunResult r = run("render " + scene.string() + frames +
+                      "--boxes 2x1x1 --procs 2 -o " + (dir / "tcp.exr").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    r = run("render " + scene.string() + frames + "--mode single -o " +
+            (dir / "alone.exr").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::string why;
+    for (int f = 1; f <= 3; ++f) {
+        EXPECT_TRUE(
+            same_image(frame_file(dir, "tcp", f), frame_file(dir, "alone", f), &why))
+            << "frame " << f << ": " << why;
+    }
+}
+
 }  // namespace

@@ -15,6 +15,7 @@
 #include "distrib/wire/frame.h"
 #include "distrib/wire/items.h"
 #include "distrib/wire/job.h"
+#include "distrib/wire/photons.h"
 #include "distrib/wire/pixels.h"
 #include "distrib/wire/samples.h"
 #include "parser/parser.h"
@@ -55,7 +56,7 @@ TEST(WireFrame, TruncatedNeedsMoreAndAWrongHeaderIsRefusedAtOnce) {
     };
     EXPECT_TRUE(refused(0, 0x00));                  // magic
     EXPECT_TRUE(refused(2, 1));                     // the retired fixed ray frame
-    EXPECT_TRUE(refused(2, 7));                     // no such type
+    EXPECT_TRUE(refused(2, 8));                     // no such type
     EXPECT_TRUE(refused(3, kProtocolVersion - 1));  // an older peer
     EXPECT_TRUE(refused(7, 0x7f));  // body length over the limit, before it arrives
 }
@@ -113,6 +114,7 @@ class RandomItems {
             r.shadow_state.blocked = coin(0.5);
             stack(r.shadow_state.inside);
             r.shadow_state.light = int(rng_() % 3) - 1;
+            r.shadow_state.photon_caustics = coin(0.5);
         }
         if (coin(0.5)) {
             r.parent = rng_() | 1;
@@ -225,6 +227,8 @@ TEST(WireItems, RecordsRoundTripBitForBit) {
         for (int k = 0; k < a.ray.trace.interiors.size; ++k)
             EXPECT_EQ(a.ray.trace.interiors.items[k], b.ray.trace.interiors.items[k]);
         EXPECT_EQ(a.ray.shadow_state.light, b.ray.shadow_state.light);
+        EXPECT_EQ(a.ray.shadow_state.blocked, b.ray.shadow_state.blocked);
+        EXPECT_EQ(a.ray.shadow_state.photon_caustics, b.ray.shadow_state.photon_caustics);
         EXPECT_EQ(a.ray.pixel, b.ray.pixel);
         EXPECT_EQ(a.ray.parent_box, b.ray.parent_box);
         EXPECT_EQ(std::bit_cast<uint32_t>(a.ray.transmit_contribution),
@@ -418,6 +422,83 @@ TEST(WireSamples, PositionsRoundTripAndBadRecordsAddNothing) {
     std::memcpy(nan.data() + 8, &not_a_number, 8);
     EXPECT_FALSE(read_sample_positions(nan, 2, 49, out));
     EXPECT_EQ(out.size(), 3u);
+}
+
+// The photon map goes to the workers whole: every photon's bits in kd-tree order, the
+// radii's bits, the gather settings; a frame without photons says so.
+TEST(WirePhotons, AMapRoundTripsBitForBitAndBadFramesAreRefused) {
+    std::vector<trace::Photon> surface(3), media(2);
+    for (size_t i = 0; i < surface.size(); ++i) {
+        surface[i] = {
+            {0.1f * float(i), -2.5f, 1e-7f}, {200, 17, 3, 248}, -5, 127, uint8_t(i % 3)};
+    }
+    media[0] = {{4, 5, 6}, {1, 2, 3, 251}, 0, -127, 2};
+    media[1] = {{-4, -5, -6}, {9, 8, 7, 250}, 64, 3, 0};
+    PhotonSettings s;
+    s.gather_min = 7;
+    s.gather_max = 42;
+    s.expand_tolerance = 0.1f + 0.2f;
+    s.expand_min = 11;
+    auto media_map = trace::PhotonMap::assemble(s, media, 0.1 + 0.2, 0.7, nullptr);
+    const auto map = trace::PhotonMap::assemble(s, surface, 1.0 / 3, 2.0 / 3, media_map);
+    const std::vector<Buffer> frames = photon_map_frames(map.get());
+    ASSERT_EQ(frames.size(), 3u);  // surface photons, media photons, the message
+    std::vector<trace::Photon> got;
+    std::optional<nlohmann::json> message;
+    for (const Buffer& b : frames) {
+        Frame f;
+        ASSERT_EQ(decode_frame(*b, f), DecodeStatus::Complete);
+        if (f.type == FrameType::Photons)
+            ASSERT_TRUE(read_photons(f.body, f.count, got));
+        else
+            message = parse_control(f);
+    }
+    ASSERT_TRUE(message);
+    EXPECT_EQ(control_type(*message), "photons");
+    std::shared_ptr<const trace::PhotonMap> back;
+    ASSERT_TRUE(photon_map_from_message(*message, std::vector<trace::Photon>(got), back));
+    ASSERT_TRUE(back && back->media());
+    auto same = [](const std::vector<trace::Photon>& a,
+                   const std::vector<trace::Photon>& b) {
+        if (a.size() != b.size()) return false;
+        for (size_t i = 0; i < a.size(); ++i)
+            if (std::memcmp(a[i].pos, b[i].pos, 12) != 0 ||
+                std::memcmp(a[i].rgbe, b[i].rgbe, 4) != 0 || a[i].theta != b[i].theta ||
+                a[i].phi != b[i].phi || a[i].axis != b[i].axis)
+                return false;
+        return true;
+    };
+    EXPECT_TRUE(same(back->photons(), surface));
+    EXPECT_TRUE(same(back->media()->photons(), media));
+    EXPECT_EQ(back->min_gather_radius(), 1.0 / 3);
+    EXPECT_EQ(back->radius_step(), 2.0 / 3);
+    EXPECT_EQ(back->media()->min_gather_radius(), 0.1 + 0.2);
+    EXPECT_EQ(back->settings().gather_min, 7);
+    EXPECT_EQ(back->settings().gather_max, 42);
+    EXPECT_EQ(back->settings().expand_tolerance, 0.1f + 0.2f);
+    EXPECT_EQ(back->settings().expand_min, 11);
+    // Counts that disagree with the photons received.
+    got.pop_back();
+    EXPECT_FALSE(photon_map_from_message(*message, std::move(got), back));
+    // A record with a NaN position or an axis beyond z adds nothing.
+    Frame f;
+    ASSERT_EQ(decode_frame(*frames[0], f), DecodeStatus::Complete);
+    std::vector<uint8_t> bad(f.body.begin(), f.body.end());
+    bad[kPhotonRecordSize + 18] = 3;
+    std::vector<trace::Photon> none;
+    EXPECT_FALSE(read_photons(bad, f.count, none));
+    bad[kPhotonRecordSize + 18] = 0;
+    const float nan = std::nanf("");
+    std::memcpy(bad.data() + 4, &nan, 4);
+    EXPECT_FALSE(read_photons(bad, f.count, none));
+    EXPECT_TRUE(none.empty());
+    // No photons this frame.
+    const std::vector<Buffer> empty = photon_map_frames(nullptr);
+    ASSERT_EQ(empty.size(), 1u);
+    ASSERT_EQ(decode_frame(*empty[0], f), DecodeStatus::Complete);
+    back = map;
+    EXPECT_TRUE(photon_map_from_message(parse_control(f), {}, back));
+    EXPECT_EQ(back, nullptr);
 }
 
 // Focal blur's rays travel as (position, ray index): the index within the camera's rays

@@ -554,31 +554,33 @@ TEST(Tcp, CamerasAndFocalBlurInEveryModeEqualOneProcess) {
     }
 }
 
-// Photons (trace/photon_map.h): each screen-mode worker builds the photon map from the
-// whole scene with the same hashed random numbers, so every tile is the one-process
-// tile, anti-aliased too; space subdivision (black boxes hold parts of the scene) is
-// refused with a located `unsupported:`.
+// Photons (trace/photon_map.h): the map is shot from the whole scene with hashed random
+// numbers before tracing: by each screen-mode worker, by the black boxes' host in one
+// process, and by the TCP coordinator, which sends it to its workers (each holds a part
+// of the scene). Every box gathers from that map, and a shadow ray keeps its photon
+// caustics flag from box to box: every mode gives the one-process image, bit for bit
+// (parent tracking combines children in another order: to the last bit), anti-aliased
+// too. Point, spot, parallel, cylinder and area lights (with `photons { area_light }`).
 TEST(Tcp, PhotonsInEveryModeEqualOneProcess) {
     for (const char* name :
          {"photons_glass_sphere", "photons_metal_ring", "photons_csg_glass",
-          "photons_media", "photons_media_scattering"}) {
+          "photons_media", "photons_media_scattering", "photons_parallel_light",
+          "photons_cylinder_light", "photons_area_light"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
-        for (const char* aa : {"-A", "+A0.1 +AM2 -J"})
-            expect_same_images(scene, std::string("-W 40 -H 30 ") + aa,
-                               {"--mode screen --procs 2", "--mode screen --procs 3",
-                                "--mode single --threads 3"});
-        for (const char* boxes : {"--boxes 2x2x2", "--boxes 2x2x2 --procs 2"}) {
-            const RunResult r = run("render " + scene + " -W 40 -H 30 -q -o " +
-                                    (scratch() / "boxes.png").string() + " " + boxes);
-            EXPECT_NE(r.code, 0) << boxes;
-            EXPECT_TRUE(std::regex_search(
-                r.err, std::regex(std::string(name) +
-                                  R"(\.pov:[0-9]+:3: error: unsupported: photons with )"
-                                  "space subdivision")))
-                << boxes << "\n"
-                << r.err;
-        }
+        expect_same_images(
+            scene, "-W 40 -H 30 -A",
+            {"--mode screen --procs 2", "--mode screen --procs 3",
+             "--mode single --threads 3", "--boxes 2x2x2", "--boxes 2x2x2 --procs 2",
+             "--boxes 4x1x1 --procs 2 --worker-start exec"},
+            true);
+        expect_same_images(scene, "-W 40 -H 30 -A",
+                           {"--boxes 3x1x2 --results parents",
+                            "--boxes 3x1x2 --procs 2 --results parents"});
+        expect_same_images(
+            scene, "-W 40 -H 30 +A0.1 +AM2 -J",
+            {"--mode screen --procs 2", "--boxes 2x2x2", "--boxes 2x2x2 --procs 2"},
+            true);
     }
 }
 

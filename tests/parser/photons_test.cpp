@@ -103,14 +103,18 @@ TEST(Photons, RefusedWhereTheMapDoesNotGoYet) {
     EXPECT_EQ(error_of("global_settings { photons { spacing 0.1 } }\n"
                        "sphere { 0, 1 hollow interior { media { absorption 1 } } }"),
               "(no error)");
+    // Parallel and cylinder lights shoot photons too, and area lights from their grids.
     EXPECT_EQ(error_of("light_source { 0, 1 parallel }\n"
                        "global_settings { photons { spacing 0.1 } }"),
-              "test.pov:1:14: error: unsupported: photons from parallel and cylinder "
-              "lights");
-    EXPECT_EQ(error_of("light_source { 0, 1 photons { area_light } }"),
-              "test.pov:1:31: error: unsupported: photons area_light");
-    // Without photons in global_settings, media and parallel lights are fine.
-    EXPECT_NO_THROW(parse("light_source { 0, 1 parallel photons { refraction on } }"));
+              "(no error)");
+    EXPECT_EQ(error_of("light_source { 0, 1 cylinder }\n"
+                       "global_settings { photons { spacing 0.1 } }"),
+              "(no error)");
+    const Scene s = parse(
+        "light_source { 0, 1 area_light x, y, 2, 3 photons { area_light } }\n"
+        "light_source { 0, 1 }");
+    EXPECT_TRUE(s.lights[0].photon_area_light);
+    EXPECT_FALSE(s.lights[1].photon_area_light);
 }
 
 }  // namespace
