@@ -1,7 +1,8 @@
 // libFuzzer target: every decoder that reads bytes from another process (distrib/wire/).
 // The input is a stream of frames as a connection receives it: each complete frame is
 // decoded as its type says (item records against a small scene's objects, pixel sums,
-// camera sample positions, control JSON with the plan and reach parts). Nothing may crash
+// camera sample positions, photon records and the photons message that closes them,
+// control JSON with the plan and reach parts). Nothing may crash
 // or read out of bounds; item records that are accepted must write back to records that
 // read the same again.
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "distrib/wire/frame.h"
 #include "distrib/wire/items.h"
 #include "distrib/wire/job.h"
+#include "distrib/wire/photons.h"
 #include "distrib/wire/pixels.h"
 #include "distrib/wire/samples.h"
 #include "parser/parser.h"
@@ -64,9 +66,14 @@ void items(const Frame& f) {
     if (second.bad() || twice != again) std::abort();
 }
 
-void control(const Frame& f) {
+void control(const Frame& f, std::vector<trace::Photon>& photons) {
     const nlohmann::json j = parse_control(f);
     if (j.is_discarded() || !j.is_object()) return;
+    if (j.value("type", nlohmann::json()) == "photons") {
+        std::shared_ptr<const trace::PhotonMap> map;
+        (void)photon_map_from_message(j, std::move(photons), map);
+        photons.clear();
+    }
     if (j.contains("plan")) {
         try {
             (void)plan_from_json(j["plan"]);
@@ -132,6 +139,20 @@ void write_seeds(const std::string& dir) {
     seeds.push_back(*control_frame(to_json(job)));
     seeds.push_back(*control_frame(
         {{"type", "start"}, {"reach", reach_to_json(std::vector<Bounds3>(4))}}));
+    // No map, then the frames of a real map (photons through a glass sphere).
+    for (const Buffer& b : photon_map_frames(nullptr)) seeds.push_back(*b);
+    std::vector<trace::Photon> surface(3), media(1);
+    for (size_t i = 0; i < surface.size(); ++i)
+        surface[i] = {
+            {0.5f * float(i), -2, 1}, {200, 17, 3, 248}, -5, 127, uint8_t(i % 3)};
+    media[0] = {{4, 5, 6}, {1, 2, 3, 251}, 0, -127, 2};
+    PhotonSettings settings;
+    const auto map = trace::PhotonMap::assemble(
+        settings, surface, 0.25, 0.5,
+        trace::PhotonMap::assemble(settings, media, 0.5, 1, nullptr));
+    seeds.emplace_back();
+    for (const Buffer& b : photon_map_frames(map.get()))
+        seeds.back().insert(seeds.back().end(), b->begin(), b->end());
     for (size_t i = 0; i < seeds.size(); ++i) {
         std::ofstream(dir + "/seed-" + std::to_string(i), std::ios::binary)
             .write(reinterpret_cast<const char*>(seeds[i].data()),
@@ -149,6 +170,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::span<const uint8_t> bytes(data, size);
+    std::vector<trace::Photon> photons;  // the Photons frames' records so far
     while (!bytes.empty()) {
         Frame frame;
         if (decode_frame(bytes, frame) != DecodeStatus::Complete) break;
@@ -173,8 +195,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 if (!positions.empty() && std::abs(positions.back().x) > 64) std::abort();
                 break;
             }
+            case FrameType::Photons: {
+                const size_t before = photons.size();
+                if (!read_photons(frame.body, frame.count, photons) &&
+                    photons.size() != before)
+                    std::abort();  // a refused frame adds nothing
+                if (photons.size() > (size_t(1) << 20)) photons.clear();
+                break;
+            }
             case FrameType::Control:
-                control(frame);
+                control(frame, photons);
                 break;
         }
         bytes = bytes.subspan(frame.consumed);
