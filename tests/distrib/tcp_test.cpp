@@ -365,7 +365,8 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "trace_level_one",
                              "trace_level_continued_rays",
                              "light_parallel_behind_plane",
-                             "light_fade_power_alone"}) {
+                             "light_fade_power_alone",
+                             "shape_quadric_csg_boxes"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(scene, "-W 40 -H 30",
