@@ -104,6 +104,12 @@ size_t interrupt_message(const RenderRecord& record, bool partial_removed, char*
                         .count(objects)
                         .text(objects == 1 ? " primitive)" : " primitives)");
                     break;
+                case trace::RenderProgress::Stage::ShootingPhotons:
+                    line.text("interrupted while shooting photons");
+                    break;
+                case trace::RenderProgress::Stage::Pretracing:
+                    line.text("interrupted in radiosity's pretrace");
+                    break;
                 case trace::RenderProgress::Stage::Tracing: {
                     const uint64_t total = p.pixels_total.load();
                     const uint64_t done = p.pixels_done.load();

@@ -105,8 +105,12 @@ Image render_scene(const Scene& scene, const RenderSettings& settings, RenderSta
     prepare.progress = settings.progress;
     PreparedScene prepared(scene, &plan, prepare);
     prepared.set_alpha_background(settings.alpha);
+    if (settings.progress && scene.settings.photons)
+        settings.progress->stage = RenderProgress::Stage::ShootingPhotons;
     prepared.set_photons(build_photon_map(prepared));
     const CameraInteriors camera_interiors(scene);
+    if (settings.progress && scene.settings.radiosity)
+        settings.progress->stage = RenderProgress::Stage::Pretracing;
     prepared.set_radiosity(
         radiosity::run_pretrace(prepared, camera_interiors, settings, settings.threads));
     auto t1 = Clock::now();

@@ -24,7 +24,13 @@ struct RenderProgress {
     std::atomic<uint64_t> pixels_total{0};
     std::atomic<uint64_t> rays{0};
     // What comes before the first pass, which can take long on a large scene.
-    enum class Stage : uint8_t { Preparing, BuildingOctree, Tracing };
+    enum class Stage : uint8_t {
+        Preparing,
+        BuildingOctree,
+        ShootingPhotons,  // the photon map, before the first pass
+        Pretracing,       // radiosity's pretrace passes
+        Tracing
+    };
     std::atomic<Stage> stage{Stage::Preparing};
     // Preparing: the scene's top-level objects; BuildingOctree: the bounded primitives
     // being sorted into it.

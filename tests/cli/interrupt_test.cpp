@@ -60,6 +60,12 @@ TEST(InterruptMessage, NamesEachPhase) {
     EXPECT_EQ(message(r),
               "\npovwall: interrupted while building the octree (1,234,567 "
               "primitives); no image written\n");
+    r.progress.stage = Stage::ShootingPhotons;
+    EXPECT_EQ(message(r),
+              "\npovwall: interrupted while shooting photons; no image written\n");
+    r.progress.stage = Stage::Pretracing;
+    EXPECT_EQ(message(r),
+              "\npovwall: interrupted in radiosity's pretrace; no image written\n");
     r.progress.start_pass(19200);
     r.progress.pixels_done = 1234;
     EXPECT_EQ(message(r),
