@@ -6,6 +6,7 @@
 #include <cstring>
 #include <deque>
 
+#include "core/hash_fold.h"
 #include "core/noise.h"
 #include "trace/media.h"
 #include "trace/photon_map.h"
@@ -103,14 +104,7 @@ void tint_reflection(ChildRay& child, const Rgb& tint) {
 // one there; this one depends only on where (the same in every mode).
 Real crand_sample(const Point3& P, size_t l) {
     uint64_t h = 0x9e3779b97f4a7c15ull * (l + 1);
-    for (Real v : {P.x, P.y, P.z}) {
-        uint64_t bits;
-        std::memcpy(&bits, &v, sizeof bits);
-        h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-        h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-        h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-        h ^= h >> 31;
-    }
+    for (double v : {P.x, P.y, P.z}) h = hash_fold(h, v);
     return Real(h >> 11) / Real(1ull << 53);
 }
 

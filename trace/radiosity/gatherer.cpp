@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/hash_fold.h"
 #include "trace/tracer.h"
 
 namespace povwall::trace::radiosity {
@@ -41,14 +42,7 @@ constexpr double kPovEpsilonWeight = 1e-10;
 // cache averages them; ours restarts per block, so a pixel depends on its block only.
 size_t pool_start(const Point3& P, int depth, size_t pool) {
     uint64_t h = 0x2545f4914f6cdd1dull * uint64_t(depth + 1);
-    for (Real v : {P.x, P.y, P.z}) {
-        uint64_t bits;
-        std::memcpy(&bits, &v, sizeof bits);
-        h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-        h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-        h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-        h ^= h >> 31;
-    }
+    for (double v : {P.x, P.y, P.z}) h = hash_fold(h, v);
     return size_t(h % pool);
 }
 

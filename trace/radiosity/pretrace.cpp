@@ -7,6 +7,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/hash_fold.h"
 #include "trace/camera_interiors.h"
 #include "trace/prepared_scene.h"
 #include "trace/render.h"
@@ -19,14 +20,7 @@ namespace {
 // POV-Ray draws from a sequence seeded per pass and block; ours is a hash.
 double jitter_value(int pass, double x, double y, int axis) {
     uint64_t h = 0x9e3779b97f4a7c15ull * uint64_t(pass * 2 + axis + 1);
-    for (double v : {x, y}) {
-        uint64_t bits;
-        std::memcpy(&bits, &v, sizeof bits);
-        h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-        h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-        h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-        h ^= h >> 31;
-    }
+    for (double v : {x, y}) h = hash_fold(h, v);
     return double(h >> 11) / double(1ull << 52) - 1;
 }
 
