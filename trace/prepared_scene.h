@@ -274,9 +274,10 @@ class PreparedScene {
         uint8_t tests = 0;
     };
     PovPrim pov_prim(const Object& o, uint8_t extra = 0) const;
-    // Calls on_hit(id, t, q), in leaf order, for each of the first `spheres` ids of a leaf
-    // whose sphere is hit at t < below (q: its position in lanes_) (`below` is read again before each call: it may
-    // shrink) until on_hit returns true; returns whether it did.
+    // Calls on_hit(id, t, q), in leaf order, for each of the first `spheres` ids of a
+    // leaf whose sphere is hit at t < below (q: its position in lanes_) (`below` is read
+    // again before each call: it may shrink) until on_hit returns true; returns whether
+    // it did.
     template <class OnHit>
     [[gnu::always_inline]] inline bool for_sphere_hits(const uint32_t* ids,
                                                        size_t spheres, const Ray& ray,
