@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <bit>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 namespace povwall::distrib {
@@ -42,15 +44,25 @@ json map_fields(const trace::PhotonMap& map) {
 // A map's count and radii; false unless finite and non-negative.
 bool read_map_fields(const json& j, size_t& count, double& min_radius,
                      double& radius_step) {
-    if (!j.is_object() || !j.at("count").is_number_unsigned() ||
-        !j.at("min_radius").is_number_unsigned() ||
-        !j.at("radius_step").is_number_unsigned())
-        return false;
+    if (!j.is_object()) return false;
+    for (const char* key : {"count", "min_radius", "radius_step"})
+        if (!j.contains(key) || !j[key].is_number_unsigned()) return false;
     count = j["count"].get<size_t>();
     min_radius = std::bit_cast<double>(j["min_radius"].get<uint64_t>());
     radius_step = std::bit_cast<double>(j["radius_step"].get<uint64_t>());
     return std::isfinite(min_radius) && std::isfinite(radius_step) && min_radius >= 0 &&
            radius_step >= 0;
+}
+
+// An int field of at least `min`; false when missing, of another type or out of range.
+bool read_int(const json& j, const char* key, int min, int& out) {
+    if (!j.contains(key) || !j[key].is_number_integer()) return false;
+    const int64_t v = j[key].get<int64_t>();
+    if (j[key].is_number_unsigned() && j[key].get<uint64_t>() > uint64_t(INT32_MAX))
+        return false;
+    if (v < min || v > INT32_MAX) return false;
+    out = int(v);
+    return true;
 }
 
 }  // namespace
@@ -105,17 +117,27 @@ bool photon_map_from_message(const json& message, std::vector<trace::Photon>&& p
     if (!message["map"].get<bool>()) return photons.empty();
     size_t surface = 0, media = 0;
     double radius = 0, step = 0, media_radius = 0, media_step = 0;
-    if (!read_map_fields(message.at("surface"), surface, radius, step)) return false;
+    if (!message.contains("surface") ||
+        !read_map_fields(message["surface"], surface, radius, step))
+        return false;
     const bool has_media = message.contains("media");
     if (has_media && !read_map_fields(message["media"], media, media_radius, media_step))
         return false;
     if (surface + media != photons.size()) return false;
     PhotonSettings s;
-    s.gather_min = message.at("gather_min").get<int>();
-    s.gather_max = message.at("gather_max").get<int>();
-    s.expand_tolerance =
-        std::bit_cast<float>(message.at("expand_tolerance").get<uint32_t>());
-    s.expand_min = message.at("expand_min").get<int>();
+    uint32_t tolerance_bits = 0;
+    if (!read_int(message, "gather_max", 1, s.gather_max) ||
+        !read_int(message, "gather_min", 0, s.gather_min) ||
+        s.gather_min > s.gather_max ||
+        !read_int(message, "expand_min", 0, s.expand_min) ||
+        !message.contains("expand_tolerance") ||
+        !message["expand_tolerance"].is_number_unsigned() ||
+        message["expand_tolerance"].get<uint64_t>() > UINT32_MAX)
+        return false;
+    tolerance_bits = message["expand_tolerance"].get<uint32_t>();
+    s.expand_tolerance = std::bit_cast<float>(tolerance_bits);
+    // The parser's range (parser/photons.cpp): what it cannot produce is not a map.
+    if (!std::isfinite(s.expand_tolerance) || s.expand_tolerance < 0) return false;
     std::shared_ptr<trace::PhotonMap> media_map;
     if (has_media)
         media_map = trace::PhotonMap::assemble(

@@ -104,6 +104,10 @@ class RandomItems {
         r.trace.weight = f();
         r.trace.use = trace::RayUse(rng_() % trace::kRayUses);
         r.trace.continued = rng_() % 2;
+        if (coin(0.3)) {
+            r.trace.band.count = uint16_t(2 + rng_() % 65534);
+            r.trace.band.index = uint16_t(rng_() % r.trace.band.count);
+        }
         stack(r.trace.interiors);
         r.t_from = d();
         if (coin(0.5)) {
@@ -222,6 +226,8 @@ TEST(WireItems, RecordsRoundTripBitForBit) {
                   std::bit_cast<uint64_t>(b.ray.trace.ray.origin.x));
         EXPECT_EQ(a.ray.trace.use, b.ray.trace.use);
         EXPECT_EQ(a.ray.trace.continued, b.ray.trace.continued);
+        EXPECT_EQ(a.ray.trace.band.index, b.ray.trace.band.index);
+        EXPECT_EQ(a.ray.trace.band.count, b.ray.trace.band.count);
         EXPECT_EQ(a.ray.trace.depth, b.ray.trace.depth);
         EXPECT_EQ(a.ray.trace.interiors.size, b.ray.trace.interiors.size);
         for (int k = 0; k < a.ray.trace.interiors.size; ++k)
@@ -477,6 +483,37 @@ TEST(WirePhotons, AMapRoundTripsBitForBitAndBadFramesAreRefused) {
     EXPECT_EQ(back->settings().gather_max, 42);
     EXPECT_EQ(back->settings().expand_tolerance, 0.1f + 0.2f);
     EXPECT_EQ(back->settings().expand_min, 11);
+    // A message with a field missing, of another type or out of range is not a map
+    // (false, no exception: the fuzz target found the missing-field throw).
+    for (const char* key :
+         {"surface", "gather_min", "gather_max", "expand_tolerance", "expand_min"}) {
+        nlohmann::json broken = *message;
+        broken.erase(key);
+        EXPECT_FALSE(
+            photon_map_from_message(broken, std::vector<trace::Photon>(got), back))
+            << key;
+        broken[key] = "7";
+        EXPECT_FALSE(
+            photon_map_from_message(broken, std::vector<trace::Photon>(got), back))
+            << key;
+    }
+    for (const auto& [key, value] : std::vector<std::pair<const char*, nlohmann::json>>{
+             {"gather_min", 43},
+             {"gather_max", 0},
+             {"expand_min", -1},
+             {"gather_max", uint64_t(1) << 40},
+             {"expand_tolerance", uint64_t(1) << 33},
+             {"expand_tolerance", std::bit_cast<uint32_t>(-1.0f)}}) {
+        nlohmann::json broken = *message;
+        broken[key] = value;
+        EXPECT_FALSE(
+            photon_map_from_message(broken, std::vector<trace::Photon>(got), back))
+            << key << " " << value;
+    }
+    nlohmann::json no_count = *message;
+    no_count["surface"].erase("count");
+    EXPECT_FALSE(
+        photon_map_from_message(no_count, std::vector<trace::Photon>(got), back));
     // Counts that disagree with the photons received.
     got.pop_back();
     EXPECT_FALSE(photon_map_from_message(*message, std::move(got), back));
