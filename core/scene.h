@@ -338,6 +338,9 @@ struct Media {
 
 struct Interior {
     float ior = 1.0f;
+    // `ior` was given: without it POV-Ray takes the atmosphere's index and dispersion
+    // (both 1), so a lone `dispersion` does nothing.
+    bool ior_set = false;
     float caustics = 0.0f;  // faked caustics, as POV-Ray stores it (interior{}: x45)
     float dispersion = 1.0f;
     int dispersion_samples = 7;

@@ -939,11 +939,13 @@ void Interpreter::place_object(Object& obj, const Object* parent,
         const Finish& f = *top.finish;
         if (f.legacy_ior >= 0) {
             in.ior = f.legacy_ior;
+            in.ior_set = true;
             in.dispersion = 1;
         }
         if (f.legacy_caustics >= 0) in.caustics = f.legacy_caustics;
         in.old_refract = f.legacy_refraction;
     }
+    if (!in.ior_set) in.dispersion = 1;
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
         for (Object& child : csg->children) place_object(child, &obj, shared);
     }

@@ -1135,19 +1135,20 @@ void Interpreter::parse_interior_into(Interior& in) {
         Token t = next();
         if (is_punct(t, '}')) return;
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
-        if (w == "ior")
+        if (w == "ior") {
             in.ior = float(parse_float());
-        else if (w == "caustics")
+            in.ior_set = true;
+        } else if (w == "caustics")
             in.caustics = float(parse_float() * 45.0);  // as POV-Ray scales it
-        else if (w == "dispersion") {
-            const Token at = peek();
+        else if (w == "dispersion")
             in.dispersion = float(parse_float());
-            // POV-Ray then traces monochromatic sub-rays; povwall does not (yet).
-            if (in.dispersion != 1.0f) unsupported(at, "dispersion");
-        } else if (w == "dispersion_samples") {
+        else if (w == "dispersion_samples") {
             const Token at = peek();
             in.dispersion_samples = parse_int();
             if (in.dispersion_samples < 2) error(at, "dispersion samples minimum is 2");
+            // (A band's index travels in 16 bits; POV-Ray has no limit.)
+            if (in.dispersion_samples > 65535)
+                unsupported(at, "dispersion_samples above 65535");
         } else if (w == "refraction") {
             in.old_refract = float(parse_float());
             warn(t,

@@ -46,6 +46,13 @@ float ior_of(const Material* m) {
     if (!m || !m->interior) return 1.0f;
     return m->interior->ior > 0 ? m->interior->ior : 1.0f;
 }
+float dispersion_of(const Material* m) {
+    return m && m->interior ? m->interior->dispersion : 1.0f;
+}
+int dispersion_samples_of(const Material* m) {
+    return m && m->interior ? m->interior->dispersion_samples
+                            : Interior().dispersion_samples;
+}
 
 // The index ratio (transmitted over incident) POV-Ray's fresnel reflection uses at a
 // surface of `m` (its ComputeRelativeIOR), from the interiors the incoming ray is in. It
@@ -475,6 +482,13 @@ void pass_on_radiosity(const TraceRay& ray, ShadingRecord& out) {
     }
 }
 
+// A ray that dispersion split keeps its wavelength band in every descendant (POV-Ray's
+// monochromatic rays copy it on).
+void pass_on_band(const TraceRay& ray, ShadingRecord& out) {
+    if (!ray.band.monochromatic()) return;
+    for (ChildRay& c : out.children) c.trace.band = ray.band;
+}
+
 }  // namespace
 
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
@@ -484,6 +498,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         shadows.trace = ctx;
         spawn_hit(scene, ray, hit, out, shadows, true);
         pass_on_radiosity(ray, out);
+        pass_on_band(ray, out);
         return;
     }
     // Black boxes: the media samples' shadow rays become children after the others.
@@ -491,6 +506,7 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     staging.clear();
     shadows.collect = &staging;
     spawn_hit(scene, ray, hit, out, shadows, true);
+    pass_on_band(ray, out);
     if (!staging.media_replay) return;
     out.media_replay = true;
     out.media_first = out.children.size();
@@ -860,17 +876,24 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         // but not innermost (an overlap: no bending); entering one more.
         const InteriorStack& inside = ray.interiors;
         const uintptr_t id = m.interior_id;
-        Real eta = 1;  // incident over transmitted index
+        Real eta = 1;         // incident over transmitted index
+        Real dispersion = 1;  // the same ratio of the two sides' dispersions
+        int bands = dispersion_samples_of(&m);
         if (inside.size == 0) {
             eta = 1 / ior_of(&m);
+            dispersion = 1 / dispersion_of(&m);
             child.trace.interiors.push(&m);
         } else if (inside.innermost() && inside.innermost()->interior_id == id) {
             child.trace.interiors.remove(id);
-            eta = ior_of(&m) / ior_of(child.trace.interiors.innermost());
+            const Material* next = child.trace.interiors.innermost();
+            eta = ior_of(&m) / ior_of(next);
+            dispersion = dispersion_of(&m) / dispersion_of(next);
+            if (next) bands = std::max(bands, dispersion_samples_of(next));
         } else if (child.trace.interiors.remove(id)) {
             eta = 1;
         } else {
             eta = ior_of(inside.innermost()) / ior_of(&m);
+            dispersion = dispersion_of(inside.innermost()) / dispersion_of(&m);
             child.trace.interiors.push(&m);
         }
         // What passes is scaled by the interior's `refraction` and, when the incoming
@@ -880,44 +903,69 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
             att *= interior_attenuation(*m.interior, hit.t, false);
         child.coeff *= att;
         child.transmit_factor *= att.grey();
-        if (std::fabs(eta - 1) < kPovEpsilon) {
+        const bool disperses = std::fabs(dispersion - 1) >= kPovEpsilon;
+        if (std::fabs(eta - 1) < kPovEpsilon && !disperses) {
             child.trace.ray = {P, D};
             child.trace.depth = ray.depth;
             child.trace.continued = true;
-        } else {
-            // Bent about the top layer's normal turned to face the ray (a perturbed
-            // normal may point away from it).
-            Vector3 facing = top_normal;
-            Real n = -dot(D, facing);
-            if (n < 0) {
-                facing = -facing;
-                n = -n;
-            }
-            Real t = 1 + eta * eta * (n * n - 1);
-            child.trace.depth = ray.depth + 1;
-            if (t < 0) {
-                // Total internal reflection: reflected as a finish reflects (top normal,
-                // raw normal, iridescence), not filtered, no alpha, and the ray stays
-                // inside; the layers whose normal is the top one reflect no more.
-                const Vector3 R = reflected_direction(D, top_normal, N);
-                child.kind = ChildRay::Kind::Reflection;
-                child.internal_reflection = true;
-                child.trace.ray = {P, R};
-                child.trace.use = reflected_use(ray.use);
-                child.trace.interiors = ray.interiors;
-                child.coeff = att;
-                child.transmit_factor = 0;
-                if (top_finish && top_finish->irid > 0)
-                    tint_reflection(child,
-                                    iridescence(*top_finish, sc, P, top_normal, R, D));
-                drop_reflections_with_normal(out.children, reflection_normals,
-                                             top_normal);
-            } else {
-                Vector3 T = D * eta + facing * (eta * n - std::sqrt(t));
-                child.trace.ray = {P, normalize(T)};
-            }
+            out.children.push_back(child);
+            return;
         }
-        out.children.push_back(child);
+        child.trace.depth = ray.depth + 1;
+        // Bent about the top layer's normal turned to face the ray (a perturbed
+        // normal may point away from it).
+        Vector3 facing = top_normal;
+        Real n = -dot(D, facing);
+        if (n < 0) {
+            facing = -facing;
+            n = -n;
+        }
+        // `c` bent by `index_ratio`, with `share` of what passes (a band's hue).
+        auto bend = [&](ChildRay& c, Real index_ratio, const Rgb& share) {
+            c.coeff = child.coeff * share;
+            Real t = 1 + index_ratio * index_ratio * (n * n - 1);
+            if (t >= 0) {
+                Vector3 T = D * index_ratio + facing * (index_ratio * n - std::sqrt(t));
+                c.trace.ray = {P, normalize(T)};
+                return;
+            }
+            // Total internal reflection: reflected as a finish reflects (top normal, raw
+            // normal, iridescence), not filtered, no alpha, and the ray stays inside; the
+            // layers whose normal is the top one reflect no more. (Made from the
+            // incoming ray: a split's reflections carry all wavelengths.)
+            const Vector3 R = reflected_direction(D, top_normal, N);
+            c.kind = ChildRay::Kind::Reflection;
+            c.internal_reflection = true;
+            c.trace.ray = {P, R};
+            c.trace.use = reflected_use(ray.use);
+            c.trace.interiors = ray.interiors;
+            c.trace.band = ray.band;
+            c.coeff = att * share;
+            c.transmit_factor = 0;
+            if (top_finish && top_finish->irid > 0)
+                tint_reflection(c, iridescence(*top_finish, sc, P, top_normal, R, D));
+            drop_reflections_with_normal(out.children, reflection_normals, top_normal);
+        };
+        if (!disperses || ray.band.monochromatic()) {
+            // One ray: a split ray bends by its own band's index.
+            const Real index_ratio =
+                disperses
+                    ? SpectralBand(ray.band.index, ray.band.count).ior(eta, dispersion)
+                    : eta;
+            bend(child, index_ratio, Rgb(1.0f));
+            out.children.push_back(child);
+            return;
+        }
+        // Dispersion: one ray per band, each weighted by the band's hue (the mean of the
+        // hues is about white); what they bring back has no alpha.
+        for (int b = 0; b < bands; ++b) {
+            const SpectralBand band(b, bands);
+            ChildRay split = child;
+            split.trace.band = {uint16_t(b), uint16_t(bands)};
+            split.transmit_factor = 0;
+            bend(split, band.ior(eta, dispersion), band.hue() * (1.0f / float(bands)));
+            out.children.push_back(split);
+        }
     }
 }
 

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "trace/prepared_scene.h"
+#include "trace/spectral.h"
 
 namespace povwall::trace {
 
@@ -77,6 +78,8 @@ struct TraceRay {
     uint8_t radiosity_depth = 0;
     int max_level = 0;       // > 0: its max_trace_level (a radiosity gather's)
     float adc_bailout = -1;  // >= 0: its adc_bailout (radiosity's)
+    // The wavelength band of a ray split by dispersion; its descendants keep it.
+    RayBand band;
     InteriorStack interiors;
 };
 

@@ -84,7 +84,7 @@ enum RecordFlags : uint8_t {
     kParent = 16,        // parent, parent box, slot follow
     kTransmitOne = 32,   // transmit contribution 1 (not sent)
     kTransmitZero = 64,  // transmit contribution 0 (not sent)
-    kUnused = 128,
+    kBand = 128,         // a dispersion band follows (index, count)
 };
 // The ray-use byte's top bit: a continued ray (trace::TraceRay::continued).
 constexpr uint8_t kContinuedUse = 128;
@@ -121,7 +121,8 @@ void write_fields(RecordWriter& w, int box, const Item& item,
     const bool shadow_state = !default_shadow_state(r);
     const bool parent = r.parent != 0 || r.parent_box != -1 || r.slot != 0;
     uint8_t flags = (r.shadow ? kShadow : 0) | (r.counted ? kCounted : 0) |
-                    (shadow_state ? kShadowState : 0) | (parent ? kParent : 0);
+                    (shadow_state ? kShadowState : 0) | (parent ? kParent : 0) |
+                    (r.trace.band.monochromatic() ? kBand : 0);
     if (same_bits(r.transmit_contribution, 1.0f))
         flags |= kTransmitOne;
     else if (same_bits(r.transmit_contribution, 0.0f))
@@ -133,6 +134,10 @@ void write_fields(RecordWriter& w, int box, const Item& item,
     w.raw(r.trace.weight);
     w.raw(uint8_t(uint8_t(r.trace.use) | (r.trace.continued ? kContinuedUse : 0)));
     write_stack(w, r.trace.interiors, numbers);
+    if (flags & kBand) {
+        w.raw(r.trace.band.index);
+        w.raw(r.trace.band.count);
+    }
     w.raw(r.t_from);
     if (shadow_state) {
         w.raw(r.light_distance);
@@ -161,7 +166,7 @@ bool read_record(Reader& rd, const ItemLimits& limits, int& box, Item& item,
     const uint8_t flags = rd.raw<uint8_t>();
     // Only the forms write_fields() makes are read: a flag it never sets, or a field sent
     // though it holds its default, is a corrupt record.
-    if ((flags & kUnused) || ((flags & kIsResult) && flags != kIsResult) ||
+    if (((flags & kIsResult) && flags != kIsResult) ||
         ((flags & kTransmitOne) && (flags & kTransmitZero)))
         return false;
     item.is_result = flags & kIsResult;
@@ -185,6 +190,14 @@ bool read_record(Reader& rd, const ItemLimits& limits, int& box, Item& item,
         if (use > uint8_t(trace::kLastRayUse)) return false;
         r.trace.use = trace::RayUse(use);
         read_stack(rd, r.trace.interiors, numbers);
+        r.trace.band = {};
+        if (flags & kBand) {
+            r.trace.band.index = rd.raw<uint16_t>();
+            r.trace.band.count = rd.raw<uint16_t>();
+            // A split makes 2 or more bands (the parser's minimum).
+            if (r.trace.band.count < 2 || r.trace.band.index >= r.trace.band.count)
+                return false;
+        }
         r.t_from = rd.raw<Real>();
         if (flags & kShadowState) {
             r.light_distance = rd.raw<Real>();

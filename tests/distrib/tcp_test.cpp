@@ -342,7 +342,8 @@ TEST(Tcp, EveryShapeSceneIsInTheEveryModeList) {
 
 // The fixes of the real-scene issue (version state, tilted-normal reflection and
 // refraction, iridescence, inverse CSG, map entries, palette and corner textures, object
-// flags, continued rays at the last trace level, parallel lights behind their plane):
+// flags, continued rays at the last trace level, parallel lights behind their plane,
+// dispersion's bands, which travel with their rays between boxes):
 // each matches POV-Ray in tests/golden and gives the one-process image in every mode.
 TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
     for (const char* name : {"version_include",
@@ -366,7 +367,8 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "trace_level_continued_rays",
                              "light_parallel_behind_plane",
                              "light_fade_power_alone",
-                             "shape_quadric_csg_boxes"}) {
+                             "shape_quadric_csg_boxes",
+                             "dispersion"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(scene, "-W 40 -H 30",
