@@ -161,33 +161,68 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
     const Vector3& D = r.direction;  // POV-Ray does not normalise it: t is world depth
     const Real depth = g.depth;
     const bool caps = std::fabs(D.z) >= kPovEpsilon;
-    const size_t first = out.size();
-    Real y_front = 0, y_back = 0;  // the ray's height at z = 0 and at z = depth
-    Real x_front = 0, x_back = 0;  // and its x there
+    // The ray's points (x, y) at the two ends of the stretch where a wall crossing that
+    // matters lies: the caps' planes, or a part of that (below).
+    Real x_front = 0, y_front = 0, x_back = 0, y_back = 0;
     if (caps) {
         Real t = -P.z / D.z;
-        Real x = P.x + t * D.x, y = P.y + t * D.y;
+        const Real x = P.x + t * D.x, y = P.y + t * D.y;
         const Real t_front = t;
         t += depth / D.z;
+        const Real t_back = t;
         const Real xb = P.x + t * D.x, yb = P.y + t * D.y;
-        y_front = y;
-        y_back = yb;
         x_front = x;
+        y_front = y;
         x_back = xb;
-        // (A shadow ray that needs any crossing stops at the front cap's.)
+        y_back = yb;
         const bool front_counts = t_front > 0.0 && t_front > kGlyphTolerance;
-        if (front_counts && r.ends_search(t_front) &&
-            inside_glyph_outline(outline, x, y)) {
-            out.push_back({t_front, {x, y, 0.0}, kFrontFace});
-            return;
+        const bool back_counts = t_back > 0.0 && t_back > kGlyphTolerance;
+        bool first_cap_hit = false;
+        if (r.nearest_only) {
+            // A wall crossing's depth passes the z test only between the caps' planes, up
+            // to rounding (relative 1e-16 of z's terms and of the caps' depths, far below
+            // `slack`): no crossing lies nearer than the cap the ray meets first, less
+            // slack. Past the wanted range, none is wanted.
+            const Real t_first = std::min(t_front, t_back);
+            const Real slack =
+                1e-12 * (std::fabs(P.z) + std::fabs(depth)) / std::fabs(D.z);
+            if (t_first - slack >= r.want_hi) return;
+            // A closest-hit query whose first cap is a crossing in range needs nothing
+            // past that cap, not even the other cap. The caller keeps the last of equal
+            // depths, so a wall crossing at or before it still can be the nearest: the
+            // walls are searched on the ray's stretch from t_first - slack to t_first.
+            const bool front_first = t_front < t_back, back_first = t_back < t_front;
+            if (!r.any_crossing && (front_first || back_first) &&
+                (front_first ? front_counts : back_counts) && t_first >= r.want_lo &&
+                t_first < r.want_hi) {
+                const Real xf = front_first ? x : xb, yf = front_first ? y : yb;
+                if (inside_glyph_outline(outline, xf, yf)) {
+                    out.push_back({t_first,
+                                   {xf, yf, front_first ? 0.0 : depth},
+                                   front_first ? kFrontFace : kBackFace});
+                    const Real t_near = t_first - slack;
+                    x_front = P.x + t_near * D.x;
+                    y_front = P.y + t_near * D.y;
+                    x_back = xf;
+                    y_back = yf;
+                    first_cap_hit = true;
+                }
+            }
         }
-        const bool front = inside_glyph_outline(outline, x, y);
-        const bool back = inside_glyph_outline(outline, xb, yb);
-        if (front && front_counts) out.push_back({t_front, {x, y, 0.0}, kFrontFace});
-        if (back && t > 0.0 && t > kGlyphTolerance)
-            out.push_back({t, {xb, yb, depth}, kBackFace});
-        for (size_t i = first; i < out.size(); ++i)
-            if (r.ends_search(out[i].t)) return;
+        if (!first_cap_hit) {
+            const size_t first = out.size();
+            const bool front = front_counts && inside_glyph_outline(outline, x, y);
+            // (A shadow ray that needs any crossing stops at the front cap's.)
+            if (front && r.ends_search(t_front)) {
+                out.push_back({t_front, {x, y, 0.0}, kFrontFace});
+                return;
+            }
+            const bool back = back_counts && inside_glyph_outline(outline, xb, yb);
+            if (front) out.push_back({t_front, {x, y, 0.0}, kFrontFace});
+            if (back) out.push_back({t_back, {xb, yb, depth}, kBackFace});
+            for (size_t i = first; i < out.size(); ++i)
+                if (r.ends_search(out[i].t)) return;
+        }
     }
     const bool use_x = std::fabs(D.x) >= kPovEpsilon;
     if (!use_x && std::fabs(D.y) < kPovEpsilon) return;  // parallel to the walls
@@ -228,9 +263,9 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
                             outline.point_ymax};
         if (clear_of(bx, by, 4)) return;
     }
-    // Where the depth comes from x, a wall crossing's x is the ray's at a depth between
-    // the caps' (z within 0..depth): between x_front and x_back up to rounding (relative
-    // 1e-16 of the coordinates), far below the margin. A segment whose points all lie
+    // Where the depth comes from x, a wall crossing's x is the ray's at its depth, which
+    // lies on the stretch: between x_front and x_back up to rounding (relative 1e-16 of
+    // the coordinates), far below the margin. A segment whose points all lie
     // outside that range has none (a curve lies in its points' hull).
     Real x_lo = -kInfinity, x_hi = kInfinity;
     if (caps && use_x) {
@@ -277,10 +312,10 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
             push_side(use_x ? (x - P.x) / D.x : (y - P.y) / D.y, int(i), x, y);
         }
     };
-    // A wall is hit between the caps only: where the ray is there, its height runs from
-    // y_front to y_back, so only the bands of that range can hold a crossing. The margin
-    // covers a crossing's rounding off the projected line, stretched by the slope when
-    // the depth comes from x.
+    // A wall crossing lies on the stretch only: where the ray is there, its height runs
+    // from y_front to y_back, so only the bands of that range can hold a crossing. The
+    // margin covers a crossing's rounding off the projected line, stretched by the slope
+    // when the depth comes from x.
     constexpr int kMaxWords = 16;
     if (caps && outline.band_words > 0 && outline.band_words <= kMaxWords) {
         const Real slope = use_x ? std::max(1.0, std::fabs(D.y / D.x)) : 1.0;
