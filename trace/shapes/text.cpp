@@ -277,19 +277,21 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
             x_hi = std::max(x_front, x_back) + m;
         }
     }
+    // (A line's points are its two ends: its end stands in for the third.)
     auto beside_window = [&](const GlyphSegment& s) {
-        const int n = s.curve ? 3 : 2;
-        bool left = true, right = true;
-        for (int k = 0; k < n; ++k) {
-            left = left && s.x[k] < x_lo;
-            right = right && s.x[k] > x_hi;
-        }
-        return left || right;
+        const Real x2 = s.curve ? s.x[2] : s.x[1];
+        return std::max({s.x[0], s.x[1], x2}) < x_lo ||
+               std::min({s.x[0], s.x[1], x2}) > x_hi;
+    };
+    auto segment_clear = [&](const GlyphSegment& s) {
+        const Real v0 = side(s.x[0], s.y[0]), v1 = side(s.x[1], s.y[1]);
+        const Real v2 = s.curve ? side(s.x[2], s.y[2]) : v1;
+        return std::min({v0, v1, v2}) > margin || std::max({v0, v1, v2}) < -margin;
     };
     auto cross_segment = [&](size_t i) {
         if (ended) return;
         const GlyphSegment& s = outline.segments[i];
-        if (beside_window(s) || clear_of(s.x, s.y, s.curve ? 3 : 2)) return;
+        if (beside_window(s) || segment_clear(s)) return;
         if (!s.curve) {
             const Real d0 = s.x[1] - s.x[0], d1 = s.y[1] - s.y[0];
             const Real den = d1 * D.x - d0 * D.y;
@@ -326,7 +328,8 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
         const Real lo = std::min(y_front, y_back) - m, hi = std::max(y_front, y_back) + m;
         if (std::isfinite(lo) && std::isfinite(hi)) {
             const int b0 = outline.band(lo), b1 = outline.band(hi);
-            uint64_t set[kMaxWords] = {};
+            uint64_t set[kMaxWords];
+            std::fill_n(set, outline.band_words, uint64_t(0));
             for (int band = b0; band <= b1; ++band) {
                 const uint64_t* bits = outline.band_set(band);
                 for (int w = 0; w < outline.band_words; ++w) set[w] |= bits[w];
