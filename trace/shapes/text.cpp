@@ -356,10 +356,18 @@ bool shape_inside(const Glyph& g, const Point3& p) {
 }
 
 Bounds3 shape_bounds(const Glyph& g) {
-    // The outline's own extent (a composite's points may leave POV-Ray's box).
+    // The outline's own extent (a composite's points may leave POV-Ray's box): its point
+    // box once indexed (the same minima and maxima of the same points in the same order).
+    const GlyphOutline& o = *g.outline;
     Bounds3 b;
-    for (const GlyphSegment& s : g.outline->segments) {
-        for (int i = 0; i < (s.curve ? 3 : 2); ++i) b.extend(Point3{s.x[i], s.y[i], 0});
+    if (o.band_words > 0) {
+        b.lo = {o.point_xmin, o.point_ymin, 0};
+        b.hi = {o.point_xmax, o.point_ymax, 0};
+    } else {
+        for (const GlyphSegment& s : o.segments) {
+            for (int i = 0; i < (s.curve ? 3 : 2); ++i)
+                b.extend(Point3{s.x[i], s.y[i], 0});
+        }
     }
     if (b.empty()) b.extend(Point3{0, 0, 0});
     b.lo.z = std::min(0.0, g.depth);
