@@ -210,14 +210,20 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
             }
         }
         if (!first_cap_hit) {
+            // (A query that keeps only the range needs no cap outside it.)
+            auto wanted = [&](Real t_cap) {
+                return !r.nearest_only || (t_cap >= r.want_lo && t_cap < r.want_hi);
+            };
             const size_t first = out.size();
-            const bool front = front_counts && inside_glyph_outline(outline, x, y);
+            const bool front =
+                front_counts && wanted(t_front) && inside_glyph_outline(outline, x, y);
             // (A shadow ray that needs any crossing stops at the front cap's.)
             if (front && r.ends_search(t_front)) {
                 out.push_back({t_front, {x, y, 0.0}, kFrontFace});
                 return;
             }
-            const bool back = back_counts && inside_glyph_outline(outline, xb, yb);
+            const bool back =
+                back_counts && wanted(t_back) && inside_glyph_outline(outline, xb, yb);
             if (front) out.push_back({t_front, {x, y, 0.0}, kFrontFace});
             if (back) out.push_back({t_back, {xb, yb, depth}, kBackFace});
             for (size_t i = first; i < out.size(); ++i)
