@@ -294,10 +294,11 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
         const Real v2 = s.curve ? side(s.x[2], s.y[2]) : v1;
         return std::min({v0, v1, v2}) > margin || std::max({v0, v1, v2}) < -margin;
     };
-    auto cross_segment = [&](size_t i) {
-        if (ended) return;
+    // The crossings of a segment inside the window. Kept out of line: most segments of
+    // a scan fail the window test (cross_segment), which then costs no call.
+    auto solve_segment = [&](size_t i) __attribute__((noinline)) {
         const GlyphSegment& s = outline.segments[i];
-        if (beside_window(s) || segment_clear(s)) return;
+        if (segment_clear(s)) return;
         if (!s.curve) {
             const Real d0 = s.x[1] - s.x[0], d1 = s.y[1] - s.y[0];
             const Real den = d1 * D.x - d0 * D.y;
@@ -320,6 +321,9 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
             push_side(use_x ? (x - P.x) / D.x : (y - P.y) / D.y, int(i), x, y);
         }
     };
+    auto cross_segment = [&](size_t i) {
+        if (!ended && !beside_window(outline.segments[i])) solve_segment(i);
+    };
     // A wall crossing lies on the stretch only: where the ray is there, its height runs
     // from y_front to y_back, so only the bands of that range can hold a crossing. The
     // margin covers a crossing's rounding off the projected line, stretched by the slope
@@ -335,10 +339,10 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
         if (std::isfinite(lo) && std::isfinite(hi)) {
             const int b0 = outline.band(lo), b1 = outline.band(hi);
             uint64_t set[kMaxWords];
-            std::fill_n(set, outline.band_words, uint64_t(0));
-            for (int band = b0; band <= b1; ++band) {
-                const uint64_t* bits = outline.band_set(band);
-                for (int w = 0; w < outline.band_words; ++w) set[w] |= bits[w];
+            for (int w = 0; w < outline.band_words; ++w) {
+                uint64_t bits = 0;
+                for (int band = b0; band <= b1; ++band) bits |= outline.band_set(band)[w];
+                set[w] = bits;
             }
             for_each_segment(outline, set, cross_segment);
             return;
