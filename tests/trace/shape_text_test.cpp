@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <random>
 
 #include "trace/shapes/text.h"
 
@@ -106,6 +107,70 @@ TEST(GlyphShape, SolverMissesTangents) {
     EXPECT_EQ(r[1], 0);
     ASSERT_EQ(glyph_solve_quad(0, 2, -1, r), 1);  // linear
     EXPECT_EQ(r[0], 0.5);
+}
+
+TEST(GlyphShape, ClosestHitQueryStopsAtTheFirstCap) {
+    const Glyph g = square_glyph(0.5);
+    LocalRay r = ray({0.5, 0.5, -1}, {0, 0, 1});
+    r.nearest_only = true;
+    ShapeHits hits;
+    shape_hits(g, r, hits);
+    ASSERT_EQ(hits.size(), 1u);  // the back face is not searched
+    EXPECT_EQ(hits[0].t, 1.0);
+    EXPECT_EQ(shape_normal(g, hits[0]), Vector3(0, 0, -1));
+    // From behind, the back face is met first.
+    r = ray({0.5, 0.5, 2}, {0, 0, -1});
+    r.nearest_only = true;
+    hits.clear();
+    shape_hits(g, r, hits);
+    ASSERT_EQ(hits.size(), 1u);
+    EXPECT_EQ(hits[0].t, 1.5);
+    EXPECT_EQ(shape_normal(g, hits[0]), Vector3(0, 0, 1));
+    // Nothing is wanted past want_hi.
+    r.want_hi = 1.4;
+    hits.clear();
+    shape_hits(g, r, hits);
+    EXPECT_TRUE(hits.empty());
+}
+
+// A closest-hit query's nearest crossing (the last of equal depths, as the caller keeps)
+// is the full list's, on rays through an outline of lines and curves.
+TEST(GlyphShape, ClosestHitQueryKeepsTheNearestCrossing) {
+    auto outline = std::make_shared<GlyphOutline>();
+    add_square(*outline, 0, 0, 1, 1);
+    outline->segments.push_back({{0.2, 0.5, 0.8}, {0.2, 0.9, 0.2}, true});
+    outline->segments.push_back(line(0.8, 0.2, 0.2, 0.2));
+    outline->xmax = outline->ymax = 1;
+    outline->index();
+    const Glyph g{outline, 0.3};
+    auto nearest = [](const ShapeHits& hits, Real lo, Real hi) {
+        const ShapeHit* best = nullptr;
+        for (const ShapeHit& h : hits)
+            if (h.t >= lo && h.t < hi && (!best || h.t <= best->t)) best = &h;
+        return best;
+    };
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<Real> u(-1, 2);
+    int hit_count = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Point3 o{u(rng), u(rng), u(rng) * 2 - 1};
+        const Point3 target{u(rng) * 0.6 + 0.2, u(rng) * 0.6 + 0.2, u(rng) * 0.2};
+        LocalRay r = ray(o, target - o);
+        const Real hi = i % 3 == 0 ? 2.0 * u(rng) + 2 : kInfinity;
+        ShapeHits all, kept;
+        shape_hits(g, r, all);
+        r.nearest_only = true;
+        r.want_hi = hi;
+        shape_hits(g, r, kept);
+        const ShapeHit* a = nearest(all, 0, hi);
+        const ShapeHit* k = nearest(kept, 0, hi);
+        ASSERT_EQ(a == nullptr, k == nullptr) << i;
+        if (!a) continue;
+        ++hit_count;
+        EXPECT_EQ(a->t, k->t) << i;
+        EXPECT_EQ(a->face, k->face) << i;
+    }
+    EXPECT_GT(hit_count, 5000);
 }
 
 TEST(GlyphShape, PovBoxIsTheHeaderBoxPaddedInZ) {

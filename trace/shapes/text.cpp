@@ -161,33 +161,74 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
     const Vector3& D = r.direction;  // POV-Ray does not normalise it: t is world depth
     const Real depth = g.depth;
     const bool caps = std::fabs(D.z) >= kPovEpsilon;
-    const size_t first = out.size();
-    Real y_front = 0, y_back = 0;  // the ray's height at z = 0 and at z = depth
-    Real x_front = 0, x_back = 0;  // and its x there
+    // The ray's points (x, y) at the two ends of the stretch where a wall crossing that
+    // matters lies: the caps' planes, or a part of that (below).
+    Real x_front = 0, y_front = 0, x_back = 0, y_back = 0;
     if (caps) {
         Real t = -P.z / D.z;
-        Real x = P.x + t * D.x, y = P.y + t * D.y;
+        const Real x = P.x + t * D.x, y = P.y + t * D.y;
         const Real t_front = t;
         t += depth / D.z;
+        const Real t_back = t;
         const Real xb = P.x + t * D.x, yb = P.y + t * D.y;
-        y_front = y;
-        y_back = yb;
         x_front = x;
+        y_front = y;
         x_back = xb;
-        // (A shadow ray that needs any crossing stops at the front cap's.)
+        y_back = yb;
         const bool front_counts = t_front > 0.0 && t_front > kGlyphTolerance;
-        if (front_counts && r.ends_search(t_front) &&
-            inside_glyph_outline(outline, x, y)) {
-            out.push_back({t_front, {x, y, 0.0}, kFrontFace});
-            return;
+        const bool back_counts = t_back > 0.0 && t_back > kGlyphTolerance;
+        bool first_cap_hit = false;
+        if (r.nearest_only) {
+            // A wall crossing's depth passes the z test only between the caps' planes, up
+            // to rounding (relative 1e-16 of z's terms and of the caps' depths, far below
+            // `slack`): no crossing lies nearer than the cap the ray meets first, less
+            // slack. Past the wanted range, none is wanted.
+            const Real t_first = std::min(t_front, t_back);
+            const Real slack =
+                1e-12 * (std::fabs(P.z) + std::fabs(depth)) / std::fabs(D.z);
+            if (t_first - slack >= r.want_hi) return;
+            // A closest-hit query whose first cap is a crossing in range needs nothing
+            // past that cap, not even the other cap. The caller keeps the last of equal
+            // depths, so a wall crossing at or before it still can be the nearest: the
+            // walls are searched on the ray's stretch from t_first - slack to t_first.
+            const bool front_first = t_front < t_back, back_first = t_back < t_front;
+            if (!r.any_crossing && (front_first || back_first) &&
+                (front_first ? front_counts : back_counts) && t_first >= r.want_lo &&
+                t_first < r.want_hi) {
+                const Real xf = front_first ? x : xb, yf = front_first ? y : yb;
+                if (inside_glyph_outline(outline, xf, yf)) {
+                    out.push_back({t_first,
+                                   {xf, yf, front_first ? 0.0 : depth},
+                                   front_first ? kFrontFace : kBackFace});
+                    const Real t_near = t_first - slack;
+                    x_front = P.x + t_near * D.x;
+                    y_front = P.y + t_near * D.y;
+                    x_back = xf;
+                    y_back = yf;
+                    first_cap_hit = true;
+                }
+            }
         }
-        const bool front = inside_glyph_outline(outline, x, y);
-        const bool back = inside_glyph_outline(outline, xb, yb);
-        if (front && front_counts) out.push_back({t_front, {x, y, 0.0}, kFrontFace});
-        if (back && t > 0.0 && t > kGlyphTolerance)
-            out.push_back({t, {xb, yb, depth}, kBackFace});
-        for (size_t i = first; i < out.size(); ++i)
-            if (r.ends_search(out[i].t)) return;
+        if (!first_cap_hit) {
+            // (A query that keeps only the range needs no cap outside it.)
+            auto wanted = [&](Real t_cap) {
+                return !r.nearest_only || (t_cap >= r.want_lo && t_cap < r.want_hi);
+            };
+            const size_t first = out.size();
+            const bool front =
+                front_counts && wanted(t_front) && inside_glyph_outline(outline, x, y);
+            // (A shadow ray that needs any crossing stops at the front cap's.)
+            if (front && r.ends_search(t_front)) {
+                out.push_back({t_front, {x, y, 0.0}, kFrontFace});
+                return;
+            }
+            const bool back =
+                back_counts && wanted(t_back) && inside_glyph_outline(outline, xb, yb);
+            if (front) out.push_back({t_front, {x, y, 0.0}, kFrontFace});
+            if (back) out.push_back({t_back, {xb, yb, depth}, kBackFace});
+            for (size_t i = first; i < out.size(); ++i)
+                if (r.ends_search(out[i].t)) return;
+        }
     }
     const bool use_x = std::fabs(D.x) >= kPovEpsilon;
     if (!use_x && std::fabs(D.y) < kPovEpsilon) return;  // parallel to the walls
@@ -228,9 +269,9 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
                             outline.point_ymax};
         if (clear_of(bx, by, 4)) return;
     }
-    // Where the depth comes from x, a wall crossing's x is the ray's at a depth between
-    // the caps' (z within 0..depth): between x_front and x_back up to rounding (relative
-    // 1e-16 of the coordinates), far below the margin. A segment whose points all lie
+    // Where the depth comes from x, a wall crossing's x is the ray's at its depth, which
+    // lies on the stretch: between x_front and x_back up to rounding (relative 1e-16 of
+    // the coordinates), far below the margin. A segment whose points all lie
     // outside that range has none (a curve lies in its points' hull).
     Real x_lo = -kInfinity, x_hi = kInfinity;
     if (caps && use_x) {
@@ -242,19 +283,22 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
             x_hi = std::max(x_front, x_back) + m;
         }
     }
+    // (A line's points are its two ends: its end stands in for the third.)
     auto beside_window = [&](const GlyphSegment& s) {
-        const int n = s.curve ? 3 : 2;
-        bool left = true, right = true;
-        for (int k = 0; k < n; ++k) {
-            left = left && s.x[k] < x_lo;
-            right = right && s.x[k] > x_hi;
-        }
-        return left || right;
+        const Real x2 = s.curve ? s.x[2] : s.x[1];
+        return std::max({s.x[0], s.x[1], x2}) < x_lo ||
+               std::min({s.x[0], s.x[1], x2}) > x_hi;
     };
-    auto cross_segment = [&](size_t i) {
-        if (ended) return;
+    auto segment_clear = [&](const GlyphSegment& s) {
+        const Real v0 = side(s.x[0], s.y[0]), v1 = side(s.x[1], s.y[1]);
+        const Real v2 = s.curve ? side(s.x[2], s.y[2]) : v1;
+        return std::min({v0, v1, v2}) > margin || std::max({v0, v1, v2}) < -margin;
+    };
+    // The crossings of a segment inside the window. Kept out of line: most segments of
+    // a scan fail the window test (cross_segment), which then costs no call.
+    auto solve_segment = [&](size_t i) __attribute__((noinline)) {
         const GlyphSegment& s = outline.segments[i];
-        if (beside_window(s) || clear_of(s.x, s.y, s.curve ? 3 : 2)) return;
+        if (segment_clear(s)) return;
         if (!s.curve) {
             const Real d0 = s.x[1] - s.x[0], d1 = s.y[1] - s.y[0];
             const Real den = d1 * D.x - d0 * D.y;
@@ -277,10 +321,13 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
             push_side(use_x ? (x - P.x) / D.x : (y - P.y) / D.y, int(i), x, y);
         }
     };
-    // A wall is hit between the caps only: where the ray is there, its height runs from
-    // y_front to y_back, so only the bands of that range can hold a crossing. The margin
-    // covers a crossing's rounding off the projected line, stretched by the slope when
-    // the depth comes from x.
+    auto cross_segment = [&](size_t i) {
+        if (!ended && !beside_window(outline.segments[i])) solve_segment(i);
+    };
+    // A wall crossing lies on the stretch only: where the ray is there, its height runs
+    // from y_front to y_back, so only the bands of that range can hold a crossing. The
+    // margin covers a crossing's rounding off the projected line, stretched by the slope
+    // when the depth comes from x.
     constexpr int kMaxWords = 16;
     if (caps && outline.band_words > 0 && outline.band_words <= kMaxWords) {
         const Real slope = use_x ? std::max(1.0, std::fabs(D.y / D.x)) : 1.0;
@@ -291,10 +338,11 @@ void shape_hits(const Glyph& g, const LocalRay& r, ShapeHits& out) {
         const Real lo = std::min(y_front, y_back) - m, hi = std::max(y_front, y_back) + m;
         if (std::isfinite(lo) && std::isfinite(hi)) {
             const int b0 = outline.band(lo), b1 = outline.band(hi);
-            uint64_t set[kMaxWords] = {};
-            for (int band = b0; band <= b1; ++band) {
-                const uint64_t* bits = outline.band_set(band);
-                for (int w = 0; w < outline.band_words; ++w) set[w] |= bits[w];
+            uint64_t set[kMaxWords];
+            for (int w = 0; w < outline.band_words; ++w) {
+                uint64_t bits = 0;
+                for (int band = b0; band <= b1; ++band) bits |= outline.band_set(band)[w];
+                set[w] = bits;
             }
             for_each_segment(outline, set, cross_segment);
             return;
@@ -318,10 +366,18 @@ bool shape_inside(const Glyph& g, const Point3& p) {
 }
 
 Bounds3 shape_bounds(const Glyph& g) {
-    // The outline's own extent (a composite's points may leave POV-Ray's box).
+    // The outline's own extent (a composite's points may leave POV-Ray's box): its point
+    // box once indexed (the same minima and maxima of the same points in the same order).
+    const GlyphOutline& o = *g.outline;
     Bounds3 b;
-    for (const GlyphSegment& s : g.outline->segments) {
-        for (int i = 0; i < (s.curve ? 3 : 2); ++i) b.extend(Point3{s.x[i], s.y[i], 0});
+    if (o.band_words > 0) {
+        b.lo = {o.point_xmin, o.point_ymin, 0};
+        b.hi = {o.point_xmax, o.point_ymax, 0};
+    } else {
+        for (const GlyphSegment& s : o.segments) {
+            for (int i = 0; i < (s.curve ? 3 : 2); ++i)
+                b.extend(Point3{s.x[i], s.y[i], 0});
+        }
     }
     if (b.empty()) b.extend(Point3{0, 0, 0});
     b.lo.z = std::min(0.0, g.depth);
