@@ -455,10 +455,6 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (!cyl && !cone) error(t, "'open' cannot be used with this object");
         if (cyl) cyl->open = true;
         if (cone) cone->open = true;
-    } else if (w == "clipped_by" && std::holds_alternative<Isosurface>(obj.shape)) {
-        // POV-Ray tests an isosurface's clip inside its search: a clipped container hit
-        // does not count as a trace nor turn the search around.
-        unsupported(t, "clipped_by on an isosurface");
     } else if (w == "clipped_by" && std::holds_alternative<BicubicPatch>(obj.shape)) {
         // POV-Ray ignores the clip of a patch but still shrinks its bounding box by it.
         unsupported(t, "clipped_by on a bicubic_patch");

@@ -83,6 +83,8 @@ bool texture_opaque(const LayeredTexture& layers) {
 
 namespace {
 
+bool inside_clips(const Object& o, const Point3& p);
+
 // Leaf shape crossings along a world ray, in world distances, with outward world normals.
 void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
                     std::vector<WorldCrossing>& out, const WantedRange* wanted) {
@@ -108,8 +110,11 @@ void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
     LocalRay local = leaf_ray(o, ray);
     if (!(local.length > 0)) return;
     // A clip filters the hits after the shape: a shape that stops at its first hit must
-    // go on past clipped ones, as POV-Ray's (which tests clips before it stops).
-    local.csg_child = csg_child || !o.clipped_by->empty();
+    // go on past clipped ones, as POV-Ray's (which tests clips before it stops). An
+    // isosurface tests its clip inside its search, as POV-Ray's does.
+    const Isosurface* clipped_iso =
+        o.clipped_by->empty() ? nullptr : std::get_if<Isosurface>(&o.shape);
+    local.csg_child = csg_child || (!o.clipped_by->empty() && !clipped_iso);
     if (wanted && !local.csg_child) {
         local.nearest_only = true;
         local.want_lo = wanted->lo;
@@ -118,7 +123,20 @@ void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
     }
     thread_local ShapeHits hits;
     hits.clear();
-    leaf_hits(o, local, hits);
+    if (clipped_iso) {
+        struct Context {
+            const Object& o;
+            const Ray& ray;
+        } context{o, ray};
+        const IsosurfaceClip clip{[](const void* c, Real t) {
+                                      const auto& x = *static_cast<const Context*>(c);
+                                      return inside_clips(x.o, x.ray.at(t));
+                                  },
+                                  &context};
+        shape_hits(*clipped_iso, local, clip, hits);
+    } else {
+        leaf_hits(o, local, hits);
+    }
     for (const ShapeHit& h : hits) {
         WorldCrossing c{h.t, &o, h.own_point,
                         h.own_point ? o.transform.point(h.p) : Point3{}};

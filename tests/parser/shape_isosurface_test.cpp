@@ -81,9 +81,12 @@ TEST(ShapeIsosurface, TheFunctionReadsTheFinalSettings) {
     EXPECT_EQ(iso.number_of_waves, 3);
 }
 
+TEST(ShapeIsosurface, ClippedBy) {
+    Scene s = parse("isosurface { function { x } clipped_by { plane { y, 0 } } }");
+    EXPECT_EQ(s.objects.at(0).clipped_by->size(), 1u);
+}
+
 TEST(ShapeIsosurface, Errors) {
-    EXPECT_EQ(error_of("isosurface { function { x } clipped_by { plane { y, 0 } } }"),
-              "test.pov:1:29: error: unsupported: clipped_by on an isosurface");
     EXPECT_EQ(error_of("isosurface { function { x } sturm }"),
               "test.pov:1:29: error: 'sturm' cannot be used with this object");
     EXPECT_EQ(error_of("isosurface { threshold 1 }").substr(0, 24),

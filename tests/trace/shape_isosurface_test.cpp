@@ -86,6 +86,57 @@ TEST(ShapeIsosurface, MaxTraceFindsTheFarSide) {
     EXPECT_LT(hits[1].t, 3.501);
 }
 
+// A clip keeping the world distances t >= *context.
+IsosurfaceClip keep_from(const Real& t_min) {
+    return {[](const void* c, Real t) { return t >= *static_cast<const Real*>(c); },
+            &t_min};
+}
+
+TEST(ShapeIsosurface, AClippedRootUsesUpItsTrace) {
+    // The slab |z| <= 0.5 from z = -3: roots at 2.5 and 3.5. Clipping the first away,
+    // max_trace 1 sees nothing behind it (POV-Ray tests the clip inside the search);
+    // max_trace 2 finds the far side.
+    const Real from = 3.0;
+    LocalRay r = ray({0, 0, -3}, {0, 0, 1});
+    r.csg_child = true;
+    ShapeHits hits;
+    shape_hits(iso("function { abs(z) - 0.5 } max_gradient 1.1"), r, keep_from(from),
+               hits);
+    EXPECT_TRUE(hits.empty());
+    shape_hits(iso("function { abs(z) - 0.5 } max_trace 2"), r, keep_from(from), hits);
+    ASSERT_EQ(hits.size(), 1u);
+    EXPECT_GE(hits[0].t, 3.5);
+    EXPECT_LT(hits[0].t, 3.501);
+}
+
+TEST(ShapeIsosurface, AClippedContainerHitIsNoTrace) {
+    // F = -cos(2 pi z) along the axis from z = -3: F < 0 on the box's face z = -1
+    // (t = 2), then roots at z = -0.75 (F turns positive, t = 2.25) and z = -0.25 (F
+    // turns negative, t = 2.75). Kept, the face is the first of max_trace 3 hits. Clipped
+    // (the clip keeps t >= 2.5), it neither counts nor turns the search around: the
+    // search starts where F < 0 and its first root is the face again (clipped, one
+    // trace), then 2.25 (clipped, two), then 2.75, kept with max_trace 3 and not reached
+    // with 2.
+    const std::string f = "function { -cos(2 * pi * z) } max_gradient 7 ";
+    LocalRay r = ray({0, 0, -3}, {0, 0, 1});
+    r.csg_child = true;
+    ShapeHits hits;
+    const Real all = -1, from = 2.5;
+    shape_hits(iso(f + "max_trace 3"), r, keep_from(all), hits);
+    ASSERT_EQ(hits.size(), 3u);
+    EXPECT_EQ(hits[0].t, 2.0);
+    EXPECT_EQ(hits[0].face, 5);
+    EXPECT_NEAR(hits[1].t, 2.25, 1e-3);
+    EXPECT_NEAR(hits[2].t, 2.75, 1e-3);
+    hits.clear();
+    shape_hits(iso(f + "max_trace 3"), r, keep_from(from), hits);
+    ASSERT_EQ(hits.size(), 1u);
+    EXPECT_NEAR(hits[0].t, 2.75, 1e-3);
+    hits.clear();
+    shape_hits(iso(f + "max_trace 2"), r, keep_from(from), hits);
+    EXPECT_TRUE(hits.empty());
+}
+
 TEST(ShapeIsosurface, SphereContainerInsideAndBoxes) {
     const Isosurface s = iso("function { y } contained_by { sphere { <0, 0, 0>, 1 } }");
     EXPECT_TRUE(shape_inside(s, {0, -0.5, 0}));

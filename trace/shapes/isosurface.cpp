@@ -115,8 +115,10 @@ namespace {
 
 // One POV-Ray All_Intersections along P + t D (world distances t). `maxg` is the
 // max_gradient the search starts from; with `evaluate` it is left at the ray's estimate.
+// `clip` (or null): the clip, which sees world distances `t_clip + t` (P is t_clip along
+// the ray it tests).
 void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, Real& maxg,
-               ShapeHits& out) {
+               const IsosurfaceClip* clip, Real t_clip, ShapeHits& out) {
     Real depth1 = 0, depth2 = 0;
     int side1, side2;
     if (!container_span(container(s), P, D, depth1, depth2, side1, side2)) return;
@@ -125,13 +127,15 @@ void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, Real& max
     const Real acc = s.accuracy;
     const size_t first = out.size();
     auto push = [&](Real t, int side) { out.push_back({t, P + D * t, side}); };
+    auto kept = [&](Real t) { return !clip || clip->keeps(clip->context, t_clip + t); };
     int itrace = 0;
     RootSearch search{f, P, D, acc};
     if (s.evaluate) search.eval = s.eval_param;
     if (s.closed) {
         const Real f1 = f(P + D * depth1);
         if (depth1 > acc) {
-            if (f1 < 0.0) {  // the ray meets the container where F is inside
+            // The ray meets the container where F is inside.
+            if (f1 < 0.0 && kept(depth1)) {
                 push(depth1, side1);
                 ++itrace;
                 search.sign = -search.sign;
@@ -141,7 +145,7 @@ void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, Real& max
                 depth1 = acc * 5.0;
                 if (f(P + D * depth1) < 0) search.sign = -1;
             }
-            if (f(P + D * depth2) < 0.0) push(depth2, side2);
+            if (f(P + D * depth2) < 0.0 && kept(depth2)) push(depth2, side2);
         }
     }
     Real tmax = depth2 = std::min(depth2, kIsoBoundHuge);
@@ -159,7 +163,7 @@ void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, Real& max
     }
     for (; itrace < s.max_trace; ++itrace) {
         if (!search.find(tmin, tmax, maxg, s.closed)) break;
-        push(tmin, 0);
+        if (kept(tmin)) push(tmin, 0);
         tmin += acc * 5.0;
         if (tmax - tmin < acc) break;
         search.sign = -search.sign;
@@ -167,9 +171,8 @@ void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, Real& max
     stable_sort_by_depth(out, first);
 }
 
-}  // namespace
-
-void shape_hits(const Isosurface& s, const LocalRay& r, ShapeHits& out) {
+void clipped_hits(const Isosurface& s, const LocalRay& r, const IsosurfaceClip* clip,
+                  ShapeHits& out) {
     const size_t first = out.size();
     // With `evaluate` POV-Ray writes each search's final estimate back into the object
     // (the larger of the two), shared by all later rays of every thread, so its image
@@ -178,7 +181,7 @@ void shape_hits(const Isosurface& s, const LocalRay& r, ShapeHits& out) {
     // estimate, as POV-Ray's restarted ray starts from the written-back one.
     Real start = s.max_gradient;
     Real reached = start;
-    hits_once(s, r.origin, r.direction, reached, out);
+    hits_once(s, r.origin, r.direction, reached, clip, 0, out);
     if (r.csg_child) return;
     // Outside CSG POV-Ray looks past a hit (a shadow through a transparent isosurface)
     // with a ray restarted there, where povwall follows one ray: the restarts are made
@@ -189,7 +192,7 @@ void shape_hits(const Isosurface& s, const LocalRay& r, ShapeHits& out) {
         more.clear();
         start = std::max(start, reached);
         reached = start;
-        hits_once(s, r.origin + r.direction * t0, r.direction, reached, more);
+        hits_once(s, r.origin + r.direction * t0, r.direction, reached, clip, t0, more);
         bool progressed = false;
         for (const ShapeHit& h : more) {
             if (!(h.t > 0)) continue;
@@ -199,6 +202,17 @@ void shape_hits(const Isosurface& s, const LocalRay& r, ShapeHits& out) {
         }
         if (!progressed) break;
     }
+}
+
+}  // namespace
+
+void shape_hits(const Isosurface& s, const LocalRay& r, ShapeHits& out) {
+    clipped_hits(s, r, nullptr, out);
+}
+
+void shape_hits(const Isosurface& s, const LocalRay& r, const IsosurfaceClip& clip,
+                ShapeHits& out) {
+    clipped_hits(s, r, &clip, out);
 }
 
 Vector3 shape_normal(const Isosurface& s, const ShapeHit& h) {
