@@ -54,8 +54,8 @@ struct BuildOptions {
     /// Added to the budget above, so that small scenes are never cut short.
     uint64_t reference_slack = uint64_t(1) << 16;
     /// Deepest level kept as a dense array of cells, walked by stepping from cell to
-    /// cell (0 = off). Used where the tree is complete down to that level; see
-    /// Octree::top_level().
+    /// cell (0 = off). Used down to a level above which every node is inner or an empty
+    /// leaf; see Octree::build_dense_top and Octree::top_level().
     int dense_top_max = kDenseTopMax;
 };
 
