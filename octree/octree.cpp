@@ -249,6 +249,7 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
         all.push_back(i);
     }
     if (all.empty()) return;
+    const Bounds3 tight = bounds_;
     // Give every axis extent (flat scenes) so cells have volume and mid-planes separate.
     const Vector3 ext = bounds_.diagonal();
     const Real ext_max = std::max({ext.x, ext.y, ext.z});
@@ -280,6 +281,16 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
                                 bounds_.hi.z - bounds_.lo.z});
     for (int a = 0; a < 3; ++a)
         bounds_.hi[a] = std::max(bounds_.hi[a], bounds_.lo[a] + side / 4);
+    // The primitives' own box, padded as a flat axis of the root is, within the root:
+    // where it is much smaller than the root (a field of objects 100 wide and 1.5 high
+    // under a root 25 high), traversal walks only the rays' stretch inside it.
+    clip_ = false;
+    for (int a = 0; a < 3; ++a) {
+        clip_lo_[a] = std::max(bounds_.lo[a], tight.lo[a] - pad);
+        clip_hi_[a] = std::min(bounds_.hi[a], tight.hi[a] + pad);
+        const Real root_extent = bounds_.hi[a] - bounds_.lo[a];
+        if (clip_hi_[a] - clip_lo_[a] < root_extent * 0.75) clip_ = true;
+    }
     BuildOptions opt = options;
     opt.max_depth = std::clamp(opt.max_depth, 0, kMaxDepth);
     if (int(all.size()) < opt.flat_threshold) {
@@ -362,43 +373,71 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
 }
 
 void Octree::build_dense_top(int max_level) {
-    // The deepest level, up to max_level, above which every node is inner: each of its
-    // 8^K cells is then one node. Below two levels the descent it saves costs less than
-    // the stepping.
-    std::vector<uint32_t> level{0};
-    int k = 0;
-    while (k < max_level) {
-        std::vector<uint32_t> next;
+    // The deepest level K, up to max_level, whose 8^K cells can each stand for one node:
+    // above K every node is inner or an empty leaf (copied into each cell of K it
+    // covers, so the grid walk steps over it), and at least half of the cells of K that
+    // meet the clip box are real nodes of level K. Without the second rule a root with
+    // a few dense corners would be walked cell by cell across its empty middle, where
+    // the descent crosses it in a few large leaves. Below two levels the descent it
+    // saves costs less than the stepping.
+    struct Entry {
+        Node node;
+        uint32_t x, y, z;  // cell coordinates at the current level
+        bool real;         // a node of this level, not an empty leaf copied down
+    };
+    std::vector<Entry> level{{nodes_[0], 0, 0, 0, true}}, best;
+    int best_k = 0;
+    const Real root_lo[3] = {bounds_.lo.x, bounds_.lo.y, bounds_.lo.z};
+    const Real root_ext[3] = {bounds_.hi.x - bounds_.lo.x, bounds_.hi.y - bounds_.lo.y,
+                              bounds_.hi.z - bounds_.lo.z};
+    for (int k = 1; k <= max_level; ++k) {
+        std::vector<Entry> next;
         next.reserve(level.size() * 8);
-        bool complete = true;
-        for (uint32_t i : level) {
-            if (nodes_[i].count != kInner) {
-                complete = false;
+        bool admissible = true;
+        for (const Entry& e : level) {
+            if (e.node.count != kInner && e.node.count != 0) {
+                admissible = false;
                 break;
             }
-            for (uint32_t c = 0; c < 8; ++c) next.push_back(nodes_[i].first + c);
+            for (uint32_t c = 0; c < 8; ++c) {
+                const bool inner = e.node.count == kInner;
+                next.push_back({inner ? nodes_[e.node.first + c] : e.node,
+                                e.x << 1 | (c & 1u), e.y << 1 | (c >> 1 & 1u),
+                                e.z << 1 | (c >> 2 & 1u), inner});
+            }
         }
-        if (!complete) break;
+        if (!admissible) break;
         level.swap(next);
-        ++k;
-    }
-    if (k < 2) return;
-    // `level` lists the cells of level k in the order of descent (child index
-    // x | y<<1 | z<<2 per level, root first); the cell's coordinates interleave those
-    // bits.
-    const uint32_t side = 1u << k;
-    top_.assign(size_t(side) * side * side, Node{});
-    for (size_t i = 0; i < level.size(); ++i) {
-        uint32_t x = 0, y = 0, z = 0;
-        for (int l = 0; l < k; ++l) {
-            const uint32_t c = uint32_t(i >> (3 * (k - 1 - l))) & 7u;
-            x = x << 1 | (c & 1u);
-            y = y << 1 | (c >> 1 & 1u);
-            z = z << 1 | (c >> 2 & 1u);
+        // Cells of level k meeting the clip box, and how many of them are real nodes.
+        const Real cells = Real(1u << k);
+        uint32_t lo_cell[3], hi_cell[3];
+        for (int a = 0; a < 3; ++a) {
+            auto cell_of = [&](Real v) {
+                const Real r = std::floor((v - root_lo[a]) / root_ext[a] * cells);
+                return uint32_t(std::clamp(r, Real(0), cells - 1));
+            };
+            lo_cell[a] = cell_of(clip_lo_[a]);
+            hi_cell[a] = cell_of(clip_hi_[a]);
         }
-        top_[x | y << k | z << (2 * k)] = nodes_[level[i]];
+        size_t meeting = 0, real = 0;
+        for (const Entry& e : level) {
+            const uint32_t v[3] = {e.x, e.y, e.z};
+            bool meets = true;
+            for (int a = 0; a < 3; ++a)
+                meets = meets && v[a] >= lo_cell[a] && v[a] <= hi_cell[a];
+            meeting += meets;
+            real += meets && e.real;
+        }
+        if (k >= 2 && 2 * real >= meeting) {
+            best_k = k;
+            best = level;
+        }
     }
-    top_level_ = k;
+    if (best_k < 2) return;
+    const uint32_t side = 1u << best_k;
+    top_.assign(size_t(side) * side * side, Node{});
+    for (const Entry& e : best) top_[e.x | e.y << best_k | e.z << (2 * best_k)] = e.node;
+    top_level_ = best_k;
 }
 
 }  // namespace povwall::octree

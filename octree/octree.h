@@ -54,8 +54,8 @@ struct BuildOptions {
     /// Added to the budget above, so that small scenes are never cut short.
     uint64_t reference_slack = uint64_t(1) << 16;
     /// Deepest level kept as a dense array of cells, walked by stepping from cell to
-    /// cell (0 = off). Used where the tree is complete down to that level; see
-    /// Octree::top_level().
+    /// cell (0 = off). Used down to a level above which every node is inner or an empty
+    /// leaf; see Octree::build_dense_top and Octree::top_level().
     int dense_top_max = kDenseTopMax;
 };
 
@@ -242,6 +242,10 @@ class Octree {
     int top_level_ = 0;
     std::vector<uint32_t> ids_;
     Bounds3 bounds_;
+    // The primitives' own box, padded (Octree::build): traversal walks only the part of
+    // a ray inside it. clip_: it is smaller than the root on some axis.
+    Real clip_lo_[3] = {}, clip_hi_[3] = {};
+    bool clip_ = false;
     size_t primitive_count_ = 0;
     BuildStats stats_;
 };
@@ -297,6 +301,37 @@ void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&
         if (n.count) visit(&ids_[n.first], size_t(n.count), t_max, enter);
         return;
     }
+    // The walk covers only the stretch of the ray inside the primitives' own box: the
+    // root can be far larger (no axis shorter than a quarter of the longest), and rays
+    // would walk its empty cells to its far side. Every crossing of a primitive lies in
+    // its bounds, so in that box; the margins (relative 1e-12 of the distances, and the
+    // box's own padding) cover the rounding of these parameters. The caller's t_max
+    // still gets what visit leaves in it.
+    Real walk_min = t_min, clip_hi = kInfinity;
+    if (clip_) {
+        Real near = -kInfinity, far = kInfinity;
+        for (int a = 0; a < 3; ++a) {
+            if (parallel[a]) {
+                if (o[a] < clip_lo_[a] || o[a] > clip_hi_[a]) return;
+                continue;
+            }
+            const Real ta = (clip_lo_[a] - o[a]) * inv[a],
+                       tb = (clip_hi_[a] - o[a]) * inv[a];
+            near = std::max(near, (mirror >> a & 1u) ? tb : ta);
+            far = std::min(far, (mirror >> a & 1u) ? ta : tb);
+        }
+        near -= std::fabs(near) * 1e-12;
+        far += std::fabs(far) * 1e-12;
+        if (!(near <= far) || far < t_min || near > t_max) return;
+        walk_min = std::max(t_min, near);
+        clip_hi = far;
+    }
+    Real walk_max = std::min(t_max, clip_hi);
+    auto clipped_visit = [&](const uint32_t* ids, size_t n, Real& walk_t, Real entry) {
+        const bool stop = visit(ids, n, t_max, entry);
+        walk_t = std::min(t_max, clip_hi);
+        return stop;
+    };
     const bool large = nodes_.size() > kPrefetchNodes;
     // Mid-plane parameters of the whole tree, computed below from t0/t1 alone; an
     // infinite one (a component just above the parallel cut) takes the geometric walk.
@@ -305,9 +340,11 @@ void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&
                         kInfinity;
     if (top_level_ > 0 && !any_parallel && finite) {
         if (large) {
-            walk_top<true>(o, inv, mirror, t0, t1, t_min, t_max, visit, prefetch_leaf);
+            walk_top<true>(o, inv, mirror, t0, t1, walk_min, walk_max, clipped_visit,
+                           prefetch_leaf);
         } else {
-            walk_top<false>(o, inv, mirror, t0, t1, t_min, t_max, visit, prefetch_leaf);
+            walk_top<false>(o, inv, mirror, t0, t1, walk_min, walk_max, clipped_visit,
+                            prefetch_leaf);
         }
         return;
     }
@@ -317,18 +354,18 @@ void Octree::traverse_with_entry(const Ray& ray, Real t_min, Real& t_max, Visit&
     const uint32_t first = nodes_[0].first;
     if (any_parallel) {
         if (large) {
-            walk<true, true>(o, inv, parallel, mirror, first, rt0, rt1, &root, t_min,
-                             t_max, visit, prefetch_leaf);
+            walk<true, true>(o, inv, parallel, mirror, first, rt0, rt1, &root, walk_min,
+                             walk_max, clipped_visit, prefetch_leaf);
         } else {
-            walk<true, false>(o, inv, parallel, mirror, first, rt0, rt1, &root, t_min,
-                              t_max, visit, prefetch_leaf);
+            walk<true, false>(o, inv, parallel, mirror, first, rt0, rt1, &root, walk_min,
+                              walk_max, clipped_visit, prefetch_leaf);
         }
     } else if (large) {
-        walk<false, true>(o, inv, parallel, mirror, first, rt0, rt1, &root, t_min, t_max,
-                          visit, prefetch_leaf);
+        walk<false, true>(o, inv, parallel, mirror, first, rt0, rt1, &root, walk_min,
+                          walk_max, clipped_visit, prefetch_leaf);
     } else {
-        walk<false, false>(o, inv, parallel, mirror, first, rt0, rt1, &root, t_min, t_max,
-                           visit, prefetch_leaf);
+        walk<false, false>(o, inv, parallel, mirror, first, rt0, rt1, &root, walk_min,
+                           walk_max, clipped_visit, prefetch_leaf);
     }
 }
 

@@ -425,6 +425,64 @@ TEST(Octree, DenseTopVisitsTheLeavesOfTheWalkFromTheRoot) {
     EXPECT_EQ(build_spheres(cluster).top_level(), 0);
 }
 
+// A field 100 wide and 1.5 high under a root 25 high (no axis shorter than a quarter):
+// the upper cells are empty leaves, copied into the dense top, and rays walk only their
+// stretch inside the spheres' own box. Closest hits, from outside and from inside
+// (t_min > 0), and with an axis-parallel direction, stay the brute force's.
+TEST(Octree, FlatFieldWalksInsideThePrimitivesBox) {
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<Real> across(0, 100), up(0.3, 1.2), rad(0.1, 0.5);
+    std::vector<Sphere> field;
+    for (int i = 0; i < 20000; ++i)
+        field.push_back({{across(rng), up(rng), across(rng)}, rad(rng)});
+    const Octree tree = build_spheres(field);
+    EXPECT_GE(tree.bounds().diagonal().y, 24.0);
+    EXPECT_GE(tree.top_level(), 3);
+    Mailbox mb;
+    mb.resize(field.size());
+    std::uniform_real_distribution<Real> u(-1, 1), high(-5, 40), tm(0, 30);
+    int hits = 0, tests = 0, in_box_visits = 0, visits = 0;
+    bool ordered = true;
+    for (int n = 0; n < 10000; ++n) {
+        Ray ray{{across(rng), high(rng), across(rng)}, {u(rng), u(rng), u(rng)}};
+        if (n % 7 == 0) ray.direction = {u(rng), 0, u(rng)};  // level with the field
+        if (n % 11 == 0) ray.direction = {0, n % 2 ? 1.0 : -1.0, 0};
+        const Real t_min = n % 3 == 0 ? tm(rng) : 0;
+        Real brute = kInfinity;
+        for (const auto& s : field) {
+            const Real t =
+                hit_sphere(s, {ray.origin + ray.direction * t_min, ray.direction});
+            if (t < kInfinity) brute = std::min(brute, t + t_min);
+        }
+        Real best = kInfinity;
+        Real last_entry = -kInfinity;
+        mb.next_ray();
+        tree.traverse_with_entry(
+            ray, t_min, best,
+            [&](const uint32_t* ids, size_t k, Real& t_max, Real entry) {
+                if (entry < last_entry || entry > t_max) ordered = false;
+                last_entry = entry;
+                ++visits;
+                for (size_t i = 0; i < k; ++i) {
+                    if (!mb.first_visit(ids[i])) continue;
+                    ++tests;
+                    const Sphere& s = field[ids[i]];
+                    const Real t = hit_sphere(
+                        s, {ray.origin + ray.direction * t_min, ray.direction});
+                    if (t < kInfinity) t_max = std::min(t_max, t + t_min);
+                }
+                in_box_visits += k > 0;
+                return false;
+            });
+        ASSERT_EQ(best, brute) << "ray " << n;
+        hits += best < kInfinity;
+    }
+    EXPECT_TRUE(ordered);
+    EXPECT_GT(hits, 1000);
+    EXPECT_EQ(in_box_visits, visits);  // empty leaves are never handed out
+    EXPECT_LT(tests / 10000, 100);
+}
+
 TEST(Octree, NanAndInfiniteRaysVisitNothing) {
     std::mt19937 rng(3);
     std::vector<Sphere> spheres = random_spheres(500, 10, rng);
