@@ -588,10 +588,10 @@ TEST(Tcp, PhotonsInEveryModeEqualOneProcess) {
 }
 
 // Radiosity (trace/radiosity/): the pretrace passes read the cache frozen after the pass
-// before and merge their blocks' entries in block order, the final render only reads it,
-// and each screen-mode worker runs the same pretrace: every thread count and every
-// screen-mode split gives the one-thread image, anti-aliased too. Space subdivision is
-// refused with a located `unsupported:`.
+// before and merge their block chains' entries in chain order, the final render only
+// reads it, and each screen-mode worker runs the same pretrace: every thread count and
+// every screen-mode split gives the one-thread image, anti-aliased too. Space subdivision
+// is refused with a located `unsupported:`.
 TEST(Tcp, RadiosityInEveryModeEqualOneProcess) {
     for (const char* name : {"radiosity_cornell", "radiosity_emission"}) {
         SCOPED_TRACE(name);

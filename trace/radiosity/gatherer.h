@@ -7,8 +7,8 @@
 // One gatherer per tracer (thread). What it reads and where it files depends on the
 // phase (docs/radiosity.md):
 //   - pretrace pass p: reads the cache of the passes before p (frozen) and the entries
-//     its own render block made in pass p so far; files into the block's list, which is
-//     merged into the cache in block order once the pass is over;
+//     its chain of render blocks made in pass p so far; files into the chain's list,
+//     which is merged into the cache in chain order once the pass is over;
 //   - final render: reads the finished cache and the entries the render block being
 //     traced made so far (its pixels in their fixed order), files into the block's list
 //     only, so that every pixel depends only on the cache and its block, whatever
@@ -52,8 +52,8 @@ class RadiosityGatherer {
     // `cache`: the cache read (null: empty); `pass`: the pretrace pass, or kFinalPass.
     RadiosityGatherer(Tracer& tracer, const radiosity::RadiosityFrame& frame,
                       const radiosity::IrradianceCache* cache, int pass);
-    // Pretrace: a new render block starts; its entries go to `block` (cleared by the
-    // caller, read by the lookups too).
+    // Pretrace: a new render block starts; its entries go to `block` (its chain's list,
+    // read by the lookups too).
     void begin_block(radiosity::IrradianceCache* block) {
         block_ = block;
         restart_directions();

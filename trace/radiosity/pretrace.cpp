@@ -43,6 +43,12 @@ std::vector<double> pretrace_sizes(const RadiositySettings& s, int width, int he
     return sizes;
 }
 
+size_t pretrace_groups(size_t pass, size_t blocks) {
+    if (blocks == 0) return 1;
+    const size_t doubled = pass < 30 ? size_t(1) << pass : blocks;
+    return std::min(doubled, blocks);
+}
+
 std::shared_ptr<const RadiosityRender> run_pretrace(const PreparedScene& prepared,
                                                     const CameraInteriors& interiors,
                                                     const RenderSettings& settings,
@@ -54,15 +60,18 @@ std::shared_ptr<const RadiosityRender> run_pretrace(const PreparedScene& prepare
     const std::vector<PixelBlock> blocks =
         render_blocks(render_area(settings), settings.block_size);
     if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
-    threads = std::max(1, std::min<int>(threads, int(blocks.size())));
     const std::vector<double> sizes =
         pretrace_sizes(*scene.settings.radiosity, settings.width, settings.height);
-    std::vector<IrradianceCache> block_entries(
-        blocks.size(), IrradianceCache(render->frame.address_factors()));
     std::vector<uint64_t> gathers(size_t(threads), 0);
     for (size_t pass = 0; pass < sizes.size(); ++pass) {
         const double size = sizes[pass];
         const int pass_number = int(pass) + 1;
+        // POV-Ray's high-reproducibility pretrace: the blocks are dealt to `groups`
+        // chains (block k to chain k mod groups), each traced in block order by one
+        // thread, reading the entries its own chain made in this pass.
+        const size_t groups = pretrace_groups(pass, blocks.size());
+        std::vector<IrradianceCache> group_entries(
+            groups, IrradianceCache(render->frame.address_factors()));
         std::atomic<size_t> next{0};
         auto work = [&](int ti) {
             Tracer tracer(prepared);
@@ -73,33 +82,36 @@ std::shared_ptr<const RadiosityRender> run_pretrace(const PreparedScene& prepare
             float rgbt[4];
             const double jitter = std::min(1.0, size / 2);
             const double offset = (size - 1) / 2;
-            for (size_t k; (k = next.fetch_add(1)) < blocks.size();) {
-                const PixelBlock& b = blocks[k];
-                block_entries[k].clear();
-                gatherer.begin_block(&block_entries[k]);
-                // POV-Ray's grid: multiples of the step size from the block's first
-                // pixel on, each jittered by up to half a step (at most a pixel).
-                const double x0 = std::ceil((double(b.x0) - 0.5) / size) * size;
-                const double y0 = std::ceil((double(b.y0) - 0.5) / size) * size;
-                for (double y = y0; y < double(b.y1); y += size) {
-                    if (y < double(b.y0)) continue;
-                    for (double x = x0; x < double(b.x1); x += size) {
-                        if (x < double(b.x0)) continue;
-                        samples.sample(
-                            x + offset + jitter * jitter_value(pass_number, x, y, 0),
-                            y + offset + jitter * jitter_value(pass_number, x, y, 1),
-                            rgbt);
+            for (size_t g; (g = next.fetch_add(1)) < groups;) {
+                for (size_t k = g; k < blocks.size(); k += groups) {
+                    const PixelBlock& b = blocks[k];
+                    gatherer.begin_block(&group_entries[g]);
+                    // POV-Ray's grid: multiples of the step size from the block's
+                    // first pixel on, each jittered by up to half a step (at most a
+                    // pixel).
+                    const double x0 = std::ceil((double(b.x0) - 0.5) / size) * size;
+                    const double y0 = std::ceil((double(b.y0) - 0.5) / size) * size;
+                    for (double y = y0; y < double(b.y1); y += size) {
+                        if (y < double(b.y0)) continue;
+                        for (double x = x0; x < double(b.x1); x += size) {
+                            if (x < double(b.x0)) continue;
+                            samples.sample(
+                                x + offset + jitter * jitter_value(pass_number, x, y, 0),
+                                y + offset + jitter * jitter_value(pass_number, x, y, 1),
+                                rgbt);
+                        }
                     }
+                    gatherer.begin_block(nullptr);
                 }
-                gatherer.begin_block(nullptr);
             }
             gathers[size_t(ti)] += gatherer.gathers();
         };
+        const int pass_threads = std::max(1, std::min(threads, int(groups)));
         std::vector<std::thread> pool;
-        for (int i = 1; i < threads; ++i) pool.emplace_back(work, i);
+        for (int i = 1; i < pass_threads; ++i) pool.emplace_back(work, i);
         work(0);
         for (auto& t : pool) t.join();
-        for (const IrradianceCache& entries : block_entries)
+        for (const IrradianceCache& entries : group_entries)
             for (const CacheEntry& e : entries.entries()) render->cache.insert(e);
         ++render->passes;
     }

@@ -2,12 +2,15 @@
 // traced on coarser grids, from pretrace_start of its larger side down to pretrace_end
 // (halving each pass), which fills the irradiance cache the final render reads.
 //
-// Deterministic design (docs/radiosity.md): each pass hands out POV-Ray's render blocks
-// to the threads; a block reads the cache of the passes before (frozen during the pass)
-// and its own entries of this pass; once the pass is over, the blocks' entries are added
-// to the cache in block order. The cache after each pass is therefore the same for any
-// number of threads, and every process that runs the pretrace (screen-mode workers
-// included) builds the same cache.
+// Deterministic design (docs/radiosity.md), POV-Ray's high-reproducibility pretrace:
+// pass p (from 0) deals the render blocks to 2^p chains (block k to chain k mod 2^p);
+// one thread traces a chain's blocks in order, and a block reads the cache of the passes
+// before (frozen during the pass) plus the entries its chain made in this pass. Once
+// the pass is over, the chains' entries are added to the cache in chain order. The cache
+// after each pass is therefore the same for any number of threads, and every process
+// that runs the pretrace (screen-mode workers included) builds the same cache. (Reading
+// only the block's own entries of the pass, as before, made every block gather its own
+// deeper-bounce samples again: 7x the depth-1 gathers of POV-Ray on the Cornell box.)
 #pragma once
 
 #include <memory>
@@ -36,6 +39,11 @@ struct RadiosityRender {
 
 // POV-Ray's pretrace step sizes in pixels, largest first (at least 1 pixel).
 std::vector<double> pretrace_sizes(const RadiositySettings& s, int width, int height);
+
+// How many chains of render blocks pretrace pass `pass` (from 0) deals its `blocks`
+// blocks to: 1, then doubling per pass (POV-Ray's high-reproducibility pretrace), at
+// most one per block. Block k goes to chain k mod groups.
+size_t pretrace_groups(size_t pass, size_t blocks);
 
 // Runs the pretrace of `prepared` (whose scene has radiosity on) with `threads` threads
 // (0: every core). Null when the scene has no radiosity or the quality turns it off.
