@@ -1,9 +1,9 @@
 // Dispersion's wavelength bands (trace/spectral.h) against POV-Ray 3.7's numbers.
+#include "trace/spectral.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "trace/spectral.h"
 
 namespace povwall::trace {
 namespace {
@@ -36,10 +36,10 @@ TEST(Spectral, HuesAreTheStepsOfPovRaysHueIntegral) {
         EXPECT_NEAR(h.g, g * 70, 1e-4) << band;
         EXPECT_NEAR(h.b, b * 70, 1e-4) << band;
     };
-    expect_hue(0, 0.0029f - 0.0009f, 0, 0.0113f - 0.0038f);        // 380-385 nm
-    expect_hue(12, 0.0404f - 0.0404f, 0, 0.3106f - 0.2753f);       // 440-445 nm
-    expect_hue(43, 0.1215f - 0.0979f, 0.6340f - 0.5937f, 0);       // 595-600 nm
-    expect_hue(69, 0.9947f - 0.9849f, 0, 0);                       // 725-730 nm
+    expect_hue(0, 0.0029f - 0.0009f, 0, 0.0113f - 0.0038f);   // 380-385 nm
+    expect_hue(12, 0.0404f - 0.0404f, 0, 0.3106f - 0.2753f);  // 440-445 nm
+    expect_hue(43, 0.1215f - 0.0979f, 0.6340f - 0.5937f, 0);  // 595-600 nm
+    expect_hue(69, 0.9947f - 0.9849f, 0, 0);                  // 725-730 nm
 }
 
 // The hues of any split average to POV-Ray's integral over 380-730 nm (nearly white).
