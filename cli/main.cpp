@@ -91,9 +91,9 @@ int render_main(const std::vector<std::string>& args) {
         return run_render(o);
     }
     CLI::App app{"Render a POV-Ray scene", "povwall render"};
-    std::string scene;
+    std::string scene, output;
     app.add_option("SCENE", scene, "scene file (.pov)");
-    app.add_option("-o,--output", o.output, "output image (format from the extension)");
+    app.add_option("-o,--output", output, "output image (format from the extension)");
     app.add_option("-W,--width", o.width, "image width")->capture_default_str();
     app.add_option("-H,--height", o.height, "image height")->capture_default_str();
     app.add_option("-L,--library-path", o.library_paths, "include folder (repeatable)");
@@ -199,7 +199,10 @@ int render_main(const std::vector<std::string>& args) {
         else if (!apply_pov_switch(s, o))
             throw UsageError("unknown switch '" + s + "'");
     }
+    // The named options win over the switches and .ini files (an INI's empty
+    // Output_File_Name= must not undo `-o`).
     if (!scene.empty()) o.scene = scene;
+    if (!output.empty()) o.output = output;
     o.recover = !no_recover;
     if (max_trace_level) o.max_trace_level = max_trace_level;
     if (adc_bailout) o.adc_bailout = adc_bailout;

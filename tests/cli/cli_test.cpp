@@ -200,6 +200,13 @@ TEST(Cli, IniFileSetsSceneSizeAndFormat) {
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(povwall::output::read_image((scratch() / "from_ini.tga").string()).width,
               3);
+    // `-o` wins over the INI's Output_File_Name, in any order (benchmark.ini has an
+    // empty one).
+    fs::path named = scratch() / "named_out.tga";
+    fs::remove(named);
+    r = run("render -o " + named.string() + " " + ini.string() + " -GA");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(povwall::output::read_image(named.string()).width, 9);
     // An unknown key stops, as in POV-Ray, with its file and line.
     fs::path bad = write_scene("bad.ini", "Width=9\nFrobnicate=1\n");
     r = run(bad.string());
