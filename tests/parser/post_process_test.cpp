@@ -253,10 +253,19 @@ TEST(Keywords, RefusedOrCheckedWhereTheyStand) {
               "test.pov:1:43: error: unsupported: area_illumination\n"
               "light_source { 0, 1 area_light x, y, 2, 2 area_illumination }\n"
               "                                          ^~~~~~~~~~~~~~~~~");
-    EXPECT_EQ(error_of("sphere { 0, 1 interior { dispersion 1.02 } }"),
-              "test.pov:1:37: error: unsupported: dispersion\n"
-              "sphere { 0, 1 interior { dispersion 1.02 } }\n"
-              "                                    ^~~~");
+    // Dispersion renders; without an `ior` it is dropped (POV-Ray takes the
+    // atmosphere's index and dispersion), with one, or with a finish's old `ior`, kept.
+    {
+        Scene s = parse("sphere { 0, 1 interior { dispersion 1.02 } }"
+                        "sphere { 0, 1 interior { dispersion 1.02 ior 1.5 } }"
+                        "sphere { 0, 1 interior { ior 1.5 dispersion 1.02 } "
+                        "  finish { ior 1.3 } }");
+        ASSERT_EQ(s.objects.size(), 3u);
+        EXPECT_EQ(s.objects[0].interior->dispersion, 1.0f);
+        EXPECT_EQ(s.objects[1].interior->dispersion, 1.02f);
+        EXPECT_EQ(s.objects[2].interior->dispersion, 1.0f);  // the finish's ior wins
+        EXPECT_EQ(s.objects[2].interior->ior, 1.3f);
+    }
     // Off, they change nothing and are accepted.
     EXPECT_EQ(error_of("light_source { 0, 1 area_light x, y, 2, 2 area_illumination off }"
                        "sphere { 0, 1 interior { dispersion 1 } no_radiosity }"
