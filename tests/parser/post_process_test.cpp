@@ -254,12 +254,14 @@ TEST(Keywords, RefusedOrCheckedWhereTheyStand) {
               "light_source { 0, 1 area_light x, y, 2, 2 area_illumination }\n"
               "                                          ^~~~~~~~~~~~~~~~~");
     // Dispersion renders; without an `ior` it is dropped (POV-Ray takes the
-    // atmosphere's index and dispersion), with one, or with a finish's old `ior`, kept.
+    // atmosphere's index and dispersion), with one kept; a finish's old `ior` replaces
+    // the interior's index and drops it.
     {
-        Scene s = parse("sphere { 0, 1 interior { dispersion 1.02 } }"
-                        "sphere { 0, 1 interior { dispersion 1.02 ior 1.5 } }"
-                        "sphere { 0, 1 interior { ior 1.5 dispersion 1.02 } "
-                        "  finish { ior 1.3 } }");
+        Scene s = parse(
+            "sphere { 0, 1 interior { dispersion 1.02 } }"
+            "sphere { 0, 1 interior { dispersion 1.02 ior 1.5 } }"
+            "sphere { 0, 1 interior { ior 1.5 dispersion 1.02 } "
+            "  finish { ior 1.3 } }");
         ASSERT_EQ(s.objects.size(), 3u);
         EXPECT_EQ(s.objects[0].interior->dispersion, 1.0f);
         EXPECT_EQ(s.objects[1].interior->dispersion, 1.02f);
