@@ -50,8 +50,8 @@ float dispersion_of(const Material* m) {
     return m && m->interior ? m->interior->dispersion : 1.0f;
 }
 int dispersion_samples_of(const Material* m) {
-    return m && m->interior ? m->interior->dispersion_samples
-                            : Interior().dispersion_samples;
+    static const int kDefault = Interior().dispersion_samples;
+    return m && m->interior ? m->interior->dispersion_samples : kDefault;
 }
 
 // The index ratio (transmitted over incident) POV-Ray's fresnel reflection uses at a

@@ -13,14 +13,14 @@ constexpr double kCentre = (kViolet + kRed) / 2;
 
 // The hue curve of POV-Ray before 3.7 (an RGB fit to colour-matching functions, `hc`
 // running from 0.03 at the violet end to 0.964 at the red end), over 372.5-737.5 nm.
-Rgb hue_curve(double wavelength) {
+std::array<double, 3> hue_curve(double wavelength) {
     const double hc = 0.964 - 0.934 * (1 - (wavelength - 372.5) / 365);
     const auto sq = [](double x) { return x * x; };
     const double b = std::max(0.0, 0.98 * (1 - sq(4 * (hc - 0.28))));
     const double g = std::max(0.0, 0.97 * (1.1 - sq(4.5 * (hc - 0.57))));
     double r = 1.15 - sq(5 * (hc - 0.75));
     if (r < 0) r = std::max(0.0, 0.12 - sq(4 * (hc - 0.12)));  // violet's red hump
-    return Rgb(float(r), float(g), float(b));
+    return {r, g, b};
 }
 
 // POV-Ray 3.7 weights bands by the integral of that curve, tabulated every 5 nm from 375
@@ -36,8 +36,9 @@ struct HueIntegral {
         double sum[3] = {0, 0, 0};
         for (int k = 0; k < kTableSize; ++k) {
             for (int c = 0; c < 3; ++c) entry[size_t(k)][size_t(c)] = sum[c];
-            const Rgb v = hue_curve(kTableBase + kTableStep * (k + 0.5));
-            sum[0] += v.r, sum[1] += v.g, sum[2] += v.b;
+            const std::array<double, 3> v =
+                hue_curve(kTableBase + kTableStep * (k + 0.5));
+            for (int c = 0; c < 3; ++c) sum[c] += v[size_t(c)];
         }
         for (auto& e : entry)
             for (int c = 0; c < 3; ++c)

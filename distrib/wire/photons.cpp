@@ -57,9 +57,9 @@ bool read_map_fields(const json& j, size_t& count, double& min_radius,
 // An int field of at least `min`; false when missing, of another type or out of range.
 bool read_int(const json& j, const char* key, int min, int& out) {
     if (!j.contains(key) || !j[key].is_number_integer()) return false;
-    const int64_t v = j[key].get<int64_t>();
     if (j[key].is_number_unsigned() && j[key].get<uint64_t>() > uint64_t(INT32_MAX))
         return false;
+    const int64_t v = j[key].get<int64_t>();
     if (v < min || v > INT32_MAX) return false;
     out = int(v);
     return true;
@@ -125,7 +125,6 @@ bool photon_map_from_message(const json& message, std::vector<trace::Photon>&& p
         return false;
     if (surface + media != photons.size()) return false;
     PhotonSettings s;
-    uint32_t tolerance_bits = 0;
     if (!read_int(message, "gather_max", 1, s.gather_max) ||
         !read_int(message, "gather_min", 0, s.gather_min) ||
         s.gather_min > s.gather_max ||
@@ -134,8 +133,8 @@ bool photon_map_from_message(const json& message, std::vector<trace::Photon>&& p
         !message["expand_tolerance"].is_number_unsigned() ||
         message["expand_tolerance"].get<uint64_t>() > UINT32_MAX)
         return false;
-    tolerance_bits = message["expand_tolerance"].get<uint32_t>();
-    s.expand_tolerance = std::bit_cast<float>(tolerance_bits);
+    s.expand_tolerance =
+        std::bit_cast<float>(message["expand_tolerance"].get<uint32_t>());
     // The parser's range (parser/photons.cpp): what it cannot produce is not a map.
     if (!std::isfinite(s.expand_tolerance) || s.expand_tolerance < 0) return false;
     std::shared_ptr<trace::PhotonMap> media_map;
