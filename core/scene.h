@@ -804,6 +804,9 @@ struct Csg {
     // Object::light_group), and with global_lights off the scene's other lights do not.
     bool light_group = false;
     bool global_lights = false;
+    // intersection/difference only: a surface without a texture of its own takes the
+    // textures of the other children it lies inside (POV-Ray's CUTAWAY_TEXTURES_FLAG).
+    bool cutaway_textures = false;
     // The CSG's box as POV-Ray keeps it (lower-left corner and lengths in single
     // precision): joined from the children's boxes when the CSG is closed (a text: from
     // its glyphs' after layout), then moved as a box by every transform, never rebuilt
@@ -893,6 +896,9 @@ struct AreaLight {
     int size1 = 1, size2 = 1;
     int adaptive = 100;  // POV-Ray's default when `adaptive` is absent: the full grid
     bool jitter = false, circular = false, orient = false;
+    // Each sample lights the surface from its own position (diffuse and highlights), not
+    // only its shadow ray: POV-Ray 3.7's area_illumination.
+    bool illumination = false;
 };
 
 struct Light {
