@@ -1,8 +1,5 @@
 // Ray-primitive intersections through the prepared scene: exact distances and normals,
 // transforms, grazing rays, rays starting inside, POV-Ray's minimum depths.
-#include "trace/roots.h"
-#include "trace/shapes/shape.h"
-
 #include <gtest/gtest.h>
 
 #include <array>
@@ -11,6 +8,8 @@
 
 #include "tests/trace/scene_builder.h"
 #include "trace/prepared_scene.h"
+#include "trace/roots.h"
+#include "trace/shapes/shape.h"
 
 namespace povwall::trace {
 namespace {
@@ -265,6 +264,38 @@ TEST(Intersect, ClosestOfManyThroughTheOctree) {
     EXPECT_DOUBLE_EQ(h.t, 9.75);
     ASSERT_TRUE(shoot(s, {{0, 0, 300}, {0, 0, -1}}, h));
     EXPECT_DOUBLE_EQ(h.t, 300 - 209.25);
+}
+
+TEST(Intersect, AGiantSkySphereStaysOutOfTheOctreeAndIsStillHit) {
+    // 4,096 small spheres in a 16-unit cube inside a sky sphere of radius 1e6: the tree
+    // spans the small ones only (with the sky in it, the depth limit left them in leaves
+    // of hundreds), and the sky is hit from inside and casts shadows.
+    Scene s;
+    s.objects.push_back(object(Sphere{{0, 0, 0}, 1e6}));
+    for (int i = 0; i < 16; ++i)
+        for (int j = 0; j < 16; ++j)
+            for (int k = 0; k < 16; ++k)
+                s.objects.push_back(object(Sphere{{Real(i), Real(j), Real(k)}, 0.2}));
+    PreparedScene prepared(s);
+    const Bounds3& root = prepared.tree().bounds();
+    EXPECT_LT(root.hi.x - root.lo.x, 20);
+    RayContext ctx;
+    prepared.init_context(ctx);
+    Hit h;
+    // Along a row of small spheres: the first one, after a few tests.
+    ASSERT_TRUE(prepared.closest_hit({{-1, 5, 5}, {1, 0, 0}}, 0, kInfinity,
+                                     RayUse::Camera, h, ctx));
+    EXPECT_DOUBLE_EQ(h.t, 0.8);
+    EXPECT_LT(ctx.tests, 40u);
+    // Between the rows, out to the sky.
+    ASSERT_TRUE(prepared.closest_hit({{5.5, 5.5, 5.5}, {0, 0, 1}}, 0, kInfinity,
+                                     RayUse::Camera, h, ctx));
+    EXPECT_NEAR(h.t, std::sqrt(1e12 - 2 * 5.5 * 5.5) - 5.5, 1e-6);
+    bool transparent = false;
+    EXPECT_TRUE(prepared.opaque_blocker({{5.5, 5.5, 5.5}, {0, 0, 1}}, 1e-3, 2e6,
+                                        transparent, ctx, -1));
+    EXPECT_FALSE(prepared.opaque_blocker({{5.5, 5.5, 5.5}, {0, 0, 1}}, 1e-3, 1e5,
+                                         transparent, ctx, -1));
 }
 
 TEST(Intersect, CylinderSideAndCaps) {
