@@ -328,6 +328,8 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
                 child.shadow_state.inside = c.trace.interiors;
                 child.shadow_state.light = c.light;
                 child.shadow_state.photon_caustics = c.photon_caustics;
+                child.shadow_state.volume =
+                    trace::sees_volume(box.scene->scene(), c.trace);
             }
             child.pixel = ray.pixel;
             if (parents_) {

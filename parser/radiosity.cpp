@@ -99,7 +99,6 @@ void Interpreter::parse_radiosity_settings(const Token& at) {
             r.normal = on_off();
         } else if (w == "media") {
             r.media = on_off();
-            if (r.media) unsupported(t, "radiosity media on");
         } else if (w == "subsurface") {
             r.subsurface = on_off();
             if (r.subsurface) unsupported(t, "radiosity subsurface on");
@@ -144,23 +143,13 @@ void Interpreter::parse_object_radiosity(Object& obj) {
     }
 }
 
-// What the radiosity code does not do yet, once the scene is known: media (POV-Ray's
-// sample rays skip media unless `media on`, and scattering media would need the cache
-// at their samples).
+// The radiosity block's checks that need the whole scene.
 void Interpreter::check_radiosity() {
     if (!scene_.settings.radiosity) return;
     if (scene_.settings.radiosity->pretrace_end >
         scene_.settings.radiosity->pretrace_start)
         error(*radiosity_at_,
               "radiosity pretrace end must be smaller than or equal to pretrace start");
-    bool has_media = !scene_.atmosphere_media.empty();
-    auto visit = [&](auto& self, const Object& o) -> void {
-        if (o.interior && !o.interior->media.empty()) has_media = true;
-        if (const Csg* csg = std::get_if<Csg>(&o.shape))
-            for (const Object& c : csg->children) self(self, c);
-    };
-    for (const Object& o : scene_.objects) visit(visit, o);
-    if (has_media) unsupported(*radiosity_at_, "radiosity in a scene with media");
 }
 
 }  // namespace povwall::parser

@@ -396,7 +396,9 @@ void Shooter::trace(const TraceRay& ray, Rgb colour, int level, bool prev_pass,
     const bool reflect = switch_on(ph.reflection, light_->photon_reflection);
     if (!refract && !reflect) return;
     ShadingRecord record;
-    spawn_children(scene_, ray, hit, record, &ctx_);
+    // The media along the way acted above (photon_through_media): the surface's
+    // children only (their fog and media would light nothing the photon carries).
+    spawn_surface_children(scene_, ray, hit, record, ctx_);
     for (const ChildRay& child : record.children) {
         if (child.kind == ChildRay::Kind::Shadow) continue;
         if (child.kind == ChildRay::Kind::Transmission || child.internal_reflection) {

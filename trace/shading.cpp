@@ -517,6 +517,15 @@ void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     out.media_lights = media_end_lights(*hit.material);
 }
 
+void spawn_surface_children(const PreparedScene& scene, const TraceRay& ray,
+                            const Hit& hit, ShadingRecord& out, RayContext& ctx) {
+    MediaShadows shadows;
+    shadows.trace = &ctx;
+    spawn_hit(scene, ray, hit, out, shadows, false);
+    pass_on_radiosity(ray, out);
+    pass_on_band(ray, out);
+}
+
 namespace {
 
 // The lists spawn_hit fills for one hit (kept per thread so that a ray allocates
@@ -735,8 +744,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     // media_attenuation: fog dims the light along its way (no fog colour
                     // is added to light, as for POV-Ray's shadow test rays).
                     if (sample_ok[l] && light.media_attenuation && !sc.fogs.empty() &&
-                        quality.atmosphere() && samples[l].distance > 0 &&
-                        samples[l].distance < kInfinity) {
+                        quality.atmosphere() && sees_volume(sc, ray) &&
+                        samples[l].distance > 0 && samples[l].distance < kInfinity) {
                         LightSample& ls = samples[l];
                         ls.colour *= fog_effect(sc, {P, ls.dir}, ls.distance).mul;
                     }
@@ -1017,6 +1026,15 @@ FogEffect rainbows(const PreparedScene& scene, const Ray& ray, Real depth) {
     return {r.add, r.mul, 0.0f, r.mul_transmit};
 }
 
+}  // namespace
+
+bool sees_volume(const Scene& scene, const TraceRay& ray) {
+    return ray.radiosity_depth == 0 ||
+           (scene.settings.radiosity && scene.settings.radiosity->media);
+}
+
+namespace {
+
 // Media and fog fill only "hollow" space: not the inside of a solid (non-hollow) object.
 bool hollow_ray(const InteriorStack& interiors) {
     for (int i = 0; i < interiors.size && i < InteriorStack::kCapacity; ++i) {
@@ -1169,8 +1187,7 @@ FogEffect viewing_media(const PreparedScene& scene, std::span<const Media* const
 FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
                     MediaEndLights end, const MediaShadows& shadows) {
     const Scene& sc = scene.scene();
-    // Under a radiosity sample ray: no fog or media (POV-Ray's radiosity quality).
-    if (ray.radiosity_depth > 0) return {};
+    if (!sees_volume(sc, ray)) return {};
     if (sc.fogs.empty() && sc.atmosphere_media.empty() && sc.rainbows.empty() &&
         !in_media(ray.interiors))
         return {};
@@ -1201,7 +1218,7 @@ FogEffect along_missing_ray(const PreparedScene& scene, const TraceRay& ray,
     const Scene& sc = scene.scene();
     FogEffect f;
     if ((sc.fogs.empty() && sc.atmosphere_media.empty() && sc.rainbows.empty()) ||
-        !scene.plan().quality.atmosphere() || ray.radiosity_depth > 0)
+        !scene.plan().quality.atmosphere() || !sees_volume(sc, ray))
         return f;
     if (!sc.rainbows.empty() && hollow_ray(ray.interiors))
         f = rainbows(scene, ray.ray, 2e10);
@@ -1490,8 +1507,8 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
                                           m.interior ? m.interior->caustics : 0.0f, hit,
                                           nullptr, ray);
         }
-        if (!black && in_media(state.inside) && scene.plan().quality.atmosphere() &&
-            hollow_ray(state.inside)) {
+        if (!black && state.volume && in_media(state.inside) &&
+            scene.plan().quality.atmosphere() && hollow_ray(state.inside)) {
             // The media of every interior the ray is in dim the stretch since the last
             // crossing (whatever the light's media_attenuation says, as POV-Ray).
             thread_local std::vector<const Media*> list;
@@ -1503,7 +1520,7 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
         }
         // A light with media_attenuation: the atmosphere's media dim each stretch too
         // (POV-Ray's ComputeShadowMedia at a crossing: hollow or not).
-        if (!black && attenuated_by_atmosphere(scene, state.light) &&
+        if (!black && state.volume && attenuated_by_atmosphere(scene, state.light) &&
             state.filter.max_component() >= 1e-10f) {
             state.filter *= atmosphere_shadow(scene, ray, state.last_hit, hit.t);
         }
@@ -1535,7 +1552,8 @@ void shadow_last_leg(const PreparedScene& scene, const Ray& ray, Real light_dist
     // POV-Ray's TraceShadowRay: the rest of the way to the light crosses only the
     // atmosphere (a light inside a media container is not dimmed by it there), and only
     // in hollow space.
-    if (state.blocked || !attenuated_by_atmosphere(scene, state.light)) return;
+    if (state.blocked || !state.volume || !attenuated_by_atmosphere(scene, state.light))
+        return;
     if (!(light_distance - state.last_hit > kShadowTolerance) ||
         !(light_distance < kInfinity) || !hollow_ray(state.inside))
         return;
@@ -1552,6 +1570,7 @@ Rgb point_shadow(const ChildRay& shadow, const PreparedScene& scene, const Ray& 
     state.inside = shadow.trace.interiors;
     state.light = shadow.light;
     state.photon_caustics = shadow.photon_caustics;
+    state.volume = sees_volume(scene.scene(), shadow.trace);
     if (!shadow_segment(scene, ray, kInfinity, distance, state, ctx))
         shadow_last_leg(scene, ray, distance, state);
     return state.filter;
@@ -1754,7 +1773,9 @@ TraceResult miss_colour(const PreparedScene& scene, const TraceRay& ray,
 
 bool spawn_miss(const PreparedScene& scene, const TraceRay& ray, ShadingRecord& out) {
     const Scene& sc = scene.scene();
-    if (!scene.plan().quality.atmosphere() || !hollow_ray(ray.interiors)) return false;
+    if (!scene.plan().quality.atmosphere() || !sees_volume(sc, ray) ||
+        !hollow_ray(ray.interiors))
+        return false;
     bool scatters = false;
     for (const Media& m : sc.atmosphere_media) scatters = scatters || m.scatters();
     if (!scatters) return false;

@@ -212,6 +212,11 @@ bool spawn_miss(const PreparedScene& scene, const TraceRay& ray, ShadingRecord& 
 // rays are more children (ShadingRecord::media_samples).
 void spawn_children(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     ShadingRecord& out, RayContext* ctx = nullptr);
+// The same without the effects along the ray (fog, media and their lights' shadow
+// rays): a photon's path, which takes the media on the photon itself
+// (photon_through_media), needs only the surface's children.
+void spawn_surface_children(const PreparedScene& scene, const TraceRay& ray,
+                            const Hit& hit, ShadingRecord& out, RayContext& ctx);
 
 // Step 2. `results[i]` is the result of `record.children[i]`: the traced colour for
 // reflection/transmission, the light's transmittance (rgb) for shadow rays.
@@ -228,7 +233,13 @@ struct ShadowState {
     InteriorStack inside;  // start with the lit ray's interiors
     int light = -1;        // the light it goes to (for the box's last-blocker cache)
     bool photon_caustics = false;  // see ChildRay::photon_caustics
+    // Media and fog dim it: false under a radiosity sample ray unless the radiosity
+    // block says `media on` (POV-Ray's radiosity quality flags).
+    bool volume = true;
 };
+// Whether media and fog act along `ray`: always, except under a radiosity sample ray
+// when the radiosity block leaves `media` off (its default).
+bool sees_volume(const Scene& scene, const TraceRay& ray);
 // Advances `state` over hits with t in [state.t_min, min(segment_end, light_distance -
 // 1e-3)). Returns true once the light is fully blocked.
 bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end,

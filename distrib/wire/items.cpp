@@ -102,7 +102,7 @@ bool default_shadow_state(const RayItem& r) {
            same_bits(s.filter.b, d.filter.b) && same_bits(s.t_min, d.t_min) &&
            same_bits(s.last_hit, d.last_hit) && s.blocked == d.blocked &&
            s.inside.size == 0 && s.light == d.light &&
-           s.photon_caustics == d.photon_caustics;
+           s.photon_caustics == d.photon_caustics && s.volume == d.volume;
 }
 
 void write_fields(RecordWriter& w, int box, const Item& item,
@@ -144,9 +144,11 @@ void write_fields(RecordWriter& w, int box, const Item& item,
         w.rgb(r.shadow_state.filter);
         w.raw(r.shadow_state.t_min);
         w.raw(r.shadow_state.last_hit);
-        // Bit 0: blocked; bit 1: photon caustics (trace::ShadowState).
+        // Bit 0: blocked; bit 1: photon caustics; bit 2: no media or fog
+        // (trace::ShadowState).
         w.raw(uint8_t(uint8_t(r.shadow_state.blocked) |
-                      (r.shadow_state.photon_caustics ? 2 : 0)));
+                      (r.shadow_state.photon_caustics ? 2 : 0) |
+                      (r.shadow_state.volume ? 0 : 4)));
         write_stack(w, r.shadow_state.inside, numbers);
         w.raw(int32_t(r.shadow_state.light));
     }
@@ -205,9 +207,10 @@ bool read_record(Reader& rd, const ItemLimits& limits, int& box, Item& item,
             r.shadow_state.t_min = rd.raw<Real>();
             r.shadow_state.last_hit = rd.raw<Real>();
             const uint8_t bits = rd.raw<uint8_t>();
-            if (bits > 3) return false;
+            if (bits > 7) return false;
             r.shadow_state.blocked = bits & 1;
             r.shadow_state.photon_caustics = bits & 2;
+            r.shadow_state.volume = !(bits & 4);
             read_stack(rd, r.shadow_state.inside, numbers);
             r.shadow_state.light = rd.raw<int32_t>();
             if (default_shadow_state(r)) return false;

@@ -62,7 +62,7 @@ class Corpus : public ::testing::Test {
             fs::copy_file(fs::path(POVWALL_SOURCE_DIR) / "scenes/golden" / name,
                           scenes / "golden" / name);
         std::ofstream(scenes / "radiosity.pov")
-            << "global_settings { radiosity { media on } }\n"
+            << "global_settings { radiosity { subsurface on } }\n"
                "camera { location <0, 1, -4> look_at 0 }\n"
                "light_source { <2, 4, -3> color rgb 1 }\n"
                "sphere { 0, 1 pigment { rgb 1 } }\n";
@@ -109,7 +109,8 @@ TEST_F(Corpus, PrintsOneLinePerSceneAndExactCounts) {
     EXPECT_TRUE(std::regex_search(out, std::regex(R"(scenes/golden/csg.pov +matched )")))
         << out;
     EXPECT_TRUE(std::regex_search(
-        out, std::regex(R"(scenes/radiosity.pov +unsupported .* radiosity media on\n)")))
+        out,
+        std::regex(R"(scenes/radiosity.pov +unsupported .* radiosity subsurface on\n)")))
         << out;
     // The first line of povwall's diagnostic, with the scene named as listed.
     EXPECT_TRUE(std::regex_search(

@@ -119,6 +119,7 @@ class RandomItems {
             stack(r.shadow_state.inside);
             r.shadow_state.light = int(rng_() % 3) - 1;
             r.shadow_state.photon_caustics = coin(0.5);
+            r.shadow_state.volume = coin(0.8);
         }
         if (coin(0.5)) {
             r.parent = rng_() | 1;
@@ -235,6 +236,7 @@ TEST(WireItems, RecordsRoundTripBitForBit) {
         EXPECT_EQ(a.ray.shadow_state.light, b.ray.shadow_state.light);
         EXPECT_EQ(a.ray.shadow_state.blocked, b.ray.shadow_state.blocked);
         EXPECT_EQ(a.ray.shadow_state.photon_caustics, b.ray.shadow_state.photon_caustics);
+        EXPECT_EQ(a.ray.shadow_state.volume, b.ray.shadow_state.volume);
         EXPECT_EQ(a.ray.pixel, b.ray.pixel);
         EXPECT_EQ(a.ray.parent_box, b.ray.parent_box);
         EXPECT_EQ(std::bit_cast<uint32_t>(a.ray.transmit_contribution),
