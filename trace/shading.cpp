@@ -332,7 +332,7 @@ MediaEndLights media_end_lights(const Material& m) {
 // material, not the stand-ins. `out.fog` is kept.
 void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     const Material* const* subs, const float* weights, int n,
-                    ShadingRecord& out) {
+                    ShadingRecord& out, RayContext* trace) {
     FogEffect fog = out.fog;
     Rgb local;
     // A deque keeps references valid while nested texture maps grow it.
@@ -346,7 +346,11 @@ void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         h.material = subs[e];
         ++depth;
         ShadingRecord& rec = scratch_pool[depth - 1];
-        spawn_hit(scene, ray, h, rec, MediaShadows{}, false);
+        // No effect along the ray per stand-in (the caller's record has it), but the
+        // tracer's context: a radiosity gather needs it.
+        MediaShadows sub;
+        sub.trace = trace;
+        spawn_hit(scene, ray, h, rec, sub, false);
         --depth;
         local += rec.local * w;
         for (ChildRay c : rec.children) {
@@ -369,7 +373,7 @@ void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& 
 // A texture_map (or checker/hexagon/brick of textures) as the object's texture: POV-Ray
 // blends the final colours of the two entries around the pattern value.
 bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
-                       ShadingRecord& out) {
+                       ShadingRecord& out, RayContext* trace) {
     const Material& m = *hit.material;
     if (m.plain || !m.texture || m.texture->size() != 1) return false;
     const Texture& t = m.texture->front();
@@ -395,7 +399,7 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
             used[size_t(i)] = &subs[size_t(i)];
             weights[size_t(i)] = (has_values ? t.map->values[size_t(i)] : 1.0f) / total;
         }
-        spawn_weighted(scene, ray, hit, used.data(), weights.data(), count, out);
+        spawn_weighted(scene, ray, hit, used.data(), weights.data(), count, out, trace);
         return true;
     }
     const SurfaceAtHit surface = surface_facing(hit, ray.ray.direction);
@@ -420,14 +424,14 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
         used[n] = &subs[e];
         weights[n++] = w;
     }
-    spawn_weighted(scene, ray, hit, used, weights, n, out);
+    spawn_weighted(scene, ray, hit, used, weights, n, out, trace);
     return true;
 }
 
 // A mesh face with a texture per corner: the corners' textures, weighted toward the hit
 // (textures below adc_bailout left out, as POV-Ray's ComputeTextureColour does).
 bool spawn_corner_blend(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
-                        ShadingRecord& out) {
+                        ShadingRecord& out, RayContext* trace) {
     const TextureBlend* b = hit.material->blend;
     if (!b) return false;
     float w[3];
@@ -441,14 +445,14 @@ bool spawn_corner_blend(const PreparedScene& scene, const TraceRay& ray, const H
         used[n] = b->corners[k];
         weights[n++] = w[k];
     }
-    spawn_weighted(scene, ray, hit, used, weights, n, out);
+    spawn_weighted(scene, ray, hit, used, weights, n, out, trace);
     return true;
 }
 
 // A blob with textures on its components: the touching elements' textures weighted by
 // their |field| (POV-Ray's Blob::Determine_Textures), those below adc_bailout left out.
 bool spawn_blob_blend(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
-                      ShadingRecord& out) {
+                      ShadingRecord& out, RayContext* trace) {
     const BlobTextureBlend* b = hit.material->blob_blend;
     if (!b) return false;
     thread_local std::vector<const Material*> mats;  // no allocation per ray
@@ -456,13 +460,13 @@ bool spawn_blob_blend(const PreparedScene& scene, const TraceRay& ray, const Hit
     const int n =
         blob_texture_weights(*b, hit.point, scene.scene().settings.adc_bailout, mats, w);
     if (!scene.scene().settings.radiosity) {
-        spawn_weighted(scene, ray, hit, mats.data(), w.data(), n, out);
+        spawn_weighted(scene, ray, hit, mats.data(), w.data(), n, out, trace);
         return true;
     }
     // Under radiosity the entries' shading may come back here for another blob.
     const std::vector<const Material*> own_mats(mats.begin(), mats.begin() + n);
     const std::vector<float> own_w(w.begin(), w.begin() + n);
-    spawn_weighted(scene, ray, hit, own_mats.data(), own_w.data(), n, out);
+    spawn_weighted(scene, ray, hit, own_mats.data(), own_w.data(), n, out, trace);
     return true;
 }
 
@@ -577,9 +581,9 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     const Quality quality = scene.plan().quality;
     if (with_fog && quality.atmosphere())
         out.fog = along_ray(scene, ray, hit.t, media_end_lights(*hit.material), shadows);
-    if (spawn_corner_blend(scene, ray, hit, out)) return;
-    if (spawn_blob_blend(scene, ray, hit, out)) return;
-    if (spawn_texture_map(scene, ray, hit, out)) return;
+    if (spawn_corner_blend(scene, ray, hit, out, shadows.trace)) return;
+    if (spawn_blob_blend(scene, ray, hit, out, shadows.trace)) return;
+    if (spawn_texture_map(scene, ray, hit, out, shadows.trace)) return;
     const Scene& sc = scene.scene();
     const Material& m = *hit.material;
     const Vector3 D = ray.ray.direction;
