@@ -604,8 +604,8 @@ TEST(Tcp, PhotonsInEveryModeEqualOneProcess) {
 // every screen-mode split gives the one-thread image, anti-aliased too. Space subdivision
 // is refused with a located `unsupported:`.
 TEST(Tcp, RadiosityInEveryModeEqualOneProcess) {
-    for (const char* name :
-         {"radiosity_cornell", "radiosity_emission", "radiosity_media_on"}) {
+    for (const char* name : {"radiosity_cornell", "radiosity_emission",
+                             "radiosity_media_on", "radiosity_texture_map"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         for (const char* aa : {"-A +WT1", "+A0.1 +AM2 -J +WT1"})
