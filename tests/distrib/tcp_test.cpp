@@ -399,8 +399,8 @@ TEST(Tcp, CsgFlagsInEveryModeEqualOneProcess) {
 // tests/golden): the textures of a cut surface come from inside tests on its CSG's parts,
 // which a black box holds whole with the CSG, so every mode gives the one-process image.
 TEST(Tcp, CutawayTexturesInEveryModeEqualOneProcess) {
-    for (const char* name :
-         {"cutaway_textures", "cutaway_textures_glass", "cutaway_textures_nested"}) {
+    for (const char* name : {"cutaway_textures", "cutaway_textures_glass",
+                             "cutaway_textures_nested", "cutaway_textures_rules"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(scene, "-W 40 -H 30",
