@@ -1,4 +1,5 @@
 // Objects: shapes, CSG, object modifiers and transforms, and the top-level scene items.
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <unordered_map>
@@ -79,6 +80,41 @@ bool any_turned_mirrored_uv_box(const Object& obj) {
         for (const Object& c : csg->children)
             if (any_turned_mirrored_uv_box(c)) return true;
     return false;
+}
+
+// Whether a texture was given anywhere in the object (POV-Ray's TEXTURED_OBJECT, which a
+// CSG takes from its parts): a texture or interior texture, or one on every mesh face.
+bool texture_given(const Object& obj) {
+    if (!obj.texture.empty() || !obj.interior_texture->empty()) return true;
+    if (const Mesh* m = std::get_if<Mesh>(&obj.shape))
+        return !m->faces.empty() &&
+               std::all_of(m->faces.begin(), m->faces.end(),
+                           [](const Mesh::Face& f) { return f.texture != -1; });
+    if (const Csg* csg = std::get_if<Csg>(&obj.shape))
+        return std::any_of(csg->children.begin(), csg->children.end(), texture_given);
+    return false;
+}
+
+// Whether cutaway_textures is on the CSG or on one inside it.
+bool holds_cutaway(const Object& obj) {
+    const Csg* csg = std::get_if<Csg>(&obj.shape);
+    return csg &&
+           (csg->cutaway_textures ||
+            std::any_of(csg->children.begin(), csg->children.end(), holds_cutaway));
+}
+
+// POV-Ray's Post_Process where cutaway_textures counts (the flag comes down to every CSG
+// inside): an object without a texture gets no default one when its parent is an
+// intersection or difference with the flag, nor does a CSG with a texture given in a part
+// (its parts without one then get the default each, unless it is such an intersection or
+// difference). Elsewhere a CSG's default texture, which comes down to its parts without
+// one, shows the same.
+bool stays_untextured(const Object& obj, const Object* parent) {
+    const Csg* up = parent ? std::get_if<Csg>(&parent->shape) : nullptr;
+    if (up && up->cutaway_textures &&
+        (up->kind == CsgKind::Intersection || up->kind == CsgKind::Difference))
+        return true;
+    return holds_cutaway(obj) && texture_given(obj);
 }
 
 // POV-Ray's box of a clip or CSG sibling, for a quadric's box (core/quadric_bounds.h);
@@ -505,7 +541,9 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
             (csg->kind != CsgKind::Intersection && csg->kind != CsgKind::Difference))
             error(t,
                   "cutaway_textures can only be used with intersection and difference");
-        unsupported(t, "cutaway_textures");
+        // Its parts without a texture keep none (place_object); their surfaces show the
+        // textures of the parts they lie in (trace/cutaway_textures.h).
+        std::get<Csg>(obj.shape).cutaway_textures = true;
     } else if (w == "uv_mapping") {
         // Textures given after it are evaluated at the surface coordinates and stay
         // where the transforms leave the object (POV-Ray's UV_FLAG).
@@ -891,11 +929,15 @@ void Interpreter::finish_object(Object& obj) {
 
 // POV-Ray's post-processing of a placed object, top down: a child without a texture or
 // interior takes its parent's (the same interior: children then enter and leave it
-// together); an object with none gets the default texture and an interior of its own;
+// together); an object with none gets the default texture (not in a cutaway_textures
+// CSG: stays_untextured) and an interior of its own;
 // a plain top texture's old finish ior/caustics/refraction go into the interior, which
 // every sharer sees (the last one placed wins, as in POV-Ray).
 void Interpreter::place_object(Object& obj, const Object* parent,
                                std::unordered_map<uint32_t, Interior>& shared) {
+    if (const Csg* up = parent ? std::get_if<Csg>(&parent->shape) : nullptr;
+        up && up->cutaway_textures)
+        if (Csg* csg = std::get_if<Csg>(&obj.shape)) csg->cutaway_textures = true;
     if (parent) {
         // uv_mapping comes down with the textures it applies to (POV-Ray's
         // Post_Process).
@@ -922,7 +964,8 @@ void Interpreter::place_object(Object& obj, const Object* parent,
             obj.radiosity_importance = parent->radiosity_importance;
         inherit_photons(obj.photons, parent->photons);
     }
-    if (obj.texture.empty()) obj.texture.push_back(default_texture_);
+    if (obj.texture.empty() && !stays_untextured(obj, parent))
+        obj.texture.push_back(default_texture_);
     if (!obj.interior) obj.interior = Interior{};
     if (obj.interior->id == 0) {
         obj.interior->id = ++interiors_numbered_;
@@ -930,9 +973,9 @@ void Interpreter::place_object(Object& obj, const Object* parent,
     }
     Interior& in = shared.at(obj.interior->id);
     in.hollow = obj.hollow;
-    const Texture& top = obj.texture.back();
-    if (!top.map_pattern && top.map->entries.empty()) {
-        const Finish& f = *top.finish;
+    if (const Texture* top = obj.texture.empty() ? nullptr : &obj.texture.back();
+        top && !top->map_pattern && top->map->entries.empty()) {
+        const Finish& f = *top->finish;
         if (f.legacy_ior >= 0) {
             in.ior = f.legacy_ior;
             in.ior_set = true;

@@ -7,6 +7,7 @@
 #include "octree/giants.h"
 #include "octree/overlap.h"
 #include "octree/spatial_order.h"
+#include "trace/cutaway_textures.h"
 #include "trace/object_placement.h"
 #include "trace/pov_slab_test.h"
 #include "trace/render.h"
@@ -390,9 +391,11 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
                      pov_frame_objects(scene) >= options_.pov_bounding_threshold;
     pov_root_tested_ = pov_slab_tree_ && pov_slab_root(scene, pov_root_);
     size_t leaves = 0;
-    for (const Object* o : objects) leaves += count_leaves(*o);
+    for (const Object* o : objects)
+        leaves += count_leaves(*o) + cutaway_material_count(*o);
     for (const Light& l : scene.lights) {
-        for (const Object& o : l.looks_like) leaves += count_leaves(o);
+        for (const Object& o : l.looks_like)
+            leaves += count_leaves(o) + cutaway_material_count(o);
     }
     materials_.reserve(leaves + 1);
     size_t blends = 0;
@@ -697,6 +700,8 @@ uint32_t PreparedScene::add_material(const Object& o) {
 int blob_texture_weights(const BlobTextureBlend& b, const Point3& world, float min_weight,
                          std::vector<const Material*>& materials, std::vector<float>& w) {
     const Object& o = *b.blob;
+    if (std::holds_alternative<Csg>(o.shape))
+        return cutaway_texture_weights(b, world, min_weight, materials, w);
     const Blob& blob = std::get<Blob>(o.shape);
     const Point3 q = o.transform.is_identity() ? world : o.transform.inverse_point(world);
     materials.clear();
@@ -867,16 +872,33 @@ void PreparedScene::add_frame_object(const Object& o, uint32_t frame) {
         return;
     }
     // Everything else goes through the general object path; CSG leaves get materials too.
-    std::function<void(const Object&)> leaves = [&](const Object& x) {
-        if (auto c = std::get_if<Csg>(&x.shape)) {
-            for (const auto& ch : c->children) leaves(ch);
-        } else {
-            add_material(x);
-        }
-    };
     uint32_t mat;
     if (csg) {
-        leaves(o);
+        std::vector<const Object*> textured;
+        for_each_leaf_and_csg(o, [&](const Object& leaf, const Object* named) {
+            const uint32_t index = add_material(leaf);
+            if (!leaf.texture.empty() || !named || materials_[index].blob_blend) return;
+            // cutaway_textures: its surface shows the textures of the CSG's parts
+            // (trace/cutaway_textures.h), each a material of this leaf.
+            BlobTextureBlend b;
+            b.blob = named;
+            bool opaque = true;
+            textured.clear();
+            cutaway_textured_leaves(*named, textured);
+            for (const Object* part : textured) {
+                Material sub = material_of(leaf, part->texture);
+                sub.interior_texture = nullptr;
+                materials_.push_back(sub);
+                material_frame_.push_back(adding_frame_);
+                b.elements.push_back(&materials_.back());
+                opaque = opaque && sub.opaque;
+            }
+            blob_blends_.push_back(std::move(b));
+            Material& m = materials_[index];
+            m.blob_blend = &blob_blends_.back();
+            m.plain = false;
+            m.opaque = opaque;
+        });
         mat = 0;
     } else {
         mat = add_material(o);

@@ -55,10 +55,17 @@ void count_primitives(const Object& o, size_t& finite, size_t& infinite) {
     (bounded ? finite : infinite) += n;
 }
 
-// Some object with a transparent texture has an interior whose ior bends rays.
+// Some object with a transparent texture has an interior whose ior bends rays. Under
+// cutaway_textures a part without a texture shows its CSG's (trace/cutaway_textures.h):
+// any of them transparent counts for every part.
 bool any_refracting(const Object& o, bool transparent_above) {
     bool transparent = transparent_above || !texture_opaque(o.texture) ||
                        !texture_opaque(*o.interior_texture);
+    if (const Csg* c = std::get_if<Csg>(&o.shape);
+        c && c->cutaway_textures && !transparent)
+        for_each_object_texture(o, [&](const LayeredTexture& layers) {
+            transparent = transparent || !texture_opaque(layers);
+        });
     if (transparent && o.interior && o.interior->ior != 1.0f) return true;
     if (auto c = std::get_if<Csg>(&o.shape)) {
         for (const Object& ch : c->children) {

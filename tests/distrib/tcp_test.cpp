@@ -395,6 +395,21 @@ TEST(Tcp, CsgFlagsInEveryModeEqualOneProcess) {
     }
 }
 
+// cutaway_textures (scenes/golden/cutaway_textures*.pov, each matching POV-Ray in
+// tests/golden): the textures of a cut surface come from inside tests on its CSG's parts,
+// which a black box holds whole with the CSG, so every mode gives the one-process image.
+TEST(Tcp, CutawayTexturesInEveryModeEqualOneProcess) {
+    for (const char* name : {"cutaway_textures", "cutaway_textures_glass",
+                             "cutaway_textures_nested", "cutaway_textures_rules"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        expect_same_images(scene, "-W 40 -H 30",
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents",
+                            "--boxes 4x1x1 --procs 4 --results parents"});
+    }
+}
+
 // uv_mapping (each shape's surface coordinates, read from the hit in the process that
 // finds it), material_map, image_pattern and the object pattern (its object travels
 // with the pattern, not with the scene's objects a black box keeps): every mode gives

@@ -73,11 +73,17 @@ Vector3 cylinder_normal(const Cylinder& c, const Point3& p, int face) {
 }
 
 bool inside_cylinder(const Cylinder& c, const Point3& p) {
+    // POV-Ray's Cone::Inside, in the unit cylinder's terms (radius and length 1) with its
+    // EPSILON margin: a point on a closed cylinder's surface is outside, on an open one's
+    // inside (a cutaway texture's inside tests meet such points:
+    // trace/cutaway_textures.h).
+    const Real margin = c.open ? kPovEpsilon : -kPovEpsilon;
     AxisFrame f = axis_of(c.base, c.cap);
     Vector3 u = p - c.base;
     Real h = dot(u, f.axis);
     Vector3 perp = u - f.axis * h;
-    return h >= 0 && h <= f.len && dot(perp, perp) < c.radius * c.radius;
+    const Real z = h / f.len, w2 = dot(perp, perp) / (c.radius * c.radius);
+    return !(w2 > 1 + margin || z < -margin || z > 1 + margin);
 }
 
 void intersect_cone(const Cone& c, const Point3& o, const Vector3& dir, Crossings& out) {
