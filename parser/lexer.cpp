@@ -96,7 +96,9 @@ void lex(SourceManager& sm, int file_index, SourceFile& f) {
                 mantissa = mantissa * 10 + uint64_t(s[i++] - '0');
                 ++digits;
             }
+            bool point = false;
             if (i < n && s[i] == '.') {
+                point = true;
                 ++i;
                 while (i < n && is_digit(s[i])) {
                     mantissa = mantissa * 10 + uint64_t(s[i++] - '0');
@@ -114,6 +116,11 @@ void lex(SourceManager& sm, int file_index, SourceFile& f) {
                     while (i < n && is_digit(s[i])) ++i;
                 }
             }
+            // POV-Ray's tokenizer stops at a second point ("0.0.95", "1e5.2"), not
+            // reading it as the start of another number.
+            if (i < n && s[i] == '.' && (point || exponent))
+                lex_error(sm, file_index, uint32_t(i), 1,
+                          "unexpected additional '.' in floating-point number");
             push(TokenKind::Number, start, i - start, uint32_t(numbers.size()));
             double& value = numbers.emplace_back();
             if (!exponent && digits <= 15) {

@@ -454,6 +454,21 @@ TEST(Lexer, StringsSpanLinesAsInPovRay) {
               "test.pov:1:14: error: unterminated string\n");
 }
 
+// A second point ends a number with an error, as in POV-Ray (a 3.7 scene wrote
+// `<1,0,0,0.0.95>`); a point after an integer or a whole number is still a decimal point.
+TEST(Lexer, ASecondPointInANumberIsAnError) {
+    EXPECT_EQ(
+        error_of("#declare C = <1, 0, 0, 0.0.95>;").substr(0, 73),
+        "test.pov:1:27: error: unexpected additional '.' in floating-point number\n");
+    EXPECT_EQ(error_of("#declare X = 1e5.2;").substr(0, 32),
+              "test.pov:1:17: error: unexpected");
+    EXPECT_EQ(error_of("#declare X = 12..5;").substr(0, 32),
+              "test.pov:1:17: error: unexpected");
+    std::string out;
+    parse("#declare X = 12.; #declare Y = .5; #debug str(X + Y, 0, 1)", &out);
+    EXPECT_EQ(out, "12.5");
+}
+
 // Short decimals take an integer-and-division fast path; every literal must read as the
 // correctly rounded double that from_chars gives (exact equality, 20,000 random literals
 // of 1 to 18 digits with and without fraction, exponent or leading zeros).
