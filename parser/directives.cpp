@@ -523,6 +523,10 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
                         existing->value) ||
                     std::holds_alternative<std::shared_ptr<const Spline>>(
                         existing->value);
+                // Its value now: the lookahead below may end the macro whose local
+                // it is (`M(Get(1))` where Get's body ends in a #local's name), and
+                // POV-Ray reads an identifier's value when it meets the token.
+                const Value captured = existing->value;
                 Token id = next();
                 const Token& after = peek();
                 const bool continues =
@@ -534,14 +538,19 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
                 // list running past its macro body's #end), which frees that frame's
                 // scope: find the binding again rather than keep a pointer into it.
                 existing = continues ? nullptr : find_binding(key, &scope);
-                if (existing) {
-                    b.value = existing->value;
-                    b.ref_scope = scope;
-                    b.ref_name = key;
+                if (existing || !continues) {
+                    b.value = existing ? existing->value : captured;
+                    if (existing) {  // else its scope has ended: passed by value
+                        b.ref_scope = scope;
+                        b.ref_name = key;
+                    }
                     bind(params, sources_.intern(m.params[i])) = std::move(b);
                     accept_punct(',');
                     continue;
                 }
+                if (!find_binding(key, &scope))
+                    id = hidden_name_token(id, std::string(id.text) + "@ended", captured,
+                                           id.offset + id.length);
                 unget(id);
             }
         }

@@ -385,6 +385,11 @@ class Interpreter {
     void fill_pushback();  // peek()'s slow path, out of line so that peek() inlines
     // `A[i][j]` read as one token standing for the element (see next()).
     Token subscript_token(const Token& name, const ArrayValue& array);
+    // A token standing for `value` under `label`, a name no scene can spell, bound in the
+    // global scope from a small rotating pool (array elements, and a macro's local that
+    // its call's argument read after the macro ended).
+    Token hidden_name_token(const Token& like, const std::string& label,
+                            const Value& value, uint32_t end_offset);
     void skip_declaration_rest();
     void run_directive(const Token& t);
     void directive_if(const Token& t, bool taken_value);

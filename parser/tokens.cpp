@@ -106,6 +106,17 @@ Token Interpreter::subscript_token(const Token& name, const ArrayValue& array) {
         label += "[" + std::to_string(i) + "]";
         if (close.file == name.file) end_offset = close.offset + close.length;
     }
+    const Value& item = array.items[flat];
+    if (auto u = std::get_if<std::shared_ptr<UnsupportedValue>>(&item)) {
+        Token whole = name;
+        whole.length = end_offset - name.offset;
+        unsupported(whole, (*u)->feature);
+    }
+    return hidden_name_token(name, label, item, end_offset);
+}
+
+Token Interpreter::hidden_name_token(const Token& like, const std::string& label,
+                                     const Value& value, uint32_t end_offset) {
     constexpr size_t kPool = 256;
     if (element_names_.size() < kPool) element_names_.resize(kPool);
     std::string& slot = element_names_[next_element_name_];
@@ -113,17 +124,13 @@ Token Interpreter::subscript_token(const Token& name, const ArrayValue& array) {
     if (!slot.empty()) scopes_[0].erase(sources_.intern(slot));
     slot = label;
     uint32_t sym = sources_.intern(slot);
-    const Value& item = array.items[flat];
-    if (auto u = std::get_if<std::shared_ptr<UnsupportedValue>>(&item)) {
-        Token whole = name;
-        whole.length = end_offset - name.offset;
-        unsupported(whole, (*u)->feature);
-    }
-    if (!std::holds_alternative<std::monostate>(item)) bind(scopes_[0], sym).value = item;
-    Token t = name;
+    // An unset array element stays unbound: reading it is an error.
+    if (!std::holds_alternative<std::monostate>(value))
+        bind(scopes_[0], sym).value = value;
+    Token t = like;
     t.text = slot;
     t.sym = sym;
-    t.length = end_offset - name.offset;
+    t.length = end_offset - like.offset;
     return t;
 }
 

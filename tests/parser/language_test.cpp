@@ -364,6 +364,24 @@ Use()
     EXPECT_EQ(s.objects[0].transform.point({0, 0, 0}), (Vector3{2, 0, 0}));
 }
 
+// A macro whose body ends in the name of its own #local, called as another macro's
+// argument (LDCad's LDraw exports: `Pig(getIdx(1))`): the argument is the local's value
+// when it was read, though reading on past it ends the inner macro.
+TEST(Directives, MacroArgumentThatIsAnotherMacrosLocal) {
+    std::string out;
+    parse(R"(
+#macro Get(C) #local R = C + 1; R #end
+#macro Show(A, B) #debug concat(str(A, 0, 0), " ", str(B, 0, 0), ";") #end
+Show(Get(1), 7)
+Show(7, Get(1))
+Show(Get(1) * 10, Get(2) + 1)
+#macro Vec(C) #local V = <C, 2, 3>; V #end
+Show(Vec(5).x, vlength(Vec(0)))
+)",
+          &out);
+    EXPECT_EQ(out, "2 7;7 2;20 4;5 4;");
+}
+
 // Function-language errors are located; an internal function povwall lacks stops only a
 // scene that uses it (functions.inc declares all of them).
 TEST(Functions, LocatedErrorsAndTolerance) {

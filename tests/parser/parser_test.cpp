@@ -470,12 +470,16 @@ TEST(Errors, Mesh2IndicesOutOfRangeAreLocated) {
 // look-ahead after `N` ends that body and frees its scope, where `N` was bound. Found by
 // the scene fuzzer (a heap-use-after-free); now `N` is looked up again, outside the body
 // (so no "called from" note: the call has returned).
+// The argument `N` is read as the value it had when met (as POV-Ray reads identifiers),
+// so the calls nest until the closing parentheses run out.
 TEST(Errors, MacroArgumentsRunningPastTheirBodysEndAreALocatedError) {
-    EXPECT_EQ(error_of("#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N #end #end\n"
-                       "#declare F = Fact(3));\n"),
-              "test.pov:1:46: error: undeclared identifier 'N'\n"
-              "#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N #end #end\n"
-              "                                             ^");
+    EXPECT_EQ(
+        error_of("#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N #end #end\n"
+                 "#declare F = Fact(3));\n"),
+        "test.pov:2:22: error: expected ')' after the arguments of 'Fact' but found "
+        "';'\n"
+        "#declare F = Fact(3));\n"
+        "                     ^");
 }
 
 // trace() writes its normal argument: a #declare of it cannot wait until the value is
