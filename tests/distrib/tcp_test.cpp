@@ -363,6 +363,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "area_illumination",
                              "area_illumination_adaptive",
                              "area_illumination_spot",
+                             "area_illumination_parallel",
                              "slope_aoi",
                              "texture_map_nested_spaces",
                              "parse_time_queries",
