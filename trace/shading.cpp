@@ -978,6 +978,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         child.coeff = lit[l];
         child.photon_caustics = photons != nullptr;
         child.area = light.area.has_value();
+        // (Not attenuated with full area lighting: POV-Ray refines its grid on the
+        // light's own colour then.)
         child.light_colour = s.colour;
         // Below +Q4 nothing blocks a light; below +Q5 an area light is its centre.
         child.unoccluded = child.unoccluded ||
