@@ -399,7 +399,9 @@ Light Interpreter::parse_light_block() {
     }
     bool parallel = false;
     bool jitter = false, circular = false, orient = false;
-    std::optional<Token> attenuation_at;  // where media_attenuation was turned on
+    std::optional<bool> illumination;      // area_illumination, when named
+    std::optional<Token> illumination_at;  // where it was last turned on
+    std::optional<Token> attenuation_at;   // where media_attenuation was turned on
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) break;
@@ -450,7 +452,8 @@ Light Interpreter::parse_light_block() {
             unget(t);
             l.colour = parse_colour_value().rgb;
         } else if (w == "area_light") {
-            AreaLight a;
+            // A copied light's area items stay; only the grid is set (POV-Ray).
+            AreaLight a = l.area.value_or(AreaLight{});
             a.axis1 = parse_vector();
             accept_punct(',');
             a.axis2 = parse_vector();
@@ -469,7 +472,8 @@ Light Interpreter::parse_light_block() {
         else if (w == "orient")
             orient = true;
         else if (w == "area_illumination") {
-            if (parse_bool_opt()) unsupported(t, "area_illumination");
+            illumination = parse_bool_opt();
+            if (*illumination) illumination_at = t;
         } else if (w == "looks_like" || w == "projected_through") {
             if (w == "projected_through") unsupported(t, w);
             expect_punct('{');
@@ -512,7 +516,13 @@ Light Interpreter::parse_light_block() {
                         "atmospheric media");
         area_light_attenuated_by_media_ = true;
     }
+    // POV-Ray 3.7 turns area_illumination on for any light, but only an area light uses
+    // it as such; on another light it drops the test that leaves a surface facing away
+    // from the light unlit. Not that.
+    if (illumination && *illumination && !l.area)
+        unsupported(*illumination_at, "area_illumination without area_light");
     if (l.area) {
+        if (illumination) l.area->illumination = *illumination;
         l.area->jitter = l.area->jitter || jitter;
         l.area->circular = l.area->circular || circular;
         l.area->orient = l.area->orient || orient;

@@ -283,7 +283,9 @@ RenderPlan make_render_plan(const Scene& scene, bool everything_on, int quality)
         } else {
             lp.reason = "shadow rays";
         }
-        if (!everything_on &&
+        // (An area_illumination light's samples each have their own cone.)
+        const bool sampled_cone = l.area && l.area->illumination;
+        if (!everything_on && !sampled_cone &&
             (l.kind == Light::Kind::Spot || l.kind == Light::Kind::Cylinder)) {
             char buf[96];
             std::snprintf(buf, sizeof buf, "; none outside its %g-degree falloff %s",

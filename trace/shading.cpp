@@ -197,6 +197,95 @@ bool light_at(const Light& l, const Point3& p, LightSample& s) {
     return !s.colour.is_black();
 }
 
+// Whether light `l` lights a point sample by sample: POV-Ray 3.7's area_illumination
+// (its "full area lighting"), only where the area grid is used at all (from +Q5, not
+// under a radiosity sample ray).
+bool full_area_lighting(const Light& l, Quality quality, const TraceRay& ray) {
+    return l.area && l.area->illumination && quality.area_lights() &&
+           ray.radiosity_depth == 0;
+}
+
+// The light ray from `p` toward `towards` (the light's location or a sample of its area
+// grid), as POV-Ray's ComputeOneWhiteLightRay: straight toward it, except that a cylinder
+// light's rays, and a parallel light's, run along the line from point_at to it, the
+// depth measured along them. Colour left unset; false at the point itself.
+bool light_ray_toward(const Light& l, const Point3& p, const Point3& towards,
+                      LightSample& s) {
+    if (l.kind == Light::Kind::Cylinder) {
+        s.dir = normalize(towards - l.point_at);
+        s.distance = dot(towards - p, s.dir);
+        return true;
+    }
+    const Vector3 v = towards - p;
+    s.distance = length(v);
+    if (s.distance == 0) return false;
+    s.dir = v * (1 / s.distance);
+    if (l.kind == Light::Kind::Parallel || l.parallel) {
+        const Vector3 along = normalize(towards - l.point_at);
+        s.distance *= dot(along, s.dir);
+        s.dir = along;
+    }
+    return true;
+}
+
+// POV-Ray's Attenuate_Light for the light ray `s` from `p`: a spotlight's cone read from
+// that ray's direction (so per area sample), a cylinder light's from `p`'s distance to
+// its axis, and the fade over the ray's depth.
+float light_attenuation(const Light& l, const Point3& p, const LightSample& s) {
+    float att = 1;
+    if (l.kind == Light::Kind::Spot) {
+        const Vector3 axis = normalize(l.point_at - l.location);
+        // The light comes from the side the depth says (behind a parallel light's
+        // plane, from the other).
+        const Real c = s.distance > 0 ? -dot(s.dir, axis) : dot(s.dir, axis);
+        if (c <= 0) return 0;
+        att = float(l.tightness != 0 ? std::pow(c, l.tightness) : 1.0);
+        const Real radius_cos = std::cos(l.radius * kPi / 180);
+        if (c < radius_cos)
+            att *= cubic_spline(std::cos(l.falloff * kPi / 180), radius_cos, c);
+    } else if (l.kind == Light::Kind::Cylinder) {
+        const Vector3 axis = normalize(l.point_at - l.location);
+        const Vector3 rel = p - l.location;
+        const Real along = dot(rel, axis);
+        if (along <= 0) return 0;
+        const Real dist = length(rel - axis * along);
+        if (dist > l.falloff) return 0;
+        att = float(l.tightness != 0 ? std::pow(1 - dist / l.falloff, l.tightness) : 1.0);
+        if (dist > l.radius) att *= 1 - cubic_spline(l.radius, l.falloff, dist);
+    }
+    if (l.fade_power > 0 && std::fabs(l.fade_distance) > kPovEpsilon && att > 0 &&
+        s.distance < kInfinity)
+        att *= float(2 / (1 + std::pow(s.distance / l.fade_distance, l.fade_power)));
+    return att;
+}
+
+Point3 area_sample_point(const AreaGrid& grid, int u, int v);
+
+// The samples of area light `l` lighting `p` one by one (full_area_lighting(), POV-Ray's
+// ComputeFullAreaDiffuseLight): every point of the grid, adaptive or not, each with its
+// own ray and its share of `colour` attenuated along that ray. Appended to `out`. (A
+// jittered grid's samples are the shadow samples' points; POV-Ray draws other ones.)
+void area_lighting_samples(const Scene& sc, size_t l, const Point3& p, const Rgb& colour,
+                           std::vector<LightSample>& out) {
+    const Light& light = sc.lights[l];
+    ChildRay at;  // the grid as the shadow child from `p` sees it (axes, orient, jitter)
+    at.trace.ray.origin = p;
+    at.light = int(l);
+    const AreaGrid grid(sc, at);
+    const float share = 1.0f / float(grid.samples());
+    for (int u = 0; u < grid.n1; ++u) {
+        for (int v = 0; v < grid.n2; ++v) {
+            LightSample s;
+            if (!light_ray_toward(light, p, area_sample_point(grid, u, v), s)) continue;
+            // (A fade past a parallel light's plane may turn it negative, as POV-Ray's.)
+            const float att = light_attenuation(light, p, s);
+            if (att == 0) continue;
+            s.colour = colour * (att * share);
+            out.push_back(s);
+        }
+    }
+}
+
 // POV-Ray's +Q0 and +Q1 (its FULL_AMBIENT): no lighting, no rays; a surface is the
 // colour of its layers' pigments as seen through the transparent ones, opaque.
 void pigment_only(const PreparedScene& scene, const Material& m, const Point3& P,
@@ -539,6 +628,10 @@ struct ShadingScratch {
     std::vector<Rgb> lit;
     std::vector<LightSample> samples;
     std::vector<uint8_t> sample_ok;
+    // Lights with full_area_lighting(): their grid samples, light l's at
+    // area_samples[area_range[l].first, area_range[l].second).
+    std::vector<LightSample> area_samples;
+    std::vector<std::pair<uint32_t, uint32_t>> area_range;
     std::vector<std::pair<size_t, Vector3>> reflection_normals;
     std::vector<const Photon*> found_photons;
 };
@@ -622,6 +715,10 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     lit.assign(nlights, Rgb{});
     samples.resize(nlights);
     sample_ok.assign(nlights, 2);  // 2: not computed yet
+    std::vector<LightSample>& area_samples = scratch.area_samples;
+    std::vector<std::pair<uint32_t, uint32_t>>& area_range = scratch.area_range;
+    area_samples.clear();
+    area_range.assign(nlights, {0, 0});
 
     Rgb fil(1.0f);
     float trans = 1;
@@ -688,14 +785,18 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
 
         // The layer's diffuse, phong, specular and iridescence response to light coming
         // from `dir` (unit), scaled by the light's colour by the caller; false when the
-        // light is behind the surface and there is no diffuse back.
+        // light is behind the surface and there is no diffuse back. Iridescence reads
+        // `irid_dir` (POV-Ray's area_illumination keeps the light's centre there).
+        // Without `facing_test` a light behind the surface lights it as one in front
+        // (POV-Ray drops that test for an area_illumination light wherever it does not
+        // light sample by sample).
         auto light_response = [&](const Vector3& dir, bool shadowless, size_t index,
-                                  Rgb& c) {
+                                  Rgb& c, const Vector3& irid_dir, bool facing_test) {
             Real cos_nl = dot(Nl, dir);
             // A light behind the surface lights it only with diffuse back (and then
             // without highlights), unless the object is double_illuminate.
             bool backside = false;
-            if (cos_nl < kPovEpsilon) {
+            if (cos_nl < kPovEpsilon && facing_test) {
                 if (m.double_illuminate)
                     cos_nl = -cos_nl;
                 else if (f.diffuse_back != 0)
@@ -735,7 +836,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     }
                 }
             }
-            if (f.irid > 0) c *= iridescence(f, sc, P, Nl, dir, D);
+            if (f.irid > 0) c *= iridescence(f, sc, P, Nl, irid_dir, D);
             return true;
         };
         if (f.diffuse != 0 || f.diffuse_back != 0 || f.phong != 0 || f.specular != 0) {
@@ -743,21 +844,48 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                 const Light& light = sc.lights[l];
                 // Light groups: a skipped light stays unlit and gets no shadow ray.
                 if (!lights_material(light, m)) continue;
+                const bool full_area = full_area_lighting(light, quality, ray);
                 if (sample_ok[l] == 2) {
-                    sample_ok[l] = light_at(light, P, samples[l]) ? 1 : 0;
+                    // With full area lighting, the centre's ray and the light's own
+                    // colour (the shadow test's; the samples are attenuated each).
+                    LightSample& ls = samples[l];
+                    if (full_area) {
+                        sample_ok[l] = light_ray_toward(light, P, light.location, ls);
+                        ls.colour = light.colour;
+                    } else {
+                        sample_ok[l] = light_at(light, P, ls) ? 1 : 0;
+                    }
                     // media_attenuation: fog dims the light along its way (no fog colour
                     // is added to light, as for POV-Ray's shadow test rays).
                     if (sample_ok[l] && light.media_attenuation && !sc.fogs.empty() &&
-                        quality.atmosphere() && sees_volume(sc, ray) &&
-                        samples[l].distance > 0 && samples[l].distance < kInfinity) {
-                        LightSample& ls = samples[l];
+                        quality.atmosphere() && sees_volume(sc, ray) && ls.distance > 0 &&
+                        ls.distance < kInfinity) {
                         ls.colour *= fog_effect(sc, {P, ls.dir}, ls.distance).mul;
+                    }
+                    if (sample_ok[l] && full_area) {
+                        area_range[l].first = uint32_t(area_samples.size());
+                        area_lighting_samples(sc, l, P, ls.colour, area_samples);
+                        area_range[l].second = uint32_t(area_samples.size());
                     }
                 }
                 if (!sample_ok[l]) continue;
                 const LightSample& s = samples[l];
                 Rgb c;
-                if (!light_response(s.dir, light.shadowless, l, c)) continue;
+                if (full_area) {
+                    // Each sample lights the point from where it is.
+                    Rgb sum;
+                    for (uint32_t k = area_range[l].first; k < area_range[l].second;
+                         ++k) {
+                        const LightSample& a = area_samples[k];
+                        if (light_response(a.dir, light.shadowless, l, c, s.dir, true))
+                            sum += c * a.colour;
+                    }
+                    lit[l] += sum * fil;
+                    continue;
+                }
+                const bool facing_test = !(light.area && light.area->illumination);
+                if (!light_response(s.dir, light.shadowless, l, c, s.dir, facing_test))
+                    continue;
                 lit[l] += c * s.colour * fil;
             }
         }
@@ -778,7 +906,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                 if (a > 1) a = 1;
                 if (a < 0.1) a = 0.1;
                 Rgb c;
-                if (!light_response(d, false, nlights, c)) continue;
+                if (!light_response(d, false, nlights, c, d, true)) continue;
                 sum += c * PhotonMap::flux(*ph) * float(1 / a);
             }
             if (!found_photons.empty())
@@ -863,6 +991,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         child.coeff = lit[l];
         child.photon_caustics = photons != nullptr;
         child.area = light.area.has_value();
+        // (Not attenuated with full area lighting: POV-Ray refines its grid on the
+        // light's own colour then.)
         child.light_colour = s.colour;
         // Below +Q4 nothing blocks a light; below +Q5 an area light is its centre.
         child.unoccluded = child.unoccluded ||
@@ -1113,10 +1243,17 @@ class SampleLight final : public MediaLightProbe {
                  uint64_t sample) override {
         const Scene& sc = scene_.scene();
         const Light& light = sc.lights[l];
-        LightSample s;
-        if (!light_at(light, at, s)) return {};
-        to_light = s.dir;
         const Quality quality = scene_.plan().quality;
+        LightSample s;
+        if (full_area_lighting(light, quality, ray_)) {
+            // POV-Ray's TestShadow leaves such a light unattenuated here (its samples
+            // would be attenuated each on a surface): no cone, no fade.
+            if (!light_ray_toward(light, at, light.location, s)) return {};
+            s.colour = light.colour;
+        } else if (!light_at(light, at, s)) {
+            return {};
+        }
+        to_light = s.dir;
         // As for a lit surface: fog dims a light with media_attenuation.
         if (light.media_attenuation && !sc.fogs.empty() && s.distance > 0 &&
             s.distance < kInfinity)
@@ -1624,8 +1761,12 @@ AreaGrid::AreaGrid(const Scene& scene, const ChildRay& shadow)
       axis2(area.axis2),
       light_colour(shadow.light_colour) {
     if (area.orient) {
-        // Face the lit point: both axes perpendicular to the light ray, axis1's length.
-        const Vector3 dir = normalize(light.location - at);
+        // Face the lit point: both axes perpendicular to the light ray (a parallel or
+        // cylinder light's runs from point_at), axis1's length.
+        const bool parallel_rays = light.kind == Light::Kind::Cylinder ||
+                                   light.kind == Light::Kind::Parallel || light.parallel;
+        const Vector3 dir =
+            normalize(light.location - (parallel_rays ? light.point_at : at));
         const Real len = length(axis1);
         const Vector3 up =
             std::fabs(std::fabs(dir.z) - 1) < 0.01 ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
@@ -1649,12 +1790,19 @@ void area_jitter(const Point3& at, int light, int u, int v, Real& a, Real& b) {
 
 }  // namespace
 
-bool AreaGrid::sample_ray(int u, int v, Ray& ray, Real& distance) const {
+namespace {
+
+// Where sample (u, v) of `grid` is: its cell's point (jittered within the cell with
+// `jitter`), on a circle's shells when `circular`.
+Point3 area_sample_point(const AreaGrid& grid, int u, int v) {
+    const AreaLight& area = grid.area;
+    const int n1 = grid.n1, n2 = grid.n2;
+    const Vector3 &axis1 = grid.axis1, &axis2 = grid.axis2;
     Vector3 offset{0, 0, 0};
     Real ju = u, jv = v;
     if (area.jitter) {
         Real a, b;
-        area_jitter(at, light_index, u, v, a, b);
+        area_jitter(grid.at, grid.light_index, u, v, a, b);
         ju += a - 0.5;
         jv += b - 0.5;
     }
@@ -1668,7 +1816,24 @@ bool AreaGrid::sample_ray(int u, int v, Ray& ray, Real& distance) const {
         if (n1 > 1) offset += axis1 * (ju / (n1 - 1) - 0.5);
         if (n2 > 1) offset += axis2 * (jv / (n2 - 1) - 0.5);
     }
-    const Vector3 to = light.location + offset - at;
+    return grid.light.location + offset;
+}
+
+}  // namespace
+
+bool AreaGrid::sample_ray(int u, int v, Ray& ray, Real& distance) const {
+    if (light.kind == Light::Kind::Cylinder || light.kind == Light::Kind::Parallel ||
+        light.parallel) {
+        // Parallel rays along the line from point_at through the sample.
+        LightSample s;
+        if (!light_ray_toward(light, at, area_sample_point(*this, u, v), s) ||
+            !(s.distance > 0))
+            return false;  // behind the light: nothing blocks it
+        ray = {at, s.dir};
+        distance = s.distance;
+        return true;
+    }
+    const Vector3 to = area_sample_point(*this, u, v) - at;
     distance = length(to);
     if (!(distance > 0)) return false;
     ray = {at, to / distance};

@@ -244,6 +244,29 @@ light_source { <0, 5, 0> rgb 1 cylinder point_at 0 }
               "                    ^~~~~~~~");
 }
 
+// area_illumination is an area light's item, before or after area_light; a copy keeps it
+// (and the other area items) unless it says otherwise, even with a grid of its own.
+TEST(Lights, AreaIlluminationIsAnAreaLightItem) {
+    Scene s = parse(R"(
+#declare L = light_source { 0, 1 area_light x, y, 3, 3 adaptive 1 jitter area_illumination }
+light_source { 0, 1 area_illumination area_light x, y, 2, 2 }
+light_source { 0, 1 area_light x, y, 2, 2 area_illumination on area_illumination off }
+light_source { L }
+light_source { L area_light x, z, 5, 5 }
+light_source { L area_illumination off }
+)");
+    ASSERT_EQ(s.lights.size(), 5u);
+    for (const Light& l : s.lights) ASSERT_TRUE(l.area);
+    EXPECT_TRUE(s.lights[0].area->illumination);
+    EXPECT_FALSE(s.lights[1].area->illumination);
+    EXPECT_TRUE(s.lights[2].area->illumination);
+    EXPECT_TRUE(s.lights[3].area->illumination);
+    EXPECT_EQ(s.lights[3].area->size1, 5);
+    EXPECT_EQ(s.lights[3].area->adaptive, 1);
+    EXPECT_TRUE(s.lights[3].area->jitter);
+    EXPECT_FALSE(s.lights[4].area->illumination);
+}
+
 TEST(Finishes, DiffuseBackAndAlbedoAtTheEndOfTheBlock) {
     Scene s = parse(R"(
 sphere { 0, 1 finish { diffuse 0.6, 0.4 } }
@@ -283,10 +306,15 @@ TEST(Keywords, RefusedOrCheckedWhereTheyStand) {
         "plane { y, 0 pigment { hexagon frequency 2 } }\n"
         "                               ^~~~~~~~~");
     EXPECT_EQ(error_of("plane { y, 0 pigment { checker frequency 0 } }"), "(no error)");
-    EXPECT_EQ(error_of("light_source { 0, 1 area_light x, y, 2, 2 area_illumination }"),
-              "test.pov:1:43: error: unsupported: area_illumination\n"
-              "light_source { 0, 1 area_light x, y, 2, 2 area_illumination }\n"
-              "                                          ^~~~~~~~~~~~~~~~~");
+    // area_illumination renders on an area light; on another light POV-Ray lights the
+    // side facing away from it.
+    EXPECT_EQ(error_of("light_source { 0, 1 area_illumination }"),
+              "test.pov:1:21: error: unsupported: area_illumination without area_light\n"
+              "light_source { 0, 1 area_illumination }\n"
+              "                    ^~~~~~~~~~~~~~~~~");
+    EXPECT_EQ(
+        error_of("light_source { 0, 1 area_illumination on area_illumination off }"),
+        "(no error)");
     // Dispersion renders; without an `ior` it is dropped (POV-Ray takes the
     // atmosphere's index and dispersion), with one kept; a finish's old `ior` replaces
     // the interior's index and drops it.
