@@ -2,40 +2,12 @@
 
 #include <algorithm>
 
+#include "trace/object_inside.h"
 #include "trace/ray_use.h"
 #include "trace/shapes/shape.h"
 
 namespace povwall::trace {
 namespace {
-
-// POV-Ray's Inside of a CSG part: as inside_object, but the part's own clipped_by is not
-// tested (the parts of a CSG part test theirs).
-bool inside_unclipped(const Object& o, const Point3& p) {
-    if (o.clipped_by->empty()) return inside_object(o, p);
-    bool in = false;
-    if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
-        switch (csg->kind) {
-            case CsgKind::Union:
-            case CsgKind::Merge:
-                for (const Object& c : csg->children) in = in || inside_object(c, p);
-                break;
-            case CsgKind::Intersection:
-                in = !csg->children.empty();
-                for (const Object& c : csg->children) in = in && inside_object(c, p);
-                break;
-            case CsgKind::Difference:
-                in = !csg->children.empty() && inside_object(csg->children[0], p);
-                for (size_t i = 1; i < csg->children.size() && in; ++i) {
-                    const Object& c = csg->children[i];
-                    in = inside_object(c, p) != difference_inverts(c);
-                }
-                break;
-        }
-    } else {
-        in = leaf_inside(o, o.transform.is_identity() ? p : o.transform.inverse_point(p));
-    }
-    return in != o.inverse;
-}
 
 // Whether POV-Ray sees part i of a CSG node inverted (`inverted`: the node is): the
 // part's own inverse, and a difference's later parts, which it inverts.

@@ -8,6 +8,7 @@
 #include "octree/overlap.h"
 #include "octree/spatial_order.h"
 #include "trace/cutaway_textures.h"
+#include "trace/object_inside.h"
 #include "trace/object_placement.h"
 #include "trace/pov_slab_test.h"
 #include "trace/render.h"
@@ -315,6 +316,10 @@ size_t count_leaves(const Object& o) {
 bool inside_object(const Object& o, const Point3& p) {
     // POV-Ray's Inside_Object: outside a clip is outside, inverse or not.
     if (!o.clipped_by->empty() && !inside_clips(o, p)) return false;
+    return inside_unclipped(o, p);
+}
+
+bool inside_unclipped(const Object& o, const Point3& p) {
     bool in = false;
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
         switch (csg->kind) {
