@@ -858,11 +858,14 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         open();
         Token id = next();
         const Value* v = id.kind == TokenKind::Word ? lookup(id) : nullptr;
-        if (v && std::holds_alternative<std::shared_ptr<Light>>(*v)) {
-            // object { LightId }: a light source, carried by an empty CSG so that later
-            // transforms (its own and those of enclosing objects) move it.
+        const bool inline_light = is_word(id, "light_source");
+        if (inline_light || (v && std::holds_alternative<std::shared_ptr<Light>>(*v))) {
+            // object { LightId } or object { light_source { } } (as POV-Ray, whose
+            // lights are objects): a light source, carried by an empty CSG so that
+            // later transforms (its own and those of enclosing objects) move it.
             Csg holder;
-            holder.lights.push_back(*std::get<std::shared_ptr<Light>>(*v));
+            holder.lights.push_back(inline_light ? parse_light_block()
+                                                 : *std::get<std::shared_ptr<Light>>(*v));
             out = Object{};
             out.shape = std::move(holder);
             for (;;) {

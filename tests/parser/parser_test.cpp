@@ -639,6 +639,18 @@ union {
     EXPECT_NEAR(s.lights[1].location.z, -11, 1e-12);
 }
 
+// VMD-style scenes wrap a light in object { }; its transforms move it.
+TEST(Lights, ALightWrittenInsideObjectIsALight) {
+    Scene s = parse(R"(
+object { light_source { <1, 2, 3> color rgb 0.5 } translate <1, 0, 0> }
+sphere { 0, 1 }
+)");
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].location, (Point3{2, 2, 3}));
+    EXPECT_FLOAT_EQ(s.lights[0].colour.r, 0.5f);
+    ASSERT_EQ(s.objects.size(), 2u);  // the light's empty holder and the sphere
+}
+
 // POV-Ray's own qtvr/qtvrpanorama.pov writes `looks_like { LightShape }`.
 TEST(Lights, LooksLikeTakesAnObjectIdentifier) {
     Scene s = parse(R"(
