@@ -196,8 +196,7 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
         // In POV-Ray's push order: a plain union pushes its children's intersections as
         // they come; every other CSG collects each child's on a stack of its own and
         // moves them over from the top, reversing them (csg.cpp All_Intersections).
-        const bool reversed =
-            csg->kind != CsgKind::Union || o.inverse || !o.clipped_by->empty();
+        const bool reversed = pov != PovCsg::Union || o.inverse || !o.clipped_by->empty();
         std::vector<WorldCrossing> tmp;
         for (size_t i = 0; i < csg->children.size(); ++i) {
             tmp.clear();
@@ -207,7 +206,12 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             if (skipped(i)) continue;
             if (!child.bounded_by->empty() && !ray_in_bound(*child.bounded_by, ray))
                 continue;
-            object_crossings(child, ray, tmp, true, nullptr, flags, inverted);
+            // POV-Ray inverts a difference's later children (a CSG among them turns into
+            // its morphed kind: a union into an intersection of inverted children).
+            const bool child_inverted =
+                inverted != (csg->kind == CsgKind::Difference && i > 0 &&
+                             std::holds_alternative<Csg>(child.shape));
+            object_crossings(child, ray, tmp, true, nullptr, flags, child_inverted);
             if (reversed) std::reverse(tmp.begin(), tmp.end());
             for (WorldCrossing c : tmp) {
                 Point3 p = c.at(ray);
@@ -217,6 +221,9 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
                     bool in = inside_object(csg->children[j], p);
                     switch (csg->kind) {
                         case CsgKind::Union:
+                            // Seen inverted, POV-Ray's union is an intersection of its
+                            // inverted children: a crossing inside a sibling is dropped.
+                            keep = pov != PovCsg::Intersection || !in;
                             break;
                         case CsgKind::Merge:
                             keep = !in;

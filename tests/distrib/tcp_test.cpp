@@ -354,6 +354,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "caustics_bumped",
                              "irid_reflection",
                              "inverse_csg",
+                             "csg_inverted_union",
                              "map_entries",
                              "palette_images",
                              "mesh_corner_textures",
