@@ -628,11 +628,17 @@ TEST(Tcp, RadiosityInEveryModeEqualOneProcess) {
                              "radiosity_media_on", "radiosity_texture_map"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
-        for (const char* aa : {"-A +WT1", "+A0.1 +AM2 -J +WT1"})
+        // The first two scenes also anti-aliased; the later ones (what their sample rays
+        // see: media, blended textures) without.
+        const bool first_two = std::string(name) == "radiosity_cornell" ||
+                               std::string(name) == "radiosity_emission";
+        for (const char* aa : {"-A +WT1", "+A0.1 +AM2 -J +WT1"}) {
+            if (!first_two && aa[0] == '+') continue;
             expect_same_images(
                 scene, std::string("-W 48 -H 36 ") + aa,
                 {"+WT2", "+WT3", "--mode screen --procs 2", "--mode screen --procs 3"},
                 true);
+        }
         for (const char* boxes : {"--boxes 2x2x2", "--boxes 2x2x2 --procs 2"}) {
             const RunResult r = run("render " + scene + " -W 40 -H 30 -q -o " +
                                     (scratch() / "boxes.png").string() + " " + boxes);
