@@ -26,14 +26,9 @@ void Interpreter::run_directive(const Token& t) {
             // A copy: the subscripts may end the frame that holds the binding.
             std::shared_ptr<ArrayValue> arr;
             if (auto a = std::get_if<std::shared_ptr<ArrayValue>>(lookup(name))) arr = *a;
-            size_t flat = 0;
-            while (accept_punct('[')) {
-                int index = parse_int();
-                expect_punct(']');
-                flat = flat * 1 + size_t(index);  // single-dimension common case
-            }
-            defined = arr && flat < arr->items.size() &&
-                      !std::holds_alternative<std::monostate>(arr->items[flat]);
+            if (!arr) error(peek(), "'" + std::string(name.text) + "' is not an array");
+            const size_t flat = parse_subscripts(*arr);
+            defined = !std::holds_alternative<std::monostate>(arr->items[flat]);
         }
         expect_punct(')');
         return directive_if(t, d == "ifdef" ? defined : !defined);
@@ -94,6 +89,19 @@ void Interpreter::run_directive(const Token& t) {
     if (d == "undef") {
         Token name = next_raw();
         if (name.kind != TokenKind::Word) expected("an identifier", name);
+        if (is_punct(peek(), '[')) {
+            // #undef A[i]: the element is unassigned again (POV-Ray's Remove_Symbol);
+            // one never assigned is POV-Ray's parse error.
+            std::shared_ptr<ArrayValue> arr;
+            if (const Value* v = lookup(name))
+                if (auto a = std::get_if<std::shared_ptr<ArrayValue>>(v)) arr = *a;
+            if (!arr) error(peek(), "'" + std::string(name.text) + "' is not an array");
+            const size_t flat = parse_subscripts(*arr);
+            if (std::holds_alternative<std::monostate>(arr->items[flat]))
+                error(name, "Attempt to access uninitialized array element.");
+            arr->items[flat] = std::monostate{};
+            return;
+        }
         uint32_t key = sources_.intern(name.text);
         for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
             if (scopes_[i].erase(key)) break;
@@ -122,6 +130,23 @@ void Interpreter::run_directive(const Token& t) {
     if (d == "read") return directive_read(t);
     if (d == "write") return directive_write(t);
     error(t, "unknown directive '#" + std::string(d) + "'");
+}
+
+// `[i][j]...` after an array's name, one subscript per dimension: the element's index
+// in the row-major items, with the expression evaluator's range errors.
+size_t Interpreter::parse_subscripts(const ArrayValue& a) {
+    size_t flat = 0;
+    for (size_t d = 0; d < a.dims.size(); ++d) {
+        expect_punct('[', "for the next subscript");
+        const Token at = peek();
+        const int i = parse_int();
+        expect_punct(']');
+        if (i < 0 || i >= a.dims[d])
+            error(at, "array subscript " + std::to_string(i) + " out of range 0.." +
+                          std::to_string(a.dims[d] - 1));
+        flat = flat * size_t(a.dims[d]) + size_t(i);
+    }
+    return flat;
 }
 
 void Interpreter::directive_if(const Token& t, bool taken) {

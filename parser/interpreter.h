@@ -393,6 +393,7 @@ class Interpreter {
     void skip_declaration_rest();
     void run_directive(const Token& t);
     void directive_if(const Token& t, bool taken_value);
+    size_t parse_subscripts(const ArrayValue& a);
     void skip_conditional(const Token& at, bool stop_at_else);
     void directive_switch(const Token& t);
     void skip_switch_clauses(const Token& at);

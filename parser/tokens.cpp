@@ -124,9 +124,12 @@ Token Interpreter::hidden_name_token(const Token& like, const std::string& label
     if (!slot.empty()) scopes_[0].erase(sources_.intern(slot));
     slot = label;
     uint32_t sym = sources_.intern(slot);
-    // An unset array element stays unbound: reading it is an error.
+    // An unset array element stays unbound: reading it is an error. (The same label
+    // may still be bound from an earlier read, in another pool slot, before an #undef.)
     if (!std::holds_alternative<std::monostate>(value))
         bind(scopes_[0], sym).value = value;
+    else
+        scopes_[0].erase(sym);
     Token t = like;
     t.text = slot;
     t.sym = sym;

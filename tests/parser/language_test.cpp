@@ -382,6 +382,35 @@ Show(Vec(5).x, vlength(Vec(0)))
     EXPECT_EQ(out, "2 7;7 2;20 4;5 4;");
 }
 
+// `#undef A[i]` unassigns one element (Complex_Functions.inc re-declares elements so);
+// #ifdef sees every dimension's subscript; undef of an unassigned element and a
+// subscript out of range are POV-Ray's errors.
+TEST(Directives, UndefOfAnArrayElement) {
+    std::string out;
+    parse(R"(
+#declare A = array[2][3];
+#declare A[1][2] = 5;
+#macro Say(B) #debug concat(str(B, 0, 0), ";") #end
+Say(defined(A[1][2])) Say(defined(A[0][2]))
+#undef A[1][2]
+Say(defined(A[1][2]))
+#declare A[1][2] = 7;
+Say(A[1][2])
+)",
+          &out);
+    EXPECT_EQ(out, "1;0;0;7;");
+    auto first_line = [](const std::string& text) {
+        const std::string e = error_of(text);
+        return e.substr(0, e.find('\n'));
+    };
+    EXPECT_EQ(first_line("#declare A = array[2];\n#undef A[1]"),
+              "test.pov:2:8: error: Attempt to access uninitialized array element.");
+    EXPECT_EQ(first_line("#declare A = array[2] {1, 2}\n#undef A[2]"),
+              "test.pov:2:10: error: array subscript 2 out of range 0..1");
+    EXPECT_EQ(first_line("#declare A = 1;\n#undef A[0]"),
+              "test.pov:2:9: error: 'A' is not an array");
+}
+
 // Function-language errors are located; an internal function povwall lacks stops only a
 // scene that uses it (functions.inc declares all of them).
 TEST(Functions, LocatedErrorsAndTolerance) {
