@@ -1161,20 +1161,87 @@ bool PreparedScene::for_sphere_hits(const uint32_t* ids, size_t spheres, const R
     return false;
 }
 
-bool PreparedScene::pov_takes(const Material& candidate, const Material& nearest,
-                              const Ray& ray) const {
-    const size_t c = size_t(&candidate - materials_.data()),
-                 n = size_t(&nearest - materials_.data());
-    const uint32_t fc = material_frame_[c], fn = material_frame_[n];
+namespace {
+
+// POV-Ray's test order, built on the first exact tie that needs it.
+const PovTestOrder& built_pov_order(std::once_flag& once,
+                                    std::unique_ptr<PovTestOrder>& order,
+                                    const Scene& scene, size_t bounding_threshold) {
+    std::call_once(once, [&] {
+        order = std::make_unique<PovTestOrder>(pov_frame_list(scene, bounding_threshold));
+    });
+    return *order;
+}
+
+// Frame objects met at one depth along one ray: the first ties are decided by a walk of
+// POV-Ray's tree that stops at either object; from the third on, one full walk ranks
+// every frame object the ray meets, so N coincident copies cost one walk per ray rather
+// than N (320 coincident spheres took 17 s at 160x120 against POV-Ray's 0.9 s).
+class TieRanks {
+  public:
+    bool worth_ranking() { return ++ties_ > 2; }
+    // Whether frame `a` is tested before frame `b` along `ray`: PovTestOrder::tests_first
+    // from the ranks (a frame the walk never reaches comes last).
+    bool tests_first(const PovTestOrder& order, const Ray& ray, uint32_t a, uint32_t b) {
+        if (!order.slab_tree()) return a < b;
+        thread_local std::vector<uint32_t> rank, stamp;
+        thread_local uint32_t generation = 0;
+        if (!ranked_) {
+            ranked_ = true;
+            if (++generation == 0) {  // wrapped: no stale stamp may match
+                std::fill(stamp.begin(), stamp.end(), 0u);
+                generation = 1;
+            }
+            const std::vector<uint32_t> walk = order.order(ray);
+            for (uint32_t i = 0; i < walk.size(); ++i) {
+                const uint32_t f = walk[i];
+                if (f >= rank.size()) {
+                    rank.resize(f + 1);
+                    stamp.resize(f + 1, 0u);
+                }
+                rank[f] = i;
+                stamp[f] = generation;
+            }
+        }
+        auto rank_of = [&](uint32_t f) {
+            return f < stamp.size() && stamp[f] == generation ? rank[f] : ~0u;
+        };
+        const uint32_t ra = rank_of(a), rb = rank_of(b);
+        return ra != ~0u && ra < rb;
+    }
+
+  private:
+    int ties_ = 0;
+    bool ranked_ = false;
+};
+
+// Whether POV-Ray keeps the candidate (material index `c`, frame object `fc`) over the
+// nearest hit so far (`n`, `fn`) at the same depth. `order()` gives POV-Ray's test order;
+// `ranks` (may be null) those of the ray's earlier ties.
+template <class GetOrder>
+bool pov_takes_at_tie(size_t c, uint32_t fc, size_t n, uint32_t fn, const Ray& ray,
+                      GetOrder&& order, TieRanks* ranks) {
     if (fc == ~0u || fn == ~0u) return false;
     // Parts of one frame object: its CSG pushes the later child's intersections last and
     // takes the first it pops.
     if (fc == fn) return c > n;
-    std::call_once(pov_order_once_, [this] {
-        pov_order_ = std::make_unique<PovTestOrder>(
-            pov_frame_list(scene_, options_.pov_bounding_threshold));
-    });
-    return pov_order_->tests_first(ray, fc, fn);
+    if (ranks && ranks->worth_ranking()) return ranks->tests_first(order(), ray, fc, fn);
+    return order().tests_first(ray, fc, fn);
+}
+
+}  // namespace
+
+bool PreparedScene::pov_takes(const Material& candidate, const Material& nearest,
+                              const Ray& ray) const {
+    const size_t c = size_t(&candidate - materials_.data()),
+                 n = size_t(&nearest - materials_.data());
+    return pov_takes_at_tie(
+        c, material_frame_[c], n, material_frame_[n], ray,
+        [this]() -> const PovTestOrder& {
+            return built_pov_order(pov_order_once_, pov_order_, scene_,
+                                   options_.pov_bounding_threshold);
+        },
+        nullptr);
 }
 
 bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use,
@@ -1227,6 +1294,11 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
     const Real widen_factor = 1 + std::max(probe, Real(1e-12));
     auto widen = [&](Real t) { return std::min(t_max, t * widen_factor); };
     // Whether a hit at `t` on `m` becomes the nearest.
+    TieRanks tie_ranks;
+    auto pov_order = [this]() -> const PovTestOrder& {
+        return built_pov_order(pov_order_once_, pov_order_, scene_,
+                               options_.pov_bounding_threshold);
+    };
     auto same_object = [&](uint32_t a, uint32_t b) {
         return materials_[a].object == materials_[b].object;
     };
@@ -1239,7 +1311,9 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
         }
         if (same_object(m, best_material)) return false;
         if (probe > 0) other = std::min(other, t);
-        return t == best && pov_takes(materials_[m], materials_[best_material], ray);
+        return t == best && pov_takes_at_tie(m, material_frame_[m], best_material,
+                                             material_frame_[best_material], ray,
+                                             pov_order, &tie_ranks);
     };
     auto accept = [&](Real t, uint32_t m) {
         best = t;

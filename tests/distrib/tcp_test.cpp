@@ -355,6 +355,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "irid_reflection",
                              "inverse_csg",
                              "csg_inverted_union",
+                             "coincident_copies",
                              "map_entries",
                              "palette_images",
                              "mesh_corner_textures",
