@@ -1,4 +1,5 @@
 // Textures: pigments (colours and patterns), normals, finishes, interiors, colour maps.
+#include <algorithm>
 #include <cmath>
 
 #include "core/pattern_lists.h"
@@ -1286,6 +1287,28 @@ Media Interpreter::parse_media() {
     return m;
 }
 
+namespace {
+
+// The pigment, normal and finish items POV-Ray reads straight in a texture below
+// version 3.0 (Parse_Vers1_Texture's cases, colours included).
+bool is_vers1_texture_item(std::string_view w) {
+    static constexpr std::string_view kItems[] = {
+        "agate",      "bozo",       "granite",    "leopard",      "marble",
+        "mandel",     "onion",      "spotted",    "wood",         "gradient",
+        "checker",    "hexagon",    "square",     "triangular",   "image_map",
+        "turbulence", "colour_map", "color_map",  "quick_colour", "quick_color",
+        "octaves",    "omega",      "lambda",     "bumps",        "dents",
+        "ripples",    "waves",      "wrinkles",   "bump_map",     "frequency",
+        "phase",      "ambient",    "brilliance", "diffuse",      "reflection",
+        "phong",      "phong_size", "specular",   "roughness",    "metallic",
+        "crand",      "ior",        "refraction", "color",        "colour",
+        "rgb",        "rgbf",       "rgbt",       "rgbft",        "red",
+        "green",      "blue",       "filter",     "transmit",     "alpha"};
+    return std::find(std::begin(kItems), std::end(kItems), w) != std::end(kItems);
+}
+
+}  // namespace
+
 LayeredTexture Interpreter::parse_texture_block() {
     expect_punct('{', "after 'texture'");
     LayeredTexture layers;
@@ -1314,6 +1337,13 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
             continue;
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
+        // Below version 3.0 POV-Ray reads pigment, normal and finish items written
+        // straight in the texture (Parse_Vers1_Texture): `texture { marble colour_map
+        // {..} phong 1 }`, where 3.x reads a texture_map pattern. Not read yet: said so.
+        if (language_version() < 300 && (is_vers1_texture_item(w) || starts_float(t)))
+            unsupported(t, "POV-Ray 1.0/2.0 texture syntax ('" +
+                               std::string(t.kind == TokenKind::Word ? w : "a number") +
+                               "' written straight in a texture)");
         Texture& top = layers.back();
         // pigment, normal and finish edit what the texture holds (from its identifier
         // or the default texture), so a second block continues from the first.

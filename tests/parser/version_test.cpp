@@ -162,5 +162,27 @@ TEST(Version, SrgbNeedsAssumedGammaAndDecodesIntoTheWorkingGamma) {
     EXPECT_NEAR(s.objects[0].texture[0].pigment.colour.rgb.r, 0.49623, 1e-5);
 }
 
+
+// Below 3.0 a pattern, colour or finish item written straight in a texture is POV-Ray's
+// version 1 syntax (not read yet): a located unsupported, not a syntax error, and not a
+// 3.x texture_map pattern rendered without its map. From 3.0 on, the 3.x rules.
+TEST(Version, VersionOneTextureItemsAreRefusedBelowThreeZero) {
+    auto first_line = [](const std::string& text) {
+        const std::string e = error_of(text);
+        return e.substr(0, e.find('\n'));
+    };
+    EXPECT_EQ(first_line("#version 2.0;\nsphere { 0, 1 texture { marble } }"),
+              "test.pov:2:25: error: unsupported: POV-Ray 1.0/2.0 texture syntax "
+              "('marble' written straight in a texture)");
+    EXPECT_EQ(
+        first_line("#version 1.0\nsphere { 0, 1 texture { pigment { rgb 1 } 0.2 } }"),
+        "test.pov:2:43: error: unsupported: POV-Ray 1.0/2.0 texture syntax ('a "
+        "number' written straight in a texture)");
+    EXPECT_EQ(first_line("#version 1.0\nsphere { 0, 1 texture { pigment { rgb 1 } } }"),
+              "(no error)");
+    EXPECT_EQ(first_line("#version 3.0;\nsphere { 0, 1 texture { marble } }"),
+              "(no error)");
+}
+
 }  // namespace
 }  // namespace povwall::parser
