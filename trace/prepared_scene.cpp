@@ -197,9 +197,7 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
         // they come; every other CSG collects each child's on a stack of its own and
         // moves them over from the top, reversing them (csg.cpp All_Intersections).
         const bool reversed = pov != PovCsg::Union || o.inverse || !o.clipped_by->empty();
-        std::vector<WorldCrossing> tmp;
         for (size_t i = 0; i < csg->children.size(); ++i) {
-            tmp.clear();
             // A child's bound is never removed: a ray outside it skips the child (its
             // inside still counts for the others' crossings).
             const Object& child = csg->children[i];
@@ -211,10 +209,14 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             const bool child_inverted =
                 inverted != (csg->kind == CsgKind::Difference && i > 0 &&
                              std::holds_alternative<Csg>(child.shape));
-            object_crossings(child, ray, tmp, true, nullptr, flags, child_inverted);
-            if (reversed) std::reverse(tmp.begin(), tmp.end());
-            for (WorldCrossing c : tmp) {
-                Point3 p = c.at(ray);
+            // The child's crossings go straight into `out` and are filtered there (no
+            // buffer per CSG per ray).
+            const size_t mark = out.size();
+            object_crossings(child, ray, out, true, nullptr, flags, child_inverted);
+            if (reversed) std::reverse(out.begin() + ptrdiff_t(mark), out.end());
+            size_t kept = mark;
+            for (size_t k = mark; k < out.size(); ++k) {
+                const Point3 p = out[k].at(ray);
                 bool keep = true;
                 for (size_t j = 0; j < csg->children.size() && keep; ++j) {
                     if (j == i || skipped(j)) continue;
@@ -241,9 +243,11 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
                 if (!keep) continue;
                 if (csg->kind == CsgKind::Difference && i > 0 &&
                     difference_inverts(child))
-                    c.flip = !c.flip;
-                out.push_back(c);
+                    out[k].flip = !out[k].flip;
+                if (kept != k) out[kept] = out[k];
+                ++kept;
             }
+            out.resize(kept);
         }
         if (o.inverse) {
             for (size_t k = start; k < out.size(); ++k) out[k].flip = !out[k].flip;
