@@ -269,6 +269,10 @@ void Interpreter::directive_while(const Token& t) {
     }
 }
 
+// POV-Ray's #for runs while the variable is within EPSILON (1e-10) past the end, so
+// accumulated rounding (0.1 added ten times) does not drop the last pass.
+constexpr double kForEpsilon = 1e-10;
+
 void Interpreter::directive_for(const Token& t) {
     expect_punct('(');
     Token var = next_raw();
@@ -282,9 +286,12 @@ void Interpreter::directive_for(const Token& t) {
     double step = 1;
     if (starts_float(peek())) step = parse_float();
     expect_punct(')');
-    if (step == 0) error(t, "#for step must not be zero");
-    declare(std::string(var.text), Numeric::scalar(start), false, var);
-    bool run = step > 0 ? start <= end : start >= end;
+    if (std::fabs(step) < kForEpsilon) error(t, "#for loop increment must be non-zero.");
+    // The loop variable belongs to the current scope, as a #local (POV-Ray's
+    // Parse_For_Param adds it to the innermost table): a macro's loop leaves its caller's
+    // variable of the same name alone.
+    declare(std::string(var.text), Numeric::scalar(start), true, var);
+    bool run = step > 0 ? start < end + kForEpsilon : start > end - kForEpsilon;
     if (!run) {
         skip_conditional(t, false);
         return;
@@ -315,8 +322,9 @@ void Interpreter::directive_end(const Token& t) {
             if (!n)
                 error(t, "#for loop variable '" + c.var + "' was undefined in the loop");
             double value = n->c[0] + c.step;
-            declare(c.var, Numeric::scalar(value), false, t);
-            if (c.step > 0 ? value <= c.end : value >= c.end) {
+            declare(c.var, Numeric::scalar(value), true, t);
+            if (c.step > 0 ? value <= c.end + kForEpsilon
+                           : value >= c.end - kForEpsilon) {
                 if (++c.iterations > options_.max_loop_iterations) {
                     error(c.at, "#for loop ran " +
                                     std::to_string(options_.max_loop_iterations) +

@@ -411,6 +411,26 @@ Say(A[1][2])
               "test.pov:2:9: error: 'A' is not an array");
 }
 
+// A #for variable belongs to the current scope (POV-Ray's Parse_For_Param adds it to the
+// innermost table): a macro looping over `i` leaves its caller's `i` alone (a scene's
+// nested macros looped forever). The loop runs while within 1e-10 past its end.
+TEST(Directives, ForVariableIsLocalToItsMacro) {
+    std::string out;
+    parse(R"(
+#macro Row() #for (i, 1, 2) #debug "r" #end #end
+#for (i, 1, 3) Row() #debug concat(str(i, 0, 0), ";") #end
+#declare N = 0;
+#for (X, 0, 1, 0.1) #declare N = N + 1; #end
+#debug concat(str(N, 0, 0), ";")
+#for (J, 3, 1, -1) #debug str(J, 0, 0) #end
+)",
+          &out);
+    EXPECT_EQ(out, "rr1;rr2;rr3;11;321");
+    const std::string e = error_of("#for (i, 1, 2, 1e-11) #end");
+    EXPECT_EQ(e.substr(0, e.find('\n')),
+              "test.pov:1:1: error: #for loop increment must be non-zero.");
+}
+
 // Function-language errors are located; an internal function povwall lacks stops only a
 // scene that uses it (functions.inc declares all of them).
 TEST(Functions, LocatedErrorsAndTolerance) {
@@ -636,7 +656,7 @@ TEST(BadInput, LocatedErrorsInsteadOfCrashesOrHangs) {
               "test.pov:1:93: error: expected an expression but found '}'");
     EXPECT_EQ(first_line("#declare A = array[100000][100000][1000];"),
               "test.pov:1:28: error: array too large");
-    EXPECT_EQ(first_line("#for (I, 0, 1, 1e-12) #end"),
+    EXPECT_EQ(first_line("#for (I, 0, 1, 1e-9) #end"),
               "test.pov:1:1: error: #for loop ran 10000000 times: runaway loop? "
               "(--max-loop-iterations)");
 }
