@@ -677,6 +677,31 @@ Fog Interpreter::parse_fog() {
     return f;
 }
 
+namespace {
+
+// POV-Ray makes a mesh face flat when its three vertex normals, normalised, are equal
+// (|n1 - n2|^2 and |n1 - n3|^2 at most 1e-10: Parse_Mesh, Parse_Mesh2): the face's own
+// normal is used, not the one given (exporters write every corner of a flat face with
+// one shared normal that need not be the face's).
+void flatten_faces_with_equal_normals(Mesh& mesh) {
+    for (Mesh::Face& f : mesh.faces) {
+        if (f.n[0] < 0 || f.n[1] < 0 || f.n[2] < 0) continue;
+        Vector3 n[3];
+        bool usable = true;
+        for (int k = 0; k < 3; ++k) {
+            const Vector3 v = mesh.normals[size_t(f.n[k])];
+            const Real len = length(v);
+            usable = usable && len > 0;
+            n[k] = len > 0 ? v / len : v;
+        }
+        if (!usable) continue;
+        const Vector3 d1 = n[0] - n[1], d2 = n[0] - n[2];
+        if (dot(d1, d1) <= 1e-10 && dot(d2, d2) <= 1e-10) f.n[0] = f.n[1] = f.n[2] = -1;
+    }
+}
+
+}  // namespace
+
 void Interpreter::parse_mesh(Object& out) {
     Mesh mesh;
     std::vector<LayeredTexture> textures;
@@ -756,6 +781,7 @@ void Interpreter::parse_mesh(Object& out) {
     if (accept_word("inside_vector")) {
         mesh.inside_vector = parse_vector();
     }
+    flatten_faces_with_equal_normals(mesh);
     out.shape = std::move(mesh);
 }
 
@@ -1040,6 +1066,7 @@ void Interpreter::parse_mesh2(Object& out) {
     }
     mesh.faces.resize(kept);
     if (!mesh.uv_faces.empty()) mesh.uv_faces.resize(kept);
+    flatten_faces_with_equal_normals(mesh);
     out.shape = std::move(mesh);
 }
 

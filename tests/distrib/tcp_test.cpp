@@ -356,6 +356,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "inverse_csg",
                              "csg_inverted_union",
                              "coincident_copies",
+                             "mesh_normal_rules",
                              "map_entries",
                              "palette_images",
                              "mesh_corner_textures",

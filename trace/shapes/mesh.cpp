@@ -23,9 +23,15 @@ void shape_hits(const Mesh& m, const LocalRay& r, ShapeHits& out) {
 }
 
 Vector3 shape_normal(const Mesh& m, const ShapeHit& h) {
+    const Mesh::Face& f = m.faces[size_t(h.face)];
     Point3 p[3];
-    mesh_face_corners(m, m.faces[size_t(h.face)], p);
-    return pov_triangle_normal(p);
+    mesh_face_corners(m, f, p);
+    if (f.n[0] < 0 || f.n[1] < 0 || f.n[2] < 0) return pov_triangle_normal(p);
+    // A smooth face (in CSG or clipped, as outside them): its unit vertex normals
+    // interpolated at the hit, in the mesh's own space as POV-Ray's.
+    Vector3 n[3];
+    for (int k = 0; k < 3; ++k) n[k] = normalize(m.normals[size_t(f.n[k])]);
+    return normalize(smooth_triangle_normal(p, n, h.p));
 }
 
 bool shape_inside(const Mesh& m, const Point3& q) {
