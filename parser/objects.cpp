@@ -1072,6 +1072,15 @@ void Interpreter::parse_top_level_item(const Token& t) {
             directive_default();
             return;
         }
+        if (w == "declare" || w == "include") {
+            // Old scenes write these without '#' between objects; POV-Ray's frame takes
+            // them as the directives, with its warning.
+            warn(t, "Should have '#' before '" + std::string(w) + "'.");
+            Token directive = t;
+            directive.kind = TokenKind::Directive;
+            run_directive(directive);
+            return;
+        }
         if (w == "media") {
             if (area_light_attenuated_by_media_)
                 unsupported(t,

@@ -431,6 +431,22 @@ TEST(Directives, ForVariableIsLocalToItsMacro) {
               "test.pov:1:1: error: #for loop increment must be non-zero.");
 }
 
+// `declare` and `include` written without '#' between scene items: POV-Ray runs them as
+// the directives, with its warning.
+TEST(Directives, DeclareAndIncludeWithoutHash) {
+    std::string out;
+    Scene s = parse(R"(
+declare R = 2;
+sphere { 0, R }
+#debug concat(str(R, 0, 0), ";")
+)",
+                    &out);
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_NE(out.find("test.pov:2:1: warning: Should have '#' before 'declare'."),
+              std::string::npos);
+    EXPECT_NE(out.find("2;"), std::string::npos);
+}
+
 // Function-language errors are located; an internal function povwall lacks stops only a
 // scene that uses it (functions.inc declares all of them).
 TEST(Functions, LocatedErrorsAndTolerance) {
