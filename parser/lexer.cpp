@@ -65,7 +65,8 @@ void lex(SourceManager& sm, int file_index, SourceFile& f) {
             continue;
         }
         if (c == '/' && i + 1 < n && s[i + 1] == '/') {
-            while (i < n && s[i] != '\n') ++i;
+            while (i < n && s[i] != '\n' && s[i] != '\r')
+                ++i;  // CR alone ends a line too
             continue;
         }
         if (c == '/' && i + 1 < n && s[i + 1] == '*') {
@@ -250,11 +251,27 @@ int SourceManager::add(std::string path, SourceText text) {
     // memchr from line to line: a byte loop was 6 % of a 48 MB mesh2 file's parse.
     const char* begin = f->text.data();
     const char* end = begin + f->text.size();
-    for (const char* p = begin; p < end;) {
-        const void* nl = std::memchr(p, '\n', size_t(end - p));
-        if (!nl) break;
-        p = static_cast<const char*>(nl) + 1;
-        f->line_starts.push_back(uint32_t(p - begin));
+    // A carriage return alone ends a line too (classic Mac files), as POV-Ray reads it;
+    // CR LF is one line break. Files without a lone CR take the memchr path.
+    bool lone_cr = false;
+    for (const char* p = begin; p < end && !lone_cr;) {
+        const void* cr = std::memchr(p, '\r', size_t(end - p));
+        if (!cr) break;
+        p = static_cast<const char*>(cr) + 1;
+        lone_cr = p == end || *p != '\n';
+    }
+    if (lone_cr) {
+        for (const char* p = begin; p < end; ++p) {
+            if (*p == '\n' || (*p == '\r' && (p + 1 == end || p[1] != '\n')))
+                f->line_starts.push_back(uint32_t(p + 1 - begin));
+        }
+    } else {
+        for (const char* p = begin; p < end;) {
+            const void* nl = std::memchr(p, '\n', size_t(end - p));
+            if (!nl) break;
+            p = static_cast<const char*>(nl) + 1;
+            f->line_starts.push_back(uint32_t(p - begin));
+        }
     }
     int index = int(files_.size());
     f->index = index;

@@ -645,5 +645,15 @@ TEST(LegacySemicolons, MacroCallsAndLocals) {
     EXPECT_EQ(out.find("error"), std::string::npos) << out;
 }
 
+// A carriage return alone ends a line (classic Mac files, a PoseRay export), as POV-Ray
+// reads it: a // comment stops there, and errors name the right line; CR LF is one break.
+TEST(LineEndings, CarriageReturnAloneEndsALine) {
+    EXPECT_EQ(debug_of("// comment\r#debug \"a\"\r// more\r#debug \"b\""), "ab");
+    EXPECT_EQ(error_of("#declare A = 1;\r// c\rsphere { 0, 1 foo }"),
+              "test.pov:3:15: error: expected an object modifier or '}' but found 'foo'");
+    EXPECT_EQ(error_of("#declare A = 1;\r\n// c\r\nsphere { 0, 1 foo }"),
+              "test.pov:3:15: error: expected an object modifier or '}' but found 'foo'");
+}
+
 }  // namespace
 }  // namespace povwall::parser
