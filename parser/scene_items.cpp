@@ -397,7 +397,9 @@ Light Interpreter::parse_light_block() {
         Colour c = parse_colour_value();
         l.colour = c.rgb;
     }
-    bool parallel = false;
+    // POV-Ray's parallel flag, apart from the light's one type (a copied light keeps it).
+    bool parallel = l.kind == Light::Kind::Parallel || l.parallel;
+    if (l.kind == Light::Kind::Parallel) l.kind = Light::Kind::Point;
     bool jitter = false, circular = false, orient = false;
     std::optional<bool> illumination;      // area_illumination, when named
     std::optional<Token> illumination_at;  // where it was last turned on
@@ -415,11 +417,17 @@ Light Interpreter::parse_light_block() {
         // As POV-Ray: the light type keyword resets its cone; `parallel` is a flag of its
         // own (cylinder lights have it); the cone items need a spot or cylinder light.
         const bool coned = l.kind == Light::Kind::Spot || l.kind == Light::Kind::Cylinder;
+        // A light has one type (POV-Ray's Light_Type): point, shadowless (a fill light),
+        // spotlight or cylinder, the last one written; shadowless after a spotlight
+        // turns it into a shadowless point light, a spotlight after shadowless casts
+        // shadows.
         if (w == "spotlight") {
             l.kind = Light::Kind::Spot;
+            l.shadowless = false;
             l.radius = 30, l.falloff = 45, l.tightness = 0;
         } else if (w == "cylinder") {
             l.kind = Light::Kind::Cylinder;
+            l.shadowless = false;
             l.radius = 0.75, l.falloff = 1, l.tightness = 0;
             parallel = true;
         } else if (w == "parallel") {
@@ -441,9 +449,10 @@ Light Interpreter::parse_light_block() {
             l.fade_distance = parse_float();
         else if (w == "fade_power")
             l.fade_power = parse_float();
-        else if (w == "shadowless")
+        else if (w == "shadowless") {
+            l.kind = Light::Kind::Point;
             l.shadowless = true;
-        else if (w == "media_interaction")
+        } else if (w == "media_interaction")
             l.media_interaction = parse_bool_opt();
         else if (w == "media_attenuation") {
             l.media_attenuation = parse_bool_opt();

@@ -244,6 +244,33 @@ light_source { <0, 5, 0> rgb 1 cylinder point_at 0 }
               "                    ^~~~~~~~");
 }
 
+// One light type, the last written: shadowless after a spotlight makes a shadowless point
+// light (then point_at is POV-Ray's error); a spotlight or cylinder after shadowless
+// casts shadows; a copied parallel light keeps its flag.
+TEST(Lights, ShadowlessIsALightTypeLikeSpotlight) {
+    Scene s = parse(R"(
+light_source { <0, 5, 0> rgb 1 shadowless spotlight point_at 0 }
+light_source { <0, 5, 0> rgb 1 spotlight shadowless }
+light_source { <0, 5, 0> rgb 1 shadowless cylinder point_at 0 }
+#declare P = light_source { <0, 5, 0> rgb 1 parallel point_at 0 }
+light_source { P point_at x }
+)");
+    ASSERT_EQ(s.lights.size(), 4u);
+    EXPECT_EQ(s.lights[0].kind, Light::Kind::Spot);
+    EXPECT_FALSE(s.lights[0].shadowless);
+    EXPECT_EQ(s.lights[1].kind, Light::Kind::Point);
+    EXPECT_TRUE(s.lights[1].shadowless);
+    EXPECT_EQ(s.lights[2].kind, Light::Kind::Cylinder);
+    EXPECT_FALSE(s.lights[2].shadowless);
+    EXPECT_EQ(s.lights[3].kind, Light::Kind::Parallel);
+    EXPECT_EQ(s.lights[3].point_at, (Vector3{1, 0, 0}));
+    EXPECT_EQ(error_of("light_source { 0, 1 spotlight shadowless point_at x }"),
+              "test.pov:1:42: error: 'point_at' cannot be used with a standard light "
+              "source\n"
+              "light_source { 0, 1 spotlight shadowless point_at x }\n"
+              "                                         ^~~~~~~~");
+}
+
 // area_illumination is an area light's item, before or after area_light; a copy keeps it
 // (and the other area items) unless it says otherwise, even with a grid of its own.
 TEST(Lights, AreaIlluminationIsAnAreaLightItem) {
