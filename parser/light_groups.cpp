@@ -49,7 +49,18 @@ void Interpreter::parse_light_group(const Token& keyword, Object& out) {
             continue;
         }
         Object child;
-        if (!try_parse_object(c, child)) {
+        // A declared light or object written bare, as POV-Ray's Parse_Object reads the
+        // group's members (exporters write them so).
+        const Value* declared = lookup(c);
+        if (auto l = declared ? std::get_if<std::shared_ptr<Light>>(declared) : nullptr) {
+            csg.lights.push_back(**l);
+            continue;
+        }
+        if (auto o =
+                declared ? std::get_if<std::shared_ptr<Object>>(declared) : nullptr) {
+            child = **o;
+            child.loc = sources_.location(c);
+        } else if (!try_parse_object(c, child)) {
             unget(c);
             break;
         }

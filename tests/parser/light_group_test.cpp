@@ -77,6 +77,25 @@ TEST(LightGroup, NestingAndCopies) {
                                             {4, false}}));
 }
 
+// Members written as bare identifiers (vtkPOVExporter scenes): a declared light is the
+// group's light, a declared object its member, as `light_source { L }` and `object { S
+// }`.
+TEST(LightGroup, BareIdentifiersAreMembers) {
+    Scene bare = parse(
+        "#declare L = light_source { <1, 2, 3> rgb 1 }\n"
+        "#declare S = sphere { 0, 1 }\n"
+        "light_group { L S translate x }\n");
+    Scene written = parse(
+        "#declare L = light_source { <1, 2, 3> rgb 1 }\n"
+        "#declare S = sphere { 0, 1 }\n"
+        "light_group { light_source { L } object { S } translate x }\n");
+    EXPECT_EQ(light_groups(bare), (std::vector<uint32_t>{1}));
+    EXPECT_EQ(leaves(bare), (std::vector<Leaf>{{1, false}}));
+    EXPECT_EQ(light_groups(bare), light_groups(written));
+    EXPECT_EQ(leaves(bare), leaves(written));
+    EXPECT_DOUBLE_EQ(bare.lights.at(0).location.x, 2);
+}
+
 TEST(LightGroup, RefusalsAndErrors) {
     // Media are lit by the lights of the object a ray ends on (golden
     // light_group_media): no refusal.
