@@ -122,10 +122,13 @@ double evaluate_function(const FunctionProgram& f, const double* args,
                 float c[5] = {0, 0, 0, 0, 0};
                 if (hooks.pigment)
                     hooks.pigment(*f.pigments[in.index], p, hooks.context, c);
-                stack[top] = in.component == 5
-                                 ? double(c[0]) * 0.297 + double(c[1]) * 0.589 +
-                                       double(c[2]) * 0.114
-                                 : double(c[in.component]);
+                // Component 5: gray; 6: MegaPOV's .hf, (red + green / 255) x 0.996093.
+                stack[top] =
+                    in.component == 5 ? double(c[0]) * 0.297 + double(c[1]) * 0.589 +
+                                            double(c[2]) * 0.114
+                    : in.component == 6
+                        ? (double(c[0]) + double(c[1]) * (1.0 / 255.0)) * 0.996093
+                        : double(c[in.component]);
                 ++top;
                 break;
             }

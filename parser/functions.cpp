@@ -169,6 +169,9 @@ class FunctionCompiler {
         Token m = in_.next();
         int c = m.kind == TokenKind::Word ? component_index(m.text) : -1;
         if (m.kind == TokenKind::Word && (m.text == "gray" || m.text == "grey")) c = 5;
+        // MegaPOV's height-field member, which POV-Ray 3.7 keeps: (red + green / 255) x
+        // 0.996093 (a pigment's 16-bit height).
+        if (m.kind == TokenKind::Word && m.text == "hf") c = 6;
         if (c < 0)
             in_.expected("a component name (x, y, z, t, red, gray, ...) after '.'", m);
         return c;
