@@ -89,7 +89,8 @@ void Interpreter::run_directive(const Token& t) {
     if (d == "undef") {
         Token name = next_raw();
         if (name.kind != TokenKind::Word) expected("an identifier", name);
-        if (is_punct(peek(), '[')) {
+        // Raw: a directive after the name must not run before the #undef.
+        if (raw_next_is_punct('[')) {
             // #undef A[i]: the element is unassigned again (POV-Ray's Remove_Symbol);
             // one never assigned is POV-Ray's parse error.
             std::shared_ptr<ArrayValue> arr;

@@ -47,6 +47,9 @@ Show("gradient 1", Grad(1, 0, 0)) Show("gradient 1.25", Grad(1.25, 0, 0)) Show("
 #declare Pig = function { pigment { gradient x color_map { [0 rgb <0, 0.2, 1>] [1 rgb <1, 0.6, 0>] } } }
 #declare PigUse = function { Pig(x, y, z).red + Pig(x, y, z).green * 10 + Pig(x, y, z).gray * 100 }
 Show("pigment", PigUse(0.3, 0, 0))
+// MegaPOV's .hf member, kept by POV-Ray 3.7: (red + green / 255) x 0.996093.
+#declare PigHf = function { Pig(x, y, z).hf }
+Show("pigment hf", PigHf(0.3, 0, 0))
 #declare C = Pig(0.6, 0, 0);
 #debug concat("pigment call ", vstr(5, C, " ", 0, 9), "\n")
 #declare S = function { spline { linear_spline 0, <0, 1, 2>, 1, <2, 3, 4> } }

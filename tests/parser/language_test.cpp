@@ -447,20 +447,6 @@ sphere { 0, R }
     EXPECT_NE(out.find("2;"), std::string::npos);
 }
 
-// A pigment function's members: .gray with POV-Ray's weights and MegaPOV's .hf,
-// (red + green / 255) x 0.996093, which POV-Ray 3.7 keeps (values printed by POV-Ray).
-TEST(Functions, PigmentMembersGrayAndHf) {
-    std::string out;
-    parse(R"(
-#declare P = function { pigment { gradient x color_map { [0 rgb <0,0,0>] [1 rgb <1,1,0>] } } }
-#declare F = function { P(x, y, z).hf }
-#declare G = function { P(x, y, z).gray }
-#debug concat(str(F(0.5, 0, 0), 0, 8), " ", str(G(0.5, 0, 0), 0, 8))
-)",
-          &out);
-    EXPECT_EQ(out, "0.49999962 0.44300000");
-}
-
 // Function-language errors are located; an internal function povwall lacks stops only a
 // scene that uses it (functions.inc declares all of them).
 TEST(Functions, LocatedErrorsAndTolerance) {
