@@ -171,37 +171,108 @@ void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, Real& max
     stable_sort_by_depth(out, first);
 }
 
-void clipped_hits(const Isosurface& s, const LocalRay& r, const IsosurfaceClip* clip,
-                  ShapeHits& out) {
-    const size_t first = out.size();
-    // With `evaluate` POV-Ray writes each search's final estimate back into the object
-    // (the larger of the two), shared by all later rays of every thread, so its image
-    // depends on the order of its rays. Here each ray starts from the parsed
-    // max_gradient (the same image in every mode); its restarts below start from its own
-    // estimate, as POV-Ray's restarted ray starts from the written-back one.
+// The crossings along one ray, as found so far: the first batch (hits_once) and,
+// outside CSG, the restarts past it. With `evaluate` POV-Ray writes each search's final
+// estimate back into the object (the larger of the two), shared by all later rays of
+// every thread, so its image depends on the order of its rays. Here each ray starts from
+// the parsed max_gradient (the same image in every mode); its restarts start from its own
+// estimate (`reached`), as POV-Ray's restarted ray starts from the written-back one.
+struct RayHits {
+    ShapeHits hits;
+    Real reached = 0;       // the max_gradient estimate the batch ended with
+    bool complete = false;  // the restarts are in (or there are none)
+};
+
+void first_batch(const Isosurface& s, const LocalRay& r, const IsosurfaceClip* clip,
+                 RayHits& h) {
+    h.hits.clear();
+    h.reached = s.max_gradient;
+    hits_once(s, r.origin, r.direction, h.reached, clip, 0, h.hits);
+    // In CSG POV-Ray takes the one batch; outside it, it looks past a hit (a shadow
+    // through a transparent isosurface) with a ray restarted there.
+    h.complete = r.csg_child || h.hits.empty();
+}
+
+// povwall follows one ray: the restarts are made here, each from the farthest hit so far.
+void add_restarts(const Isosurface& s, const LocalRay& r, const IsosurfaceClip* clip,
+                  RayHits& h) {
     Real start = s.max_gradient;
-    Real reached = start;
-    hits_once(s, r.origin, r.direction, reached, clip, 0, out);
-    if (r.csg_child) return;
-    // Outside CSG POV-Ray looks past a hit (a shadow through a transparent isosurface)
-    // with a ray restarted there, where povwall follows one ray: the restarts are made
-    // here, each from the farthest hit so far.
     thread_local ShapeHits more;
-    for (int restart = 0; restart < 32 && out.size() > first; ++restart) {
-        const Real t0 = out.back().t;
+    for (int restart = 0; restart < 32 && !h.hits.empty(); ++restart) {
+        const Real t0 = h.hits.back().t;
         more.clear();
-        start = std::max(start, reached);
-        reached = start;
-        hits_once(s, r.origin + r.direction * t0, r.direction, reached, clip, t0, more);
+        start = std::max(start, h.reached);
+        h.reached = start;
+        hits_once(s, r.origin + r.direction * t0, r.direction, h.reached, clip, t0, more);
         bool progressed = false;
-        for (const ShapeHit& h : more) {
-            if (!(h.t > 0)) continue;
-            const Real t = t0 + h.t;
-            out.push_back({t, r.origin + r.direction * t, h.face});
+        for (const ShapeHit& m : more) {
+            if (!(m.t > 0)) continue;
+            const Real t = t0 + m.t;
+            h.hits.push_back({t, r.origin + r.direction * t, m.face});
             progressed = true;
         }
         if (!progressed) break;
     }
+    h.complete = true;
+}
+
+// The restarts only add crossings beyond the first batch's farthest: a query that keeps
+// the nearest one in [want_lo, want_hi) (a camera, reflected or shadow ray) has it
+// already when the batch holds one at or past want_lo (in the range, or beyond it and so
+// are the restarts').
+bool answers(const RayHits& h, const LocalRay& r) {
+    return h.complete || (r.nearest_only && h.hits.back().t >= r.want_lo);
+}
+
+// The last ray's crossings, per thread: a shadow ray through a transparent isosurface
+// asks for them once per surface it passes (each time from further along), and the
+// root search is the costly part. An equal shape (the same function, held here so that
+// its address stays its own, and equal settings) met by the same ray, bit for bit, and
+// no clip: the same crossings, whichever scene the shape is in.
+bool same_isosurface(const Isosurface& a, const Isosurface& b) {
+    return a.function == b.function && a.sphere_container == b.sphere_container &&
+           a.corner1 == b.corner1 && a.corner2 == b.corner2 && a.centre == b.centre &&
+           a.radius == b.radius && a.threshold == b.threshold &&
+           a.accuracy == b.accuracy && a.max_gradient == b.max_gradient &&
+           a.max_trace == b.max_trace && a.closed == b.closed &&
+           a.evaluate == b.evaluate && a.eval_param[0] == b.eval_param[0] &&
+           a.eval_param[1] == b.eval_param[1] && a.eval_param[2] == b.eval_param[2] &&
+           a.noise_generator == b.noise_generator &&
+           a.number_of_waves == b.number_of_waves;
+}
+
+struct LastRay {
+    bool valid = false;
+    Isosurface shape;
+    Point3 origin;
+    Vector3 direction;
+    bool csg_child = false;
+    RayHits found;
+};
+
+void clipped_hits(const Isosurface& s, const LocalRay& r, const IsosurfaceClip* clip,
+                  ShapeHits& out) {
+    if (clip) {  // the clip's context is the caller's: nothing to compare
+        thread_local RayHits h;
+        first_batch(s, r, clip, h);
+        if (!answers(h, r)) add_restarts(s, r, clip, h);
+        out.insert(out.end(), h.hits.begin(), h.hits.end());
+        return;
+    }
+    thread_local LastRay last;
+    const bool same = last.valid && last.origin == r.origin &&
+                      last.direction == r.direction && last.csg_child == r.csg_child &&
+                      same_isosurface(last.shape, s);
+    if (!same) {
+        last.valid = true;
+        last.shape = s;
+        last.origin = r.origin;
+        last.direction = r.direction;
+        last.csg_child = r.csg_child;
+        first_batch(s, r, nullptr, last.found);
+    }
+    if (!answers(last.found, r)) add_restarts(s, r, nullptr, last.found);
+    out.insert(out.end(), last.found.hits.begin(), last.found.hits.end());
 }
 
 }  // namespace
