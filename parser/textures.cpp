@@ -746,6 +746,11 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
         } else if (w == "color_map" || w == "colour_map") {
             if (entry_list_size(p.pattern->kind))
                 error(t, "Cannot use color_map with this pattern type.");
+            // It replaces a pigment_map the pigment had, as any map replaces the last.
+            if (p.maps.allocated()) {
+                p.maps.edit().map_values.clear();
+                p.maps.edit().list.clear();
+            }
             p.maps.edit().colour_map = parse_colour_map_block();
         } else if (w == "pigment_map" || w == "density_map") {
             if (w == "pigment_map" && entry_list_size(p.pattern->kind))
@@ -769,6 +774,14 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                 }
             }
             expect_punct('{', density ? "after 'density_map'" : "after 'pigment_map'");
+            // The map replaces the one a pigment identifier or an earlier map gave
+            // (POV-Ray's Parse_Pigment destroys the old blend map).
+            if (p.maps.allocated()) {
+                PigmentMaps& m = p.maps.edit();
+                m.colour_map.clear();
+                m.map_values.clear();
+                m.list.clear();
+            }
             for (;;) {
                 Token e = next();
                 if (is_punct(e, '}')) break;

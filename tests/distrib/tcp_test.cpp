@@ -357,6 +357,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "csg_inverted_union",
                              "coincident_copies",
                              "mesh_normal_rules",
+                             "pigment_map_replaced",
                              "map_entries",
                              "palette_images",
                              "mesh_corner_textures",
