@@ -919,7 +919,11 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         Rgb reflectivity{0.0f};
         float reflection_weight = 0;
         if (has_reflection) {
-            Real cos_i = std::fabs(dot(D, Nl));
+            // Signed, as POV-Ray's ComputeLightedTexture: where the layer's normal
+            // pattern tilts Nl away from the ray (cos_i < 0), fresnel clamps to
+            // reflection_max, the variable fraction 1 - cos_i exceeds 1 and metallic's
+            // tint goes by an angle past 90 degrees.
+            const Real cos_i = -dot(D, Nl);
             Rgb& reflec = reflectivity;
             float& w = reflection_weight;
             if (f.reflection_fresnel) {
