@@ -919,7 +919,11 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         Rgb reflectivity{0.0f};
         float reflection_weight = 0;
         if (has_reflection) {
-            Real cos_i = std::fabs(dot(D, Nl));
+            // Signed, as POV-Ray's ComputeLightedTexture: where the layer's normal
+            // pattern tilts Nl away from the ray (cos_i < 0), fresnel clamps to
+            // reflection_max, the variable fraction 1 - cos_i exceeds 1 and metallic's
+            // tint goes by an angle past 90 degrees.
+            const Real cos_i = -dot(D, Nl);
             Rgb& reflec = reflectivity;
             float& w = reflection_weight;
             if (f.reflection_fresnel) {
@@ -1353,17 +1357,19 @@ FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
 
 // What a ray that hits nothing crosses: the atmosphere out to POV-Ray's "infinite"
 // depth, 2e10 (lit or glowing media saturate the sky, absorbing media blacken it), then
-// fog up to its MAX_DISTANCE; only the fog inside a solid object.
+// fog up to its MAX_DISTANCE. Nothing inside a solid object (POV-Ray's TraceRay: rainbow,
+// atmosphere and fog only on a hollow ray, hit or miss): a ray that escapes while still
+// inside a solid transparent plane, disc or triangle shows the sky unfogged.
 FogEffect along_missing_ray(const PreparedScene& scene, const TraceRay& ray,
                             const MediaShadows& shadows) {
     const Scene& sc = scene.scene();
     FogEffect f;
     if ((sc.fogs.empty() && sc.atmosphere_media.empty() && sc.rainbows.empty()) ||
-        !scene.plan().quality.atmosphere() || !sees_volume(sc, ray))
+        !scene.plan().quality.atmosphere() || !sees_volume(sc, ray) ||
+        !hollow_ray(ray.interiors))
         return f;
-    if (!sc.rainbows.empty() && hollow_ray(ray.interiors))
-        f = rainbows(scene, ray.ray, 2e10);
-    if (!sc.atmosphere_media.empty() && hollow_ray(ray.interiors)) {
+    if (!sc.rainbows.empty()) f = rainbows(scene, ray.ray, 2e10);
+    if (!sc.atmosphere_media.empty()) {
         thread_local std::vector<const Media*> list;
         atmosphere_list(sc, list);
         f = then(f, viewing_media(scene, list, 1, ray, 2e10, {}, shadows));

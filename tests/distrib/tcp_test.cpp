@@ -343,7 +343,9 @@ TEST(Tcp, EveryShapeSceneIsInTheEveryModeList) {
 // The fixes of the real-scene issue (version state, tilted-normal reflection and
 // refraction, iridescence, inverse CSG, map entries, palette and corner textures, object
 // flags, continued rays at the last trace level, parallel lights behind their plane,
-// dispersion's bands, which travel with their rays between boxes):
+// dispersion's bands, which travel with their rays between boxes; reflectivity with a
+// normal tilted away from the ray, no fog on rays that escape inside a solid object,
+// whose interiors travel with them between boxes):
 // each matches POV-Ray in tests/golden and gives the one-process image in every mode.
 TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
     for (const char* name : {"version_include",
@@ -376,7 +378,11 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "light_parallel_behind_plane",
                              "light_fade_power_alone",
                              "shape_quadric_csg_boxes",
-                             "dispersion"}) {
+                             "dispersion",
+                             "reflection_backfacing_normals",
+                             "reflection_backfacing_normals_below",
+                             "fog_escape_nonhollow",
+                             "fog_escape_nonhollow_camera_inside"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(scene, "-W 40 -H 30",
