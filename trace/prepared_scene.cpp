@@ -214,6 +214,9 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             const size_t mark = out.size();
             object_crossings(child, ray, out, true, nullptr, flags, child_inverted);
             if (reversed) std::reverse(out.begin() + ptrdiff_t(mark), out.end());
+            // A union seen as a union keeps every crossing of its children: no inside
+            // tests (text is a union of glyphs, each inside test a glyph outline walk).
+            if (csg->kind == CsgKind::Union && pov != PovCsg::Intersection) continue;
             size_t kept = mark;
             for (size_t k = mark; k < out.size(); ++k) {
                 const Point3 p = out[k].at(ray);
