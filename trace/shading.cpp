@@ -329,10 +329,16 @@ Point3 texture_point(const Material& m, const Hit& hit) {
 
 // A layer's normal perturbed as POV-Ray does inside texture maps: the normal goes into
 // each enclosing map pattern's space (outermost first), is perturbed there, and comes
-// back out.
+// back out. `pattern_normal`, when given, takes the perturbed normal still in the maps'
+// space, which is what POV-Ray leaves for the patterns after it (its PNormal).
 Vector3 perturb_nested(const Normal& normal, const Point3& at, Vector3 n,
-                       const PatternEnv& env, const TextureNesting* nesting) {
-    if (!nesting) return perturb_normal(normal, at, n, env);
+                       const PatternEnv& env, const TextureNesting* nesting,
+                       Vector3* pattern_normal = nullptr) {
+    if (!nesting) {
+        n = perturb_normal(normal, at, n, env);
+        if (pattern_normal) *pattern_normal = n;
+        return n;
+    }
     constexpr int kMaxDepth = 64;
     const TextureNesting* chain[kMaxDepth];
     int depth = 0;
@@ -340,6 +346,7 @@ Vector3 perturb_nested(const Normal& normal, const Point3& at, Vector3 n,
         chain[depth++] = p;
     for (int i = depth - 1; i >= 0; --i) n = normal_into_pattern(*chain[i]->pattern, n);
     n = perturb_normal(normal, at, n, env);
+    if (pattern_normal) *pattern_normal = n;
     for (int i = 0; i < depth; ++i) n = normal_out_of_pattern(*chain[i]->pattern, n);
     return n;
 }
@@ -406,9 +413,13 @@ Rgb interior_attenuation(const Interior& in, Real distance, bool shadow_ray) {
 namespace {
 
 // spawn_children(), with or without the effect along the ray (`with_fog`: a stand-in
-// material of a blend shares the hit's, computed once).
+// material of a blend shares the hit's, computed once). `pattern_normal` is the normal
+// the hit's patterns read (POV-Ray's PNormal: the normal facing the ray, then each
+// layer's perturbed normal as the layers are shaded); POV-Ray keeps one per hit, so
+// the stand-ins of a blend or texture_map share their hit's (null: a hit of its own).
 void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
-               ShadingRecord& out, const MediaShadows& shadows, bool with_fog);
+               ShadingRecord& out, const MediaShadows& shadows, bool with_fog,
+               SurfaceAtHit* pattern_normal = nullptr);
 FogEffect along_ray(const PreparedScene& scene, const TraceRay& ray, Real depth,
                     MediaEndLights end, const MediaShadows& shadows);
 MediaEndLights media_end_lights(const Material& m) {
@@ -418,10 +429,14 @@ MediaEndLights media_end_lights(const Material& m) {
 // Shades `hit` once with each of `n` stand-in materials and merges the records with
 // their weights (POV-Ray sums the weighted colours of the textures it finds for a hit);
 // children keep combining linearly, and their interior stacks name the hit's own
-// material, not the stand-ins. `out.fog` is kept.
+// material, not the stand-ins. `out.fog` is kept. The stand-ins share the hit's
+// `pattern_normal`, so each one's patterns see the normal the ones shaded before it
+// left; `last_first` shades them from the last (POV-Ray shades a texture_map's upper
+// entry before the lower) while the record keeps them in order.
 void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     const Material* const* subs, const float* weights, int n,
-                    ShadingRecord& out, RayContext* trace) {
+                    ShadingRecord& out, RayContext* trace, SurfaceAtHit& pattern_normal,
+                    bool last_first = false) {
     FogEffect fog = out.fog;
     Rgb local;
     // A deque keeps references valid while nested texture maps grow it.
@@ -429,7 +444,8 @@ void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& 
     thread_local size_t depth = 0;
     if (scratch_pool.size() <= depth) scratch_pool.resize(depth + 1);
     std::vector<ChildRay> children;
-    for (int e = 0; e < n; ++e) {
+    for (int i = 0; i < n; ++i) {
+        const int e = last_first ? n - 1 - i : i;
         const float w = weights[e];
         Hit h = hit;
         h.material = subs[e];
@@ -439,9 +455,12 @@ void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         // tracer's context: a radiosity gather needs it.
         MediaShadows sub;
         sub.trace = trace;
-        spawn_hit(scene, ray, h, rec, sub, false);
+        spawn_hit(scene, ray, h, rec, sub, false, &pattern_normal);
         --depth;
         local += rec.local * w;
+        // Shaded from the last, each stand-in's children go before those of the ones
+        // after it.
+        size_t at = last_first ? 0 : children.size();
         for (ChildRay c : rec.children) {
             c.coeff *= w;
             c.transmit_factor *= w;
@@ -450,7 +469,7 @@ void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& 
                 if (c.trace.interiors.items[k] == subs[e])
                     c.trace.interiors.items[k] = hit.material;
             }
-            children.push_back(c);
+            children.insert(children.begin() + std::ptrdiff_t(at++), c);
         }
     }
     out.clear();
@@ -462,7 +481,8 @@ void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& 
 // A texture_map (or checker/hexagon/brick of textures) as the object's texture: POV-Ray
 // blends the final colours of the two entries around the pattern value.
 bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
-                       ShadingRecord& out, RayContext* trace) {
+                       ShadingRecord& out, RayContext* trace,
+                       SurfaceAtHit& pattern_normal) {
     const Material& m = *hit.material;
     if (m.plain || !m.texture || m.texture->size() != 1) return false;
     const Texture& t = m.texture->front();
@@ -488,13 +508,13 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
             used[size_t(i)] = &subs[size_t(i)];
             weights[size_t(i)] = (has_values ? t.map->values[size_t(i)] : 1.0f) / total;
         }
-        spawn_weighted(scene, ray, hit, used.data(), weights.data(), count, out, trace);
+        spawn_weighted(scene, ray, hit, used.data(), weights.data(), count, out, trace,
+                       pattern_normal);
         return true;
     }
-    const SurfaceAtHit surface = surface_facing(hit, ray.ray.direction);
     MapPick pick = pick_map_entries(
         *t.map_pattern, has_values ? t.map->values.data() : nullptr, count,
-        texture_point(m, hit), scene.pattern_env().at_surface(&surface));
+        texture_point(m, hit), scene.pattern_env().at_surface(&pattern_normal));
     const TextureNesting nest{&*t.map_pattern, pick.point, m.nesting};
     const int entries[2] = {pick.lookup.prev, pick.lookup.cur};
     const float fraction = float(pick.lookup.fraction);
@@ -513,14 +533,17 @@ bool spawn_texture_map(const PreparedScene& scene, const TraceRay& ray, const Hi
         used[n] = &subs[e];
         weights[n++] = w;
     }
-    spawn_weighted(scene, ray, hit, used, weights, n, out, trace);
+    // The upper entry first, as POV-Ray: the lower one's patterns see the normal the
+    // upper's layers left.
+    spawn_weighted(scene, ray, hit, used, weights, n, out, trace, pattern_normal, true);
     return true;
 }
 
 // A mesh face with a texture per corner: the corners' textures, weighted toward the hit
 // (textures below adc_bailout left out, as POV-Ray's ComputeTextureColour does).
 bool spawn_corner_blend(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
-                        ShadingRecord& out, RayContext* trace) {
+                        ShadingRecord& out, RayContext* trace,
+                        SurfaceAtHit& pattern_normal) {
     const TextureBlend* b = hit.material->blend;
     if (!b) return false;
     float w[3];
@@ -534,14 +557,15 @@ bool spawn_corner_blend(const PreparedScene& scene, const TraceRay& ray, const H
         used[n] = b->corners[k];
         weights[n++] = w[k];
     }
-    spawn_weighted(scene, ray, hit, used, weights, n, out, trace);
+    spawn_weighted(scene, ray, hit, used, weights, n, out, trace, pattern_normal);
     return true;
 }
 
 // A blob with textures on its components: the touching elements' textures weighted by
 // their |field| (POV-Ray's Blob::Determine_Textures), those below adc_bailout left out.
 bool spawn_blob_blend(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
-                      ShadingRecord& out, RayContext* trace) {
+                      ShadingRecord& out, RayContext* trace,
+                      SurfaceAtHit& pattern_normal) {
     const BlobTextureBlend* b = hit.material->blob_blend;
     if (!b) return false;
     thread_local std::vector<const Material*> mats;  // no allocation per ray
@@ -549,13 +573,15 @@ bool spawn_blob_blend(const PreparedScene& scene, const TraceRay& ray, const Hit
     const int n =
         blob_texture_weights(*b, hit.point, scene.scene().settings.adc_bailout, mats, w);
     if (!scene.scene().settings.radiosity) {
-        spawn_weighted(scene, ray, hit, mats.data(), w.data(), n, out, trace);
+        spawn_weighted(scene, ray, hit, mats.data(), w.data(), n, out, trace,
+                       pattern_normal);
         return true;
     }
     // Under radiosity the entries' shading may come back here for another blob.
     const std::vector<const Material*> own_mats(mats.begin(), mats.begin() + n);
     const std::vector<float> own_w(w.begin(), w.begin() + n);
-    spawn_weighted(scene, ray, hit, own_mats.data(), own_w.data(), n, out, trace);
+    spawn_weighted(scene, ray, hit, own_mats.data(), own_w.data(), n, out, trace,
+                   pattern_normal);
     return true;
 }
 
@@ -653,14 +679,15 @@ struct ScratchLevel {
 };
 
 void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
-               ShadingRecord& out, const MediaShadows& shadows, bool with_fog) {
+               ShadingRecord& out, const MediaShadows& shadows, bool with_fog,
+               SurfaceAtHit* pattern_normal) {
     if (shows_interior_texture(*hit.material, hit, ray.ray)) {
         // Shaded with the interior texture; the children's interior stacks name the
         // object's own material, not this stand-in.
         const Material inside = interior_side(*hit.material);
         Hit h = hit;
         h.material = &inside;
-        spawn_hit(scene, ray, h, out, shadows, with_fog);
+        spawn_hit(scene, ray, h, out, shadows, with_fog, pattern_normal);
         for (ChildRay& c : out.children) {
             for (int k = 0; k < c.trace.interiors.size && k < InteriorStack::kCapacity;
                  ++k) {
@@ -674,18 +701,24 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     const Quality quality = scene.plan().quality;
     if (with_fog && quality.atmosphere())
         out.fog = along_ray(scene, ray, hit.t, media_end_lights(*hit.material), shadows);
-    if (spawn_corner_blend(scene, ray, hit, out, shadows.trace)) return;
-    if (spawn_blob_blend(scene, ray, hit, out, shadows.trace)) return;
-    if (spawn_texture_map(scene, ray, hit, out, shadows.trace)) return;
+    // Normals face the incoming ray, as POV-Ray flips them.
+    SurfaceAtHit own_surface;
+    if (!pattern_normal) {
+        own_surface = surface_facing(hit, ray.ray.direction);
+        pattern_normal = &own_surface;
+    }
+    if (spawn_corner_blend(scene, ray, hit, out, shadows.trace, *pattern_normal)) return;
+    if (spawn_blob_blend(scene, ray, hit, out, shadows.trace, *pattern_normal)) return;
+    if (spawn_texture_map(scene, ray, hit, out, shadows.trace, *pattern_normal)) return;
     const Scene& sc = scene.scene();
     const Material& m = *hit.material;
     const Vector3 D = ray.ray.direction;
     const Point3 P = hit.point;
     const Point3 Ptex = texture_point(m, hit);  // where the patterns are evaluated
-    // Normals face the incoming ray, as POV-Ray flips them. The surface patterns see the
-    // normal as the layers above have perturbed it so far (POV-Ray's PNormal).
-    SurfaceAtHit surface = surface_facing(hit, D);
-    const Vector3 N = surface.normal;
+    // The surface patterns see the normal as the layers shaded so far have perturbed it
+    // (POV-Ray's PNormal), the layers themselves perturb the normal facing the ray.
+    SurfaceAtHit& surface = *pattern_normal;
+    const Vector3 N = surface_facing(hit, D).normal;
     const PatternEnv env = scene.pattern_env().at_surface(&surface);
     if (!quality.lighting()) return pigment_only(scene, m, Ptex, env, out);
     const bool legacy = sc.language_version < 370;
@@ -743,8 +776,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         const Texture* tex = layers ? &(*layers)[size_t(li)] : nullptr;
         Vector3 Nl = N;
         if (tex && tex->normal && quality.normals()) {
-            Nl = perturb_nested(*tex->normal, Ptex, N, env, m.nesting);
-            surface.normal = Nl;
+            Nl = perturb_nested(*tex->normal, Ptex, N, env, m.nesting, &surface.normal);
         }
         // After the layer's normal, as POV-Ray (a slope pigment sees it).
         const Colour lay = tex ? eval_pigment(tex->pigment, Ptex, env) : m.plain_colour;
@@ -1471,8 +1503,8 @@ namespace {
 
 // Faked caustics: a layer lets more light through where the shadow ray crosses the
 // surface head on (POV-Ray's 1 + |N.D|^caustics, with the layer's perturbed normal).
-// `nesting` holds the texture maps the layer is in (null: none); `surface` (the layers'
-// PNormal), when given, takes the perturbed normal.
+// `nesting` holds the texture maps the layer is in (null: none); `surface` (the hit's
+// PNormal), when given, takes the perturbed normal (in the maps' space, as POV-Ray's).
 float caustic_gain(const PreparedScene& scene, const Texture* t, float caustics,
                    const Hit& hit, const TextureNesting* nesting, const Ray& ray,
                    SurfaceAtHit* surface = nullptr) {
@@ -1481,10 +1513,10 @@ float caustic_gain(const PreparedScene& scene, const Texture* t, float caustics,
     SurfaceAtHit facing = surface_facing(hit, ray.direction);
     Vector3 n = facing.normal;
     if (t && t->normal) {
-        n = perturb_nested(
-            *t->normal, nesting ? nesting->point : surface_point(*hit.material, hit), n,
-            scene.pattern_env().at_surface(surface ? surface : &facing), nesting);
-        if (surface) surface->normal = n;
+        n = perturb_nested(*t->normal,
+                           nesting ? nesting->point : surface_point(*hit.material, hit),
+                           n, scene.pattern_env().at_surface(surface ? surface : &facing),
+                           nesting, surface ? &surface->normal : nullptr);
     }
     return float(1 + std::pow(std::fabs(dot(n, ray.direction)), Real(caustics)));
 }
@@ -1493,9 +1525,17 @@ float caustic_gain(const PreparedScene& scene, const Texture* t, float caustics,
 // the product of its layers' filter and transmit; a patterned texture (texture_map,
 // checker of textures) blends its two entries around the pattern value, evaluated in
 // its pattern's space (`nesting`: the maps the layers are in, null at the top).
+// `pattern_normal` is the normal the patterns read (POV-Ray's PNormal, one per hit: a
+// map's entries see what the faked caustics of those shaded before left; null: the
+// hit's own).
 Rgb shadow_filter(const PreparedScene& scene, const LayeredTexture& layers,
                   float caustics, const Hit& hit, const TextureNesting* nesting,
-                  const Ray& ray) {
+                  const Ray& ray, SurfaceAtHit* pattern_normal = nullptr) {
+    SurfaceAtHit own_surface;
+    if (!pattern_normal) {
+        own_surface = surface_facing(hit, ray.direction);
+        pattern_normal = &own_surface;
+    }
     const Point3 at = nesting ? nesting->point : surface_point(*hit.material, hit);
     if (layers.size() == 1 && layers.front().map_pattern &&
         !layers.front().map->entries.empty()) {
@@ -1511,36 +1551,35 @@ Rgb shadow_filter(const PreparedScene& scene, const LayeredTexture& layers,
             for (int i = 0; i < count; ++i) {
                 const float v = has_values ? t.map->values[size_t(i)] : 1.0f;
                 sum += shadow_filter(scene, t.map->entries[size_t(i)], caustics, hit,
-                                     &inner, ray) *
+                                     &inner, ray, pattern_normal) *
                        v;
                 total += v;
             }
             return sum * (1 / total);
         }
-        const SurfaceAtHit surface = surface_facing(hit, ray.direction);
         const MapPick pick =
             pick_map_entries(*t.map_pattern, has_values ? t.map->values.data() : nullptr,
-                             count, at, scene.pattern_env().at_surface(&surface));
+                             count, at, scene.pattern_env().at_surface(pattern_normal));
         const TextureNesting inner{&*t.map_pattern, pick.point, nesting};
         const auto entry = [&](int i) -> const LayeredTexture& {
             return t.map->entries[size_t(std::clamp(i, 0, count - 1))];
         };
-        Rgb f = shadow_filter(scene, entry(pick.lookup.cur), caustics, hit, &inner, ray);
+        Rgb f = shadow_filter(scene, entry(pick.lookup.cur), caustics, hit, &inner, ray,
+                              pattern_normal);
         if (pick.lookup.prev != pick.lookup.cur) {
             const float w = float(pick.lookup.fraction);
             f = f * w + shadow_filter(scene, entry(pick.lookup.prev), caustics, hit,
-                                      &inner, ray) *
+                                      &inner, ray, pattern_normal) *
                             (1 - w);
         }
         return f;
     }
     Rgb f(1.0f);
-    SurfaceAtHit surface = surface_facing(hit, ray.direction);
-    const PatternEnv env = scene.pattern_env().at_surface(&surface);
+    const PatternEnv env = scene.pattern_env().at_surface(pattern_normal);
     for (const Texture& t : layers) {
         f *= rgb_transm(eval_pigment(t.pigment, at, env));
         if (caustics != 0)
-            f *= caustic_gain(scene, &t, caustics, hit, nesting, ray, &surface);
+            f *= caustic_gain(scene, &t, caustics, hit, nesting, ray, pattern_normal);
     }
     return f;
 }

@@ -372,6 +372,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "area_illumination_parallel",
                              "slope_aoi",
                              "texture_map_nested_spaces",
+                             "texture_map_pattern_normal",
                              "parse_time_queries",
                              "trace_level_one",
                              "trace_level_continued_rays",
