@@ -661,9 +661,14 @@ void Interpreter::directive_include(const Token& t) {
 // plain and single-layered.
 void Interpreter::directive_default() {
     expect_punct('{', "after #default");
+    in_default_ = true;
     for (;;) {
         Token t = next();
-        if (is_punct(t, '}')) return;
+        if (is_punct(t, '}')) {
+            in_default_ = false;
+            return;
+        }
+        if (is_word(t, "texture") || is_word(t, "pigment")) default_pigment_given_ = true;
         if (is_word(t, "texture")) {
             LayeredTexture layers = parse_texture_block();
             if (layers.back().map_pattern)

@@ -168,6 +168,11 @@ class Interpreter {
     void collect_lights(Object& obj);
     LayeredTexture parse_texture_block();  // after 'texture'
     void parse_texture_body(LayeredTexture& layers, char terminator);
+    // The texture of language versions below 3.0, pigment, normal and finish items
+    // written straight in it (POV-Ray's Parse_Vers1_Texture; parser/texture_vers1.cpp).
+    void parse_vers1_texture_body(LayeredTexture& layers, char terminator);
+    void parse_tiles(const Token& keyword, LayeredTexture& layers);  // after 'tiles'
+    void parse_texture_transforms(LayeredTexture& layers, char terminator);
     // After the keyword: a new part starts from the default texture's (a fresh interior);
     // the *_into forms edit the part a texture, object or #default holds, so a repeated
     // block continues from the earlier one (notes/parser-rules.md §2).
@@ -485,6 +490,10 @@ class Interpreter {
     // includes save `version` and restore it with #version, so a scene without one
     // leaves colors.inc as an explicit 3.7 scene.
     int version_ = 370;
+    // Inside #default { } (POV-Ray's !Not_In_Default), and whether #default gave the
+    // default texture a pigment: texture_vers1.cpp's check for a pigment type.
+    bool in_default_ = false;
+    bool default_pigment_given_ = false;
     // An area light with media_attenuation on (the atmosphere's media are refused then).
     bool area_light_attenuated_by_media_ = false;
     bool version_set_ = false;

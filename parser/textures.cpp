@@ -1300,28 +1300,6 @@ Media Interpreter::parse_media() {
     return m;
 }
 
-namespace {
-
-// The pigment, normal and finish items POV-Ray reads straight in a texture below
-// version 3.0 (Parse_Vers1_Texture's cases, colours included).
-bool is_vers1_texture_item(std::string_view w) {
-    static constexpr std::string_view kItems[] = {
-        "agate",      "bozo",       "granite",    "leopard",      "marble",
-        "mandel",     "onion",      "spotted",    "wood",         "gradient",
-        "checker",    "hexagon",    "square",     "triangular",   "image_map",
-        "turbulence", "colour_map", "color_map",  "quick_colour", "quick_color",
-        "octaves",    "omega",      "lambda",     "bumps",        "dents",
-        "ripples",    "waves",      "wrinkles",   "bump_map",     "frequency",
-        "phase",      "ambient",    "brilliance", "diffuse",      "reflection",
-        "phong",      "phong_size", "specular",   "roughness",    "metallic",
-        "crand",      "ior",        "refraction", "color",        "colour",
-        "rgb",        "rgbf",       "rgbt",       "rgbft",        "red",
-        "green",      "blue",       "filter",     "transmit",     "alpha"};
-    return std::find(std::begin(kItems), std::end(kItems), w) != std::end(kItems);
-}
-
-}  // namespace
-
 LayeredTexture Interpreter::parse_texture_block() {
     expect_punct('{', "after 'texture'");
     LayeredTexture layers;
@@ -1331,6 +1309,12 @@ LayeredTexture Interpreter::parse_texture_block() {
 
 // The inside of `texture { ... }`; also a texture_map entry (ending at ']').
 void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
+    // Below version 3.0 POV-Ray reads pigment, normal and finish items written straight
+    // in the texture (Parse_Vers1_Texture, parser/texture_vers1.cpp).
+    if (language_version() < 300) {
+        parse_vers1_texture_body(layers, terminator);
+        return;
+    }
     const Token& first = peek();
     NestingGuard guard(*this, first);  // maps of maps of ...
     if (first.kind == TokenKind::Word) {
@@ -1350,13 +1334,6 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
             continue;
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
-        // Below version 3.0 POV-Ray reads pigment, normal and finish items written
-        // straight in the texture (Parse_Vers1_Texture): `texture { marble colour_map
-        // {..} phong 1 }`, where 3.x reads a texture_map pattern. Not read yet: said so.
-        if (language_version() < 300 && (is_vers1_texture_item(w) || starts_float(t)))
-            unsupported(t, "POV-Ray 1.0/2.0 texture syntax ('" +
-                               std::string(t.kind == TokenKind::Word ? w : "a number") +
-                               "' written straight in a texture)");
         Texture& top = layers.back();
         // pigment, normal and finish edit what the texture holds (from its identifier
         // or the default texture), so a second block continues from the first.
@@ -1413,41 +1390,9 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
         } else if (w == "material_map") {
             parse_material_map(t, top);
         } else if (w == "tiles") {
-            // The old checker of textures: `tiles { texture {..}.. tile2 texture {..}..
-            // }`, the first ones on the checker's odd squares; only transforms may
-            // follow.
-            PatternSpec checker;
-            checker.kind = PatternKind::Checker;
-            checker.frequency = 0;
-            TextureMap map;
-            map.values = {0, 1};
-            map.entries.resize(2);
-            expect_punct('{', "after 'tiles'");
-            while (accept_word("texture")) {
-                LayeredTexture layer = parse_texture_block();
-                map.entries[1].insert(map.entries[1].end(), layer.begin(), layer.end());
-            }
-            const Token tile2 = next();
-            if (!is_word(tile2, "tile2")) expected("'tile2'", tile2);
-            while (accept_word("texture")) {
-                LayeredTexture layer = parse_texture_block();
-                map.entries[0].insert(map.entries[0].end(), layer.begin(), layer.end());
-            }
-            expect_punct('}', "to close 'tiles'");
-            if (map.entries[1].empty()) error(t, "First texture missing from tiles");
-            if (map.entries[0].empty()) map.entries[0].push_back(default_texture_);
-            Texture tiles;
-            tiles.map_pattern = checker;
-            tiles.map = map;
-            layers = {std::move(tiles)};
-            for (;;) {
-                Token m = next();
-                if (is_punct(m, terminator)) return;
-                Transform step;
-                if (!try_transform(m, step))
-                    expected("a transform or '" + std::string(1, terminator) + "'", m);
-                transform_textures(layers, step);
-            }
+            parse_tiles(t, layers);
+            parse_texture_transforms(layers, terminator);
+            return;
         } else if (top.map_pattern && try_pattern_modifier(t, *top.map_pattern)) {
             continue;
         } else {
@@ -1474,6 +1419,48 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
             }
             expected("a texture item or '" + std::string(1, terminator) + "'", t);
         }
+    }
+}
+
+// The old checker of textures: `tiles { texture {..}.. tile2 texture {..}.. }`, the
+// first ones on the checker's odd squares; it replaces `layers`.
+void Interpreter::parse_tiles(const Token& keyword, LayeredTexture& layers) {
+    PatternSpec checker;
+    checker.kind = PatternKind::Checker;
+    checker.frequency = 0;
+    TextureMap map;
+    map.values = {0, 1};
+    map.entries.resize(2);
+    expect_punct('{', "after 'tiles'");
+    while (accept_word("texture")) {
+        LayeredTexture layer = parse_texture_block();
+        map.entries[1].insert(map.entries[1].end(), layer.begin(), layer.end());
+    }
+    const Token tile2 = next();
+    if (!is_word(tile2, "tile2")) expected("'tile2'", tile2);
+    while (accept_word("texture")) {
+        LayeredTexture layer = parse_texture_block();
+        map.entries[0].insert(map.entries[0].end(), layer.begin(), layer.end());
+    }
+    expect_punct('}', "to close 'tiles'");
+    if (map.entries[1].empty()) error(keyword, "First texture missing from tiles");
+    if (map.entries[0].empty()) map.entries[0].push_back(default_texture_);
+    Texture tiles;
+    tiles.map_pattern = checker;
+    tiles.map = map;
+    layers = {std::move(tiles)};
+}
+
+// Transforms only, up to the terminator (after tiles; POV-Ray's Parse_Texture_Transform).
+void Interpreter::parse_texture_transforms(LayeredTexture& layers, char terminator) {
+    for (;;) {
+        Token m = next();
+        if (is_punct(m, terminator)) return;
+        if (is_word(m, "no_bump_scale")) unsupported(m, "no_bump_scale");
+        Transform step;
+        if (!try_transform(m, step))
+            expected("a transform or '" + std::string(1, terminator) + "'", m);
+        transform_textures(layers, step);
     }
 }
 

@@ -162,26 +162,107 @@ TEST(Version, SrgbNeedsAssumedGammaAndDecodesIntoTheWorkingGamma) {
     EXPECT_NEAR(s.objects[0].texture[0].pigment.colour.rgb.r, 0.49623, 1e-5);
 }
 
-
 // Below 3.0 a pattern, colour or finish item written straight in a texture is POV-Ray's
 // version 1 syntax (not read yet): a located unsupported, not a syntax error, and not a
 // 3.x texture_map pattern rendered without its map. From 3.0 on, the 3.x rules.
-TEST(Version, VersionOneTextureItemsAreRefusedBelowThreeZero) {
+// Below 3.0 pigment, normal and finish items are written straight in the texture
+// (POV-Ray's Parse_Vers1_Texture): a pattern sets the pigment's type alone.
+TEST(Version, VersionOneTextureItemsFillThePigmentNormalAndFinish) {
+    std::string debug;
+    Scene s = parse(
+        "#version 1.0\n"
+        "sphere { <0,0,0>, 1 texture { turbulence 0.5 colour_map { [0 1 colour red 1 "
+        "colour blue 1 alpha 0.5] } marble octaves 12 quick_colour red 0.5 "
+        "ripples 0.3 frequency 2 phase 0.1 ambient 0.2 diffuse 0.6 reflection 0.3 "
+        "phong 1 phong_size 20 specular 0.4 roughness 0.05 brilliance 2 metallic 0.01 "
+        "ior 1.5 } }",
+        &debug);
+    const Texture& t = s.objects[0].texture[0];
+    EXPECT_EQ(t.pigment.pattern->kind, PatternKind::Marble);
+    EXPECT_EQ(t.pigment.pattern->wave, WaveType::Ramp);  // not pigment { marble }'s
+    ASSERT_EQ(t.pigment.pattern->warps.size(), 1u);
+    EXPECT_EQ(t.pigment.pattern->warps[0].octaves, 10);
+    EXPECT_DOUBLE_EQ(t.pigment.pattern->warps[0].turbulence.y, 0.5);
+    ASSERT_EQ(t.pigment.maps->colour_map.size(), 2u);
+    EXPECT_FLOAT_EQ(t.pigment.maps->colour_map[1].colour.filter, 0.5f);  // alpha
+    EXPECT_FLOAT_EQ(t.pigment.maps->quick_colour->rgb.r, 0.5f);
+    ASSERT_TRUE(t.normal);
+    EXPECT_EQ(t.normal->pattern->kind, PatternKind::Ripples);
+    EXPECT_FLOAT_EQ(float(t.normal->amount), 0.3f);
+    EXPECT_DOUBLE_EQ(t.normal->pattern->frequency, 2);
+    EXPECT_FLOAT_EQ(float(t.normal->pattern->phase), 0.1f);
+    const Finish& f = *t.finish;
+    EXPECT_FLOAT_EQ(f.ambient.r, 0.2f);
+    EXPECT_FLOAT_EQ(f.diffuse, 0.6f);
+    EXPECT_FLOAT_EQ(f.reflection_max.g, 0.3f);
+    EXPECT_FLOAT_EQ(f.reflection_min.g, 0.3f);
+    EXPECT_FLOAT_EQ(f.phong, 1);
+    EXPECT_FLOAT_EQ(f.phong_size, 20);
+    EXPECT_FLOAT_EQ(f.specular, 0.4f);
+    EXPECT_FLOAT_EQ(f.roughness, 0.05f);
+    EXPECT_FLOAT_EQ(f.brilliance, 2);
+    EXPECT_FLOAT_EQ(f.metallic, 1);  // no amount: the float is crand
+    EXPECT_FLOAT_EQ(f.crand, 0.01f);
+    EXPECT_NE(debug.find("Found 'marble' that should be in 'pigment' statement."),
+              std::string::npos);
+    EXPECT_NE(debug.find("Found 'color_map' that should be in 'pigment' statement."),
+              std::string::npos);
+    EXPECT_NE(debug.find("Found 'ior' that should be in 'interior' statement."),
+              std::string::npos);
+    EXPECT_NE(debug.find("Index of refraction value should be specified"),
+              std::string::npos);
+    // 1.0 gives no level-1.5 warnings (crand without its keyword).
+    EXPECT_EQ(debug.find("Should use crand"), std::string::npos);
+}
+
+TEST(Version, VersionOneTextureWarningsAndErrors) {
     auto first_line = [](const std::string& text) {
         const std::string e = error_of(text);
         return e.substr(0, e.find('\n'));
     };
-    EXPECT_EQ(first_line("#version 2.0;\nsphere { 0, 1 texture { marble } }"),
-              "test.pov:2:25: error: unsupported: POV-Ray 1.0/2.0 texture syntax "
-              "('marble' written straight in a texture)");
-    EXPECT_EQ(
-        first_line("#version 1.0\nsphere { 0, 1 texture { pigment { rgb 1 } 0.2 } }"),
-        "test.pov:2:43: error: unsupported: POV-Ray 1.0/2.0 texture syntax ('a "
-        "number' written straight in a texture)");
-    EXPECT_EQ(first_line("#version 1.0\nsphere { 0, 1 texture { pigment { rgb 1 } } }"),
+    // From 1.5 a texture must end with a pigment type.
+    EXPECT_EQ(first_line("#version 2.0\nsphere { 0, 1 texture { phong 1 } }"),
+              "test.pov:2:33: error: Expected 'pigment identifier', } found instead");
+    EXPECT_EQ(first_line("#version 1.0\nsphere { 0, 1 texture { phong 1 } }"),
               "(no error)");
+    EXPECT_EQ(
+        first_line("#version 2.0\n#default { texture { phong 1 } }\nsphere { 0, 1 }"),
+        "(no error)");
+    EXPECT_EQ(first_line("#version 2.0\nsphere { 0, 1 texture { frequency 2 colour "
+                         "red 1 } }"),
+              "test.pov:2:50: error: No normal type given.");
+    EXPECT_EQ(first_line("#version 2.0\nsphere { 0, 1 texture { mandel 20 } }"),
+              "test.pov:2:25: error: unsupported: mandel written straight in a POV-Ray "
+              "1.0/2.0 texture");
+    EXPECT_EQ(first_line("#version 2.0\nsphere { 0, 1 texture { radial colour red 1 } }"),
+              "test.pov:2:25: error: expected a texture item or '}' but found 'radial'");
     EXPECT_EQ(first_line("#version 3.0;\nsphere { 0, 1 texture { marble } }"),
               "(no error)");
+    std::string debug;
+    Scene s = parse(
+        "#version 2.0\n#declare T = texture { colour red 1 phong 1 }\n"
+        "sphere { 0, 1 texture { checker colour red 1 colour blue 1 colour_map { [0 "
+        "colour red 1] [1 colour blue 1] } bumps 0.5 frequency 3 0.2 roughness 0 } }\n"
+        "sphere { 0, 1 texture { bozo T scale 2 } }",
+        &debug);
+    for (const char* w :
+         {"Cannot use color map with this pigment type.",
+          "Cannot use frequency with "
+          "this normal.",
+          "Should use crand keyword in finish statement.", "Zero roughness used.",
+          "Texture identifier overwriting previous values."})
+        EXPECT_NE(debug.find(w), std::string::npos) << w;
+    // 2.0 says nothing about where the items belong.
+    EXPECT_EQ(debug.find("that should be in"), std::string::npos);
+    const Texture& checker = s.objects[0].texture[0];
+    EXPECT_EQ(checker.pigment.pattern->kind, PatternKind::Checker);
+    EXPECT_DOUBLE_EQ(checker.pigment.pattern->frequency, 0);
+    EXPECT_EQ(checker.pigment.maps->list.size(), 0u);  // the colour_map replaced it
+    EXPECT_FLOAT_EQ(checker.finish->crand, 0.2f);
+    // The identifier replaced the bozo; the scale then applies to it.
+    const Texture& replaced = s.objects[1].texture[0];
+    EXPECT_FLOAT_EQ(replaced.pigment.colour.rgb.r, 1);
+    EXPECT_FLOAT_EQ(replaced.finish->phong, 1);
 }
 
 }  // namespace
