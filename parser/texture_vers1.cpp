@@ -28,20 +28,15 @@ bool is_colour_word(std::string_view w) {
            w == "transmit" || w == "alpha";
 }
 
-// The patterns Parse_Vers1_Texture reads (mandel aside, see below) and the pigment
-// type each sets.
-bool vers1_pigment_pattern(std::string_view w, PatternKind& kind) {
-    struct Entry {
-        std::string_view name;
-        PatternKind kind;
-    };
-    static constexpr Entry kPatterns[] = {
-        {"agate", PatternKind::Agate},      {"bozo", PatternKind::Bozo},
-        {"granite", PatternKind::Granite},  {"leopard", PatternKind::Leopard},
-        {"marble", PatternKind::Marble},    {"onion", PatternKind::Onion},
-        {"spotted", PatternKind::Spotted},  {"wood", PatternKind::Wood},
-        {"gradient", PatternKind::Gradient}};
-    for (const Entry& e : kPatterns) {
+struct NamedPattern {
+    std::string_view name;
+    PatternKind kind;
+};
+
+// The kind `w` names in `table`, if it is there.
+template <size_t N>
+bool find_pattern(const NamedPattern (&table)[N], std::string_view w, PatternKind& kind) {
+    for (const NamedPattern& e : table) {
         if (w == e.name) {
             kind = e.kind;
             return true;
@@ -50,34 +45,35 @@ bool vers1_pigment_pattern(std::string_view w, PatternKind& kind) {
     return false;
 }
 
-bool vers1_list_pattern(std::string_view w, PatternKind& kind) {
-    if (w == "checker")
-        kind = PatternKind::Checker;
-    else if (w == "hexagon")
-        kind = PatternKind::Hexagon;
-    else if (w == "square")
-        kind = PatternKind::Square;
-    else if (w == "triangular")
-        kind = PatternKind::Triangular;
-    else
-        return false;
-    return true;
+// The patterns Parse_Vers1_Texture reads (mandel aside, see below) and the pigment
+// type each sets.
+bool vers1_pigment_pattern(std::string_view w, PatternKind& kind) {
+    static constexpr NamedPattern kPatterns[] = {
+        {"agate", PatternKind::Agate},      {"bozo", PatternKind::Bozo},
+        {"granite", PatternKind::Granite},  {"leopard", PatternKind::Leopard},
+        {"marble", PatternKind::Marble},    {"onion", PatternKind::Onion},
+        {"spotted", PatternKind::Spotted},  {"wood", PatternKind::Wood},
+        {"gradient", PatternKind::Gradient}};
+    return find_pattern(kPatterns, w, kind);
 }
 
+// The block patterns, which take a colour list.
+bool vers1_list_pattern(std::string_view w, PatternKind& kind) {
+    static constexpr NamedPattern kPatterns[] = {{"checker", PatternKind::Checker},
+                                                 {"hexagon", PatternKind::Hexagon},
+                                                 {"square", PatternKind::Square},
+                                                 {"triangular", PatternKind::Triangular}};
+    return find_pattern(kPatterns, w, kind);
+}
+
+// The normal patterns, each followed by its amount.
 bool vers1_normal_pattern(std::string_view w, PatternKind& kind) {
-    if (w == "bumps")
-        kind = PatternKind::Bumps;
-    else if (w == "dents")
-        kind = PatternKind::Dents;
-    else if (w == "ripples")
-        kind = PatternKind::Ripples;
-    else if (w == "waves")
-        kind = PatternKind::Waves;
-    else if (w == "wrinkles")
-        kind = PatternKind::Wrinkles;
-    else
-        return false;
-    return true;
+    static constexpr NamedPattern kPatterns[] = {{"bumps", PatternKind::Bumps},
+                                                 {"dents", PatternKind::Dents},
+                                                 {"ripples", PatternKind::Ripples},
+                                                 {"waves", PatternKind::Waves},
+                                                 {"wrinkles", PatternKind::Wrinkles}};
+    return find_pattern(kPatterns, w, kind);
 }
 
 }  // namespace

@@ -1,5 +1,4 @@
 // Textures: pigments (colours and patterns), normals, finishes, interiors, colour maps.
-#include <algorithm>
 #include <cmath>
 
 #include "core/pattern_lists.h"
