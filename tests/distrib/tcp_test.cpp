@@ -358,6 +358,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "inverse_csg",
                              "csg_inverted_union",
                              "coincident_copies",
+                             "torus_pov_solver",
                              "mesh_normal_rules",
                              "pigment_map_replaced",
                              "map_entries",

@@ -56,7 +56,7 @@ INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
                                            "splines", "functions", "functions_internal",
                                            "fileio", "keywords", "text_extents",
                                            "object_queries", "string_relations",
-                                           "legacy_semicolons"));
+                                           "legacy_semicolons", "torus_pov_solver"));
 
 }  // namespace
 }  // namespace povwall::parser

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "trace/roots.h"
+#include "core/pov_polysolve.h"
 #include "trace/roots_sturm.h"
 #include "trace/shapes/oracle_math.h"
 
@@ -76,16 +76,18 @@ bool meets_thick_cylinder(const Torus& tor, const Point3& p, const Vector3& d) {
     return false;
 }
 
-// POV-Ray's root elimination (Solve_Polynomial with ROOT_TOLERANCE 1e-4): the quartic in
-// t, monic, about the point `closer` along the ray (the origin moved to 2r outside the
-// bounding sphere, as POV-Ray moves it). When its constant term is below 1e-4 times its
-// linear one (a root within about 1e-4 of that point: a ray leaving the surface, or a
-// torus whose minor radius is about that small), the constant is dropped and the cubic
-// left is solved instead. Returns false when no elimination happens; else `out` holds
-// the cubic's roots as crossings (for a torus that small they are not on its surface:
-// POV- Ray shades it at those points).
-bool torus_root_elimination(const Torus& tor, const Point3& o, const Vector3& dir,
-                            Crossings& out, Real min_t) {
+}  // namespace
+
+void intersect_torus(const Torus& tor, const Point3& o, const Vector3& dir,
+                     Crossings& out, Real min_t) {
+    // POV-Ray's way, step for step: its thick-cylinder pre-test, the origin moved to 2r
+    // outside the bounding sphere, the monic quartic there, and its own solver (closed
+    // form unless `sturm`, root elimination at 1e-4). Its closed form loses roots and
+    // accuracy on thin large tori (a ring of radius 1000 and tube 1 seen across: 999.995
+    // for 999); POV-Ray's pixels, and its trace(), come from those roots, and so do ours.
+    // A root near the moved origin is eliminated: the cubic's roots left are off the
+    // surface (a torus of minor radius ~1e-4 or below), and POV-Ray shades them there.
+    if (!meets_thick_cylinder(tor, o, dir)) return;
     const Real R2 = tor.major * tor.major, r2 = tor.minor * tor.minor;
     const Real bound = tor.major + 2 * tor.minor;
     Real closer = 0;
@@ -97,16 +99,12 @@ bool torus_root_elimination(const Torus& tor, const Point3& o, const Vector3& di
     }
     const Real k1 = p.x * p.x + p.z * p.z + p.y * p.y - R2 - r2;
     const Real k2 = p.x * dir.x + p.z * dir.z + p.y * dir.y;
-    const Real c1 = 4 * k2;
-    const Real c2 = 2 * (k1 + 2 * (k2 * k2 + R2 * dir.y * dir.y));
-    const Real c3 = 4 * (k2 * k1 + 2 * R2 * p.y * dir.y);
-    const Real c4 = k1 * k1 + 4 * R2 * (p.y * p.y - r2);
-    if (!(c3 != 0 && std::fabs(c4 / c3) < kTorusTolerance)) return false;
-    if (!meets_thick_cylinder(tor, o, dir))
-        return true;  // POV-Ray's pre-test fails first
-    Real roots[3];
-    const int n = solve_cubic(c1, c2, c3, roots);
-    Real t[3];
+    const Real c[5] = {1.0, 4 * k2, 2 * (k1 + 2 * (k2 * k2 + R2 * dir.y * dir.y)),
+                       4 * (k2 * k1 + 2 * R2 * p.y * dir.y),
+                       k1 * k1 + 4 * R2 * (p.y * p.y - r2)};
+    Real roots[4];
+    const int n = pov_solve_polynomial(4, c, roots, tor.sturm, kTorusTolerance);
+    Real t[4];
     int m = 0;
     for (int i = 0; i < n; ++i) {
         const Real d = roots[i] + closer;
@@ -115,52 +113,6 @@ bool torus_root_elimination(const Torus& tor, const Point3& o, const Vector3& di
     for (int i = 1; i < m; ++i)  // ascending
         for (int j = i; j > 0 && t[j] < t[j - 1]; --j) std::swap(t[j], t[j - 1]);
     for (int i = 0; i < m; ++i) out.add(t[i], 0);
-    return true;
-}
-
-}  // namespace
-
-void intersect_torus(const Torus& tor, const Point3& o, const Vector3& dir,
-                     Crossings& out, Real min_t) {
-    if (torus_root_elimination(tor, o, dir, out, min_t)) return;
-    TorusQuartic q;
-    if (!torus_quartic(tor, o, dir, q, min_t)) return;
-    Real roots[4];
-    int n = solve_quartic(q.c, q.lo, q.hi, roots);
-    // The quartic's coefficients are rounded sums of large terms, so its exact roots are
-    // off by ~1e-12 on thin tori. Newton on the surface's signed distance along the ray
-    // (condition ~1 near the surface) recovers the last digits; a step may not cross half
-    // way to a neighbouring root, so close pairs stay apart.
-    auto distance = [&](Real t, Real& slope) {
-        const Point3 p = o + dir * t;
-        const Real rho = std::sqrt(p.x * p.x + p.z * p.z);
-        const Real ring = rho - tor.major;
-        const Real d = std::sqrt(ring * ring + p.y * p.y);
-        if (rho == 0 || d == 0) {
-            slope = 0;
-            return d - tor.minor;
-        }
-        const Vector3 grad{ring * p.x / (rho * d), p.y / d, ring * p.z / (rho * d)};
-        slope = dot(grad, dir);
-        return d - tor.minor;
-    };
-    for (int i = 0; i < n; ++i) {
-        Real reach = 0.5 * (q.hi - q.lo);
-        if (i > 0) reach = std::min(reach, 0.5 * (roots[i] - roots[i - 1]));
-        if (i + 1 < n) reach = std::min(reach, 0.5 * (roots[i + 1] - roots[i]));
-        const Real t0 = roots[i] + q.shift;
-        Real t = t0, slope;
-        const Real g = distance(t, slope);
-        // One step: the solver's root is ~1e-12 off and Newton converges quadratically.
-        if (g != 0 && slope != 0) {
-            const Real nt = t - g / slope;
-            Real nslope;
-            if (std::isfinite(nt) && std::fabs(nt - t0) <= reach &&
-                std::fabs(distance(nt, nslope)) < std::fabs(g))
-                t = nt;
-        }
-        if (t > min_t) out.add(t, 0);
-    }
 }
 
 Vector3 torus_normal(const Torus& tor, const Point3& p) {

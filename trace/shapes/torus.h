@@ -12,8 +12,8 @@ struct OracleBest;
 void intersect_torus(const Torus& t, const Point3& o, const Vector3& dir, Crossings& out,
                      Real min_t = kTorusTolerance);
 // The torus's quartic along a ray: crossings are shift + the roots of c in (lo, hi].
-// False when the ray misses the bounding sphere. Shared by the tracer, the solver
-// benchmark and tests.
+// False when the ray misses the bounding sphere. The solver benchmark's cases (the
+// tracer solves POV-Ray's own quartic: intersect_torus).
 struct TorusQuartic {
     Real c[5], lo, hi, shift;
 };
