@@ -190,7 +190,7 @@ int main() {
                         e.empty() ? 0.0 : e[e.size() / 2], e.empty() ? 0.0 : e.back());
         }
     }
-    // End to end: intersect_torus (the switch rule, then Newton on the signed distance)
+    // End to end: intersect_torus (POV-Ray's own solver, as the tracer uses it)
     // against the oracle's first hit on the exact geometry (not on the rounded
     // coefficients).
     std::printf(
