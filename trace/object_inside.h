@@ -7,6 +7,9 @@
 
 namespace povwall::trace {
 
-bool inside_unclipped(const Object& obj, const Point3& p);
+// `inverted`: the object as POV-Ray holds it once more inverted (a difference's later
+// parts, the children of an inverted CSG): its shape is, its clips are not.
+bool inside_unclipped(const Object& obj, const Point3& p, bool inverted = false);
+bool inside_object(const Object& obj, const Point3& p, bool inverted);
 
 }  // namespace povwall::trace

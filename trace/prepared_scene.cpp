@@ -223,25 +223,14 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
                 bool keep = true;
                 for (size_t j = 0; j < csg->children.size() && keep; ++j) {
                     if (j == i || skipped(j)) continue;
-                    bool in = inside_object(csg->children[j], p);
-                    switch (csg->kind) {
-                        case CsgKind::Union:
-                            // Seen inverted, POV-Ray's union is an intersection of its
-                            // inverted children: a crossing inside a sibling is dropped.
-                            keep = pov != PovCsg::Intersection || !in;
-                            break;
-                        case CsgKind::Merge:
-                            keep = !in;
-                            break;
-                        case CsgKind::Intersection:
-                            keep = in;
-                            break;
-                        case CsgKind::Difference:
-                            keep = (j == 0 || !difference_inverts(csg->children[j]))
-                                       ? in
-                                       : !in;
-                            break;
-                    }
+                    // The sibling as POV-Ray holds it: inverted with an inverted CSG,
+                    // and once more as a difference's later part.
+                    const Object& sibling = csg->children[j];
+                    const bool in =
+                        inside_object(sibling, p,
+                                      inverted != (csg->kind == CsgKind::Difference &&
+                                                   j > 0 && difference_inverts(sibling)));
+                    keep = pov == PovCsg::Intersection ? in : !in;
                 }
                 if (!keep) continue;
                 if (csg->kind == CsgKind::Difference && i > 0 &&
@@ -328,36 +317,37 @@ size_t count_leaves(const Object& o) {
 }  // namespace
 
 bool inside_object(const Object& o, const Point3& p) {
-    // POV-Ray's Inside_Object: outside a clip is outside, inverse or not.
-    if (!o.clipped_by->empty() && !inside_clips(o, p)) return false;
-    return inside_unclipped(o, p);
+    return inside_object(o, p, false);
 }
 
-bool inside_unclipped(const Object& o, const Point3& p) {
-    bool in = false;
-    if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
-        switch (csg->kind) {
-            case CsgKind::Union:
-            case CsgKind::Merge:
-                for (const auto& c : csg->children) in = in || inside_object(c, p);
-                break;
-            case CsgKind::Intersection:
-                in = !csg->children.empty();
-                for (const auto& c : csg->children) in = in && inside_object(c, p);
-                break;
-            case CsgKind::Difference:
-                in = !csg->children.empty() && inside_object(csg->children[0], p);
-                for (size_t i = 1; i < csg->children.size() && in; ++i) {
-                    const Object& c = csg->children[i];
-                    in = inside_object(c, p) != difference_inverts(c);
-                }
-                break;
-        }
-    } else {
+bool inside_object(const Object& o, const Point3& p, bool inverted) {
+    // POV-Ray's Inside_Object: outside a clip is outside, inverse or not (Invert leaves
+    // the clips as they are).
+    if (!o.clipped_by->empty() && !inside_clips(o, p)) return false;
+    return inside_unclipped(o, p, inverted);
+}
+
+bool inside_unclipped(const Object& o, const Point3& p, bool inverted) {
+    inverted = inverted != o.inverse;
+    const Csg* csg = std::get_if<Csg>(&o.shape);
+    if (!csg) {
         const Point3 q = o.transform.is_identity() ? p : o.transform.inverse_point(p);
-        in = leaf_inside(o, q);
+        return inverted && leaf_invertible(o) ? leaf_inside_inverted(o, q)
+                                              : leaf_inside(o, q);
     }
-    return in != o.inverse;
+    // POV-Ray inverts a CSG by inverting every child and morphing it (a union or merge
+    // into an intersection, an intersection into a merge); a difference is an
+    // intersection whose later children are inverted once more.
+    const bool any = pov_csg(csg->kind, inverted) != PovCsg::Intersection;
+    if (csg->children.empty()) return false;
+    for (size_t i = 0; i < csg->children.size(); ++i) {
+        const Object& c = csg->children[i];
+        const bool in = inside_object(c, p,
+                                      inverted != (csg->kind == CsgKind::Difference &&
+                                                   i > 0 && difference_inverts(c)));
+        if (in == any) return any;
+    }
+    return !any;
 }
 
 Bounds3 object_world_bounds(const Object& obj) { return object_bounds(obj); }

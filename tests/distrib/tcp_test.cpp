@@ -359,6 +359,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "csg_inverted_union",
                              "coincident_copies",
                              "torus_pov_solver",
+                             "csg_inside_rules",
                              "mesh_normal_rules",
                              "pigment_map_replaced",
                              "map_entries",

@@ -56,7 +56,8 @@ INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
                                            "splines", "functions", "functions_internal",
                                            "fileio", "keywords", "text_extents",
                                            "object_queries", "string_relations",
-                                           "legacy_semicolons", "torus_pov_solver"));
+                                           "legacy_semicolons", "torus_pov_solver",
+                                           "inside_rules"));
 
 }  // namespace
 }  // namespace povwall::parser

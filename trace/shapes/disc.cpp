@@ -26,8 +26,11 @@ void shape_hits(const Disc& d, const LocalRay& r, ShapeHits& out) {
 
 Vector3 shape_normal(const Disc& d, const ShapeHit&) { return d.normal; }
 
-// A surface without an inside here (CSG treats it as a surface).
-bool shape_inside(const Disc&, const Point3&) { return false; }
+// POV-Ray's Disc::Inside: the half-space behind the disc's plane (against its normal),
+// the plane itself outside; CSG and clips use it like a plane's.
+bool shape_inside(const Disc& d, const Point3& p) {
+    return dot(p - d.centre, d.normal) < 0;
+}
 
 Bounds3 shape_bounds(const Disc& d) {
     return {d.centre - Vector3(d.radius), d.centre + Vector3(d.radius)};

@@ -14,8 +14,10 @@ void intersect_plane(const Plane& p, const Point3& o, const Vector3& dir, Crossi
     if (t > min_t && t < kMaxDistance) out.add(t, 0);
 }
 
+// POV-Ray's Plane::Inside: within EPSILON of the surface counts as inside; its Invert
+// negates the equation, so the surface is inside the inverted plane too.
 bool inside_plane(const Plane& pl, const Point3& p) {
-    return dot(pl.normal, p) < pl.distance;
+    return dot(pl.normal, p) - pl.distance < kPovEpsilon;
 }
 
 void shape_hits(const Plane& p, const LocalRay& r, ShapeHits& out) {
@@ -27,6 +29,10 @@ void shape_hits(const Plane& p, const LocalRay& r, ShapeHits& out) {
 Vector3 shape_normal(const Plane& p, const ShapeHit&) { return p.normal; }
 
 bool shape_inside(const Plane& p, const Point3& q) { return inside_plane(p, q); }
+
+bool shape_inside_inverted(const Plane& p, const Point3& q) {
+    return p.distance - dot(p.normal, q) < kPovEpsilon;
+}
 
 Bounds3 shape_bounds(const Plane&) { return Bounds3::everything(); }
 

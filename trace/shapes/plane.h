@@ -16,6 +16,7 @@ bool inside_plane(const Plane& pl, const Point3& p);
 void shape_hits(const Plane& p, const LocalRay& r, ShapeHits& out);
 Vector3 shape_normal(const Plane& p, const ShapeHit& h);
 bool shape_inside(const Plane& p, const Point3& q);
+bool shape_inside_inverted(const Plane& p, const Point3& q);
 Bounds3 shape_bounds(const Plane& p);  // everything
 PovBBox shape_pov_bbox(const Plane& p, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Plane&) { return false; }

@@ -62,6 +62,11 @@ Vector3 shape_normal(const Quadric& q, const ShapeHit& h) {
 
 bool shape_inside(const Quadric& q, const Point3& p) { return quadric_value(q, p) <= 0; }
 
+// POV-Ray inverts a quadric by negating its coefficients: its surface stays inside.
+bool shape_inside_inverted(const Quadric& q, const Point3& p) {
+    return quadric_value(q, p) >= 0;
+}
+
 // Every hit the ray can have: the surface may leave POV-Ray's box (only the ray must
 // meet the box), so nothing tighter is safe.
 Bounds3 shape_bounds(const Quadric&) { return Bounds3::everything(); }

@@ -21,6 +21,7 @@ Real quadric_value(const Quadric& q, const Point3& p);
 void shape_hits(const Quadric& q, const LocalRay& r, ShapeHits& out);
 Vector3 shape_normal(const Quadric& q, const ShapeHit& h);
 bool shape_inside(const Quadric& q, const Point3& p);
+bool shape_inside_inverted(const Quadric& q, const Point3& p);
 Bounds3 shape_bounds(const Quadric& q);
 PovBBox shape_pov_bbox(const Quadric& q, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Quadric&) { return true; }

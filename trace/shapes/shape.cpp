@@ -50,6 +50,15 @@ bool leaf_inside(const Object& leaf, const Point3& p) {
     return visit_leaf<bool>(leaf, [&](const auto& s) { return shape_inside(s, p); });
 }
 
+bool leaf_inside_inverted(const Object& leaf, const Point3& p) {
+    return visit_leaf<bool>(leaf, [&](const auto& s) {
+        if constexpr (requires { shape_inside_inverted(s, p); })
+            return shape_inside_inverted(s, p);
+        else
+            return !shape_inside(s, p);
+    });
+}
+
 Bounds3 leaf_bounds(const Object& leaf) {
     return visit_leaf<Bounds3>(leaf, [&](const auto& s) { return shape_bounds(s); });
 }

@@ -49,6 +49,10 @@ Vector3 leaf_world_normal(const Object& leaf, const ShapeHit& h);
 // `p` in the leaf's own space; surfaces (triangle, disc, polygon, a mesh without an
 // inside_vector) have no inside.
 bool leaf_inside(const Object& leaf, const Point3& p);
+// The leaf's inside once POV-Ray's Invert has turned it (the caller checks
+// leaf_invertible): the complement, except where its Invert keeps the surface inside both
+// ways (plane, quadric) or in neither (sphere).
+bool leaf_inside_inverted(const Object& leaf, const Point3& p);
 // Bounds in the leaf's own space; Bounds3::everything() for an infinite shape.
 Bounds3 leaf_bounds(const Object& leaf);
 // POV-Ray's box of the leaf (its Compute_BBox through the leaf's transform).

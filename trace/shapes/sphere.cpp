@@ -38,6 +38,12 @@ Vector3 shape_normal(const Sphere& s, const ShapeHit& h) { return sphere_normal(
 
 bool shape_inside(const Sphere& s, const Point3& p) { return inside_sphere(s, p); }
 
+// POV-Ray's inverted sphere is strictly outside: its surface is in neither.
+bool shape_inside_inverted(const Sphere& s, const Point3& p) {
+    Vector3 d = p - s.centre;
+    return dot(d, d) > s.radius * s.radius;
+}
+
 Bounds3 shape_bounds(const Sphere& s) {
     return {s.centre - Vector3(s.radius), s.centre + Vector3(s.radius)};
 }

@@ -19,6 +19,7 @@ bool inside_sphere(const Sphere& s, const Point3& p);
 void shape_hits(const Sphere& s, const LocalRay& r, ShapeHits& out);
 Vector3 shape_normal(const Sphere& s, const ShapeHit& h);
 bool shape_inside(const Sphere& s, const Point3& p);
+bool shape_inside_inverted(const Sphere& s, const Point3& p);
 Bounds3 shape_bounds(const Sphere& s);
 PovBBox shape_pov_bbox(const Sphere& s, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Sphere&) { return false; }

@@ -124,7 +124,8 @@ Vector3 torus_normal(const Torus& tor, const Point3& p) {
 
 bool inside_torus(const Torus& tor, const Point3& p) {
     Real d = std::sqrt(p.x * p.x + p.z * p.z) - tor.major;
-    return d * d + p.y * p.y < tor.minor * tor.minor;
+    return p.y * p.y + d * d <=
+           tor.minor * tor.minor;  // POV-Ray's: the surface is inside
 }
 
 void shape_hits(const Torus& t, const LocalRay& r, ShapeHits& out) {
