@@ -1,7 +1,8 @@
 // inside() on the surfaces and at the clips where POV-Ray's inverse rules differ by shape:
 // a plane and a quadric keep their surface inside both ways, a sphere in neither, a box,
 // a torus and a cylinder flip; a disc is the half-space behind it; an inverted or
-// subtracted part keeps its clips as they are.
+// subtracted part keeps its clips as they are; a closed cone's or cylinder's surface is
+// outside, an open one's inside; each other shape on its surface.
 #version 3.7;
 #macro Show(Name, Obj, P)
   #debug concat(Name, " ", str(inside(Obj, P), 0, 0), "\n")
@@ -36,4 +37,31 @@ Show("inverse union outside", Inv, <-5, 0, 0>)
 Show("difference by a plane on it", difference { box { -1, 1 } plane { y, 0.5 } }, <0, 0.5, 0>)
 Show("intersection with an inverse plane on it", intersection { box { -1, 1 } plane { y, 0.5 inverse } }, <0, 0.5, 0>)
 Show("difference by a sphere on it", difference { box { -2, 2 } sphere { 0, 1 } }, <1, 0, 0>)
+Show("cone on side", cone { 0, 1, y, 0 }, <0.5, 0.5, 0>)
+Show("cone on cap", cone { 0, 1, y, 0 }, <0.2, 0, 0>)
+Show("cone open on side", cone { 0, 1, y, 0 open }, <0.5, 0.5, 0>)
+Show("cone open on cap", cone { 0, 1, y, 0 open }, <0.2, 0, 0>)
+Show("cylinder open on side", cylinder { 0, y, 1 open }, <1, 0.5, 0>)
+Show("cylinder on cap", cylinder { 0, y, 1 }, <0.5, 1, 0>)
+Show("cylinder open on cap", cylinder { 0, y, 1 open }, <0.5, 1, 0>)
+Show("superellipsoid on", superellipsoid { <1, 1> }, <1, 0, 0>)
+Show("superellipsoid corner", superellipsoid { <0.5, 0.5> }, <0, 1, 0>)
+Show("blob on", blob { threshold 0.5 sphere { 0, 1, 1 } }, <sqrt(0.5), 0, 0>)
+Show("isosurface on", isosurface { function { x*x + y*y + z*z - 1 } contained_by { box { -2, 2 } } }, <1, 0, 0>)
+Show("isosurface container", isosurface { function { -1 } contained_by { box { -2, 2 } } }, <2, 0, 0>)
+Show("poly on", poly { 2, <1, 0, 0, 0, 1, 0, 0, 1, 0, -1> }, <1, 0, 0>)
+Show("prism side", prism { 0, 1, 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }, <0.5, 0.5, 0>)
+Show("prism top", prism { 0, 1, 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }, <0.7, 1, 0.3>)
+Show("prism bottom", prism { 0, 1, 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }, <0.7, 0, 0.3>)
+Show("lathe side", lathe { linear_spline 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> }, <1, 0.5, 0>)
+Show("lathe top", lathe { linear_spline 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> }, <0.5, 1, 0>)
+Show("sor side", sor { 4, <0, -1>, <1, 0>, <1, 1>, <0, 2> }, <1, 0.5, 0>)
+Show("sor top", sor { 4, <0, -1>, <1, 0>, <1, 1>, <0, 2> }, <0.5, 1, 0>)
+Show("sor bottom", sor { 4, <0, -1>, <1, 0>, <1, 1>, <0, 2> }, <0.5, 0, 0>)
+Show("ovus", ovus { 1, 0.5 }, <1, 0, 0>)
+Show("sphere_sweep", sphere_sweep { linear_spline 2, <0,0,0>, 1, <2,0,0>, 1 }, <1, 1, 0>)
+Show("box inverse on corner", box { -1, 1 inverse }, <1, 1, 1>)
+Show("text", text { ttf "timrom.ttf" "I" 1, 0 }, <0.1, 0.3, 0>)
+Show("height_field", height_field { function 10, 10 { 0.5 } }, <0.5, 0.5, 0.5>)
+Show("height_field below", height_field { function 10, 10 { 0.5 } }, <0.5, 0.2, 0.5>)
 #debug "END\n"

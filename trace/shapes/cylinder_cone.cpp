@@ -148,14 +148,27 @@ Vector3 cone_normal(const Cone& c, const Point3& p, int face) {
 }
 
 bool inside_cone(const Cone& c, const Point3& p) {
-    AxisFrame f = axis_of(c.base, c.cap);
-    Real k = (c.cap_radius - c.base_radius) / f.len;
-    Vector3 u = p - c.base;
-    Real h = dot(u, f.axis);
-    if (h < 0 || h > f.len) return false;
-    Vector3 perp = u - f.axis * h;
-    Real r = c.base_radius + k * h;
-    return dot(perp, perp) < r * r;
+    // POV-Ray's Cone::Inside in its cone space: the tip at z = 0, the wider end at z = 1
+    // with radius 1, the narrower at z = dist, and the same EPSILON margin as the
+    // cylinder's (a closed cone's surface is outside, an open one's inside). Radii within
+    // EPSILON make it a cylinder.
+    const bool cap_wider = c.cap_radius > c.base_radius;
+    const Real wide = cap_wider ? c.cap_radius : c.base_radius;
+    const Real narrow = cap_wider ? c.base_radius : c.cap_radius;
+    const Point3& narrow_end = cap_wider ? c.base : c.cap;
+    AxisFrame f = axis_of(narrow_end, cap_wider ? c.cap : c.base);
+    const Real margin = c.open ? kPovEpsilon : -kPovEpsilon;
+    const Vector3 u = p - narrow_end;
+    const Real h = dot(u, f.axis);
+    const Vector3 perp = u - f.axis * h;
+    const Real tip = narrow * f.len / (wide - narrow);  // the tip's distance before it
+    const Real length = tip + f.len;
+    if (wide - narrow < kPovEpsilon || (wide - narrow) * f.len / length < kPovEpsilon) {
+        const Real z = h / f.len, w2 = dot(perp, perp) / (c.cap_radius * c.cap_radius);
+        return !(w2 > 1 + margin || z < -margin || z > 1 + margin);
+    }
+    const Real z = (h + tip) / length, w2 = dot(perp, perp) / (wide * wide);
+    return !(w2 > z * z + margin || z < tip / length - margin || z > 1 + margin);
 }
 
 void shape_hits(const Cylinder& c, const LocalRay& r, ShapeHits& out) {
