@@ -34,8 +34,20 @@ Vector3 shape_normal(const Mesh& m, const ShapeHit& h) {
     return normalize(smooth_triangle_normal(p, n, h.p));
 }
 
+namespace {
+bool has_inside(const Mesh& m) {
+    return m.inside_vector && dot(*m.inside_vector, *m.inside_vector) != 0;
+}
+}  // namespace
+
+// POV-Ray's Mesh::Inside answers false for a mesh without inside_vector before it looks
+// at the inverted flag: such a mesh holds nothing, inverted or not.
+bool shape_inside_inverted(const Mesh& m, const Point3& q) {
+    return has_inside(m) && !shape_inside(m, q);
+}
+
 bool shape_inside(const Mesh& m, const Point3& q) {
-    if (!m.inside_vector || dot(*m.inside_vector, *m.inside_vector) == 0) return false;
+    if (!has_inside(m)) return false;
     const Vector3 dir = normalize(*m.inside_vector);
     int crossed = 0;
     for (const auto& f : m.faces) {

@@ -20,6 +20,7 @@ Vector3 shape_normal(const Mesh& m, const ShapeHit& h);
 // Solid only with an inside_vector (as in POV-Ray): a point is inside when a ray from it
 // along that vector crosses the triangles an odd number of times.
 bool shape_inside(const Mesh& m, const Point3& p);
+bool shape_inside_inverted(const Mesh& m, const Point3& p);
 Bounds3 shape_bounds(const Mesh& m);
 PovBBox shape_pov_bbox(const Mesh& m, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Mesh&) { return true; }
