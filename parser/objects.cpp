@@ -737,8 +737,29 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 accept_punct(',');
                 tri.n.edit()[i] = parse_vector();
             }
-            if (degenerate_corners(tri.p))
+            // POV-Ray (Parse_Smooth_Triangle, Compute_Smooth_Triangle) normalises the
+            // vertex normals; a zero one, or normals not all on one side of the face,
+            // make the triangle degenerate: never hit. A zero first normal marks that.
+            auto& n = tri.n.edit();
+            const Vector3 face = cross(tri.p[0] - tri.p[1], tri.p[2] - tri.p[1]);
+            bool degenerate = degenerate_corners(tri.p);
+            int above = 0, below = 0;
+            for (Vector3& v : n) {
+                const Real len = length(v);
+                if (len == 0) {
+                    degenerate = true;
+                    continue;
+                }
+                v = v / len;
+                const Real side = dot(face, v);
+                above += side > 0;
+                below += side < 0;
+            }
+            if (above != 3 && below != 3) degenerate = true;
+            if (degenerate) {
                 warn(t, "degenerate triangle, never hit; please remove");
+                n[0] = Vector3{0, 0, 0};
+            }
             out.shape = tri;
         }
     } else if (w == "polygon") {

@@ -84,6 +84,9 @@ bool shape_oracle_first(const Triangle& t, const OracleRay& r, OracleBest& best)
 }
 
 void shape_hits(const SmoothTriangle& t, const LocalRay& r, ShapeHits& out) {
+    // A zero first normal: the parser found it degenerate (POV-Ray never hits it).
+    const Vector3& n0 = (*t.n)[0];
+    if (n0.x == 0 && n0.y == 0 && n0.z == 0) return;
     corner_hits(t.p, r, out);
 }
 Vector3 shape_normal(const SmoothTriangle& t, const ShapeHit& h) {
@@ -95,6 +98,8 @@ PovBBox shape_pov_bbox(const SmoothTriangle& t, const CompactTransform& xf) {
     return corner_pov_bbox(t.p, xf);
 }
 bool shape_oracle_first(const SmoothTriangle& t, const OracleRay& r, OracleBest& best) {
+    const Vector3& n0 = (*t.n)[0];
+    if (n0.x == 0 && n0.y == 0 && n0.z == 0) return true;  // degenerate: never hit
     return corner_oracle(t.p, r, best);
 }
 
