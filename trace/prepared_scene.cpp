@@ -867,7 +867,10 @@ void PreparedScene::add_frame_object(const Object& o, uint32_t frame) {
                 tri.p[k] = o.transform.point(single_precision(m->vertices[f.v[k]]));
                 b.extend(tri.p[k]);
                 if (f.n[k] >= 0 && size_t(f.n[k]) < m->normals.size()) {
-                    tri.n[k] = normalize(o.transform.normal(m->normals[f.n[k]]));
+                    // POV-Ray interpolates the unit normals in the mesh's space and
+                    // then turns the result out: the turned normals are not made unit
+                    // again (a non-uniform scale weighs them as it does).
+                    tri.n[k] = o.transform.normal(normalize(m->normals[f.n[k]]));
                     tri.smooth = true;
                 }
             }
