@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "core/mesh_camera.h"
+#include "trace/object_inside.h"
+#include "trace/pov_bounds.h"
 #include "trace/prepared_scene.h"
 
 namespace povwall::trace {
@@ -73,16 +75,19 @@ void CameraInteriors::collect(const Object& o, const Bounds3& origins) {
         for (const Object& c : std::get<Csg>(o.shape).children) collect(c, origins);
         return;
     }
-    const Bounds3 b = object_world_bounds(o);
-    if (intersection(b, origins).empty()) return;
+    if (intersection(object_world_bounds(o), origins).empty()) return;
     candidates_.push_back(&o);
-    bounds_.push_back(b);
+    // POV-Ray tests its own (float) box of the object: an inverted shape keeps its
+    // finite box, so a camera outside that box is not inside the inverted shape.
+    bounds_.push_back(pov_bbox_bounds(pov_object_bbox(o)));
 }
 
 void CameraInteriors::fill(const Point3& origin, InteriorStack& out) const {
     out = InteriorStack{};
     for (size_t i = 0; i < candidates_.size(); ++i) {
-        if (contains(bounds_[i], origin) && inside_object(*candidates_[i], origin))
+        // The object's own Inside, as POV-Ray's InitRayContainerState asks it: its
+        // clips are not tested (its box is already cut to theirs).
+        if (contains(bounds_[i], origin) && inside_unclipped(*candidates_[i], origin))
             out.push(&materials_[i]);
     }
 }
