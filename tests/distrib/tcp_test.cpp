@@ -360,6 +360,8 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "coincident_copies",
                              "torus_pov_solver",
                              "csg_inside_rules",
+                             "triangle_mesh_rules",
+                             "camera_interiors_pov_rules",
                              "mesh_normal_rules",
                              "pigment_map_replaced",
                              "map_entries",
