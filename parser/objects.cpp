@@ -4,6 +4,7 @@
 #include <iterator>
 #include <unordered_map>
 
+#include "core/pov_frame.h"
 #include "core/quadric.h"
 #include "core/quadric_bounds.h"
 #include "parser/interpreter.h"
@@ -635,8 +636,20 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             require_operand("the cylinder's radius");
             c.radius = parse_float();
             // POV-Ray stops here too: the axis has no direction.
-            if (length(c.cap - c.base) < 1e-10)
-                error(t, "degenerate cylinder, base point = cap point");
+            // POV-Ray reads the first point as its apex and the second as its base.
+            const Vector3 axis = c.base - c.cap;
+            const Real len = length(axis);
+            if (len < 1e-10) error(t, "degenerate cylinder, base point = cap point");
+            // As POV-Ray holds it (Compute_Cylinder_Data): the unit cylinder in its
+            // frame from the second point towards the first, which the object's
+            // transforms then compose onto, so rays meet it with POV-Ray's bits
+            // (coincident cylinders tie as in POV-Ray). A zero radius stays as written:
+            // a line, never hit.
+            if (c.radius != 0 && std::isfinite(c.radius)) {
+                out.transform =
+                    pov_coordinate_transform(c.cap, axis * (1.0 / len), c.radius, len);
+                c = Cylinder{{0, 0, 0}, {0, 0, 1}, 1, false};
+            }
             out.shape = c;
         }
     } else if (w == "cone") {

@@ -9,40 +9,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/pov_frame.h"
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
 namespace {
 
-// POV-Ray's Compute_Coordinate_Transform(base, axis, 1, 1): the rotation about
-// (-axis.y, axis.x, 0) by acos(axis.z) that takes z to `axis` (its inverse the
-// transpose), then the translation to `base`.
+// POV-Ray's Compute_Coordinate_Transform(base, axis, 1, 1).
 Transform cylinder_frame(const Point3& base, Vector3 up) {
-    Vector3 k;
-    if (std::fabs(up.z) > 1.0 - 1e-10) {
-        k = {1, 0, 0};
-        up.z = up.z < 0 ? -1.0 : 1.0;
-    } else {
-        k = {-up.y, up.x, 0};
-    }
-    const Vector3 v = normalize(k);
-    const Real angle = std::acos(up.z);
-    const Real c = std::cos(angle), s = std::sin(angle);
-    // p[r][c] with POV-Ray's row-vector convention (a point is p times the matrix).
-    const Real p[3][3] = {
-        {v.x * v.x + c * (1.0 - v.x * v.x), v.x * v.y * (1.0 - c) + v.z * s,
-         v.x * v.z * (1.0 - c) - v.y * s},
-        {v.x * v.y * (1.0 - c) - v.z * s, v.y * v.y + c * (1.0 - v.y * v.y),
-         v.y * v.z * (1.0 - c) + v.x * s},
-        {v.x * v.z * (1.0 - c) + v.y * s, v.y * v.z * (1.0 - c) - v.x * s,
-         v.z * v.z + c * (1.0 - v.z * v.z)}};
-    Matrix34 fwd, inv;
-    for (int r = 0; r < 3; ++r)
-        for (int col = 0; col < 3; ++col) {
-            fwd.m[col][r] = p[r][col];
-            inv.m[r][col] = p[r][col];
-        }
-    return Transform::from_matrices(fwd, inv).then(Transform::translate(base));
+    return pov_coordinate_transform(base, up, 1, 1);
 }
 
 }  // namespace

@@ -290,7 +290,10 @@ Bounds3 object_bounds(const Object& o) {
     }
     const Bounds3 local = leaf_bounds(o);
     if (!local.empty() && local.infinite()) return Bounds3::everything();
-    Bounds3 world = o.transform.bounds(local);
+    const Cylinder* cylinder = std::get_if<Cylinder>(&o.shape);
+    Bounds3 world = cylinder && cylinder->radius != 0
+                        ? cylinder_world_bounds(*cylinder, o.transform)
+                        : o.transform.bounds(local);
     for (const Object& c : *o.clipped_by) {
         Bounds3 cb = object_bounds(c);
         if (!cb.infinite()) world = intersection(world, cb);

@@ -53,9 +53,14 @@ TEST(Syntax, CommasAreOptionalAndTrailingCommasAccepted) {
     const Sphere& sp = std::get<Sphere>(s.objects[1].shape);
     expect_vec(sp.centre, -1, 0, 0);
     EXPECT_EQ(sp.radius, 2);
+    // A cylinder is the unit cylinder in POV-Ray's frame: from its second point (z = 0)
+    // to its first (z = 1), radius 1 scaled to its own.
     const Cylinder& c = std::get<Cylinder>(s.objects[2].shape);
-    expect_vec(c.cap, 0, 1, 0);
-    EXPECT_EQ(c.radius, 0.5);
+    EXPECT_EQ(c.radius, 1);
+    const CompactTransform& frame = s.objects[2].transform;
+    expect_vec(frame.point({0, 0, 0}), 0, 1, 0);
+    expect_vec(frame.point({0, 0, 1}), 0, 0, 0);
+    EXPECT_NEAR(length(frame.point({1, 0, 0}) - frame.point({0, 0, 0})), 0.5, 1e-12);
     EXPECT_FLOAT_EQ(s.objects[3].texture[0].pigment.colour.rgb.b, 0.5f);
 }
 

@@ -216,7 +216,9 @@ TEST(Commas, ObjectHeadersWithAndWithoutCommas) {
         EXPECT_EQ(cone.base_radius, 1);
         EXPECT_EQ(cone.cap_radius, 0.5);
         expect_vec(cone.cap, 0, 1, 0);
-        EXPECT_EQ(std::get<Cylinder>(s.objects[3].shape).radius, 2);
+        // (The unit cylinder in POV-Ray's frame: the radius is the frame's scale.)
+        const CompactTransform& frame = s.objects[3].transform;
+        EXPECT_NEAR(length(frame.point({1, 0, 0}) - frame.point({0, 0, 0})), 2, 1e-12);
         const Disc& d = std::get<Disc>(s.objects[4].shape);
         EXPECT_EQ(d.radius, 2);
         EXPECT_EQ(d.hole_radius, 1);

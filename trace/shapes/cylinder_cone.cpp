@@ -22,8 +22,60 @@ AxisFrame axis_of(const Point3& base, const Point3& cap) {
 
 }  // namespace
 
+namespace {
+
+bool is_unit_cylinder(const Cylinder& c) {
+    return c.radius == 1 && c.base.x == 0 && c.base.y == 0 && c.base.z == 0 &&
+           c.cap.x == 0 && c.cap.y == 0 && c.cap.z == 1;
+}
+
+// The unit cylinder (x^2 + y^2 = 1, 0 <= z <= 1; `dir` unit) in POV-Ray's arithmetic
+// (Cone::Intersect with CYLINDER_FLAG): the parser puts every cylinder in this form with
+// POV-Ray's frame as its transform, so crossings come out with POV-Ray's bits.
+void intersect_unit_cylinder(bool open, const Point3& p, const Vector3& d,
+                             Crossings& out) {
+    Real t[4];
+    int faces[4];
+    int n = 0;
+    const Real a = d.x * d.x + d.y * d.y;
+    if (a > kPovEpsilon) {
+        const Real b = p.x * d.x + p.y * d.y;
+        const Real c = p.x * p.x + p.y * p.y - 1.0;
+        Real disc = b * b - a * c;
+        if (disc >= 0.0) {
+            disc = std::sqrt(disc);
+            for (const Real k : {(-b + disc) / a, (-b - disc) / a}) {
+                const Real z = p.z + k * d.z;
+                if (k > kConeTolerance && k < kMaxDistance && z >= 0.0 && z <= 1.0) {
+                    t[n] = k;
+                    faces[n++] = 0;
+                }
+            }
+        }
+    }
+    if (!open && std::fabs(d.z) > kPovEpsilon) {
+        for (const Real h : {1.0, 0.0}) {  // the cap (face 2), then the base (face 1)
+            const Real k = (h - p.z) / d.z;
+            const Real u = p.x + k * d.x, v = p.y + k * d.y;
+            if (u * u + v * v <= 1.0 && k > kConeTolerance && k < kMaxDistance) {
+                t[n] = k;
+                faces[n++] = h == 1.0 ? 2 : 1;
+            }
+        }
+    }
+    for (int i = 1; i < n; ++i)  // ascending
+        for (int j = i; j > 0 && t[j] < t[j - 1]; --j) {
+            std::swap(t[j], t[j - 1]);
+            std::swap(faces[j], faces[j - 1]);
+        }
+    for (int i = 0; i < n; ++i) out.add(t[i], faces[i]);
+}
+
+}  // namespace
+
 void intersect_cylinder(const Cylinder& c, const Point3& o, const Vector3& dir,
                         Crossings& out) {
+    if (is_unit_cylinder(c)) return intersect_unit_cylinder(c.open, o, dir, out);
     // Zero radius (exporters write them): a line, never hit; its normal would be 0/0.
     if (c.radius == 0) return;
     AxisFrame f = axis_of(c.base, c.cap);
@@ -189,6 +241,25 @@ Bounds3 shape_bounds(const Cylinder& c) {
     b.extend(c.cap);
     b.lo -= Vector3(c.radius);
     b.hi += Vector3(c.radius);
+    return b;
+}
+
+Bounds3 cylinder_world_bounds(const Cylinder& c, const Transform& xf) {
+    const AxisFrame f = axis_of(c.base, c.cap);
+    // Two unit vectors across the axis.
+    const Vector3 helper =
+        std::fabs(f.axis.x) < 0.9 ? Vector3{1, 0, 0} : Vector3{0, 1, 0};
+    const Vector3 u = normalize(cross(f.axis, helper)), v = cross(f.axis, u);
+    const Vector3 wu = xf.vector(u * c.radius), wv = xf.vector(v * c.radius);
+    const Point3 e0 = xf.point(c.base), e1 = xf.point(c.cap);
+    Bounds3 b;
+    for (int a = 0; a < 3; ++a) {
+        const Real reach = std::sqrt(wu[a] * wu[a] + wv[a] * wv[a]);
+        // A margin far above the rounding of the crossings (relative 1e-16).
+        const Real slack = 1e-9 * (std::fabs(e0[a]) + std::fabs(e1[a]) + reach);
+        b.lo[a] = std::min(e0[a], e1[a]) - reach - slack;
+        b.hi[a] = std::max(e0[a], e1[a]) + reach + slack;
+    }
     return b;
 }
 

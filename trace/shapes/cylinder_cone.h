@@ -22,6 +22,10 @@ void shape_hits(const Cylinder& c, const LocalRay& r, ShapeHits& out);
 Vector3 shape_normal(const Cylinder& c, const ShapeHit& h);
 bool shape_inside(const Cylinder& c, const Point3& p);
 Bounds3 shape_bounds(const Cylinder& c);
+// The world box of the cylinder under `xf` (any affine map), as tight as its ends and its
+// turned cross-section allow: a box of the local box's corners would grow by up to
+// sqrt(2) across a slanted cylinder.
+Bounds3 cylinder_world_bounds(const Cylinder& c, const Transform& xf);
 PovBBox shape_pov_bbox(const Cylinder& c, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Cylinder&) { return true; }
 inline bool shape_convex(const Cylinder& c) { return !c.open; }
