@@ -57,7 +57,7 @@ INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
                                            "fileio", "keywords", "text_extents",
                                            "object_queries", "string_relations",
                                            "legacy_semicolons", "torus_pov_solver",
-                                           "inside_rules"));
+                                           "inside_rules", "cylinder_trace_bits"));
 
 }  // namespace
 }  // namespace povwall::parser
