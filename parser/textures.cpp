@@ -91,10 +91,15 @@ Numeric Interpreter::parse_colour(bool hold_directives) {
         if (form.text[0] == 's' && !scene_.settings.assumed_gamma)
             error(form, "cannot read sRGB colours before assumed_gamma has been set");
     };
-    auto set = [&](const Numeric& v, int count, bool srgb) {
+    // POV-Ray's Parse_Colour keeps every term the expression has: `rgb <r, g, b, f>` is
+    // rgbf (a declared colour after rgb keeps its filter and transmit), with a warning.
+    auto set = [&](const Numeric& v, int count, bool srgb, const Token& keyword) {
         Numeric p = v;
         if (p.size == 1) {
             for (int i = 1; i < 5; ++i) p.c[i] = p.c[0];
+        } else if (p.size > count) {
+            warn(keyword, "suspicious expression after " + std::string(keyword.text));
+            count = p.size;
         }
         for (int i = 0; i < count; ++i) {
             c.c[i] = (srgb && i < 3) ? decode_srgb(p.c[i]) : p.c[i];
@@ -110,24 +115,26 @@ Numeric Interpreter::parse_colour(bool hold_directives) {
         if (form && any) break;
         if (form) check_srgb(t);
         if (w == "rgb" || w == "srgb") {
-            next();
-            set(express(), 3, w == "srgb");
+            const Token keyword = next();
+            set(express(), 3, w == "srgb", keyword);
         } else if (w == "rgbf" || w == "srgbf") {
-            next();
-            set(express(), 4, w == "srgbf");
+            const Token keyword = next();
+            set(express(), 4, w == "srgbf", keyword);
         } else if (w == "rgbt" || w == "srgbt") {
-            next();
+            const Token keyword = next();
             Numeric v = express();
             Numeric p = v;
             if (p.size == 1) {
                 for (int i = 1; i < 5; ++i) p.c[i] = p.c[0];
+            } else if (p.size > 4) {
+                warn(keyword, "suspicious expression after " + std::string(keyword.text));
             }
             for (int i = 0; i < 3; ++i)
                 c.c[i] = w == "srgbt" ? decode_srgb(p.c[i]) : p.c[i];
             c.c[4] = p.c[3];
         } else if (w == "rgbft" || w == "srgbft") {
-            next();
-            set(express(), 5, w == "srgbft");
+            const Token keyword = next();
+            set(express(), 5, w == "srgbft", keyword);
         } else if (w == "red" || w == "green" || w == "blue" || w == "filter" ||
                    w == "transmit" || w == "alpha") {
             next();
