@@ -1393,6 +1393,9 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
             uv.map.edit().entries.push_back(std::move(inner));
             layers.assign(1, std::move(uv));
             return;
+        } else if (w == "no_bump_scale") {
+            // POV-Ray's DONT_SCALE_BUMPS on the texture, handed to its normals.
+            unsupported(t, w);
         } else if (w == "material_map") {
             parse_material_map(t, top);
         } else if (w == "tiles") {

@@ -532,6 +532,10 @@ TEST(Errors, PatternRefusalsAndMisuses) {
         message("plane { y, 0 normal { checker normal { bumps } } }"),
         "give all 2 normals of 'checker' (POV-Ray 3.7 crashes on the missing ones)");
     EXPECT_EQ(refusal("plane { y, 0 pigment { pavement } }"), "unsupported: pavement");
+    // Written straight in a texture (POV-Ray hands the flag to its normals).
+    EXPECT_EQ(
+        refusal("plane { y, 0 texture { pigment { rgb 1 } scale 2 no_bump_scale } }"),
+        "unsupported: no_bump_scale");
     EXPECT_EQ(refusal("plane { y, 0 pigment { proportion } }"), "(an error)");
     EXPECT_EQ(refusal("plane { y, 0 pigment { gradient_map } }"), "(an error)");
     EXPECT_EQ(
