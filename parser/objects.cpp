@@ -190,6 +190,50 @@ bool move_sweep_spheres(SphereSweep& sweep, const Transform& t,
 
 }  // namespace
 
+namespace {
+
+// A cone as POV-Ray holds it (Compute_Cone_Data): the first point is its apex, the
+// second its base; the wider end goes on top; the unit cone x^2 + y^2 = z^2 between
+// z = dist and 1 in the frame of the full cone's tip, so rays meet it with POV-Ray's
+// bits. Radii within 1e-10 make it POV-Ray's cylinder. Negative or infinite radii stay as
+// written.
+void pov_cone_frame(Cone c, Object& out) {
+    out.shape = c;
+    Point3 apex = c.base, base = c.cap;
+    Real apex_r = c.base_radius, base_r = c.cap_radius;
+    if (!(apex_r >= 0 && base_r >= 0 && std::isfinite(apex_r) && std::isfinite(base_r)))
+        return;
+    auto unit_axis = [](const Point3& to, const Point3& from, Real& len) {
+        const Vector3 a = to - from;
+        len = length(a);
+        return a * (1.0 / len);
+    };
+    auto cylinder = [&](const Point3& top, const Point3& bottom, Real radius) {
+        if (radius == 0) return;  // a line, never hit
+        Real len;
+        const Vector3 axis = unit_axis(top, bottom, len);
+        out.transform = pov_coordinate_transform(bottom, axis, radius, len);
+        out.shape = Cylinder{{0, 0, 0}, {0, 0, 1}, 1, c.open};
+    };
+    if (std::fabs(apex_r - base_r) < 1e-10) return cylinder(apex, base, apex_r);
+    Real len;
+    Vector3 axis = unit_axis(apex, base, len);
+    if (apex_r < base_r) {
+        std::swap(apex, base);
+        std::swap(apex_r, base_r);
+        axis = axis * -1.0;
+    }
+    const Real below = base_r * len / (apex_r - base_r);  // the tip before the base
+    const Point3 tip = base - axis * below;
+    const Real full = below + len;
+    if ((apex_r - base_r) * len / full < 1e-10) return cylinder(apex, base, apex_r);
+    const Real dist = below / full;
+    out.transform = pov_coordinate_transform(tip, axis, apex_r, full);
+    out.shape = Cone{{0, 0, dist}, {0, 0, 1}, dist, 1, c.open};
+}
+
+}  // namespace
+
 void Interpreter::apply_transform(Object& obj, const Transform& t,
                                   const TransformStep& step) {
     Plane* plane = std::get_if<Plane>(&obj.shape);
@@ -665,7 +709,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             c.cap_radius = parse_float();
             if (length(c.cap - c.base) < 1e-10)
                 error(t, "degenerate cone, base point = cap point");
-            out.shape = c;
+            pov_cone_frame(c, out);
         }
     } else if (w == "text") {
         open();

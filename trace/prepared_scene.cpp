@@ -291,9 +291,11 @@ Bounds3 object_bounds(const Object& o) {
     const Bounds3 local = leaf_bounds(o);
     if (!local.empty() && local.infinite()) return Bounds3::everything();
     const Cylinder* cylinder = std::get_if<Cylinder>(&o.shape);
+    const Cone* cone = std::get_if<Cone>(&o.shape);
     Bounds3 world = cylinder && cylinder->radius != 0
                         ? cylinder_world_bounds(*cylinder, o.transform)
-                        : o.transform.bounds(local);
+                    : cone ? cone_world_bounds(*cone, o.transform)
+                           : o.transform.bounds(local);
     for (const Object& c : *o.clipped_by) {
         Bounds3 cb = object_bounds(c);
         if (!cb.infinite()) world = intersection(world, cb);

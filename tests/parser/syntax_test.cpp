@@ -212,10 +212,16 @@ TEST(Commas, ObjectHeadersWithAndWithoutCommas) {
         expect_vec(sp.centre, 1, 2, 3);
         EXPECT_EQ(sp.radius, 4);
         expect_vec(std::get<Box>(s.objects[1].shape).corner2, 1, 2, 3);
+        // The unit cone in POV-Ray's frame: its full cone's tip at z = 0, the wider end
+        // (radius 1 at the origin) at z = 1, the narrower (0.5 at y) at z = 0.5.
         const Cone& cone = std::get<Cone>(s.objects[2].shape);
-        EXPECT_EQ(cone.base_radius, 1);
-        EXPECT_EQ(cone.cap_radius, 0.5);
-        expect_vec(cone.cap, 0, 1, 0);
+        EXPECT_EQ(cone.base_radius, 0.5);
+        EXPECT_EQ(cone.cap_radius, 1);
+        const CompactTransform& cone_frame = s.objects[2].transform;
+        EXPECT_NEAR(length(cone_frame.point({0, 0, 1}) - Point3{0, 0, 0}), 0, 1e-12);
+        EXPECT_NEAR(length(cone_frame.point({0, 0, 0.5}) - Point3{0, 1, 0}), 0, 1e-12);
+        EXPECT_NEAR(length(cone_frame.point({1, 0, 1}) - cone_frame.point({0, 0, 1})), 1,
+                    1e-12);
         // (The unit cylinder in POV-Ray's frame: the radius is the frame's scale.)
         const CompactTransform& frame = s.objects[3].transform;
         EXPECT_NEAR(length(frame.point({1, 0, 0}) - frame.point({0, 0, 0})), 2, 1e-12);

@@ -138,7 +138,66 @@ bool inside_cylinder(const Cylinder& c, const Point3& p) {
     return !(w2 > 1 + margin || z < -margin || z > 1 + margin);
 }
 
+namespace {
+
+// The parser's form of every cone (pov_cone_frame): x^2 + y^2 = z^2 from z = dist (the
+// base's radius) to 1.
+bool is_unit_cone(const Cone& c) {
+    return c.cap_radius == 1 && c.cap.x == 0 && c.cap.y == 0 && c.cap.z == 1 &&
+           c.base.x == 0 && c.base.y == 0 && c.base.z == c.base_radius &&
+           c.base_radius >= 0 && c.base_radius < 1;
+}
+
+// The unit cone in POV-Ray's arithmetic (Cone::Intersect; `d` unit).
+void intersect_unit_cone(const Cone& c, const Point3& p, const Vector3& d,
+                         Crossings& out) {
+    const Real dist = c.base_radius;
+    Real t[4];
+    int faces[4];
+    int n = 0;
+    auto side = [&](Real k) {
+        const Real z = p.z + k * d.z;
+        if (k > kConeTolerance && k < kMaxDistance && z >= dist && z <= 1.0) {
+            t[n] = k;
+            faces[n++] = 0;
+        }
+    };
+    const Real a = d.x * d.x + d.y * d.y - d.z * d.z;
+    const Real b = d.x * p.x + d.y * p.y - d.z * p.z;
+    const Real cc = p.x * p.x + p.y * p.y - p.z * p.z;
+    if (std::fabs(a) < kPovEpsilon) {
+        if (std::fabs(b) > kPovEpsilon) side(-0.5 * cc / b);
+    } else {
+        Real disc = b * b - a * cc;
+        if (disc >= 0.0) {
+            disc = std::sqrt(disc);
+            side((-b - disc) / a);
+            side((-b + disc) / a);
+        }
+    }
+    if (!c.open && std::fabs(d.z) > kPovEpsilon) {
+        for (const Real h : {1.0, dist}) {  // the cap (face 2), then the base (face 1)
+            const Real k = (h - p.z) / d.z;
+            const Real u = p.x + k * d.x, v = p.y + k * d.y;
+            const Real limit = h == 1.0 ? 1.0 : dist * dist;
+            if (u * u + v * v <= limit && k > kConeTolerance && k < kMaxDistance) {
+                t[n] = k;
+                faces[n++] = h == 1.0 ? 2 : 1;
+            }
+        }
+    }
+    for (int i = 1; i < n; ++i)  // ascending
+        for (int j = i; j > 0 && t[j] < t[j - 1]; --j) {
+            std::swap(t[j], t[j - 1]);
+            std::swap(faces[j], faces[j - 1]);
+        }
+    for (int i = 0; i < n; ++i) out.add(t[i], faces[i]);
+}
+
+}  // namespace
+
 void intersect_cone(const Cone& c, const Point3& o, const Vector3& dir, Crossings& out) {
+    if (is_unit_cone(c)) return intersect_unit_cone(c, o, dir, out);
     if (c.base_radius == 0 && c.cap_radius == 0)
         return;  // a line, as a zero-radius cylinder
     AxisFrame f = axis_of(c.base, c.cap);
@@ -200,6 +259,11 @@ Vector3 cone_normal(const Cone& c, const Point3& p, int face) {
 }
 
 bool inside_cone(const Cone& c, const Point3& p) {
+    if (is_unit_cone(c)) {  // POV-Ray's Cone::Inside as it is written
+        const Real margin = c.open ? kPovEpsilon : -kPovEpsilon;
+        const Real w2 = p.x * p.x + p.y * p.y, z2 = p.z * p.z;
+        return !(w2 > z2 + margin || p.z < c.base_radius - margin || p.z > 1.0 + margin);
+    }
     // POV-Ray's Cone::Inside in its cone space: the tip at z = 0, the wider end at z = 1
     // with radius 1, the narrower at z = dist, and the same EPSILON margin as the
     // cylinder's (a closed cone's surface is outside, an open one's inside). Radii within
@@ -244,23 +308,39 @@ Bounds3 shape_bounds(const Cylinder& c) {
     return b;
 }
 
-Bounds3 cylinder_world_bounds(const Cylinder& c, const Transform& xf) {
-    const AxisFrame f = axis_of(c.base, c.cap);
+namespace {
+
+// The world box of two discs about the axis from p0 to p1, of radii r0 and r1, under xf.
+Bounds3 turned_discs_bounds(const Point3& p0, Real r0, const Point3& p1, Real r1,
+                            const Transform& xf) {
+    const AxisFrame f = axis_of(p0, p1);
     // Two unit vectors across the axis.
     const Vector3 helper =
         std::fabs(f.axis.x) < 0.9 ? Vector3{1, 0, 0} : Vector3{0, 1, 0};
     const Vector3 u = normalize(cross(f.axis, helper)), v = cross(f.axis, u);
-    const Vector3 wu = xf.vector(u * c.radius), wv = xf.vector(v * c.radius);
-    const Point3 e0 = xf.point(c.base), e1 = xf.point(c.cap);
+    const Vector3 wu = xf.vector(u), wv = xf.vector(v);
+    const Point3 e0 = xf.point(p0), e1 = xf.point(p1);
     Bounds3 b;
     for (int a = 0; a < 3; ++a) {
         const Real reach = std::sqrt(wu[a] * wu[a] + wv[a] * wv[a]);
+        const Real reach0 = reach * std::fabs(r0), reach1 = reach * std::fabs(r1);
         // A margin far above the rounding of the crossings (relative 1e-16).
-        const Real slack = 1e-9 * (std::fabs(e0[a]) + std::fabs(e1[a]) + reach);
-        b.lo[a] = std::min(e0[a], e1[a]) - reach - slack;
-        b.hi[a] = std::max(e0[a], e1[a]) + reach + slack;
+        const Real slack =
+            1e-9 * (std::fabs(e0[a]) + std::fabs(e1[a]) + std::max(reach0, reach1));
+        b.lo[a] = std::min(e0[a] - reach0, e1[a] - reach1) - slack;
+        b.hi[a] = std::max(e0[a] + reach0, e1[a] + reach1) + slack;
     }
     return b;
+}
+
+}  // namespace
+
+Bounds3 cylinder_world_bounds(const Cylinder& c, const Transform& xf) {
+    return turned_discs_bounds(c.base, c.radius, c.cap, c.radius, xf);
+}
+
+Bounds3 cone_world_bounds(const Cone& c, const Transform& xf) {
+    return turned_discs_bounds(c.base, c.base_radius, c.cap, c.cap_radius, xf);
 }
 
 PovBBox shape_pov_bbox(const Cylinder& c, const CompactTransform& xf) {

@@ -26,6 +26,7 @@ Bounds3 shape_bounds(const Cylinder& c);
 // turned cross-section allow: a box of the local box's corners would grow by up to
 // sqrt(2) across a slanted cylinder.
 Bounds3 cylinder_world_bounds(const Cylinder& c, const Transform& xf);
+Bounds3 cone_world_bounds(const Cone& c, const Transform& xf);
 PovBBox shape_pov_bbox(const Cylinder& c, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Cylinder&) { return true; }
 inline bool shape_convex(const Cylinder& c) { return !c.open; }
