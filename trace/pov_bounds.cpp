@@ -149,10 +149,10 @@ namespace {
 
 const PovBBox kInfiniteBox = pov_infinite_bbox();
 
-PovBBox csg_bbox(const Object& o, const Csg& csg);
+PovBBox csg_bbox(const Csg& csg);
 
 PovBBox shape_bbox(const Object& o) {
-    if (const Csg* csg = std::get_if<Csg>(&o.shape)) return csg_bbox(o, *csg);
+    if (const Csg* csg = std::get_if<Csg>(&o.shape)) return csg_bbox(*csg);
     return leaf_pov_bbox(o);
 }
 
@@ -198,8 +198,9 @@ Bounds3 pov_plane_bounds(const Plane& plane, const CompactTransform& xf) {
     return b;
 }
 
-PovBBox csg_bbox(const Object& o, const Csg& csg) {
-    if (o.inverse) return kInfiniteBox;
+// An inverted CSG keeps the box it was closed with (POV-Ray's Invert_CSG_Object inverts
+// the children and morphs the CSG into a copy that keeps its BBox).
+PovBBox csg_bbox(const Csg& csg) {
     if (csg.pov_box) {  // the box it was closed with, moved
         PovBBox b;
         for (int a = 0; a < 3; ++a) {
