@@ -387,6 +387,9 @@ class Interpreter {
     }
 
     Token next_raw();
+    // The next raw token, left unread: finished macro bodies and files on the way are
+    // left (their frames and scopes end) as next_raw() leaves them, nothing is run.
+    Token peek_raw_past_frame_ends();
     void fill_pushback();  // peek()'s slow path, out of line so that peek() inlines
     // `A[i][j]` read as one token standing for the element (see next()).
     Token subscript_token(const Token& name, const ArrayValue& array);

@@ -147,16 +147,23 @@ bool Interpreter::accept_punct(char c) {
 
 bool Interpreter::accept_semicolon() {
     // Looks at the raw stream so that a directive after the statement is not run before
-    // the statement has taken effect.
+    // the statement has taken effect; but past the end of a macro body or file, as
+    // POV-Ray's ALLOW(SEMI_COLON_TOKEN) returns from a macro at its #end (Parse_Directive
+    // does that even while Ok_To_Declare is false). So `#local D = Ret();`, where Ret's
+    // body ends in an array or function, takes its `;` even when the frame that holds
+    // the `;` is itself a macro body read as a value.
     if (!pushback_.empty()) return accept_punct(';');
     if (frames_.empty()) return false;
-    Frame& f = frames_.back();
-    const auto& toks = sources_.file(f.file).tokens;
-    if (f.pos < f.end && is_punct(toks[f.pos], ';')) {
-        ++f.pos;
-        return true;
-    }
-    return false;
+    if (!is_punct(peek_raw_past_frame_ends(), ';')) return false;
+    ++frames_.back().pos;
+    return true;
+}
+
+Token Interpreter::peek_raw_past_frame_ends() {
+    const Token t = next_raw();
+    // next_raw() hands back the end of the outermost file without moving past it.
+    if (t.kind != TokenKind::End) --frames_.back().pos;
+    return t;
 }
 
 bool Interpreter::raw_next_is_punct(char c) {
