@@ -1,5 +1,6 @@
 // The token stream under the directives: raw and cooked tokens, one-token lookahead,
 // array subscripts read as identifiers, symbol tables, and located diagnostics.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -279,9 +280,10 @@ void Interpreter::expected(std::string_view what, const Token& found) {
 
 // ------------------------------------------------------------------ symbols
 
-Interpreter::Binding* Interpreter::find_binding(uint32_t sym, int* scope_index) {
+Interpreter::Binding* Interpreter::find_binding(uint32_t sym, int* scope_index,
+                                                size_t visible_scopes) {
     if (sym == 0 || sym >= bound_.size() || !bound_[sym]) return nullptr;
-    for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
+    for (int i = int(std::min(scopes_.size(), visible_scopes)) - 1; i >= 0; --i) {
         auto it = scopes_[i].find(sym);
         if (it != scopes_[i].end()) {
             if (scope_index) *scope_index = i;
@@ -305,7 +307,8 @@ const Value* Interpreter::lookup(std::string_view name) const {
     return lookup_symbol(sources_.find_symbol(name));
 }
 
-void Interpreter::declare_symbol(uint32_t sym, Value v, bool local, const Token& at) {
+void Interpreter::declare_symbol(uint32_t sym, Value v, bool local, const Token& at,
+                                 size_t visible_scopes) {
     (void)at;
     if (local) {
         // #local of a parameter passed by reference, in its own macro's scope, writes
@@ -323,7 +326,7 @@ void Interpreter::declare_symbol(uint32_t sym, Value v, bool local, const Token&
     // #declare: an existing macro parameter passed by reference writes through to the
     // caller's variable; otherwise the identifier is global.
     int index = -1;
-    Binding* b = find_binding(sym, &index);
+    Binding* b = find_binding(sym, &index, visible_scopes);
     uint32_t target = sym;
     while (b && b->ref_scope >= 0) {
         int target_scope = b->ref_scope;
