@@ -57,7 +57,8 @@ INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
                                            "fileio", "keywords", "text_extents",
                                            "object_queries", "string_relations",
                                            "legacy_semicolons", "torus_pov_solver",
-                                           "inside_rules", "cylinder_trace_bits"));
+                                           "inside_rules", "cylinder_trace_bits",
+                                           "macro_rvalue_semicolons"));
 
 }  // namespace
 }  // namespace povwall::parser
