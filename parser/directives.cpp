@@ -429,9 +429,11 @@ void Interpreter::directive_declare(const Token& t, bool local) {
         b.value = std::move(v);
         b.ref_scope = -1;
     } else {
-        // The lexer interned the name already.
+        // The lexer interned the name already. POV-Ray finds the identifier a #declare
+        // assigns before it reads the value: a #local of the same name in a macro the
+        // value called (`#declare S = M();` where M ends in its own local S) is not it.
         declare_symbol(name.sym ? name.sym : sources_.intern(key), std::move(v), local,
-                       name);
+                       name, scope_count);
     }
     // POV-Ray's Parse_Semi_Colon(true) after a float, vector or colour; other values only
     // allow one.

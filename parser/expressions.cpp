@@ -816,9 +816,8 @@ const Token& Interpreter::peek_after_operand(bool hold_directives) {
     // The raw token, past the ends of finished macro bodies and files as next() goes;
     // left in the stream, so that a directive or macro call runs after the value is
     // stored (POV-Ray hands back its HASH or MACRO_ID token unrun).
-    const Token t = next_raw();
+    const Token t = peek_raw_past_frame_ends();
     if (t.kind == TokenKind::End) return peek();
-    --frames_.back().pos;
     bool held = t.kind == TokenKind::Directive;
     if (t.kind == TokenKind::Word) {
         const Value* v = lookup(t);

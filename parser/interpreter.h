@@ -114,7 +114,10 @@ class Interpreter {
     void declare(const std::string& name, Value v, bool local, const Token& at) {
         declare_symbol(sources_.intern(name), std::move(v), local, at);
     }
-    void declare_symbol(uint32_t sym, Value v, bool local, const Token& at);
+    // `visible_scopes`: how many scopes (from the global one) #declare may find an
+    // existing identifier in; the rest belong to macros its right-hand side called.
+    void declare_symbol(uint32_t sym, Value v, bool local, const Token& at,
+                        size_t visible_scopes = SIZE_MAX);
 
     // ---- expressions (expressions.cpp)
     // `hold_directives`: a directive or macro call where an operator could follow ends
@@ -387,6 +390,9 @@ class Interpreter {
     }
 
     Token next_raw();
+    // The next raw token, left unread: finished macro bodies and files on the way are
+    // left (their frames and scopes end) as next_raw() leaves them, nothing is run.
+    Token peek_raw_past_frame_ends();
     void fill_pushback();  // peek()'s slow path, out of line so that peek() inlines
     // `A[i][j]` read as one token standing for the element (see next()).
     Token subscript_token(const Token& name, const ArrayValue& array);
@@ -419,7 +425,8 @@ class Interpreter {
     std::shared_ptr<UserFile> user_file_argument(const Token& directive, Token& id);
     void invoke_macro(const Token& name, const Macro& m);
     size_t find_matching_end(const Token& at);
-    Binding* find_binding(uint32_t sym, int* scope_index = nullptr);
+    Binding* find_binding(uint32_t sym, int* scope_index = nullptr,
+                          size_t visible_scopes = SIZE_MAX);
     void parse_top_level_item(const Token& t);
     // Where POV-Ray finds the file `name` read from file `from_file` ("" if nowhere): the
     // reading file's folder, the scene's, the library paths, the standard includes; in

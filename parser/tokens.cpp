@@ -1,5 +1,6 @@
 // The token stream under the directives: raw and cooked tokens, one-token lookahead,
 // array subscripts read as identifiers, symbol tables, and located diagnostics.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -147,16 +148,23 @@ bool Interpreter::accept_punct(char c) {
 
 bool Interpreter::accept_semicolon() {
     // Looks at the raw stream so that a directive after the statement is not run before
-    // the statement has taken effect.
+    // the statement has taken effect; but past the end of a macro body or file, as
+    // POV-Ray's ALLOW(SEMI_COLON_TOKEN) returns from a macro at its #end (Parse_Directive
+    // does that even while Ok_To_Declare is false). So `#local D = Ret();`, where Ret's
+    // body ends in an array or function, takes its `;` even when the frame that holds
+    // the `;` is itself a macro body read as a value.
     if (!pushback_.empty()) return accept_punct(';');
     if (frames_.empty()) return false;
-    Frame& f = frames_.back();
-    const auto& toks = sources_.file(f.file).tokens;
-    if (f.pos < f.end && is_punct(toks[f.pos], ';')) {
-        ++f.pos;
-        return true;
-    }
-    return false;
+    if (!is_punct(peek_raw_past_frame_ends(), ';')) return false;
+    ++frames_.back().pos;
+    return true;
+}
+
+Token Interpreter::peek_raw_past_frame_ends() {
+    const Token t = next_raw();
+    // next_raw() hands back the end of the outermost file without moving past it.
+    if (t.kind != TokenKind::End) --frames_.back().pos;
+    return t;
 }
 
 bool Interpreter::raw_next_is_punct(char c) {
@@ -272,9 +280,10 @@ void Interpreter::expected(std::string_view what, const Token& found) {
 
 // ------------------------------------------------------------------ symbols
 
-Interpreter::Binding* Interpreter::find_binding(uint32_t sym, int* scope_index) {
+Interpreter::Binding* Interpreter::find_binding(uint32_t sym, int* scope_index,
+                                                size_t visible_scopes) {
     if (sym == 0 || sym >= bound_.size() || !bound_[sym]) return nullptr;
-    for (int i = int(scopes_.size()) - 1; i >= 0; --i) {
+    for (int i = int(std::min(scopes_.size(), visible_scopes)) - 1; i >= 0; --i) {
         auto it = scopes_[i].find(sym);
         if (it != scopes_[i].end()) {
             if (scope_index) *scope_index = i;
@@ -298,7 +307,8 @@ const Value* Interpreter::lookup(std::string_view name) const {
     return lookup_symbol(sources_.find_symbol(name));
 }
 
-void Interpreter::declare_symbol(uint32_t sym, Value v, bool local, const Token& at) {
+void Interpreter::declare_symbol(uint32_t sym, Value v, bool local, const Token& at,
+                                 size_t visible_scopes) {
     (void)at;
     if (local) {
         // #local of a parameter passed by reference, in its own macro's scope, writes
@@ -316,7 +326,7 @@ void Interpreter::declare_symbol(uint32_t sym, Value v, bool local, const Token&
     // #declare: an existing macro parameter passed by reference writes through to the
     // caller's variable; otherwise the identifier is global.
     int index = -1;
-    Binding* b = find_binding(sym, &index);
+    Binding* b = find_binding(sym, &index, visible_scopes);
     uint32_t target = sym;
     while (b && b->ref_scope >= 0) {
         int target_scope = b->ref_scope;

@@ -58,7 +58,8 @@ INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
                                            "object_queries", "string_relations",
                                            "legacy_semicolons", "torus_pov_solver",
                                            "inside_rules", "cylinder_trace_bits",
-                                           "colour_terms", "cone_trace_bits"));
+                                           "colour_terms", "cone_trace_bits",
+                                           "macro_rvalue_semicolons"));
 
 }  // namespace
 }  // namespace povwall::parser
