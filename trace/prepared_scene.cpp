@@ -33,8 +33,9 @@ struct WorldCrossing {
     Vector3 given{0, 0, 0};
     ShapeHit hit{};
     Point3 at(const Ray& ray) const { return own_point ? point : ray.at(t); }
-    Vector3 normal() const {
-        const Vector3 n = has_normal ? given : leaf_world_normal(*leaf, hit);
+    // `world`: the crossing's point.
+    Vector3 normal(const Point3& world) const {
+        const Vector3 n = has_normal ? given : leaf_world_normal(*leaf, hit, world);
         return flip ? -n : n;
     }
 };
@@ -1121,7 +1122,7 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, const PovRayOnce
             hit.prim = id;
             hit.point = best->at(ray);
             // (material_only: a leaf outside CSG may have given any of its crossings.)
-            if (!material_only) hit.normal = best->normal();
+            if (!material_only) hit.normal = best->normal(hit.point);
             // A leaf object's own material is the primitive's (add_material gave both);
             // a CSG's leaves are looked up.
             hit.material = best->leaf == &obj && !std::holds_alternative<Csg>(obj.shape)

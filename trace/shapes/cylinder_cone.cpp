@@ -117,6 +117,8 @@ void intersect_cylinder(const Cylinder& c, const Point3& o, const Vector3& dir,
 }
 
 Vector3 cylinder_normal(const Cylinder& c, const Point3& p, int face) {
+    if (face == 0 && is_unit_cylinder(c))
+        return {p.x, p.y, 0.0};  // POV-Ray's Cone::Normal
     AxisFrame f = axis_of(c.base, c.cap);
     if (face == 1) return -f.axis;
     if (face == 2) return f.axis;
@@ -245,6 +247,7 @@ void intersect_cone(const Cone& c, const Point3& o, const Vector3& dir, Crossing
 }
 
 Vector3 cone_normal(const Cone& c, const Point3& p, int face) {
+    if (face == 0 && is_unit_cone(c)) return {p.x, p.y, -p.z};  // POV-Ray's Cone::Normal
     AxisFrame f = axis_of(c.base, c.cap);
     if (face == 1) return -f.axis;
     if (face == 2) return f.axis;

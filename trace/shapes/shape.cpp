@@ -39,6 +39,19 @@ Vector3 leaf_normal(const Object& leaf, const ShapeHit& h) {
     return visit_leaf<Vector3>(leaf, [&](const auto& s) { return shape_normal(s, h); });
 }
 
+Vector3 leaf_world_normal(const Object& leaf, const ShapeHit& h, const Point3& world) {
+    // POV-Ray finds a cylinder's or cone's normal at the world hit point turned back into
+    // its frame (Cone::Normal), not at the point in the frame the ray reached.
+    if (!h.own_point && !leaf.transform.is_identity() &&
+        (std::holds_alternative<Cylinder>(leaf.shape) ||
+         std::holds_alternative<Cone>(leaf.shape))) {
+        ShapeHit at = h;
+        at.p = leaf.transform.inverse_point(world);
+        return leaf_world_normal(leaf, at);
+    }
+    return leaf_world_normal(leaf, h);
+}
+
 Vector3 leaf_world_normal(const Object& leaf, const ShapeHit& h) {
     if (const HeightField* hf = std::get_if<HeightField>(&leaf.shape))
         return height_field_world_normal(*hf, h, leaf.transform);

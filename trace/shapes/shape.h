@@ -46,6 +46,8 @@ Vector3 leaf_normal(const Object& leaf, const ShapeHit& h);
 // The unit outward normal at a hit in world space (the leaf's normal through its
 // transform; a smooth height field blends normals already transformed, as POV-Ray's).
 Vector3 leaf_world_normal(const Object& leaf, const ShapeHit& h);
+// The same at the crossing's world point (`world`: where the ray meets it).
+Vector3 leaf_world_normal(const Object& leaf, const ShapeHit& h, const Point3& world);
 // `p` in the leaf's own space; surfaces (triangle, disc, polygon, a mesh without an
 // inside_vector) have no inside.
 bool leaf_inside(const Object& leaf, const Point3& p);
