@@ -29,14 +29,43 @@ bool is_unit_cylinder(const Cylinder& c) {
            c.cap.x == 0 && c.cap.y == 0 && c.cap.z == 1;
 }
 
+// The crossings of a unit cylinder or cone in POV-Ray's push order, handed on ascending.
+struct UnitShapeCrossings {
+    Real t[4];
+    int face[4];
+    int n = 0;
+    void add(Real k, int f) {
+        t[n] = k;
+        face[n++] = f;
+    }
+    // The cap at z = 1 (radius 1, face 2), then the base at z = `base_z` (radius^2
+    // `base_r2`, face 1), as Cone::Intersect meets them.
+    void caps(const Point3& p, const Vector3& d, Real base_z, Real base_r2) {
+        if (!(std::fabs(d.z) > kPovEpsilon)) return;
+        for (const Real h : {1.0, base_z}) {
+            const Real k = (h - p.z) / d.z;
+            const Real u = p.x + k * d.x, v = p.y + k * d.y;
+            if (u * u + v * v <= (h == 1.0 ? 1.0 : base_r2) && k > kConeTolerance &&
+                k < kMaxDistance)
+                add(k, h == 1.0 ? 2 : 1);
+        }
+    }
+    void emit(Crossings& out) {
+        for (int i = 1; i < n; ++i)
+            for (int j = i; j > 0 && t[j] < t[j - 1]; --j) {
+                std::swap(t[j], t[j - 1]);
+                std::swap(face[j], face[j - 1]);
+            }
+        for (int i = 0; i < n; ++i) out.add(t[i], face[i]);
+    }
+};
+
 // The unit cylinder (x^2 + y^2 = 1, 0 <= z <= 1; `dir` unit) in POV-Ray's arithmetic
 // (Cone::Intersect with CYLINDER_FLAG): the parser puts every cylinder in this form with
 // POV-Ray's frame as its transform, so crossings come out with POV-Ray's bits.
 void intersect_unit_cylinder(bool open, const Point3& p, const Vector3& d,
                              Crossings& out) {
-    Real t[4];
-    int faces[4];
-    int n = 0;
+    UnitShapeCrossings hits;
     const Real a = d.x * d.x + d.y * d.y;
     if (a > kPovEpsilon) {
         const Real b = p.x * d.x + p.y * d.y;
@@ -46,29 +75,13 @@ void intersect_unit_cylinder(bool open, const Point3& p, const Vector3& d,
             disc = std::sqrt(disc);
             for (const Real k : {(-b + disc) / a, (-b - disc) / a}) {
                 const Real z = p.z + k * d.z;
-                if (k > kConeTolerance && k < kMaxDistance && z >= 0.0 && z <= 1.0) {
-                    t[n] = k;
-                    faces[n++] = 0;
-                }
+                if (k > kConeTolerance && k < kMaxDistance && z >= 0.0 && z <= 1.0)
+                    hits.add(k, 0);
             }
         }
     }
-    if (!open && std::fabs(d.z) > kPovEpsilon) {
-        for (const Real h : {1.0, 0.0}) {  // the cap (face 2), then the base (face 1)
-            const Real k = (h - p.z) / d.z;
-            const Real u = p.x + k * d.x, v = p.y + k * d.y;
-            if (u * u + v * v <= 1.0 && k > kConeTolerance && k < kMaxDistance) {
-                t[n] = k;
-                faces[n++] = h == 1.0 ? 2 : 1;
-            }
-        }
-    }
-    for (int i = 1; i < n; ++i)  // ascending
-        for (int j = i; j > 0 && t[j] < t[j - 1]; --j) {
-            std::swap(t[j], t[j - 1]);
-            std::swap(faces[j], faces[j - 1]);
-        }
-    for (int i = 0; i < n; ++i) out.add(t[i], faces[i]);
+    if (!open) hits.caps(p, d, 0.0, 1.0);
+    hits.emit(out);
 }
 
 }  // namespace
@@ -154,15 +167,11 @@ bool is_unit_cone(const Cone& c) {
 void intersect_unit_cone(const Cone& c, const Point3& p, const Vector3& d,
                          Crossings& out) {
     const Real dist = c.base_radius;
-    Real t[4];
-    int faces[4];
-    int n = 0;
+    UnitShapeCrossings hits;
     auto side = [&](Real k) {
         const Real z = p.z + k * d.z;
-        if (k > kConeTolerance && k < kMaxDistance && z >= dist && z <= 1.0) {
-            t[n] = k;
-            faces[n++] = 0;
-        }
+        if (k > kConeTolerance && k < kMaxDistance && z >= dist && z <= 1.0)
+            hits.add(k, 0);
     };
     const Real a = d.x * d.x + d.y * d.y - d.z * d.z;
     const Real b = d.x * p.x + d.y * p.y - d.z * p.z;
@@ -177,23 +186,8 @@ void intersect_unit_cone(const Cone& c, const Point3& p, const Vector3& d,
             side((-b + disc) / a);
         }
     }
-    if (!c.open && std::fabs(d.z) > kPovEpsilon) {
-        for (const Real h : {1.0, dist}) {  // the cap (face 2), then the base (face 1)
-            const Real k = (h - p.z) / d.z;
-            const Real u = p.x + k * d.x, v = p.y + k * d.y;
-            const Real limit = h == 1.0 ? 1.0 : dist * dist;
-            if (u * u + v * v <= limit && k > kConeTolerance && k < kMaxDistance) {
-                t[n] = k;
-                faces[n++] = h == 1.0 ? 2 : 1;
-            }
-        }
-    }
-    for (int i = 1; i < n; ++i)  // ascending
-        for (int j = i; j > 0 && t[j] < t[j - 1]; --j) {
-            std::swap(t[j], t[j - 1]);
-            std::swap(faces[j], faces[j - 1]);
-        }
-    for (int i = 0; i < n; ++i) out.add(t[i], faces[i]);
+    if (!c.open) hits.caps(p, d, dist, dist * dist);
+    hits.emit(out);
 }
 
 }  // namespace
