@@ -51,15 +51,13 @@ TEST_P(LangFixture, DebugOutputMatchesPovRay) {
     EXPECT_EQ(debug_output(name), expected);
 }
 
-INSTANTIATE_TEST_SUITE_P(Pov37, LangFixture,
-                         ::testing::Values("expressions", "directives", "colours",
-                                           "splines", "functions", "functions_internal",
-                                           "fileio", "keywords", "text_extents",
-                                           "object_queries", "string_relations",
-                                           "legacy_semicolons", "torus_pov_solver",
-                                           "inside_rules", "cylinder_trace_bits",
-                                           "colour_terms", "cone_trace_bits",
-                                           "macro_rvalue_semicolons"));
+INSTANTIATE_TEST_SUITE_P(
+    Pov37, LangFixture,
+    ::testing::Values("expressions", "directives", "colours", "splines", "functions",
+                      "functions_internal", "fileio", "keywords", "text_extents",
+                      "object_queries", "string_relations", "legacy_semicolons",
+                      "torus_pov_solver", "inside_rules", "cylinder_trace_bits",
+                      "colour_terms", "cone_trace_bits", "macro_rvalue_semicolons"));
 
 }  // namespace
 }  // namespace povwall::parser
