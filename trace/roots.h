@@ -1,6 +1,7 @@
-// Polynomial root solvers for ray-shape intersection: a cancellation-free quadratic and
-// quartics by two methods (closed form and Sturm isolation) behind a measured switch rule
-// (docs/numerics.md has the error/time table that sets it).
+// Polynomial root solvers: a cancellation-free quadratic (cylinders and cones not in
+// POV-Ray's unit form), POV-Ray's cubic split, and quartics by two methods (closed form
+// and Sturm isolation) behind a measured switch rule, which bench/roots_accuracy compares
+// with POV-Ray's own solver (docs/numerics.md).
 #pragma once
 
 #include "core/math.h"
@@ -28,12 +29,12 @@ int solve_quartic_ferrari(const Real c[5], Real roots[4],
 // Sturm-sequence isolation of the roots in (lo, hi], then bracketed Newton.
 int solve_quartic_sturm(const Real c[5], Real lo, Real hi, Real roots[4]);
 
-// The tracer's quartic, roots in (lo, hi]: Ferrari with plain Newton polishing, falling
+// povwall's own quartic, roots in (lo, hi]: Ferrari with plain Newton polishing, falling
 // back to Sturm when the closed form's root count is odd (impossible for real
-// coefficients). Chosen by the error/time table in docs/numerics.md: on ray-torus
-// quartics it is as accurate as double-precision Sturm at every minor/major ratio, never
-// lost a root, and is ~4x faster; the torus's own distance polish makes compensated
-// polishing unnecessary there.
+// coefficients); on ray-torus quartics as accurate as double-precision Sturm and ~4x
+// faster (docs/numerics.md). The tracer's torus no longer uses it (it solves POV-Ray's
+// quartic with POV-Ray's solver, core/pov_polysolve.h); the quartics stay as the
+// accuracy benchmark's reference methods.
 int solve_quartic(const Real c[5], Real lo, Real hi, Real roots[4]);
 
 }  // namespace povwall::trace
