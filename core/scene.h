@@ -427,6 +427,9 @@ struct Mesh {
     // texture_list): POV-Ray blends them by the hit's barycentric weights.
     std::vector<std::array<int32_t, 3>> texture_triples;
     HeapOptional<Vector3> inside_vector;  // only a mesh with one is solid
+    // `hierarchy` inside the mesh's own braces (POV-Ray builds the mesh's box tree after
+    // them): without the tree, every crossing is reported, even without inside_vector.
+    bool hierarchy = true;
 };
 
 // prism: closed 2-D curves in (x, z) swept along y from height1 to height2, straight

@@ -525,6 +525,9 @@ class Interpreter {
     uintptr_t stack_floor_ = 0;  // lowest frame address allowed; 0: unknown, no check
     bool camera_seen_ = false;
     Texture default_texture_;
+    // The mesh whose own braces are being read: `hierarchy` there decides whether POV-Ray
+    // builds its box tree (a later `object { M hierarchy off }` finds it built).
+    const Object* mesh_in_own_braces_ = nullptr;
     SharedValue<Finish> last_finish_;  // shared_finish()
     std::string scene_dir_;
     // image_map/bump_map/height_field and density_file files, for Scene::files

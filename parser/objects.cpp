@@ -458,10 +458,11 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         } else if (auto blob = std::get_if<Blob>(&obj.shape)) {
             // Its bounding-sphere tree changes only the order of the field's sums.
             blob->hierarchy = parse_bool_opt();
+        } else if (auto mesh = std::get_if<Mesh>(&obj.shape)) {
+            const bool tree = parse_bool_opt();
+            if (&obj == mesh_in_own_braces_) mesh->hierarchy = tree;
         } else {
-            if (!std::holds_alternative<Mesh>(obj.shape))
-                error(t, "'hierarchy' cannot be used with this object");
-            parse_bool_opt();
+            error(t, "'hierarchy' cannot be used with this object");
         }
     } else if (w == "hollow") {
         obj.hollow = parse_bool_opt();
@@ -621,6 +622,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     out.loc = sources_.location(t);
     auto open = [&] { expect_punct('{', "after ", w); };
     std::optional<PendingHeightField> pending_height_field;
+    bool own_mesh = false;
     // `sphere { ID ... }`: an object identifier first in the body copies it.
     auto copy_identifier = [&]() -> bool {
         const Token& p = peek();
@@ -849,6 +851,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 parse_mesh(out);
             else
                 parse_mesh2(out);
+            own_mesh = true;
         }
     } else if (w == "union" || w == "merge" || w == "intersection" || w == "difference" ||
                w == "composite") {
@@ -974,7 +977,12 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         if (is_unsupported_shape(w)) unsupported(t, w);
         return false;
     }
-    parse_object_modifiers(out);
+    {
+        const Object* outer = mesh_in_own_braces_;
+        mesh_in_own_braces_ = own_mesh ? &out : nullptr;
+        parse_object_modifiers(out);
+        mesh_in_own_braces_ = outer;
+    }
     if (turned_mirrored_uv_box(out))
         unsupported(t, "uv_mapping on a box both mirrored and turned");
     check_algebraic_bounds(out, t);

@@ -34,9 +34,12 @@ bool pov_bbox_finite(const PovBBox& b) {
 
 PovRay::PovRay(const Ray& ray) {
     const Real len = length(ray.direction);
-    const Vector3 d = len == 1 ? ray.direction : ray.direction / len;
+    *this = PovRay(ray.origin, len == 1 ? ray.direction : ray.direction / len);
+}
+
+PovRay::PovRay(const Point3& o, const Vector3& d) {
     for (int a = 0; a < 3; ++a) {
-        origin[a] = float(ray.origin[a]);
+        origin[a] = float(o[a]);
         nonzero[a] = d[a] != 0;
         inv[a] = float(1.0 / d[a]);  // +-inf along a zero component, as POV-Ray's invdir
     }

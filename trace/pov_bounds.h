@@ -60,6 +60,8 @@ struct PovRay {
     float inv[3];
     bool nonzero[3];
     explicit PovRay(const Ray& ray);
+    // A direction taken as it is (a shape's own ray, already made unit its own way).
+    PovRay(const Point3& origin, const Vector3& unit_direction);
 };
 
 // One ray's PovRay, made when first asked for (most rays meet no primitive whose POV-Ray

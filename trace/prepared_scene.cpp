@@ -91,7 +91,8 @@ bool inside_clips(const Object& o, const Point3& p);
 
 // Leaf shape crossings along a world ray, in world distances, with outward world normals.
 void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
-                    std::vector<WorldCrossing>& out, const WantedRange* wanted) {
+                    std::vector<WorldCrossing>& out, const WantedRange* wanted,
+                    const RayFlags* flags) {
     // A sphere moved, turned or scaled evenly is a sphere in world space, met by the
     // world ray as it is (POV-Ray moves its centre and radius; only an ellipsoid works in
     // its own space): the same last bits as a sphere outside CSG, which decide hits on a
@@ -115,10 +116,14 @@ void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
     if (!(local.length > 0)) return;
     // A clip filters the hits after the shape: a shape that stops at its first hit must
     // go on past clipped ones, as POV-Ray's (which tests clips before it stops). An
-    // isosurface tests its clip inside its search, as POV-Ray's does.
-    const Isosurface* clipped_iso =
-        o.clipped_by->empty() ? nullptr : std::get_if<Isosurface>(&o.shape);
-    local.csg_child = csg_child || (!o.clipped_by->empty() && !clipped_iso);
+    // isosurface, and a mesh whose walk stops at its nearest hit, test their clip inside
+    // their search, as POV-Ray's do.
+    const bool clipped = !o.clipped_by->empty();
+    const Isosurface* clipped_iso = clipped ? std::get_if<Isosurface>(&o.shape) : nullptr;
+    const Mesh* clipped_mesh = clipped ? std::get_if<Mesh>(&o.shape) : nullptr;
+    if (clipped_mesh && !mesh_stops_at_nearest(*clipped_mesh)) clipped_mesh = nullptr;
+    local.csg_child = csg_child || (clipped && !clipped_iso);
+    if (flags) local.restart = flags->restart;
     if (wanted && !local.csg_child) {
         local.nearest_only = true;
         local.want_lo = wanted->lo;
@@ -127,17 +132,20 @@ void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
     }
     thread_local ShapeHits hits;
     hits.clear();
-    if (clipped_iso) {
+    if (clipped_iso || clipped_mesh) {
         struct Context {
             const Object& o;
             const Ray& ray;
         } context{o, ray};
-        const IsosurfaceClip clip{[](const void* c, Real t) {
-                                      const auto& x = *static_cast<const Context*>(c);
-                                      return inside_clips(x.o, x.ray.at(t));
-                                  },
-                                  &context};
-        shape_hits(*clipped_iso, local, clip, hits);
+        const ShapeClip clip{[](const void* c, Real t) {
+                                 const auto& x = *static_cast<const Context*>(c);
+                                 return inside_clips(x.o, x.ray.at(t));
+                             },
+                             &context};
+        if (clipped_iso)
+            shape_hits(*clipped_iso, local, clip, hits);
+        else
+            shape_hits(*clipped_mesh, local, &clip, hits);
     } else {
         leaf_hits(o, local, hits);
     }
@@ -246,7 +254,7 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             for (size_t k = start; k < out.size(); ++k) out[k].flip = !out[k].flip;
         }
     } else {
-        leaf_crossings(o, ray, csg_child, out, wanted);
+        leaf_crossings(o, ray, csg_child, out, wanted, flags);
     }
     if (!o.clipped_by->empty()) {
         size_t w = start;
@@ -1275,6 +1283,7 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
     // tie: a sphere's candidate hit then costs no load of its (large) material.
     RayFlags flags = ray_flags(use);
     flags.radiosity = flags.radiosity || radiosity_ray;
+    flags.restart = ctx.restart;
     const bool may_hide =
         hides_[size_t(use)] || (flags.radiosity && hides_[size_t(RayUse::Radiosity)]);
     auto hidden = [&](uint32_t material) {
@@ -1411,6 +1420,8 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
                pov_slab_rejects(p.box, pov_root_tested_, pov_root_, pov_ray);
     };
     const Real lo = std::max(t_min, kMinIsectDepth);
+    RayFlags shadow_flags = ray_flags(RayUse::Shadow);
+    shadow_flags.restart = ctx.restart;
     // 1: an opaque shadow caster; 0: none; -1: a see-through one.
     // (Inside a CSG POV-Ray's shadow rays meet every child, no_shadow or not.)
     auto caster = [](const Material& m) {
@@ -1425,7 +1436,8 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
             return caster(materials_[material_[id]]);
         }
         Hit h;
-        if (!test_primitive(id, ray, pov_ray, t_min, t_max, h, 0, nullptr, true))
+        if (!test_primitive(id, ray, pov_ray, t_min, t_max, h, 0, nullptr, true,
+                            &shadow_flags))
             return 0;
         return caster(*h.material);
     };

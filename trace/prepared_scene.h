@@ -168,6 +168,8 @@ struct RayContext {
     // The radiosity of the thread tracing with this context (trace/radiosity/gatherer.h);
     // null: none (no radiosity, or black boxes).
     RadiosityGatherer* radiosity = nullptr;
+    // The restart point of the ray being traced (RayFlags::restart).
+    Real restart = 0;
 };
 
 struct RenderProgress;

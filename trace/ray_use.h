@@ -39,6 +39,10 @@ struct RayFlags {
     bool primary = false, image = false, reflection = false, shadow = false,
          photon = false, radiosity = false;
     bool frame_test = true;
+    // Where POV-Ray's ray starts, as a distance along the ray traced: a shadow ray is
+    // restarted at each see-through surface it crosses. A mesh without inside_vector
+    // reports only what it meets first from there.
+    Real restart = 0;
 };
 
 constexpr RayFlags ray_flags(RayUse u) {

@@ -1620,8 +1620,12 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
     // Most shadow rays meet only opaque blockers or nothing: find out in any order (not
     // while probing for ties, which looks at the crossings in order).
     bool transparent = ctx.tie_tolerance > 0;
-    if (!transparent &&
-        scene.opaque_blocker(ray, state.t_min, hi, transparent, ctx, state.light)) {
+    ctx.restart = state.last_hit;
+    const bool opaque =
+        !transparent &&
+        scene.opaque_blocker(ray, state.t_min, hi, transparent, ctx, state.light);
+    ctx.restart = 0;
+    if (opaque) {
         state.blocked = true;
         state.filter = Rgb{};
         return true;
@@ -1637,7 +1641,12 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
     // shadow texture always has filter 1, so that test never fires.)
     for (int guard = 0; guard < 256 && state.t_min < hi; ++guard) {
         Hit hit;
-        if (!scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx)) break;
+        // POV-Ray restarts the shadow ray at each see-through crossing.
+        ctx.restart = state.last_hit;
+        const bool met =
+            scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx);
+        ctx.restart = 0;
+        if (!met) break;
         if (ctx.tie_tolerance > 0 && on_pattern_boundary(scene, hit, ctx.tie_tolerance))
             ++ctx.pattern_ties;
         const Material& m = *hit.material;

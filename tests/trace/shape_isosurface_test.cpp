@@ -87,7 +87,7 @@ TEST(ShapeIsosurface, MaxTraceFindsTheFarSide) {
 }
 
 // A clip keeping the world distances t >= *context.
-IsosurfaceClip keep_from(const Real& t_min) {
+ShapeClip keep_from(const Real& t_min) {
     return {[](const void* c, Real t) { return t >= *static_cast<const Real*>(c); },
             &t_min};
 }

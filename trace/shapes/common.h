@@ -68,10 +68,19 @@ struct LocalRay {
     // With nearest_only: the query asks only whether there is a crossing in that range
     // (a shadow ray); the shape may stop at the first it finds there.
     bool any_crossing = false;
+    // The world distance where POV-Ray's ray starts (RayFlags::restart).
+    Real restart = 0;
     // Whether a crossing at world distance t ends the search (any_crossing).
     bool ends_search(Real t) const {
         return nearest_only && any_crossing && t >= want_lo && t < want_hi;
     }
+};
+
+// An object's clip, for the shapes that test it inside their search (as POV-Ray's
+// isosurface and mesh do): whether it keeps the crossing at world distance t.
+struct ShapeClip {
+    bool (*keeps)(const void* context, Real t);
+    const void* context;
 };
 
 // One crossing of a leaf shape's surface.

@@ -118,7 +118,7 @@ namespace {
 // `clip` (or null): the clip, which sees world distances `t_clip + t` (P is t_clip along
 // the ray it tests).
 void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, Real& maxg,
-               const IsosurfaceClip* clip, Real t_clip, ShapeHits& out) {
+               const ShapeClip* clip, Real t_clip, ShapeHits& out) {
     Real depth1 = 0, depth2 = 0;
     int side1, side2;
     if (!container_span(container(s), P, D, depth1, depth2, side1, side2)) return;
@@ -183,7 +183,7 @@ struct RayHits {
     bool complete = false;  // the restarts are in (or there are none)
 };
 
-void first_batch(const Isosurface& s, const LocalRay& r, const IsosurfaceClip* clip,
+void first_batch(const Isosurface& s, const LocalRay& r, const ShapeClip* clip,
                  RayHits& h) {
     h.hits.clear();
     h.reached = s.max_gradient;
@@ -194,7 +194,7 @@ void first_batch(const Isosurface& s, const LocalRay& r, const IsosurfaceClip* c
 }
 
 // povwall follows one ray: the restarts are made here, each from the farthest hit so far.
-void add_restarts(const Isosurface& s, const LocalRay& r, const IsosurfaceClip* clip,
+void add_restarts(const Isosurface& s, const LocalRay& r, const ShapeClip* clip,
                   RayHits& h) {
     Real start = s.max_gradient;
     thread_local ShapeHits more;
@@ -250,7 +250,7 @@ struct LastRay {
     RayHits found;
 };
 
-void clipped_hits(const Isosurface& s, const LocalRay& r, const IsosurfaceClip* clip,
+void clipped_hits(const Isosurface& s, const LocalRay& r, const ShapeClip* clip,
                   ShapeHits& out) {
     if (clip) {  // the clip's context is the caller's: nothing to compare
         thread_local RayHits h;
@@ -281,7 +281,7 @@ void shape_hits(const Isosurface& s, const LocalRay& r, ShapeHits& out) {
     clipped_hits(s, r, nullptr, out);
 }
 
-void shape_hits(const Isosurface& s, const LocalRay& r, const IsosurfaceClip& clip,
+void shape_hits(const Isosurface& s, const LocalRay& r, const ShapeClip& clip,
                 ShapeHits& out) {
     clipped_hits(s, r, &clip, out);
 }

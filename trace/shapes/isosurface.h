@@ -18,16 +18,11 @@ struct OracleBest;
 Real isosurface_function(const Isosurface& s, const Point3& p);
 
 void shape_hits(const Isosurface& s, const LocalRay& r, ShapeHits& out);
-// Whether an isosurface's clip keeps its crossing at world distance t along the ray.
-struct IsosurfaceClip {
-    bool (*keeps)(const void* context, Real t);
-    const void* context;
-};
 // The crossings of a clipped isosurface. POV-Ray tests the clip inside the search
 // (IsoSurface::All_Intersections), not after it: a clipped container hit neither counts
 // toward max_trace nor turns the search around, and a clipped root still uses up its
 // trace (with max_trace 1 the surface behind it is not seen).
-void shape_hits(const Isosurface& s, const LocalRay& r, const IsosurfaceClip& clip,
+void shape_hits(const Isosurface& s, const LocalRay& r, const ShapeClip& clip,
                 ShapeHits& out);
 Vector3 shape_normal(const Isosurface& s, const ShapeHit& h);
 bool shape_inside(const Isosurface& s, const Point3& p);

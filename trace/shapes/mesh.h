@@ -16,6 +16,11 @@ void mesh_face_corners(const Mesh& m, const Mesh::Face& f, Point3 (&p)[3]);
 
 // Hits carry the face's index in `face`.
 void shape_hits(const Mesh& m, const LocalRay& r, ShapeHits& out);
+// A mesh without inside_vector (and with its box tree) reports only the hits up to its
+// nearest (POV-Ray's tree walk stops there), the nearest kept by its clip: the clip is
+// tested inside the search.
+bool mesh_stops_at_nearest(const Mesh& m);
+void shape_hits(const Mesh& m, const LocalRay& r, const ShapeClip* clip, ShapeHits& out);
 Vector3 shape_normal(const Mesh& m, const ShapeHit& h);
 // Solid only with an inside_vector (as in POV-Ray): a point is inside when a ray from it
 // along that vector crosses the triangles an odd number of times.
