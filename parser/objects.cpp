@@ -232,10 +232,46 @@ void pov_cone_frame(Cone c, Object& out) {
     out.shape = Cone{{0, 0, dist}, {0, 0, 1}, dist, 1, c.open};
 }
 
+// Whether POV-Ray's Compute_Triangle swaps the first two corners: they wind the wrong
+// way seen along the normal's largest component (ties broken as its max3_coordinate).
+bool pov_triangle_swaps(const Point3 (&p)[3]) {
+    const Vector3 n = cross(p[0] - p[1], p[2] - p[1]);
+    const Real ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
+    const int axis = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+    // The two in-plane axes, in POV-Ray's order for each dominant axis.
+    const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
+    const Vector3 e31 = p[1] - p[2], e01 = p[1] - p[0];
+    return e31[u] * e01[v] < e31[v] * e01[u];
+}
+
+bool mirrors(const Transform& t) {
+    return dot(t.vector({1, 0, 0}), cross(t.vector({0, 1, 0}), t.vector({0, 0, 1}))) < 0;
+}
+
+// POV-Ray moves a triangle's corners at each transform and recomputes it
+// (Compute_Triangle): the normal comes from the corners as they stand, then the first
+// two are swapped if they wind the wrong way. The order a transform finds is thus the
+// one the previous computation left, and the final normal is that order's. povwall
+// keeps the corners and carries their normal by the transform, which a mirror turns
+// against the moved corners' own: the corners are kept in POV-Ray's order, swapped
+// while the transform mirrors.
+void order_triangle_as_pov(Triangle& tri, const Transform& before,
+                           const Transform& after) {
+    if (Interpreter::degenerate_corners(tri.p)) return;
+    Point3 world[3] = {before.point(tri.p[0]), before.point(tri.p[1]),
+                       before.point(tri.p[2])};
+    const bool mirrored_before = mirrors(before);
+    if (mirrored_before) std::swap(world[0], world[1]);  // POV-Ray's order
+    if ((mirrored_before != pov_triangle_swaps(world)) != mirrors(after))
+        std::swap(tri.p[0], tri.p[1]);
+}
+
 }  // namespace
 
 void Interpreter::apply_transform(Object& obj, const Transform& t,
                                   const TransformStep& step) {
+    if (auto tri = std::get_if<Triangle>(&obj.shape))
+        order_triangle_as_pov(*tri, obj.transform, obj.transform.then(t));
     Plane* plane = std::get_if<Plane>(&obj.shape);
     if (auto sweep = std::get_if<SphereSweep>(&obj.shape);
         sweep && move_sweep_spheres(*sweep, t, step)) {
