@@ -1099,8 +1099,10 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
             facing = -facing;
             n = -n;
         }
-        // `c` bent by `index_ratio`, with `share` of what passes (a band's hue).
-        auto bend = [&](ChildRay& c, Real index_ratio, const Rgb& share) {
+        // `c` bent by `index_ratio`, with `share` of what passes (a band's hue);
+        // `band_of_split`: one of the bands dispersion splits the ray into.
+        auto bend = [&](ChildRay& c, Real index_ratio, const Rgb& share,
+                        bool band_of_split) {
             c.coeff = child.coeff * share;
             Real t = 1 + index_ratio * index_ratio * (n * n - 1);
             if (t >= 0) {
@@ -1119,11 +1121,13 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
             c.trace.use = reflected_use(ray.use);
             c.trace.interiors = ray.interiors;
             c.trace.band = ray.band;
-            c.coeff = att * share;
+            c.coeff = band_of_split ? child.coeff * share : att * share;
             c.transmit_factor = 0;
             if (top_finish && top_finish->irid > 0)
                 tint_reflection(c, iridescence(*top_finish, sc, P, top_normal, R, D));
-            drop_reflections_with_normal(out.children, reflection_normals, top_normal);
+            if (!band_of_split)
+                drop_reflections_with_normal(out.children, reflection_normals,
+                                             top_normal);
         };
         if (!disperses || ray.band.monochromatic()) {
             // One ray: a split ray bends by its own band's index.
@@ -1131,7 +1135,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                 disperses
                     ? SpectralBand(ray.band.index, ray.band.count).ior(eta, dispersion)
                     : eta;
-            bend(child, index_ratio, Rgb(1.0f));
+            bend(child, index_ratio, Rgb(1.0f), false);
             out.children.push_back(child);
             return;
         }
@@ -1142,7 +1146,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
             ChildRay split = child;
             split.trace.band = {uint16_t(b), uint16_t(bands)};
             split.transmit_factor = 0;
-            bend(split, band.ior(eta, dispersion), band.hue() * (1.0f / float(bands)));
+            bend(split, band.ior(eta, dispersion), band.hue() * (1.0f / float(bands)),
+                 true);
             out.children.push_back(split);
         }
     }
