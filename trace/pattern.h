@@ -60,9 +60,12 @@ FunctionHooks parse_time_function_hooks();
 Real evaluate_pattern(const PatternSpec& spec, const Point3& world,
                       const PatternEnv& env);
 
-// The pigment's colour (rgbft) at `world`.
+// The pigment's colour (rgbft) at `world`. `found`, when given (and true on entry), is
+// set false where POV-Ray's Compute_Pigment finds no colour: an image_map off its image
+// (`once`), or a pigment_map whose entries there all are (the off-image colour still
+// comes back).
 Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
-                        const PatternEnv& env);
+                        const PatternEnv& env, bool* found = nullptr);
 
 // `geometric` (unit, world space) perturbed by the normal pattern at `world`; unit
 // length.

@@ -175,10 +175,13 @@ Colour sample(const ImageMapping& m, Real x, Real y) {
 
 }  // namespace
 
-Colour image_map_colour(const ImageMapping& m, const Point3& p) {
+Colour image_map_colour(const ImageMapping& m, const Point3& p, bool* on_image) {
     Real x, y;
     // Off the image: clear (white, fully transmitting), as POV-Ray returns.
-    if (!m.pixels || !image_coordinates(m, p, x, y)) return Colour{Rgb{1.0f}, 0.0f, 1.0f};
+    if (!m.pixels || !image_coordinates(m, p, x, y)) {
+        if (on_image) *on_image = false;
+        return Colour{Rgb{1.0f}, 0.0f, 1.0f};
+    }
     return sample(m, x, y);
 }
 

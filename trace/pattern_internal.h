@@ -26,8 +26,9 @@ Real value_at(const PatternSpec& spec, const Point3& p, const PatternEnv& env);
 // POV-Ray's quilted profile (Bezier with controls p1, p2).
 Real quilt_cubic(Real t, Real p1, Real p2);
 
-// image_map: the image's colour at pattern-space point p (clear white off the image).
-Colour image_map_colour(const ImageMapping& m, const Point3& p);
+// image_map: the image's colour at pattern-space point p (clear white off the image;
+// then *on_image, when given, is set false).
+Colour image_map_colour(const ImageMapping& m, const Point3& p, bool* on_image = nullptr);
 // bump_map: bends pattern-space normal n (unit) by the image's heights around p.
 void bump_map_normal(const ImageMapping& m, Real amount, const Point3& p, Vector3& n);
 

@@ -93,7 +93,7 @@ Colour blend(const Colour& prev, const Colour& cur, Real f) {
 }  // namespace
 
 Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
-                        const PatternEnv& env) {
+                        const PatternEnv& env, bool* found) {
     if (env.quick_colours && pigment.maps->quick_colour)
         return *pigment.maps->quick_colour;
     const PatternSpec& spec = *pigment.pattern;
@@ -106,7 +106,7 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
     }
     Point3 p = detail::warp_point(spec, world);
     if (spec.kind == PatternKind::ImageMap) {
-        return spec.image ? detail::image_map_colour(*spec.image, p)
+        return spec.image ? detail::image_map_colour(*spec.image, p, found)
                           : Colour{Rgb{1.0f}, 0.0f, 1.0f};
     }
     if (spec.kind == PatternKind::Average) {
@@ -130,7 +130,7 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
         pigment.maps->colour_map.empty()) {
         int index = std::clamp(int(value), 0, detail::list_size(spec.kind) - 1);
         if (index < int(pigment.maps->list.size())) {
-            return evaluate_pigment(pigment.maps->list[size_t(index)], p, env);
+            return evaluate_pigment(pigment.maps->list[size_t(index)], p, env, found);
         }
         const DefaultMap& d = default_map(spec);
         return Colour{d.colours[size_t(std::min(index, d.count - 1))]};
@@ -141,9 +141,13 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
     if (!pigment.maps->map_values.empty() && !pigment.maps->list.empty()) {
         int n = int(std::min(pigment.maps->map_values.size(), pigment.maps->list.size()));
         MapLookup m = search_map(pigment.maps->map_values.data(), n, value);
-        Colour cur = evaluate_pigment(pigment.maps->list[size_t(m.cur)], p, env);
+        Colour cur = evaluate_pigment(pigment.maps->list[size_t(m.cur)], p, env, found);
         if (m.prev == m.cur) return cur;
-        Colour prev = evaluate_pigment(pigment.maps->list[size_t(m.prev)], p, env);
+        // Found when either entry finds a colour.
+        bool prev_found = true;
+        Colour prev = evaluate_pigment(pigment.maps->list[size_t(m.prev)], p, env,
+                                       found ? &prev_found : nullptr);
+        if (found) *found = *found || prev_found;
         return blend(prev, cur, m.fraction);
     }
 

@@ -291,11 +291,12 @@ void area_lighting_samples(const Scene& sc, size_t l, const Point3& p, const Rgb
 void pigment_only(const PreparedScene& scene, const Material& m, const Point3& P,
                   const PatternEnv& env, ShadingRecord& out);
 
-Colour eval_pigment(const Pigment& p, const Point3& at, const PatternEnv& env) {
+Colour eval_pigment(const Pigment& p, const Point3& at, const PatternEnv& env,
+                    bool* found = nullptr) {
     if (pigment_is_solid(p)) {
         return p.colour;
     }
-    return evaluate_pigment(p, at, env);
+    return evaluate_pigment(p, at, env, found);
 }
 
 // The shadow ray from `at` toward light `l` (sample `s`) for a ray `from` spawned it.
@@ -779,7 +780,10 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
             Nl = perturb_nested(*tex->normal, Ptex, N, env, m.nesting, &surface.normal);
         }
         // After the layer's normal, as POV-Ray (a slope pigment sees it).
-        const Colour lay = tex ? eval_pigment(tex->pigment, Ptex, env) : m.plain_colour;
+        // A layer that finds no colour (an image_map off its image) filters nothing.
+        bool colour_found = true;
+        const Colour lay =
+            tex ? eval_pigment(tex->pigment, Ptex, env, &colour_found) : m.plain_colour;
         if (li == nlayers - 1) top_normal = Nl;
         const float att = legacy ? 1 - (lay.filter * max3(lay.rgb) + lay.transmit)
                                  : 1 - lay.filter - lay.transmit;
@@ -1000,8 +1004,8 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
             if (f.irid > 0) tint_reflection(child, iridescence(f, sc, P, Nl, R, D));
             out.children.push_back(child);
         }
-        fil *= rgb_transm(lay);
-        if (f.conserve_energy) {
+        if (colour_found) fil *= rgb_transm(lay);
+        if (colour_found && f.conserve_energy) {
             // What a layer reflects does not also pass through it (per channel).
             fil.r *= std::min(1.0f, 1 - reflectivity.r);
             fil.g *= std::min(1.0f, 1 - reflectivity.g);
@@ -1111,9 +1115,12 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                 return;
             }
             // Total internal reflection: reflected as a finish reflects (top normal, raw
-            // normal, iridescence), not filtered, no alpha, and the ray stays inside; the
-            // layers whose normal is the top one reflect no more. (Made from the
-            // incoming ray: a split's reflections carry all wavelengths.)
+            // normal, iridescence), no alpha, and the ray stays inside. (Made from the
+            // incoming ray: a split's reflections carry all wavelengths.) Not filtered,
+            // and the layers whose normal is the top one reflect no more; but a band of
+            // a split is summed with the others as light that passed (POV-Ray's
+            // dispersion ignores each band's TIR): filtered, and the layers still
+            // reflect.
             const Vector3 R = reflected_direction(D, top_normal, N);
             c.kind = ChildRay::Kind::Reflection;
             c.internal_reflection = true;
