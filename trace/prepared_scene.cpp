@@ -1416,23 +1416,31 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
     auto caster = [](const Material& m) {
         return m.frame.no_shadow ? 0 : m.opaque ? 1 : -1;
     };
-    auto meets = [&](uint32_t id) {
+    auto meets_from = [&](uint32_t id, Real from) {
         ++ctx.tests;
         if (id < sphere_count_) {
-            if (!(sphere_distance(spheres_[id], ray, lo) < t_max) ||
+            if (!(sphere_distance(spheres_[id], ray, std::max(from, kMinIsectDepth)) <
+                  t_max) ||
                 !pov_accepts(id, pov_ray))
                 return 0;
             return caster(materials_[material_[id]]);
         }
         Hit h;
-        if (!test_primitive(id, ray, pov_ray, t_min, t_max, h, 0, nullptr, true))
-            return 0;
+        if (!test_primitive(id, ray, pov_ray, from, t_max, h, 0, nullptr, true)) return 0;
         return caster(*h.material);
     };
+    auto meets = [&](uint32_t id) { return meets_from(id, t_min); };
     uint32_t* cache = light >= 0 && size_t(light) < ctx.last_blocker.size()
                           ? &ctx.last_blocker[size_t(light)]
                           : nullptr;
-    if (cache && *cache != ~0u && meets(*cache) == 1) return true;
+    // POV-Ray tests the light's cached blocker once, where the shadow ray starts (t_min
+    // still its 1e-3 tolerance), and takes any of its hits from MIN_ISECT_DEPTH (1e-4)
+    // on, not only those past 1e-3 as the search that follows: so a surface's own
+    // spurious hit near the lit point (a lathe's or sor's round-off root) shadows the
+    // point when that surface blocked the light's previous shadow ray.
+    constexpr Real kShadowRayStart = 1e-3;  // POV-Ray's SHADOW_TOLERANCE
+    const Real cache_from = t_min <= kShadowRayStart ? kMinIsectDepth : t_min;
+    if (cache && *cache != ~0u && meets_from(*cache, cache_from) == 1) return true;
     // True (and remembered) for an opaque caster; notes a see-through one.
     auto blocks = [&](uint32_t id, int r) {
         if (r < 0) transparent = true;
