@@ -3,12 +3,17 @@
 namespace povwall {
 namespace {
 
-Matrix34 multiply(const Matrix34& a, const Matrix34& b) {  // a after b
+// a after b, summed in POV-Ray's order (its MTimesA/MTimesB on row-vector matrices): the
+// three products first, then a's translation. Adding the translation first rounds
+// differently, and one bit of a transformed ray is enough to change which round-off
+// roots a sor or lathe met edge-on reports.
+Matrix34 multiply(const Matrix34& a, const Matrix34& b) {
     Matrix34 r;
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 4; ++j) {
-            Real s = (j == 3) ? a.m[i][3] : 0;
-            for (int k = 0; k < 3; ++k) s += a.m[i][k] * b.m[k][j];
+            Real s =
+                a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
+            if (j == 3) s += a.m[i][3];
             r.m[i][j] = s;
         }
     }
