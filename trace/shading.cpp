@@ -19,8 +19,6 @@ namespace povwall::trace {
 namespace {
 
 constexpr float kShadowTolerance = 1e-3f;
-// The restarted shadow ray keeps hits past POV-Ray's SMALL_TOLERANCE (0.001 as a double).
-constexpr Real kShadowRestartTolerance = 1e-3;
 
 float max3(const Rgb& c) { return std::max(c.r, std::max(c.g, c.b)); }
 
@@ -1641,23 +1639,9 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
     // ray does. The ray enters or leaves each object it crosses; the stretch inside fades
     // with the object's interior. (No adc_bailout test per layer: POV-Ray's combined
     // shadow texture always has filter 1, so that test never fires.)
-    // POV-Ray restarts the shadow ray at each see-through crossing: its origin moves to
-    // the hit point and the shapes solve again from there. Searching on along the first
-    // ray is the same but where roots are round-off (a sor or lathe met edge-on, or near
-    // the ray's start): those differ with the origin, so the search restarts as well.
-    // `base` is where `from` starts on `ray`; the distances kept in `state` stay on
-    // `ray`.
-    Ray from = ray;
-    Real base = 0;
-    if (state.last_hit > 0) {
-        from.origin = ray.at(state.last_hit);
-        base = state.last_hit;
-    }
-    Real lo = state.t_min - base;
     for (int guard = 0; guard < 256 && state.t_min < hi; ++guard) {
         Hit hit;
-        if (!scene.closest_hit(from, lo, hi - base, RayUse::Shadow, hit, ctx)) break;
-        hit.t += base;
+        if (!scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx)) break;
         if (ctx.tie_tolerance > 0 && on_pattern_boundary(scene, hit, ctx.tie_tolerance))
             ++ctx.pattern_ties;
         const Material& m = *hit.material;
@@ -1748,9 +1732,6 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
         }
         state.last_hit = hit.t;
         state.t_min = hit.t + kShadowTolerance;
-        from.origin = hit.point;
-        base = hit.t;
-        lo = kShadowRestartTolerance;
     }
     state.t_min = std::max(state.t_min, hi);
     return false;
