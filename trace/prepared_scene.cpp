@@ -1437,9 +1437,21 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
     // still its 1e-3 tolerance), and takes any of its hits from MIN_ISECT_DEPTH (1e-4)
     // on, not only those past 1e-3 as the search that follows: so a surface's own
     // spurious hit near the lit point (a lathe's or sor's round-off root) shadows the
-    // point when that surface blocked the light's previous shadow ray.
+    // point when that surface blocked the light's previous shadow ray. Only for a sor or
+    // lathe here: what the cache holds depends on the order rays are traced in, which
+    // black boxes change, and other shapes meet a ray that close only where two surfaces
+    // touch (images would then depend on the box split for a few pixels there).
     constexpr Real kShadowRayStart = 1e-3;  // POV-Ray's SHADOW_TOLERANCE
-    const Real cache_from = t_min <= kShadowRayStart ? kMinIsectDepth : t_min;
+    auto round_off_near_start = [&](uint32_t id) {
+        if (id < sphere_count_ || kind_[id] != PrimKind::Object) return false;
+        const Object& o = *objects_[index_[id]];
+        return std::holds_alternative<Sor>(o.shape) ||
+               std::holds_alternative<Lathe>(o.shape);
+    };
+    const Real cache_from =
+        cache && *cache != ~0u && t_min <= kShadowRayStart && round_off_near_start(*cache)
+            ? kMinIsectDepth
+            : t_min;
     if (cache && *cache != ~0u && meets_from(*cache, cache_from) == 1) return true;
     // True (and remembered) for an opaque caster; notes a see-through one.
     auto blocks = [&](uint32_t id, int r) {
