@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/internal_function.h"
+#include "core/pov_angles.h"
 
 namespace povwall {
 
@@ -21,8 +22,11 @@ const FloatBuiltin* find_float_builtin(std::string_view name) {
         {"ceil", 1, [](const double* a) { return std::ceil(a[0]); }},
         {"cos", 1, [](const double* a) { return std::cos(a[0]); }},
         {"cosh", 1, [](const double* a) { return std::cosh(a[0]); }},
-        {"degrees", 1, [](const double* a) { return a[0] * 180 / kPi; }},
-        {"radians", 1, [](const double* a) { return a[0] * kPi / 180; }},
+        // As POV-Ray's function compiler rounds them (times 180 / M_PI, times M_PI / 180,
+        // which is its M_PI_180): the scene language's degrees() divides instead
+        // (parser/expressions.cpp).
+        {"degrees", 1, [](const double* a) { return a[0] * (180 / kPi); }},
+        {"radians", 1, [](const double* a) { return a[0] * kPovRadiansPerDegree; }},
         {"exp", 1, [](const double* a) { return std::exp(a[0]); }},
         {"floor", 1, [](const double* a) { return std::floor(a[0]); }},
         {"int", 1, [](const double* a) { return std::trunc(a[0]); }},

@@ -1,14 +1,21 @@
 #include "core/math.h"
 
+#include "core/pov_matrix_inverse.h"
+
 namespace povwall {
 namespace {
 
-Matrix34 multiply(const Matrix34& a, const Matrix34& b) {  // a after b
+// a after b, summed in POV-Ray's order (its MTimesA/MTimesB on row-vector matrices): the
+// three products first, then a's translation. Adding the translation first rounds
+// differently, and one bit of a transformed ray is enough to change which round-off
+// roots a sor or lathe met edge-on reports.
+Matrix34 multiply(const Matrix34& a, const Matrix34& b) {
     Matrix34 r;
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 4; ++j) {
-            Real s = (j == 3) ? a.m[i][3] : 0;
-            for (int k = 0; k < 3; ++k) s += a.m[i][k] * b.m[k][j];
+            Real s =
+                a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
+            if (j == 3) s += a.m[i][3];
             r.m[i][j] = s;
         }
     }
@@ -118,7 +125,22 @@ Transform Transform::from_pov_matrix(const Real v[12]) {
         for (int col = 0; col < 3; ++col) f.m[row][col] = v[col * 3 + row];
         f.m[row][3] = v[9 + row];
     }
-    return from_matrix(f);
+    // The inverse as POV-Ray's MInvers computes it from its 4x4 (rows: the images of x,
+    // y, z, then the translation; last column 0, 0, 0, 1), element for element: a
+    // general inverse differs in the last bits, which change the round-off roots of a
+    // sor met edge-on for most rays.
+    const Real pov[4][4] = {{v[0], v[1], v[2], 0},
+                            {v[3], v[4], v[5], 0},
+                            {v[6], v[7], v[8], 0},
+                            {v[9], v[10], v[11], 1}};
+    Real pov_inverse[4][4];
+    if (!pov_invert_4x4(pov, pov_inverse)) return from_matrix(f);  // kept finite
+    Matrix34 inv;
+    for (int row = 0; row < 3; ++row) {
+        for (int col = 0; col < 3; ++col) inv.m[row][col] = pov_inverse[col][row];
+        inv.m[row][3] = pov_inverse[3][row];
+    }
+    return from_matrices(f, inv);
 }
 
 Transform Transform::then(const Transform& next) const {

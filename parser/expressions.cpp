@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "core/noise.h"
+#include "core/pov_angles.h"
 #include "parser/expression_program.h"
 #include "parser/interpreter.h"
 
@@ -175,6 +176,11 @@ Numeric apply_binary(BinaryOpCode code, const Numeric& a, const Numeric& b) {
 }
 
 const FloatFunction* find_float_function(std::string_view name) {
+    // The scene language's degrees() divides by POV-Ray's M_PI_180, where its function
+    // compiler multiplies by 180 / M_PI: the last bits differ for some angles.
+    static const FloatFunction kDegrees{
+        "degrees", 1, [](const double* a) { return a[0] / kPovRadiansPerDegree; }};
+    if (name == "degrees") return &kDegrees;
     return find_float_builtin(name);
 }
 

@@ -4,9 +4,21 @@
 #include <optional>
 
 #include "core/mesh_camera.h"
+#include "core/pov_angles.h"
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
+
+namespace {
+
+// The length of a perspective camera's direction for a field of view of `angle` degrees
+// across `right_length`, rounded as POV-Ray's camera set-up rounds it
+// (core/pov_angles.h).
+double perspective_direction_length(double right_length, double angle) {
+    return right_length / std::tan(angle * kPovRadiansPerHalfDegree) / 2;
+}
+
+}  // namespace
 
 CameraSpec Interpreter::parse_camera_block() {
     Token open = next();
@@ -203,7 +215,7 @@ CameraSpec Interpreter::parse_legacy_camera(CameraSpec c) {
             if (c.angle < 0) error(at, "negative viewing angle");
             if (c.kind == Camera::Kind::Perspective) {
                 if (c.angle >= 180) error(at, "camera angle must be below 180 degrees");
-                const double len = length(c.right) / std::tan(c.angle * kPi / 360) / 2;
+                const double len = perspective_direction_length(length(c.right), c.angle);
                 c.direction = normalize(c.direction) * len;
                 c.legacy_direction_length = len;
             }
@@ -324,7 +336,7 @@ Camera Interpreter::finish_camera(const CameraSpec& s) {
                 msg, s.loc);
         }
         if (s.angle > 0) {
-            double len = length(right) / std::tan(s.angle * kPi / 360) / 2;
+            double len = perspective_direction_length(length(right), s.angle);
             direction = normalize(direction) * len;
             direction_length = len;
         }

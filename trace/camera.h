@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "core/pov_angles.h"
 #include "core/scene.h"
 #include "trace/mesh_camera.h"
 #include "trace/pattern.h"
@@ -99,7 +100,8 @@ inline std::optional<Ray> camera_ray_shifted(const Camera& cam, Real shifted_x,
             const Real right_len = length(cam.right), up_len = length(cam.up);
             const Vector3 r = cam.right / right_len, u = cam.up / up_len;
             const Vector3 d = normalize(cam.direction);
-            const Real angle = cam.angle * kPi / 180;
+            // Degrees to radians as POV-Ray rounds it (core/pov_angles.h).
+            const Real angle = cam.angle * kPovRadiansPerDegree;
             Point3 origin = cam.location;
             Vector3 dir;
             // The unit circle's polar angle of image point (fx, fy), as POV-Ray takes it.
@@ -115,7 +117,7 @@ inline std::optional<Ray> camera_ray_shifted(const Camera& cam, Real shifted_x,
                     const Real rad = std::sqrt(fx * fx + fy * fy);
                     if (rad > 1) return std::nullopt;
                     const Real phi = polar(fx, fy, rad);
-                    const Real theta = rad * angle / 2;
+                    const Real theta = rad * cam.angle * kPovRadiansPerHalfDegree;
                     pattern_x = phi, pattern_y = theta;
                     dir = r * (std::cos(phi) * std::sin(theta)) +
                           u * (std::sin(phi) * std::sin(theta)) + d * std::cos(theta);
@@ -147,13 +149,16 @@ inline std::optional<Ray> camera_ray_shifted(const Camera& cam, Real shifted_x,
                         1.411269 * rad - 0.09439 * r3 + 0.25674 * r3 * rad * rad;
                     const Real sx = std::sin(phi), sy = std::sin(theta),
                                cy = std::cos(theta);
-                    if (sx * sy < std::tan(135.0 * kPi / 180) * cy) return std::nullopt;
+                    if (sx * sy < std::tan(135.0 * kPovRadiansPerDegree) * cy)
+                        return std::nullopt;
                     pattern_x = phi, pattern_y = theta;
                     dir = r * (std::cos(phi) * sy) + u * (sx * sy) + d * cy;
                     break;
                 }
                 case Kind::UltraWideAngle: {
-                    const Real ax = x0 * angle, ay = y0 * angle * (up_len / right_len);
+                    const Real ax = x0 * angle,
+                               ay = y0 * (cam.angle * (up_len / right_len) *
+                                          kPovRadiansPerDegree);
                     pattern_x = ax, pattern_y = ay;
                     dir = r * std::sin(ax) + u * std::sin(ay) +
                           d * (std::cos(ax) * std::cos(ay));

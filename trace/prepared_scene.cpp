@@ -1427,24 +1427,45 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
     auto caster = [](const Material& m) {
         return m.frame.no_shadow ? 0 : m.opaque ? 1 : -1;
     };
-    auto meets = [&](uint32_t id) {
+    auto meets_from = [&](uint32_t id, Real from) {
         ++ctx.tests;
         if (id < sphere_count_) {
-            if (!(sphere_distance(spheres_[id], ray, lo) < t_max) ||
+            if (!(sphere_distance(spheres_[id], ray, std::max(from, kMinIsectDepth)) <
+                  t_max) ||
                 !pov_accepts(id, pov_ray))
                 return 0;
             return caster(materials_[material_[id]]);
         }
         Hit h;
-        if (!test_primitive(id, ray, pov_ray, t_min, t_max, h, 0, nullptr, true,
+        if (!test_primitive(id, ray, pov_ray, from, t_max, h, 0, nullptr, true,
                             &shadow_flags))
             return 0;
         return caster(*h.material);
     };
+    auto meets = [&](uint32_t id) { return meets_from(id, t_min); };
     uint32_t* cache = light >= 0 && size_t(light) < ctx.last_blocker.size()
                           ? &ctx.last_blocker[size_t(light)]
                           : nullptr;
-    if (cache && *cache != ~0u && meets(*cache) == 1) return true;
+    // POV-Ray tests the light's cached blocker once, where the shadow ray starts (t_min
+    // still its 1e-3 tolerance), and takes any of its hits from MIN_ISECT_DEPTH (1e-4)
+    // on, not only those past 1e-3 as the search that follows: so a surface's own
+    // spurious hit near the lit point (a lathe's or sor's round-off root) shadows the
+    // point when that surface blocked the light's previous shadow ray. Only for a sor or
+    // lathe here: what the cache holds depends on the order rays are traced in, which
+    // black boxes change, and other shapes meet a ray that close only where two surfaces
+    // touch (images would then depend on the box split for a few pixels there).
+    constexpr Real kShadowRayStart = 1e-3;  // POV-Ray's SHADOW_TOLERANCE
+    auto round_off_near_start = [&](uint32_t id) {
+        if (id < sphere_count_ || kind_[id] != PrimKind::Object) return false;
+        const Object& o = *objects_[index_[id]];
+        return std::holds_alternative<Sor>(o.shape) ||
+               std::holds_alternative<Lathe>(o.shape);
+    };
+    const Real cache_from =
+        cache && *cache != ~0u && t_min <= kShadowRayStart && round_off_near_start(*cache)
+            ? kMinIsectDepth
+            : t_min;
+    if (cache && *cache != ~0u && meets_from(*cache, cache_from) == 1) return true;
     // True (and remembered) for an opaque caster; notes a see-through one.
     auto blocks = [&](uint32_t id, int r) {
         if (r < 0) transparent = true;

@@ -1110,8 +1110,12 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
             c.coeff = child.coeff * share;
             Real t = 1 + index_ratio * index_ratio * (n * n - 1);
             if (t >= 0) {
-                Vector3 T = D * index_ratio + facing * (index_ratio * n - std::sqrt(t));
-                c.trace.ray = {P, normalize(T)};
+                // Not normalised: POV-Ray traces Heckbert's direction as it comes out
+                // (unit but for its last bits, which decide the round-off roots of a
+                // sor or lathe met edge-on inside the glass).
+                const Vector3 T =
+                    D * index_ratio + facing * (index_ratio * n - std::sqrt(t));
+                c.trace.ray = {P, T};
                 return;
             }
             // Total internal reflection: reflected as a finish reflects (top normal, raw

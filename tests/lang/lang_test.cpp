@@ -57,7 +57,8 @@ INSTANTIATE_TEST_SUITE_P(
                       "functions_internal", "fileio", "keywords", "text_extents",
                       "object_queries", "string_relations", "legacy_semicolons",
                       "torus_pov_solver", "inside_rules", "cylinder_trace_bits",
-                      "colour_terms", "cone_trace_bits", "macro_rvalue_semicolons"));
+                      "colour_terms", "cone_trace_bits", "macro_rvalue_semicolons",
+                      "sor_lathe_trace_bits", "degree_constants"));
 
 }  // namespace
 }  // namespace povwall::parser

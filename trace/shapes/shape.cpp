@@ -49,6 +49,16 @@ Vector3 leaf_world_normal(const Object& leaf, const ShapeHit& h, const Point3& w
         at.p = leaf.transform.inverse_point(world);
         return leaf_world_normal(leaf, at);
     }
+    // So do Sor::Normal and Lathe::Normal, with or without a transform (the world point
+    // is origin + (k / length) * direction, the frame's point origin + k * unit: their
+    // last bits differ, and a normal's last bits bend a refracted ray onto another of
+    // the round-off roots a sor or lathe met edge-on has).
+    if (!h.own_point && (std::holds_alternative<Sor>(leaf.shape) ||
+                         std::holds_alternative<Lathe>(leaf.shape))) {
+        ShapeHit at = h;
+        at.p = leaf.transform.is_identity() ? world : leaf.transform.inverse_point(world);
+        return leaf_world_normal(leaf, at);
+    }
     return leaf_world_normal(leaf, h);
 }
 
