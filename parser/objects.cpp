@@ -308,6 +308,15 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
     transform_interior(obj.interior, t);
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
         for (Object& child : csg->children) apply_transform(child, t, step);
+        // A julia_fractal's set-up at each transform clears the inverted flag a
+        // difference gave it (Fractal::Compute_BBox): from then on it is intersected, as
+        // if its own `inverse` undid the difference's.
+        if (csg->kind == CsgKind::Difference) {
+            for (size_t i = 1; i < csg->children.size(); ++i) {
+                if (std::holds_alternative<JuliaFractal>(csg->children[i].shape))
+                    csg->children[i].inverse = true;
+            }
+        }
         for (Light& l : csg->lights) transform_light(l, t, step);
         if (csg->pov_box) move_pov_box(*csg->pov_box, t);
     }

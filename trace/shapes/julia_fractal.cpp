@@ -207,9 +207,12 @@ void shape_hits(const JuliaFractal& j, const LocalRay& r, ShapeHits& out) {
     thread_local Stack st;
     st.size_for(j);
     // POV-Ray uses the world ray as it is when the object has no transform.
-    const Point3& o = r.origin;
     const Vector3 d = r.transformed ? r.unit : r.direction;
     const Real to_world = r.transformed ? 1 / r.length : 1;
+    // Outside CSG POV-Ray reports the first hit only: a shadow ray it restarted past a
+    // see-through surface marches afresh from there (and so meets the far side).
+    const Real t0 = !r.csg_child && r.restart > 0 ? r.restart / to_world : 0;
+    const Point3 o = r.origin + d * t0;
     // The bounding sphere (POV-Ray's sphere test).
     const Vector3 v = Point3{0, 0, 0} - o;
     const Real l = dot(v, v), b = dot(v, d);
@@ -264,7 +267,7 @@ void shape_hits(const JuliaFractal& j, const LocalRay& r, ShapeHits& out) {
         } else if (last != cur) {
             iterate(j, p, st);
         }
-        out.push_back({t * to_world, p, 0, 0, 0, normal_from(j, st), true});
+        out.push_back({(t0 + t) * to_world, p, 0, 0, 0, normal_from(j, st), true});
         if (!r.csg_child) return;  // POV-Ray stops at its first hit outside CSG
         dist = next_dist;
         cur = next;
