@@ -366,6 +366,8 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "triangle_corner_order",
                              "dispersion_total_internal_reflection",
                              "image_map_once_no_colour",
+                             "julia_pov_rules",
+                             "sor_lathe_rim",
                              "mesh_normal_rules",
                              "pigment_map_replaced",
                              "map_entries",
