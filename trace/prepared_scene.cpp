@@ -269,20 +269,36 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
     }
 }
 
-Bounds3 object_bounds(const Object& o) {
+// A leaf's bounds in the world, before its clips.
+Bounds3 leaf_world_bounds(const Object& o) {
+    const Bounds3 local = leaf_bounds(o);
+    if (!local.empty() && local.infinite()) return Bounds3::everything();
+    const Cylinder* cylinder = std::get_if<Cylinder>(&o.shape);
+    const Cone* cone = std::get_if<Cone>(&o.shape);
+    return cylinder && cylinder->radius != 0
+               ? cylinder_world_bounds(*cylinder, o.transform)
+           : cone ? cone_world_bounds(*cone, o.transform)
+                  : o.transform.bounds(local);
+}
+
+// The bounds of where an object's surface can be met (`restricts` false), or of its
+// inside when it cuts another's surface (an intersection's or difference's part, or a
+// clip): a disc's inside is the half-space behind it, a height field's everything below
+// its box, so as cutting parts they restrict nothing. bounded_by is no limit (it bounds
+// the rays POV-Ray tests, not the hits).
+Bounds3 object_bounds(const Object& o, bool restricts) {
     if (o.inverse) return Bounds3::everything();
+    if (restricts && (std::holds_alternative<Disc>(o.shape) ||
+                      std::holds_alternative<HeightField>(o.shape)))
+        return Bounds3::everything();
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
+        const bool cuts =
+            csg->kind == CsgKind::Intersection || csg->kind == CsgKind::Difference;
         // Children carry world transforms already.
         Bounds3 b;
         bool first = true;
         for (const Object& c : csg->children) {
-            // A height field is solid down to -infinity below its box: the other
-            // children's crossings there count.
-            Bounds3 cb = std::holds_alternative<HeightField>(c.shape) &&
-                                 csg->kind != CsgKind::Union &&
-                                 csg->kind != CsgKind::Merge
-                             ? Bounds3::everything()
-                             : object_bounds(c);
+            const Bounds3 cb = object_bounds(c, cuts || restricts);
             if (csg->kind == CsgKind::Intersection) {
                 if (cb.infinite()) continue;
                 b = first ? cb : intersection(b, cb);
@@ -295,21 +311,42 @@ Bounds3 object_bounds(const Object& o) {
             }
         }
         if (first && csg->kind == CsgKind::Intersection) return Bounds3::everything();
+        for (const Object& c : *o.clipped_by) {
+            const Bounds3 cb = object_bounds(c, true);
+            if (!cb.infinite()) b = intersection(b, cb);
+        }
         return b;
     }
-    const Bounds3 local = leaf_bounds(o);
-    if (!local.empty() && local.infinite()) return Bounds3::everything();
-    const Cylinder* cylinder = std::get_if<Cylinder>(&o.shape);
-    const Cone* cone = std::get_if<Cone>(&o.shape);
-    Bounds3 world = cylinder && cylinder->radius != 0
-                        ? cylinder_world_bounds(*cylinder, o.transform)
-                    : cone ? cone_world_bounds(*cone, o.transform)
-                           : o.transform.bounds(local);
+    Bounds3 world = leaf_world_bounds(o);
+    if (world.infinite()) return world;
     for (const Object& c : *o.clipped_by) {
-        Bounds3 cb = object_bounds(c);
+        const Bounds3 cb = object_bounds(c, true);
         if (!cb.infinite()) world = intersection(world, cb);
     }
     return world;
+}
+
+Bounds3 object_bounds(const Object& o) { return object_bounds(o, false); }
+
+// Whether POV-Ray may meet the object's surface outside its box: a disc cuts it (as an
+// intersection's or a difference's part, or as a clip), a height field is part of an
+// intersection or difference (solid below its box), or a bounded_by of its own or of a
+// part bounds the rays tested rather than the hits.
+bool may_hit_outside_pov_box(const Object& o, bool restricts = false) {
+    if (restricts && !o.inverse &&
+        (std::holds_alternative<Disc>(o.shape) ||
+         std::holds_alternative<HeightField>(o.shape)))
+        return true;
+    if (!o.bounded_by->empty() && !o.bounds_are_clips) return true;
+    for (const Object& c : *o.clipped_by)
+        if (may_hit_outside_pov_box(c, true)) return true;
+    if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
+        const bool cuts =
+            csg->kind == CsgKind::Intersection || csg->kind == CsgKind::Difference;
+        for (const Object& c : csg->children)
+            if (may_hit_outside_pov_box(c, cuts || restricts)) return true;
+    }
+    return false;
 }
 
 size_t blend_faces(const Mesh& m) {
@@ -783,6 +820,63 @@ void PreparedScene::add_object(const Object& o, uint32_t frame) {
     add_frame_object(o, frame);
     const FrameFlags flags = frame_flags(o);
     for (size_t i = first; i < materials_.size(); ++i) materials_[i].frame = flags;
+    note_hits_beyond_box(o, first);
+}
+
+namespace {
+
+// For a frame object whose surface POV-Ray may meet outside its box (beyond_box set): the
+// hull of that surface and the box (empty for every other object).
+Bounds3 beyond_box_hull(const Object& o, PovBBox& box) {
+    if (!may_hit_outside_pov_box(o)) return {};
+    box = pov_object_bbox(o);
+    // An infinite box is keyed first in the walk, which always tests it.
+    if (!pov_bbox_finite(box)) return {};
+    const Bounds3 surface = object_bounds(o);
+    if (surface.empty()) return {};
+    const Bounds3 pov = pov_bbox_bounds(box);
+    bool beyond = surface.infinite();
+    for (int a = 0; a < 3 && !beyond; ++a) {
+        // The box is single precision: only a surface beyond its rounding is beyond it.
+        const Real margin = 1e-6 * (std::fabs(pov.lo[a]) + std::fabs(pov.hi[a])) + 1e-9;
+        beyond = surface.lo[a] < pov.lo[a] - margin || surface.hi[a] > pov.hi[a] + margin;
+    }
+    if (!beyond) return {};
+    Bounds3 hull = surface;
+    hull.extend(pov);
+    return hull;
+}
+
+}  // namespace
+
+Bounds3 pov_walk_reach(const Object& obj) {
+    Bounds3 reach;
+    if (pov_splits_union(obj)) {
+        for (const Object& c : std::get<Csg>(obj.shape).children)
+            reach.extend(pov_walk_reach(c));
+        return reach;
+    }
+    PovBBox box;
+    return beyond_box_hull(obj, box);
+}
+
+void PreparedScene::note_hits_beyond_box(const Object& o, size_t first_material) {
+    // Without the slab tree POV-Ray tests every object.
+    if (!pov_slab_tree_ || first_material == materials_.size()) return;
+    PovBBox box;
+    if (!beyond_box_hull(o, box).empty())
+        beyond_box_frames_.push_back(
+            {uint32_t(first_material), uint32_t(materials_.size()), box});
+}
+
+const PreparedScene::BeyondBoxFrame* PreparedScene::beyond_box_frame(
+    uint32_t material) const {
+    auto it =
+        std::upper_bound(beyond_box_frames_.begin(), beyond_box_frames_.end(), material,
+                         [](uint32_t m, const BeyondBoxFrame& f) { return m < f.first; });
+    if (it == beyond_box_frames_.begin()) return nullptr;
+    --it;
+    return material < it->end ? &*it : nullptr;
 }
 
 void PreparedScene::add_frame_object(const Object& o, uint32_t frame) {
@@ -1259,7 +1353,16 @@ bool PreparedScene::pov_takes(const Material& candidate, const Material& nearest
 }
 
 bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use,
-                                Hit& hit, RayContext& ctx, bool radiosity_ray) const {
+                                Hit& hit, RayContext& ctx, bool radiosity_ray,
+                                Real ray_end) const {
+    return closest_hit_without(ray, t_min, t_max, use, hit, ctx, radiosity_ray,
+                               ray_end < 0 ? t_max : ray_end, {});
+}
+
+bool PreparedScene::closest_hit_without(const Ray& ray, Real t_min, Real t_max,
+                                        RayUse use, Hit& hit, RayContext& ctx,
+                                        bool radiosity_ray, Real ray_end,
+                                        const LeftOutFrames& left_out) const {
     bool found = false;
     const PovRayOnce pov_ray(ray);
     // pov_accepts() of a sphere, its common answer decided here without the call.
@@ -1286,8 +1389,11 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
     flags.restart = ctx.restart;
     const bool may_hide =
         hides_[size_t(use)] || (flags.radiosity && hides_[size_t(RayUse::Radiosity)]);
+    const bool may_leave_out = may_hide || left_out.count;
     auto hidden = [&](uint32_t material) {
-        return may_hide && frame_hides(materials_[material].frame, flags);
+        return may_leave_out &&
+               ((may_hide && frame_hides(materials_[material].frame, flags)) ||
+                left_out.holds(material));
     };
     // Spheres: distance only; the nearest one's point and normal are computed once at the
     // end.
@@ -1395,6 +1501,32 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
     if (nearest_sphere != ~0u) fill_sphere_hit(nearest_sphere, ray, best, hit);
     if (probe > 0 && found && (tie || other - best <= probe * std::fabs(best)))
         ++ctx.ties;
+    if (found && !beyond_box_frames_.empty() && left_out.count < 4) {
+        // The hit lies before where the ray enters its object's box: POV-Ray's walk met
+        // that box only if no other object's hit nearer than the entry was found first
+        // (those boxes are entered before it), and otherwise stopped there. The search
+        // without it goes on to the entry even past t_max (the end of a black box's part
+        // of the ray: the box holds every object there, BoxHost::build_boxes).
+        const BeyondBoxFrame* frame = beyond_box_frame(best_material);
+        Real entry;
+        if (frame && slab_tree_entry(frame->box, pov_ray.get(), entry)) {
+            const Real unit = length(ray.direction);
+            if (best * unit < entry) {
+                LeftOutFrames without = left_out;
+                without.frame[without.count++] = frame;
+                Hit nearer;
+                const Real until = std::min(ray_end, entry / unit * (1 + 1e-12));
+                if (closest_hit_without(ray, t_min, until, use, nearer, ctx,
+                                        radiosity_ray, ray_end, without) &&
+                    nearer.t * unit < entry) {
+                    if (!(nearer.t <= t_max)) return false;  // a later box's hit
+                    hit = nearer;
+                    return true;
+                }
+                if (ray_end * unit < entry) return false;  // the ray ends before
+            }
+        }
+    }
     return found;
 }
 
@@ -1427,7 +1559,9 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
     auto caster = [](const Material& m) {
         return m.frame.no_shadow ? 0 : m.opaque ? 1 : -1;
     };
-    auto meets_from = [&](uint32_t id, Real from) {
+    // `cached`: the light's last blocker, which POV-Ray tests on its own, without its
+    // walk.
+    auto meets_from = [&](uint32_t id, Real from, bool cached = false) {
         ++ctx.tests;
         if (id < sphere_count_) {
             if (!(sphere_distance(spheres_[id], ray, std::max(from, kMinIsectDepth)) <
@@ -1440,7 +1574,13 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
         if (!test_primitive(id, ray, pov_ray, from, t_max, h, 0, nullptr, true,
                             &shadow_flags))
             return 0;
-        return caster(*h.material);
+        const int kind = caster(*h.material);
+        // An object POV-Ray may meet outside its box blocks only if its walk gets there
+        // (closest_hit decides): taken as see-through, which sends the caller there.
+        if (kind == 1 && !beyond_box_frames_.empty() && !cached &&
+            beyond_box_frame(uint32_t(h.material - materials_.data())))
+            return -1;
+        return kind;
     };
     auto meets = [&](uint32_t id) { return meets_from(id, t_min); };
     uint32_t* cache = light >= 0 && size_t(light) < ctx.last_blocker.size()
@@ -1465,7 +1605,7 @@ bool PreparedScene::opaque_blocker(const Ray& ray, Real t_min, Real t_max,
         cache && *cache != ~0u && t_min <= kShadowRayStart && round_off_near_start(*cache)
             ? kMinIsectDepth
             : t_min;
-    if (cache && *cache != ~0u && meets_from(*cache, cache_from) == 1) return true;
+    if (cache && *cache != ~0u && meets_from(*cache, cache_from, true) == 1) return true;
     // True (and remembered) for an opaque caster; notes a see-through one.
     auto blocks = [&](uint32_t id, int r) {
         if (r < 0) transparent = true;

@@ -230,8 +230,11 @@ class PreparedScene {
     // respecting no_image / no_reflection / no_shadow / no_radiosity as POV-Ray does for
     // a ray of this use (ray_use.h). `radiosity_ray`: the ray is, or was spawned under, a
     // radiosity sample ray (POV-Ray's radiosity flag, which its child rays keep).
+    // `ray_end`: where the ray ends when t_max only ends this search (a black box's part
+    // of the ray; negative: at t_max), for POV-Ray's walk (beyond_box_frames_).
     bool closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse use, Hit& hit,
-                     RayContext& ctx, bool radiosity_ray = false) const;
+                     RayContext& ctx, bool radiosity_ray = false,
+                     Real ray_end = -1) const;
 
     // Shadow-ray fast path: true if an opaque, shadow-casting surface lies in (t_min,
     // t_max). Sets `transparent` when a see-through surface was met there (the caller
@@ -269,6 +272,32 @@ class PreparedScene {
     // POV-Ray's float bounding-box tests of primitive `id` (trace/pov_bounds.h): false
     // when POV-Ray would not intersect it with this ray at all. Asked only of hits.
     bool pov_accepts(uint32_t id, const PovRayOnce& pov_ray) const;
+    // Frame objects whose surface POV-Ray can meet outside their box (kept_surface_bounds
+    // beyond it: a disc's half-space keeping an intersection's parts, a bounded_by
+    // smaller than the object): its walk of the slab tree stops at the first box entered
+    // beyond the nearest hit found so far, so such an object's hit counts only when no
+    // other is nearer than where the ray enters its box (closest_hit). Their materials
+    // [first, end) and box, in material order.
+    struct BeyondBoxFrame {
+        uint32_t first, end;
+        PovBBox box;
+    };
+    std::vector<BeyondBoxFrame> beyond_box_frames_;
+    void note_hits_beyond_box(const Object& o, size_t first_material);
+    const BeyondBoxFrame* beyond_box_frame(uint32_t material) const;
+    // Frames closest_hit leaves out while it replays POV-Ray's walk.
+    struct LeftOutFrames {
+        const BeyondBoxFrame* frame[4];
+        int count = 0;
+        bool holds(uint32_t material) const {
+            for (int i = 0; i < count; ++i)
+                if (material >= frame[i]->first && material < frame[i]->end) return true;
+            return false;
+        }
+    };
+    bool closest_hit_without(const Ray& ray, Real t_min, Real t_max, RayUse use, Hit& hit,
+                             RayContext& ctx, bool radiosity_ray, Real ray_end,
+                             const LeftOutFrames& left_out) const;
     // The tests a primitive's POV-Ray object gets, and its box.
     enum : uint8_t { kPovSlabTree = 1, kPovOwnBox = 2, kPovMeshTriangle = 4 };
     struct PovPrim {
@@ -355,6 +384,12 @@ Bounds3 object_world_bounds(const Object& obj);
 // plane whose normal is parallel to an axis to its surface (a slab of zero width; its
 // inside is a half-space, but rays meet it only on the surface).
 Bounds3 object_hit_bounds(const Object& obj);
+
+// Where a ray must be followed to decide whether POV-Ray's walk of its slab tree reaches
+// the object's surface, when that surface can lie outside the object's POV-Ray box (see
+// PreparedScene::closest_hit): the hull of the surface and the box; empty for every other
+// object. A black box holding the object holds every object that overlaps this.
+Bounds3 pov_walk_reach(const Object& obj);
 
 // True when no pigment of the layers (maps included) has filter or transmit.
 bool pigment_opaque(const Pigment& p);

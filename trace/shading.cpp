@@ -1659,8 +1659,8 @@ bool shadow_segment(const PreparedScene& scene, const Ray& ray, Real segment_end
         Hit hit;
         // POV-Ray restarts the shadow ray at each see-through crossing.
         ctx.restart = state.last_hit;
-        const bool met =
-            scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx);
+        const bool met = scene.closest_hit(ray, state.t_min, hi, RayUse::Shadow, hit, ctx,
+                                           false, light_distance - kShadowTolerance);
         ctx.restart = 0;
         if (!met) break;
         if (ctx.tie_tolerance > 0 && on_pattern_boundary(scene, hit, ctx.tie_tolerance))

@@ -12,9 +12,9 @@
 
 #include "parser/parser.h"
 #include "trace/camera.h"
-#include "trace/shapes/shape.h"
 #include "trace/prepared_scene.h"
 #include "trace/roots.h"
+#include "trace/shapes/shape.h"
 
 namespace povwall::trace {
 namespace {
@@ -322,6 +322,54 @@ TEST(PovBounds, ScaledUpBoxAndDiscKeepWorldTolerances) {
     ASSERT_TRUE(prepared.closest_hit(Ray{{0, -4999.9995, 0}, {0, -1, 0}}, 0, kInfinity,
                                      RayUse::Reflection, hit, ctx));
     EXPECT_NEAR(hit.t, 5e-4, 1e-9);
+}
+
+// POV-Ray's walk of its slab tree stops at the first box entered beyond the nearest hit
+// so far: a surface outside its object's box (a half-box kept by a disc's half-space,
+// whose box is the disc's) is seen only where no nearer hit is found first.
+TEST(PovBounds, WalkStopsBeforeASurfaceOutsideItsBox) {
+    parser::ParseOptions po;
+    const Scene scene = parser::parse_scene_text(
+        "light_source { <0, 10, -10> rgb 1 }\n"
+        "intersection { box { -0.9, 0.9 } disc { 0, z, 0.8 } }\n"
+        "sphere { <0, 0, 0.3>, 0.5 }\n"
+        "sphere { <5, 0, 0>, 0.5 bounded_by { box { <4.9, -0.1, -0.1>, <5.1, 0.1, 0.1> } "
+        "} }\n"
+        "sphere { <-5, 0, 0>, 0.5 }\n",
+        "walk.pov", po);
+    ASSERT_EQ(scene.objects.size(), 4u);
+    const Bounds3 half = pov_walk_reach(scene.objects[0]);
+    ASSERT_FALSE(half.empty());
+    EXPECT_NEAR(half.lo.x, -0.9, 1e-6);
+    EXPECT_NEAR(half.lo.z, -0.9, 1e-6);
+    EXPECT_NEAR(half.hi.y, 0.9, 1e-6);
+    EXPECT_TRUE(pov_walk_reach(scene.objects[1]).empty());
+    EXPECT_FALSE(pov_walk_reach(scene.objects[2]).empty());
+    EXPECT_TRUE(pov_walk_reach(scene.objects[3]).empty());
+    PreparedScene prepared(scene);
+    RayContext ctx;
+    prepared.init_context(ctx);
+    Hit hit;
+    // Through the disc's box: the sphere's box is entered first and its hit (t = 4.8)
+    // lies before the disc's box; the half-box's face in front (t = 4.1) is never tested.
+    ASSERT_TRUE(prepared.closest_hit(Ray{{0, 0, -5}, {0, 0, 1}}, 0, kInfinity,
+                                     RayUse::Camera, hit, ctx));
+    EXPECT_NEAR(hit.t, 4.8, 1e-9);
+    // Past the sphere: nothing nearer, the face is seen.
+    ASSERT_TRUE(prepared.closest_hit(Ray{{0.6, 0, -5}, {0, 0, 1}}, 0, kInfinity,
+                                     RayUse::Camera, hit, ctx));
+    EXPECT_NEAR(hit.t, 4.1, 1e-9);
+    // Outside the disc's box the intersection is not tested at all.
+    EXPECT_FALSE(prepared.closest_hit(Ray{{0.85, 0, -5}, {0, 0, 1}}, 0, kInfinity,
+                                      RayUse::Camera, hit, ctx));
+    // A ray that ends before the box is entered: not reached either.
+    EXPECT_FALSE(prepared.closest_hit(Ray{{0.6, 0, -5}, {0, 0, 1}}, 0, 4.5,
+                                      RayUse::Shadow, hit, ctx));
+    // bounded_by: the sphere's hit (t = 4.5) lies before its bound's box (t = 4.9), with
+    // nothing nearer: seen.
+    ASSERT_TRUE(prepared.closest_hit(Ray{{5, 0, -5}, {0, 0, 1}}, 0, kInfinity,
+                                     RayUse::Camera, hit, ctx));
+    EXPECT_NEAR(hit.t, 4.5, 1e-9);
 }
 
 }  // namespace
