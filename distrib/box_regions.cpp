@@ -131,12 +131,15 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
     // region, padded by a millionth of the coordinates' size (hit points computed in a
     // box stray from its region and from their objects' bounds by rounding only).
     reach_.assign(count, Bounds3{});
+    // A box holding an object whose surface can lie outside its POV-Ray box holds the
+    // objects between the two as well (walk_reaches); its reach stays its own objects'.
+    const std::vector<WalkReach> walk = walk_reaches(walls_, scene_);
     for (uint32_t i = 0; i < scene_.objects.size(); ++i) {
-        const Bounds3 hit = trace::object_hit_bounds(scene_.objects[i]);
-        for (int b : boxes_of_object(walls_, scene_.objects[i])) {
+        Bounds3 hit = trace::object_hit_bounds(scene_.objects[i]);
+        hit.extend(trace::pov_walk_reach(scene_.objects[i]));
+        for (int b : boxes_of_object(walls_, scene_.objects[i])) reach_[b].extend(hit);
+        for (int b : boxes_holding(walls_, scene_.objects[i], walk))
             if (host[b]) local[b].push_back(i);
-            reach_[b].extend(hit);
-        }
     }
     for (int b = 0; b < count; ++b) {
         Bounds3& r = reach_[b];

@@ -3,6 +3,7 @@
 // worker keeping only its part of the scene), so they all agree on where an object is.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "core/scene.h"
@@ -12,7 +13,62 @@
 namespace povwall::distrib {
 
 inline std::vector<int> boxes_of_object(const VirtualWalls& walls, const Object& object) {
-    return walls.boxes_overlapping(trace::object_world_bounds(object));
+    // A surface POV-Ray meets outside the object's box (a part kept by a disc's
+    // half-space) lies outside its world bounds too: the box holding that part holds it.
+    Bounds3 bounds = trace::object_world_bounds(object);
+    bounds.extend(trace::pov_walk_reach(object));
+    return walls.boxes_overlapping(bounds);
+}
+
+// A box holding an object whose surface can lie outside its POV-Ray box
+// (trace::pov_walk_reach), and the hull where rays must be followed to decide whether
+// POV-Ray sees it: the box holds every object that overlaps the hull as well, so its
+// PreparedScene can look past its wall (PreparedScene::closest_hit).
+struct WalkReach {
+    int box = 0;
+    Bounds3 hull;
+};
+
+inline std::vector<WalkReach> walk_reaches(const VirtualWalls& walls,
+                                           const Scene& scene) {
+    std::vector<WalkReach> reaches;
+    for (const Object& o : scene.objects) {
+        const Bounds3 hull = trace::pov_walk_reach(o);
+        if (hull.empty()) continue;
+        for (int b : boxes_of_object(walls, o)) reaches.push_back({b, hull});
+    }
+    return reaches;
+}
+
+// The boxes that hold `object`: those it overlaps, and those whose walk reaches it
+// overlaps. Ascending.
+inline std::vector<int> boxes_holding(const VirtualWalls& walls, const Object& object,
+                                      const std::vector<WalkReach>& reaches) {
+    std::vector<int> boxes = boxes_of_object(walls, object);
+    if (reaches.empty()) return boxes;
+    const Bounds3 bounds = trace::object_world_bounds(object);
+    for (const WalkReach& r : reaches)
+        if (!intersection(bounds, r.hull).empty()) boxes.push_back(r.box);
+    std::sort(boxes.begin(), boxes.end());
+    boxes.erase(std::unique(boxes.begin(), boxes.end()), boxes.end());
+    return boxes;
+}
+
+// Walk reaches on the wire: box, then the hull's lo and hi, seven numbers each.
+inline std::vector<Real> flat_walk_reaches(const std::vector<WalkReach>& reaches) {
+    std::vector<Real> flat;
+    for (const WalkReach& r : reaches)
+        flat.insert(flat.end(), {Real(r.box), r.hull.lo.x, r.hull.lo.y, r.hull.lo.z,
+                                 r.hull.hi.x, r.hull.hi.y, r.hull.hi.z});
+    return flat;
+}
+inline std::vector<WalkReach> walk_reaches_of_flat(const std::vector<Real>& flat) {
+    std::vector<WalkReach> reaches;
+    for (size_t i = 0; i + 7 <= flat.size(); i += 7)
+        reaches.push_back(
+            {int(flat[i]), Bounds3{{flat[i + 1], flat[i + 2], flat[i + 3]},
+                                   {flat[i + 4], flat[i + 5], flat[i + 6]}}});
+    return reaches;
 }
 
 }  // namespace povwall::distrib

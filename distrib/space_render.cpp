@@ -250,7 +250,7 @@ void BoxHost::process_ray(Box& entry, Item& item, int thread) {
         if (here.records.empty()) here.records.resize(kMaxHandoffDepth + 1);
         trace::ShadingRecord& rec = here.records[size_t(tl_worker.depth)];
         if (!box.scene->closest_hit(ray.trace.ray, ray.t_from, seg.t_exit, ray.trace.use,
-                                    hit, here.ctx)) {
+                                    hit, here.ctx, false, next >= 0 ? kInfinity : -1)) {
             if (next >= 0) {
                 ray.t_from = seg.t_exit;
                 if (leave(next)) continue;

@@ -109,8 +109,9 @@ class TcpCoordinator {
         } else {
             emitter_->set_walls(emitter_walls_);
             for (WorkerState& w : workers_) {
-                json frame = to_json(FrameJob{AnimationValues::of(source),
-                                              emitter_->plan(), objects_per_worker()});
+                json frame = to_json(FrameJob{
+                    AnimationValues::of(source), emitter_->plan(), objects_per_worker(),
+                    flat_walk_reaches(walk_reaches(emitter_walls_, *scene_))});
                 frame["type"] = "frame";
                 w.conn->send(control_frame(frame));
             }
@@ -281,8 +282,9 @@ class TcpCoordinator {
         const VirtualWalls& walls = emitter_walls_;
         const size_t workers = size_t(team_size_);
         std::vector<std::vector<uint32_t>> objects(workers);
+        const std::vector<WalkReach> walk = walk_reaches(walls, *scene_);
         for (size_t i = 0; i < scene_->objects.size(); ++i) {
-            for (int b : boxes_of_object(walls, scene_->objects[i])) {
+            for (int b : boxes_holding(walls, scene_->objects[i], walk)) {
                 const auto w = size_t(owner_[size_t(b)]);
                 if (w < objects.size() &&
                     (objects[w].empty() || objects[w].back() != uint32_t(i)))
@@ -381,7 +383,8 @@ class TcpCoordinator {
         }
         WorkerJob job;
         job.fixed = fixed_;
-        job.frame = {AnimationValues::of(source), emitter_->plan(), expected};
+        job.frame = {AnimationValues::of(source), emitter_->plan(), expected,
+                     flat_walk_reaches(walk_reaches(emitter_walls_, *scene_))};
         job.walls = {emitter_walls_.walls(0), emitter_walls_.walls(1),
                      emitter_walls_.walls(2)};
         job.workers = addresses;

@@ -412,7 +412,7 @@ class Worker {
         // The previous frame's boxes point into the previous scene: gone first.
         host_.reset();
         numbers_.reset();
-        // Only the objects in this worker's boxes are kept (boxes_of_object, the test
+        // Only the objects in this worker's boxes are kept (boxes_holding, the test
         // every process makes), so the worker never holds the whole scene.
         VirtualWalls walls(job_->walls);
         mine_.clear();
@@ -422,8 +422,10 @@ class Worker {
         std::vector<uint8_t> hosted(size_t(walls.box_count()), 0);
         for (int b : mine_) hosted[size_t(b)] = 1;
         popts.expected_objects = job_->frame.expected_objects.at(size_t(self_));
-        popts.keep_object = [&walls, &hosted](const Object& o) {
-            for (int b : boxes_of_object(walls, o))
+        const std::vector<WalkReach> walk =
+            walk_reaches_of_flat(job_->frame.walk_reaches);
+        popts.keep_object = [&walls, &hosted, &walk](const Object& o) {
+            for (int b : boxes_holding(walls, o, walk))
                 if (hosted[size_t(b)]) return true;
             return false;
         };

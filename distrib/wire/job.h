@@ -114,12 +114,16 @@ struct FrameJob {
     AnimationValues animation;
     trace::RenderPlan plan;
     std::vector<size_t> expected_objects;  // objects each worker keeps (a parse check)
+    // Boxes that also hold the objects around one whose surface can lie outside its
+    // POV-Ray box (flat_walk_reaches, distrib/object_boxes.h).
+    std::vector<Real> walk_reaches;
 
     template <class Self, class Visit>
     static void fields(Self& s, Visit&& v) {
         v("animation", s.animation);
         v("plan", s.plan);
         v("expected_objects", s.expected_objects);
+        v("walk_reaches", s.walk_reaches);
     }
 };
 

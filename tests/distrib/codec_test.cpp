@@ -648,6 +648,7 @@ TEST(WireJob, AWorkerJobRoundTripsByName) {
     job.frame.animation = {0.5, 0.1, 0, 1, 6, 1, 11};
     job.frame.plan.flat_threshold = 4;
     job.frame.expected_objects = {10, 20};
+    job.frame.walk_reaches = {3, -1, -2, -3, 1, 2, 3.5};
     job.walls = {std::vector<Real>{-1.5, 2}, {}, {0.25}};
     job.workers = {"127.0.0.1:1", "127.0.0.1:2"};
     job.inherited = true;
@@ -661,6 +662,7 @@ TEST(WireJob, AWorkerJobRoundTripsByName) {
     EXPECT_EQ(back.frame.animation, job.frame.animation);
     EXPECT_EQ(plan_to_json(back.frame.plan), plan_to_json(job.frame.plan));
     EXPECT_EQ(back.frame.expected_objects, job.frame.expected_objects);
+    EXPECT_EQ(back.frame.walk_reaches, job.frame.walk_reaches);
     EXPECT_EQ(back.walls, job.walls);
     EXPECT_EQ(back.workers, job.workers);
     EXPECT_EQ(back.inherited, true);
@@ -709,7 +711,7 @@ TEST(WireJob, EveryFieldOfAJobHasItsOwnName) {
     WorkerJob job;
     visit_job_fields(job,
                      [&](const char* name, const auto&) { names.emplace_back(name); });
-    EXPECT_EQ(names.size(), 33u);
+    EXPECT_EQ(names.size(), 34u);
     std::sort(names.begin(), names.end());
     EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end());
     EXPECT_EQ(std::count(names.begin(), names.end(), "type"), 0);

@@ -368,6 +368,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "image_map_once_no_colour",
                              "julia_pov_rules",
                              "sor_lathe_rim",
+                             "csg_hits_beyond_box",
                              "mesh_normal_rules",
                              "pigment_map_replaced",
                              "map_entries",
