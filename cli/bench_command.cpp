@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli/diff_report.h"
 #include "cli/options.h"
 #include "cli/povray_reference.h"
 #include "cli/process.h"
@@ -22,9 +23,6 @@
 
 namespace povwall::cli {
 
-nlohmann::json diff_json(const output::DiffResult& r);
-void print_diff(const output::DiffResult& r, const std::string& note = "");
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -32,7 +30,7 @@ using Clock = std::chrono::steady_clock;
 
 // The middle value; for an even count the lower of the two middle ones (a time that was
 // measured, not an average of two).
-double median(std::vector<double> v) {
+double measured_median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v[(v.size() - 1) / 2];
 }
@@ -133,7 +131,7 @@ int run_bench(int argc, char** argv) {
         r.status = output::DiffResult::Status::Unreadable;
         r.error = e.what();
     }
-    const double pov_median = median(pov_s), our_median = median(our_s);
+    const double pov_median = measured_median(pov_s), our_median = measured_median(our_s);
     const double speed_up = pov_median / our_median;
     if (json) {
         nlohmann::json j = diff_json(r);

@@ -17,6 +17,7 @@
 #include <sstream>
 #include <thread>
 
+#include "cli/diff_report.h"
 #include "cli/options.h"
 #include "cli/povray_reference.h"
 #include "output/diff.h"
@@ -25,9 +26,6 @@
 #include "trace/ties.h"
 
 namespace povwall::cli {
-
-nlohmann::json diff_json(const output::DiffResult& r);
-void print_diff(const output::DiffResult& r, const std::string& note = "");
 
 // The bad pixels (row-major indices) of the scene `o` renders classified by the tie
 // probe (trace/ties.h): a mask over the image holding each one's TieProbe::Kind. Throws

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "cli/diff_report.h"
 #include "cli/options.h"
 #include "output/diff.h"
 #include "output/image_io.h"

@@ -5,7 +5,7 @@
 namespace povwall {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;  // BEZIER_EPSILON
+constexpr Real kBezierEpsilon = 1e-10;  // BEZIER_EPSILON
 
 using Quad = std::array<Point3, 16>;
 
@@ -44,21 +44,22 @@ void split(const Quad& q, bool along_u, Quad& lo, Quad& hi) {
 // corners give no plane.
 Real flatness_of(const Quad& q) {
     Point3 a, b, c;
-    if (length(q[0] - q[3]) < kEpsilon) {
-        if (length(q[0] - q[15]) < kEpsilon || length(q[15] - q[12]) < kEpsilon)
+    if (length(q[0] - q[3]) < kBezierEpsilon) {
+        if (length(q[0] - q[15]) < kBezierEpsilon ||
+            length(q[15] - q[12]) < kBezierEpsilon)
             return -1;
         a = q[0];
         b = q[15];
         c = q[12];
     } else {
-        if (length(q[3] - q[12]) < kEpsilon) return -1;
+        if (length(q[3] - q[12]) < kBezierEpsilon) return -1;
         a = q[0];
         b = q[3];
         c = q[12];
     }
     const Vector3 v1 = a - b, v2 = c - b;
     Vector3 n = cross(v1, v2);
-    if (dot(n, n) <= kEpsilon * dot(v1, v1) * dot(v2, v2)) return -1;
+    if (dot(n, n) <= kBezierEpsilon * dot(v1, v1) * dot(v2, v2)) return -1;
     n = n / length(n);
     const Real d = -dot(n, a);
     Real worst = 0;
@@ -77,10 +78,10 @@ BicubicPatchData::Triangle make_triangle(const BicubicPatchData& d, const Point3
     }
     const Vector3 b0 = v[1] - v[0], b1 = v[2] - v[0];
     Vector3 n = cross(b0, b1);
-    if (dot(n, n) <= kEpsilon * dot(b0, b0) * dot(b1, b1)) return t;
+    if (dot(n, n) <= kBezierEpsilon * dot(b0, b0) * dot(b1, b1)) return t;
     n = n / length(n);
     const Real det = dot(b0, cross(b1, n));
-    if (std::fabs(det) < kEpsilon) return t;
+    if (std::fabs(det) < kBezierEpsilon) return t;
     t.e0 = cross(b1, n) / det;
     t.e1 = cross(n, b0) / det;
     t.e2 = cross(b0, b1) / det;
@@ -170,7 +171,7 @@ Vector3 patch_normal(const BicubicPatchData& d, Real u, Real v) {
         }
     }
     const Vector3 n = cross(pu, pv);
-    if (dot(n, n) > kEpsilon * dot(pu, pu) * dot(pv, pv)) return n / length(n);
+    if (dot(n, n) > kBezierEpsilon * dot(pu, pu) * dot(pv, pv)) return n / length(n);
     return {1, 0, 0};
 }
 

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/math_constants.h"
+
 namespace povwall {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;
 constexpr Real kOffset = 0.001;  // HFIELD_OFFSET: the box's margin above and below
 constexpr Real kBoundHuge = 2e10;
 
@@ -14,7 +15,7 @@ constexpr Real kBoundHuge = 2e10;
 // shorter than EPSILON becomes +y.
 Vector3 normalized_or_up(const Vector3& v) {
     const Real len = length(v);
-    return len > kEpsilon ? v * (1.0 / len) : Vector3{0, 1, 0};
+    return len > kPovEpsilon ? v * (1.0 / len) : Vector3{0, 1, 0};
 }
 
 // The unit normal (upwards) of the triangle of vertex (x0, z0) and its neighbours 1 and

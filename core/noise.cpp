@@ -10,10 +10,11 @@
 #include <cstdint>
 #include <random>
 
+#include "core/math_constants.h"
+
 namespace povwall {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;        // POV-Ray's EPSILON
 constexpr int kLatticeOffset = -10000;  // POV-Ray shifts lattice coordinates by this
 constexpr int kPerlinEntries = 2048;    // gradient table size of the generator-3 noise
 constexpr Real kRollover = 10000000.023157213;
@@ -101,7 +102,7 @@ Tables build_tables() {
 
 // Lattice cell and fractional offset of one coordinate (POV-Ray's "range fix").
 inline void lattice_axis(Real v, int& cell, Real& frac) {
-    int tmp = v >= 0 ? int(v) : int(v - (1 - kEpsilon));
+    int tmp = v >= 0 ? int(v) : int(v - (1 - kPovEpsilon));
     cell = (tmp - kLatticeOffset) & 0xFFF;
     frac = v - tmp;
 }

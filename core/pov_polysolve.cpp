@@ -133,7 +133,7 @@ bool difficult(const Real* x) {
 
 // ---- Sturm bisection on [0, 1e7]
 
-struct Poly {
+struct SturmPolynomial {
     int degree;
     Real c[kPovMaxOrder + 1];  // ascending powers
 
@@ -146,8 +146,9 @@ struct Poly {
 
 // The remainder of u divided by v, whose leading coefficient is +1 or -1; remainder
 // coefficients below 1e-10 are cleared from the top. Returns the remainder's degree.
-int remainder(const Poly& u, const Poly& v, Poly& r) {
-    r.degree = u.degree;  // only the used coefficients: a whole Poly is 37 doubles
+int remainder(const SturmPolynomial& u, const SturmPolynomial& v, SturmPolynomial& r) {
+    r.degree =
+        u.degree;  // only the used coefficients: a whole SturmPolynomial is 37 doubles
     std::copy(u.c, u.c + u.degree + 1, r.c);
     const int top = v.degree;
     if (v.c[top] < 0) {
@@ -179,13 +180,13 @@ int binary_exponent(Real x) {
 }
 
 struct SturmChain {
-    Poly s[kPovMaxOrder + 2];
+    SturmPolynomial s[kPovMaxOrder + 2];
     int last;  // index of the final (constant) element
 
     // s[0] is the monic polynomial; then its derivative scaled to a unit leading
     // coefficient, then negated remainders scaled to leading -1, down to a constant,
     // which is negated unscaled.
-    explicit SturmChain(const Poly& p) {
+    explicit SturmChain(const SturmPolynomial& p) {
         s[0].degree = p.degree;
         std::copy(p.c, p.c + p.degree + 1, s[0].c);
         const int n = p.degree;
@@ -231,7 +232,7 @@ struct SturmChain {
     Real sign_settled_above() const {
         int bound_exponent = 0;  // the bound is 2^bound_exponent, at least 1
         for (int k = 0; k <= last; ++k) {
-            const Poly& e = s[k];
+            const SturmPolynomial& e = s[k];
             const int m = e.degree;
             if (m == 0) continue;
             const Real gamma = (4.0 * m + 4) * 0x1p-53;
@@ -300,7 +301,7 @@ bool converged(Real lo, Real hi, Real x) {
 // stays above 1e-12, Horner's rounding included, no step converges and p keeps its
 // sign. A lathe's sextic, steep at 1e7, searched from [0, 1e7] fails so in a quarter of
 // its solves, at the cost of 50 evaluations each.
-bool fails_from_zero(const Poly& p, Real b, Real fa, Real fb) {
+bool fails_from_zero(const SturmPolynomial& p, Real b, Real fa, Real fb) {
     const Real A = std::fabs(fa);
     Real S = 0;
     for (int i = 1; i <= p.degree; ++i) S += std::fabs(p.c[i]);
@@ -311,7 +312,7 @@ bool fails_from_zero(const Poly& p, Real b, Real fa, Real fb) {
 }
 
 // Illinois regula falsi on [a, b] for a single root of p.
-bool regula_falsi(const Poly& p, Real a, Real b, Real& root) {
+bool regula_falsi(const SturmPolynomial& p, Real a, Real b, Real& root) {
     Real fa = p(a), fb = p(b);
     if (fa * fb > 0) return false;
     if (std::fabs(fa) < kSmallEnough) {
@@ -401,7 +402,7 @@ struct Bisection {
 };
 
 int sturm_roots(int n, const Real* c, Real* roots, Real wanted) {
-    Poly p;
+    SturmPolynomial p;
     p.degree = n;
     for (int i = 0; i <= n; ++i) p.c[n - i] = c[i] / c[0];
     const SturmChain chain(p);

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/math_constants.h"
 #include "core/quadric_bounds.h"
 
 namespace povwall {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;
 constexpr Real kHalfHuge = 1e10;  // BOUND_HUGE / 2
 constexpr Real kCriticalLength = 1e6;
 
@@ -81,7 +81,7 @@ void quadric_transform(Quadric& q, const Transform& t) {
 
 void quadric_compute_bbox(Quadric& q, const Vector3& clip_min, const Vector3& clip_max) {
     Vector3 cmin = clip_min, cmax = clip_max;
-    auto snap = [](Real x) { return std::fabs(x) < kEpsilon ? 0.0 : x; };
+    auto snap = [](Real x) { return std::fabs(x) < kPovEpsilon ? 0.0 : x; };
     Real sa = snap(q.square.x), sb = snap(q.square.y), sc = snap(q.square.z);
     const Real hxy = snap(q.mixed.x / 2), hxz = snap(q.mixed.y / 2),
                hyz = snap(q.mixed.z / 2);
@@ -236,8 +236,8 @@ void cut_by_plane(const Object& c, const Plane& plane, Vector3& lo, Vector3& hi)
     const Point3 on = c.transform.point(plane.normal * plane.distance);
     const Real d = dot(n, on);
     for (int a = 0; a < 3; ++a) {
-        if (std::fabs(n[(a + 1) % 3]) < kEpsilon &&
-            std::fabs(n[(a + 2) % 3]) < kEpsilon) {
+        if (std::fabs(n[(a + 1) % 3]) < kPovEpsilon &&
+            std::fabs(n[(a + 2) % 3]) < kPovEpsilon) {
             if (n[a] > 0)
                 hi[a] = std::min(hi[a], d);
             else

@@ -2,17 +2,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/math_constants.h"
 #include "core/pov_matrix_inverse.h"
 #include "core/pov_polysolve.h"
 #include "core/scene.h"
 
 namespace povwall {
-
-namespace {
-
-constexpr Real kEpsilon = 1e-10;
-
-}  // namespace
 
 std::string make_sor_spline(const std::vector<ProfilePoint>& p, SorSpline& out) {
     const size_t n = p.size() - 3;
@@ -20,8 +15,8 @@ std::string make_sor_spline(const std::vector<ProfilePoint>& p, SorSpline& out) 
     std::vector<Real> r1(n), r2(n), h1(n), h2(n);
     Real xmin = 2e10, xmax = -2e10, ymin = 2e10, ymax = -2e10;
     for (size_t i = 0; i < n; ++i) {
-        if (std::fabs(p[i + 2].y - p[i].y) < kEpsilon ||
-            std::fabs(p[i + 3].y - p[i + 1].y) < kEpsilon)
+        if (std::fabs(p[i + 2].y - p[i].y) < kPovEpsilon ||
+            std::fabs(p[i + 3].y - p[i + 1].y) < kPovEpsilon)
             return "Incorrect point in surface of revolution";
         // r^2 at the segment's ends, and its slopes from the central differences of r.
         Real k[4] = {p[i + 1].x * p[i + 1].x, p[i + 2].x * p[i + 2].x,
@@ -47,7 +42,7 @@ std::string make_sor_spline(const std::vector<ProfilePoint>& p, SorSpline& out) 
         for (int row = 0; row < 4; ++row) {
             coef[row] = k[0] * inv[row][0] + k[1] * inv[row][1] + k[2] * inv[row][2] +
                         k[3] * inv[row][3];
-            if (std::fabs(coef[row]) < kEpsilon) coef[row] = 0;
+            if (std::fabs(coef[row]) < kPovEpsilon) coef[row] = 0;
         }
         const SorSpline::Segment s{coef[0], coef[1], coef[2], coef[3]};
         out.segments.push_back(s);

@@ -83,12 +83,12 @@ ReadStatus read_within(int fd, void* data, size_t n, double seconds) {
     return ReadStatus::Ok;
 }
 
-struct Worker {
+struct WorkerProcess {
     pid_t pid = -1;
     int to = -1, from = -1;  // its stdin (we write), its stdout (we read)
 };
 
-Worker spawn_worker(const std::vector<std::string>& command) {
+WorkerProcess spawn_worker(const std::vector<std::string>& command) {
     int in[2], out[2];
     if (pipe2(in, O_CLOEXEC) != 0) throw ScreenError("cannot create a pipe for a worker");
     if (pipe2(out, O_CLOEXEC) != 0) {
@@ -103,7 +103,7 @@ Worker spawn_worker(const std::vector<std::string>& command) {
     std::vector<char*> argv;
     for (const auto& a : command) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    Worker w;
+    WorkerProcess w;
     int rc = posix_spawn(&w.pid, argv[0], &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     close(in[0]);
@@ -202,13 +202,13 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
     ignore.sa_handler = SIG_IGN;
     sigaction(SIGPIPE, &ignore, &previous);
 
-    std::vector<Worker> workers;
+    std::vector<WorkerProcess> workers;
     std::string error;
     try {
         for (int i = 0; i < n; ++i)
             workers.push_back(spawn_worker(options.worker_command));
         std::vector<pid_t> pids;
-        for (const Worker& w : workers) pids.push_back(w.pid);
+        for (const WorkerProcess& w : workers) pids.push_back(w.pid);
         maybe_inject_worker_fault(pids);
     } catch (const ScreenError& e) {
         error = e.what();
@@ -224,7 +224,7 @@ Image render_screen(const trace::RenderSettings& settings, const ScreenOptions& 
     local.tiles = tiles;
     local.tiles_per_worker.assign(workers.size(), 0);
     auto serve = [&](size_t wi) {
-        Worker& w = workers[wi];
+        WorkerProcess& w = workers[wi];
         std::vector<float> pixels;
         TileReply ready;
         ReadStatus st = ReadStatus::Ok;

@@ -21,7 +21,7 @@ bool part_inverted(const Object& node, bool inverted, size_t i) {
 
 // One walk over a CSG node's tree for a point: every textured leaf advances `next` (the
 // blend's material index) whether it is taken or not.
-struct Walk {
+struct BlendWalk {
     const BlobTextureBlend& blend;
     const Point3& p;
     std::vector<const Material*>& materials;
@@ -104,7 +104,7 @@ int cutaway_texture_weights(const BlobTextureBlend& b, const Point3& p, float mi
                             std::vector<float>& w) {
     materials.clear();
     w.clear();
-    Walk walk{b, p, materials, w};
+    BlendWalk walk{b, p, materials, w};
     walk.collect(*b.blob, b.blob->inverse);
     size_t kept = 0;
     for (size_t i = 0; i < w.size(); ++i) {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/math_constants.h"
 #include "trace/photon_map.h"
 
 namespace povwall::trace {
@@ -52,7 +53,6 @@ class Draws {
     uint64_t state_;
 };
 
-constexpr Real kEpsilon = 1e-10;        // POV-Ray's EPSILON
 constexpr Real kMaxDistance = 1e7;      // its MAX_DISTANCE: a spot cone's open end
 constexpr Real kSmallTolerance = 1e-3;  // its SMALL_TOLERANCE
 
@@ -79,7 +79,7 @@ bool spot_interval(const Light& l, const Point3& O, const Vector3& D, Real& d1,
     const Vector3 axis = normalize(l.point_at - l.location);
     const Vector3 V = O - l.location;
     const Real k1 = dot(D, axis), k2 = dot(V, axis), len = length(V);
-    const bool inside = len > kEpsilon && k2 / len >= cos_falloff;
+    const bool inside = len > kPovEpsilon && k2 / len >= cos_falloff;
     if (k1 <= 0 && k2 < 0) return false;
     const Real k3 = dot(V, D), k4 = dot(V, V);
     const Real a = 1 - k1 * k1 * m, b = k3 - k1 * k2 * m, c = k4 - k2 * k2 * m;
@@ -90,7 +90,7 @@ bool spot_interval(const Light& l, const Point3& O, const Vector3& D, Real& d1,
         return true;
     }
     Real d = b * b - a * c;
-    if (d > kEpsilon) {
+    if (d > kPovEpsilon) {
         d = std::sqrt(d);
         Real t1 = (-b + d) / a, t2 = (-b - d) / a;
         if (t1 > t2) std::swap(t1, t2);
@@ -116,7 +116,7 @@ bool spot_interval(const Light& l, const Point3& O, const Vector3& D, Real& d1,
         d2 = t2;
         return true;
     }
-    if (d > -kEpsilon) {  // tangent
+    if (d > -kPovEpsilon) {  // tangent
         d1 = inside ? 0 : -b / a;
         d2 = inside ? -b / a : kMaxDistance;
         return true;
@@ -137,7 +137,7 @@ bool cylinder_interval(const Light& l, const Point3& O, const Vector3& D, Real& 
     const Real k3 = dot(V, D), k4 = dot(V, V);
     const Real b = k3 - k1 * k2, c = k4 - k2 * k2 - l.falloff * l.falloff;
     Real d = b * b - a * c;
-    if (!(d > kEpsilon)) return false;
+    if (!(d > kPovEpsilon)) return false;
     d = std::sqrt(d);
     Real t1 = (-b + d) / a, t2 = (-b - d) / a;
     if (t1 > t2) std::swap(t1, t2);

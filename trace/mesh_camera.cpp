@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "core/math_constants.h"
+
 namespace povwall::trace {
 namespace {
-
-constexpr Real kEpsilon = 1e-10;  // POV-Ray's EPSILON
 
 // C's conversion of a double to unsigned int as POV-Ray's indices take it (toward zero;
 // a small negative value gives 0).
@@ -24,7 +24,7 @@ Vector3 smooth_normal(const MeshCamera::Face& f, const Point3& at) {
     if (!f.smooth) return f.normal;
     const Vector3 d = at - f.p[0];
     const Real u = dot(d, f.perp);
-    if (u < kEpsilon) return f.n[0];
+    if (u < kPovEpsilon) return f.n[0];
     auto axis = [&](const Vector3& v) {
         return f.v_axis == 0 ? v.x : f.v_axis == 1 ? v.y : v.z;
     };
@@ -126,7 +126,7 @@ std::optional<Ray> mesh_camera_ray(const MeshCamera& mc, const Camera& camera,
         dir = face->normal;
     }
     origin = origin + dir * camera.location.z;
-    if (camera.direction.z < -kEpsilon) dir = dir * -1.0;
+    if (camera.direction.z < -kPovEpsilon) dir = dir * -1.0;
     if (!mesh->transform.is_identity()) {
         origin = mesh->transform.point(origin);
         dir = mesh->transform.normal(dir);

@@ -5,13 +5,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/math_constants.h"
 #include "trace/pattern_internal.h"
 
 namespace povwall::trace {
 namespace detail {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;
 constexpr Real kCoordinateLimit = 1.0e17;
 
 TurbulenceParams turb_params(const Warp* w) {
@@ -59,12 +59,12 @@ Point3 apply_black_hole(const Warp& w, const Point3& p) {
             if (repeat[i] > 0.0) {
                 centre[i] = std::max(centre[i], w.radius);
                 repeat[i] = std::max(repeat[i], centre[i] + w.radius + w.turbulence[i]);
-                if (repeat[i] < kEpsilon) repeat[i] = 0.0;
+                if (repeat[i] < kPovEpsilon) repeat[i] = 0.0;
             }
         }
         int block[3] = {0, 0, 0};
         for (int i = 0; i < 3; ++i) {
-            if (repeat[i] >= kEpsilon) block[i] = int(std::floor(p[i] / repeat[i]));
+            if (repeat[i] >= kPovEpsilon) block[i] = int(std::floor(p[i] / repeat[i]));
         }
         if (w.turbulence != Vector3(0, 0, 0)) {
             // Per-cell jitter of the centre from the pattern random table.
@@ -154,8 +154,8 @@ Real brick(const PatternSpec& s, const Point3& p) {
     Vector3 size = s.vector2 == Vector3(0, 0, 0) ? Vector3(8.0, 3.0, 4.5) : s.vector2;
     // POV-Ray keeps `mortar` minus 2e-10 in single precision: the default 0.5 stays 0.5,
     // so a face on a joint (the mortar's far edge plus 1e-10) reads as mortar.
-    const Real mortar = float((s.scalar != 0 ? s.scalar : 0.5) - kEpsilon * 2.0);
-    Real fudge = kEpsilon + mortar;
+    const Real mortar = float((s.scalar != 0 ? s.scalar : 0.5) - kPovEpsilon * 2.0);
+    Real fudge = kPovEpsilon + mortar;
     Real x = p.x + fudge, y = p.y + fudge, z = p.z + fudge;
     auto frac = [](Real v) {
         v -= Real(int(v));  // truncation, then wrapped into [0,1)
@@ -173,8 +173,8 @@ Real brick(const PatternSpec& s, const Point3& p) {
 }
 
 Real checker(const Point3& p) {
-    int v = int(std::floor(p.x + kEpsilon) + std::floor(p.y + kEpsilon) +
-                std::floor(p.z + kEpsilon));
+    int v = int(std::floor(p.x + kPovEpsilon) + std::floor(p.y + kPovEpsilon) +
+                std::floor(p.z + kPovEpsilon));
     return (v & 1) ? 1.0 : 0.0;
 }
 
@@ -268,8 +268,8 @@ Real crackle(const PatternSpec& s, const Point3& p, int gen) {
     Real metric = s.scalar != 0 ? s.scalar : 2.0;
     Real offset = s.vector2.x;
     bool square = metric == 2, unity = metric == 1;
-    int fx = int(std::floor(p.x - kEpsilon)), fy = int(std::floor(p.y - kEpsilon)),
-        fz = int(std::floor(p.z - kEpsilon));
+    int fx = int(std::floor(p.x - kPovEpsilon)), fy = int(std::floor(p.y - kPovEpsilon)),
+        fz = int(std::floor(p.z - kPovEpsilon));
     auto distance = [&](const Vector3& d) {
         if (square) return dot(d, d);
         if (unity) return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);
@@ -369,11 +369,11 @@ Real slope_value(const PatternSpec::Slope& s, const Point3& p, const SurfaceAtHi
     auto wrap = [](Real v) {
         return v < 0.0 ? 1.0 + std::fmod(v, 1.0) : std::fmod(v, 1.0);
     };
-    if (s.altitude_share == 0) return slope == 1.0 ? slope - kEpsilon : wrap(slope);
+    if (s.altitude_share == 0) return slope == 1.0 ? slope - kPovEpsilon : wrap(slope);
     Real altitude = along(p, s.altitude_axis, s.altitude);
     if (s.altitude_range != 0) altitude = (altitude - s.altitude_low) / s.altitude_range;
     const Real value = s.share * slope + s.altitude_share * altitude;
-    return value - 1.0 < kEpsilon && value >= 1.0 ? value - kEpsilon : wrap(value);
+    return value - 1.0 < kPovEpsilon && value >= 1.0 ? value - kPovEpsilon : wrap(value);
 }
 
 // POV-Ray's aoi: the angle between the surface normal and the ray, 0..1 for 0..180
@@ -422,9 +422,9 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
             return aoi_value(env.surface);
         case PatternKind::Cells:
             return std::min(
-                pattern_random(size_t(hash3d(int(std::floor(p.x + kEpsilon)),
-                                             int(std::floor(p.y + kEpsilon)),
-                                             int(std::floor(p.z + kEpsilon))))),
+                pattern_random(size_t(hash3d(int(std::floor(p.x + kPovEpsilon)),
+                                             int(std::floor(p.y + kPovEpsilon)),
+                                             int(std::floor(p.z + kPovEpsilon))))),
                 1.0);
         case PatternKind::Dents: {
             Real n = noise(p, gen);

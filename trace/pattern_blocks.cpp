@@ -3,13 +3,11 @@
 // warps.cpp of 3.7-stable read for semantics).
 #include <cmath>
 
+#include "core/math_constants.h"
 #include "trace/pattern_internal.h"
 
 namespace povwall::trace::detail {
 namespace {
-
-constexpr Real kSqrt3 = 1.7320508075688772935;
-constexpr Real kSqrt3Half = 0.86602540378443864676;
 
 // The face of the cube around the origin that `p` looks through: 0 +x, 1 +y, 2 +z,
 // 3 -x, 4 -y, 5 -z; ties go to the first in that order.

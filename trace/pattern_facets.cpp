@@ -4,18 +4,17 @@
 // `coords`, its noise gradient perturbs the normal).
 #include <cmath>
 
+#include "core/math_constants.h"
 #include "core/noise.h"
 #include "trace/pattern_internal.h"
 
 namespace povwall::trace::detail {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;
-
 // The random point of the unit cube holding `v` (POV-Ray's PickInCube).
 Point3 point_in_cube(const Vector3& v) {
-    const Real fx = std::floor(v.x - kEpsilon), fy = std::floor(v.y - kEpsilon),
-               fz = std::floor(v.z - kEpsilon);
+    const Real fx = std::floor(v.x - kPovEpsilon), fy = std::floor(v.y - kPovEpsilon),
+               fz = std::floor(v.z - kPovEpsilon);
     const auto seed = size_t(hash3d(int(fx), int(fy), int(fz)));
     return {fx + pattern_random(seed), fy + pattern_random(seed + 1),
             fz + pattern_random(seed + 2)};

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/math_constants.h"
 #include "trace/pattern_internal.h"
 
 namespace povwall::trace::detail {
@@ -13,11 +14,9 @@ namespace {
 
 constexpr Real kSqrt2 = 1.4142135623730950488;
 constexpr Real kSqrt2Half = 0.70710678118654752440;
-constexpr Real kSqrt3 = 1.7320508075688772935;
-constexpr Real kSqrt3Half = 0.86602540378443864676;
 
 // v folded into [0, period).
-Real wrap(Real v, Real period) { return v - period * std::floor(v / period); }
+Real wrap_to_period(Real v, Real period) { return v - period * std::floor(v / period); }
 
 // 0 at the middle of a unit cell, 1 at its sides: 2 |frac(v) - 0.5|.
 Real from_middle(Real v) { return 2 * std::fabs(v - 0.5); }
@@ -31,8 +30,8 @@ Real square_tiles(Real x, Real z) {
 
 // 2: hexagons of side 1 (centres 3 apart in x, sqrt 3 in z).
 Real hexagon_tiles(Real x, Real z) {
-    x = wrap(x + 0.5, 3.0);
-    z = wrap(z, kSqrt3);
+    x = wrap_to_period(x + 0.5, 3.0);
+    z = wrap_to_period(z, kSqrt3);
     // Mirror and shift into the quarter [0, 1.5] x [0, sqrt3/2], a hexagon's centre at
     // its top right; the bottom left corner belongs to the next hexagon.
     if (z > kSqrt3Half) z = kSqrt3 - z;
@@ -73,7 +72,7 @@ Real triangle_distance(Real x, Real z, int& flipped, bool flip_on_axis) {
 // 3: equilateral triangles of side 1, pointing up (kind 0) and down (kind 1).
 Real triangle_tiles(Real x, Real z) {
     x -= std::floor(x);
-    z = wrap(z, kSqrt3);
+    z = wrap_to_period(z, kSqrt3);
     int flipped = 0;
     if (z > kSqrt3Half) {
         z = kSqrt3 - z;
@@ -103,7 +102,7 @@ Real lozenge_distance(Real x, Real z) {
 // 4: lozenges, all in one orientation.
 Real lozenge_tiles(Real x, Real z) {
     x -= std::floor(x);
-    z = wrap(z, kSqrt3);
+    z = wrap_to_period(z, kSqrt3);
     if (z > kSqrt3Half) {
         z -= kSqrt3Half;
         x += 0.5;
@@ -113,8 +112,8 @@ Real lozenge_tiles(Real x, Real z) {
 
 // 5: lozenges in three orientations (the cube-corner rhombille), one kind each.
 Real rhombus_tiles(Real x, Real z) {
-    x = wrap(x + 0.5, 3.0);
-    z = wrap(z, kSqrt3);
+    x = wrap_to_period(x + 0.5, 3.0);
+    z = wrap_to_period(z, kSqrt3);
     int kind = 0;
     if (z > kSqrt3Half) {
         z = kSqrt3 - z;
@@ -156,8 +155,8 @@ constexpr RectangleCell kRectangleCells[16] = {
     {1, 3, false}, {1, 3, false}, {2, 3, true},  {3, 4, true},   // z row 3
 };
 Real rectangle_tiles(Real x, Real z) {
-    x = wrap(x, 4.0);
-    z = wrap(z, 4.0);
+    x = wrap_to_period(x, 4.0);
+    z = wrap_to_period(z, 4.0);
     // (x or z can round up to 4 just below 0)
     const RectangleCell& c =
         kRectangleCells[std::min(int(x), 3) + std::min(int(z), 3) * 4];
@@ -178,8 +177,8 @@ Real rectangle_tiles(Real x, Real z) {
 // 7: octagons with squares between them (period 1 + sqrt 2).
 Real octagon_square_tiles(Real x, Real z) {
     constexpr Real period = kSqrt2 + 1.0;
-    z = std::fabs(wrap(z, period) - (kSqrt2Half + 0.5));
-    x = std::fabs(wrap(x, period) - (kSqrt2Half + 0.5));
+    z = std::fabs(wrap_to_period(z, period) - (kSqrt2Half + 0.5));
+    x = std::fabs(wrap_to_period(x, period) - (kSqrt2Half + 0.5));
     if (z > x) std::swap(x, z);
     if (x + z < kSqrt2Half) return (x + z) / kSqrt2;  // the square
     const Real to_side = 1.0 - z;
@@ -190,7 +189,7 @@ Real octagon_square_tiles(Real x, Real z) {
 // 8: rows of unit squares between rows of triangles (period 2 + sqrt 3 in z).
 Real square_triangle_tiles(Real x, Real z) {
     x -= std::floor(x);
-    z = wrap(z, 2.0 + kSqrt3);
+    z = wrap_to_period(z, 2.0 + kSqrt3);
     if (z > kSqrt3Half + 1.0) {  // the second half: shifted by half a tile
         z -= kSqrt3Half + 1.0;
         x += x > 0.5 ? -0.5 : 0.5;
@@ -211,8 +210,8 @@ Real square_triangle_tiles(Real x, Real z) {
 
 // 9: hexagons with two triangles each (trihexagonal), triangles the kinds 0 and 1.
 Real hexagon_triangle_tiles(Real x, Real z) {
-    x = wrap(x + 0.5, 2.0);
-    z = wrap(z, 2.0 * kSqrt3);
+    x = wrap_to_period(x + 0.5, 2.0);
+    z = wrap_to_period(z, 2.0 * kSqrt3);
     if (z > kSqrt3) {
         z -= kSqrt3;
         x += x < 1.0 ? 1.0 : -1.0;
@@ -235,7 +234,7 @@ Real hexagon_triangle_tiles(Real x, Real z) {
 
 // 10: unit squares, every other row shifted by half a square.
 Real square_offset_tiles(Real x, Real z) {
-    z = wrap(z, 2.0);
+    z = wrap_to_period(z, 2.0);
     if (z > 1.0) {
         x += 0.5;
         z -= 1.0;
@@ -272,10 +271,11 @@ Real pinwheel_value(Real x, Real z) {
     return (std::max(dx, dz) + c.kind) / 3.0;
 }
 Real square_rectangle_tiles(Real x, Real z) {
-    return pinwheel_value(wrap(x, 3.0), wrap(z, 3.0));
+    return pinwheel_value(wrap_to_period(x, 3.0), wrap_to_period(z, 3.0));
 }
 Real rectangle_square_tiles(Real x, Real z) {
-    return pinwheel_value(std::fabs(wrap(x, 6.0) - 3.0), std::fabs(wrap(z, 6.0) - 3.0));
+    return pinwheel_value(std::fabs(wrap_to_period(x, 6.0) - 3.0),
+                          std::fabs(wrap_to_period(z, 6.0) - 3.0));
 }
 
 // 13 and 14: squares of side sqrt2/2 (in a sqrt2-scaled 4x4 block folded into its
@@ -283,8 +283,8 @@ Real rectangle_square_tiles(Real x, Real z) {
 // quarter (cell 0 the square). 14 also tells the four quarters' pieces apart (five
 // kinds).
 Real square_internal_tiles(Real x, Real z, bool five_kinds) {
-    x = wrap(x * kSqrt2, 4.0) - 2.0;
-    z = wrap(z * kSqrt2, 4.0) - 2.0;
+    x = wrap_to_period(x * kSqrt2, 4.0) - 2.0;
+    z = wrap_to_period(z * kSqrt2, 4.0) - 2.0;
     const int mirror_x = x < 0 ? 1 : 0, mirror_z = z < 0 ? 2 : 3;
     x = std::fabs(x);
     z = std::fabs(z);
@@ -348,8 +348,8 @@ constexpr DoubleSquareCell kDoubleSquareCells[25] = {
     {0, 4, true},  {2, 5, true},  {2, 5, true},  {3, 4, false}, {5, 4, true},
 };
 Real square_double_tiles(Real x, Real z) {
-    x = wrap(x, 5.0);
-    z = wrap(z, 5.0);
+    x = wrap_to_period(x, 5.0);
+    z = wrap_to_period(z, 5.0);
     const int cell = int(x) + int(z) * 5;
     DoubleSquareCell c{0, 0, true};
     if (cell < 25) c = kDoubleSquareCells[cell];
@@ -371,8 +371,8 @@ Real square_double_tiles(Real x, Real z) {
 // apart). The point is folded into the quarter cell [0, 1 + sqrt3/2]^2, the hexagon's
 // centre at its top right, with the folds counted for 17.
 Real hexagon_square_triangle_tiles(Real x, Real z, bool six_kinds) {
-    x = wrap(x + 0.5, 3.0 + kSqrt3);
-    z = wrap(z, 2.0 * (1.0 + kSqrt3));
+    x = wrap_to_period(x + 0.5, 3.0 + kSqrt3);
+    z = wrap_to_period(z, 2.0 * (1.0 + kSqrt3));
     int mirror_x = 0, mirror_z = 0, turned = 0;
     if (x > kSqrt3Half + 1.5) {
         x -= kSqrt3Half + 1.5;
@@ -435,8 +435,8 @@ constexpr RectangleCell kRectanglePairCells[16] = {
     {1, 3, false}, {1, 3, false}, {2, 3, true},  {3, 3, true},   // z row 3
 };
 Real rectangle_pair_tiles(Real x, Real z) {
-    x = wrap(x, 4.0);
-    z = wrap(z, 4.0);
+    x = wrap_to_period(x, 4.0);
+    z = wrap_to_period(z, 4.0);
     const RectangleCell& c =
         kRectanglePairCells[std::min(int(x), 3) + std::min(int(z), 3) * 4];
     x -= c.dx;
@@ -464,8 +464,8 @@ Real hexagon_triangle_snub_tiles(Real x, Real z, bool right_handed) {
     int rows = half_rows(z) / 3;
     if (z < 0) rows -= 1;
     x += right_handed ? rows / 2.0 : -(rows / 2.0);
-    z = wrap(z, 3 * kSqrt3Half);
-    x = wrap(x + 7.0, 7.0);
+    z = wrap_to_period(z, 3 * kSqrt3Half);
+    x = wrap_to_period(x + 7.0, 7.0);
     if (right_handed) {
         if (x > 4.5 && z > kSqrt3) {
             x -= 4.5;
@@ -502,7 +502,7 @@ Real hexagon_triangle_snub_tiles(Real x, Real z, bool right_handed) {
     }
     if (row == 0 || x > 2.0 || z + kSqrt3 * x < kSqrt3 || kSqrt3 * x - z > kSqrt3) {
         x -= std::floor(x);
-        z = wrap(z, kSqrt3);
+        z = wrap_to_period(z, kSqrt3);
         if (z > kSqrt3Half) {
             z = kSqrt3 - z;
             flipped = 1 - flipped;
@@ -523,8 +523,8 @@ Real hexagon_triangle_snub_tiles(Real x, Real z, bool right_handed) {
 // turned or mirrored onto one triangle and one square.
 Real square_triangle_snub_tiles(Real x, Real z) {
     constexpr Real period = 1.0 + kSqrt3;
-    x = wrap(x, period);
-    z = wrap(z, period);
+    x = wrap_to_period(x, period);
+    z = wrap_to_period(z, period);
     int mirrored = 0, kind = 0, mirrored_x = 0;
     if (z > 0.5 + kSqrt3Half) {
         z = 1.0 + kSqrt3 - z;
@@ -578,8 +578,8 @@ Real square_triangle_snub_tiles(Real x, Real z) {
 // 22: dodecagons with triangles between them (truncated hexagonal): the triangles are the
 // kinds 0 and 1, the dodecagons 2.
 Real dodecagon_triangle_tiles(Real x, Real z) {
-    x = wrap(x, 2.0 + kSqrt3);
-    z = wrap(z, 3.0 + 2.0 * kSqrt3);
+    x = wrap_to_period(x, 2.0 + kSqrt3);
+    z = wrap_to_period(z, 3.0 + 2.0 * kSqrt3);
     int toggled = 0;
     if (z > kSqrt3 + 1.5) {
         z -= kSqrt3 + 1.5;

@@ -8,16 +8,14 @@
 #include <queue>
 #include <unordered_set>
 
+#include "core/math_constants.h"
 #include "trace/media.h"
+#include "trace/pov_bounds.h"
 #include "trace/prepared_scene.h"
 #include "trace/shading.h"
 
 namespace povwall::trace {
 namespace {
-
-constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON in the photon code
-// POV-Ray's box of an unbounded object: corner -BOUND_HUGE/2, lengths BOUND_HUGE.
-constexpr double kBoundHuge = 2e10;
 
 // Our random numbers: a hash of what the number is for, so that the map depends only on
 // the scene (splitmix64's finaliser over the combined key).
@@ -244,7 +242,7 @@ void Shooter::shoot(const Light& light, size_t light_index, const Target& target
     }
     // The light's direction (POV-Ray's Direction: unit unless point_at is the location).
     Vector3 axis = light.point_at - light.location;
-    if (const double len = length(axis); len > kEpsilon) axis = axis * (1 / len);
+    if (const double len = length(axis); len > kPovEpsilon) axis = axis * (1 / len);
     Aim aim = aim_at(light.location, ctr, parallel_ ? &axis : nullptr);
     // A parallel light's photons start on the disc about the target's centre seen along
     // the light, in the plane through the light's location.
@@ -263,7 +261,7 @@ void Shooter::shoot(const Light& light, size_t light_index, const Target& target
         maxtheta = std::asin(rad / aim.dist);
     } else {
         maxtheta = kPi;
-        if (std::fabs(aim.dist) < kEpsilon) {
+        if (std::fabs(aim.dist) < kPovEpsilon) {
             aim.left = {0, 1, 0};
             aim.toctr = {0, 0, 1};
         }
@@ -281,9 +279,9 @@ void Shooter::shoot(const Light& light, size_t light_index, const Target& target
     uint64_t ring = 0;
     for (double theta = 0; theta < maxtheta; theta += dtheta, ++ring) {
         hit_target_ = false;
-        const double dphi = theta < kEpsilon ? 2 * kPi
-                            : parallel_      ? dtheta / theta
-                                             : dtheta / std::sin(theta);
+        const double dphi = theta < kPovEpsilon ? 2 * kPi
+                            : parallel_         ? dtheta / theta
+                                                : dtheta / std::sin(theta);
         const uint64_t key = (uint64_t(light_index) << 32) | uint64_t(target_index);
         const double minphi = -kPi + dphi * hashed_unit(key, ring, ~0ull, 0) * 0.5;
         const double maxphi = kPi - dphi / 2 + (minphi + kPi);
@@ -311,7 +309,7 @@ void Shooter::shoot(const Light& light, size_t light_index, const Target& target
                                 origin +=
                                     area->axis2 * (double(v) / (samples2 - 1) - 0.5);
                             from = aim_at(origin, ctr, nullptr);
-                            if (std::fabs(from.dist) < kEpsilon) {
+                            if (std::fabs(from.dist) < kPovEpsilon) {
                                 from.left = {0, 1, 0};
                                 from.toctr = {0, 0, 1};
                             }
@@ -428,7 +426,7 @@ void Shooter::deposit(std::vector<Photon>& into, const Point3& at, const Point3&
                       const Rgb& colour, double depth) {
     const Light& l = *light_;
     double attenuation = 1;
-    if (l.fade_power > 0 && std::fabs(l.fade_distance) > kEpsilon)
+    if (l.fade_power > 0 && std::fabs(l.fade_distance) > kPovEpsilon)
         attenuation = 2 / (1 + std::pow(depth / l.fade_distance, l.fade_power));
     // A parallel light's photons do not spread out with distance.
     const double spread = parallel_ ? 1 : depth * depth;

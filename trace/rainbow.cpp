@@ -5,27 +5,19 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/hash_fold.h"
+#include "core/math_constants.h"
+
 namespace povwall::trace {
 namespace {
-
-constexpr Real kEpsilon = 1e-10;  // POV-Ray's EPSILON
-
-uint64_t mix(uint64_t x) {
-    x ^= x >> 30;
-    x *= 0xBF58476D1CE4E5B9ull;
-    x ^= x >> 27;
-    x *= 0x94D049BB133111EBull;
-    x ^= x >> 31;
-    return x;
-}
 
 // A uniform number in [0, 1) for rainbow `k` on `ray`.
 Real draw(const Ray& ray, size_t k) {
     const double v[6] = {ray.origin.x,    ray.origin.y,    ray.origin.z,
                          ray.direction.x, ray.direction.y, ray.direction.z};
     uint64_t h = 0x7261696e626f7721ull;
-    for (double d : v) h = mix(h ^ std::bit_cast<uint64_t>(d));
-    h = mix(h ^ mix(k + 1));
+    for (double d : v) h = splitmix_finish(h ^ std::bit_cast<uint64_t>(d));
+    h = splitmix_finish(h ^ splitmix_finish(k + 1));
     return Real(h >> 11) * (1.0 / 9007199254740992.0);
 }
 
@@ -52,7 +44,7 @@ RainbowEffect rainbow_effect(const Scene& scene, const Ray& ray, Real depth,
         if (!(along >= 0)) continue;
         Real index = (std::acos(along) - r.angle) / r.width;
         if (r.jitter > 0) index += (2 * draw(ray, i) - 1) * r.jitter;
-        if (!(index >= 0 && index <= 1 - kEpsilon)) continue;
+        if (!(index >= 0 && index <= 1 - kPovEpsilon)) continue;
         const Colour c = evaluate_pigment(*r.pigment, Point3{index, 0, 0}, env);
         Real fade = 0;
         if (r.falloff_width > 0 && angle > r.falloff_angle) {

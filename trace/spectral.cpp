@@ -7,9 +7,9 @@
 namespace povwall::trace {
 namespace {
 
-constexpr double kViolet = 380, kRed = 730;
-constexpr double kBandwidth = kRed - kViolet;
-constexpr double kCentre = (kViolet + kRed) / 2;
+constexpr double kVioletWavelength = 380, kRedWavelength = 730;
+constexpr double kBandwidth = kRedWavelength - kVioletWavelength;
+constexpr double kCentre = (kVioletWavelength + kRedWavelength) / 2;
 
 // The hue curve of POV-Ray before 3.7 (an RGB fit to colour-matching functions, `hc`
 // running from 0.03 at the violet end to 0.964 at the red end), over 372.5-737.5 nm.
@@ -65,7 +65,7 @@ const HueIntegral& hue_integral() {
 }  // namespace
 
 SpectralBand::SpectralBand(int index, int count)
-    : wavelength(float(kViolet + kBandwidth * ((index + 0.5) / count))),
+    : wavelength(float(kVioletWavelength + kBandwidth * ((index + 0.5) / count))),
       bandwidth(float(kBandwidth / float(count))) {}
 
 double SpectralBand::ior(double ior, double dispersion) const {

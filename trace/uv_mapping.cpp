@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/math_constants.h"
 #include "trace/pattern_internal.h"
 #include "trace/shapes/common.h"
 #include "trace/shapes/sor.h"
@@ -12,12 +13,10 @@
 namespace povwall::trace {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;  // POV-Ray's EPSILON
-
 // The turn from +x towards +z of (x, z) as a fraction in [0, 1); 0 on the y axis.
 Real turn_about_y(Real x, Real z) {
     const Real len2 = x * x + z * z;
-    if (!(len2 > kEpsilon)) return 0;
+    if (!(len2 > kPovEpsilon)) return 0;
     Real theta;
     if (z == 0.0) {
         theta = x > 0 ? 0.0 : kPi;

@@ -17,17 +17,13 @@
 namespace {
 
 namespace fs = std::filesystem;
+using povwall_test::RunResult;
 using povwall_test::slurp;
 
 fs::path work_dir() {
     return fs::temp_directory_path() /
            ("povwall-corpus-test-" + std::to_string(getpid()));
 }
-
-struct RunResult {
-    int code = -1;
-    std::string out, err;
-};
 
 RunResult run_shell(const std::string& command, const std::string& tag) {
     const fs::path out = work_dir() / (tag + ".out"), err = work_dir() / (tag + ".err");

@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "parser/density_files.h"
-#include "tests/parser/shape_parse_helpers.h"
+#include "tests/parser/parse_helpers.h"
 
 namespace povwall::parser {
 namespace {

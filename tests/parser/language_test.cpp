@@ -12,29 +12,16 @@
 
 #include "parser/parser.h"
 #include "parser/source.h"
+#include "tests/parser/parse_helpers.h"
 
 namespace povwall::parser {
 namespace {
 
-Scene parse(const std::string& text, std::string* debug = nullptr) {
-    std::ostringstream messages;
-    ParseOptions o;
-    o.messages = &messages;
-    Scene s = parse_scene_text(text, "test.pov", o);
-    if (debug) *debug = messages.str();
-    return s;
-}
+using test::error_of;
+using test::full_error_of;
+using test::parse;
 
-std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const ParseError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
-
-void expect_vec(const Vector3& v, double x, double y, double z) {
+void expect_vec_near(const Vector3& v, double x, double y, double z) {
     EXPECT_NEAR(v.x, x, 1e-9);
     EXPECT_NEAR(v.y, y, 1e-9);
     EXPECT_NEAR(v.z, z, 1e-9);
@@ -48,18 +35,18 @@ TEST(Syntax, CommasAreOptionalAndTrailingCommasAccepted) {
         "sphere { 0, 1 pigment { color rgb <0.2, 0.1, 0.5,> } }\n");
     ASSERT_EQ(s.objects.size(), 4u);
     const Box& b = std::get<Box>(s.objects[0].shape);
-    expect_vec(b.corner1, -0.5, 0, -0.5);
-    expect_vec(b.corner2, 0.5, 10, 0.5);
+    expect_vec_near(b.corner1, -0.5, 0, -0.5);
+    expect_vec_near(b.corner2, 0.5, 10, 0.5);
     const Sphere& sp = std::get<Sphere>(s.objects[1].shape);
-    expect_vec(sp.centre, -1, 0, 0);
+    expect_vec_near(sp.centre, -1, 0, 0);
     EXPECT_EQ(sp.radius, 2);
     // A cylinder is the unit cylinder in POV-Ray's frame: from its second point (z = 0)
     // to its first (z = 1), radius 1 scaled to its own.
     const Cylinder& c = std::get<Cylinder>(s.objects[2].shape);
     EXPECT_EQ(c.radius, 1);
     const CompactTransform& frame = s.objects[2].transform;
-    expect_vec(frame.point({0, 0, 0}), 0, 1, 0);
-    expect_vec(frame.point({0, 0, 1}), 0, 0, 0);
+    expect_vec_near(frame.point({0, 0, 0}), 0, 1, 0);
+    expect_vec_near(frame.point({0, 0, 1}), 0, 0, 0);
     EXPECT_NEAR(length(frame.point({1, 0, 0}) - frame.point({0, 0, 0})), 0.5, 1e-12);
     EXPECT_FLOAT_EQ(s.objects[3].texture[0].pigment.colour.rgb.b, 0.5f);
 }
@@ -82,7 +69,7 @@ TEST(Identifiers, ArrayElementsStandWhereIdentifiersDo) {
     ASSERT_EQ(s.objects.size(), 1u);
     EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).radius, 3);
     EXPECT_FLOAT_EQ(s.objects[0].texture[0].pigment.colour.rgb.b, 1.0f);
-    EXPECT_EQ(error_of("#declare A = array[3]\n#declare B = A[1] + 1;"),
+    EXPECT_EQ(full_error_of("#declare A = array[3]\n#declare B = A[1] + 1;"),
               "test.pov:2:14: error: array element 'A[1]' used before it was set\n"
               "#declare B = A[1] + 1;\n"
               "             ^~~~");
@@ -191,22 +178,22 @@ TEST(Camera, LookAtKeepsLengthsAndHandedness) {
     Scene s =
         parse("camera { location <0, 0, -5> right x*4/3 angle 60 look_at <0, 0, 0> }");
     double d = (4.0 / 3.0) / std::tan(kPi / 6) / 2;
-    expect_vec(s.camera.direction, 0, 0, d);
-    expect_vec(s.camera.right, 4.0 / 3.0, 0, 0);
-    expect_vec(s.camera.up, 0, 1, 0);
+    expect_vec_near(s.camera.direction, 0, 0, d);
+    expect_vec_near(s.camera.right, 4.0 / 3.0, 0, 0);
+    expect_vec_near(s.camera.up, 0, 1, 0);
     // A left-handed frame (right -x) flips right only; up stays direction x right.
     Scene l = parse("camera { location <0, 0, -5> right -x up y look_at <5, 0, -5> }");
-    expect_vec(l.camera.direction, 1, 0, 0);
-    expect_vec(l.camera.right, 0, 0, 1);
-    expect_vec(l.camera.up, 0, 1, 0);
+    expect_vec_near(l.camera.direction, 1, 0, 0);
+    expect_vec_near(l.camera.right, 0, 0, 1);
+    expect_vec_near(l.camera.up, 0, 1, 0);
     // Items apply in POV-Ray's fixed order: look_at before angle in the file changes
     // nothing.
     Scene o = parse("camera { look_at <0, 0, 0> angle 90 location <0, 0, -5> }");
-    expect_vec(o.camera.direction, 0, 0, 1.33 / 2);
+    expect_vec_near(o.camera.direction, 0, 0, 1.33 / 2);
     // Sky tilts right and up.
     Scene k = parse("camera { location <0, 0, -1> sky x look_at 0 }");
-    expect_vec(k.camera.right, 0, -1.33, 0);
-    expect_vec(k.camera.up, 1, 0, 0);
+    expect_vec_near(k.camera.right, 0, -1.33, 0);
+    expect_vec_near(k.camera.up, 1, 0, 0);
 }
 
 TEST(Includes, SearchOrderAndLocationsInsideIncludes) {
@@ -456,32 +443,32 @@ sphere { 0, R }
 // scene that uses it (functions.inc declares all of them).
 TEST(Functions, LocatedErrorsAndTolerance) {
     auto first_line = [](const std::string& text) {
-        const std::string e = error_of(text);
+        const std::string e = full_error_of(text);
         return e.substr(0, e.find('\n'));
     };
-    EXPECT_EQ(first_line("#declare F = function(a) { a }\n#declare B = F(1, 2);"),
+    EXPECT_EQ(error_of("#declare F = function(a) { a }\n#declare B = F(1, 2);"),
               "test.pov:2:17: error: expected ')' after the 1 argument of 'F' but found "
               "','");
-    EXPECT_EQ(first_line("#declare F = function(a, b) { a }\n#declare B = F(1);"),
+    EXPECT_EQ(error_of("#declare F = function(a, b) { a }\n#declare B = F(1);"),
               "test.pov:2:14: error: 'F' takes 2 arguments, not 1");
-    EXPECT_EQ(first_line("#declare P = function { pigment { rgb 1 } }\n"
-                         "#declare G = function { P(x, y, z) + 1 }"),
+    EXPECT_EQ(error_of("#declare P = function { pigment { rgb 1 } }\n"
+                       "#declare G = function { P(x, y, z) + 1 }"),
               "test.pov:2:25: error: 'P' returns a vector: follow the call with a "
               "component, such as .x");
-    EXPECT_EQ(first_line("#declare G = function { foo + 1 }"),
+    EXPECT_EQ(error_of("#declare G = function { foo + 1 }"),
               "test.pov:1:25: error: 'foo' is not a parameter, float or function here");
-    EXPECT_EQ(first_line("#declare V = <1, 2, 3>;\n#declare G = function { V * x }"),
+    EXPECT_EQ(error_of("#declare V = <1, 2, 3>;\n#declare G = function { V * x }"),
               "test.pov:2:25: error: a function works on floats: 'V' is a vector");
-    EXPECT_EQ(first_line("#declare G = function { min(x) }"),
+    EXPECT_EQ(error_of("#declare G = function { min(x) }"),
               "test.pov:1:25: error: 'min' takes two or more arguments");
     std::string deep = "#declare G = function { ";
     for (int i = 0; i < 150; ++i) deep += "1 + (";
     deep += "x" + std::string(150, ')') + " }";
-    EXPECT_EQ(first_line(deep).substr(0, 45),
+    EXPECT_EQ(error_of(deep).substr(0, 45),
               "test.pov:1:667: error: function too deeply ne");
     // Runaway loops and call chains are located errors, not hangs or stack overflows.
-    EXPECT_EQ(first_line("#declare F = function { sum(i, 0, 1e18, i) }\n"
-                         "#declare A = F(0, 0, 0);"),
+    EXPECT_EQ(error_of("#declare F = function { sum(i, 0, 1e18, i) }\n"
+                       "#declare A = F(0, 0, 0);"),
               "test.pov:2:14: error: sum/prod in 'F' ran more than 10000000 iterations "
               "(--max-loop-iterations)");
     std::string chain = "#declare F0 = function { x }\n";
@@ -489,13 +476,13 @@ TEST(Functions, LocatedErrorsAndTolerance) {
         chain += "#declare F" + std::to_string(i) + " = function { F" +
                  std::to_string(i - 1) + "(x, y, z) + 1 }\n";
     EXPECT_EQ(
-        first_line(chain),
+        error_of(chain),
         "test.pov:1001:43: error: functions call each other too deeply (limit 1000)");
     // POV-Ray 3.7 has internal(0) ... internal(78); another number is an error where it
     // is declared, with POV-Ray's message.
-    EXPECT_EQ(first_line("#declare F = function { internal(78) }\nsphere { 0, 1 }"),
+    EXPECT_EQ(error_of("#declare F = function { internal(78) }\nsphere { 0, 1 }"),
               "(no error)");
-    EXPECT_EQ(first_line("#declare F = function { internal(79) }\nsphere { 0, 1 }"),
+    EXPECT_EQ(error_of("#declare F = function { internal(79) }\nsphere { 0, 1 }"),
               "test.pov:1:34: error: Function 'internal(79)' does not exist.");
     // A scene including functions.inc and math.inc parses, and their functions work.
     std::string out;
@@ -532,13 +519,13 @@ TEST(Lexer, StringsSpanLinesAsInPovRay) {
     parse("#declare S = concat(\"one\n two\");\n#debug S\n#debug str(strlen(S), 0, 0)",
           &out);
     EXPECT_EQ(out, "one\n two8");
-    EXPECT_EQ(error_of("#declare S = \"one\n two\";\n#declare T = Q;").substr(0, 35),
+    EXPECT_EQ(full_error_of("#declare S = \"one\n two\";\n#declare T = Q;").substr(0, 35),
               "test.pov:3:14: error: undeclared id");
     // A backslash right before the break, or no closing quote, is an error.
-    EXPECT_EQ(error_of("#declare S = \"one\\\n two\";").substr(0, 76),
+    EXPECT_EQ(full_error_of("#declare S = \"one\\\n two\";").substr(0, 76),
               "test.pov:1:18: error: unterminated string literal (a backslash before a "
               "line");
-    EXPECT_EQ(error_of("#declare S = \"one\n two;").substr(0, 42),
+    EXPECT_EQ(full_error_of("#declare S = \"one\n two;").substr(0, 42),
               "test.pov:1:14: error: unterminated string\n");
 }
 
@@ -546,11 +533,11 @@ TEST(Lexer, StringsSpanLinesAsInPovRay) {
 // `<1,0,0,0.0.95>`); a point after an integer or a whole number is still a decimal point.
 TEST(Lexer, ASecondPointInANumberIsAnError) {
     EXPECT_EQ(
-        error_of("#declare C = <1, 0, 0, 0.0.95>;").substr(0, 73),
+        full_error_of("#declare C = <1, 0, 0, 0.0.95>;").substr(0, 73),
         "test.pov:1:27: error: unexpected additional '.' in floating-point number\n");
-    EXPECT_EQ(error_of("#declare X = 1e5.2;").substr(0, 32),
+    EXPECT_EQ(full_error_of("#declare X = 1e5.2;").substr(0, 32),
               "test.pov:1:17: error: unexpected");
-    EXPECT_EQ(error_of("#declare X = 12..5;").substr(0, 32),
+    EXPECT_EQ(full_error_of("#declare X = 12..5;").substr(0, 32),
               "test.pov:1:17: error: unexpected");
     std::string out;
     parse("#declare X = 12.; #declare Y = .5; #debug str(X + Y, 0, 1)", &out);
@@ -599,8 +586,6 @@ TEST(Lexer, NumbersReadExactlyAsFromChars) {
     }
 }
 
-std::string first_line(const std::string& text);
-
 TEST(Textures, WarpsAndClassicTurbulence) {
     Scene s = parse(
         "sphere { 0, 1 pigment { marble turbulence 0.5 octaves 3\n"
@@ -613,14 +598,14 @@ TEST(Textures, WarpsAndClassicTurbulence) {
     EXPECT_TRUE(w[0].classic);
     EXPECT_EQ(w[0].octaves, 3);
     EXPECT_FALSE(w[1].classic);
-    expect_vec(w[1].turbulence, 1, 2, 3);
+    expect_vec_near(w[1].turbulence, 1, 2, 3);
     EXPECT_EQ(w[2].kind, Warp::Kind::BlackHole);
-    expect_vec(w[2].centre, 1, 0, 0);
+    expect_vec_near(w[2].centre, 1, 0, 0);
     EXPECT_EQ(w[2].radius, 0.5);
     EXPECT_EQ(w[2].strength, 2);
     EXPECT_TRUE(w[2].inverse);
     EXPECT_EQ(w[3].kind, Warp::Kind::Planar);
-    expect_vec(w[3].orientation, 0, 0, 1);
+    expect_vec_near(w[3].orientation, 0, 0, 1);
     EXPECT_EQ(w[3].plane_offset, 0.25);
     EXPECT_EQ(w[4].kind, Warp::Kind::Toroidal);
     EXPECT_EQ(w[4].major_radius, 2);
@@ -637,47 +622,42 @@ TEST(Mesh2, PlainAndComputedVectorsAgree) {
         "  face_indices { 2, <0, 1, 2>, 1, <1, 2, 3> 0, } }\n");
     const Mesh& m = std::get<Mesh>(s.objects.at(0).shape);
     ASSERT_EQ(m.vertices.size(), 4u);
-    expect_vec(m.vertices[1], 1, -2.5, 0);
-    expect_vec(m.vertices[2], 0, 2, 0);
-    expect_vec(m.vertices[3], 0.5, 0.5, -0.5);
+    expect_vec_near(m.vertices[1], 1, -2.5, 0);
+    expect_vec_near(m.vertices[2], 0, 2, 0);
+    expect_vec_near(m.vertices[3], 0.5, 0.5, -0.5);
     ASSERT_EQ(m.faces.size(), 2u);
     EXPECT_EQ(m.faces[0].v[2], 2u);
     EXPECT_EQ(m.faces[0].texture, 1);
     EXPECT_EQ(m.faces[1].v[0], 1u);
     EXPECT_EQ(m.faces[1].texture, 0);
     EXPECT_EQ(
-        first_line(
+        error_of(
             "mesh2 { vertex_vectors { 1, <0, 0, 0> } face_indices { 1, <0, 0, 5> } }"),
         "test.pov:1:59: error: mesh2 face index out of range");
 }
 
-std::string first_line(const std::string& text) {
-    std::string e = error_of(text);
-    return e.substr(0, e.find('\n'));
-}
-
 TEST(BadInput, LocatedErrorsInsteadOfCrashesOrHangs) {
-    EXPECT_EQ(first_line("sphere { 0, 1 pigment { rgb <1, 0"),
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { rgb <1, 0"),
               "test.pov:1:34: error: expected '>' to close the vector but found end of "
               "file");
     EXPECT_EQ(
-        first_line("union { sphere { 0, 1 }\n"),
+        error_of("union { sphere { 0, 1 }\n"),
         "test.pov:2:1: error: expected an object modifier or '}' but found end of file");
-    EXPECT_EQ(first_line("#macro M() M() #end\nM()\n"),
+    EXPECT_EQ(error_of("#macro M() M() #end\nM()\n"),
               "test.pov:1:12: error: macro 'M' nested too deeply (limit 1000): runaway "
               "recursion?");
-    EXPECT_EQ(first_line("mesh2 { vertex_vectors { 1e12, <0, 0, 0> } }"),
+    EXPECT_EQ(error_of("mesh2 { vertex_vectors { 1e12, <0, 0, 0> } }"),
               "test.pov:1:26: error: list length 1000000000000.000000 out of range");
     // Counts within range that the file cannot hold: the lists reserve only what the
     // tokens left could fill (900,000,000 vertices would be 21.6 GB).
-    EXPECT_EQ(first_line("mesh2 { vertex_vectors { 900000000, <0, 0, 0> } }"),
+    EXPECT_EQ(error_of("mesh2 { vertex_vectors { 900000000, <0, 0, 0> } }"),
               "test.pov:1:47: error: expected an expression but found '}'");
-    EXPECT_EQ(first_line("mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } "
-                         "face_indices { 900000000, <0, 1, 2> } }"),
+    EXPECT_EQ(error_of("mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } "
+                       "face_indices { 900000000, <0, 1, 2> } }"),
               "test.pov:1:93: error: expected an expression but found '}'");
-    EXPECT_EQ(first_line("#declare A = array[100000][100000][1000];"),
+    EXPECT_EQ(error_of("#declare A = array[100000][100000][1000];"),
               "test.pov:1:28: error: array too large");
-    EXPECT_EQ(first_line("#for (I, 0, 1, 1e-9) #end"),
+    EXPECT_EQ(error_of("#for (I, 0, 1, 1e-9) #end"),
               "test.pov:1:1: error: #for loop ran 10000000 times: runaway loop? "
               "(--max-loop-iterations)");
 }

@@ -3,7 +3,7 @@
 // (nesting, copies, groups without lights or objects), and the refusals.
 #include <gtest/gtest.h>
 
-#include "tests/parser/shape_parse_helpers.h"
+#include "tests/parser/parse_helpers.h"
 
 namespace povwall::parser {
 namespace {

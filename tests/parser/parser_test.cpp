@@ -4,26 +4,14 @@
 
 #include <sstream>
 
+#include "tests/parser/parse_helpers.h"
+
 namespace povwall::parser {
 namespace {
 
-Scene parse(const std::string& text, std::string* debug = nullptr) {
-    std::ostringstream messages;
-    ParseOptions o;
-    o.messages = &messages;
-    Scene s = parse_scene_text(text, "test.pov", o);
-    if (debug) *debug = messages.str();
-    return s;
-}
-
-std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const ParseError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
+using test::error_of;
+using test::full_error_of;
+using test::parse;
 
 TEST(Random, MatchesPovRay37Sequence) {
     // Reference values printed by POV-Ray 3.7.0.10 for the same #debug lines
@@ -48,7 +36,7 @@ TEST(Random, MatchesPovRay37Sequence) {
 }
 
 TEST(Random, IllegalStreamIsLocatedError) {
-    EXPECT_EQ(error_of("#declare A = rand(3);"),
+    EXPECT_EQ(full_error_of("#declare A = rand(3);"),
               "test.pov:1:19: error: illegal random number generator\n"
               "#declare A = rand(3);\n"
               "                  ^");
@@ -181,7 +169,7 @@ TEST(Camera, ProjectionKindsKeepTheirAngleAndCylinderNeedsATypeFrom1To4) {
     EXPECT_EQ(parse("camera { cylinder 1 }").camera.kind, Camera::Kind::Cylinder1);
     EXPECT_EQ(parse("camera { cylinder 4 angle 30 }").camera.kind,
               Camera::Kind::Cylinder4);
-    EXPECT_EQ(error_of("camera { cylinder 5 angle 90 }"),
+    EXPECT_EQ(full_error_of("camera { cylinder 5 angle 90 }"),
               "test.pov:1:19: error: cylinder camera type must be 1, 2, 3 or 4\n"
               "camera { cylinder 5 angle 90 }\n"
               "                  ^");
@@ -222,7 +210,7 @@ TEST(Camera, BlurSamplesAndTheFocalDistanceAsPovRayReadsThem) {
     EXPECT_NEAR(parse("camera { location <0, 0, -1> focal_point <0, 3, 3> translate x }")
                     .camera.focal_distance,
                 5, 1e-12);
-    EXPECT_EQ(error_of("camera { blur_samples 10, 5 }"),
+    EXPECT_EQ(full_error_of("camera { blur_samples 10, 5 }"),
               "test.pov:1:23: error: focal blur samples minimum must not be larger than "
               "maximum\n"
               "camera { blur_samples 10, 5 }\n"
@@ -231,11 +219,11 @@ TEST(Camera, BlurSamplesAndTheFocalDistanceAsPovRayReadsThem) {
 
 TEST(Degenerate, ExporterShapesAsPovRay) {
     // Coincident ends: POV-Ray stops with a parse error too.
-    EXPECT_EQ(error_of("cylinder { <1, 1, 0>, <1, 1, 0>, 0.5 }"),
+    EXPECT_EQ(full_error_of("cylinder { <1, 1, 0>, <1, 1, 0>, 0.5 }"),
               "test.pov:1:1: error: degenerate cylinder, base point = cap point\n"
               "cylinder { <1, 1, 0>, <1, 1, 0>, 0.5 }\n"
               "^~~~~~~~");
-    EXPECT_EQ(error_of("cone { 0, 0.5, 0, 0.3 }"),
+    EXPECT_EQ(full_error_of("cone { 0, 0.5, 0, 0.3 }"),
               "test.pov:1:1: error: degenerate cone, base point = cap point\n"
               "cone { 0, 0.5, 0, 0.3 }\n"
               "^~~~");
@@ -290,35 +278,35 @@ TEST(Settings, VersionAndGlobalSettings) {
 }
 
 TEST(Errors, ExactLocationsAndCarets) {
-    EXPECT_EQ(error_of("sphere { 0, 1\n  pigment { colr Red }\n}"),
+    EXPECT_EQ(full_error_of("sphere { 0, 1\n  pigment { colr Red }\n}"),
               "test.pov:2:13: error: expected a pigment item or '}' but found 'colr'\n"
               "  pigment { colr Red }\n"
               "            ^~~~");
     // Commas are optional in POV-Ray (`<0, 0, 0> 1` is a sphere); a missing value is not.
-    EXPECT_EQ(error_of("sphere { <0, 0, 0>, }"),
+    EXPECT_EQ(full_error_of("sphere { <0, 0, 0>, }"),
               "test.pov:1:21: error: expected the sphere's radius but found '}'\n"
               "sphere { <0, 0, 0>, }\n"
               "                    ^");
-    EXPECT_EQ(error_of("#declare X = Undefined_Thing + 1;"),
+    EXPECT_EQ(full_error_of("#declare X = Undefined_Thing + 1;"),
               "test.pov:1:14: error: undeclared identifier 'Undefined_Thing'\n"
               "#declare X = Undefined_Thing + 1;\n"
               "             ^~~~~~~~~~~~~~~");
-    EXPECT_EQ(error_of("#include \"no_such_file.inc\""),
+    EXPECT_EQ(full_error_of("#include \"no_such_file.inc\""),
               "test.pov:1:10: error: cannot find include file \"no_such_file.inc\"\n"
               "#include \"no_such_file.inc\"\n"
               "         ^~~~~~~~~~~~~~~~~~");
-    EXPECT_EQ(error_of("#while (1)\nsphere { 0, 1 }"),
+    EXPECT_EQ(full_error_of("#while (1)\nsphere { 0, 1 }"),
               "test.pov:1:1: error: #while has no matching #end\n"
               "#while (1)\n"
               "^~~~~~");
-    EXPECT_EQ(error_of("\tbox { 0, 1 } @"),
+    EXPECT_EQ(full_error_of("\tbox { 0, 1 } @"),
               "test.pov:1:15: error: unexpected character '@'\n"
               "        box { 0, 1 } @\n"
               "                     ^");
 }
 
 TEST(Errors, InsideMacroPointsAtCallSite) {
-    EXPECT_EQ(error_of("#macro M()\n  sphere { 0 }\n#end\nM()"),
+    EXPECT_EQ(full_error_of("#macro M()\n  sphere { 0 }\n#end\nM()"),
               "test.pov:2:14: error: expected the sphere's radius but found '}'\n"
               "  sphere { 0 }\n"
               "             ^\n"
@@ -346,12 +334,7 @@ TEST(Errors, DeepMacroRecursionElidesMiddleNotes) {
         "test.pov:4:1: note: in macro 'M' called from here\n"
         "M()\n"
         "^";
-    EXPECT_EQ(error_of("#macro M()\n  M()\n#end\nM()"), expected);
-}
-
-std::string first_line(const std::string& scene) {
-    const std::string e = error_of(scene);
-    return e.substr(0, e.find('\n'));
+    EXPECT_EQ(full_error_of("#macro M()\n  M()\n#end\nM()"), expected);
 }
 
 std::string repeat(const std::string& s, int n) {
@@ -367,29 +350,28 @@ TEST(Errors, DeepNestingIsALocatedErrorNotAStackOverflow) {
     EXPECT_EQ(parse("#declare X = " + repeat("(", 255) + "1" + repeat(")", 255) + ";")
                   .objects.size(),
               0u);
+    EXPECT_EQ(error_of("#declare X = " + repeat("(", 300) + "1" + repeat(")", 300) + ";"),
+              "test.pov:1:270: error: expressions, objects or patterns nested too deeply "
+              "(limit 256)");
     EXPECT_EQ(
-        first_line("#declare X = " + repeat("(", 300) + "1" + repeat(")", 300) + ";"),
-        "test.pov:1:270: error: expressions, objects or patterns nested too deeply "
-        "(limit 256)");
-    EXPECT_EQ(
-        first_line(repeat("union { ", 300) + "sphere { 0, 1 }" + repeat(" }", 300)),
+        error_of(repeat("union { ", 300) + "sphere { 0, 1 }" + repeat(" }", 300)),
         "test.pov:1:2049: error: expressions, objects or patterns nested too deeply "
         "(limit 256)");
     EXPECT_EQ(
-        first_line("#declare P = pigment { " +
-                   repeat("gradient x pigment_map { [0 ", 3000) + "rgb 1" +
-                   repeat(" ] }", 3000) + " };"),
+        error_of("#declare P = pigment { " +
+                 repeat("gradient x pigment_map { [0 ", 3000) + "rgb 1" +
+                 repeat(" ] }", 3000) + " };"),
         "test.pov:1:7145: error: expressions, objects or patterns nested too deeply "
         "(limit 256)");
     // (After a third component a vector reads on only what can start an expression, as
     // POV-Ray does, so the object comes in as an operand of `+`.)
-    EXPECT_EQ(first_line("mesh {\n#declare I = 0;\n#while (I < 24)\n"
-                         "  triangle { <0, 0, 0>, <1, 0, 0>, <cos(I), 1, 0 + #end\n"),
+    EXPECT_EQ(error_of("mesh {\n#declare I = 0;\n#while (I < 24)\n"
+                       "  triangle { <0, 0, 0>, <1, 0, 0>, <cos(I), 1, 0 + #end\n"),
               "test.pov:4:14: error: expressions, objects or patterns nested too deeply "
               "(limit 256)");
     EXPECT_EQ(
-        first_line("mesh {\n#declare I = 0;\n#while (I < 24)\n"
-                   "  triangle { <0, 0, 0>, <1, 0, 0>, <cos(I), 1, 0 #end\n"),
+        error_of("mesh {\n#declare I = 0;\n#while (I < 24)\n"
+                 "  triangle { <0, 0, 0>, <1, 0, 0>, <cos(I), 1, 0 #end\n"),
         "test.pov:4:3: error: expected '>' to close the vector but found 'triangle'");
 }
 
@@ -397,8 +379,7 @@ TEST(Errors, DeepNestingIsALocatedErrorNotAStackOverflow) {
 // the stack (found by the scene fuzzer). The stack check stops it before the stack ends.
 TEST(Errors, DirectivesNestedPastTheStackAreALocatedError) {
     // Which token meets the limit first depends on the build's frame sizes: line 2.
-    const std::string e =
-        first_line("#declare I = 0;\n#while (I < 3) #declare I = #end\n");
+    const std::string e = error_of("#declare I = 0;\n#while (I < 3) #declare I = #end\n");
     EXPECT_EQ(e.rfind("test.pov:2:", 0), 0u) << e;
     EXPECT_NE(
         e.find(": error: directives, macros and expressions nested too deeply for the "
@@ -439,11 +420,11 @@ TEST(Errors, LoopThatMakesObjectsWithoutEndStopsAtTheMemoryLimit) {
 // Floats read as ints saturate instead of overflowing; vstr's component count is 2..5 (a
 // fuzzed vstr(9, ...) wrote past a 5-component vector).
 TEST(Errors, HugeIntegerArgumentsAreSafe) {
-    EXPECT_EQ(first_line("#declare V = vstr(9, <1,2,3>, \",\", 0, 1);"),
+    EXPECT_EQ(error_of("#declare V = vstr(9, <1,2,3>, \",\", 0, 1);"),
               "test.pov:1:19: error: vstr: the number of components must be 2 to 5");
-    EXPECT_EQ(first_line("#declare R = rand(1e30);"),
+    EXPECT_EQ(error_of("#declare R = rand(1e30);"),
               "test.pov:1:19: error: illegal random number generator");
-    EXPECT_EQ(first_line("#declare S = substr(\"abc\", 2e10, 2e10);"),
+    EXPECT_EQ(error_of("#declare S = substr(\"abc\", 2e10, 2e10);"),
               "test.pov:1:14: error: substr arguments out of range");
     // A width past the buffer is cut to 500 characters, zero-padded.
     Scene s = parse("#declare S = str(1.5, -3e12, 2);\nsphere { 0, strlen(S) }");
@@ -456,13 +437,13 @@ TEST(Errors, Mesh2IndicesOutOfRangeAreLocated) {
         "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } "
         "normal_vectors { 1, <0,0,1> } texture_list { 1, texture { pigment { rgb 1 } } "
         "} ";
-    EXPECT_EQ(first_line(head + "face_indices { 1, <0,1,2>, 2e113 } }"),
+    EXPECT_EQ(error_of(head + "face_indices { 1, <0,1,2>, 2e113 } }"),
               "test.pov:1:164: error: mesh2 texture index out of range");
-    EXPECT_EQ(first_line(head + "face_indices { 1, <0,1,2>, 0 } normal_indices { 1, "
-                                "<0,0,5e9> } }"),
+    EXPECT_EQ(error_of(head + "face_indices { 1, <0,1,2>, 0 } normal_indices { 1, "
+                              "<0,0,5e9> } }"),
               "test.pov:1:188: error: mesh2 normal index out of range");
     // NaN passes `v < 0 || v >= n`; it must be out of range, not converted to an index.
-    EXPECT_EQ(first_line(head + "face_indices { 1, <0, 1, sqrt(-1)> } }"),
+    EXPECT_EQ(error_of(head + "face_indices { 1, <0, 1, sqrt(-1)> } }"),
               "test.pov:1:155: error: mesh2 face index out of range");
 }
 
@@ -474,8 +455,8 @@ TEST(Errors, Mesh2IndicesOutOfRangeAreLocated) {
 // so the calls nest until the closing parentheses run out.
 TEST(Errors, MacroArgumentsRunningPastTheirBodysEndAreALocatedError) {
     EXPECT_EQ(
-        error_of("#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N #end #end\n"
-                 "#declare F = Fact(3));\n"),
+        full_error_of("#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N #end #end\n"
+                      "#declare F = Fact(3));\n"),
         "test.pov:2:22: error: expected ')' after the arguments of 'Fact' but found "
         "';'\n"
         "#declare F = Fact(3));\n"
@@ -485,9 +466,9 @@ TEST(Errors, MacroArgumentsRunningPastTheirBodysEndAreALocatedError) {
 // trace() writes its normal argument: a #declare of it cannot wait until the value is
 // used (the scene would test the unchanged normal and go on as if nothing was hit).
 TEST(Errors, TraceInADeclareStopsAtOnce) {
-    EXPECT_EQ(error_of("#declare S = sphere { 0, 1 }\n"
-                       "#declare N = <0, 0, 0>;\n"
-                       "#declare P = trace(S, <0, 0, -5>, z, N);\n"),
+    EXPECT_EQ(full_error_of("#declare S = sphere { 0, 1 }\n"
+                            "#declare N = <0, 0, 0>;\n"
+                            "#declare P = trace(S, <0, 0, -5>, z, N);\n"),
               "test.pov:3:14: error: unsupported: trace\n"
               "#declare P = trace(S, <0, 0, -5>, z, N);\n"
               "             ^~~~~");
@@ -799,15 +780,15 @@ sphere { <-3, -2, 0>, 0.5 }
 }
 
 TEST(Prism, PointCountsAndClosureAsPovRay) {
-    EXPECT_EQ(error_of("prism { 0, 1, 2, <0,0>, <1,0> }"),
+    EXPECT_EQ(full_error_of("prism { 0, 1, 2, <0,0>, <1,0> }"),
               "test.pov:1:15: error: Prism with linear splines must have at least three "
               "points.\n"
               "prism { 0, 1, 2, <0,0>, <1,0> }\n"
               "              ^");
-    EXPECT_EQ(error_of("prism { bezier_spline 0, 1, 6, 0,0,0,0,0,0 }").substr(0, 82),
+    EXPECT_EQ(full_error_of("prism { bezier_spline 0, 1, 6, 0,0,0,0,0,0 }").substr(0, 82),
               "test.pov:1:29: error: Prism with Bezier splines must have four points per "
               "segment.");
-    EXPECT_EQ(error_of("prism { 0, 1, 3, <0, 0, 1>, <1,0>, <0,1> }").substr(0, 78),
+    EXPECT_EQ(full_error_of("prism { 0, 1, 3, <0, 0, 1>, <1,0>, <0,1> }").substr(0, 78),
               "test.pov:1:18: error: UV_Vector expected but vector or color expression "
               "found.");
     // A linear outline left open is closed with a warning; other splines are ignored.
@@ -824,10 +805,11 @@ TEST(Prism, PointCountsAndClosureAsPovRay) {
     EXPECT_TRUE(std::get<Prism>(s.objects.at(0).shape).degenerate);
     EXPECT_NE(messages.find("warning: Prism not closed. Ignoring it."),
               std::string::npos);
-    EXPECT_EQ(error_of("prism { quadratic_spline 0, 1, 5, <0,0>, <1,0>, <1,1>, <0,1>, "
-                       "<2,2> }")
-                  .substr(0, 45),
-              "test.pov:1:1: error: Too few points in prism.");
+    EXPECT_EQ(
+        full_error_of("prism { quadratic_spline 0, 1, 5, <0,0>, <1,0>, <1,1>, <0,1>, "
+                      "<2,2> }")
+            .substr(0, 45),
+        "test.pov:1:1: error: Too few points in prism.");
     // sturm is an object modifier of prisms; open only directly after the points.
     s = parse(
         "prism { cubic_spline 0, 1, 7, <0,-1>, <1,0>, <0,1>, <-1,0>, <0,-1>, <1,0>, "
@@ -835,7 +817,7 @@ TEST(Prism, PointCountsAndClosureAsPovRay) {
         "open sturm }");
     EXPECT_TRUE(std::get<Prism>(s.objects.at(0).shape).sturm);
     EXPECT_TRUE(std::get<Prism>(s.objects.at(0).shape).open);
-    EXPECT_EQ(error_of("sphere { 0, 1 sturm }").substr(0, 61),
+    EXPECT_EQ(full_error_of("sphere { 0, 1 sturm }").substr(0, 61),
               "test.pov:1:15: error: 'sturm' cannot be used with this object");
 }
 
@@ -879,24 +861,24 @@ media { absorption <0.1, 0.2, 0.3> }
 }
 
 TEST(Media, BadValuesAreLocatedAndMissingFeaturesUnsupported) {
-    EXPECT_EQ(error_of("sphere { 0, 1 interior { media { method 4 } } }"),
+    EXPECT_EQ(full_error_of("sphere { 0, 1 interior { media { method 4 } } }"),
               "test.pov:1:41: error: media method must be 1, 2 or 3\n"
               "sphere { 0, 1 interior { media { method 4 } } }\n"
               "                                        ^");
-    EXPECT_EQ(first_line("media { samples 5, 2 }"),
+    EXPECT_EQ(error_of("media { samples 5, 2 }"),
               "test.pov:1:20: error: maximum samples must not be below the minimum");
-    EXPECT_EQ(first_line("media { scattering { 1, 0.5 eccentricity 0.3 } }"),
+    EXPECT_EQ(error_of("media { scattering { 1, 0.5 eccentricity 0.3 } }"),
               "test.pov:1:29: error: eccentricity only applies to scattering type 5");
-    EXPECT_EQ(first_line("media { density { density_map { [0 rgb 1] } } }"),
+    EXPECT_EQ(error_of("media { density { density_map { [0 rgb 1] } } }"),
               "test.pov:1:19: error: a density_map cannot be used with this pattern "
               "type");
-    EXPECT_EQ(first_line("light_source { 0, 1 area_light x, y, 2, 2 media_attenuation }\n"
-                         "media { emission 1 }"),
+    EXPECT_EQ(error_of("light_source { 0, 1 area_light x, y, 2, 2 media_attenuation }\n"
+                       "media { emission 1 }"),
               "test.pov:2:1: error: unsupported: atmospheric media with an area light's "
               "media_attenuation");
     EXPECT_EQ(
-        first_line("media { emission 1 }\n"
-                   "light_source { 0, 1 media_attenuation area_light x, y, 2, 2 }"),
+        error_of("media { emission 1 }\n"
+                 "light_source { 0, 1 media_attenuation area_light x, y, 2, 2 }"),
         "test.pov:2:21: error: unsupported: media_attenuation of an area light with "
         "atmospheric media");
 }

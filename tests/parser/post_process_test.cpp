@@ -9,25 +9,13 @@
 #include <sstream>
 
 #include "parser/parser.h"
+#include "tests/parser/parse_helpers.h"
 
 namespace povwall::parser {
 namespace {
 
-Scene parse(const std::string& text) {
-    std::ostringstream messages;
-    ParseOptions o;
-    o.messages = &messages;
-    return parse_scene_text(text, "test.pov", o);
-}
-
-std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const ParseError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
+using test::full_error_of;
+using test::parse;
 
 const Object& child(const Object& o, size_t i) {
     return std::get<Csg>(o.shape).children[i];
@@ -70,7 +58,7 @@ sphere { 0, 1 material { M } }
     // A declared material carries its interior texture.
     ASSERT_EQ(s.objects[1].interior_texture->size(), 1u);
     EXPECT_FLOAT_EQ(s.objects[1].interior_texture->front().pigment.colour.rgb.g, 0.0f);
-    EXPECT_EQ(error_of("sphere { 0, 1 interior_texture { pigment { rgb 1 } } }"),
+    EXPECT_EQ(full_error_of("sphere { 0, 1 interior_texture { pigment { rgb 1 } } }"),
               "test.pov:1:54: error: interior texture requires an exterior texture\n"
               "sphere { 0, 1 interior_texture { pigment { rgb 1 } } }\n"
               "                                                     ^");
@@ -133,15 +121,15 @@ union { sphere { 0, 1 } sphere { x, 1 } split_union off }
     EXPECT_FALSE(pov_splits_union(s.objects[2]));
     EXPECT_TRUE(pov_keeps_bound(s.objects[1]));
     EXPECT_FALSE(pov_keeps_bound(s.objects[0]));  // a shape's bound is removed
-    EXPECT_NE(error_of("sphere { 0, 1 clipped_by { box { -1, 1 } } "
-                       "clipped_by { bounded_by } }")
+    EXPECT_NE(full_error_of("sphere { 0, 1 clipped_by { box { -1, 1 } } "
+                            "clipped_by { bounded_by } }")
                   .find("error: cannot link bounds with previous clips"),
               std::string::npos);
-    EXPECT_NE(error_of("sphere { 0, 1 bounded_by { box { -1, 1 } } "
-                       "clipped_by { bounded_by } bounded_by { sphere { 0, 1 } } }")
+    EXPECT_NE(full_error_of("sphere { 0, 1 bounded_by { box { -1, 1 } } "
+                            "clipped_by { bounded_by } bounded_by { sphere { 0, 1 } } }")
                   .find("error: cannot add bounds after linking bounds and clips"),
               std::string::npos);
-    EXPECT_NE(error_of("sphere { 0, 1 split_union off }")
+    EXPECT_NE(full_error_of("sphere { 0, 1 split_union off }")
                   .find("error: split_union found in non-union object"),
               std::string::npos);
 }
@@ -159,13 +147,13 @@ TEST(PostProcess, FractalColouringOnMandelOnly) {
         "#declare P = pigment { mandel 30 exterior 6, 0.5 }\n"
         "plane { z, 0 pigment { P mandel 20 } }");
     EXPECT_EQ(s.objects[0].texture.front().pigment.pattern->fractal.exterior_type, 1);
-    EXPECT_NE(error_of("plane { z, 0 pigment { bozo exterior 1, 1 } }")
+    EXPECT_NE(full_error_of("plane { z, 0 pigment { bozo exterior 1, 1 } }")
                   .find("error: keyword 'exterior' can only be used in a mandel"),
               std::string::npos);
-    EXPECT_NE(error_of("plane { z, 0 pigment { mandel 9 interior 7, 1 } }")
+    EXPECT_NE(full_error_of("plane { z, 0 pigment { mandel 9 interior 7, 1 } }")
                   .find("error: invalid fractal pattern interior type (0 to 6)"),
               std::string::npos);
-    EXPECT_NE(error_of("plane { z, 0 pigment { mandel 9 exterior 9, 1 } }")
+    EXPECT_NE(full_error_of("plane { z, 0 pigment { mandel 9 exterior 9, 1 } }")
                   .find("error: invalid fractal pattern exterior type (0 to 8)"),
               std::string::npos);
 }
@@ -233,11 +221,11 @@ light_source { <0, 5, 0> rgb 1 cylinder point_at 0 }
     EXPECT_EQ(s.lights[3].kind, Light::Kind::Cylinder);
     EXPECT_FALSE(s.lights[3].parallel);
     EXPECT_EQ(
-        error_of("light_source { 0, 1 radius 10 }"),
+        full_error_of("light_source { 0, 1 radius 10 }"),
         "test.pov:1:21: error: 'radius' cannot be used with a standard light source\n"
         "light_source { 0, 1 radius 10 }\n"
         "                    ^~~~~~");
-    EXPECT_EQ(error_of("light_source { 0, 1 point_at x }"),
+    EXPECT_EQ(full_error_of("light_source { 0, 1 point_at x }"),
               "test.pov:1:21: error: 'point_at' cannot be used with a standard light "
               "source\n"
               "light_source { 0, 1 point_at x }\n"
@@ -312,15 +300,15 @@ sphere { 0, 1 finish { specular albedo 0.5 roughness 0.05 } }
 }
 
 TEST(Keywords, RefusedOrCheckedWhereTheyStand) {
-    EXPECT_EQ(error_of("sphere { 0, 1 sturm }"),
+    EXPECT_EQ(full_error_of("sphere { 0, 1 sturm }"),
               "test.pov:1:15: error: 'sturm' cannot be used with this object\n"
               "sphere { 0, 1 sturm }\n"
               "              ^~~~~");
-    EXPECT_EQ(error_of("box { 0, 1 open }"),
+    EXPECT_EQ(full_error_of("box { 0, 1 open }"),
               "test.pov:1:12: error: 'open' cannot be used with this object\n"
               "box { 0, 1 open }\n"
               "           ^~~~");
-    EXPECT_EQ(error_of("union { sphere { 0, 1 } sphere { x, 1 } cutaway_textures }"),
+    EXPECT_EQ(full_error_of("union { sphere { 0, 1 } sphere { x, 1 } cutaway_textures }"),
               "test.pov:1:41: error: cutaway_textures can only be used with intersection "
               "and difference\n"
               "union { sphere { 0, 1 } sphere { x, 1 } cutaway_textures }\n"
@@ -328,19 +316,20 @@ TEST(Keywords, RefusedOrCheckedWhereTheyStand) {
     // A frequency wraps a block pattern's entry number in POV-Ray (and blends entries);
     // 0 changes nothing.
     EXPECT_EQ(
-        error_of("plane { y, 0 pigment { hexagon frequency 2 } }"),
+        full_error_of("plane { y, 0 pigment { hexagon frequency 2 } }"),
         "test.pov:1:32: error: unsupported: frequency on a block or object pattern\n"
         "plane { y, 0 pigment { hexagon frequency 2 } }\n"
         "                               ^~~~~~~~~");
-    EXPECT_EQ(error_of("plane { y, 0 pigment { checker frequency 0 } }"), "(no error)");
+    EXPECT_EQ(full_error_of("plane { y, 0 pigment { checker frequency 0 } }"),
+              "(no error)");
     // area_illumination renders on an area light; on another light POV-Ray lights the
     // side facing away from it.
-    EXPECT_EQ(error_of("light_source { 0, 1 area_illumination }"),
+    EXPECT_EQ(full_error_of("light_source { 0, 1 area_illumination }"),
               "test.pov:1:21: error: unsupported: area_illumination without area_light\n"
               "light_source { 0, 1 area_illumination }\n"
               "                    ^~~~~~~~~~~~~~~~~");
     EXPECT_EQ(
-        error_of("light_source { 0, 1 area_illumination on area_illumination off }"),
+        full_error_of("light_source { 0, 1 area_illumination on area_illumination off }"),
         "(no error)");
     // Dispersion renders; without an `ior` it is dropped (POV-Ray takes the
     // atmosphere's index and dispersion), with one kept; a finish's old `ior` replaces
@@ -358,10 +347,11 @@ TEST(Keywords, RefusedOrCheckedWhereTheyStand) {
         EXPECT_EQ(s.objects[2].interior->ior, 1.3f);
     }
     // Off, they change nothing and are accepted.
-    EXPECT_EQ(error_of("light_source { 0, 1 area_light x, y, 2, 2 area_illumination off }"
-                       "sphere { 0, 1 interior { dispersion 1 } no_radiosity }"
-                       "mesh { triangle { 0, x, y } hierarchy off }"),
-              "(no error)");
+    EXPECT_EQ(
+        full_error_of("light_source { 0, 1 area_light x, y, 2, 2 area_illumination off }"
+                      "sphere { 0, 1 interior { dispersion 1 } no_radiosity }"
+                      "mesh { triangle { 0, x, y } hierarchy off }"),
+        "(no error)");
 }
 
 // double_illuminate on a CSG is set on every node below when read, on or off (POV-Ray's

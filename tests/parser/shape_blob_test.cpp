@@ -3,7 +3,7 @@
 // ellipsoid), the cylinder's frame, threshold, sturm, hierarchy and the errors.
 #include <gtest/gtest.h>
 
-#include "tests/parser/shape_parse_helpers.h"
+#include "tests/parser/parse_helpers.h"
 
 namespace povwall::parser {
 namespace {

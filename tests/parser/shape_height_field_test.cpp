@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "output/image_io.h"
-#include "tests/parser/shape_parse_helpers.h"
+#include "tests/parser/parse_helpers.h"
 
 namespace povwall::parser {
 namespace {

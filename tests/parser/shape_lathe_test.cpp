@@ -2,7 +2,7 @@
 // negative-radius rule, sturm.
 #include <gtest/gtest.h>
 
-#include "tests/parser/shape_parse_helpers.h"
+#include "tests/parser/parse_helpers.h"
 
 namespace povwall::parser {
 namespace {

@@ -2,7 +2,7 @@
 // sphere it substitutes when T >= 2B.
 #include <gtest/gtest.h>
 
-#include "tests/parser/shape_parse_helpers.h"
+#include "tests/parser/parse_helpers.h"
 
 namespace povwall::parser {
 namespace {

@@ -3,7 +3,7 @@
 // transforms folded into its coefficients with its box.
 #include <gtest/gtest.h>
 
-#include "tests/parser/shape_parse_helpers.h"
+#include "tests/parser/parse_helpers.h"
 
 namespace povwall::parser {
 namespace {

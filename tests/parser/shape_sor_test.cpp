@@ -1,7 +1,7 @@
 // sor { N, points [open] }: counts, point checks, `open` only after the points, sturm.
 #include <gtest/gtest.h>
 
-#include "tests/parser/shape_parse_helpers.h"
+#include "tests/parser/parse_helpers.h"
 
 namespace povwall::parser {
 namespace {

@@ -10,18 +10,13 @@
 #include <sstream>
 
 #include "parser/parser.h"
+#include "tests/parser/parse_helpers.h"
 
 namespace povwall::parser {
 namespace {
 
-Scene parse(const std::string& text, std::string* debug = nullptr) {
-    std::ostringstream messages;
-    ParseOptions o;
-    o.messages = &messages;
-    Scene s = parse_scene_text(text, "test.pov", o);
-    if (debug) *debug = messages.str();
-    return s;
-}
+using test::error_of;
+using test::parse;
 
 std::string debug_of(const std::string& text) {
     std::string out;
@@ -30,15 +25,6 @@ std::string debug_of(const std::string& text) {
 }
 
 // The first line of the error a scene stops with.
-std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const ParseError& e) {
-        const std::string what = e.what();
-        return what.substr(0, what.find('\n'));
-    }
-    return "(no error)";
-}
 
 void expect_vec(const Vector3& v, double x, double y, double z) {
     EXPECT_DOUBLE_EQ(v.x, x);

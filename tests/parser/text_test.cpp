@@ -11,33 +11,19 @@
 
 #include "parser/parser.h"
 #include "parser/truetype_font.h"
+#include "tests/parser/parse_helpers.h"
 
 namespace povwall::parser {
 namespace {
+
+using test::full_error_of;
+using test::parse;
 
 const std::string kFonts = "/usr/share/povray-3.7/include/";
 
 std::vector<uint8_t> read_bytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-Scene parse(const std::string& text, std::string* messages = nullptr) {
-    std::ostringstream out;
-    ParseOptions o;
-    o.messages = &out;
-    Scene s = parse_scene_text(text, "test.pov", o);
-    if (messages) *messages = out.str();
-    return s;
-}
-
-std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const ParseError& e) {
-        return e.what();
-    }
-    return "(no error)";
 }
 
 // A minimal sfnt holding the given tables (tag, bytes), as fonts are laid out.
@@ -230,29 +216,29 @@ TEST(Text, Charsets) {
         "text { ttf \"timrom.ttf\" \"\xC3\xA9\\u0041\" 1, 0 }");
     EXPECT_EQ(std::get<Csg>(u.objects[0].shape).children.size(), 2u);
     EXPECT_EQ(
-        error_of(
+        full_error_of(
             "global_settings { charset sys }\ntext { ttf \"timrom.ttf\" \"a\" 1, 0 }"),
         "test.pov:2:25: error: Cannot convert system specific text format to Unicode.\n"
         "text { ttf \"timrom.ttf\" \"a\" 1, 0 }\n"
         "                        ^~~");
-    EXPECT_EQ(error_of("text { ttf \"timrom.ttf\" \"\\u00\" 1, 0 }"),
+    EXPECT_EQ(full_error_of("text { ttf \"timrom.ttf\" \"\\u00\" 1, 0 }"),
               "test.pov:1:25: error: Unexpected end of escape sequence in text string.\n"
               "text { ttf \"timrom.ttf\" \"\\u00\" 1, 0 }\n"
               "                        ^~~~~~");
 }
 
 TEST(Text, Errors) {
-    EXPECT_EQ(error_of("text { \"timrom.ttf\" \"a\" 1, 0 }"),
+    EXPECT_EQ(full_error_of("text { \"timrom.ttf\" \"a\" 1, 0 }"),
               "test.pov:1:8: error: expected 'ttf' or 'internal' but found string "
               "\"timrom.ttf\"\n"
               "text { \"timrom.ttf\" \"a\" 1, 0 }\n"
               "       ^~~~~~~~~~~~");
-    const std::string missing = error_of("text { ttf \"nosuchfont\" \"a\" 1, 0 }");
+    const std::string missing = full_error_of("text { ttf \"nosuchfont\" \"a\" 1, 0 }");
     EXPECT_EQ(missing.substr(0, missing.find(" (also")),
               "test.pov:1:12: error: cannot find font file \"nosuchfont\"");
     EXPECT_NE(missing.find("/usr/share/povray-3.7/include"), std::string::npos);
     // The offset has no default.
-    EXPECT_EQ(error_of("text { ttf \"timrom.ttf\" \"a\" 1 }"),
+    EXPECT_EQ(full_error_of("text { ttf \"timrom.ttf\" \"a\" 1 }"),
               "test.pov:1:31: error: expected an expression but found '}'\n"
               "text { ttf \"timrom.ttf\" \"a\" 1 }\n"
               "                              ^");
@@ -262,7 +248,7 @@ TEST(Text, Errors) {
         std::ofstream(bad)
             << "not a font at all, but long enough to hold a table directory";
     }
-    EXPECT_EQ(error_of("text { ttf \"" + bad.string() + "\" \"a\" 1, 0 }"),
+    EXPECT_EQ(full_error_of("text { ttf \"" + bad.string() + "\" \"a\" 1, 0 }"),
               "test.pov:1:12: error: cannot read TrueType font \"" + bad.string() +
                   "\": the file ends inside a table (corrupt font)\n"
                   "text { ttf \"" +
@@ -276,18 +262,18 @@ TEST(Text, Errors) {
 // The parser knows POV-Ray's box of text objects only (tests/lang/text_extents.pov
 // checks the values).
 TEST(Text, ExtentsOfOtherObjectsAreUnsupported) {
-    EXPECT_EQ(error_of("#declare B = sphere { 0, 1 }\nsphere { min_extent(B), 1 }"),
+    EXPECT_EQ(full_error_of("#declare B = sphere { 0, 1 }\nsphere { min_extent(B), 1 }"),
               "test.pov:2:10: error: unsupported: min_extent\n"
               "sphere { min_extent(B), 1 }\n"
               "         ^~~~~~~~~~");
     EXPECT_EQ(
-        error_of(
+        full_error_of(
             "#declare T = text { internal 1 \"a\" 1, 0 clipped_by { plane { y, 0 } } }\n"
             "sphere { max_extent(T), 1 }"),
         "test.pov:2:10: error: unsupported: max_extent\n"
         "sphere { max_extent(T), 1 }\n"
         "         ^~~~~~~~~~");
-    EXPECT_EQ(error_of("sphere { max_extent(3), 1 }"),
+    EXPECT_EQ(full_error_of("sphere { max_extent(3), 1 }"),
               "test.pov:1:21: error: expected an object identifier but found '3'\n"
               "sphere { max_extent(3), 1 }\n"
               "                    ^");

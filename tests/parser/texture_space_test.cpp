@@ -12,7 +12,7 @@
 namespace povwall::parser {
 namespace {
 
-Scene parse(const std::string& text) {
+Scene parse_in_golden_folder(const std::string& text) {
     std::ostringstream messages;
     ParseOptions o;
     o.messages = &messages;
@@ -22,9 +22,9 @@ Scene parse(const std::string& text) {
                             std::string(POVWALL_SOURCE_DIR) + "/scenes/golden/t.pov", o);
 }
 
-std::optional<ParseError> error_of(const std::string& text) {
+std::optional<ParseError> parse_error_in_golden_folder(const std::string& text) {
     try {
-        parse(text);
+        parse_in_golden_folder(text);
     } catch (const ParseError& e) {
         return e;
     }
@@ -32,7 +32,7 @@ std::optional<ParseError> error_of(const std::string& text) {
 }
 
 TEST(UvMapping, PigmentTakesTheRestOfTheBlockAsItsEntry) {
-    const Scene s = parse(
+    const Scene s = parse_in_golden_folder(
         "sphere { 0, 1 pigment { uv_mapping checker rgb 1 rgb 0 scale 0.5 } "
         "scale 2 }");
     const Pigment& p = s.objects.at(0).texture.at(0).pigment;
@@ -46,15 +46,15 @@ TEST(UvMapping, PigmentTakesTheRestOfTheBlockAsItsEntry) {
 }
 
 TEST(UvMapping, ObjectModifierKeepsTexturesFromTransforms) {
-    const Scene s =
-        parse("sphere { 0, 1 uv_mapping pigment { checker rgb 1 rgb 0 } scale 3 }");
+    const Scene s = parse_in_golden_folder(
+        "sphere { 0, 1 uv_mapping pigment { checker rgb 1 rgb 0 } scale 3 }");
     const Object& o = s.objects.at(0);
     EXPECT_TRUE(o.uv_mapping);
     EXPECT_TRUE(o.texture.at(0).pigment.pattern->transform.is_identity());
 }
 
 TEST(UvMapping, ComesDownToChildrenWithTheTexture) {
-    const Scene s = parse(
+    const Scene s = parse_in_golden_folder(
         "union { sphere { 0, 1 } box { 0, 1 pigment { rgb 1 } } uv_mapping "
         "pigment { checker } }");
     const Csg& u = std::get<Csg>(s.objects.at(0).shape);
@@ -64,7 +64,8 @@ TEST(UvMapping, ComesDownToChildrenWithTheTexture) {
 }
 
 TEST(UvMapping, AfterATextureIsAnError) {
-    const auto e = error_of("sphere { 0, 1 pigment { rgb 1 } uv_mapping }");
+    const auto e =
+        parse_error_in_golden_folder("sphere { 0, 1 pigment { rgb 1 } uv_mapping }");
     ASSERT_TRUE(e);
     EXPECT_EQ(e->kind(), ParseError::Kind::Syntax);
     EXPECT_EQ(e->loc().line, 1);
@@ -72,11 +73,12 @@ TEST(UvMapping, AfterATextureIsAnError) {
 }
 
 TEST(UvMapping, InAPigmentFunctionOrADensityIsAnError) {
-    auto e = error_of("#declare F = function { pigment { uv_mapping checker } }");
+    auto e = parse_error_in_golden_folder(
+        "#declare F = function { pigment { uv_mapping checker } }");
     ASSERT_TRUE(e);
     EXPECT_NE(e->message().find("uv_mapping"), std::string::npos);
     EXPECT_EQ(e->loc().column, 25);
-    e = error_of(
+    e = parse_error_in_golden_folder(
         "sphere { 0, 1 hollow interior { media { density { uv_mapping bozo } } } }");
     ASSERT_TRUE(e);
     EXPECT_NE(e->message().find("uv_mapping"), std::string::npos);
@@ -84,24 +86,25 @@ TEST(UvMapping, InAPigmentFunctionOrADensityIsAnError) {
 
 TEST(UvMapping, TurnedMirroredBoxIsRefused) {
     // POV-Ray's coordinates depend on whether the mirror came before the first turn.
-    const auto e = error_of(
+    const auto e = parse_error_in_golden_folder(
         "box { -1, 1 pigment { uv_mapping checker } scale <-1, 1, 1> rotate 30 * y }");
     ASSERT_TRUE(e);
     EXPECT_EQ(e->kind(), ParseError::Kind::Unsupported);
     EXPECT_EQ(e->message(), "unsupported: uv_mapping on a box both mirrored and turned");
     EXPECT_EQ(e->loc().column, 1);
     // Inherited from a union under uv_mapping: refused at the union.
-    EXPECT_TRUE(
-        error_of("union { box { -1, 1 scale <-1, 1, 1> rotate 30 * y } sphere { 0, 1 } "
-                 "uv_mapping pigment { checker } }"));
+    EXPECT_TRUE(parse_error_in_golden_folder(
+        "union { box { -1, 1 scale <-1, 1, 1> rotate 30 * y } sphere { 0, 1 } "
+        "uv_mapping pigment { checker } }"));
     // Mirrored only, or turned only: mapped.
-    EXPECT_FALSE(
-        error_of("box { -1, 1 pigment { uv_mapping checker } scale <-1, 1, 1> }"));
-    EXPECT_FALSE(error_of("box { -1, 1 uv_mapping pigment { checker } rotate 30 * y }"));
+    EXPECT_FALSE(parse_error_in_golden_folder(
+        "box { -1, 1 pigment { uv_mapping checker } scale <-1, 1, 1> }"));
+    EXPECT_FALSE(parse_error_in_golden_folder(
+        "box { -1, 1 uv_mapping pigment { checker } rotate 30 * y }"));
 }
 
 TEST(MeshUv, Mesh2IndicesAndDefaults) {
-    Scene s = parse(
+    Scene s = parse_in_golden_folder(
         "mesh2 { vertex_vectors { 3, 0, x, y } uv_vectors { 2, <0, 0>, <1, 0.5> } "
         "face_indices { 1, <0, 1, 2> } uv_indices { 1, <1, 0, 1> } }");
     const Mesh& m = std::get<Mesh>(s.objects.at(0).shape);
@@ -111,12 +114,12 @@ TEST(MeshUv, Mesh2IndicesAndDefaults) {
     EXPECT_EQ(m.uv_faces[0][1], 0u);
     EXPECT_EQ(m.uvs[1][1], 0.5);
     // As many coordinates as vertices: indexed like them.
-    s = parse(
+    s = parse_in_golden_folder(
         "mesh2 { vertex_vectors { 3, 0, x, y } uv_vectors { 3, 0, 1, 2 } "
         "face_indices { 1, <2, 1, 0> } }");
     EXPECT_EQ(std::get<Mesh>(s.objects.at(0).shape).uv_faces.at(0)[0], 2u);
     // Otherwise POV-Ray wants the indices.
-    const auto e = error_of(
+    const auto e = parse_error_in_golden_folder(
         "mesh2 { vertex_vectors { 3, 0, x, y } uv_vectors { 2, 0, 1 } "
         "face_indices { 1, <0, 1, 2> } }");
     ASSERT_TRUE(e);
@@ -124,7 +127,7 @@ TEST(MeshUv, Mesh2IndicesAndDefaults) {
 }
 
 TEST(MeshUv, TriangleUvVectors) {
-    const Scene s = parse(
+    const Scene s = parse_in_golden_folder(
         "mesh { triangle { 0, x, y uv_vectors <0, 0>, <1, 0>, <0, 1> } "
         "triangle { 0, y, z } }");
     const Mesh& m = std::get<Mesh>(s.objects.at(0).shape);
@@ -134,7 +137,7 @@ TEST(MeshUv, TriangleUvVectors) {
 }
 
 TEST(MaterialMap, ImageAndTextures) {
-    const Scene s = parse(
+    const Scene s = parse_in_golden_folder(
         "sphere { 0, 1 texture { material_map { png \"images/palette.png\" once "
         "texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } } scale 2 } }");
     const Texture& t = s.objects.at(0).texture.at(0);
@@ -147,7 +150,7 @@ TEST(MaterialMap, ImageAndTextures) {
 }
 
 TEST(MaterialMap, InterpolatedIndicesAreRefused) {
-    const auto e = error_of(
+    const auto e = parse_error_in_golden_folder(
         "sphere { 0, 1 texture { material_map { png \"images/palette.png\" interpolate 2 "
         "texture { pigment { rgb 1 } } } } }");
     ASSERT_TRUE(e);
@@ -156,17 +159,17 @@ TEST(MaterialMap, InterpolatedIndicesAreRefused) {
 }
 
 TEST(ImagePattern, UseAlphaReadsTransmitOrRed) {
-    Scene s = parse(
+    Scene s = parse_in_golden_folder(
         "plane { z, 0 pigment { image_pattern { png \"images/card_alpha.png\" use_alpha "
         "} } }");
     EXPECT_EQ(s.objects.at(0).texture.at(0).pigment.pattern->image->image_value, 1);
-    s = parse(
+    s = parse_in_golden_folder(
         "plane { z, 0 pigment { image_pattern { png \"images/card.png\" use_alpha } } }");
     EXPECT_EQ(s.objects.at(0).texture.at(0).pigment.pattern->image->image_value, 2);
 }
 
 TEST(ObjectPattern, ObjectTransformsAndEntries) {
-    const Scene s = parse(
+    const Scene s = parse_in_golden_folder(
         "#declare O = sphere { 0, 1 }\n"
         "plane { z, 0 pigment { object { O translate x rgb 1, rgb 0 } } }");
     const Pigment& p = s.objects.at(0).texture.at(0).pigment;
@@ -174,8 +177,8 @@ TEST(ObjectPattern, ObjectTransformsAndEntries) {
     ASSERT_TRUE(p.pattern->object);
     EXPECT_FALSE(p.pattern->object->transform.is_identity());
     EXPECT_EQ(p.maps->list.size(), 2u);
-    const auto e =
-        error_of("plane { z, 0 pigment { object { sphere { 0, 1 } box { 0, 1 } } } }");
+    const auto e = parse_error_in_golden_folder(
+        "plane { z, 0 pigment { object { sphere { 0, 1 } box { 0, 1 } } } }");
     ASSERT_TRUE(e);
     EXPECT_EQ(e->loc().column, 24);
 }

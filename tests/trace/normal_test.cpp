@@ -12,7 +12,7 @@
 namespace povwall::trace {
 namespace {
 
-constexpr int kSize = 16;
+constexpr int kNormalImageSize = 16;
 const Vector3 kLights[3] = {normalize(Vector3{1, 2, 0}), Vector3{0, 1, 0},
                             normalize(Vector3{0, 2, -1})};
 
@@ -26,11 +26,12 @@ double max_normal_error(const std::string& pov_normal, const Normal& normal) {
         "light_source { <0,200,-100> rgb <0,0,1> parallel point_at <0,0,0> }\n"
         "plane { y, 0.37 pigment { rgb 1 } normal { " +
         pov_normal + " } finish { ambient 0 diffuse 1 } }\n";
-    test::RgbImage img = test::render_with_povray(scene, kSize);
+    test::RgbImage img = test::render_with_povray(scene, kNormalImageSize);
     double worst = 0;
-    for (int y = 0; y < kSize; ++y) {
-        for (int x = 0; x < kSize; ++x) {
-            Vector3 n = perturb_normal(normal, view.point(x, y, kSize), {0, 1, 0}, {});
+    for (int y = 0; y < kNormalImageSize; ++y) {
+        for (int x = 0; x < kNormalImageSize; ++x) {
+            Vector3 n =
+                perturb_normal(normal, view.point(x, y, kNormalImageSize), {0, 1, 0}, {});
             for (int ch = 0; ch < 3; ++ch) {
                 double expected = std::clamp(dot(n, kLights[ch]), 0.0, 1.0);
                 worst = std::max(worst, std::fabs(img.at(x, y, ch) - expected));
@@ -41,7 +42,7 @@ double max_normal_error(const std::string& pov_normal, const Normal& normal) {
     return worst;
 }
 
-constexpr double kTol = 1e-3;
+constexpr double kNormalTolerance = 1e-3;
 
 Normal with(PatternKind kind, double amount) {
     Normal n;
@@ -51,44 +52,49 @@ Normal with(PatternKind kind, double amount) {
 }
 
 TEST(NormalVsPovray, DedicatedNormals) {
-    EXPECT_LE(max_normal_error("bumps 0.6", with(PatternKind::Bumps, 0.6)), kTol);
-    EXPECT_LE(max_normal_error("dents 0.9", with(PatternKind::Dents, 0.9)), kTol);
-    EXPECT_LE(max_normal_error("wrinkles 0.4", with(PatternKind::Wrinkles, 0.4)), kTol);
-    EXPECT_LE(max_normal_error("ripples 0.5", with(PatternKind::Ripples, 0.5)), kTol);
-    EXPECT_LE(max_normal_error("waves 0.5", with(PatternKind::Waves, 0.5)), kTol);
+    EXPECT_LE(max_normal_error("bumps 0.6", with(PatternKind::Bumps, 0.6)),
+              kNormalTolerance);
+    EXPECT_LE(max_normal_error("dents 0.9", with(PatternKind::Dents, 0.9)),
+              kNormalTolerance);
+    EXPECT_LE(max_normal_error("wrinkles 0.4", with(PatternKind::Wrinkles, 0.4)),
+              kNormalTolerance);
+    EXPECT_LE(max_normal_error("ripples 0.5", with(PatternKind::Ripples, 0.5)),
+              kNormalTolerance);
+    EXPECT_LE(max_normal_error("waves 0.5", with(PatternKind::Waves, 0.5)),
+              kNormalTolerance);
 }
 
 TEST(NormalVsPovray, ScaledBumps) {
     Normal n = with(PatternKind::Bumps, 0.5);
     n.pattern.edit().transform = Transform::scale({0.3, 0.6, 0.2});
-    EXPECT_LE(max_normal_error("bumps 0.5 scale <0.3,0.6,0.2>", n), kTol);
+    EXPECT_LE(max_normal_error("bumps 0.5 scale <0.3,0.6,0.2>", n), kNormalTolerance);
 }
 
 TEST(NormalVsPovray, PatternNormals) {
     Normal g = with(PatternKind::Granite, 0.3);
-    EXPECT_LE(max_normal_error("granite 0.3", g), kTol);
+    EXPECT_LE(max_normal_error("granite 0.3", g), kNormalTolerance);
     Normal a = with(PatternKind::Agate, 0.5);
     a.accuracy = 0.05;
-    EXPECT_LE(max_normal_error("agate 0.5 accuracy 0.05", a), kTol);
+    EXPECT_LE(max_normal_error("agate 0.5 accuracy 0.05", a), kNormalTolerance);
     Normal gr = with(PatternKind::Gradient, 0.5);
     gr.pattern.edit().vector = {1, 0, 0};
     gr.pattern.edit().wave = WaveType::Sine;
-    EXPECT_LE(max_normal_error("gradient x 0.5 sine_wave", gr), kTol);
+    EXPECT_LE(max_normal_error("gradient x 0.5 sine_wave", gr), kNormalTolerance);
 }
 
 TEST(NormalVsPovray, QuiltedAndDiscreteNormals) {
     Normal q = with(PatternKind::Quilted, 0.7);
     q.pattern.edit().vector = {1, 1, 0};
     q.pattern.edit().transform = Transform::scale({0.6, 0.6, 0.6});
-    EXPECT_LE(max_normal_error("quilted 0.7 scale 0.6", q), kTol);
+    EXPECT_LE(max_normal_error("quilted 0.7 scale 0.6", q), kNormalTolerance);
     q.pattern.edit().vector = {0.2, 0.9, 0};
     EXPECT_LE(max_normal_error("quilted 0.7 control0 0.2 control1 0.9 scale 0.6", q),
-              kTol);
+              kNormalTolerance);
     Normal c = with(PatternKind::Crackle, 0.5);
-    EXPECT_LE(max_normal_error("crackle 0.5", c), kTol);
+    EXPECT_LE(max_normal_error("crackle 0.5", c), kNormalTolerance);
     Normal h = with(PatternKind::Hexagon, 0.5);
     h.pattern.edit().transform = Transform::scale({0.4, 0.4, 0.4});
-    EXPECT_LE(max_normal_error("hexagon 0.5 scale 0.4", h), kTol);
+    EXPECT_LE(max_normal_error("hexagon 0.5 scale 0.4", h), kNormalTolerance);
 }
 
 TEST(NormalVsPovray, AverageNormals) {
@@ -98,13 +104,13 @@ TEST(NormalVsPovray, AverageNormals) {
     avg.list = {with(PatternKind::Bumps, 0.9), with(PatternKind::Granite, 0.4)};
     EXPECT_LE(
         max_normal_error("average normal_map { [1 bumps 0.9] [2 granite 0.4] }", avg),
-        kTol);
+        kNormalTolerance);
 }
 
 TEST(NormalVsPovray, ScaledPatternNormalAndNormalMap) {
     Normal g = with(PatternKind::Granite, 0.4);
     g.pattern.edit().transform = Transform::scale({2, 2, 2});
-    EXPECT_LE(max_normal_error("granite 0.4 scale 2", g), kTol);
+    EXPECT_LE(max_normal_error("granite 0.4 scale 2", g), kNormalTolerance);
     Normal m;
     m.pattern.edit().kind = PatternKind::Gradient;
     m.pattern.edit().vector = {1, 0, 0};
@@ -112,7 +118,7 @@ TEST(NormalVsPovray, ScaledPatternNormalAndNormalMap) {
     m.list = {with(PatternKind::Bumps, 0.8), with(PatternKind::Wrinkles, 0.5)};
     EXPECT_LE(max_normal_error(
                   "gradient x normal_map { [0.3 bumps 0.8] [0.7 wrinkles 0.5] }", m),
-              kTol);
+              kNormalTolerance);
 }
 
 }  // namespace

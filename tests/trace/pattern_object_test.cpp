@@ -13,7 +13,7 @@
 namespace povwall::trace {
 namespace {
 
-constexpr int kSize = 16;
+constexpr int kPatternObjectImageSize = 16;
 
 double max_error(const std::string& pov_pigment, const Pigment& pigment,
                  const test::TopView& view) {
@@ -21,11 +21,12 @@ double max_error(const std::string& pov_pigment, const Pigment& pigment,
                               view.camera() + "plane { y, " +
                               std::to_string(view.height) + " pigment { " + pov_pigment +
                               " } finish { ambient 1 diffuse 0 } }\n";
-    const test::RgbImage img = test::render_with_povray(scene, kSize);
+    const test::RgbImage img = test::render_with_povray(scene, kPatternObjectImageSize);
     double worst = 0;
-    for (int y = 0; y < kSize; ++y) {
-        for (int x = 0; x < kSize; ++x) {
-            const Colour c = evaluate_pigment(pigment, view.point(x, y, kSize), {});
+    for (int y = 0; y < kPatternObjectImageSize; ++y) {
+        for (int x = 0; x < kPatternObjectImageSize; ++x) {
+            const Colour c =
+                evaluate_pigment(pigment, view.point(x, y, kPatternObjectImageSize), {});
             const float mine[3] = {c.rgb.r, c.rgb.g, c.rgb.b};
             for (int ch = 0; ch < 3; ++ch)
                 worst = std::max(

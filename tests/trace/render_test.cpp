@@ -27,7 +27,7 @@ Camera unit_camera(Camera::Kind kind, Real angle) {
     return c;
 }
 
-void expect_vec(const Vector3& got, const Vector3& want) {
+void expect_vector_near(const Vector3& got, const Vector3& want) {
     EXPECT_NEAR(got.x, want.x, 1e-12);
     EXPECT_NEAR(got.y, want.y, 1e-12);
     EXPECT_NEAR(got.z, want.z, 1e-12);
@@ -37,26 +37,28 @@ const Real kHalf = std::sqrt(0.5);
 
 TEST(CameraRay, FisheyeRadiusIsAngleFromTheAxis) {
     Camera c = unit_camera(Camera::Kind::Fisheye, 180);
-    expect_vec(camera_ray(c, 50, 50, 100, 100)->direction, {0, 0, 1});
-    expect_vec(camera_ray(c, 100, 50, 100, 100)->direction, {1, 0, 0});  // rim: 90 deg
-    expect_vec(camera_ray(c, 75, 50, 100, 100)->direction, {kHalf, 0, kHalf});  // 45 deg
-    expect_vec(camera_ray(c, 50, 0, 100, 100)->direction, {0, 1, 0});
-    expect_vec(camera_ray(c, 25, 50, 100, 100)->direction, {-kHalf, 0, kHalf});
+    expect_vector_near(camera_ray(c, 50, 50, 100, 100)->direction, {0, 0, 1});
+    expect_vector_near(camera_ray(c, 100, 50, 100, 100)->direction,
+                       {1, 0, 0});  // rim: 90 deg
+    expect_vector_near(camera_ray(c, 75, 50, 100, 100)->direction,
+                       {kHalf, 0, kHalf});  // 45 deg
+    expect_vector_near(camera_ray(c, 50, 0, 100, 100)->direction, {0, 1, 0});
+    expect_vector_near(camera_ray(c, 25, 50, 100, 100)->direction, {-kHalf, 0, kHalf});
     EXPECT_FALSE(
         camera_ray(c, 100, 0, 100, 100).has_value());  // corner: outside the circle
     // The lengths of right and up squeeze the circle: right 2 puts the rim at x0 = 0.25.
     c.right = {2, 0, 0};
-    expect_vec(camera_ray(c, 75, 50, 100, 100)->direction, {1, 0, 0});
+    expect_vector_near(camera_ray(c, 75, 50, 100, 100)->direction, {1, 0, 0});
     EXPECT_FALSE(camera_ray(c, 80, 50, 100, 100).has_value());
 }
 
 TEST(CameraRay, PanoramicSpansHalfATurnAndTanOfLatitude) {
     Camera c = unit_camera(Camera::Kind::Panoramic, 90);
-    expect_vec(camera_ray(c, 0, 50, 100, 100)->direction, {-1, 0, 0});
-    expect_vec(camera_ray(c, 50, 50, 100, 100)->direction, {0, 0, 1});
-    expect_vec(camera_ray(c, 100, 50, 100, 100)->direction, {1, 0, 0});
-    expect_vec(camera_ray(c, 50, 25, 100, 100)->direction,
-               {0, kHalf, kHalf});  // 45 deg up
+    expect_vector_near(camera_ray(c, 0, 50, 100, 100)->direction, {-1, 0, 0});
+    expect_vector_near(camera_ray(c, 50, 50, 100, 100)->direction, {0, 0, 1});
+    expect_vector_near(camera_ray(c, 100, 50, 100, 100)->direction, {1, 0, 0});
+    expect_vector_near(camera_ray(c, 50, 25, 100, 100)->direction,
+                       {0, kHalf, kHalf});  // 45 deg up
     // Camera vectors are used unnormalised: a longer up tilts the same pixel further.
     c.up = {0, 2, 0};
     Vector3 d = camera_ray(c, 50, 25, 100, 100)->direction;
@@ -65,51 +67,51 @@ TEST(CameraRay, PanoramicSpansHalfATurnAndTanOfLatitude) {
 
 TEST(CameraRay, UltraWideAngleUsesSinesOfTheAngles) {
     Camera c = unit_camera(Camera::Kind::UltraWideAngle, 180);
-    expect_vec(camera_ray(c, 100, 50, 100, 100)->direction, {1, 0, 0});
-    expect_vec(camera_ray(c, 75, 50, 100, 100)->direction, {kHalf, 0, kHalf});
+    expect_vector_near(camera_ray(c, 100, 50, 100, 100)->direction, {1, 0, 0});
+    expect_vector_near(camera_ray(c, 75, 50, 100, 100)->direction, {kHalf, 0, kHalf});
     Vector3 d = camera_ray(c, 75, 25, 100, 100)->direction;  // both 45 deg
-    expect_vec(d, normalize(Vector3{kHalf, kHalf, 0.5}));
+    expect_vector_near(d, normalize(Vector3{kHalf, kHalf, 0.5}));
 }
 
 TEST(CameraRay, CylinderCamerasBendOneAxisOnly) {
     Camera c1 = unit_camera(Camera::Kind::Cylinder1, 180);
     c1.up = {0, 2, 0};  // up length scales the straight (vertical) axis
-    expect_vec(camera_ray(c1, 100, 50, 100, 100)->direction, {1, 0, 0});
-    expect_vec(camera_ray(c1, 50, 0, 100, 100)->direction, {0, kHalf, kHalf});
+    expect_vector_near(camera_ray(c1, 100, 50, 100, 100)->direction, {1, 0, 0});
+    expect_vector_near(camera_ray(c1, 50, 0, 100, 100)->direction, {0, kHalf, kHalf});
 
     Camera c2 = unit_camera(Camera::Kind::Cylinder2, 180);
     c2.right = {4, 0, 0};
-    expect_vec(camera_ray(c2, 50, 0, 100, 100)->direction, {0, 1, 0});
-    expect_vec(camera_ray(c2, 75, 50, 100, 100)->direction, {kHalf, 0, kHalf});
+    expect_vector_near(camera_ray(c2, 50, 0, 100, 100)->direction, {0, 1, 0});
+    expect_vector_near(camera_ray(c2, 75, 50, 100, 100)->direction, {kHalf, 0, kHalf});
 
     Camera c3 = unit_camera(Camera::Kind::Cylinder3, 90);
     c3.location = {0, 1, 0};
     c3.up = {0, 3, 0};
     Ray r3 = *camera_ray(c3, 100, 0, 100, 100);
-    expect_vec(r3.origin, {0, 2.5, 0});  // moved along up by y0 * |up|
-    expect_vec(r3.direction, {kHalf, 0, kHalf});
+    expect_vector_near(r3.origin, {0, 2.5, 0});  // moved along up by y0 * |up|
+    expect_vector_near(r3.direction, {kHalf, 0, kHalf});
 
     Camera c4 = unit_camera(Camera::Kind::Cylinder4, 90);
     c4.right = {2, 0, 0};
     Ray r4 = *camera_ray(c4, 25, 100, 100, 100);
-    expect_vec(r4.origin, {-0.5, 0, 0});
-    expect_vec(r4.direction, {0, -kHalf, kHalf});
+    expect_vector_near(r4.origin, {-0.5, 0, 0});
+    expect_vector_near(r4.direction, {0, -kHalf, kHalf});
 }
 
 TEST(CameraRay, SphericalLongitudeAcrossLatitudeUp) {
     Camera c = unit_camera(Camera::Kind::Spherical, 90);  // angle 360, 180
-    expect_vec(camera_ray(c, 50, 50, 100, 100)->direction, {0, 0, 1});
-    expect_vec(camera_ray(c, 75, 50, 100, 100)->direction, {1, 0, 0});
-    expect_vec(camera_ray(c, 100, 50, 100, 100)->direction, {0, 0, -1});
-    expect_vec(camera_ray(c, 50, 0, 100, 100)->direction, {0, 1, 0});
+    expect_vector_near(camera_ray(c, 50, 50, 100, 100)->direction, {0, 0, 1});
+    expect_vector_near(camera_ray(c, 75, 50, 100, 100)->direction, {1, 0, 0});
+    expect_vector_near(camera_ray(c, 100, 50, 100, 100)->direction, {0, 0, -1});
+    expect_vector_near(camera_ray(c, 50, 0, 100, 100)->direction, {0, 1, 0});
     c.h_angle = 180, c.v_angle = 90;
-    expect_vec(camera_ray(c, 100, 50, 100, 100)->direction, {1, 0, 0});
-    expect_vec(camera_ray(c, 50, 0, 100, 100)->direction, {0, kHalf, kHalf});
+    expect_vector_near(camera_ray(c, 100, 50, 100, 100)->direction, {1, 0, 0});
+    expect_vector_near(camera_ray(c, 50, 0, 100, 100)->direction, {0, kHalf, kHalf});
 }
 
 TEST(CameraRay, OmnimaxSeesNoMoreThan45DegreesBelowTheAxis) {
     Camera c = unit_camera(Camera::Kind::Omnimax, 90);  // square: no widening
-    expect_vec(camera_ray(c, 50, 50, 100, 100)->direction, {0, 0, 1});
+    expect_vector_near(camera_ray(c, 50, 50, 100, 100)->direction, {0, 0, 1});
     // Radius r from the centre: 1.411269 r - 0.09439 r^3 + 0.25674 r^5 radians from the
     // axis.
     const Real r = 0.8,

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "trace/shapes/shape.h"
 #include "trace/oracle.h"
+#include "trace/shapes/shape.h"
 
 namespace povwall::trace {
 namespace {

@@ -16,7 +16,7 @@ namespace {
 using namespace povwall::test;
 
 // Spheres in front of a checkered wall: edges and a texture for the anti-aliasing.
-Scene edge_scene() {
+Scene spheres_on_checker_scene() {
     Scene s;
     s.camera.location = {0, 0, -5};
     s.background = Colour(Rgb{0.5f, 0.5f, 0.5f});
@@ -60,7 +60,7 @@ struct Case {
 };
 
 TEST(SampleWaves, ReplayedBlocksGiveTheOneProcessImageInAFewWaves) {
-    const Scene scene = edge_scene();
+    const Scene scene = spheres_on_checker_scene();
     for (const Case& c :
          {Case{1, 3, 0.3, true, false, 32, 3}, Case{1, 2, 0.1, false, true, 8, 3},
           Case{1, 4, 0.0, true, false, 5, 2}, Case{1, 3, 1.0, true, false, 16, 3},
@@ -105,7 +105,7 @@ TEST(SampleWaves, ReplayedBlocksGiveTheOneProcessImageInAFewWaves) {
 // comes back in about as many waves as the 37-point grid has batches (8), a few more
 // with anti-aliasing.
 TEST(SampleWaves, FocalBlurRaysInWavesGiveTheOneProcessImage) {
-    Scene scene = edge_scene();
+    Scene scene = spheres_on_checker_scene();
     scene.camera.aperture = 0.4;
     scene.camera.blur_samples = 37;
     scene.camera.blur_samples_min = 7;

@@ -8,7 +8,7 @@
 namespace povwall::trace {
 namespace {
 
-Object parse_one(const std::string& text, std::string* messages = nullptr) {
+Object parse_one_patch(const std::string& text, std::string* messages = nullptr) {
     std::ostringstream out;
     parser::ParseOptions o;
     o.messages = &out;
@@ -27,17 +27,17 @@ std::string flat(const std::string& keywords, const std::string& extra = "") {
 }
 
 TEST(BicubicPatch, StepsAndFlatnessDecideThePieces) {
-    const Object full = parse_one(flat("type 1 flatness 0 u_steps 2 v_steps 3"));
+    const Object full = parse_one_patch(flat("type 1 flatness 0 u_steps 2 v_steps 3"));
     const BicubicPatchData& d = *std::get<BicubicPatch>(full.shape).data;
     EXPECT_EQ(d.leaves.size(), 4u * 8u);  // 2 levels in u, 3 in v
     // A flat patch is flatter than any positive flatness: one piece.
     const Object flat_enough =
-        parse_one(flat("type 1 flatness 0.01 u_steps 4 v_steps 4"));
+        parse_one_patch(flat("type 1 flatness 0.01 u_steps 4 v_steps 4"));
     EXPECT_EQ(std::get<BicubicPatch>(flat_enough.shape).data->leaves.size(), 1u);
 }
 
 TEST(BicubicPatch, CrossingsAndNormalsOfAFlatPatch) {
-    const Object o = parse_one(flat("type 0 flatness 0 u_steps 1 v_steps 1"));
+    const Object o = parse_one_patch(flat("type 0 flatness 0 u_steps 1 v_steps 1"));
     ShapeHits hits;
     leaf_hits(o, leaf_ray(o, Ray{{1.3, 2, 0.7}, {0, -1, 0}}), hits);
     ASSERT_EQ(hits.size(), 1u);
@@ -53,7 +53,7 @@ TEST(BicubicPatch, CrossingsAndNormalsOfAFlatPatch) {
 }
 
 TEST(BicubicPatch, TransformsMoveTheControlPoints) {
-    const Object o = parse_one(
+    const Object o = parse_one_patch(
         flat("type 1 flatness 0 u_steps 1 v_steps 1", "scale 2 translate <0, 1, 0>"));
     EXPECT_TRUE(o.transform.is_identity());
     const BicubicPatchData& d = *std::get<BicubicPatch>(o.shape).data;
@@ -67,23 +67,23 @@ TEST(BicubicPatch, TransformsMoveTheControlPoints) {
 
 TEST(BicubicPatch, ParserRulesAsPovRay) {
     std::string messages;
-    parse_one(flat("type 2 u_steps 1 v_steps 1"), &messages);
+    parse_one_patch(flat("type 2 u_steps 1 v_steps 1"), &messages);
     EXPECT_NE(messages.find("warning: Patch type no longer supported. Using type 1."),
               std::string::npos);
-    parse_one(flat("type 1", "inverse"), &messages);
+    parse_one_patch(flat("type 1", "inverse"), &messages);
     EXPECT_NE(messages.find("warning: Cannot invert a patch object."), std::string::npos);
-    parse_one(flat("1 3 2"), &messages);  // the old form: type, u_steps, v_steps
+    parse_one_patch(flat("1 3 2"), &messages);  // the old form: type, u_steps, v_steps
     EXPECT_NE(messages.find("warning: Should use keywords for bicubic parameters."),
               std::string::npos);
     try {
-        parse_one(flat("flatness 0.1"));
+        parse_one_patch(flat("flatness 0.1"));
         ADD_FAILURE() << "no error";
     } catch (const parser::ParseError& e) {
         EXPECT_NE(std::string(e.what()).find("error: Undefined bicubic patch type."),
                   std::string::npos);
     }
     try {
-        parse_one(flat("type 1", "clipped_by { plane { y, 0 } }"));
+        parse_one_patch(flat("type 1", "clipped_by { plane { y, 0 } }"));
         ADD_FAILURE() << "no error";
     } catch (const parser::ParseError& e) {
         EXPECT_EQ(e.kind(), parser::ParseError::Kind::Unsupported);

@@ -15,7 +15,7 @@ namespace {
 
 // A ray in blob space; a direction of length other than 1 stands for a transformed one
 // (an untransformed blob takes the world's unit direction as it is).
-LocalRay ray(Point3 o, Vector3 d) {
+LocalRay ray_transformed_if_scaled(Point3 o, Vector3 d) {
     const Real len = length(d);
     return {o, d, d * (1.0 / len), len, len != 1};
 }
@@ -28,7 +28,7 @@ BlobElement sphere(Point3 c, Real r, Real s) {
     return e;
 }
 
-Blob make(Real threshold, std::vector<BlobElement> comps) {
+Blob blob_of(Real threshold, std::vector<BlobElement> comps) {
     Blob b;
     b.data = std::make_shared<BlobData>(make_blob(threshold, comps));
     return b;
@@ -36,9 +36,9 @@ Blob make(Real threshold, std::vector<BlobElement> comps) {
 
 TEST(ShapeBlob, SingleSphereHitsAtTheThresholdRadius) {
     // s (1 - r^2)^2 = t: r^2 = 1 - sqrt(t / s); s = 1, t = 0.25: r = sqrt(0.5).
-    const Blob b = make(0.25, {sphere({0, 0, 0}, 1, 1)});
+    const Blob b = blob_of(0.25, {sphere({0, 0, 0}, 1, 1)});
     ShapeHits hits;
-    shape_hits(b, ray({0, 0, -3}, {0, 0, 1}), hits);
+    shape_hits(b, ray_transformed_if_scaled({0, 0, -3}, {0, 0, 1}), hits);
     // One element: one interval holding both roots.
     ASSERT_EQ(hits.size(), 2u);
     EXPECT_NEAR(hits[0].t, 3 - std::sqrt(0.5), 1e-12);
@@ -52,9 +52,9 @@ TEST(ShapeBlob, EveryIntervalsHitsOutsideCsgToo) {
     // Two separate spheres along the ray: their intervals do not overlap. POV-Ray stops
     // after the first outside CSG and finds the others from restarted rays; povwall's one
     // ray keeps them all.
-    const Blob b = make(0.25, {sphere({0, 0, 0}, 1, 1), sphere({0, 0, 4}, 1, 1)});
+    const Blob b = blob_of(0.25, {sphere({0, 0, 0}, 1, 1), sphere({0, 0, 4}, 1, 1)});
     for (bool csg : {false, true}) {
-        LocalRay r = ray({0, 0, -3}, {0, 0, 1});
+        LocalRay r = ray_transformed_if_scaled({0, 0, -3}, {0, 0, 1});
         r.csg_child = csg;
         ShapeHits hits;
         shape_hits(b, r, hits);
@@ -67,17 +67,17 @@ TEST(ShapeBlob, EveryIntervalsHitsOutsideCsgToo) {
 TEST(ShapeBlob, TwoSpheresMergeAndTheDepthTolerance) {
     // Two unit spheres 1 apart, strength 1, threshold 0.5: at the midpoint each gives
     // (1 - 0.25)^2 = 0.5625, 1.125 in all, so the gap is bridged.
-    const Blob b = make(0.5, {sphere({-0.5, 0, 0}, 1, 1), sphere({0.5, 0, 0}, 1, 1)});
+    const Blob b = blob_of(0.5, {sphere({-0.5, 0, 0}, 1, 1), sphere({0.5, 0, 0}, 1, 1)});
     EXPECT_TRUE(shape_inside(b, {0, 0, 0}));
     EXPECT_NEAR(blob_field(*b.data, {0, 0, 0}), 1.125, 1e-15);
     // On the y axis: 2 (1 - (0.25 + y^2))^2 = 0.5, y^2 = 0.25.
     ShapeHits hits;
-    shape_hits(b, ray({0, 4, 0}, {0, -2, 0}), hits);
+    shape_hits(b, ray_transformed_if_scaled({0, 4, 0}, {0, -2, 0}), hits);
     ASSERT_EQ(hits.size(), 2u);
     EXPECT_NEAR(hits[0].t, 1.75, 1e-12);  // world distance along a length-2 direction
     EXPECT_NEAR(hits[1].t, 2.25, 1e-12);
     // A hit closer than 1e-2 is dropped: from just inside the surface only the far one.
-    LocalRay r = ray({0, 0.5 - 0.005, 0}, {0, -1, 0});
+    LocalRay r = ray_transformed_if_scaled({0, 0.5 - 0.005, 0}, {0, -1, 0});
     r.csg_child = true;
     hits.clear();
     shape_hits(b, r, hits);
@@ -85,16 +85,17 @@ TEST(ShapeBlob, TwoSpheresMergeAndTheDepthTolerance) {
     EXPECT_NEAR(hits[0].t, 0.995, 1e-12);
     // The inside margin: field > threshold - 1e-6.
     const Real edge = std::sqrt(1 - std::sqrt(0.5));  // one sphere alone: field 0.5
-    const Blob one = make(0.5 + 5e-7, {sphere({0, 0, 0}, 1, 1)});
+    const Blob one = blob_of(0.5 + 5e-7, {sphere({0, 0, 0}, 1, 1)});
     EXPECT_TRUE(shape_inside(one, {edge, 0, 0}));
-    EXPECT_FALSE(shape_inside(make(0.5 + 2e-6, {sphere({0, 0, 0}, 1, 1)}), {edge, 0, 0}));
+    EXPECT_FALSE(
+        shape_inside(blob_of(0.5 + 2e-6, {sphere({0, 0, 0}, 1, 1)}), {edge, 0, 0}));
 }
 
 TEST(ShapeBlob, NegativeComponentsCarveAndDoNotBound) {
-    const Blob b = make(0.5, {sphere({0, 0, 0}, 1, 1), sphere({0, 0, -1}, 1, -2)});
+    const Blob b = blob_of(0.5, {sphere({0, 0, 0}, 1, 1), sphere({0, 0, -1}, 1, -2)});
     // On the z axis the negative sphere cancels the near side: the hit moves in.
     ShapeHits hits;
-    shape_hits(b, ray({0, 0, -5}, {0, 0, 1}), hits);
+    shape_hits(b, ray_transformed_if_scaled({0, 0, -5}, {0, 0, 1}), hits);
     ASSERT_EQ(hits.size(), 2u);  // in and out
     const Real z = hits[0].t - 5;
     EXPECT_NEAR(hits[1].t - 5, std::sqrt(1 - std::sqrt(0.5)), 1e-12);
@@ -114,17 +115,17 @@ TEST(ShapeBlob, CylinderFieldAndBoxes) {
     c.rad2 = 1;
     c.c[2] = 1;
     c.transform = Transform::translate({0, 0, -1});  // z from -1 to 1 in blob space
-    const Blob b = make(0.25, {c});
+    const Blob b = blob_of(0.25, {c});
     ASSERT_EQ(b.data->elements.size(), 3u);
     // Across the body: r = sqrt(0.5) as for the sphere.
     ShapeHits hits;
-    shape_hits(b, ray({-3, 0, 0.3}, {1, 0, 0}), hits);
+    shape_hits(b, ray_transformed_if_scaled({-3, 0, 0.3}, {1, 0, 0}), hits);
     ASSERT_EQ(hits.size(), 2u);
     EXPECT_NEAR(hits[0].t, 3 - std::sqrt(0.5), 1e-12);
     EXPECT_NEAR(shape_normal(b, hits[0]).x, -1.0, 1e-15);
     // Along the axis: through the base hemisphere's cap.
     hits.clear();
-    shape_hits(b, ray({0, 0, -4}, {0, 0, 1}), hits);
+    shape_hits(b, ray_transformed_if_scaled({0, 0, -4}, {0, 0, 1}), hits);
     ASSERT_GE(hits.size(), 1u);
     EXPECT_NEAR(hits[0].t, 3 - std::sqrt(0.5), 1e-12);
     // The body's bounding sphere: centre at half its length, r^2 = rad2 + (len/2)^2,
@@ -169,7 +170,7 @@ TEST(ShapeBlob, TheTreeFindsWhatVisitingEveryElementFinds) {
     // The hierarchy only leaves out elements the line or point cannot reach: the same
     // bits as the blob without it, for hits, normals, the field and the nearest-only
     // queries (which stop after the first interval giving a wanted hit).
-    const Blob with_tree = make(0.6, random_components(300, 7));
+    const Blob with_tree = blob_of(0.6, random_components(300, 7));
     ASSERT_FALSE(with_tree.data->tree.empty());
     Blob without = with_tree;
     auto plain = std::make_shared<BlobData>(*with_tree.data);
@@ -184,7 +185,7 @@ TEST(ShapeBlob, TheTreeFindsWhatVisitingEveryElementFinds) {
         const Point3 o{reach * u(rng), reach * u(rng), reach * u(rng)};
         const Point3 aim{3 * u(rng), 3 * u(rng), 3 * u(rng)};
         const Vector3 d = (aim - o) * (k % 3 ? 1.0 : 0.37 / length(aim - o));
-        LocalRay r = ray(o, d);
+        LocalRay r = ray_transformed_if_scaled(o, d);
         ShapeHits a, b;
         shape_hits(with_tree, r, a);
         shape_hits(without, r, b);

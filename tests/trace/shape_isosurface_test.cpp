@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "parser/parser.h"
+#include "tests/trace/local_rays.h"
 #include "trace/shapes/isosurface.h"
 
 namespace povwall::trace {
@@ -17,17 +18,12 @@ Isosurface iso(const std::string& body) {
     return std::get<Isosurface>(s.objects.at(0).shape);
 }
 
-LocalRay ray(Point3 o, Vector3 d) {
-    const Real len = length(d);
-    return {o, d, d * (1.0 / len), len, false};
-}
-
 TEST(ShapeIsosurface, RootWithinAccuracyFromOutside) {
     // The sphere r = 0.5 in the default box, from z = -3: the box is entered at t = 2,
     // F > 0 there, and the root is at t = 2.5, found as the first halving end past it.
     const Isosurface s = iso("function { sqrt(x*x + y*y + z*z) - 0.5 }");
     ShapeHits hits;
-    LocalRay in_csg = ray({0, 0, -3}, {0, 0, 1});
+    LocalRay in_csg = untransformed_ray({0, 0, -3}, {0, 0, 1});
     in_csg.csg_child = true;
     shape_hits(s, in_csg, hits);
     ASSERT_EQ(hits.size(), 1u);  // max_trace 1
@@ -37,7 +33,7 @@ TEST(ShapeIsosurface, RootWithinAccuracyFromOutside) {
     // Outside CSG the search is made again from the hit, as POV-Ray's restarted ray
     // (a shadow through the surface): the far side too.
     hits.clear();
-    shape_hits(s, ray({0, 0, -3}, {0, 0, 1}), hits);
+    shape_hits(s, untransformed_ray({0, 0, -3}, {0, 0, 1}), hits);
     ASSERT_EQ(hits.size(), 2u);
     EXPECT_GE(hits[1].t, 3.5);
     EXPECT_LT(hits[1].t, 3.5 + 0.002);
@@ -45,7 +41,7 @@ TEST(ShapeIsosurface, RootWithinAccuracyFromOutside) {
     EXPECT_NEAR(n.z, -1.0, 1e-3);
     // World distances along a longer direction: the same point, half the distance.
     hits.clear();
-    shape_hits(s, ray({0, 0, -3}, {0, 0, 2}), hits);
+    shape_hits(s, untransformed_ray({0, 0, -3}, {0, 0, 2}), hits);
     ASSERT_EQ(hits.size(), 2u);
     EXPECT_GE(hits[0].t, 1.25);
     EXPECT_LT(hits[0].t, 1.25 + 0.001);
@@ -56,7 +52,7 @@ TEST(ShapeIsosurface, ClosedContainerWhereFIsInside) {
     // box's face is the hit (side 5: -z), with the face's normal.
     const Isosurface s = iso("function { x*x + y*y + z*z - 2 }");
     ShapeHits hits;
-    shape_hits(s, ray({0.2, 0.1, -3}, {0, 0, 1}), hits);
+    shape_hits(s, untransformed_ray({0.2, 0.1, -3}, {0, 0, 1}), hits);
     ASSERT_GE(hits.size(), 1u);
     EXPECT_EQ(hits[0].t, 2.0);
     EXPECT_EQ(hits[0].face, 5);
@@ -65,14 +61,14 @@ TEST(ShapeIsosurface, ClosedContainerWhereFIsInside) {
     // around, finding where it leaves (none inside the box: no hit).
     const Isosurface o = iso("function { x*x + y*y + z*z - 2 } open");
     hits.clear();
-    shape_hits(o, ray({0.2, 0.1, -3}, {0, 0, 1}), hits);
+    shape_hits(o, untransformed_ray({0.2, 0.1, -3}, {0, 0, 1}), hits);
     EXPECT_TRUE(hits.empty());
 }
 
 TEST(ShapeIsosurface, MaxTraceFindsTheFarSide) {
     const Isosurface one = iso("function { abs(z) - 0.5 } max_gradient 1.1");
     ShapeHits hits;
-    LocalRay r = ray({0, 0, -3}, {0, 0, 1});
+    LocalRay r = untransformed_ray({0, 0, -3}, {0, 0, 1});
     r.csg_child = true;
     shape_hits(one, r, hits);
     ASSERT_EQ(hits.size(), 1u);
@@ -97,7 +93,7 @@ TEST(ShapeIsosurface, AClippedRootUsesUpItsTrace) {
     // max_trace 1 sees nothing behind it (POV-Ray tests the clip inside the search);
     // max_trace 2 finds the far side.
     const Real from = 3.0;
-    LocalRay r = ray({0, 0, -3}, {0, 0, 1});
+    LocalRay r = untransformed_ray({0, 0, -3}, {0, 0, 1});
     r.csg_child = true;
     ShapeHits hits;
     shape_hits(iso("function { abs(z) - 0.5 } max_gradient 1.1"), r, keep_from(from),
@@ -118,7 +114,7 @@ TEST(ShapeIsosurface, AClippedContainerHitIsNoTrace) {
     // trace), then 2.25 (clipped, two), then 2.75, kept with max_trace 3 and not reached
     // with 2.
     const std::string f = "function { -cos(2 * pi * z) } max_gradient 7 ";
-    LocalRay r = ray({0, 0, -3}, {0, 0, 1});
+    LocalRay r = untransformed_ray({0, 0, -3}, {0, 0, 1});
     r.csg_child = true;
     ShapeHits hits;
     const Real all = -1, from = 2.5;
@@ -146,7 +142,7 @@ TEST(ShapeIsosurface, SphereContainerInsideAndBoxes) {
     // From below the sphere: F < 0 on its surface, the container's hit; its normal is the
     // sphere's.
     ShapeHits hits;
-    shape_hits(s, ray({0, -3, 0}, {0, 1, 0}), hits);
+    shape_hits(s, untransformed_ray({0, -3, 0}, {0, 1, 0}), hits);
     ASSERT_GE(hits.size(), 1u);
     EXPECT_NEAR(hits[0].t, 2.0, 1e-15);
     EXPECT_EQ(hits[0].face, 0);

@@ -9,8 +9,8 @@
 namespace povwall::trace {
 namespace {
 
-Lathe make(LatheSplineKind kind, const std::vector<ProfilePoint>& pts,
-           bool sturm = false) {
+Lathe make_lathe(LatheSplineKind kind, const std::vector<ProfilePoint>& pts,
+                 bool sturm = false) {
     return Lathe{std::make_shared<LatheSpline>(make_lathe_spline(kind, pts)), sturm};
 }
 
@@ -23,10 +23,10 @@ ShapeHits hits(const Lathe& s, const Point3& o, const Vector3& d) {
 }
 
 // A square outline r in [1, 2], h in [0, 1]: a tube with flat ends.
-const std::vector<ProfilePoint> kSquare = {{1, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 0}};
+const std::vector<ProfilePoint> kSquareProfile = {{1, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 0}};
 
 TEST(ShapeLathe, LinearTube) {
-    const Lathe s = make(LatheSplineKind::Linear, kSquare);
+    const Lathe s = make_lathe(LatheSplineKind::Linear, kSquareProfile);
     ASSERT_EQ(s.spline->segments.size(), 4u);
     EXPECT_EQ(s.spline->radius1, 1.0);
     EXPECT_EQ(s.spline->radius2, 2.0);
@@ -68,7 +68,7 @@ TEST(ShapeLathe, EveryKindThroughItsSolver) {
     };
     for (const Case& c : cases) {
         for (bool sturm : {false, true}) {
-            const Lathe s = make(c.kind, c.pts, sturm);
+            const Lathe s = make_lathe(c.kind, c.pts, sturm);
             ShapeHits h = hits(s, {-5, 0.25, 0.5}, {1, 0.1, 0});
             ASSERT_EQ(h.size(), 2u) << int(c.kind);
             const Real x = std::sqrt(0.75);
@@ -80,7 +80,7 @@ TEST(ShapeLathe, EveryKindThroughItsSolver) {
 
 TEST(ShapeLathe, CubicBoundsIncludeTheBulge) {
     // The Catmull-Rom segment between <1, 0> and <1, 1> bulges out toward <2, 0.5>.
-    const Lathe s = make(LatheSplineKind::Cubic, {{0, -1}, {1, 0}, {1, 1}, {0, 2}});
+    const Lathe s = make_lathe(LatheSplineKind::Cubic, {{0, -1}, {1, 0}, {1, 1}, {0, 2}});
     EXPECT_GT(s.spline->radius2, 1.0);
     const Real t = 0.5;
     const auto& e = s.spline->segments[0];

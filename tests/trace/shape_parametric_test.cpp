@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "parser/parser.h"
+#include "tests/trace/local_rays.h"
 #include "trace/shapes/parametric.h"
 
 namespace povwall::trace {
@@ -18,11 +19,6 @@ Parametric par(const std::string& body) {
     return std::get<Parametric>(s.objects.at(0).shape);
 }
 
-LocalRay ray(Point3 o, Vector3 d) {
-    const Real len = length(d);
-    return {o, d, d * (1.0 / len), len, false};
-}
-
 constexpr const char* kFlat =
     "function { u } function { v } function { 0 } <-1, -1>, <1, 1> ";
 
@@ -32,7 +28,7 @@ TEST(ShapeParametric, FlatSheetHitIsTheLastSpanStart) {
     // are -accuracy -+ max_gradient * (du + dv) / 2, and the hit is their near end.
     const Parametric s = par(kFlat);
     ShapeHits hits;
-    shape_hits(s, ray({0.3, 0.2, -3}, {0, 0, 1}), hits);
+    shape_hits(s, untransformed_ray({0.3, 0.2, -3}, {0, 0, 1}), hits);
     ASSERT_EQ(hits.size(), 1u);
     const Real piece = 2.0 / 2048;
     EXPECT_NEAR(hits[0].t, 3 - 0.001 - piece, 1e-12);
@@ -42,7 +38,7 @@ TEST(ShapeParametric, FlatSheetHitIsTheLastSpanStart) {
     EXPECT_EQ(std::fmod(hits[0].param + 1, piece), 0.0);
     // World distances along a longer direction: half.
     hits.clear();
-    shape_hits(s, ray({0.3, 0.2, -3}, {0, 0, 2}), hits);
+    shape_hits(s, untransformed_ray({0.3, 0.2, -3}, {0, 0, 2}), hits);
     ASSERT_EQ(hits.size(), 1u);
     EXPECT_NEAR(hits[0].t, (3 - 0.001 - piece) / 2, 1e-12);
     // The normal: d/du x d/dv = x cross y = +z (not turned toward the ray).
@@ -59,13 +55,13 @@ TEST(ShapeParametric, ContainerLimitsTheSearch) {
     const Parametric wide =
         par("function { 3*u } function { v } function { 0 } <-1, -1>, <1, 1>");
     ShapeHits hits;
-    shape_hits(wide, ray({2, 0, -3}, {0, 0, 1}), hits);
+    shape_hits(wide, untransformed_ray({2, 0, -3}, {0, 0, 1}), hits);
     EXPECT_TRUE(hits.empty());
     // From inside the container, closer than 4 * accuracy past its entry (the ray's
     // start here): no hit.
-    shape_hits(par(kFlat), ray({0.3, 0.2, -0.002}, {0, 0, 1}), hits);
+    shape_hits(par(kFlat), untransformed_ray({0.3, 0.2, -0.002}, {0, 0, 1}), hits);
     EXPECT_TRUE(hits.empty());
-    shape_hits(par(kFlat), ray({0.3, 0.2, -0.5}, {0, 0, 1}), hits);
+    shape_hits(par(kFlat), untransformed_ray({0.3, 0.2, -0.5}, {0, 0, 1}), hits);
     EXPECT_EQ(hits.size(), 1u);
 }
 
@@ -77,7 +73,7 @@ TEST(ShapeParametric, TorusNormalAndPrecompute) {
     const Parametric plain = par(torus);
     const Parametric pre = par(torus + "precompute 12 x, y, z");
     // Down onto the tube's top at x = 1: the surface at y = 0.3.
-    const LocalRay down = ray({1.0, 2, 0.01}, {0, -1, 0});
+    const LocalRay down = untransformed_ray({1.0, 2, 0.01}, {0, -1, 0});
     ShapeHits a, b;
     shape_hits(plain, down, a);
     shape_hits(pre, down, b);

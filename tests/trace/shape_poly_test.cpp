@@ -3,16 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "core/quadric.h"
+#include "tests/trace/local_rays.h"
 #include "trace/shapes/poly.h"
 #include "trace/shapes/quadric.h"
 
 namespace povwall::trace {
 namespace {
-
-LocalRay ray(Point3 o, Vector3 d) {
-    const Real len = length(d);
-    return {o, d, d * (1.0 / len), len, false};
-}
 
 // The unit sphere x^2 + y^2 + z^2 - 1 as a poly of order `order` (higher terms 0).
 Poly unit_sphere(int order) {
@@ -44,7 +40,7 @@ TEST(ShapePoly, SphereHitsAtEveryOrder) {
         p.sturm = order > 3;
         ShapeHits hits;
         // World direction of length 2: the world distances are half the object ones.
-        shape_hits(p, ray({0, 0, -3}, {0, 0, 2}), hits);
+        shape_hits(p, untransformed_ray({0, 0, -3}, {0, 0, 2}), hits);
         // Along z the terms above z^2 add exactly 0: the solver gets the quadratic.
         ASSERT_EQ(hits.size(), 2u) << order;
         EXPECT_DOUBLE_EQ(hits[0].t, 1.0) << order;
@@ -69,17 +65,18 @@ TEST(ShapePoly, LinearAlongTheRayIsNoHit) {
     c.coeffs[0] = 1;
     c.coeffs[15] = 1;
     ShapeHits hits;
-    shape_hits(c, ray({0.5, 3, 0}, {0, -1, 0}), hits);
+    shape_hits(c, untransformed_ray({0.5, 3, 0}, {0, -1, 0}), hits);
     EXPECT_TRUE(hits.empty());
     // Tilted, the cubic is met.
-    shape_hits(c, ray({0.5, 3, 0}, {0.001, -1, 0}), hits);
+    shape_hits(c, untransformed_ray({0.5, 3, 0}, {0.001, -1, 0}), hits);
     EXPECT_FALSE(hits.empty());
 }
 
 TEST(ShapePoly, DepthToleranceInObjectUnits) {
     Poly p = unit_sphere(2);
     ShapeHits hits;
-    shape_hits(p, ray({0, 0, -1 - 5e-5}, {0, 0, 1}), hits);  // first root 5e-5: dropped
+    shape_hits(p, untransformed_ray({0, 0, -1 - 5e-5}, {0, 0, 1}),
+               hits);  // first root 5e-5: dropped
     ASSERT_EQ(hits.size(), 1u);
     EXPECT_NEAR(hits[0].t, 2 + 5e-5, 1e-12);
 }
@@ -88,7 +85,7 @@ TEST(ShapeQuadric, HitsNormalsInsideAndTransform) {
     Quadric q;  // unit sphere
     quadric_transform(q, Transform::translate({2, 0, 0}));
     ShapeHits hits;
-    shape_hits(q, ray({2, 0, -3}, {0, 0, 1}), hits);
+    shape_hits(q, untransformed_ray({2, 0, -3}, {0, 0, 1}), hits);
     ASSERT_EQ(hits.size(), 2u);
     EXPECT_DOUBLE_EQ(hits[0].t, 2.0);
     EXPECT_DOUBLE_EQ(hits[1].t, 4.0);
@@ -99,7 +96,7 @@ TEST(ShapeQuadric, HitsNormalsInsideAndTransform) {
     EXPECT_FALSE(shape_inside(q, {0, 0, 0}));
     // A tangent ray misses (no single-root case).
     hits.clear();
-    shape_hits(q, ray({3, 0, -3}, {0, 0, 1}), hits);
+    shape_hits(q, untransformed_ray({3, 0, -3}, {0, 0, 1}), hits);
     EXPECT_TRUE(hits.empty());
 }
 

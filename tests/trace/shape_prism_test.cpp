@@ -10,7 +10,7 @@
 namespace povwall::trace {
 namespace {
 
-Object parse_one(const std::string& text) {
+Object parse_one_prism(const std::string& text) {
     parser::ParseOptions o;
     Scene s = parser::parse_scene_text(text, "test.pov", o);
     EXPECT_EQ(s.objects.size(), 1u);
@@ -23,11 +23,11 @@ ShapeHits hits_of(const Object& o, const Point3& origin, const Vector3& dir) {
     return hits;
 }
 
-const char* kSquare =
+const char* kSquarePrism =
     "prism { linear_spline 0, 1, 5, <-1, -1>, <1, -1>, <1, 1>, <-1, 1>, <-1, -1> }";
 
 TEST(Prism, LinearWallsAndCapsAtExactDistances) {
-    const Object o = parse_one(kSquare);
+    const Object o = parse_one_prism(kSquarePrism);
     ASSERT_TRUE(std::holds_alternative<Prism>(o.shape));
     EXPECT_EQ(std::get<Prism>(o.shape).segments.size(), 4u);
     // Along +z at mid height: in through the wall z = -1, out through z = 1.
@@ -53,7 +53,7 @@ TEST(Prism, LinearWallsAndCapsAtExactDistances) {
 }
 
 TEST(Prism, InsideIsEvenOddWithAnOpenTop) {
-    const Object o = parse_one(
+    const Object o = parse_one_prism(
         "prism { linear_spline 0, 1, 10, <-1,-1>, <1,-1>, <1,1>, <-1,1>, <-1,-1>,"
         " <-0.5,-0.5>, <0.5,-0.5>, <0.5,0.5>, <-0.5,0.5>, <-0.5,-0.5> }");
     EXPECT_TRUE(leaf_inside(o, {0.75, 0.5, 0}));
@@ -64,7 +64,7 @@ TEST(Prism, InsideIsEvenOddWithAnOpenTop) {
 }
 
 TEST(Prism, ConicSweepScalesTheOutlineWithHeight) {
-    const Object o = parse_one(
+    const Object o = parse_one_prism(
         "prism { conic_sweep linear_spline 0.5, 1, 5, <-1,-1>, <1,-1>, <1,1>, <-1,1>, "
         "<-1,-1> }");
     // At y = 0.5 the square is half as wide: along +x at z = 0 it is entered at x = -0.5.
@@ -82,7 +82,7 @@ TEST(Prism, ConicSweepScalesTheOutlineWithHeight) {
 }
 
 TEST(Prism, OpenPrismHasNoCaps) {
-    Object o = parse_one(
+    Object o = parse_one_prism(
         "prism { linear_spline 0, 1, 5, <-1,-1>, <1,-1>, <1,1>, <-1,1>, <-1,-1> open }");
     EXPECT_TRUE(std::get<Prism>(o.shape).open);
     EXPECT_TRUE(hits_of(o, {0.3, 5, 0.2}, {0, -1, 0}).empty());
@@ -90,7 +90,7 @@ TEST(Prism, OpenPrismHasNoCaps) {
 
 TEST(Prism, CubicAndBezierOutlinesMatchTheirPoints) {
     // A Bezier segment from <1,0> over control points back: t = 0 is its last point.
-    const Object o = parse_one(
+    const Object o = parse_one_prism(
         "prism { bezier_spline 0, 1, 8, <-1, 0>, <-1, 1>, <1, 1>, <1, 0>,"
         " <1, 0>, <1, -1>, <-1, -1>, <-1, 0> }");
     const Prism& p = std::get<Prism>(o.shape);

@@ -10,7 +10,7 @@
 namespace povwall::trace {
 namespace {
 
-Sor make(const std::vector<ProfilePoint>& pts, bool open = false) {
+Sor make_sor(const std::vector<ProfilePoint>& pts, bool open = false) {
     auto spline = std::make_shared<SorSpline>();
     EXPECT_EQ(make_sor_spline(pts, *spline), "");
     return Sor{spline, open, false};
@@ -28,7 +28,7 @@ ShapeHits hits(const Sor& s, const Point3& o, const Vector3& d) {
 const std::vector<ProfilePoint> kCylinder = {{1, -1}, {1, 0}, {1, 1}, {1, 2}, {1, 3}};
 
 TEST(ShapeSor, ConstantRadiusIsACylinder) {
-    const Sor s = make(kCylinder);
+    const Sor s = make_sor(kCylinder);
     ASSERT_EQ(s.spline->segments.size(), 2u);
     for (const auto& e : s.spline->segments) {
         EXPECT_EQ(e.a, 0);
@@ -54,12 +54,12 @@ TEST(ShapeSor, ConstantRadiusIsACylinder) {
     EXPECT_EQ(h[1].face, kSorBase);
     EXPECT_NEAR(h[1].t, 5, 1e-15);
     EXPECT_EQ(sor_normal(s, h[0].p, kSorCap).y, 1);
-    EXPECT_TRUE(hits(make(kCylinder, true), {0.3, 5, 0}, {0, -1, 0}).empty());
+    EXPECT_TRUE(hits(make_sor(kCylinder, true), {0.3, 5, 0}, {0, -1, 0}).empty());
 }
 
 TEST(ShapeSor, ConeInterpolatesRSquared) {
     // r = h on [0, 2] with matching end slopes: r^2 = h^2 exactly.
-    const Sor s = make({{-1, -1}, {0, 0}, {1, 1}, {2, 2}, {3, 3}});
+    const Sor s = make_sor({{-1, -1}, {0, 0}, {1, 1}, {2, 2}, {3, 3}});
     for (const auto& e : s.spline->segments) {
         EXPECT_NEAR(e.a, 0, 1e-12);
         EXPECT_NEAR(e.b, 1, 1e-12);
@@ -85,7 +85,7 @@ TEST(ShapeSor, ErrorsOfTheSpline) {
 }
 
 TEST(ShapeSor, BoundingCylinderIntervalsInEntryOrder) {
-    const Sor s = make(kCylinder);
+    const Sor s = make_sor(kCylinder);
     std::vector<SegmentInterval> in;
     // Down the axis inside the wall: no thick cylinder is met (the caps are).
     bounding_cylinder_intervals(s.spline->cylinders, {0.5, 5, 0}, {0, -1, 0}, in);
@@ -105,7 +105,7 @@ TEST(ShapeSor, BoundingCylinderIntervalsInEntryOrder) {
     ASSERT_EQ(in.size(), 1u);
     EXPECT_EQ(in[0].entry, 0.5);
     // From inside a thick cylinder (the cone r = h): entered at 0.
-    const Sor cone = make({{-1, -1}, {0, 0}, {1, 1}, {2, 2}});
+    const Sor cone = make_sor({{-1, -1}, {0, 0}, {1, 1}, {2, 2}});
     bounding_cylinder_intervals(cone.spline->cylinders, {0.5, 0.5, 0}, {1, 0, 0}, in);
     ASSERT_EQ(in.size(), 1u);
     EXPECT_EQ(in[0].entry, 0);

@@ -10,7 +10,7 @@
 namespace povwall::trace {
 namespace {
 
-SphereSweep make(SweepSpline spline, std::vector<SweepSphere> spheres) {
+SphereSweep make_sweep(SweepSpline spline, std::vector<SweepSphere> spheres) {
     SphereSweep s;
     s.data =
         std::make_shared<SphereSweepData>(make_sphere_sweep(spline, std::move(spheres)));
@@ -29,7 +29,7 @@ ShapeHits hits(const SphereSweep& s, const Point3& o, const Vector3& d) {
 const std::vector<SweepSphere> kCapsule = {{{0, 0, 0}, 1}, {{4, 0, 0}, 1}};
 
 TEST(ShapeSphereSweep, LinearAcrossTheTube) {
-    const SphereSweep s = make(SweepSpline::Linear, kCapsule);
+    const SphereSweep s = make_sweep(SweepSpline::Linear, kCapsule);
     // Straight down through the middle: the ray meets the axis at a right angle, so the
     // envelope's double root u = 0.5 is met as its sphere.
     ShapeHits h = hits(s, {2, 5, 0}, {0, -1, 0});
@@ -51,7 +51,7 @@ TEST(ShapeSphereSweep, LinearAcrossTheTube) {
 }
 
 TEST(ShapeSphereSweep, AlongTheAxisCapsAndInnerSphereHitsAreCulled) {
-    const SphereSweep s = make(SweepSpline::Linear, kCapsule);
+    const SphereSweep s = make_sweep(SweepSpline::Linear, kCapsule);
     // Joint spheres at 4, 6 and 8, 10, caps at 5 and 9 (no envelope: its polynomial
     // vanishes): only the first entry and the last exit survive.
     std::vector<SweepCrossing> all;
@@ -72,13 +72,14 @@ TEST(ShapeSphereSweep, AlongTheAxisCapsAndInnerSphereHitsAreCulled) {
 }
 
 TEST(ShapeSphereSweep, InsideIsARootInTheSegment) {
-    const SphereSweep s = make(SweepSpline::Linear, kCapsule);
+    const SphereSweep s = make_sweep(SweepSpline::Linear, kCapsule);
     EXPECT_TRUE(shape_inside(s, {2, 0, 0}));
     EXPECT_TRUE(shape_inside(s, {-0.5, 0.5, 0}));  // in the end sphere
     EXPECT_FALSE(shape_inside(s, {2, 2, 0}));
     EXPECT_FALSE(shape_inside(s, {-1.5, 0, 0}));
     // POV-Ray's quirk: deep inside a short fat segment no root lies in [0, 1].
-    const SphereSweep fat = make(SweepSpline::Linear, {{{0, 0, 0}, 1}, {{0.1, 0, 0}, 1}});
+    const SphereSweep fat =
+        make_sweep(SweepSpline::Linear, {{{0, 0, 0}, 1}, {{0.1, 0, 0}, 1}});
     EXPECT_FALSE(shape_inside(fat, {0.05, 0, 0}));
     EXPECT_TRUE(shape_inside(fat, {-0.9, 0.3, 0}));
 }
@@ -86,8 +87,8 @@ TEST(ShapeSphereSweep, InsideIsARootInTheSegment) {
 TEST(ShapeSphereSweep, CubicEnvelopeThroughTheDegreeTenPolynomial) {
     // A B-spline through evenly spaced spheres is the straight capsule x in [1, 2].
     const SphereSweep s =
-        make(SweepSpline::BSpline,
-             {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{2, 0, 0}, 1}, {{3, 0, 0}, 1}});
+        make_sweep(SweepSpline::BSpline,
+                   {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{2, 0, 0}, 1}, {{3, 0, 0}, 1}});
     ASSERT_EQ(s.data->joints.size(), 2u);
     EXPECT_NEAR(s.data->joints[0].centre.x, 1.0, 1e-15);
     EXPECT_NEAR(s.data->joints[1].centre.x, 2.0, 1e-15);
@@ -123,7 +124,7 @@ TEST(ShapeSphereSweep, BernsteinSignTest) {
 }
 
 TEST(ShapeSphereSweep, MatrixDistancesAreWorldAndPointsObject) {
-    SphereSweep s = make(SweepSpline::Linear, kCapsule);
+    SphereSweep s = make_sweep(SweepSpline::Linear, kCapsule);
     s.has_matrix = true;
     // The object is scaled by 2 in world: its ray direction has length 0.5.
     const Vector3 dir{0, -0.5, 0};
@@ -137,7 +138,7 @@ TEST(ShapeSphereSweep, MatrixDistancesAreWorldAndPointsObject) {
 }
 
 TEST(ShapeSphereSweep, Boxes) {
-    const SphereSweep s = make(SweepSpline::Linear, kCapsule);
+    const SphereSweep s = make_sweep(SweepSpline::Linear, kCapsule);
     const Bounds3 b = shape_bounds(s);
     EXPECT_LE(b.lo.x, -1);
     EXPECT_GE(b.hi.x, 5);
@@ -147,11 +148,12 @@ TEST(ShapeSphereSweep, Boxes) {
     EXPECT_EQ(pb.len[0], 6.0f);
     // Catmull-Rom: twice the radii.
     const SphereSweep cr =
-        make(SweepSpline::CatmullRom,
-             {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{2, 0, 0}, 1}, {{3, 0, 0}, 1}});
+        make_sweep(SweepSpline::CatmullRom,
+                   {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{2, 0, 0}, 1}, {{3, 0, 0}, 1}});
     EXPECT_EQ(shape_pov_bbox(cr, CompactTransform{}).lo[1], -2.0f);
     // A negative radius inverts it.
-    const SphereSweep neg = make(SweepSpline::Linear, {{{0, 0, 0}, -1}, {{4, 0, 0}, -1}});
+    const SphereSweep neg =
+        make_sweep(SweepSpline::Linear, {{{0, 0, 0}, -1}, {{4, 0, 0}, -1}});
     EXPECT_EQ(shape_pov_bbox(neg, CompactTransform{}).len[1], -2.0f);
 }
 

@@ -5,6 +5,7 @@
 #include <memory>
 #include <random>
 
+#include "tests/trace/local_rays.h"
 #include "trace/shapes/text.h"
 
 namespace povwall::trace {
@@ -29,14 +30,9 @@ Glyph square_glyph(Real depth) {
     return {g, depth};
 }
 
-LocalRay ray(Point3 o, Vector3 d) {
-    const Real len = length(d);
-    return {o, d, d * (1 / len), len};
-}
-
 TEST(GlyphShape, RayAlongZMeetsOnlyTheFaces) {
     ShapeHits hits;
-    shape_hits(square_glyph(0.5), ray({0.5, 0.5, -1}, {0, 0, 1}), hits);
+    shape_hits(square_glyph(0.5), transformed_ray({0.5, 0.5, -1}, {0, 0, 1}), hits);
     ASSERT_EQ(hits.size(), 2u);
     EXPECT_EQ(hits[0].t, 1.0);
     EXPECT_EQ(hits[1].t, 1.5);
@@ -48,7 +44,7 @@ TEST(GlyphShape, RayInThePlaneMeetsTheSidesInSegmentOrder) {
     const Glyph g = square_glyph(0.5);
     ShapeHits hits;
     // The direction is not normalised: t stays the world parameter.
-    shape_hits(g, ray({-1, 0.5, 0.25}, {2, 0, 0}), hits);
+    shape_hits(g, transformed_ray({-1, 0.5, 0.25}, {2, 0, 0}), hits);
     ASSERT_EQ(hits.size(), 2u);
     EXPECT_EQ(hits[0].t, 0.5);
     EXPECT_EQ(hits[1].t, 1.0);
@@ -57,13 +53,13 @@ TEST(GlyphShape, RayInThePlaneMeetsTheSidesInSegmentOrder) {
     EXPECT_EQ(shape_normal(g, hits[1]), Vector3(-1, 0, 0));
     // Outside the slab 0 <= z <= depth the sides are not hit.
     hits.clear();
-    shape_hits(g, ray({-1, 0.5, 0.75}, {1, 0, 0}), hits);
+    shape_hits(g, transformed_ray({-1, 0.5, 0.75}, {1, 0, 0}), hits);
     EXPECT_TRUE(hits.empty());
 }
 
 TEST(GlyphShape, HitsBehindTheToleranceAreDropped) {
     ShapeHits hits;
-    shape_hits(square_glyph(0.5), ray({0.5, 0.5, -1e-7}, {0, 0, 1}), hits);
+    shape_hits(square_glyph(0.5), transformed_ray({0.5, 0.5, -1e-7}, {0, 0, 1}), hits);
     ASSERT_EQ(hits.size(), 1u);  // the front face at 1e-7 < 1e-6 is not taken
     EXPECT_EQ(hits[0].t, 0.5 + 1e-7);
 }
@@ -88,7 +84,7 @@ TEST(GlyphShape, CurveSideHitAndNormal) {
     outline->segments.push_back(line(2, 0, 0, 0));
     const Glyph g{outline, 1};
     ShapeHits hits;
-    shape_hits(g, ray({1, -1, 0.25}, {0, 1, 0}), hits);
+    shape_hits(g, transformed_ray({1, -1, 0.25}, {0, 1, 0}), hits);
     ASSERT_EQ(hits.size(), 2u);
     EXPECT_EQ(hits[0].t, 1.5);  // the arch's top at s = 0.5
     EXPECT_EQ(hits[1].t, 1.0);  // the base line
@@ -111,7 +107,7 @@ TEST(GlyphShape, SolverMissesTangents) {
 
 TEST(GlyphShape, ClosestHitQueryStopsAtTheFirstCap) {
     const Glyph g = square_glyph(0.5);
-    LocalRay r = ray({0.5, 0.5, -1}, {0, 0, 1});
+    LocalRay r = transformed_ray({0.5, 0.5, -1}, {0, 0, 1});
     r.nearest_only = true;
     ShapeHits hits;
     shape_hits(g, r, hits);
@@ -119,7 +115,7 @@ TEST(GlyphShape, ClosestHitQueryStopsAtTheFirstCap) {
     EXPECT_EQ(hits[0].t, 1.0);
     EXPECT_EQ(shape_normal(g, hits[0]), Vector3(0, 0, -1));
     // From behind, the back face is met first.
-    r = ray({0.5, 0.5, 2}, {0, 0, -1});
+    r = transformed_ray({0.5, 0.5, 2}, {0, 0, -1});
     r.nearest_only = true;
     hits.clear();
     shape_hits(g, r, hits);
@@ -155,7 +151,7 @@ TEST(GlyphShape, ClosestHitQueryKeepsTheNearestCrossing) {
     for (int i = 0; i < 20000; ++i) {
         const Point3 o{u(rng), u(rng), u(rng) * 2 - 1};
         const Point3 target{u(rng) * 0.6 + 0.2, u(rng) * 0.6 + 0.2, u(rng) * 0.2};
-        LocalRay r = ray(o, target - o);
+        LocalRay r = transformed_ray(o, target - o);
         const Real hi = i % 3 == 0 ? 2.0 * u(rng) + 2 : kInfinity;
         ShapeHits all, kept;
         shape_hits(g, r, all);

@@ -8,8 +8,8 @@
 namespace povwall::trace {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;   // BEZIER_EPSILON
-constexpr Real kTolerance = 1e-5;  // BEZIER_TOLERANCE: nearer hits are dropped
+constexpr Real kBezierEpsilon = 1e-10;  // BEZIER_EPSILON
+constexpr Real kTolerance = 1e-5;       // BEZIER_TOLERANCE: nearer hits are dropped
 
 // POV-Ray's sphere test of a piece: the origin inside, or the ray's line passing within
 // the radius (in front of the origin or not).
@@ -19,7 +19,7 @@ bool meets_sphere(const BicubicPatchData::Node& n, const Point3& o, const Vector
     if (l < n.radius2) return true;
     const Real along = dot(v, d);
     const Real s = along * along;
-    return s > 0 && l - s <= n.radius2 + kEpsilon;
+    return s > 0 && l - s <= n.radius2 + kBezierEpsilon;
 }
 
 // Visits the tree in POV-Ray's order (preorder, children in order).
@@ -48,7 +48,7 @@ void shape_hits(const BicubicPatch& p, const LocalRay& r, ShapeHits& out) {
             const BicubicPatchData::Triangle& t = d.leaves[leaf][size_t(k)];
             if (!t.valid) continue;
             const Real den = dot(dir, t.e2);
-            if (std::fabs(den) < kEpsilon) continue;
+            if (std::fabs(den) < kBezierEpsilon) continue;
             const Real dist = dot(t.v0 - o, t.e2) / den;
             if (dist < kTolerance) continue;
             const Point3 hit = o + dir * dist;
@@ -66,7 +66,7 @@ Vector3 shape_normal(const BicubicPatch& p, const ShapeHit& h) {
         p.data->leaves[size_t(h.face / 2)][size_t(h.face % 2)];
     const Real r = 1 - h.param - h.param2;
     const Vector3 n = t.normal[0] * r + t.normal[1] * h.param + t.normal[2] * h.param2;
-    if (dot(n, n) <= kEpsilon) return {1, 0, 0};
+    if (dot(n, n) <= kBezierEpsilon) return {1, 0, 0};
     return n / length(n);
 }
 

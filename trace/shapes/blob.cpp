@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/math_constants.h"
 #include "core/pov_polysolve.h"
 #include "trace/roots_sturm.h"
 #include "trace/shapes/oracle_math.h"
@@ -14,7 +15,6 @@ namespace {
 
 using Kind = BlobElementKind;
 
-constexpr Real kEpsilon = 1e-10;       // POV-Ray's EPSILON
 constexpr Real kBlobBoundHuge = 2e10;  // BOUND_HUGE
 constexpr Real kBlobSmallTolerance = 1e-3;
 
@@ -26,7 +26,7 @@ bool sphere_interval(const BlobElement& e, const Point3& P, const Vector3& D,
     const Real b = dot(v, D);
     const Real t = dot(v, v);
     Real d = b * b - t + e.rad2;
-    if (d < kEpsilon) return false;
+    if (d < kPovEpsilon) return false;
     d = std::sqrt(d);
     tmax = -b + d;
     if (tmax < mindist) tmax = 0.0;
@@ -56,7 +56,7 @@ bool ellipsoid_interval(const BlobElement& e, const Point3& P, const Vector3& D,
     const Real b = dot(v, dd);
     const Real t = dot(v, v);
     Real d = b * b - t + e.rad2;
-    if (d < kEpsilon) return false;
+    if (d < kPovEpsilon) return false;
     d = std::sqrt(d);
     tmax = (-b + d) / len;
     if (tmax < mindist) tmax = 0.0;
@@ -78,7 +78,7 @@ bool hemisphere_interval(const BlobElement& e, const Point3& P, const Vector3& D
     const Real b = dot(pp, dd);
     const Real t = dot(pp, pp);
     Real d = b * b - t + e.rad2;
-    if (d < kEpsilon) return false;
+    if (d < kPovEpsilon) return false;
     d = std::sqrt(d);
     tmax = -b + d;
     tmin = -b - d;
@@ -115,11 +115,11 @@ bool cylinder_interval(const BlobElement& e, const Point3& P, const Vector3& D,
         if (t > tmax) tmax = t;
     };
     const Real a = dd.x * dd.x + dd.y * dd.y;
-    if (a > kEpsilon) {
+    if (a > kPovEpsilon) {
         const Real b = pp.x * dd.x + pp.y * dd.y;
         const Real c = pp.x * pp.x + pp.y * pp.y - e.rad2;
         Real d = b * b - a * c;
-        if (d > kEpsilon) {
+        if (d > kPovEpsilon) {
             d = std::sqrt(d);
             Real t = (-b + d) / a;
             Real w = pp.z + t * dd.z;
@@ -129,7 +129,7 @@ bool cylinder_interval(const BlobElement& e, const Point3& P, const Vector3& D,
             if (w >= 0.0 && w <= e.len) take(t);
         }
     }
-    if (std::fabs(dd.z) > kEpsilon) {
+    if (std::fabs(dd.z) > kPovEpsilon) {
         Real t = -pp.z / dd.z;
         Real u = pp.x + t * dd.x;
         Real v = pp.y + t * dd.y;
@@ -416,7 +416,7 @@ void blob_element_sphere(const BlobElement& e, Point3& centre, Real& radius2) {
     const Real side =
         std::max({std::fabs(Real(moved.len[0])), std::fabs(Real(moved.len[1])),
                   std::fabs(Real(moved.len[2]))});
-    radius2 = side * side + kEpsilon;
+    radius2 = side * side + kPovEpsilon;
 }
 
 void shape_hits(const Blob& s, const LocalRay& r, ShapeHits& out) {
@@ -469,7 +469,7 @@ void shape_hits(const Blob& s, const LocalRay& r, ShapeHits& out) {
         }
         if (i + 1 >= cnt) continue;  // (POV-Ray reads past its list here; never reached)
         // A neighbouring bound: take its change in before looking for roots.
-        if (std::fabs(ev[i].bound - ev[i + 1].bound) < kEpsilon) continue;
+        if (std::fabs(ev[i].bound - ev[i + 1].bound) < kPovEpsilon) continue;
         const Real lo = ev[i].bound, hi = ev[i + 1].bound;
         // Every root from here on is at least this far (the distance grows with the
         // root): past the wanted range, none is wanted.

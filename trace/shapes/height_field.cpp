@@ -3,18 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/math_constants.h"
+#include "trace/pov_bounds.h"
 #include "trace/shapes/oracle_math.h"
 #include "trace/shapes/sort_hits.h"
 
 namespace povwall::trace {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;        // POV-Ray's EPSILON
 constexpr Real kStartTolerance = 1e-6;  // HFIELD_TOLERANCE: the nearest depth tried
 constexpr Real kSnap = 0.001;           // HFIELD_OFFSET: how far a block entry may miss
 constexpr Real kEdge = 1e-4;            // a triangle's (s, u) margin
 constexpr Real kBoxClose = 1e-6;        // Box::Intersect's CLOSE_TOLERANCE
-constexpr Real kHuge = 2e10;            // BOUND_HUGE
 
 Real sign_of(Real v) { return v >= 0 ? 1.0 : -1.0; }
 
@@ -25,10 +25,10 @@ bool box_depths(const HeightFieldData& d, const Point3& P, const Vector3& D, Rea
     const Real lo[3] = {0, d.floor_y, 0};
     const Real hi[3] = {Real(d.width - 1), d.top_y, Real(d.depth - 1)};
     tmin = 0;
-    tmax = kHuge;
+    tmax = kBoundHuge;
     for (int a = 0; a < 3; ++a) {
         const Real close = a == 0 ? 0 : kBoxClose;
-        if (D[a] < -kEpsilon || D[a] > kEpsilon) {
+        if (D[a] < -kPovEpsilon || D[a] > kPovEpsilon) {
             const bool down = D[a] < 0;
             Real t = ((down ? lo[a] : hi[a]) - P[a]) / D[a];
             if (t < tmin) return false;
@@ -103,17 +103,17 @@ class Walk {
         Real px = start.x, pz = start.z;
         const int xmin = b.xmin, xmax = std::min(b.xmax + 1, d_.max_x);
         const int zmin = b.zmin, zmax = std::min(b.zmax + 1, d_.max_z);
-        const Real ymin = std::min(start.y, b.ymin) - kEpsilon;
-        const Real ymax = std::max(start.y, b.ymax) + kEpsilon;
+        const Real ymin = std::min(start.y, b.ymin) - kPovEpsilon;
+        const Real ymax = std::max(start.y, b.ymax) + kPovEpsilon;
         // An entry just outside the block (round-off) is moved in; farther off, the block
         // is skipped.
         auto snap = [](Real& p, int lo, int hi) {
             if (p < Real(lo)) {
                 if (p < Real(lo) - kSnap) return false;
                 p = Real(lo);
-            } else if (p > Real(hi) + 1.0 - kEpsilon) {
-                if (p > Real(hi) + 1.0 + kEpsilon) return false;
-                p = Real(hi) + 1.0 - kEpsilon;
+            } else if (p > Real(hi) + 1.0 - kPovEpsilon) {
+                if (p > Real(hi) + 1.0 + kPovEpsilon) return false;
+                p = Real(hi) + 1.0 - kPovEpsilon;
             }
             return true;
         };
@@ -134,7 +134,7 @@ class Walk {
         Real neary = start.y - (da >= 0 ? a0 : 1.0 - a0) * deltay;
         Real fary = neary + deltay;
         // The z-driven loop widens its height test once more (as POV-Ray's).
-        const Real slack = x_drives ? 0 : kEpsilon;
+        const Real slack = x_drives ? 0 : kPovEpsilon;
         bool found = false;
         auto test = [&](int ia, int ic, Real y1, Real y2) {
             return x_drives ? cell(ia, ic, y1, y2) : cell(ic, ia, y1, y2);
@@ -145,7 +145,7 @@ class Walk {
                 if (!all_) return true;
                 found = true;
             }
-            if (error > kEpsilon) {
+            if (error > kPovEpsilon) {
                 c += sc;
                 if (c < cmin || c > cmax) break;
                 if (test(a, c, y1, y2)) {
@@ -153,7 +153,7 @@ class Walk {
                     found = true;
                 }
                 error -= 1;
-            } else if (error > -kEpsilon) {
+            } else if (error > -kPovEpsilon) {
                 c += sc;
                 error -= 1;
             }
@@ -168,10 +168,10 @@ class Walk {
 
     // The walk over the block grid from `start`.
     bool blocks(const Point3& start) {
-        const Real ymin = Real(d_.min_height) - kEpsilon;
-        const Real ymax = Real(d_.max_height) + kEpsilon;
-        const bool dx_zero = std::fabs(D_.x) < kEpsilon,
-                   dz_zero = std::fabs(D_.z) < kEpsilon;
+        const Real ymin = Real(d_.min_height) - kPovEpsilon;
+        const Real ymax = Real(d_.max_height) + kPovEpsilon;
+        const bool dx_zero = std::fabs(D_.x) < kPovEpsilon,
+                   dz_zero = std::fabs(D_.z) < kPovEpsilon;
         const int sx = int(sign_of(D_.x)), sz = int(sign_of(D_.z));
         // Signed, as POV-Ray's (it can be negative).
         const Real maxdv = D_.x > D_.z ? D_.x : D_.z;
@@ -183,18 +183,18 @@ class Walk {
         do {
             const HeightFieldBlock& b = d_.block(x, z);
             const Real k1 =
-                dx_zero ? kHuge
+                dx_zero ? kBoundHuge
                         : ((sx >= 0 ? Real(b.xmax) + 1.0 : Real(b.xmin)) - O_.x) / D_.x;
             const Real k2 =
-                dz_zero ? kHuge
+                dz_zero ? kBoundHuge
                         : ((sz >= 0 ? Real(b.zmax) + 1.0 : Real(b.zmin)) - O_.z) / D_.z;
             Real dist;
             int nx, nz;
-            if (dz_zero || (!dx_zero && k1 < k2 - kEpsilon / maxdv && k1 > 0)) {
+            if (dz_zero || (!dx_zero && k1 < k2 - kPovEpsilon / maxdv && k1 > 0)) {
                 dist = k1;
                 nx = x + sx;
                 nz = z;
-            } else if (dz_zero || (!dx_zero && k1 < k2 + kEpsilon / maxdv && k1 > 0)) {
+            } else if (dz_zero || (!dx_zero && k1 < k2 + kPovEpsilon / maxdv && k1 > 0)) {
                 dist = k1;
                 nx = x + sx;
                 nz = z + sz;
@@ -205,7 +205,8 @@ class Walk {
             }
             const Point3 far_p = O_ + D_ * dist;
             const Real y1 = std::min(neary, far_p.y), y2 = std::max(neary, far_p.y);
-            if (y1 <= b.ymax + kEpsilon && y2 >= b.ymin - kEpsilon && dda(near_p, b)) {
+            if (y1 <= b.ymax + kPovEpsilon && y2 >= b.ymin - kPovEpsilon &&
+                dda(near_p, b)) {
                 if (!all_) return true;
                 found = true;
             }
@@ -223,7 +224,7 @@ class Walk {
     // depths; false for a ray nearly parallel to it.
     bool plane_depth(const Vector3& N, const Point3& P0, Real& t) const {
         const Real dot_nd = dot(N, D_);
-        if (!(dot_nd > kEpsilon || dot_nd < -kEpsilon)) return false;
+        if (!(dot_nd > kPovEpsilon || dot_nd < -kPovEpsilon)) return false;
         t = dot(N, P0 - O_) / dot_nd;
         return t >= mindist_ && t <= maxdist_;
     }
@@ -289,7 +290,7 @@ void shape_hits(const HeightField& h, const LocalRay& r, ShapeHits& out) {
     const size_t first = out.size();
     const Point3 start = O + D * depth1;
     Walk walk(d, r, depth1, depth2, out);
-    if (std::fabs(D.x) < kEpsilon && std::fabs(D.z) < kEpsilon) {
+    if (std::fabs(D.x) < kPovEpsilon && std::fabs(D.z) < kPovEpsilon) {
         // A vertical ray: its one cell, over all heights ahead.
         const Real fary = D.y >= 0 ? 65536.0 : 0.0;
         walk.cell(int(start.x), int(start.z), std::min(start.y, fary),
@@ -372,7 +373,7 @@ bool shape_oracle_first(const HeightField& h, const OracleRay& r, OracleBest& be
                                 Real(z) - 0.01};
             const Real hi[3] = {Real(x) + 1.01, std::max({h1, h2, h3, h4}) + 0.01,
                                 Real(z) + 1.01};
-            Real tmin = -kHuge, tmax = kHuge;
+            Real tmin = -kBoundHuge, tmax = kBoundHuge;
             bool miss = false;
             for (int a = 0; a < 3 && !miss; ++a) {
                 if (std::fabs(dir[a]) < 1e-300) {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/math_constants.h"
 #include "trace/shapes/julia_complex.h"
 
 namespace povwall::trace {
@@ -10,7 +11,6 @@ namespace {
 
 constexpr Real kFractalTolerance = 1e-7;  // marching, bisection and bound (FT)
 constexpr Real kHyperTolerance = 1e-8;    // the hypercomplex distance estimate (FTh)
-constexpr Real kEpsilon = 1e-10;
 
 using Q = Quad;
 
@@ -216,9 +216,9 @@ void shape_hits(const JuliaFractal& j, const LocalRay& r, ShapeHits& out) {
     // The bounding sphere (POV-Ray's sphere test).
     const Vector3 v = Point3{0, 0, 0} - o;
     const Real l = dot(v, v), b = dot(v, d);
-    if (l >= j.radius2 && b < kEpsilon) return;
+    if (l >= j.radius2 && b < kPovEpsilon) return;
     const Real h2 = j.radius2 - l + b * b;
-    if (!(h2 > kEpsilon)) return;
+    if (!(h2 > kPovEpsilon)) return;
     const Real h = std::sqrt(h2);
     const Real t_far = b + h;
     if (t_far < kFractalTolerance) return;

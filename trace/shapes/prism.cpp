@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/math_constants.h"
 #include "core/pov_polysolve.h"
+#include "trace/pov_bounds.h"
 #include "trace/roots_sturm.h"
 #include "trace/shapes/oracle_math.h"
 #include "trace/shapes/sort_hits.h"
@@ -11,9 +13,7 @@
 namespace povwall::trace {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;        // POV-Ray's EPSILON
-constexpr Real kDepthTolerance = 1e-4;  // prism.cpp's DEPTH_TOLERANCE
-constexpr Real kHuge = 2e10;            // BOUND_HUGE
+constexpr Real kPrismDepthTolerance = 1e-4;  // prism.cpp's DEPTH_TOLERANCE
 
 Real at(const PrismSegment& s, int axis, Real t) {
     return t * (t * (t * s.a[axis] + s.b[axis]) + s.c[axis]) + s.d[axis];
@@ -32,19 +32,19 @@ bool leaves_rectangle(Real x1, Real x2, Real y1, Real y2, const Point3& P,
 // The 2-D slab test of the ray's (x, z) projection against a segment's rectangle, done
 // before a cubic is solved (POV-Ray's test_rectangle).
 bool meets_rectangle(const PrismSegment& s, const Point3& P, const Vector3& D) {
-    Real x0 = -kHuge, x1 = kHuge;
-    if (std::fabs(D.x) > kEpsilon) {
+    Real x0 = -kBoundHuge, x1 = kBoundHuge;
+    if (std::fabs(D.x) > kPovEpsilon) {
         x0 = (s.x1 - P.x) / D.x;
         x1 = (s.x2 - P.x) / D.x;
         if (x0 > x1) std::swap(x0, x1);
-        if (x1 < kEpsilon) return false;
+        if (x1 < kPovEpsilon) return false;
     } else if (P.x < s.x1 || P.x > s.x2) {
         return false;
     }
-    if (std::fabs(D.z) > kEpsilon) {
+    if (std::fabs(D.z) > kPovEpsilon) {
         Real z0 = (s.y1 - P.z) / D.z, z1 = (s.y2 - P.z) / D.z;
         if (z0 > z1) std::swap(z0, z1);
-        if (z1 < x1 && z1 < kEpsilon) return false;
+        if (z1 < x1 && z1 < kPovEpsilon) return false;
         if (z0 > x1 || x0 > z1) return false;
     } else if (P.z < s.y1 || P.z > s.y2) {
         return false;
@@ -56,7 +56,7 @@ bool meets_rectangle(const PrismSegment& s, const Point3& P, const Vector3& D) {
 int wall_roots(const Prism& p, const Real c[4], Real roots[3]) {
     switch (p.spline) {
         case Prism::Spline::Linear:
-            if (std::fabs(c[2]) > kEpsilon) {
+            if (std::fabs(c[2]) > kPovEpsilon) {
                 roots[0] = -c[3] / c[2];
                 return 1;
             }
@@ -101,17 +101,17 @@ void wall_hits(const Prism& p, const PrismSegment& s, int j, const Point3& P,
         if (!(t >= 0 && t <= 1)) continue;
         Real k;
         if (!p.conic) {
-            k = std::fabs(D.x) > kEpsilon ? (at(s, 0, t) - P.x) / D.x
-                                          : (at(s, 1, t) - P.z) / D.z;
+            k = std::fabs(D.x) > kPovEpsilon ? (at(s, 0, t) - P.x) / D.x
+                                             : (at(s, 1, t) - P.z) / D.z;
         } else {
             const Real U = at(s, 0, t);
             Real h = D.x - U * D.y;
-            if (std::fabs(h) > kEpsilon) {
+            if (std::fabs(h) > kPovEpsilon) {
                 k = (U * P.y - P.x) / h;
             } else {
                 const Real V = at(s, 1, t);
                 h = D.z - V * D.y;
-                if (!(std::fabs(h) > kEpsilon)) continue;
+                if (!(std::fabs(h) > kPovEpsilon)) continue;
                 k = (V * P.y - P.z) / h;
             }
         }
@@ -149,11 +149,11 @@ void shape_hits(const Prism& p, const LocalRay& r, ShapeHits& out) {
     // is within POV-Ray's depth range.
     auto push = [&](Real k, int face, Real s) {
         const Real w = k / len;
-        if (w > kDepthTolerance && w < kMaxDistance)
+        if (w > kPrismDepthTolerance && w < kMaxDistance)
             out.push_back({w, P + D * k, face, s});
     };
     const Real H1 = p.height1, H2 = p.height2;
-    if (std::fabs(D.y) < kEpsilon && (P.y < H1 || P.y > H2)) return;
+    if (std::fabs(D.y) < kPovEpsilon && (P.y < H1 || P.y > H2)) return;
     // With r.nearest_only, crossings past `cutoff` (world) are not wanted: want_hi,
     // lowered to each crossing found in [want_lo, want_hi). A wall segment or cap whose
     // crossings all lie beyond it is not solved. The walls are found first for that,
@@ -171,8 +171,8 @@ void shape_hits(const Prism& p, const LocalRay& r, ShapeHits& out) {
     const bool prunable = r.nearest_only && std::isfinite(margin);
     // A wall crossing lies between the heights: along a ray that is not level, its
     // object depth is at least that of the nearer height.
-    Real wall_floor = -kHuge;
-    if (prunable && std::fabs(D.y) >= kEpsilon)
+    Real wall_floor = -kBoundHuge;
+    if (prunable && std::fabs(D.y) >= kPovEpsilon)
         wall_floor = (D.y > 0 ? H1 - P.y - margin : H2 - P.y + margin) / D.y;
     const size_t walls_at = out.size();
     // Whether a crossing from `from` on ends the search (r.any_crossing).
@@ -183,7 +183,7 @@ void shape_hits(const Prism& p, const LocalRay& r, ShapeHits& out) {
         return ended_search;
     };
     // Walls (an exactly vertical ray in object space meets none, even conic ones).
-    if (std::fabs(D.x) > kEpsilon || std::fabs(D.z) > kEpsilon) {
+    if (std::fabs(D.x) > kPovEpsilon || std::fabs(D.z) > kPovEpsilon) {
         const Real k1 = P.z * D.y - P.y * D.z, k2 = P.y * D.x - P.x * D.y,
                    k3 = P.x * D.z - P.z * D.x;
         for (size_t j = 0; j < p.segments.size(); ++j) {
@@ -195,7 +195,7 @@ void shape_hits(const Prism& p, const LocalRay& r, ShapeHits& out) {
                 Real floor = wall_floor;
                 if (!p.conic) {
                     const Real near =
-                        std::fabs(D.x) > kEpsilon
+                        std::fabs(D.x) > kPovEpsilon
                             ? (D.x > 0 ? s.x1 - P.x - margin : s.x2 - P.x + margin) / D.x
                             : (D.z > 0 ? s.y1 - P.z - margin : s.y2 - P.z + margin) / D.z;
                     floor = std::max(floor, near);
@@ -212,13 +212,13 @@ void shape_hits(const Prism& p, const LocalRay& r, ShapeHits& out) {
     thread_local ShapeHits walls;
     walls.assign(out.begin() + std::ptrdiff_t(walls_at), out.end());
     out.resize(walls_at);
-    if (std::fabs(D.y) >= kEpsilon && !p.open && !ended_search) {
+    if (std::fabs(D.y) >= kPovEpsilon && !p.open && !ended_search) {
         for (int end = 0; end < 2 && !ended(walls_at); ++end) {
             const Real H = end == 0 ? H2 : H1;
             const int face = end == 0 ? kPrismCap : kPrismBase;
-            if (p.conic && !(std::fabs(H) > kEpsilon)) continue;
+            if (p.conic && !(std::fabs(H) > kPovEpsilon)) continue;
             const Real k = (H - P.y) / D.y;
-            if (!(k > kDepthTolerance && k < kMaxDistance)) continue;
+            if (!(k > kPrismDepthTolerance && k < kMaxDistance)) continue;
             if (prunable && k / len > cutoff) continue;
             Real u = P.x + k * D.x, v = P.z + k * D.z;
             if (p.conic) {
@@ -238,7 +238,7 @@ Vector3 shape_normal(const Prism& p, const ShapeHit& h) {
     const PrismSegment& s = p.segments[size_t(h.face)];
     const Real du = slope(s, 0, h.param), dv = slope(s, 1, h.param);
     if (!p.conic) return {dv, 0, -du};
-    if (!(std::fabs(h.p.y) > kEpsilon)) return {0, 1, 0};
+    if (!(std::fabs(h.p.y) > kPovEpsilon)) return {0, 1, 0};
     return {dv, -(h.p.x * dv - h.p.z * du) / h.p.y, -du};
 }
 
@@ -246,7 +246,7 @@ bool shape_inside(const Prism& p, const Point3& q) {
     // The top is open: y = height2 is outside.
     if (!(q.y >= p.height1 && q.y < p.height2)) return false;
     if (!p.conic) return prism_in_curve(p, q.x, q.z);
-    if (!(std::fabs(q.y) > kEpsilon)) return false;
+    if (!(std::fabs(q.y) > kPovEpsilon)) return false;
     return prism_in_curve(p, q.x / q.y, q.z / q.y);
 }
 
@@ -273,7 +273,7 @@ bool shape_oracle_first(const Prism& p, const OracleRay& r, OracleBest& best) {
                 v /= H;
             }
             if (prism_in_curve(p, static_cast<Real>(u), static_cast<Real>(v)))
-                best.offer(k, kDepthTolerance);
+                best.offer(k, kPrismDepthTolerance);
         }
     }
     // Walls: the same equations in 50 digits, roots isolated by Sturm sequences.
@@ -309,7 +309,7 @@ bool shape_oracle_first(const Prism& p, const OracleRay& r, OracleBest& best) {
                                       : (V * r.o.y - r.o.z) / hz;
             }
             const HP y = r.o.y + k * r.d.y;
-            if (y >= H1 && y <= H2) best.offer(k, kDepthTolerance);
+            if (y >= H1 && y <= H2) best.offer(k, kPrismDepthTolerance);
         }
     }
     return true;

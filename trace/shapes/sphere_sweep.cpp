@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/math_constants.h"
 #include "core/pov_polysolve.h"
 #include "trace/roots_sturm.h"
 #include "trace/shapes/oracle_math.h"
@@ -10,9 +11,8 @@
 namespace povwall::trace {
 namespace {
 
-constexpr Real kEpsilon = 1e-10;          // EPSILON
-constexpr Real kZeroTolerance = 1e-4;     // sphsweep.cpp's ZERO_TOLERANCE
-constexpr Real kRootElimination = 1e-10;  // the eps its solver calls pass
+constexpr Real kSphereSweepZeroTolerance = 1e-4;  // sphsweep.cpp's ZERO_TOLERANCE
+constexpr Real kRootElimination = 1e-10;          // the eps its solver calls pass
 
 Real sqr(Real x) { return x * x; }
 
@@ -27,9 +27,9 @@ bool sphere_crossings(const Point3& o, const Vector3& d, const Point3& centre,
     const Vector3 oc = centre - o;
     const Real oc2 = dot(oc, oc);
     const Real closest = dot(oc, d);
-    if (oc2 >= r2 && closest < kEpsilon) return false;
+    if (oc2 >= r2 && closest < kPovEpsilon) return false;
     const Real half2 = r2 - oc2 + sqr(closest);
-    if (!(half2 > kEpsilon)) return false;
+    if (!(half2 > kPovEpsilon)) return false;
     const Real half = std::sqrt(half2);
     const Real inv_radius = 1.0 / radius;
     for (int i = 0; i < 2; ++i) {
@@ -47,7 +47,7 @@ void cap_crossing(const SweepSegment& s, int end, const Point3& o, const Vector3
                   std::vector<SweepCrossing>& out) {
     const Vector3& axis = s.centre_deriv[end];
     const Real along = dot(d, axis);
-    if (!(std::fabs(along) > kEpsilon)) return;
+    if (!(std::fabs(along) > kPovEpsilon)) return;
     const SweepSphere& sphere = s.closing[end];
     const Real t =
         -(dot(o - sphere.centre, axis) + sphere.radius * s.radius_deriv[end]) / along;
@@ -78,7 +78,7 @@ void linear_tube(const SweepSegment& s, const Point3& o, const Vector3& d,
         const Real u = roots[i];
         if (u < 0.0 || u > 1.0) continue;
         const Point3 centre = s.centre_coef[0] + c1 * u;
-        if (std::fabs(b) > kZeroTolerance) {
+        if (std::fabs(b) > kSphereSweepZeroTolerance) {
             const Real t = -(2.0 * dd * u + e) / b;
             if (!in_range(t)) continue;
             const Point3 p = o + d * t;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "trace/pov_bounds.h"
 #include "trace/shapes/oracle_math.h"
 
 namespace povwall::trace {
@@ -10,11 +11,10 @@ namespace povwall::trace {
 namespace {
 
 // POV-Ray's constants of the search (object units, along a unit direction).
-constexpr Real kDepthTolerance = 1e-4;
-constexpr Real kZeroTolerance = 1e-10;
+constexpr Real kSuperellipsoidDepthTolerance = 1e-4;
+constexpr Real kSuperellipsoidZeroTolerance = 1e-10;
 constexpr Real kSlabHalf = 1.01;  // the search box; the bounding box is +-1.0001
 constexpr int kMaxIterations = 20;
-constexpr Real kBoundHuge = 2e10;
 
 // The 9 planes through the origin that cut the shape into pieces on which the function
 // is unimodal along a line.
@@ -104,8 +104,8 @@ bool search_box(const Point3& o, const Vector3& d, Real& entry, Real& exit) {
 // Secant and bisection between two samples of opposite signs; returns the point found.
 Point3 refine_sign_change(const Exponents& e, Real v0, Point3 p0, Real v1, Point3 p1) {
     for (int i = 0; i < kMaxIterations; ++i) {
-        if (std::fabs(v0) < kZeroTolerance) return p0;
-        if (std::fabs(v1) < kZeroTolerance) return p1;
+        if (std::fabs(v0) < kSuperellipsoidZeroTolerance) return p0;
+        if (std::fabs(v1) < kSuperellipsoidZeroTolerance) return p1;
         const Real x = std::fabs(v0) / std::fabs(v1 - v0);
         const Point3 secant = p0 + (p1 - p0) * x;
         const Real vs = value(e, secant);
@@ -142,7 +142,7 @@ bool probe_piece(const Exponents& e, const Point3& o, const Vector3& d, Real t0,
             t = length(q - o);
             return true;
         }
-        if (std::fabs(v1) < kZeroTolerance) {
+        if (std::fabs(v1) < kSuperellipsoidZeroTolerance) {
             q = p1;
             t = dt1;
             return true;
@@ -166,8 +166,8 @@ Real superellipsoid_value(const Superellipsoid& s, const Point3& p) {
 void intersect_superellipsoid(const Superellipsoid& s, const Point3& o, const Vector3& d,
                               Real dir_length, ShapeHits& out) {
     Real t1, t2;
-    if (!search_box(o, d, t1, t2) || t2 < kDepthTolerance) return;
-    t1 = std::max(t1, kDepthTolerance);
+    if (!search_box(o, d, t1, t2) || t2 < kSuperellipsoidDepthTolerance) return;
+    t1 = std::max(t1, kSuperellipsoidDepthTolerance);
     Real dists[11];
     int n = 0;
     dists[n++] = t1;
@@ -195,11 +195,11 @@ void intersect_superellipsoid(const Superellipsoid& s, const Point3& o, const Ve
     auto at = [&](Real t) { return o + d * t; };
     Point3 p0 = at(dists[0]);
     Real v0 = value(e, p0);
-    if (std::fabs(v0) < kZeroTolerance) push(dists[0], p0);
+    if (std::fabs(v0) < kSuperellipsoidZeroTolerance) push(dists[0], p0);
     for (int i = 1; i < n; ++i) {
         const Point3 p1 = at(dists[i]);
         const Real v1 = value(e, p1);
-        if (std::fabs(v1) < kZeroTolerance) {
+        if (std::fabs(v1) < kSuperellipsoidZeroTolerance) {
             push(dists[i], p1);
         } else if (v0 * v1 < 0) {
             const Point3 q = refine_sign_change(e, v0, p0, v1, p1);
@@ -306,7 +306,7 @@ bool shape_oracle_first(const Superellipsoid& s, const OracleRay& r, OracleBest&
         if (t0 > lo) lo = t0;
         if (t1 < hi) hi = t1;
     }
-    if (lo < kDepthTolerance) lo = kDepthTolerance;
+    if (lo < kSuperellipsoidDepthTolerance) lo = kSuperellipsoidDepthTolerance;
     if (!(lo < hi)) return true;
     std::vector<HP> ts{lo, hi};
     for (const auto& c : kCutNormals) {
@@ -325,7 +325,7 @@ bool shape_oracle_first(const Superellipsoid& s, const OracleRay& r, OracleBest&
     auto f = [&](const HP& t) { return hp_value(a, b, r.o + r.d * t); };
     HP f0 = f(samples[0]);
     if (f0 == 0) {
-        best.offer(samples[0], kDepthTolerance);
+        best.offer(samples[0], kSuperellipsoidDepthTolerance);
         return true;
     }
     for (size_t i = 1; i < samples.size(); ++i) {
@@ -340,7 +340,7 @@ bool shape_oracle_first(const Superellipsoid& s, const OracleRay& r, OracleBest&
                 else
                     x1 = mid;
             }
-            best.offer(x1, kDepthTolerance);
+            best.offer(x1, kSuperellipsoidDepthTolerance);
             return true;
         }
         f0 = f1;

@@ -1,4 +1,4 @@
-// Parsing snippets in the shape parser tests (tests/parser/shape_*_test.cpp).
+// Parsing snippets in the parser tests (tests/parser/*_test.cpp).
 #pragma once
 
 #include <sstream>
@@ -17,15 +17,20 @@ inline Scene parse(const std::string& text, std::string* messages = nullptr) {
     return s;
 }
 
-// The first line of the error a scene stops with.
-inline std::string error_of(const std::string& text) {
+// The error a scene stops with, whole (its located line and any lines after).
+inline std::string full_error_of(const std::string& text) {
     try {
         parse(text);
     } catch (const ParseError& e) {
-        const std::string what = e.what();
-        return what.substr(0, what.find('\n'));
+        return e.what();
     }
     return "(no error)";
+}
+
+// The first line of the error a scene stops with.
+inline std::string error_of(const std::string& text) {
+    const std::string what = full_error_of(text);
+    return what.substr(0, what.find('\n'));
 }
 
 // The only object of a scene, as shape S.
