@@ -66,7 +66,9 @@ plane { y, -1 pigment { color rgb 0.8 } no_shadow }
 sphere { 0, 1 pigment { color rgb <0.3, 0.6, 1> } no_shadow }
 )";
 
-Scene parse(const char* text) { return parser::parse_scene_text(text, "plan.pov", {}); }
+Scene parse_plan_scene(const char* text) {
+    return parser::parse_scene_text(text, "plan.pov", {});
+}
 
 trace::RenderSettings settings(bool everything_on) {
     trace::RenderSettings s;
@@ -91,7 +93,7 @@ bool identical(const Image& a, const Image& b) {
 }
 
 TEST(RenderPlan, DiffuseSceneHasNoReflectionRefractionOrParentTable) {
-    Scene scene = parse(kDiffuse);
+    Scene scene = parse_plan_scene(kDiffuse);
     trace::RenderPlan plan = trace::make_render_plan(scene);
     EXPECT_FALSE(plan.reflection_rays);
     EXPECT_FALSE(plan.transmission_rays);
@@ -123,7 +125,7 @@ TEST(RenderPlan, DiffuseSceneHasNoReflectionRefractionOrParentTable) {
 }
 
 TEST(RenderPlan, GlassSceneNeedsEverything) {
-    trace::RenderPlan plan = trace::make_render_plan(parse(kGlass));
+    trace::RenderPlan plan = trace::make_render_plan(parse_plan_scene(kGlass));
     EXPECT_TRUE(plan.reflection_rays);
     EXPECT_TRUE(plan.transmission_rays);
     EXPECT_TRUE(plan.refraction_rays);
@@ -134,7 +136,7 @@ TEST(RenderPlan, GlassSceneNeedsEverything) {
 
 TEST(RenderPlan, UnblockableShadowRaysAreLeftOut) {
     for (const char* text : {kLoneDisc, kNoShadow}) {
-        Scene scene = parse(text);
+        Scene scene = parse_plan_scene(text);
         trace::RenderPlan plan = trace::make_render_plan(scene);
         for (const auto& l : plan.lights) {
             EXPECT_FALSE(l.shadow_rays) << l.reason;
@@ -148,15 +150,15 @@ TEST(RenderPlan, UnblockableShadowRaysAreLeftOut) {
     }
     // A second object that casts shadows brings them back; so does a lone solid.
     std::string two = std::string(kLoneDisc) + "sphere { <1, 2, -1>, 0.3 }\n";
-    for (const auto& l : trace::make_render_plan(parse(two.c_str())).lights)
+    for (const auto& l : trace::make_render_plan(parse_plan_scene(two.c_str())).lights)
         EXPECT_TRUE(l.shadow_rays);
-    for (const auto& l : trace::make_render_plan(parse(kLoneSphere)).lights)
+    for (const auto& l : trace::make_render_plan(parse_plan_scene(kLoneSphere)).lights)
         EXPECT_TRUE(l.shadow_rays);
 }
 
 TEST(RenderPlan, ForcedOnPlanChangesNoPixel) {
     for (const char* text : {kDiffuse, kGlass, kLoneDisc, kLoneSphere, kNoShadow}) {
-        Scene scene = parse(text);
+        Scene scene = parse_plan_scene(text);
         // The plan on forces parent tracking: colours combine as the ray tree returns
         // instead of as forward contributions (trace/forward_sum.h), the same sums in
         // another order.
@@ -179,7 +181,7 @@ TEST(RenderPlan, ForcedOnPlanChangesNoPixel) {
 }
 
 TEST(RenderPlan, ForcedOnBuildsTheOctreeEvenForFewObjects) {
-    Scene scene = parse(kGlass);
+    Scene scene = parse_plan_scene(kGlass);
     trace::RenderStats planned, forced;
     trace::render_scene(scene, settings(false), &planned);
     trace::render_scene(scene, settings(true), &forced);
@@ -188,7 +190,7 @@ TEST(RenderPlan, ForcedOnBuildsTheOctreeEvenForFewObjects) {
 }
 
 TEST(RenderPlan, ExplainsInPlainWords) {
-    Scene scene = parse(kDiffuse);
+    Scene scene = parse_plan_scene(kDiffuse);
     auto lines = trace::explain_plan(trace::make_render_plan(scene), scene);
     std::vector<std::string> expected = {
         "no reflective materials: reflection rays off",
@@ -201,7 +203,7 @@ TEST(RenderPlan, ExplainsInPlainWords) {
         "shading is linear: contributions go straight to the pixel, no parent table",
     };
     EXPECT_EQ(lines, expected);
-    Scene lone = parse(kLoneDisc);
+    Scene lone = parse_plan_scene(kLoneDisc);
     auto lone_lines = trace::explain_plan(trace::make_render_plan(lone), lone);
     EXPECT_EQ(lone_lines[2],
               "light 1 (point light): the only object is flat and cannot shadow itself: "
@@ -210,7 +212,7 @@ TEST(RenderPlan, ExplainsInPlainWords) {
 }
 
 TEST(DistributionPlan, FitsInOneProcessOrSplitsSpaceToTheBudget) {
-    Scene scene = parse(kDiffuse);
+    Scene scene = parse_plan_scene(kDiffuse);
     DistributionRequest request;
     request.worker_memory = size_t(1) << 30;
     DistributionPlan fits = plan_distribution(scene, request);
@@ -232,7 +234,7 @@ TEST(DistributionPlan, FitsInOneProcessOrSplitsSpaceToTheBudget) {
 }
 
 TEST(DistributionPlan, EstimateIsCloseToThePreparedSize) {
-    Scene scene = parse(kDiffuse);
+    Scene scene = parse_plan_scene(kDiffuse);
     DistributionRequest request;
     const DistributionPlan plan = plan_distribution(scene, request);
     // The whole scene's memory is the parsed model plus the prepared form.
@@ -355,7 +357,7 @@ TEST(DistributionPlan, CoreGroupsBalanceTheWorkThenCutTheLeastTraffic) {
 
 // --teams auto: the most teams of 2 or more workers whose largest worker fits the budget.
 TEST(DistributionPlan, TeamsAutoTakesTheMostTeamsWhoseWorkersFit) {
-    Scene scene = parse(R"(
+    Scene scene = parse_plan_scene(R"(
 camera { location <0, 2, -30> look_at <0, 0, 0> }
 light_source { <0, 30, -30> color rgb 1 }
 #declare I = 0;

@@ -442,10 +442,6 @@ sphere { 0, R }
 // Function-language errors are located; an internal function povwall lacks stops only a
 // scene that uses it (functions.inc declares all of them).
 TEST(Functions, LocatedErrorsAndTolerance) {
-    auto first_line = [](const std::string& text) {
-        const std::string e = full_error_of(text);
-        return e.substr(0, e.find('\n'));
-    };
     EXPECT_EQ(error_of("#declare F = function(a) { a }\n#declare B = F(1, 2);"),
               "test.pov:2:17: error: expected ')' after the 1 argument of 'F' but found "
               "','");
