@@ -252,7 +252,7 @@ light_source { P point_at x }
     EXPECT_FALSE(s.lights[2].shadowless);
     EXPECT_EQ(s.lights[3].kind, Light::Kind::Parallel);
     EXPECT_EQ(s.lights[3].point_at, (Vector3{1, 0, 0}));
-    EXPECT_EQ(error_of("light_source { 0, 1 spotlight shadowless point_at x }"),
+    EXPECT_EQ(full_error_of("light_source { 0, 1 spotlight shadowless point_at x }"),
               "test.pov:1:42: error: 'point_at' cannot be used with a standard light "
               "source\n"
               "light_source { 0, 1 spotlight shadowless point_at x }\n"
