@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 #include "core/scene.h"
@@ -54,12 +55,18 @@ inline std::vector<int> boxes_holding(const VirtualWalls& walls, const Object& o
     return boxes;
 }
 
-// Walk reaches on the wire: box, then the hull's lo and hi, seven numbers each.
+// Walk reaches on the wire: box, then the hull's lo and hi, seven numbers each (JSON has
+// no infinity: an unbounded side travels as the largest finite number).
 inline std::vector<Real> flat_walk_reaches(const std::vector<WalkReach>& reaches) {
+    auto finite = [](Real v) {
+        return std::clamp(v, -std::numeric_limits<Real>::max(),
+                          std::numeric_limits<Real>::max());
+    };
     std::vector<Real> flat;
     for (const WalkReach& r : reaches)
-        flat.insert(flat.end(), {Real(r.box), r.hull.lo.x, r.hull.lo.y, r.hull.lo.z,
-                                 r.hull.hi.x, r.hull.hi.y, r.hull.hi.z});
+        flat.insert(flat.end(), {Real(r.box), finite(r.hull.lo.x), finite(r.hull.lo.y),
+                                 finite(r.hull.lo.z), finite(r.hull.hi.x),
+                                 finite(r.hull.hi.y), finite(r.hull.hi.z)});
     return flat;
 }
 inline std::vector<WalkReach> walk_reaches_of_flat(const std::vector<Real>& flat) {

@@ -11,6 +11,7 @@
 #include <optional>
 #include <random>
 
+#include "distrib/object_boxes.h"
 #include "distrib/wire/control.h"
 #include "distrib/wire/frame.h"
 #include "distrib/wire/items.h"
@@ -648,7 +649,11 @@ TEST(WireJob, AWorkerJobRoundTripsByName) {
     job.frame.animation = {0.5, 0.1, 0, 1, 6, 1, 11};
     job.frame.plan.flat_threshold = 4;
     job.frame.expected_objects = {10, 20};
-    job.frame.walk_reaches = {3, -1, -2, -3, 1, 2, 3.5};
+    // An unbounded hull side as the largest finite number (JSON has no infinity).
+    job.frame.walk_reaches =
+        flat_walk_reaches({{3, Bounds3{{-1, -2, -3}, {1, 2, 3.5}}},
+                           {0, Bounds3{{-kInfinity, 0, 0}, {kInfinity, 1, 1}}}});
+    EXPECT_EQ(job.frame.walk_reaches[8], -std::numeric_limits<Real>::max());
     job.walls = {std::vector<Real>{-1.5, 2}, {}, {0.25}};
     job.workers = {"127.0.0.1:1", "127.0.0.1:2"};
     job.inherited = true;
