@@ -30,14 +30,14 @@ ProgressBar::~ProgressBar() {
 }
 
 void ProgressBar::run() {
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
+    using TickClock = std::chrono::steady_clock;
+    const auto start = TickClock::now();
     std::unique_lock<std::mutex> lock(mutex_);
     if (wake_.wait_for(lock, std::chrono::milliseconds(500), [&] { return stop_; }))
         return;
     do {
         const double elapsed =
-            std::chrono::duration<double>(Clock::now() - start).count();
+            std::chrono::duration<double>(TickClock::now() - start).count();
         const uint64_t done = progress_.pixels_done.load();
         const uint64_t total = progress_.pixels_total.load();
         if (total == 0) continue;  // a renderer that does not count (black boxes)

@@ -19,8 +19,8 @@
 namespace povwall::distrib {
 
 int wait_child(pid_t pid, double seconds) {
-    using Clock = std::chrono::steady_clock;
-    const auto deadline = Clock::now() + std::chrono::duration<double>(seconds);
+    using WaitClock = std::chrono::steady_clock;
+    const auto deadline = WaitClock::now() + std::chrono::duration<double>(seconds);
     // A pidfd becomes readable when the child exits, so the wait ends then rather than at
     // the next poll (at a frame's end the workers exit within a few milliseconds of one
     // another). Without pidfds (kernels before 5.3): a poll every 5 ms.
@@ -30,7 +30,7 @@ int wait_child(pid_t pid, double seconds) {
         const pid_t r = waitpid(pid, &status, WNOHANG);
         if (r == pid || (r < 0 && errno != EINTR)) break;  // < 0: not ours, or reaped
         const auto left =
-            std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
+            std::chrono::ceil<std::chrono::milliseconds>(deadline - WaitClock::now());
         if (left.count() <= 0) {
             kill(pid, SIGKILL);
             while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {

@@ -41,8 +41,12 @@
 
 namespace povwall::distrib {
 
+namespace {
+// (In the unnamed namespace, as the other distrib files have them: a unity batch then
+// declares the same aliases once more rather than shadowing them.)
 using json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
+}  // namespace
 
 std::vector<uint8_t> encode_control_frame(const std::string& text) {
     std::vector<uint8_t> out;

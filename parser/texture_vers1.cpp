@@ -48,32 +48,32 @@ bool find_pattern(const NamedPattern (&table)[N], std::string_view w, PatternKin
 // The patterns Parse_Vers1_Texture reads (mandel aside, see below) and the pigment
 // type each sets.
 bool vers1_pigment_pattern(std::string_view w, PatternKind& kind) {
-    static constexpr NamedPattern kPatterns[] = {
+    static constexpr NamedPattern kNames[] = {
         {"agate", PatternKind::Agate},      {"bozo", PatternKind::Bozo},
         {"granite", PatternKind::Granite},  {"leopard", PatternKind::Leopard},
         {"marble", PatternKind::Marble},    {"onion", PatternKind::Onion},
         {"spotted", PatternKind::Spotted},  {"wood", PatternKind::Wood},
         {"gradient", PatternKind::Gradient}};
-    return find_pattern(kPatterns, w, kind);
+    return find_pattern(kNames, w, kind);
 }
 
 // The block patterns, which take a colour list.
 bool vers1_list_pattern(std::string_view w, PatternKind& kind) {
-    static constexpr NamedPattern kPatterns[] = {{"checker", PatternKind::Checker},
-                                                 {"hexagon", PatternKind::Hexagon},
-                                                 {"square", PatternKind::Square},
-                                                 {"triangular", PatternKind::Triangular}};
-    return find_pattern(kPatterns, w, kind);
+    static constexpr NamedPattern kNames[] = {{"checker", PatternKind::Checker},
+                                              {"hexagon", PatternKind::Hexagon},
+                                              {"square", PatternKind::Square},
+                                              {"triangular", PatternKind::Triangular}};
+    return find_pattern(kNames, w, kind);
 }
 
 // The normal patterns, each followed by its amount.
 bool vers1_normal_pattern(std::string_view w, PatternKind& kind) {
-    static constexpr NamedPattern kPatterns[] = {{"bumps", PatternKind::Bumps},
-                                                 {"dents", PatternKind::Dents},
-                                                 {"ripples", PatternKind::Ripples},
-                                                 {"waves", PatternKind::Waves},
-                                                 {"wrinkles", PatternKind::Wrinkles}};
-    return find_pattern(kPatterns, w, kind);
+    static constexpr NamedPattern kNames[] = {{"bumps", PatternKind::Bumps},
+                                              {"dents", PatternKind::Dents},
+                                              {"ripples", PatternKind::Ripples},
+                                              {"waves", PatternKind::Waves},
+                                              {"wrinkles", PatternKind::Wrinkles}};
+    return find_pattern(kNames, w, kind);
 }
 
 }  // namespace
