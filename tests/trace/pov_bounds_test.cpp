@@ -349,27 +349,25 @@ TEST(PovBounds, WalkStopsBeforeASurfaceOutsideItsBox) {
     PreparedScene prepared(scene);
     RayContext ctx;
     prepared.init_context(ctx);
-    Hit hit;
+    // The nearest hit's distance along +z from `origin` before t_max (-1: none).
+    auto nearest = [&](Point3 origin, Real t_max, RayUse use) -> Real {
+        Hit hit;
+        return prepared.closest_hit(Ray{origin, {0, 0, 1}}, 0, t_max, use, hit, ctx)
+                   ? hit.t
+                   : -1;
+    };
     // Through the disc's box: the sphere's box is entered first and its hit (t = 4.8)
     // lies before the disc's box; the half-box's face in front (t = 4.1) is never tested.
-    ASSERT_TRUE(prepared.closest_hit(Ray{{0, 0, -5}, {0, 0, 1}}, 0, kInfinity,
-                                     RayUse::Camera, hit, ctx));
-    EXPECT_NEAR(hit.t, 4.8, 1e-9);
+    EXPECT_NEAR(nearest({0, 0, -5}, kInfinity, RayUse::Camera), 4.8, 1e-9);
     // Past the sphere: nothing nearer, the face is seen.
-    ASSERT_TRUE(prepared.closest_hit(Ray{{0.6, 0, -5}, {0, 0, 1}}, 0, kInfinity,
-                                     RayUse::Camera, hit, ctx));
-    EXPECT_NEAR(hit.t, 4.1, 1e-9);
+    EXPECT_NEAR(nearest({0.6, 0, -5}, kInfinity, RayUse::Camera), 4.1, 1e-9);
     // Outside the disc's box the intersection is not tested at all.
-    EXPECT_FALSE(prepared.closest_hit(Ray{{0.85, 0, -5}, {0, 0, 1}}, 0, kInfinity,
-                                      RayUse::Camera, hit, ctx));
+    EXPECT_EQ(nearest({0.85, 0, -5}, kInfinity, RayUse::Camera), -1);
     // A ray that ends before the box is entered: not reached either.
-    EXPECT_FALSE(prepared.closest_hit(Ray{{0.6, 0, -5}, {0, 0, 1}}, 0, 4.5,
-                                      RayUse::Shadow, hit, ctx));
+    EXPECT_EQ(nearest({0.6, 0, -5}, 4.5, RayUse::Shadow), -1);
     // bounded_by: the sphere's hit (t = 4.5) lies before its bound's box (t = 4.9), with
     // nothing nearer: seen.
-    ASSERT_TRUE(prepared.closest_hit(Ray{{5, 0, -5}, {0, 0, 1}}, 0, kInfinity,
-                                     RayUse::Camera, hit, ctx));
-    EXPECT_NEAR(hit.t, 4.5, 1e-9);
+    EXPECT_NEAR(nearest({5, 0, -5}, kInfinity, RayUse::Camera), 4.5, 1e-9);
 }
 
 }  // namespace
