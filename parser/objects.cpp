@@ -582,10 +582,9 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         if (!cyl && !cone) error(t, "'open' cannot be used with this object");
         if (cyl) cyl->open = true;
         if (cone) cone->open = true;
-    } else if (w == "clipped_by" && std::holds_alternative<BicubicPatch>(obj.shape)) {
-        // POV-Ray ignores the clip of a patch but still shrinks its bounding box by it.
-        unsupported(t, "clipped_by on a bicubic_patch");
     } else if (w == "clipped_by" || w == "bounded_by") {
+        // (A bicubic_patch keeps its clips: POV-Ray ignores them for its hits but shrinks
+        // its box by them, trace/prepared_scene.cpp.)
         // As POV-Ray: `bounded_by { clipped_by }` bounds by the clip, `clipped_by {
         // bounded_by }` clips by the bound; the lists are then one, and neither grows.
         expect_punct('{', "after ", w);

@@ -256,7 +256,8 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
     } else {
         leaf_crossings(o, ray, csg_child, out, wanted, flags);
     }
-    if (!o.clipped_by->empty()) {
+    // POV-Ray's bicubic_patch never tests its clips (only its box shrinks by them).
+    if (!o.clipped_by->empty() && !std::holds_alternative<BicubicPatch>(o.shape)) {
         size_t w = start;
         for (size_t k = start; k < out.size(); ++k) {
             if (inside_clips(o, out[k].at(ray))) out[w++] = out[k];
@@ -318,7 +319,7 @@ Bounds3 object_bounds(const Object& o, bool restricts) {
         return b;
     }
     Bounds3 world = leaf_world_bounds(o);
-    if (world.infinite()) return world;
+    if (world.infinite() || std::holds_alternative<BicubicPatch>(o.shape)) return world;
     for (const Object& c : *o.clipped_by) {
         const Bounds3 cb = object_bounds(c, true);
         if (!cb.infinite()) world = intersection(world, cb);
@@ -330,14 +331,17 @@ Bounds3 object_bounds(const Object& o) { return object_bounds(o, false); }
 
 // Whether POV-Ray may meet the object's surface outside its box: a disc cuts it (as an
 // intersection's or a difference's part, or as a clip), a height field is part of an
-// intersection or difference (solid below its box), or a bounded_by of its own or of a
-// part bounds the rays tested rather than the hits.
+// intersection or difference (solid below its box), a bounded_by of its own or of a
+// part bounds the rays tested rather than the hits, or a bicubic_patch is clipped.
 bool may_hit_outside_pov_box(const Object& o, bool restricts = false) {
     if (restricts && !o.inverse &&
         (std::holds_alternative<Disc>(o.shape) ||
          std::holds_alternative<HeightField>(o.shape)))
         return true;
     if (!o.bounded_by->empty() && !o.bounds_are_clips) return true;
+    // A bicubic_patch's clips shrink its box and leave its surface whole.
+    if (!o.clipped_by->empty() && std::holds_alternative<BicubicPatch>(o.shape))
+        return true;
     for (const Object& c : *o.clipped_by)
         if (may_hit_outside_pov_box(c, true)) return true;
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {

@@ -369,6 +369,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "julia_pov_rules",
                              "sor_lathe_rim",
                              "csg_hits_beyond_box",
+                             "bicubic_patch_clipped",
                              "mesh_normal_rules",
                              "pigment_map_replaced",
                              "map_entries",
