@@ -135,10 +135,10 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
     // objects between the two as well (walk_reaches); its reach stays its own objects'.
     const std::vector<WalkReach> walk = walk_reaches(walls_, scene_);
     for (uint32_t i = 0; i < scene_.objects.size(); ++i) {
-        Bounds3 hit = trace::object_hit_bounds(scene_.objects[i]);
-        hit.extend(trace::pov_walk_reach(scene_.objects[i]));
-        for (int b : boxes_of_object(walls_, scene_.objects[i])) reach_[b].extend(hit);
-        for (int b : boxes_holding(walls_, scene_.objects[i], walk))
+        const Bounds3 hit = trace::object_hit_bounds(scene_.objects[i]);
+        std::vector<int> boxes = boxes_of_object(walls_, scene_.objects[i]);
+        for (int b : boxes) reach_[b].extend(hit);
+        for (int b : boxes_holding(std::move(boxes), scene_.objects[i], walk))
             if (host[b]) local[b].push_back(i);
     }
     for (int b = 0; b < count; ++b) {

@@ -14,11 +14,7 @@
 namespace povwall::distrib {
 
 inline std::vector<int> boxes_of_object(const VirtualWalls& walls, const Object& object) {
-    // A surface POV-Ray meets outside the object's box (a part kept by a disc's
-    // half-space) lies outside its world bounds too: the box holding that part holds it.
-    Bounds3 bounds = trace::object_world_bounds(object);
-    bounds.extend(trace::pov_walk_reach(object));
-    return walls.boxes_overlapping(bounds);
+    return walls.boxes_overlapping(trace::object_world_bounds(object));
 }
 
 // A box holding an object whose surface can lie outside its POV-Ray box
@@ -41,11 +37,10 @@ inline std::vector<WalkReach> walk_reaches(const VirtualWalls& walls,
     return reaches;
 }
 
-// The boxes that hold `object`: those it overlaps, and those whose walk reaches it
-// overlaps. Ascending.
-inline std::vector<int> boxes_holding(const VirtualWalls& walls, const Object& object,
+// The boxes that hold `object`: those it overlaps (`boxes`, from boxes_of_object), and
+// those whose walk reaches it overlaps. Ascending.
+inline std::vector<int> boxes_holding(std::vector<int> boxes, const Object& object,
                                       const std::vector<WalkReach>& reaches) {
-    std::vector<int> boxes = boxes_of_object(walls, object);
     if (reaches.empty()) return boxes;
     const Bounds3 bounds = trace::object_world_bounds(object);
     for (const WalkReach& r : reaches)
@@ -53,6 +48,10 @@ inline std::vector<int> boxes_holding(const VirtualWalls& walls, const Object& o
     std::sort(boxes.begin(), boxes.end());
     boxes.erase(std::unique(boxes.begin(), boxes.end()), boxes.end());
     return boxes;
+}
+inline std::vector<int> boxes_holding(const VirtualWalls& walls, const Object& object,
+                                      const std::vector<WalkReach>& reaches) {
+    return boxes_holding(boxes_of_object(walls, object), object, reaches);
 }
 
 // Walk reaches on the wire: box, then the hull's lo and hi, seven numbers each (JSON has

@@ -272,12 +272,12 @@ class PreparedScene {
     // POV-Ray's float bounding-box tests of primitive `id` (trace/pov_bounds.h): false
     // when POV-Ray would not intersect it with this ray at all. Asked only of hits.
     bool pov_accepts(uint32_t id, const PovRayOnce& pov_ray) const;
-    // Frame objects whose surface POV-Ray can meet outside their box (kept_surface_bounds
+    // Frame objects whose surface POV-Ray can meet outside their box (object_bounds
     // beyond it: a disc's half-space keeping an intersection's parts, a bounded_by
-    // smaller than the object): its walk of the slab tree stops at the first box entered
-    // beyond the nearest hit found so far, so such an object's hit counts only when no
-    // other is nearer than where the ray enters its box (closest_hit). Their materials
-    // [first, end) and box, in material order.
+    // smaller than the object, a clipped bicubic_patch): its walk of the slab tree stops
+    // at the first box entered beyond the nearest hit found so far, so such an object's
+    // hit counts only when no other is nearer than where the ray enters its box
+    // (closest_hit). Their materials [first, end) and box, in material order.
     struct BeyondBoxFrame {
         uint32_t first, end;
         PovBBox box;
