@@ -49,7 +49,7 @@ const DefaultMap& default_map(const PatternSpec& spec) {
     static const DefaultMap kCubic{6,
                                    {0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f},
                                    {kRed, kGreen, kBlue, kYellow, kCyan, kMagenta}};
-    static const DefaultMap kSquare{
+    static const DefaultMap kSquareMap{
         4, {0.0f, 1.0f, 2.0f, 3.0f}, {kRed, kGreen, kBlue, kYellow}};
     switch (k) {
         case PatternKind::Bozo:
@@ -72,7 +72,7 @@ const DefaultMap& default_map(const PatternSpec& spec) {
         case PatternKind::ObjectInside:  // POV-Ray gives it checker's default list
             return kChecker;
         case PatternKind::Square:
-            return kSquare;
+            return kSquareMap;
         case PatternKind::Triangular:
         case PatternKind::Cubic:
             return kCubic;
