@@ -1,7 +1,8 @@
 // Scene preparation time (primitives, materials, octree) on one thread, in process: the
-// seed scene, and 162 copies of one brick at one transform (scenes/stress/
-// coincident_bricks.pov), whose octree build did not end before the build stopped
-// splitting copies (docs/performance.md). Parsed once; each iteration prepares again.
+// seed scene, 1,200 copies of a mesh (scenes/bench/mesh_copies.pov), and 162 copies of
+// one brick at one transform (scenes/stress/coincident_bricks.pov), whose octree build
+// did not end before the build stopped splitting copies (docs/performance.md). Parsed
+// once; each iteration prepares again.
 // Run: build/bench/povwall_prepare_bench --benchmark_repetitions=5
 //      --benchmark_report_aggregates_only
 #include <benchmark/benchmark.h>
@@ -38,6 +39,14 @@ void BM_PrepareCoincidentBricks(benchmark::State& state) {
     prepare(state, POVWALL_SOURCE_DIR "/scenes/stress/coincident_bricks.pov");
 }
 BENCHMARK(BM_PrepareCoincidentBricks)->Unit(benchmark::kMillisecond);
+
+// 1,200 copies of one 480-triangle mesh, each at its own matrix (LeoCAD and LDraw
+// exports): 576,000 triangles, most straddling cells, so the build's triangle-cell
+// tests decide its time.
+void BM_PrepareMeshCopies(benchmark::State& state) {
+    prepare(state, POVWALL_SOURCE_DIR "/scenes/bench/mesh_copies.pov");
+}
+BENCHMARK(BM_PrepareMeshCopies)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -136,27 +136,21 @@ class Builder {
             return false;
         }
         const Point3 mid = box.centre();
+        Bounds3 child_boxes[8];
+        for (unsigned c = 0; c < 8; ++c) child_boxes[c] = child_box(box, mid, c);
         uint64_t tests = 0, rejected = 0;
         size_t total = 0;
         Real total_cost = 0;
         for (uint32_t id : ids) {
             const Bounds3& b = in_.bounds[id];
             // Closed cells: a primitive touching the mid-plane belongs to both sides.
-            unsigned lo_mask = 0, hi_mask = 0;
+            // Child c lies on the high side of axis a when bit a of c is set; per axis,
+            // the children on a touched side, and the children touched on every axis.
+            constexpr unsigned kLowSide[3] = {0x55, 0x33, 0x0f};
+            unsigned touched = 0xff;
             for (int a = 0; a < 3; ++a) {
-                if (b.lo[a] <= mid[a]) lo_mask |= 1u << a;
-                if (b.hi[a] >= mid[a]) hi_mask |= 1u << a;
-            }
-            // Children c with, per axis, bit clear only if lo side touched, set only if
-            // hi.
-            unsigned touched = 0;
-            for (unsigned c = 0; c < 8; ++c) {
-                bool ok = true;
-                for (int a = 0; a < 3; ++a) {
-                    ok =
-                        ok && ((c & (1u << a)) ? (hi_mask >> a) & 1 : (lo_mask >> a) & 1);
-                }
-                if (ok) touched |= 1u << c;
+                touched &= (b.lo[a] <= mid[a] ? kLowSide[a] : 0u) |
+                           (b.hi[a] >= mid[a] ? ~kLowSide[a] & 0xffu : 0u);
             }
             // One child only: the primitive touches this cell, so it touches that child.
             bool single = (touched & (touched - 1)) == 0;
@@ -164,7 +158,7 @@ class Builder {
                 if (!(touched & (1u << c))) continue;
                 if (!single && in_.overlaps) {
                     ++tests;
-                    if (!in_.overlaps(id, child_box(box, mid, c))) {
+                    if (!in_.overlaps(id, child_boxes[c])) {
                         ++rejected;
                         continue;
                     }

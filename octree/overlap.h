@@ -16,5 +16,9 @@ bool box_overlaps(const Bounds3& b, const Bounds3& cell);
 /// Triangle (a, b, c), possibly degenerate, against `cell`.
 bool triangle_overlaps(const Point3& a, const Point3& b, const Point3& c,
                        const Bounds3& cell);
+/// The same answer from CGAL alone (triangle_overlaps decides most cases in doubles
+/// first); tests compare the two.
+bool triangle_overlaps_exactly(const Point3& a, const Point3& b, const Point3& c,
+                               const Bounds3& cell);
 
 }  // namespace povwall::octree

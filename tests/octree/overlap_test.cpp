@@ -3,11 +3,20 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
 
 namespace povwall::octree {
 namespace {
 
 Real up(Real v) { return std::nextafter(v, kInfinity); }
+
+std::string text(const Point3& p) {
+    char s[96];
+    std::snprintf(s, sizeof s, " <%.17g, %.17g, %.17g>", p.x, p.y, p.z);
+    return s;
+}
 
 TEST(SphereOverlap, TouchingACellCornerCounts) {
     // |(1, 2, 2)| = 3 exactly: the sphere touches the box at its corner only.
@@ -79,6 +88,48 @@ TEST(TriangleOverlap, DegenerateTrianglesAreSegmentsOrPoints) {
     EXPECT_FALSE(triangle_overlaps({3, -0.5, 0.5}, {-0.5, 3, 0.5}, {3, -0.5, 0.5}, cell));
     EXPECT_TRUE(triangle_overlaps({1, 1, 1}, {1, 1, 1}, {1, 1, 1}, cell));
     EXPECT_FALSE(triangle_overlaps({up(1), 1, 1}, {up(1), 1, 1}, {up(1), 1, 1}, cell));
+}
+
+// The double-precision shortcuts of triangle_overlaps never disagree with CGAL's exact
+// predicate: random triangles on a coarse grid (exact touches, shared planes, degenerate
+// ones) and in general position, against cells around and across them.
+TEST(TriangleOverlap, ShortcutsAgreeWithTheExactPredicate) {
+    std::mt19937_64 rng(20261206);
+    std::uniform_int_distribution<int> grid(-4, 8);
+    std::uniform_real_distribution<Real> real(-1.5, 2.5);
+    std::uniform_int_distribution<int> nudge(0, 5);
+    const Bounds3 cells[] = {{{0, 0, 0}, {1, 1, 1}},
+                             {{0.5, 0, 0.25}, {1, 0.5, 0.5}},
+                             {{-1e-3, 0.2, 0.3}, {1e-3, 0.2 + 1e-3, 0.3 + 1e-3}}};
+    size_t overlapping = 0, disjoint = 0;
+    for (int i = 0; i < 200000; ++i) {
+        Point3 p[3];
+        const bool on_grid = i % 2 == 0;
+        for (auto& q : p) {
+            for (int k = 0; k < 3; ++k) {
+                q[k] = on_grid ? grid(rng) * 0.25 : real(rng);
+                // One step off the grid: touches become gaps or overlaps of an ulp.
+                if (on_grid && nudge(rng) == 0) q[k] = std::nextafter(q[k], kInfinity);
+                if (on_grid && nudge(rng) == 1) q[k] = std::nextafter(q[k], -kInfinity);
+            }
+        }
+        if (i % 7 == 0) p[2] = p[1];                          // a segment
+        if (i % 11 == 0) p[1] = p[0] + (p[2] - p[0]) * 0.25;  // collinear
+        // Far from the origin too, where the coordinates' ulps are coarser.
+        const Vector3 shift = i % 3 == 0 ? Vector3{1000, -2000, 500} : Vector3{0, 0, 0};
+        for (auto& q : p) q = q + shift;
+        for (Bounds3 cell : cells) {
+            cell = {cell.lo + shift, cell.hi + shift};
+            const bool fast = triangle_overlaps(p[0], p[1], p[2], cell);
+            ASSERT_EQ(fast, triangle_overlaps_exactly(p[0], p[1], p[2], cell))
+                << text(p[0]) << text(p[1]) << text(p[2]) << " in " << text(cell.lo)
+                << text(cell.hi);
+            (fast ? overlapping : disjoint) += 1;
+        }
+    }
+    // Both answers occur often, so both sides of every shortcut are exercised.
+    EXPECT_GT(overlapping, 100000u);
+    EXPECT_GT(disjoint, 100000u);
 }
 
 TEST(BoxOverlap, ClosedBoxes) {
