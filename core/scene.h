@@ -364,9 +364,22 @@ bool interior_is_default(const Interior& in);
 
 // ---------------------------------------------------------------- shapes (object space)
 
+// POV-Ray moves a sphere's centre and scales its radius for translate, rotate and a
+// uniform scale; the first other transform (a scale unequal in any component, a sign
+// included, or a matrix) makes it keep a matrix, into which every later transform goes.
+// Its box is then that matrix applied to the cube around the centre and radius it had
+// (Sphere::Compute_BBox): a turned cube's box, larger than the sphere's. The surface is
+// the same either way; povwall keeps the whole transform on the object and this only
+// for the box.
+struct SpherePovMatrix {
+    Point3 centre;  // in world space before `rest`
+    Real radius = 1;
+    Transform rest;
+};
 struct Sphere {
     Point3 centre;
     Real radius = 1;
+    std::shared_ptr<const SpherePovMatrix> pov_matrix;  // null: POV-Ray keeps none
 };
 struct Box {
     Point3 corner1, corner2;

@@ -188,6 +188,31 @@ bool move_sweep_spheres(SphereSweep& sweep, const Transform& t,
     return true;
 }
 
+// Where POV-Ray starts keeping a matrix for a sphere (core/scene.h, SpherePovMatrix):
+// the centre and radius it had then, and every transform from then on.
+void note_sphere_pov_matrix(Sphere& sphere, const CompactTransform& before,
+                            const Transform& t, const TransformStep& step) {
+    using Kind = TransformStep::Kind;
+    const Vector3& v = step.amount;
+    if (sphere.pov_matrix) {
+        auto kept = std::make_shared<SpherePovMatrix>(*sphere.pov_matrix);
+        kept->rest = kept->rest.then(t);
+        sphere.pov_matrix = std::move(kept);
+        return;
+    }
+    if (step.kind != Kind::Matrix &&
+        (step.kind != Kind::Scale || (v.x == v.y && v.x == v.z)))
+        return;
+    // Until now only moves, turns and uniform scales: a similarity, whose scale is the
+    // length of a turned unit vector.
+    const Real scale = before.is_identity() ? 1 : length(before.vector({1, 0, 0}));
+    auto kept = std::make_shared<SpherePovMatrix>();
+    kept->centre = before.point(sphere.centre);
+    kept->radius = sphere.radius * scale;
+    kept->rest = t;
+    sphere.pov_matrix = std::move(kept);
+}
+
 }  // namespace
 
 namespace {
@@ -273,6 +298,8 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
     if (auto tri = std::get_if<Triangle>(&obj.shape))
         order_triangle_as_pov(*tri, obj.transform, obj.transform.then(t));
     Plane* plane = std::get_if<Plane>(&obj.shape);
+    if (auto sphere = std::get_if<Sphere>(&obj.shape))
+        note_sphere_pov_matrix(*sphere, obj.transform, t, step);
     if (auto sweep = std::get_if<SphereSweep>(&obj.shape);
         sweep && move_sweep_spheres(*sweep, t, step)) {
     } else if (plane && step.kind == TransformStep::Kind::Translate &&

@@ -900,8 +900,8 @@ void PreparedScene::add_frame_object(const Object& o, uint32_t frame) {
     // (A bounded_by shrinks a shape's POV-Ray box: such spheres and planes take the
     // general path, which tests that box.)
     if (auto s = std::get_if<Sphere>(&o.shape);
-        s && !o.inverse && o.clipped_by->empty() && o.bounded_by->empty() &&
-        is_similarity(o.transform, scale)) {
+        s && !s->pov_matrix && !o.inverse && o.clipped_by->empty() &&
+        o.bounded_by->empty() && is_similarity(o.transform, scale)) {
         Point3 c = o.transform.point(s->centre);
         Real r = s->radius * scale;
         uint32_t index = uint32_t(spheres_.size());

@@ -370,6 +370,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "sor_lathe_rim",
                              "csg_hits_beyond_box",
                              "bicubic_patch_clipped",
+                             "sphere_pov_matrix_box",
                              "mesh_normal_rules",
                              "pigment_map_replaced",
                              "map_entries",

@@ -58,7 +58,7 @@ INSTANTIATE_TEST_SUITE_P(
                       "object_queries", "string_relations", "legacy_semicolons",
                       "torus_pov_solver", "inside_rules", "cylinder_trace_bits",
                       "colour_terms", "cone_trace_bits", "macro_rvalue_semicolons",
-                      "sor_lathe_trace_bits", "degree_constants"));
+                      "sor_lathe_trace_bits", "degree_constants", "sphere_extents"));
 
 }  // namespace
 }  // namespace povwall::parser

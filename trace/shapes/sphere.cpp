@@ -50,8 +50,12 @@ Bounds3 shape_bounds(const Sphere& s) {
 
 PovBBox shape_pov_bbox(const Sphere& s, const CompactTransform& xf) {
     // Translation, rotation and uniform scaling move the centre and the radius (no
-    // transform kept): the box is centre +- radius. Any other transform is kept and the
-    // box is the transformed cube's.
+    // transform kept): the box is centre +- radius. From the first other transform on,
+    // the box is the cube's then, under the transforms that followed.
+    if (const SpherePovMatrix* m = s.pov_matrix.get()) {
+        const Vector3 r(m->radius);
+        return pov_transformed_bbox({m->centre - r, m->centre + r}, m->rest);
+    }
     Real scale = 1;
     if (xf.is_identity() || is_similarity(xf, scale))
         return pov_sphere_bbox(xf.point(s.centre), s.radius * scale);
