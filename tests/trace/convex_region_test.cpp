@@ -111,6 +111,19 @@ TEST(ConvexRegion, IntersectionOfPlanesHasFiniteWorldBounds) {
     EXPECT_GE(b.hi.y, 2.01);
     EXPECT_NEAR(b.lo.y, 2, 1e-6);
     EXPECT_NEAR(b.hi.y, 2.01, 1e-6);
+    // Every corner of the slice, turned and moved as the object is, lies inside.
+    const Real turn = 17 * kPi / 180;
+    for (int k = 0; k < 6; ++k) {
+        const Real a = (30 + 60 * k) * kPi / 180;
+        // POV-Ray's rotate y: x' = x cos + z sin, z' = -x sin + z cos.
+        const Real x = corner * std::cos(a), z = corner * std::sin(a);
+        const Real wx = 1 + x * std::cos(turn) + z * std::sin(turn),
+                   wz = 3 - x * std::sin(turn) + z * std::cos(turn);
+        EXPECT_LE(b.lo.x, wx);
+        EXPECT_GE(b.hi.x, wx);
+        EXPECT_LE(b.lo.z, wz);
+        EXPECT_GE(b.hi.z, wz);
+    }
     EXPECT_GT(b.lo.x, 1 - corner - 1e-6);
     EXPECT_LT(b.hi.x, 1 + corner + 1e-6);
     EXPECT_GT(b.lo.z, 3 - corner - 1e-6);
