@@ -32,6 +32,18 @@ double hashed_unit(uint64_t a, uint64_t b, uint64_t c, uint64_t d) {
     return double(x >> 11) * (1.0 / 9007199254740992.0);
 }
 
+// The sphere photons are shot at: POV-Ray's about the target's own box (photons.cpp:
+// the corner plus half the lengths, the radius to the corner), whatever the surface
+// inside it. An infinite box (a plane, CSG of planes without a bounded_by) gives the
+// origin and sqrt(3) BOUND_HUGE / 2.
+void target_sphere(const Object& target, Point3& ctr, double& rad) {
+    const PovBBox box = pov_object_bbox(target);
+    const Point3 lo{box.lo[0], box.lo[1], box.lo[2]};
+    ctr = Point3{box.lo[0] + box.len[0] / 2.0, box.lo[1] + box.len[1] / 2.0,
+                 box.lo[2] + box.len[2] / 2.0};
+    rad = length(ctr - lo);
+}
+
 bool switch_on(PhotonSwitch object, PhotonSwitch light) {
     return (object == PhotonSwitch::On && light != PhotonSwitch::Off) ||
            (object != PhotonSwitch::Off && light == PhotonSwitch::On);
@@ -228,18 +240,9 @@ void Shooter::shoot(const Light& light, size_t light_index, const Target& target
         light.photon_area_light && !parallel_ && light.area ? &*light.area : nullptr;
     const int samples1 = area ? std::max(1, area->size1) : 1;
     const int samples2 = area ? std::max(1, area->size2) : 1;
-    // The bounding sphere of the target's box.
-    Bounds3 b = object_world_bounds(*target.object);
     Point3 ctr;
     double rad;
-    if (std::isinf(b.lo.x) || std::isinf(b.hi.x) || std::isinf(b.lo.y) ||
-        std::isinf(b.hi.y) || std::isinf(b.lo.z) || std::isinf(b.hi.z)) {
-        ctr = Point3{0, 0, 0};
-        rad = std::sqrt(3.0) * kBoundHuge / 2;
-    } else {
-        ctr = b.lo + (b.hi - b.lo) * 0.5;
-        rad = length(ctr - b.lo);
-    }
+    target_sphere(*target.object, ctr, rad);
     // The light's direction (POV-Ray's Direction: unit unless point_at is the location).
     Vector3 axis = light.point_at - light.location;
     if (const double len = length(axis); len > kPovEpsilon) axis = axis * (1 / len);
@@ -451,9 +454,9 @@ double spacing_for_count(const Scene& sc, const std::vector<Target>& targets,
             const bool rfr = switch_on(ph.refraction, light.photon_refraction);
             const bool rfl = switch_on(ph.reflection, light.photon_reflection);
             if (!rfr && !rfl) continue;
-            const Bounds3 b = object_world_bounds(*t.object);
-            const Point3 ctr = b.lo + (b.hi - b.lo) * 0.5;
-            const double rad = length(ctr - b.lo);
+            Point3 ctr;
+            double rad;
+            target_sphere(*t.object, ctr, rad);
             double x = rad / (ph.spacing_multiplier * s.spacing);
             x = x * x * kPi;
             if (rfr && rfl) x *= 1.5;

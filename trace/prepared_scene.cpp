@@ -7,6 +7,7 @@
 #include "octree/giants.h"
 #include "octree/overlap.h"
 #include "octree/spatial_order.h"
+#include "trace/convex_region.h"
 #include "trace/cutaway_textures.h"
 #include "trace/object_inside.h"
 #include "trace/object_placement.h"
@@ -282,6 +283,21 @@ Bounds3 leaf_world_bounds(const Object& o) {
                   : o.transform.bounds(local);
 }
 
+// Where a plane leaf (`inverted`: as a difference's later part) counts points inside, as
+// a half-space of the world: inside_plane's test, dot(n, q) - d < EPSILON at the point q
+// in the plane's space, with q the inverse transform of the world point. False for
+// anything but a plane.
+static bool plane_half_space(const Object& o, bool inverted, HalfSpace& out) {
+    const Plane* plane = std::get_if<Plane>(&o.shape);
+    if (!plane) return false;
+    const Real sign = inverted != o.inverse ? -1 : 1;
+    out.normal = o.transform.normal(plane->normal) * sign;
+    out.offset = sign * (plane->distance -
+                         dot(plane->normal, o.transform.inverse_point({0, 0, 0}))) +
+                 kPovEpsilon;
+    return true;
+}
+
 // The bounds of where an object's surface can be met (`restricts` false), or of its
 // inside when it cuts another's surface (an intersection's or difference's part, or a
 // clip): a disc's inside is the half-space behind it, a height field's everything below
@@ -311,12 +327,27 @@ Bounds3 object_bounds(const Object& o, bool restricts) {
                 b.extend(cb);
             }
         }
-        if (first && csg->kind == CsgKind::Intersection) return Bounds3::everything();
+        if (first && csg->kind == CsgKind::Intersection) b = Bounds3::everything();
         for (const Object& c : *o.clipped_by) {
             const Bounds3 cb = object_bounds(c, true);
             if (!cb.infinite()) b = intersection(b, cb);
         }
-        return b;
+        // Plane parts and plane clips close the region where the other parts leave it
+        // open: a prism made of planes has a finite surface.
+        std::vector<HalfSpace> half_spaces;
+        HalfSpace h;
+        if (cuts) {
+            for (size_t i = 0; i < csg->children.size(); ++i) {
+                const Object& c = csg->children[i];
+                const bool later = csg->kind == CsgKind::Difference && i > 0;
+                if (later && !difference_inverts(c)) continue;
+                if (plane_half_space(c, later, h)) half_spaces.push_back(h);
+            }
+        }
+        for (const Object& c : *o.clipped_by) {
+            if (plane_half_space(c, false, h)) half_spaces.push_back(h);
+        }
+        return half_spaces.empty() ? b : convex_region_bounds(b, half_spaces);
     }
     Bounds3 world = leaf_world_bounds(o);
     if (world.infinite() || std::holds_alternative<BicubicPatch>(o.shape)) return world;
