@@ -14,7 +14,9 @@
 namespace povwall::parser {
 namespace {
 
+using test::error_of;
 using test::full_error_of;
+using test::parse;
 
 // A snippet parsed as if +MV (Version=) set the language version it starts under.
 Scene parse_at_version(const std::string& text, std::string* debug = nullptr,
