@@ -179,6 +179,11 @@ struct PatternSpec {
     WaveType wave = WaveType::Ramp;
     Real wave_exponent = 1;
     int noise_generator = 0;  // 0: inherit global setting
+    // `no_bump_scale` (POV-Ray's DONT_SCALE_BUMPS_FLAG, which it keeps on the pattern):
+    // a normal taken into this pattern's space and back is not renormalised, so the
+    // pattern's and object's scaling changes the bumps' slopes. Set on a normal's
+    // pattern, and on a texture_map's (whose entries' normals the parser hands it to).
+    bool no_bump_scale = false;
     // Classic turbulence keyword applied before the pattern (ordered after warps as
     // POV-Ray does).
     std::vector<Warp> warps;

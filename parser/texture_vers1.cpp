@@ -9,6 +9,7 @@
 
 #include "core/pattern_lists.h"
 #include "parser/interpreter.h"
+#include "parser/no_bump_scale.h"
 
 namespace povwall::parser {
 
@@ -158,10 +159,12 @@ void Interpreter::parse_vers1_texture_body(LayeredTexture& layers, char terminat
         return nullptr;
     };
     Token end;
+    bool no_bump_scale = false;
     for (;;) {
         Token t = next();
         if (is_punct(t, terminator)) {
             end = t;
+            if (no_bump_scale) set_no_bump_scale(layers.back());
             break;
         }
         Transform tr;
@@ -363,7 +366,9 @@ void Interpreter::parse_vers1_texture_body(LayeredTexture& layers, char terminat
                             "a patterned texture identifier after items in a POV-Ray "
                             "1.0/2.0 texture");
         } else if (is_word(t, "no_bump_scale")) {
-            unsupported(t, "no_bump_scale");
+            // Handed to the normal when the texture ends (POV-Ray reads it, and only
+            // transforms, after the items).
+            no_bump_scale = true;
         } else {
             expected("a texture item or '" + std::string(1, terminator) + "'", t);
         }

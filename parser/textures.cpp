@@ -3,6 +3,7 @@
 
 #include "core/pattern_lists.h"
 #include "parser/interpreter.h"
+#include "parser/no_bump_scale.h"
 
 namespace povwall::parser {
 namespace {
@@ -448,8 +449,11 @@ bool Interpreter::try_pattern_modifier(const Token& t, HeapValue<PatternSpec>& s
 bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     if (t.kind != TokenKind::Word) return false;
     std::string_view w = t.text;
-    // Keeps bump heights when a normal pattern is scaled (POV-Ray's DONT_SCALE_BUMPS).
-    if (w == "no_bump_scale") unsupported(t, w);
+    // POV-Ray reads it on any pattern; only a normal's (or a texture_map's) is used.
+    if (w == "no_bump_scale") {
+        spec.no_bump_scale = true;
+        return true;
+    }
     Transform tr;
     if (try_transform(t, tr)) {
         spec.transform = spec.transform.then(tr);
@@ -878,6 +882,7 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
             // ("Problem in Evaluate_TPat").
             if (n.pattern->kind == PatternKind::Facets && !n.map_values.empty())
                 error(t, "facets cannot select from a normal_map");
+            if (n.pattern->no_bump_scale) set_no_bump_scale(n);
             return;
         }
         // facets is a pattern of normals only (try_pattern_keyword refuses it).
@@ -1331,9 +1336,14 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
         }
     }
     if (layers.empty()) layers.push_back(default_texture_);
+    // POV-Ray flags the texture statement's first layer (the top one).
+    bool no_bump_scale = false;
     for (;;) {
         Token t = next();
-        if (is_punct(t, terminator)) return;
+        if (is_punct(t, terminator)) {
+            if (no_bump_scale) set_no_bump_scale(layers.back());
+            return;
+        }
         Transform tr;
         if (try_transform(t, tr)) {
             transform_textures(layers, tr);
@@ -1391,15 +1401,17 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
             uv.map_pattern = PatternSpec{};
             uv.map_pattern->kind = PatternKind::UvMapping;
             uv.map.edit().entries.push_back(std::move(inner));
+            if (no_bump_scale) set_no_bump_scale(uv);
             layers.assign(1, std::move(uv));
             return;
         } else if (w == "no_bump_scale") {
-            // POV-Ray's DONT_SCALE_BUMPS on the texture, handed to its normals.
-            unsupported(t, w);
+            // Handed to the normals when the texture ends, whatever comes after it.
+            no_bump_scale = true;
         } else if (w == "material_map") {
             parse_material_map(t, top);
         } else if (w == "tiles") {
             parse_tiles(t, layers);
+            if (no_bump_scale) set_no_bump_scale(layers.back());
             parse_texture_transforms(layers, terminator);
             return;
         } else if (top.map_pattern && try_pattern_modifier(t, *top.map_pattern)) {
@@ -1465,7 +1477,10 @@ void Interpreter::parse_texture_transforms(LayeredTexture& layers, char terminat
     for (;;) {
         Token m = next();
         if (is_punct(m, terminator)) return;
-        if (is_word(m, "no_bump_scale")) unsupported(m, "no_bump_scale");
+        if (is_word(m, "no_bump_scale")) {
+            set_no_bump_scale(layers.back());
+            continue;
+        }
         Transform step;
         if (!try_transform(m, step))
             expected("a transform or '" + std::string(1, terminator) + "'", m);

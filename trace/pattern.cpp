@@ -590,22 +590,25 @@ Vector3 transpose_apply(const Transform& t, const Vector3& n) {
 }
 }  // namespace
 
+// With no_bump_scale POV-Ray leaves the normal's length as the transforms make it: a
+// pattern scaled up by s lengthens the normal s times in pattern space, so the same
+// displacement tilts it less, and taking it back out does not undo that.
 Vector3 warp_normal(const PatternSpec& spec, const Vector3& n) {
-    Vector3 r = normalize(n);
+    Vector3 r = spec.no_bump_scale ? n : normalize(n);
     if (!spec.transform.is_identity()) r = transpose_apply(spec.transform, r);
     for (auto it = spec.warps.rbegin(); it != spec.warps.rend(); ++it) {
         if (!it->transform.is_identity()) r = transpose_apply(it->transform, r);
     }
-    return normalize(r);
+    return spec.no_bump_scale ? r : normalize(r);
 }
 
 Vector3 unwarp_normal(const PatternSpec& spec, const Vector3& n) {
-    Vector3 r = normalize(n);
+    Vector3 r = spec.no_bump_scale ? n : normalize(n);
     for (const Warp& w : spec.warps) {
         if (!w.transform.is_identity()) r = w.transform.normal(r);
     }
     if (!spec.transform.is_identity()) r = spec.transform.normal(r);
-    return normalize(r);
+    return spec.no_bump_scale ? r : normalize(r);
 }
 
 Real value_at(const PatternSpec& spec, const Point3& p, const PatternEnv& env) {

@@ -71,6 +71,10 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
 // length.
 Vector3 perturb_normal(const Normal& normal, const Point3& world,
                        const Vector3& geometric, const PatternEnv& env);
+// The same before its last normalisation, as POV-Ray's Perturb_Normal leaves it (the
+// PNormal the slope pattern reads): not unit length when the pattern has no_bump_scale.
+Vector3 perturb_normal_unnormalised(const Normal& normal, const Point3& world,
+                                    const Vector3& geometric, const PatternEnv& env);
 
 // The index of the map entry pair for `value` (POV-Ray's Search_Blend_Map): `prev` and
 // `cur` are equal outside the map's range; otherwise `fraction` blends prev -> cur.

@@ -103,16 +103,18 @@ Real slope_mapped(const Normal& nm, Real value) {
 
 }  // namespace
 
-Vector3 perturb_normal(const Normal& normal, const Point3& world,
-                       const Vector3& geometric, const PatternEnv& env) {
+// POV-Ray's Perturb_Normal: unit length unless the pattern has no_bump_scale (then the
+// caller normalises, as POV-Ray's Trace does; a normal_map normalises its blend).
+Vector3 perturb_normal_unnormalised(const Normal& normal, const Point3& world,
+                                    const Vector3& geometric, const PatternEnv& env) {
     const PatternSpec& spec = *normal.pattern;
     if (spec.kind == PatternKind::Solid) return normalize(geometric);
     if (spec.kind == PatternKind::UvMapping) {
         // The entry perturbs the world normal itself, at the surface coordinates (as
         // POV-Ray's: no warp of the normal into them).
         if (normal.list.empty()) return normalize(geometric);
-        return normalize(
-            perturb_normal(normal.list.front(), detail::uv_of(env), geometric, env));
+        return normalize(perturb_normal_unnormalised(normal.list.front(),
+                                                     detail::uv_of(env), geometric, env));
     }
 
     // normal_map: perturb by the two neighbouring normals and blend the results.
@@ -124,12 +126,15 @@ Vector3 perturb_normal(const Normal& normal, const Point3& world,
         MapLookup m = search_map(normal.map_values.data(), n, value);
         Vector3 local = detail::warp_normal(spec, geometric);
         // Entries are evaluated at the warped point, as POV-Ray does.
-        Vector3 cur = perturb_normal(normal.list[size_t(m.cur)], p, local, env);
+        Vector3 cur =
+            perturb_normal_unnormalised(normal.list[size_t(m.cur)], p, local, env);
         if (m.prev != m.cur) {
-            Vector3 prev = perturb_normal(normal.list[size_t(m.prev)], p, local, env);
+            Vector3 prev =
+                perturb_normal_unnormalised(normal.list[size_t(m.prev)], p, local, env);
             cur = prev * (1.0 - m.fraction) + cur * m.fraction;
         }
-        return detail::unwarp_normal(spec, cur);
+        const Vector3 out = detail::unwarp_normal(spec, cur);
+        return spec.no_bump_scale ? normalize(out) : out;
     }
 
     Vector3 n = detail::warp_normal(spec, geometric);
@@ -141,7 +146,7 @@ Vector3 perturb_normal(const Normal& normal, const Point3& world,
         size_t count = std::min(normal.map_values.size(), normal.list.size());
         for (size_t i = 0; i < count; ++i) {
             float w = normal.map_values[i];
-            sum += perturb_normal(normal.list[i], p, n, env) * Real(w);
+            sum += perturb_normal_unnormalised(normal.list[i], p, n, env) * Real(w);
             total += w;
         }
         if (total != 0) n = sum / Real(total);
@@ -159,6 +164,12 @@ Vector3 perturb_normal(const Normal& normal, const Point3& world,
         }
     }
     return detail::unwarp_normal(spec, n);
+}
+
+Vector3 perturb_normal(const Normal& normal, const Point3& world,
+                       const Vector3& geometric, const PatternEnv& env) {
+    const Vector3 n = perturb_normal_unnormalised(normal, world, geometric, env);
+    return normal.pattern->no_bump_scale ? normalize(n) : n;
 }
 
 }  // namespace povwall::trace

@@ -335,19 +335,21 @@ Point3 texture_point(const Material& m, const Hit& hit) {
 Vector3 perturb_nested(const Normal& normal, const Point3& at, Vector3 n,
                        const PatternEnv& env, const TextureNesting* nesting,
                        Vector3* pattern_normal = nullptr) {
-    if (!nesting) {
-        n = perturb_normal(normal, at, n, env);
-        if (pattern_normal) *pattern_normal = n;
-        return n;
-    }
+    // With no_bump_scale the patterns after this one see the normal before POV-Ray's
+    // Trace normalises it.
+    auto perturb = [&](const Vector3& into) {
+        Vector3 r = perturb_normal_unnormalised(normal, at, into, env);
+        if (pattern_normal) *pattern_normal = r;
+        return normal.pattern->no_bump_scale ? normalize(r) : r;
+    };
+    if (!nesting) return perturb(n);
     constexpr int kMaxDepth = 64;
     const TextureNesting* chain[kMaxDepth];
     int depth = 0;
     for (const TextureNesting* p = nesting; p && depth < kMaxDepth; p = p->outer)
         chain[depth++] = p;
     for (int i = depth - 1; i >= 0; --i) n = normal_into_pattern(*chain[i]->pattern, n);
-    n = perturb_normal(normal, at, n, env);
-    if (pattern_normal) *pattern_normal = n;
+    n = perturb(n);
     for (int i = 0; i < depth; ++i) n = normal_out_of_pattern(*chain[i]->pattern, n);
     return n;
 }

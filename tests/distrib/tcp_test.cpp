@@ -454,6 +454,19 @@ TEST(Tcp, TextureSpacePatternsInEveryModeEqualOneProcess) {
     }
 }
 
+// no_bump_scale (scenes/golden/no_bump_scale*.pov, each matching POV-Ray in
+// tests/golden): the flag rides on the normal and texture_map patterns every process
+// parses, so every mode gives the one-process image.
+TEST(Tcp, NoBumpScaleInEveryModeEqualsOneProcess) {
+    for (const char* name : {"no_bump_scale", "no_bump_scale_slope"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        expect_same_images(scene, "-W 40 -H 30",
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents"});
+    }
+}
+
 // Light groups (parser/light_groups.cpp: which lights light which leaves, numbered in
 // parse order before a worker leaves objects out) and df3 density files (found and read
 // by every process that parses the scene): every mode gives the one-process image.

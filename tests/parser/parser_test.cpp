@@ -266,6 +266,49 @@ union { sphere { 0, 1 } sphere { x, 1 pigment { rgb 1 } } pigment { rgb <1, 0, 0
     EXPECT_EQ(u.children[1].texture.back().pigment.colour.rgb, (Rgb{1, 1, 1}));
 }
 
+// no_bump_scale (POV-Ray's DONT_SCALE_BUMPS_FLAG) ends on the normal patterns the tracer
+// reads it from: written in a normal, in a texture (after its transforms, handed to its
+// normal when the texture ends, to a texture_map's pattern and its entries' top layers),
+// and on its own layer only.
+TEST(Textures, NoBumpScaleReachesTheNormalPatterns) {
+    Scene s = parse(
+        "sphere { 0, 1 normal { bumps no_bump_scale scale 2 } }\n"
+        "sphere { 0, 1 texture { pigment { rgb 1 } no_bump_scale normal { dents } } }\n"
+        "sphere { 0, 1 texture { pigment { rgb 1 } normal { wrinkles } scale 2 "
+        "no_bump_scale } }\n"
+        "sphere { 0, 1 texture { pigment { rgb 1 } scale 2 no_bump_scale } }\n"
+        "sphere { 0, 1 normal { gradient x normal_map { [0 bumps] [1 ripples] } "
+        "no_bump_scale } }\n"
+        "#declare T = texture { pigment { rgb 1 } normal { bumps } };\n"
+        "sphere { 0, 1 texture { gradient x texture_map { [0 T] [1 T] } scale 2 "
+        "no_bump_scale } }\n"
+        "sphere { 0, 1 texture { T } texture { T no_bump_scale } }\n"
+        "sphere { 0, 1 texture { T } pigment { rgb 1 no_bump_scale } }\n");
+    ASSERT_EQ(s.objects.size(), 8u);
+    auto flagged = [&](size_t object, size_t layer = 0) {
+        const Texture& t = s.objects[object].texture.at(layer);
+        return t.normal && t.normal->pattern->no_bump_scale;
+    };
+    EXPECT_TRUE(flagged(0));
+    EXPECT_TRUE(flagged(1));
+    EXPECT_TRUE(flagged(2));
+    EXPECT_FALSE(s.objects[3].texture[0].normal);  // nothing to hand it to
+    const Normal& mapped = *s.objects[4].texture[0].normal;
+    ASSERT_EQ(mapped.list.size(), 2u);
+    EXPECT_TRUE(mapped.pattern->no_bump_scale);
+    EXPECT_TRUE(mapped.list[0].pattern->no_bump_scale);
+    EXPECT_TRUE(mapped.list[1].pattern->no_bump_scale);
+    const Texture& map = s.objects[5].texture[0];
+    ASSERT_TRUE(map.map_pattern);
+    EXPECT_TRUE(map.map_pattern->no_bump_scale);
+    ASSERT_EQ(map.map->entries.size(), 2u);
+    for (const LayeredTexture& entry : map.map->entries)
+        EXPECT_TRUE(entry.back().normal->pattern->no_bump_scale);
+    EXPECT_FALSE(flagged(6, 0));  // the bottom layer keeps none
+    EXPECT_TRUE(flagged(6, 1));
+    EXPECT_FALSE(flagged(7));  // a pigment's pattern keeps it to itself
+}
+
 TEST(Settings, VersionAndGlobalSettings) {
     Scene s =
         parse("#version 3.7;\nglobal_settings { assumed_gamma 1.0 max_trace_level 300 }");
@@ -513,10 +556,6 @@ TEST(Errors, PatternRefusalsAndMisuses) {
         message("plane { y, 0 normal { checker normal { bumps } } }"),
         "give all 2 normals of 'checker' (POV-Ray 3.7 crashes on the missing ones)");
     EXPECT_EQ(refusal("plane { y, 0 pigment { pavement } }"), "unsupported: pavement");
-    // Written straight in a texture (POV-Ray hands the flag to its normals).
-    EXPECT_EQ(
-        refusal("plane { y, 0 texture { pigment { rgb 1 } scale 2 no_bump_scale } }"),
-        "unsupported: no_bump_scale");
     EXPECT_EQ(refusal("plane { y, 0 pigment { proportion } }"), "(an error)");
     EXPECT_EQ(refusal("plane { y, 0 pigment { gradient_map } }"), "(an error)");
     EXPECT_EQ(
