@@ -384,7 +384,7 @@ struct SpherePovMatrix {
 struct Sphere {
     Point3 centre;
     Real radius = 1;
-    std::shared_ptr<const SpherePovMatrix> pov_matrix;  // null: POV-Ray keeps none
+    std::shared_ptr<const SpherePovMatrix> pov_matrix = nullptr;  // none kept by POV-Ray
 };
 struct Box {
     Point3 corner1, corner2;

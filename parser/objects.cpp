@@ -632,7 +632,14 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         } else {
             for (; !is_punct(o, '}'); o = next()) {
                 Object child;
-                if (!try_parse_object(o, child)) expected("an object or '}'", o);
+                // A declared object named bare is one of them (POV-Ray's Parse_Object).
+                const Value* v = o.kind == TokenKind::Word ? lookup(o) : nullptr;
+                if (auto id = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr) {
+                    child = **id;
+                    child.loc = sources_.location(o);
+                } else if (!try_parse_object(o, child)) {
+                    expected("an object or '}'", o);
+                }
                 list.push_back(std::move(child));
             }
             // POV-Ray computes a quadric's box again from its clips.
@@ -929,83 +936,83 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         open();
         // POV-Ray 3.7 reads the old `composite` as a union.
         if (w == "composite") warn(t, "use union instead of composite");
-        Csg csg;
-        csg.kind = w == "union" || w == "composite" ? CsgKind::Union
-                   : w == "merge"                   ? CsgKind::Merge
-                   : w == "intersection"            ? CsgKind::Intersection
-                                                    : CsgKind::Difference;
-        out.shape = Csg{};
-        for (;;) {
-            Token c = peek();
-            Object child;
-            if (c.kind == TokenKind::Word && is_word(c, "light_source")) {
-                next();
-                csg.lights.push_back(parse_light_block());
-                continue;
-            }
-            if (c.kind == TokenKind::Word && !is_word(c, "texture") &&
-                !is_word(c, "pigment") && !is_word(c, "finish") &&
-                !is_word(c, "normal") && !is_word(c, "interior") &&
-                !is_word(c, "material")) {
-                next();
-                // A declared object named bare is a child, as object { Id } without
-                // modifiers (POV-Ray's Parse_Object). First in the braces POV-Ray takes
-                // it as the CSG to extend: the same as a child when it is a CSG of this
-                // kind, something else otherwise.
-                const Value* v = lookup(c);
-                if (auto id = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr) {
-                    const Csg* base = std::get_if<Csg>(&(*id)->shape);
-                    if (csg.children.empty() && csg.lights.empty() &&
-                        (!base || base->kind != csg.kind))
-                        unsupported(
-                            c, "an object identifier first in a CSG of another kind");
-                    child = **id;
-                    child.loc = sources_.location(c);
-                    csg.children.push_back(std::move(child));
+        // POV-Ray's Parse_Object_Id: a declared object first in the braces is the result
+        // itself, copied whatever its kind (not a child of a new CSG), and only object
+        // modifiers may follow it.
+        if (!copy_identifier()) {
+            Csg csg;
+            csg.kind = w == "union" || w == "composite" ? CsgKind::Union
+                       : w == "merge"                   ? CsgKind::Merge
+                       : w == "intersection"            ? CsgKind::Intersection
+                                                        : CsgKind::Difference;
+            out.shape = Csg{};
+            for (;;) {
+                Token c = peek();
+                Object child;
+                if (c.kind == TokenKind::Word && is_word(c, "light_source")) {
+                    next();
+                    csg.lights.push_back(parse_light_block());
                     continue;
                 }
-                if (try_parse_object(c, child)) {
-                    if (holds_parametric(child)) {
-                        // A patch object: POV-Ray warns, and keeps it.
-                        if (csg.kind == CsgKind::Intersection ||
-                            csg.kind == CsgKind::Difference)
-                            warn(c, "Patch objects not allowed in intersection.");
-                        // A difference inverts a CSG after the first child by inverting
-                        // its children, which leaves a parametric as it is.
-                        if (csg.kind == CsgKind::Difference && !csg.children.empty() &&
-                            std::holds_alternative<Csg>(child.shape))
-                            unsupported(
-                                c, "a CSG holding a parametric cut from a difference");
+                if (c.kind == TokenKind::Word && !is_word(c, "texture") &&
+                    !is_word(c, "pigment") && !is_word(c, "finish") &&
+                    !is_word(c, "normal") && !is_word(c, "interior") &&
+                    !is_word(c, "material")) {
+                    next();
+                    // A declared object named bare is a child, as object { Id } without
+                    // modifiers (POV-Ray's Parse_Object).
+                    const Value* v = lookup(c);
+                    if (auto id = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr) {
+                        child = **id;
+                        child.loc = sources_.location(c);
+                        csg.children.push_back(std::move(child));
+                        continue;
                     }
-                    csg.children.push_back(std::move(child));
-                    continue;
+                    if (try_parse_object(c, child)) {
+                        if (holds_parametric(child)) {
+                            // A patch object: POV-Ray warns, and keeps it.
+                            if (csg.kind == CsgKind::Intersection ||
+                                csg.kind == CsgKind::Difference)
+                                warn(c, "Patch objects not allowed in intersection.");
+                            // A difference inverts a CSG after the first child by
+                            // inverting its children, which leaves a parametric as it is.
+                            if (csg.kind == CsgKind::Difference &&
+                                !csg.children.empty() &&
+                                std::holds_alternative<Csg>(child.shape))
+                                unsupported(
+                                    c,
+                                    "a CSG holding a parametric cut from a difference");
+                        }
+                        csg.children.push_back(std::move(child));
+                        continue;
+                    }
+                    unget(c);
                 }
-                unget(c);
+                break;
             }
-            break;
+            if (csg.kind == CsgKind::Intersection || csg.kind == CsgKind::Difference) {
+                // POV-Ray sees every child of a difference but the first inverted.
+                auto inverted = [&](size_t i) {
+                    return csg.children[i].inverse !=
+                           (csg.kind == CsgKind::Difference && i > 0);
+                };
+                bool bounds_quadric = false;
+                for (size_t i = 0; i < csg.children.size(); ++i)
+                    bounds_quadric =
+                        bounds_quadric ||
+                        (std::holds_alternative<Quadric>(csg.children[i].shape) &&
+                         !inverted(i));
+                std::vector<bool> flags(csg.children.size());
+                for (size_t i = 0; i < csg.children.size(); ++i) flags[i] = inverted(i);
+                if (bounds_quadric &&
+                    !quadric_csg_bounds_impl(csg.children, flags, pov_box_of(options_)))
+                    unsupported(t,
+                                "a quadric in an intersection or difference with shapes "
+                                "other than planes and quadrics");
+            }
+            out.shape = std::move(csg);
+            close_csg_box(out);
         }
-        if (csg.kind == CsgKind::Intersection || csg.kind == CsgKind::Difference) {
-            // POV-Ray sees every child of a difference but the first inverted.
-            auto inverted = [&](size_t i) {
-                return csg.children[i].inverse !=
-                       (csg.kind == CsgKind::Difference && i > 0);
-            };
-            bool bounds_quadric = false;
-            for (size_t i = 0; i < csg.children.size(); ++i)
-                bounds_quadric =
-                    bounds_quadric ||
-                    (std::holds_alternative<Quadric>(csg.children[i].shape) &&
-                     !inverted(i));
-            std::vector<bool> flags(csg.children.size());
-            for (size_t i = 0; i < csg.children.size(); ++i) flags[i] = inverted(i);
-            if (bounds_quadric &&
-                !quadric_csg_bounds_impl(csg.children, flags, pov_box_of(options_)))
-                unsupported(t,
-                            "a quadric in an intersection or difference with shapes "
-                            "other than planes and quadrics");
-        }
-        out.shape = std::move(csg);
-        close_csg_box(out);
     } else if (w == "object") {
         open();
         Token id = next();

@@ -495,22 +495,46 @@ TEST(RealSceneForms, BareObjectIdentifierInCsg) {
     // A declared object named bare inside a CSG is a child (POV-Ray's Parse_Object).
     const Scene s = parse(
         "#declare S = sphere { <0, 0, -1>, 0.8 }\n"
-        "#declare D = difference { box { -1, 1 } sphere { 0, 1.2 } }\n"
+        "#declare B = box { -1, 1 }\n"
         "difference { box { -1, 1 } S }\n"
-        "difference { D S }\n");
-    ASSERT_EQ(s.objects.size(), 2u);
+        "union { light_source { 0, 1 } S B }\n"
+        "object { S bounded_by { B } clipped_by { B S } }\n");
+    ASSERT_EQ(s.objects.size(), 3u);
     const Csg* a = std::get_if<Csg>(&s.objects[0].shape);
     ASSERT_NE(a, nullptr);
     ASSERT_EQ(a->children.size(), 2u);
     EXPECT_NE(std::get_if<Sphere>(&a->children[1].shape), nullptr);
-    // First in the braces POV-Ray extends the named CSG: a child when it is of this kind.
     const Csg* b = std::get_if<Csg>(&s.objects[1].shape);
     ASSERT_NE(b, nullptr);
     EXPECT_EQ(b->children.size(), 2u);
-    EXPECT_EQ(error_of("#declare S = sphere { 0, 1 }\nunion { S sphere { 1, 1 } }"),
-              "test.pov:2:9: error: unsupported: an object identifier first in a CSG of "
-              "another "
-              "kind");
+    // In bounded_by and clipped_by too.
+    ASSERT_EQ(s.objects[2].bounded_by->size(), 1u);
+    EXPECT_NE(std::get_if<Box>(&(*s.objects[2].bounded_by)[0].shape), nullptr);
+    ASSERT_EQ(s.objects[2].clipped_by->size(), 2u);
+    EXPECT_NE(std::get_if<Sphere>(&(*s.objects[2].clipped_by)[1].shape), nullptr);
+}
+
+TEST(RealSceneForms, ObjectIdentifierFirstInCsgIsTheResult) {
+    // POV-Ray's Parse_Object_Id: first in the braces, a declared object is copied as the
+    // result, whatever its kind, and only modifiers may follow.
+    const Scene s = parse(
+        "#declare S = sphere { <0, 0, -1>, 0.8 }\n"
+        "#declare U = union { box { -1, 1 } sphere { 0, 1.2 } }\n"
+        "intersection { S pigment { rgb <1, 0, 0> } translate x }\n"
+        "union { U }\n");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const Sphere* sphere = std::get_if<Sphere>(&s.objects[0].shape);
+    ASSERT_NE(sphere, nullptr);
+    ASSERT_EQ(s.objects[0].texture.size(), 1u);
+    EXPECT_EQ(s.objects[0].transform.point({0, 0, 0}).x, 1.0);
+    const Csg* u = std::get_if<Csg>(&s.objects[1].shape);
+    ASSERT_NE(u, nullptr);
+    EXPECT_EQ(u->children.size(), 2u);
+    // POV-Ray: "No matching } in 'difference', object found".
+    EXPECT_EQ(error_of("#declare S = sphere { 0, 1 }\n"
+                       "#declare D = difference { box { -1, 1 } S }\n"
+                       "difference { D S }"),
+              "test.pov:3:16: error: expected an object modifier or '}' but found 'S'");
 }
 
 // String relational operators (POV-Ray 3.7's Parse_Rel_String_Term; the values are in
