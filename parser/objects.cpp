@@ -302,14 +302,27 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
         note_sphere_pov_matrix(*sphere, obj.transform, t, step);
     if (auto sweep = std::get_if<SphereSweep>(&obj.shape);
         sweep && move_sweep_spheres(*sweep, t, step)) {
-    } else if (plane && step.kind == TransformStep::Kind::Translate &&
+    } else if (plane && step.kind != TransformStep::Kind::Matrix &&
                obj.transform.is_identity()) {
-        // POV-Ray folds a move of a plane not yet turned or scaled into its offset (in
-        // its order of sums): rays meet it in world space, to the last bit as POV-Ray's
-        // (trace() results that scenes feed back as new origins depend on those bits).
-        const Vector3& n = plane->normal;
+        // POV-Ray folds translate, rotate and scale of a plane that keeps no matrix yet
+        // (none before a `matrix` or `transform`) into its normal and offset, in its
+        // order of sums (Plane::Translate, Rotate, Scale): rays meet it in world space,
+        // to the last bit as POV-Ray's (trace() results that scenes feed back as new
+        // origins depend on those bits), and an intersection's box is cut by the
+        // folded plane (Compute_Plane_Min_Max without a matrix).
+        Vector3& n = plane->normal;
         const Vector3& v = step.amount;
-        plane->distance += n.x * v.x + n.y * v.y + n.z * v.z;
+        if (step.kind == TransformStep::Kind::Translate) {
+            plane->distance += n.x * v.x + n.y * v.y + n.z * v.z;
+        } else if (step.kind == TransformStep::Kind::Rotate) {
+            n = t.vector(n);
+        } else {
+            n = {n.x / v.x, n.y / v.y, n.z / v.z};
+            const Real len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+            const Real inv = 1.0 / len;
+            n = {n.x * inv, n.y * inv, n.z * inv};
+            plane->distance /= len;
+        }
     } else if (auto patch = std::get_if<BicubicPatch>(&obj.shape)) {
         // POV-Ray keeps no matrix for a patch: its control points move, and its flat
         // pieces are cut again from them.

@@ -161,30 +161,23 @@ PovBBox shape_bbox(const Object& o) {
 
 // The half space of a plane whose normal lies along an axis, as a box (POV-Ray's
 // Compute_Plane_Min_Max, which an intersection's box takes from its planes); every other
-// plane bounds nothing. A plane only moved keeps its normal and offset; a turned or
-// scaled one is read through its transform as POV-Ray reads it (its formula, not the
-// plane's true half space): the normal through the transposed matrix, the offset less
-// that normal taken as a point back through the inverse, plus one. (POV-Ray folds moves
-// made before the first turn into the offset; a plane moved and then turned is read with
-// its whole transform here.)
+// plane bounds nothing. A plane keeps no matrix until a `matrix` or `transform` (the
+// parser folds translate, rotate and scale into its normal and offset, as POV-Ray's
+// Plane::Translate, Rotate, Scale): its own normal and offset. With one, it is read as
+// POV-Ray reads it (its formula, not the plane's true half space): the normal through
+// the transposed matrix, the offset less that normal taken as a point back through the
+// inverse, plus one.
 Bounds3 pov_plane_bounds(const Plane& plane, const CompactTransform& xf) {
     Vector3 n = plane.normal;
     Real d = plane.distance;
     if (!xf.is_identity()) {
         const Matrix34& m = xf.forward();
-        const bool moved_only = m.m[0][0] == 1 && m.m[1][1] == 1 && m.m[2][2] == 1 &&
-                                m.m[0][1] == 0 && m.m[0][2] == 0 && m.m[1][0] == 0 &&
-                                m.m[1][2] == 0 && m.m[2][0] == 0 && m.m[2][1] == 0;
-        if (moved_only) {
-            d += n.x * m.m[0][3] + n.y * m.m[1][3] + n.z * m.m[2][3];
-        } else {
-            const Vector3& o = plane.normal;
-            n = {m.m[0][0] * o.x + m.m[1][0] * o.y + m.m[2][0] * o.z,
-                 m.m[0][1] * o.x + m.m[1][1] * o.y + m.m[2][1] * o.z,
-                 m.m[0][2] * o.x + m.m[1][2] * o.y + m.m[2][2] * o.z};
-            const Point3 p = xf.inverse_point(Point3{n.x, n.y, n.z});
-            d = plane.distance - (p.x * n.x + p.y * n.y + p.z * n.z) + 1.0;
-        }
+        const Vector3& o = plane.normal;
+        n = {m.m[0][0] * o.x + m.m[1][0] * o.y + m.m[2][0] * o.z,
+             m.m[0][1] * o.x + m.m[1][1] * o.y + m.m[2][1] * o.z,
+             m.m[0][2] * o.x + m.m[1][2] * o.y + m.m[2][2] * o.z};
+        const Point3 p = xf.inverse_point(Point3{n.x, n.y, n.z});
+        d = plane.distance - (p.x * n.x + p.y * n.y + p.z * n.z) + 1.0;
     }
     Bounds3 b{{-kBoundHuge / 2, -kBoundHuge / 2, -kBoundHuge / 2},
               {kBoundHuge / 2, kBoundHuge / 2, kBoundHuge / 2}};

@@ -371,6 +371,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "csg_hits_beyond_box",
                              "bicubic_patch_clipped",
                              "sphere_pov_matrix_box",
+                             "plane_fold_csg_box",
                              "mesh_normal_rules",
                              "pigment_map_replaced",
                              "map_entries",
