@@ -161,6 +161,8 @@ class Interpreter {
 
     // ---- scene items (objects.cpp, textures.cpp, scene_items.cpp)
     bool try_parse_object(const Token& t, Object& out);
+    // POV-Ray's Parse_Object: a declared object named bare (a copy of it), or an object.
+    bool try_parse_object_or_identifier(const Token& t, Object& out);
     void parse_object_modifiers(Object& obj);
     bool try_object_modifier(Object& obj, const Token& t);
     bool try_transform(const Token& t, Transform& out, TransformStep* step = nullptr);

@@ -645,14 +645,8 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         } else {
             for (; !is_punct(o, '}'); o = next()) {
                 Object child;
-                // A declared object named bare is one of them (POV-Ray's Parse_Object).
-                const Value* v = o.kind == TokenKind::Word ? lookup(o) : nullptr;
-                if (auto id = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr) {
-                    child = **id;
-                    child.loc = sources_.location(o);
-                } else if (!try_parse_object(o, child)) {
+                if (!try_parse_object_or_identifier(o, child))
                     expected("an object or '}'", o);
-                }
                 list.push_back(std::move(child));
             }
             // POV-Ray computes a quadric's box again from its clips.
@@ -703,6 +697,16 @@ void Interpreter::parse_object_modifiers(Object& obj) {
         }
         if (!try_object_modifier(obj, t)) expected("an object modifier or '}'", t);
     }
+}
+
+bool Interpreter::try_parse_object_or_identifier(const Token& t, Object& out) {
+    const Value* v = t.kind == TokenKind::Word ? lookup(t) : nullptr;
+    if (auto id = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr) {
+        out = **id;
+        out.loc = sources_.location(t);
+        return true;
+    }
+    return try_parse_object(t, out);
 }
 
 bool Interpreter::try_parse_object(const Token& t, Object& out) {
@@ -973,15 +977,8 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                     !is_word(c, "material")) {
                     next();
                     // A declared object named bare is a child, as object { Id } without
-                    // modifiers (POV-Ray's Parse_Object).
-                    const Value* v = lookup(c);
-                    if (auto id = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr) {
-                        child = **id;
-                        child.loc = sources_.location(c);
-                        csg.children.push_back(std::move(child));
-                        continue;
-                    }
-                    if (try_parse_object(c, child)) {
+                    // modifiers.
+                    if (try_parse_object_or_identifier(c, child)) {
                         if (holds_parametric(child)) {
                             // A patch object: POV-Ray warns, and keeps it.
                             if (csg.kind == CsgKind::Intersection ||

@@ -500,15 +500,8 @@ Light Interpreter::parse_light_block() {
             expect_punct('{');
             Token o = next();
             Object obj;
-            // `looks_like { Shape }`: an object identifier stands for its object, as
-            // in POV-Ray's Parse_Object.
-            const Value* v = o.kind == TokenKind::Word ? lookup(o) : nullptr;
-            if (auto id = v ? std::get_if<std::shared_ptr<Object>>(v) : nullptr) {
-                obj = **id;
-                obj.loc = sources_.location(o);
-            } else if (!try_parse_object(o, obj)) {
-                expected("an object", o);
-            }
+            // `looks_like { Shape }`: an object identifier stands for its object.
+            if (!try_parse_object_or_identifier(o, obj)) expected("an object", o);
             expect_punct('}');
             finish_object(obj);
             obj.no_shadow = true;
