@@ -372,6 +372,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "bicubic_patch_clipped",
                              "sphere_pov_matrix_box",
                              "plane_fold_csg_box",
+                             "csg_plane_prisms",
                              "mesh_normal_rules",
                              "pigment_map_replaced",
                              "map_entries",
