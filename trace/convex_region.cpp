@@ -82,7 +82,8 @@ Bounds3 convex_region_bounds(const Bounds3& box, std::span<const HalfSpace> cuts
     // rounding of their own coordinates (not of the far vertices').
     Bounds3 out;
     for (int a = 0; a < 3; ++a) {
-        const bool open_lo = found.lo[a]<-far / 2, open_hi = found.hi[a]> far / 2;
+        const bool open_lo = found.lo[a] < -far / 2;
+        const bool open_hi = found.hi[a] > far / 2;
         const Real reach = std::max(open_lo ? 0 : std::fabs(found.lo[a]),
                                     open_hi ? 0 : std::fabs(found.hi[a]));
         const Real extent = open_lo || open_hi ? 0 : found.hi[a] - found.lo[a];
