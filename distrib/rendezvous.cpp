@@ -21,6 +21,7 @@
 #include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <random>
 #include <thread>
 #include <unordered_map>
@@ -35,6 +36,7 @@
 #include "distrib/tcp.h"
 #include "distrib/wire/control.h"
 #include "distrib/wire/items.h"
+#include "distrib/wire/messages.h"
 #include "distrib/wire/pixels.h"
 #include "parser/parser.h"
 #include "trace/pattern.h"
@@ -113,20 +115,25 @@ std::vector<std::string> gather_workers(
     std::string error;
     std::vector<std::shared_ptr<Connection>> connections;
     auto on_register = [&](const std::shared_ptr<Connection>& conn, Frame& f) {
-        json j = f.type == FrameType::Control ? parse_control(f) : json();
-        if (control_type(j) != "register" || !j.contains("token") ||
-            !j["token"].is_string() || j["token"].get<std::string>() != token ||
-            !j.contains("rank") || !j["rank"].is_number_integer() ||
-            !j.contains("size") || !j["size"].is_number_integer() ||
-            !j.contains("address") || !j["address"].is_string()) {
+        std::optional<RegisterMessage> reg;
+        if (f.type == FrameType::Control) {
+            const json j = parse_control(f);
+            if (control_type(j) == RegisterMessage::kType) {
+                try {
+                    reg = read_message<RegisterMessage>(j);
+                } catch (const json::exception&) {
+                }
+            }
+        }
+        if (!reg || reg->token != token) {
             std::fprintf(stderr,
                          "povwall: rejected a registration from %s: no valid job token\n",
                          conn->name().c_str());
             conn->close();
             return;
         }
-        const int rank = j["rank"].get<int>(), n = j["size"].get<int>();
-        const std::string where = j["address"].get<std::string>();
+        const int rank = int(reg->rank), n = int(reg->size);
+        const std::string where = reg->address;
         if (size == 0 && n >= 1 && n <= 4096) {
             size = n;
             by_rank.assign(size_t(n), std::string());

@@ -39,6 +39,7 @@
 #include "distrib/wire/control.h"
 #include "distrib/wire/items.h"
 #include "distrib/wire/job.h"
+#include "distrib/wire/messages.h"
 #include "distrib/wire/photons.h"
 #include "distrib/wire/pixels.h"
 #include "distrib/wire/samples.h"
@@ -247,7 +248,7 @@ class TcpCoordinator {
                 encode_frame(FrameType::Samples, uint32_t(count), body, *buf);
                 w.conn->send(buf);
             }
-            w.conn->send(control_frame({{"type", "samples"}, {"count", n}}));
+            w.conn->send(message_frame(SamplesSentMessage{uint64_t(n)}));
         }
     }
 
@@ -255,7 +256,7 @@ class TcpCoordinator {
     void start_pass() {
         started_ = true;
         measure_for_cores();
-        const json start = {{"type", "start"}, {"reach", reach_to_json(reach_)}};
+        const Buffer start = message_frame(StartMessage{reach_to_json(reach_)});
         // For the tests: POVWALL_FAULT_LATE_START="I,MS" sends worker I its start MS
         // milliseconds after the others, so that its peers' items come first.
         int late = -1, late_ms = 0;
@@ -263,15 +264,15 @@ class TcpCoordinator {
             if (std::sscanf(spec, "%d,%d", &late, &late_ms) != 2) late = -1;
         for (size_t k = 0; k < workers_.size(); ++k) {
             if (int(k) != late) {
-                workers_[k].conn->send(control_frame(start));
+                workers_[k].conn->send(start);
                 continue;
             }
             auto timer = std::make_shared<asio::steady_timer>(
                 io_, std::chrono::milliseconds(late_ms));
-            timer->async_wait([this, timer, k, frame = control_frame(start)](
-                                  boost::system::error_code ec) {
-                if (!ec && in_frame_) workers_[k].conn->send(frame);
-            });
+            timer->async_wait(
+                [this, timer, k, frame = start](boost::system::error_code ec) {
+                    if (!ec && in_frame_) workers_[k].conn->send(frame);
+                });
         }
         emit();
     }
@@ -490,23 +491,24 @@ class TcpCoordinator {
         if (f.type != FrameType::Control) return fail(i, "unexpected frame");
         json j = parse_control(f);
         const std::string type = control_type(j);
-        if (type == "error") {
-            // A peer it cannot reach is taken as lost (a worker killed while the others
-            // connect to it shows here first), so recovery can leave it out.
-            const int unreachable = j.value("unreachable", -1);
-            if (unreachable >= 0 && unreachable < int(workers_.size()) &&
-                unreachable != i)
-                return fail(unreachable, "not reachable from worker " +
-                                             std::to_string(i) + " (" +
-                                             j.value("message", "error") + ")");
-            return fail(i, j.value("message", "error"), false);
-        } else if (type == "ready") {
-            auto mine = j.at("boxes").get<std::vector<int>>();
-            auto counts = j.at("primitives").get<std::vector<size_t>>();
-            w.objects_kept = j.at("objects_kept").get<size_t>();
-            w.objects_left_out = j.at("objects_left_out").get<size_t>();
-            for (size_t k = 0; k < mine.size() && k < counts.size(); ++k)
-                empty_[mine[k]] = counts[k] == 0;
+        if (type == ErrorMessage::kType) {
+            // A worker it names as the cause (a peer it cannot reach: a worker killed
+            // while the others connect to it shows here first; or one that sent it a
+            // malformed item frame) is taken as lost, so recovery can leave it out.
+            const auto e = read_message<ErrorMessage>(j);
+            if (e.culprit >= 0 && e.culprit < int64_t(workers_.size()) && e.culprit != i)
+                return fail(int(e.culprit), e.message);
+            return fail(i, e.message, false);
+        } else if (type == ReadyMessage::kType) {
+            const auto ready = read_message<ReadyMessage>(j);
+            w.objects_kept = ready.objects_kept;
+            w.objects_left_out = ready.objects_left_out;
+            for (size_t k = 0; k < ready.boxes.size(); ++k) {
+                const int b = ready.boxes[k];
+                if (size_t(b) >= owner_.size() || owner_[size_t(b)] != i % team_size_)
+                    return fail(i, "reported box " + std::to_string(b) + " as its own");
+                empty_[size_t(b)] = ready.primitives[k] == 0;
+            }
             w.ready = true;
             for (const WorkerState& o : workers_) {
                 if (!o.ready) return;
@@ -521,41 +523,40 @@ class TcpCoordinator {
             for (WorkerState& o : workers_)
                 for (const Buffer& b : photons) o.conn->send(b);
             send_samples();
-        } else if (type == "samples") {  // it holds the wave's samples
+        } else if (type == SamplesTakenMessage::kType) {  // it holds the wave's samples
             w.samples_taken = true;
             for (const WorkerState& o : workers_) {
                 if (!o.samples_taken) return;
             }
             start_pass();
-        } else if (type == "status") {
-            w.created = j.at("created").get<uint64_t>();
-            const uint64_t finished = j.at("finished").get<uint64_t>();
+        } else if (type == StatusMessage::kType) {
+            const auto status = read_message<StatusMessage>(j);
+            w.created = status.created;
             // Progress: items (rays and results) the workers have finished.
-            if (settings_->progress && finished > w.finished)
-                settings_->progress->rays += finished - w.finished;
-            w.finished = finished;
-            w.pixels_done = j.value("pixels", uint64_t(0));
-            if (j.contains("sent") && j["sent"].is_array() &&
-                j["sent"].size() == workers_.size())
-                w.sent = j["sent"].get<std::vector<uint64_t>>();
+            if (settings_->progress && status.finished > w.finished)
+                settings_->progress->rays += status.finished - w.finished;
+            w.finished = status.finished;
+            w.pixels_done = status.pixels;
+            if (status.sent.size() == workers_.size()) w.sent = status.sent;
             report_progress();
-            long seq = j.at("seq").get<long>();
-            if (seq >= 0) {
-                w.wave_seq = seq;
+            if (status.seq >= 0) {
+                w.wave_seq = long(status.seq);
                 w.wave_created = w.created;
                 w.wave_finished = w.finished;
                 check_wave();
             }
             emit();
-        } else if (type == "done") {
-            const json& boxes = j.at("stats");
-            size_t k = 0;
-            for (size_t b = 0; b < owner_.size(); ++b) {
-                if (owner_[b] != i % team_size_ || k >= boxes.size()) continue;
+        } else if (type == DoneMessage::kType) {
+            const auto done = read_message<DoneMessage>(j);
+            for (const BoxReport& r : done.boxes) {
+                if (size_t(r.box) >= owner_.size() ||
+                    owner_[size_t(r.box)] != i % team_size_)
+                    return fail(i, "reported statistics of box " + std::to_string(r.box) +
+                                       ", not its own");
                 // Every team hosts the box: its copies' reports add up.
-                add_box_stats(box_stats_[b], boxes[k++]);
+                add_box_stats(box_stats_[size_t(r.box)], r.stats);
             }
-            w.peak_resident = j.value("peak_resident", uint64_t(0));
+            w.peak_resident = done.peak_resident;
             w.done = true;
             for (const WorkerState& o : workers_) {
                 if (!o.done) return;
@@ -614,8 +615,7 @@ class TcpCoordinator {
             const int team = next_range_ % teams_;
             WorkerState& w = workers_[size_t(team * team_size_ +
                                              (box >= 0 ? owner_[size_t(box)] : 0))];
-            w.conn->send(
-                control_frame({{"type", "pixels"}, {"begin", begin}, {"end", end}}));
+            w.conn->send(message_frame(PixelRangeMessage{begin, end}));
             w.pixels_sent += uint64_t(end - begin);
             ++created_;
             live += 1 + (end - begin);
@@ -663,7 +663,7 @@ class TcpCoordinator {
     void probe() {
         wave_pending_ = ++wave_seq_;
         for (WorkerState& w : workers_) {
-            w.conn->send(control_frame({{"type", "probe"}, {"seq", wave_seq_}}));
+            w.conn->send(message_frame(ProbeMessage{wave_seq_}));
         }
     }
 
@@ -682,7 +682,7 @@ class TcpCoordinator {
         last_wave_ = counts;
         if (created != finished) return;  // traffic remains: later statuses probe again
         if (!same) return probe();
-        for (WorkerState& w : workers_) w.conn->send(control_frame({{"type", "finish"}}));
+        for (WorkerState& w : workers_) w.conn->send(message_frame(FinishMessage{}));
     }
 
     const TcpOptions tcp_;

@@ -40,6 +40,7 @@
 #include "distrib/wire/control.h"
 #include "distrib/wire/items.h"
 #include "distrib/wire/job.h"
+#include "distrib/wire/messages.h"
 #include "distrib/wire/photons.h"
 #include "distrib/wire/pixels.h"
 #include "distrib/wire/samples.h"
@@ -157,11 +158,8 @@ class Worker {
                 registration_->on_frame = [](Frame&) {};
                 registration_->on_error = [](const std::string&) {};
                 registration_->start();
-                registration_->send(control_frame({{"type", "register"},
-                                                   {"token", options_.token},
-                                                   {"rank", options_.rank},
-                                                   {"size", options_.size},
-                                                   {"address", address}}));
+                registration_->send(message_frame(RegisterMessage{
+                    options_.token, options_.rank, options_.size, address}));
             });
     }
 
@@ -207,14 +205,23 @@ class Worker {
             };
         } else if (from >= 0) {
             incoming_.push_back(conn);
-            conn->on_frame = [this](Frame& fr) { items(fr); };
+            std::weak_ptr<Connection> weak = conn;
+            conn->on_frame = [this, from, weak](Frame& fr) { from_peer(from, weak, fr); };
+            conn->on_error = [this, from, weak](const std::string& why) {
+                // A peer that dies shows as a lost connection, which the coordinator
+                // sees for itself; one whose bytes are no frame misbehaves.
+                if (why.rfind("disconnected", 0) != 0) misbehaving_peer(from, weak, why);
+            };
         } else {
             conn->close();
         }
     }
 
     void from_coordinator(Frame& f) {
-        if (f.type == FrameType::Items) return items(f);
+        if (f.type == FrameType::Items) {
+            if (!items(f)) fail_job("a malformed item frame from the coordinator");
+            return;
+        }
         if (f.type == FrameType::Samples) return sample_positions(f);
         if (f.type == FrameType::Photons) return photon_records(f);
         const json j = parse_control(f);
@@ -235,14 +242,15 @@ class Worker {
             job(j);
         } else if (type == "frame") {
             frame(j);
-        } else if (type == "samples") {
+        } else if (type == SamplesSentMessage::kType) {
             // The next run's camera samples (anti-aliasing waves): slot k is the k-th
             // position of the Samples frames before this message.
-            if (running_ || j.at("count").get<size_t>() != pending_samples_.size())
+            const auto sent = read_message<SamplesSentMessage>(j);
+            if (running_ || sent.count != pending_samples_.size())
                 return fail_job("bad sample list");
             host_->set_samples(std::move(pending_samples_));
             pending_samples_ = {};
-            coordinator_->send(control_frame({{"type", "samples"}}));
+            coordinator_->send(message_frame(SamplesTakenMessage{}));
         } else if (type == "photons") {
             // The frame's photon map, whose photons came before (wire/photons.h).
             std::shared_ptr<const trace::PhotonMap> map;
@@ -250,13 +258,14 @@ class Worker {
                 return fail_job("bad photon map");
             pending_photons_ = {};
             host_->set_photon_map(std::move(map));
-        } else if (type == "start") {
+        } else if (type == StartMessage::kType) {
             // A frame's first run, or (anti-aliasing) the next wave's.
             if (running_) return fail_job("'start' during a run");
             running_ = true;
             done_ = false;
             std::vector<Bounds3> reach;
-            if (!reach_from_json(j.at("reach"), host_->box_count(), reach))
+            if (!reach_from_json(read_message<StartMessage>(j).reach, host_->box_count(),
+                                 reach))
                 return fail_job("bad box reach table");
             host_->set_box_reach(std::move(reach));
             // One render thread: the io thread traces itself, between network events.
@@ -271,16 +280,17 @@ class Worker {
                 render_ = std::thread([this] { host_->run(threads_, false); });
             }
             send_status(-1);
-        } else if (type == "pixels") {
-            const int64_t total = host_->item_limits().pixels;
-            const int begin = j.at("begin").get<int>(), end = j.at("end").get<int>();
-            if (!host_ || begin < 0 || begin > end || end > total)
+        } else if (type == PixelRangeMessage::kType) {
+            const auto range = read_message<PixelRangeMessage>(j);
+            if (range.end > host_->item_limits().pixels)
                 return fail_job("bad pixel range");
-            host_->emit_pixels(begin, end);
+            host_->emit_pixels(int(range.begin), int(range.end));
             if (inline_) schedule_drain();
-        } else if (type == "probe") {
-            send_status(j.at("seq").get<long>());
-        } else if (type == "finish") {
+        } else if (type == ProbeMessage::kType) {
+            const auto probe = read_message<ProbeMessage>(j);
+            if (probe.seq < 0) return fail_job("bad probe");
+            send_status(long(probe.seq));
+        } else if (type == FinishMessage::kType) {
             finish();
         }
     }
@@ -309,7 +319,7 @@ class Worker {
         for (size_t i = 0; i < addresses.size(); ++i)
             to_connect += int(i) != self_ && needed[i];
         auto remaining = std::make_shared<int>(to_connect);
-        if (to_connect == 0) coordinator_->send(control_frame(ready_message()));
+        if (to_connect == 0) coordinator_->send(message_frame(ready_message()));
         for (size_t i = 0; i < addresses.size(); ++i) {
             if (int(i) == self_ || !needed[i]) continue;
             auto socket = std::make_shared<tcp::socket>(io_);
@@ -319,26 +329,25 @@ class Worker {
             } catch (const DistribError& e) {
                 return fail_job(e.what());
             }
-            socket->async_connect(
-                ep, [this, socket, i, remaining,
-                     address = addresses[i]](boost::system::error_code ec) {
-                    if (ec) {
-                        // Most likely that worker died: said as its loss, which the
-                        // coordinator can recover from, not as this worker's refusal.
-                        return fail_job(
-                            "cannot connect to worker " + address + ": " + ec.message(),
-                            int(i));
-                    }
-                    auto conn = std::make_shared<Connection>(std::move(*socket), address);
-                    conn->on_frame = [](Frame&) {};
-                    conn->on_error = [](const std::string&) {
-                    };  // the coordinator sees the death
-                    conn->start();
-                    conn->send(hello_frame({options_.token, self_}));
-                    peers_[i] = conn;
-                    if (--*remaining == 0)
-                        coordinator_->send(control_frame(ready_message()));
-                });
+            socket->async_connect(ep, [this, socket, i, remaining,
+                                       address =
+                                           addresses[i]](boost::system::error_code ec) {
+                if (ec) {
+                    // Most likely that worker died: said as its loss, which the
+                    // coordinator can recover from, not as this worker's refusal.
+                    return fail_job("not reachable from worker " + std::to_string(self_) +
+                                        " (" + address + ": " + ec.message() + ")",
+                                    int(i));
+                }
+                auto conn = std::make_shared<Connection>(std::move(*socket), address);
+                conn->on_frame = [](Frame&) {};
+                conn->on_error = [](const std::string&) {
+                };  // the coordinator sees the death
+                conn->start();
+                conn->send(hello_frame({options_.token, self_}));
+                peers_[i] = conn;
+                if (--*remaining == 0) coordinator_->send(message_frame(ready_message()));
+            });
         }
     }
 
@@ -350,7 +359,7 @@ class Worker {
         job_->frame = std::move(next);
         job_->inherited = false;
         done_ = false;
-        prepare_then([this] { coordinator_->send(control_frame(ready_message())); });
+        prepare_then([this] { coordinator_->send(message_frame(ready_message())); });
     }
 
     // Parsing and building the boxes run beside the io thread, which meanwhile tells the
@@ -378,16 +387,15 @@ class Worker {
         busy_timer_.expires_after(std::chrono::seconds(1));
         busy_timer_.async_wait([this](boost::system::error_code ec) {
             if (ec || !busy_ || !coordinator_) return;
-            coordinator_->send(control_frame({{"type", "busy"}}));
+            coordinator_->send(message_frame(BusyMessage{}));
             busy_beat();
         });
     }
 
-    // `unreachable`: the index of a peer this worker could not reach (-1: none).
-    void fail_job(const std::string& message, int unreachable = -1) {
-        json error = {{"type", "error"}, {"message", message}};
-        if (unreachable >= 0) error["unreachable"] = unreachable;
-        coordinator_->send(control_frame(error));
+    // `culprit`: the index of a peer that caused the failure (one this worker could
+    // not reach, or one that sent it a malformed item frame; -1: none).
+    void fail_job(const std::string& message, int culprit = -1) {
+        coordinator_->send(message_frame(ErrorMessage{message, culprit}));
     }
 
     // Parses the scene at the job's animation values and builds this worker's boxes (off
@@ -514,14 +522,9 @@ class Worker {
         return true;
     }
 
-    json ready_message() const {
-        json ready = {{"type", "ready"},
-                      {"boxes", mine_},
-                      {"objects_kept", scene_.objects.size()},
-                      {"objects_left_out", scene_.objects_left_out}};
-        std::vector<size_t> counts;
-        for (int b : mine_) counts.push_back(host_->primitive_count(b));
-        ready["primitives"] = counts;
+    ReadyMessage ready_message() const {
+        ReadyMessage ready{mine_, {}, scene_.objects.size(), scene_.objects_left_out};
+        for (int b : mine_) ready.primitives.push_back(host_->primitive_count(b));
         return ready;
     }
 
@@ -569,8 +572,33 @@ class Worker {
         coordinator_.reset();
     }
 
-    void items(Frame& f) {
-        if (f.type != FrameType::Items || !host_) return;
+    // A frame from the worker `from` (its hello's index): only item frames, for boxes
+    // this worker hosts, come from peers.
+    void from_peer(int from, const std::weak_ptr<Connection>& conn, Frame& f) {
+        if (!job_ || size_t(from) >= job_->workers.size() || from == self_)
+            return misbehaving_peer(from, conn, "a hello from a worker of no index here");
+        if (f.type != FrameType::Items)
+            return misbehaving_peer(from, conn, "a frame not of items");
+        if (!items(f))
+            return misbehaving_peer(
+                from, conn, "a malformed item frame, or items for a box not hosted here");
+    }
+
+    // Names the peer to the coordinator, which takes it as lost (and recovery leaves it
+    // out), and stops reading from it.
+    void misbehaving_peer(int from, const std::weak_ptr<Connection>& conn,
+                          const std::string& what) {
+        if (const auto c = conn.lock()) c->close();
+        const std::string said = "sent worker " + std::to_string(self_) + " " + what;
+        std::fprintf(stderr, "povwall worker %d: worker %d %s\n", self_, from,
+                     said.c_str());
+        if (coordinator_ && !done_) fail_job(said, from);
+    }
+
+    // Queues a frame's items in their boxes' inboxes; false when it is malformed or holds
+    // an item for a box this worker does not host.
+    bool items(Frame& f) {
+        if (!host_) return true;
         ItemReader rd(f.body, f.count, host_->item_limits(), *numbers_);
         // Records for one box in a row go into its inbox together.
         bool bad = false;
@@ -593,11 +621,7 @@ class Worker {
         }
         bad = bad || rd.bad();
         if (!bad && inline_) schedule_drain();
-        if (bad) {
-            std::fprintf(stderr, "povwall worker: malformed item frame\n");
-            exit_code_ = 3;
-            io_.stop();
-        }
+        return !bad;
     }
 
     // Inline tracing waits until the frames already received are in: one drain (and one
@@ -624,12 +648,8 @@ class Worker {
             if (!inline_) lock.lock();
             sent.push_back(o->sent);
         }
-        coordinator_->send(control_frame({{"type", "status"},
-                                          {"seq", seq},
-                                          {"created", created},
-                                          {"finished", finished},
-                                          {"pixels", host_->pixels_emitted()},
-                                          {"sent", sent}}));
+        coordinator_->send(message_frame(StatusMessage{
+            seq, created, finished, host_->pixels_emitted(), std::move(sent)}));
         if (seq < 0) {
             status_timer_.expires_after(std::chrono::milliseconds(10));
             status_timer_.async_wait([this](boost::system::error_code ec) {
@@ -696,16 +716,12 @@ class Worker {
             if (++count == per_frame) flush_pixels();
         });
         if (count) flush_pixels();
-        // Hosted boxes only, in box order: the coordinator reads them against its owners.
-        json boxes = json::array();
+        // Hosted boxes only, each named: the coordinator checks them against its owners.
+        DoneMessage done;
         const std::vector<BoxStats> all = host_->box_stats();
-        for (int index : mine_) {
-            const BoxStats& b = all[size_t(index)];
-            boxes.push_back(box_stats_json(b));
-        }
-        coordinator_->send(control_frame({{"type", "done"},
-                                          {"stats", boxes},
-                                          {"peak_resident", peak_resident_bytes()}}));
+        for (int index : mine_) done.boxes.push_back({index, all[size_t(index)]});
+        done.peak_resident = peak_resident_bytes();
+        coordinator_->send(message_frame(done));
         done_ = true;  // the coordinator closes the connection; then io_.run() returns
     }
 

@@ -29,7 +29,7 @@ constexpr uint16_t kFrameMagic = 0x5057;  // "PW"
 // 5: sample records carry a focal-blur ray index (20 bytes); 8: the photon map (Photons
 // frames, "photons" message), shadow states carry photon_caustics; 9: ray records carry a
 // dispersion band (flag 128); 10: shadow states carry "no media or fog" (bit 2).
-constexpr uint8_t kProtocolVersion = 10;
+constexpr uint8_t kProtocolVersion = 11;
 constexpr size_t kHeaderSize = 12;
 // Bounds memory per frame; senders split larger batches.
 constexpr size_t kMaxBodySize = size_t(4) << 20;

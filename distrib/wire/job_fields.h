@@ -105,9 +105,36 @@ void read_json(std::string_view name, const nlohmann::json& j, T& out) {
         const std::string s = j.get<std::string>();
         if (s.size() != 1) bad_json_value(name, j);
         out = s[0];
+    } else if constexpr (std::integral<T> && !std::same_as<T, bool>) {
+        // Whole numbers only, in T's range (a writer never writes 1.5 or 1e300 here, and
+        // casting those would be undefined).
+        if (j.is_number_unsigned()) {
+            const uint64_t v = j.get<uint64_t>();
+            if (!std::in_range<T>(v)) bad_json_value(name, j);
+            out = T(v);
+        } else if (j.is_number_integer()) {
+            const int64_t v = j.get<int64_t>();
+            if (!std::in_range<T>(v)) bad_json_value(name, j);
+            out = T(v);
+        } else {
+            bad_json_value(name, j);
+        }
     } else {
         out = j.get<T>();
     }
+}
+// Lists element by element, so that each element is read as the scalars above.
+template <class T>
+void read_json(std::string_view name, const nlohmann::json& j, std::vector<T>& out) {
+    if (!j.is_array()) bad_json_value(name, j);
+    out.clear();
+    out.reserve(j.size());
+    for (const nlohmann::json& e : j) read_json(name, e, out.emplace_back());
+}
+template <class T, size_t N>
+void read_json(std::string_view name, const nlohmann::json& j, std::array<T, N>& out) {
+    if (!j.is_array() || j.size() != N) bad_json_value(name, j);
+    for (size_t k = 0; k < N; ++k) read_json(name, j[k], out[k]);
 }
 template <class T>
 void read_json(std::string_view name, const nlohmann::json& j, std::optional<T>& out) {

@@ -165,9 +165,11 @@ TEST(Recovery, ALostWorkerWithoutRecoveryExitsThreeInEveryMode) {
 }
 
 // A worker that receives items for a box it does not host (a peer's bug or a corrupted
-// stream) refuses the frame and leaves; the coordinator names the loss, and without
-// recovery the render ends with exit code 3 and writes nothing.
-TEST(Recovery, ItemsForABoxTheReceiverDoesNotHostEndTheRenderNamingIt) {
+// stream) refuses the frame and names its sender to the coordinator, which takes the
+// sender as lost: without recovery the render ends with exit code 3 naming the sender and
+// writes nothing; with recovery the sender is left out and the image is the undisturbed
+// one.
+TEST(Recovery, ItemsForABoxTheReceiverDoesNotHostEndTheRenderNamingTheSender) {
     const std::string scene = std::string(POVWALL_SOURCE_DIR) + "/scenes/demo/walls.pov";
     const fs::path out = scratch() / "misrouted.png", err = scratch() / "misrouted.err";
     fs::remove(out);
@@ -179,10 +181,44 @@ TEST(Recovery, ItemsForABoxTheReceiverDoesNotHostEndTheRenderNamingIt) {
     const int status = std::system(cmd.c_str());
     const std::string said = slurp(err);
     EXPECT_EQ(WEXITSTATUS(status), 3) << said;
-    EXPECT_NE(said.find("povwall worker: malformed item frame"), std::string::npos)
+    EXPECT_NE(
+        said.find("povwall worker 1: worker 0 sent worker 1 a malformed item frame, "
+                  "or items for a box not hosted here\n"),
+        std::string::npos)
         << said;
-    EXPECT_NE(said.find("povwall: error: worker 1 ("), std::string::npos) << said;
+    EXPECT_NE(said.find("povwall: error: worker 0 ("), std::string::npos) << said;
+    EXPECT_NE(said.find("): sent worker 1 a malformed item frame, or items for a box not "
+                        "hosted here"),
+              std::string::npos)
+        << said;
     EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Recovery, ASenderOfItemsForABoxTheReceiverDoesNotHostIsLeftOut) {
+    const std::string scene = std::string(POVWALL_SOURCE_DIR) + "/scenes/demo/walls.pov";
+    const fs::path alone = scratch() / "misrouted_alone.exr",
+                   out = scratch() / "misrouted_recovered.exr",
+                   err = scratch() / "misrouted_recovered.err";
+    ASSERT_EQ(
+        run("render " + scene + " -W 160 -H 120 -q --mode single -o " + alone.string())
+            .code,
+        0);
+    const std::string cmd = "POVWALL_FAULT_MISROUTE=20 " + std::string(POVWALL_BINARY) +
+                            " render " + scene +
+                            " -W 160 -H 120 -q --boxes 2x1x1 --procs 2 "
+                            "--worker-start exec -o " +
+                            out.string() + " 2>" + err.string();
+    const int status = std::system(cmd.c_str());
+    const std::string said = slurp(err);
+    ASSERT_EQ(WEXITSTATUS(status), 0) << said;
+    EXPECT_NE(said.find("povwall: worker 0 ("), std::string::npos) << said;
+    EXPECT_NE(
+        said.find("its boxes went to the other workers; the frame is traced again on "
+                  "1 worker process\n"),
+        std::string::npos)
+        << said;
+    RunResult d = run("diff " + alone.string() + " " + out.string() + " --max-rmse 1e-6");
+    EXPECT_EQ(d.code, 0) << said << d.out;
 }
 
 // Ctrl-C reaches the whole process group: the worker processes end quietly and the

@@ -16,6 +16,7 @@
 #include "distrib/wire/frame.h"
 #include "distrib/wire/items.h"
 #include "distrib/wire/job.h"
+#include "distrib/wire/messages.h"
 #include "distrib/wire/photons.h"
 #include "distrib/wire/pixels.h"
 #include "distrib/wire/samples.h"
@@ -707,6 +708,125 @@ TEST(WireJob, AMalformedJobThrowsNamingTheField) {
                   j["output_file_type"] = "";
               }).find("output_file_type"),
               std::string::npos);
+}
+
+// Every control message reads back as written, through a real control frame, and says
+// its type.
+TEST(WireMessages, EveryMessageRoundTripsThroughItsFrame) {
+    auto through_frame = [](const auto& m) {
+        using M = std::decay_t<decltype(m)>;
+        const Buffer buf = message_frame(m);
+        Frame f;
+        EXPECT_EQ(decode_frame(*buf, f), DecodeStatus::Complete);
+        const nlohmann::json j = parse_control(f);
+        EXPECT_EQ(control_type(j), M::kType);
+        return read_message<M>(j);
+    };
+    const ReadyMessage ready =
+        through_frame(ReadyMessage{{1, 4, 7}, {10, 0, 3}, 120, 30});
+    EXPECT_EQ(ready.boxes, (std::vector<int>{1, 4, 7}));
+    EXPECT_EQ(ready.primitives, (std::vector<uint64_t>{10, 0, 3}));
+    EXPECT_EQ(ready.objects_kept, 120u);
+    EXPECT_EQ(ready.objects_left_out, 30u);
+    EXPECT_EQ(through_frame(SamplesSentMessage{12345}).count, 12345u);
+    const PixelRangeMessage range = through_frame(PixelRangeMessage{512, 1024});
+    EXPECT_EQ(range.begin, 512);
+    EXPECT_EQ(range.end, 1024);
+    EXPECT_EQ(through_frame(ProbeMessage{17}).seq, 17);
+    const StatusMessage status =
+        through_frame(StatusMessage{-1, uint64_t(1) << 40, 99, 7, {1, 2, 3}});
+    EXPECT_EQ(status.seq, -1);
+    EXPECT_EQ(status.created, uint64_t(1) << 40);
+    EXPECT_EQ(status.finished, 99u);
+    EXPECT_EQ(status.pixels, 7u);
+    EXPECT_EQ(status.sent, (std::vector<uint64_t>{1, 2, 3}));
+    DoneMessage done;
+    BoxStats b;
+    b.objects = 5;
+    b.rays.shadow = 11;
+    b.rays.radiosity = 4;
+    b.rays.max_level = 3;
+    b.peak_queue = 9;
+    b.busy_seconds = 0.25;
+    done.boxes = {{2, b}, {6, BoxStats{}}};
+    done.peak_resident = 1 << 20;
+    const DoneMessage back = through_frame(done);
+    ASSERT_EQ(back.boxes.size(), 2u);
+    EXPECT_EQ(back.boxes[0].box, 2);
+    EXPECT_EQ(back.boxes[0].stats.objects, 5u);
+    EXPECT_EQ(back.boxes[0].stats.rays.shadow, 11u);
+    EXPECT_EQ(back.boxes[0].stats.rays.radiosity, 4u);
+    EXPECT_EQ(back.boxes[0].stats.rays.max_level, 3);
+    EXPECT_EQ(back.boxes[0].stats.peak_queue, 9u);
+    EXPECT_EQ(back.boxes[0].stats.busy_seconds, 0.25);
+    EXPECT_EQ(back.boxes[1].box, 6);
+    EXPECT_EQ(back.peak_resident, 1u << 20);
+    const ErrorMessage error = through_frame(ErrorMessage{"worker 3 is gone", 3});
+    EXPECT_EQ(error.message, "worker 3 is gone");
+    EXPECT_EQ(error.culprit, 3);
+    const RegisterMessage reg =
+        through_frame(RegisterMessage{"tok", 2, 8, "10.0.0.1:4000"});
+    EXPECT_EQ(reg.token, "tok");
+    EXPECT_EQ(reg.rank, 2);
+    EXPECT_EQ(reg.size, 8);
+    EXPECT_EQ(reg.address, "10.0.0.1:4000");
+    (void)through_frame(BusyMessage{});
+    (void)through_frame(FinishMessage{});
+    (void)through_frame(SamplesTakenMessage{});
+    EXPECT_EQ(
+        through_frame(StartMessage{reach_to_json({Bounds3::everything()})}).reach.size(),
+        1u);
+}
+
+// What no writer makes is refused with a JSON error naming the field: a missing or
+// mistyped field, a fraction or an out-of-range number where a count goes, counts that do
+// not pair up, a reversed range, boxes out of order.
+TEST(WireMessages, InconsistentMessagesAreRefusedNamingTheField) {
+    auto refusal = [](const char* text, auto type_tag) -> std::string {
+        using M = decltype(type_tag);
+        try {
+            (void)read_message<M>(nlohmann::json::parse(text));
+        } catch (const nlohmann::json::exception& e) {
+            return e.what();
+        }
+        return "accepted";
+    };
+    EXPECT_EQ(refusal(R"({"begin":0,"end":5})", PixelRangeMessage{}), "accepted");
+    EXPECT_NE(refusal(R"({"begin":6,"end":5})", PixelRangeMessage{}).find("bad pixels"),
+              std::string::npos);
+    EXPECT_NE(refusal(R"({"begin":1.5,"end":5})", PixelRangeMessage{}).find("bad begin"),
+              std::string::npos);
+    EXPECT_NE(refusal(R"({"begin":0})", PixelRangeMessage{}).find("end"),
+              std::string::npos);
+    EXPECT_NE(refusal(R"({"boxes":[1,2],"primitives":[5],"objects_kept":1,)"
+                      R"("objects_left_out":0})",
+                      ReadyMessage{})
+                  .find("bad primitives"),
+              std::string::npos);
+    EXPECT_NE(refusal(R"({"boxes":[1e300],"primitives":[5],"objects_kept":1,)"
+                      R"("objects_left_out":0})",
+                      ReadyMessage{})
+                  .find("bad boxes"),
+              std::string::npos);
+    EXPECT_NE(refusal(R"({"seq":-2,"created":0,"finished":0,"pixels":0,"sent":[]})",
+                      StatusMessage{})
+                  .find("bad seq"),
+              std::string::npos);
+    EXPECT_NE(
+        refusal(R"({"message":"x","culprit":"two"})", ErrorMessage{}).find("culprit"),
+        std::string::npos);
+    EXPECT_NE(refusal(R"({"boxes":[{"box":3}],"peak_resident":0})", DoneMessage{})
+                  .find("objects"),
+              std::string::npos);
+    DoneMessage unordered;
+    unordered.boxes = {{6, BoxStats{}}, {2, BoxStats{}}};
+    std::string said = "accepted";
+    try {
+        (void)read_message<DoneMessage>(message_json(unordered));
+    } catch (const nlohmann::json::exception& e) {
+        said = e.what();
+    }
+    EXPECT_NE(said.find("bad boxes"), std::string::npos) << said;
 }
 
 // The field lists are flattened into one JSON object (and one command line): two fields

@@ -18,6 +18,7 @@
 #include "distrib/wire/frame.h"
 #include "distrib/wire/items.h"
 #include "distrib/wire/job.h"
+#include "distrib/wire/messages.h"
 #include "distrib/wire/photons.h"
 #include "distrib/wire/pixels.h"
 #include "distrib/wire/samples.h"
@@ -66,6 +67,18 @@ void items(const Frame& f) {
     if (second.bad() || twice != again) std::abort();
 }
 
+// A control message of type M that reads is written back as a message that reads the
+// same.
+template <class M>
+void read_and_write_back(const nlohmann::json& j) {
+    if (control_type(j) != M::kType) return;
+    try {
+        const nlohmann::json again = message_json(read_message<M>(j));
+        if (message_json(read_message<M>(again)) != again) std::abort();
+    } catch (const nlohmann::json::exception&) {
+    }
+}
+
 void control(const Frame& f, std::vector<trace::Photon>& photons) {
     const nlohmann::json j = parse_control(f);
     if (j.is_discarded() || !j.is_object()) return;
@@ -80,13 +93,26 @@ void control(const Frame& f, std::vector<trace::Photon>& photons) {
         } catch (const nlohmann::json::exception&) {
         }
     }
-    // The job messages: a malformed one throws a JSON error naming its field.
+    // The job and control messages: a malformed one throws a JSON error naming its field;
+    // one that reads writes back to the same message.
     const nlohmann::json type = j.value("type", nlohmann::json());
     try {
         if (type == "job") (void)worker_job_from_json(j);
         if (type == "frame") (void)frame_job_from_json(j);
     } catch (const nlohmann::json::exception&) {
     }
+    read_and_write_back<BusyMessage>(j);
+    read_and_write_back<ReadyMessage>(j);
+    read_and_write_back<SamplesSentMessage>(j);
+    read_and_write_back<SamplesTakenMessage>(j);
+    read_and_write_back<StartMessage>(j);
+    read_and_write_back<PixelRangeMessage>(j);
+    read_and_write_back<ProbeMessage>(j);
+    read_and_write_back<FinishMessage>(j);
+    read_and_write_back<StatusMessage>(j);
+    read_and_write_back<DoneMessage>(j);
+    read_and_write_back<ErrorMessage>(j);
+    read_and_write_back<RegisterMessage>(j);
     if (j.contains("reach")) {
         std::vector<Bounds3> reach;
         (void)reach_from_json(j["reach"], 4, reach);
