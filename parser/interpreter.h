@@ -61,6 +61,10 @@ class Interpreter {
     Scene run(int root_file);
 
     // ---- token stream (tokens.cpp)
+    // After `light_source`: whether its braces start with a declared object that is no
+    // light (POV-Ray's Parse_Object_Id then reads it as `object { Id ... }`); reads
+    // nothing.
+    bool light_block_names_object();
     const Token& peek() {
         if (pushback_.empty()) [[unlikely]]
             fill_pushback();

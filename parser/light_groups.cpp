@@ -44,7 +44,7 @@ void Interpreter::parse_light_group(const Token& keyword, Object& out) {
         Token c = peek();
         if (c.kind != TokenKind::Word) break;
         next();
-        if (is_word(c, "light_source")) {
+        if (is_word(c, "light_source") && !light_block_names_object()) {
             csg.lights.push_back(parse_light_block());
             continue;
         }

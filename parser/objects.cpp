@@ -56,33 +56,6 @@ bool textures_use_uv(const LayeredTexture& layers) {
     return false;
 }
 
-// POV-Ray moves and scales a box's corners until its first turn or matrix, so a
-// mirroring scale before that flips its surface coordinates and one after it does not;
-// a turned, mirrored box does not say which it had (a box only moved and scaled is
-// mapped exactly, trace/uv_mapping.cpp).
-bool turned_mirrored_uv_box(const Object& obj) {
-    if (!std::holds_alternative<Box>(obj.shape) || obj.transform.is_identity())
-        return false;
-    const Matrix34& m = obj.transform.forward();
-    const bool diagonal = m.m[0][1] == 0 && m.m[0][2] == 0 && m.m[1][0] == 0 &&
-                          m.m[1][2] == 0 && m.m[2][0] == 0 && m.m[2][1] == 0;
-    const Real det = m.m[0][0] * (m.m[1][1] * m.m[2][2] - m.m[1][2] * m.m[2][1]) -
-                     m.m[0][1] * (m.m[1][0] * m.m[2][2] - m.m[1][2] * m.m[2][0]) +
-                     m.m[0][2] * (m.m[1][0] * m.m[2][1] - m.m[1][1] * m.m[2][0]);
-    if (diagonal || det >= 0) return false;
-    return obj.uv_mapping || textures_use_uv(obj.texture) ||
-           (obj.interior_texture.allocated() && textures_use_uv(*obj.interior_texture));
-}
-
-// The same anywhere in a placed object's tree (a CSG's children inherit its textures).
-bool any_turned_mirrored_uv_box(const Object& obj) {
-    if (turned_mirrored_uv_box(obj)) return true;
-    if (const Csg* csg = std::get_if<Csg>(&obj.shape))
-        for (const Object& c : csg->children)
-            if (any_turned_mirrored_uv_box(c)) return true;
-    return false;
-}
-
 // Whether a texture was given anywhere in the object (POV-Ray's TEXTURED_OBJECT, which a
 // CSG takes from its parts): a texture or interior texture, or one on every mesh face.
 bool texture_given(const Object& obj) {
@@ -322,6 +295,27 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
             const Real inv = 1.0 / len;
             n = {n.x * inv, n.y * inv, n.z * inv};
             plane->distance /= len;
+        }
+    } else if (auto box = std::get_if<Box>(&obj.shape);
+               box && obj.transform.is_identity() &&
+               (step.kind == TransformStep::Kind::Translate ||
+                step.kind == TransformStep::Kind::Scale)) {
+        // POV-Ray moves and scales a box's corners while it has no matrix (until its
+        // first rotate, matrix or transform; Box::Translate, Box::Scale), a negative
+        // scale swapping them: coincident faces of boxes placed so stay exactly equal,
+        // and its surface coordinates are taken in world space.
+        Point3& lo = box->corner1;
+        Point3& hi = box->corner2;
+        const Vector3& v = step.amount;
+        for (int a = 0; a < 3; ++a) {
+            if (step.kind == TransformStep::Kind::Translate) {
+                lo[a] += v[a];
+                hi[a] += v[a];
+            } else {
+                lo[a] *= v[a];
+                hi[a] *= v[a];
+                if (lo[a] > hi[a]) std::swap(lo[a], hi[a]);
+            }
         }
     } else if (auto patch = std::get_if<BicubicPatch>(&obj.shape)) {
         // POV-Ray keeps no matrix for a patch: its control points move, and its flat
@@ -709,6 +703,18 @@ bool Interpreter::try_parse_object_or_identifier(const Token& t, Object& out) {
     return try_parse_object(t, out);
 }
 
+bool Interpreter::light_block_names_object() {
+    Token open = next();
+    bool named = false;
+    if (is_punct(open, '{')) {
+        const Token& first = peek();
+        const Value* v = first.kind == TokenKind::Word ? lookup(first) : nullptr;
+        named = v && std::holds_alternative<std::shared_ptr<Object>>(*v);
+    }
+    unget(open);
+    return named;
+}
+
 bool Interpreter::try_parse_object(const Token& t, Object& out) {
     if (t.kind != TokenKind::Word) return false;
     NestingGuard guard(*this, t);
@@ -751,6 +757,9 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             accept_punct(',');
             require_operand("the box's second corner");
             b.corner2 = parse_vector();
+            // POV-Ray orders the corners (Parse_Box): corner1 is the low one.
+            for (int a = 0; a < 3; ++a)
+                if (b.corner1[a] > b.corner2[a]) std::swap(b.corner1[a], b.corner2[a]);
             out.shape = b;
         }
     } else if (w == "plane") {
@@ -968,8 +977,11 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                 Object child;
                 if (c.kind == TokenKind::Word && is_word(c, "light_source")) {
                     next();
-                    csg.lights.push_back(parse_light_block());
-                    continue;
+                    if (!light_block_names_object()) {
+                        csg.lights.push_back(parse_light_block());
+                        continue;
+                    }
+                    unget(c);  // an object, read below
                 }
                 if (c.kind == TokenKind::Word && !is_word(c, "texture") &&
                     !is_word(c, "pigment") && !is_word(c, "finish") &&
@@ -1060,6 +1072,12 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     } else if (w == "light_group") {
         parse_light_group(t, out);  // takes its own few modifiers
         return true;
+    } else if (w == "light_source" && light_block_names_object()) {
+        // POV-Ray's Parse_Light_Source starts with Parse_Object_Id: a declared object
+        // first in its braces makes it `object { Id ... }`, whatever the object.
+        Token as_object = t;
+        as_object.text = "object";
+        return try_parse_object(as_object, out);
     } else {
         // Checked last: the shapes povwall has are the common case.
         if (is_unsupported_shape(w)) unsupported(t, w);
@@ -1071,8 +1089,6 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         parse_object_modifiers(out);
         mesh_in_own_braces_ = outer;
     }
-    if (turned_mirrored_uv_box(out))
-        unsupported(t, "uv_mapping on a box both mirrored and turned");
     check_algebraic_bounds(out, t);
     if (pending_height_field) finish_height_field(out, std::move(*pending_height_field));
     // Its set-up after the modifiers clears the inverse flag (as a transform does).
@@ -1216,7 +1232,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
             scene_.camera = finish_camera(spec);
             return;
         }
-        if (w == "light_source") {
+        if (w == "light_source" && !light_block_names_object()) {
             scene_.lights.push_back(parse_light_block());
             scene_.lights.back().objects_before = uint32_t(scene_.objects.size());
             return;
@@ -1278,14 +1294,9 @@ void Interpreter::parse_top_level_item(const Token& t) {
                 warn(t, "unnecessary bounding object removed");
             }
         };
-        auto refuse_uv_boxes = [&](const Object& o) {
-            if (std::holds_alternative<Csg>(o.shape) && any_turned_mirrored_uv_box(o))
-                unsupported(t, "uv_mapping on a box both mirrored and turned");
-        };
         Object obj;
         if (try_parse_object(t, obj)) {
             finish_object(obj);
-            refuse_uv_boxes(obj);
             warn_removed_bounds(warn_removed_bounds, obj);
             assign_light_groups(obj);
             collect_lights(obj);
@@ -1300,7 +1311,6 @@ void Interpreter::parse_top_level_item(const Token& t) {
             Object copy = **o;
             copy.loc = sources_.location(t);
             finish_object(copy);
-            refuse_uv_boxes(copy);
             warn_removed_bounds(warn_removed_bounds, copy);
             assign_light_groups(copy);
             collect_lights(copy);

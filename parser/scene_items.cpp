@@ -413,6 +413,7 @@ Light Interpreter::parse_light_block() {
     bool parallel = l.kind == Light::Kind::Parallel || l.parallel;
     if (l.kind == Light::Kind::Parallel) l.kind = Light::Kind::Point;
     bool jitter = false, circular = false, orient = false;
+    std::optional<int> adaptive;
     std::optional<bool> illumination;      // area_illumination, when named
     std::optional<Token> illumination_at;  // where it was last turned on
     std::optional<Token> attenuation_at;   // where media_attenuation was turned on
@@ -483,9 +484,11 @@ Light Interpreter::parse_light_block() {
             accept_punct(',');
             a.size2 = parse_int();
             l.area = a;
-        } else if (w == "adaptive" && l.area)
-            l.area->adaptive = parse_int();
-        // These may come before area_light; kept and applied at the end.
+        }
+        // These may come before area_light, or on a light that has none (POV-Ray keeps
+        // them unused; exporters write them there); applied at the end.
+        else if (w == "adaptive")
+            adaptive = int(parse_float());
         else if (w == "jitter")
             jitter = true;
         else if (w == "circular")
@@ -537,6 +540,7 @@ Light Interpreter::parse_light_block() {
         unsupported(*illumination_at, "area_illumination without area_light");
     if (l.area) {
         if (illumination) l.area->illumination = *illumination;
+        if (adaptive) l.area->adaptive = *adaptive;
         l.area->jitter = l.area->jitter || jitter;
         l.area->circular = l.area->circular || circular;
         l.area->orient = l.area->orient || orient;

@@ -35,26 +35,13 @@ Point3 longitude_latitude(Vector3 d) {
     return {turn_about_y(d.x, d.z), 0.5 + std::asin(d.y) / kPi, 0};
 }
 
-// POV-Ray keeps a box without a matrix while it is only moved and scaled, moving its
-// corners instead (a negative scale swaps them): its mapping then works in world space.
-bool diagonal(const Matrix34& m) {
-    return m.m[0][1] == 0 && m.m[0][2] == 0 && m.m[1][0] == 0 && m.m[1][2] == 0 &&
-           m.m[2][0] == 0 && m.m[2][1] == 0;
-}
-
+// A box keeps no matrix while it is only moved and scaled (the parser moves its corners
+// as POV-Ray does): its mapping works in world space then, else in the box's own.
 Point3 box_uv(const Box& b, const Object& o, const Hit& hit) {
-    Point3 c1 = b.corner1, c2 = b.corner2;
-    Point3 p;
-    int face = hit.face;
-    if (o.transform.is_identity() || diagonal(o.transform.forward())) {
-        c1 = o.transform.point(c1);
-        c2 = o.transform.point(c2);
-        p = hit.point;
-        const int axis = face / 2;
-        if (o.transform.forward().m[axis][axis] < 0) face ^= 1;
-    } else {
-        p = o.transform.inverse_point(hit.point);
-    }
+    const Point3 c1 = b.corner1, c2 = b.corner2;
+    Point3 p =
+        o.transform.is_identity() ? hit.point : o.transform.inverse_point(hit.point);
+    const int face = hit.face;
     const Point3 lo = min(c1, c2), hi = max(c1, c2);
     for (int a = 0; a < 3; ++a) p[a] = (p[a] - lo[a]) / (hi[a] - lo[a]);
     // A cube unfolded into a 4 x 3 grid, no face mirrored seen from outside.

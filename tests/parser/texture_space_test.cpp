@@ -84,23 +84,37 @@ TEST(UvMapping, InAPigmentFunctionOrADensityIsAnError) {
     EXPECT_NE(e->message().find("uv_mapping"), std::string::npos);
 }
 
-TEST(UvMapping, TurnedMirroredBoxIsRefused) {
-    // POV-Ray's coordinates depend on whether the mirror came before the first turn.
-    const auto e = parse_error_in_golden_folder(
-        "box { -1, 1 pigment { uv_mapping checker } scale <-1, 1, 1> rotate 30 * y }");
-    ASSERT_TRUE(e);
-    EXPECT_EQ(e->kind(), ParseError::Kind::Unsupported);
-    EXPECT_EQ(e->message(), "unsupported: uv_mapping on a box both mirrored and turned");
-    EXPECT_EQ(e->loc().column, 1);
-    // Inherited from a union under uv_mapping: refused at the union.
-    EXPECT_TRUE(parse_error_in_golden_folder(
+// POV-Ray moves and scales a box's corners until its first rotate, matrix or transform
+// (Box::Translate, Box::Scale, a negative scale swapping them), and orders the corners it
+// reads: the box keeps only what comes from the first turn on as its transform, so a
+// mirror before the turn is known (a uv_mapped box mirrored and then turned is mapped).
+TEST(BoxCorners, MovedAndScaledUntilTheFirstTurn) {
+    Scene s = parse_in_golden_folder(
+        "box { <0, 1, 2>, <1, 3, 5> scale <-2, 1, 1> translate <1, 0, 0> rotate 30 * y "
+        "scale 2 }\n"
+        "box { <1, 1, 1>, <0, -1, 0> }\n"
+        "box { -1, 1 pigment { uv_mapping checker } scale <-1, 1, 1> rotate 30 * y }\n"
         "union { box { -1, 1 scale <-1, 1, 1> rotate 30 * y } sphere { 0, 1 } "
-        "uv_mapping pigment { checker } }"));
-    // Mirrored only, or turned only: mapped.
-    EXPECT_FALSE(parse_error_in_golden_folder(
-        "box { -1, 1 pigment { uv_mapping checker } scale <-1, 1, 1> }"));
-    EXPECT_FALSE(parse_error_in_golden_folder(
-        "box { -1, 1 uv_mapping pigment { checker } rotate 30 * y }"));
+        "uv_mapping pigment { checker } }");
+    ASSERT_EQ(s.objects.size(), 4u);
+    const Box& turned = std::get<Box>(s.objects[0].shape);
+    EXPECT_EQ(turned.corner1, (Point3{-1, 1, 2}));
+    EXPECT_EQ(turned.corner2, (Point3{1, 3, 5}));
+    const Transform expected =
+        Transform::rotate({0, 30, 0}).then(Transform::scale({2, 2, 2}));
+    EXPECT_EQ(s.objects[0].transform.forward().m[0][0], expected.forward().m[0][0]);
+    EXPECT_EQ(s.objects[0].transform.forward().m[0][2], expected.forward().m[0][2]);
+    EXPECT_EQ(s.objects[0].transform.forward().m[1][1], 2.0);
+    const Box& ordered = std::get<Box>(s.objects[1].shape);
+    EXPECT_EQ(ordered.corner1, (Point3{0, -1, 0}));
+    EXPECT_EQ(ordered.corner2, (Point3{1, 1, 1}));
+    EXPECT_TRUE(s.objects[1].transform.is_identity());
+    // The mirror went into the corners: only the turn is a transform, with no mirror.
+    const Matrix34& m = s.objects[2].transform.forward();
+    const Real det = m.m[0][0] * (m.m[1][1] * m.m[2][2] - m.m[1][2] * m.m[2][1]) -
+                     m.m[0][1] * (m.m[1][0] * m.m[2][2] - m.m[1][2] * m.m[2][0]) +
+                     m.m[0][2] * (m.m[1][0] * m.m[2][1] - m.m[1][1] * m.m[2][0]);
+    EXPECT_GT(det, 0);
 }
 
 TEST(MeshUv, Mesh2IndicesAndDefaults) {
