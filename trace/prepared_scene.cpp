@@ -243,16 +243,22 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
                     keep = pov == PovCsg::Intersection ? in : !in;
                 }
                 if (!keep) continue;
+                // A difference inverts its later children: each leaf under them that
+                // POV-Ray's Invert turns inside out (a triangle, polygon, patch or
+                // parametric keeps its normal).
                 if (csg->kind == CsgKind::Difference && i > 0 &&
-                    difference_inverts(child))
+                    leaf_invertible(*out[k].leaf))
                     out[k].flip = !out[k].flip;
                 if (kept != k) out[kept] = out[k];
                 ++kept;
             }
             out.resize(kept);
         }
+        // An inverse CSG inverts each leaf under it (CSG::Invert), but a triangle,
+        // polygon, patch or parametric keeps its normal.
         if (o.inverse) {
-            for (size_t k = start; k < out.size(); ++k) out[k].flip = !out[k].flip;
+            for (size_t k = start; k < out.size(); ++k)
+                if (leaf_invertible(*out[k].leaf)) out[k].flip = !out[k].flip;
         }
     } else {
         leaf_crossings(o, ray, csg_child, out, wanted, flags);
@@ -789,7 +795,66 @@ uint32_t PreparedScene::add_material(const Object& o) {
         m.plain = false;
         m.opaque = opaque;
     }
+    if (const Mesh* mesh = std::get_if<Mesh>(&o.shape);
+        mesh && (!mesh->textures.empty() || !mesh->texture_triples.empty()))
+        add_face_materials(o, *mesh, index);
     return index;
+}
+
+void PreparedScene::add_face_materials(const Object& o, const Mesh& m, uint32_t base) {
+    std::vector<uint32_t> face_materials;
+    for (const LayeredTexture& t : m.textures) {
+        // Each face texture is a material of its own (plain or not by itself), in the
+        // same place as the mesh's.
+        materials_.push_back(material_of(o, t));
+        material_frame_.push_back(material_frame_[base]);
+        face_materials.push_back(uint32_t(materials_.size()) - 1);
+    }
+    // A face with a texture per corner: its own material, blending the corners'.
+    auto blend_material = [&](const Mesh::Face& f) {
+        const auto& triple = m.texture_triples[size_t(-2 - f.texture)];
+        TextureBlend b;
+        b.mesh = &o;
+        Material mm = material_of(o, o.texture);
+        mm.plain = false;
+        for (int k = 0; k < 3; ++k) {
+            b.points[k] = single_precision(m.vertices[f.v[k]]);
+            b.corners[k] = &materials_[face_materials[size_t(triple[size_t(k)])]];
+            mm.opaque = mm.opaque && b.corners[k]->opaque;
+        }
+        // POV-Ray turns some triangles by swapping their first two corners (with
+        // their textures) where the dominant axis of (p2 - p0) x (p1 - p0) wants
+        // it; the weights are found from the corners in that order.
+        const Point3* p = b.points;
+        const Vector3 n = cross(p[2] - p[0], p[1] - p[0]);
+        const Real ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
+        const int axis = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+        const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
+        if ((p[1][u] - p[2][u]) * (p[1][v] - p[0][v]) <
+            (p[1][v] - p[2][v]) * (p[1][u] - p[0][u])) {
+            std::swap(b.points[0], b.points[1]);
+            std::swap(b.corners[0], b.corners[1]);
+        }
+        blends_.push_back(b);
+        mm.blend = &blends_.back();
+        materials_.push_back(mm);
+        material_frame_.push_back(material_frame_[base]);
+        return uint32_t(materials_.size()) - 1;
+    };
+    std::vector<uint32_t> of_face(m.faces.size(), base);
+    for (size_t fi = 0; fi < m.faces.size(); ++fi) {
+        const Mesh::Face& f = m.faces[fi];
+        if (f.texture >= 0 && size_t(f.texture) < face_materials.size())
+            of_face[fi] = face_materials[size_t(f.texture)];
+        else if (f.texture <= -2)
+            of_face[fi] = blend_material(f);
+    }
+    face_materials_.emplace(&o, std::move(of_face));
+}
+
+const std::vector<uint32_t>* PreparedScene::mesh_face_materials(const Object& o) const {
+    const auto it = face_materials_.find(&o);
+    return it == face_materials_.end() ? nullptr : &it->second;
 }
 
 int blob_texture_weights(const BlobTextureBlend& b, const Point3& world, float min_weight,
@@ -954,51 +1019,14 @@ void PreparedScene::add_frame_object(const Object& o, uint32_t frame) {
         return;
     }
     if (auto m = std::get_if<Mesh>(&o.shape); m && !o.inverse && o.clipped_by->empty()) {
-        uint32_t base = add_material(o);
-        std::vector<uint32_t> face_materials;
-        for (const LayeredTexture& t : m->textures) {
-            // Each face texture is a material of its own (plain or not by itself), in the
-            // same place as the mesh's.
-            materials_.push_back(material_of(o, t));
-            material_frame_.push_back(material_frame_[base]);
-            face_materials.push_back(uint32_t(materials_.size()) - 1);
-        }
+        // (add_material gave the mesh's faces their materials: face_materials.)
+        const uint32_t base = add_material(o);
+        const std::vector<uint32_t>* face_materials = mesh_face_materials(o);
         // POV-Ray tests the mesh's box, then the triangle's in the mesh's tree.
         const PovPrim mesh_pov = pov_prim(o, kPovMeshTriangle);
         const bool mirrored =
             dot(cross(o.transform.vector({1, 0, 0}), o.transform.vector({0, 1, 0})),
                 o.transform.vector({0, 0, 1})) < 0;
-        // A face with a texture per corner: its own material, blending the corners'.
-        auto blend_material = [&](const Mesh::Face& f) {
-            const auto& triple = m->texture_triples[size_t(-2 - f.texture)];
-            TextureBlend b;
-            b.mesh = &o;
-            Material mm = material_of(o, o.texture);
-            mm.plain = false;
-            for (int k = 0; k < 3; ++k) {
-                b.points[k] = single_precision(m->vertices[f.v[k]]);
-                b.corners[k] = &materials_[face_materials[size_t(triple[size_t(k)])]];
-                mm.opaque = mm.opaque && b.corners[k]->opaque;
-            }
-            // POV-Ray turns some triangles by swapping their first two corners (with
-            // their textures) where the dominant axis of (p2 - p0) x (p1 - p0) wants
-            // it; the weights are found from the corners in that order.
-            const Point3* p = b.points;
-            const Vector3 n = cross(p[2] - p[0], p[1] - p[0]);
-            const Real ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
-            const int axis = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-            const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
-            if ((p[1][u] - p[2][u]) * (p[1][v] - p[0][v]) <
-                (p[1][v] - p[2][v]) * (p[1][u] - p[0][u])) {
-                std::swap(b.points[0], b.points[1]);
-                std::swap(b.corners[0], b.corners[1]);
-            }
-            blends_.push_back(b);
-            mm.blend = &blends_.back();
-            materials_.push_back(mm);
-            material_frame_.push_back(material_frame_[base]);
-            return uint32_t(materials_.size()) - 1;
-        };
         for (size_t fi = 0; fi < m->faces.size(); ++fi) {
             const Mesh::Face& f = m->faces[fi];
             TrianglePrim tri;
@@ -1017,10 +1045,7 @@ void PreparedScene::add_frame_object(const Object& o, uint32_t frame) {
                     tri.smooth = true;
                 }
             }
-            uint32_t mat = (f.texture >= 0 && size_t(f.texture) < face_materials.size())
-                               ? face_materials[f.texture]
-                           : f.texture <= -2 ? blend_material(f)
-                                             : base;
+            const uint32_t mat = face_materials ? (*face_materials)[fi] : base;
             triangles_.push_back(tri);
             push(PrimKind::Triangle, uint32_t(triangles_.size()) - 1, mat, b, mesh_pov);
         }
@@ -1266,6 +1291,13 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, const PovRayOnce
                                ? &materials_[material_[id]]
                                : material_for(best->leaf);
             if (!hit.material) hit.material = &materials_[material_[id]];
+            // A mesh's face with a texture of its own (clipped, inverse or in a CSG; a
+            // mesh alone is triangles with their face materials).
+            if (std::holds_alternative<Mesh>(best->leaf->shape)) {
+                const std::vector<uint32_t>* faces = mesh_face_materials(*best->leaf);
+                if (faces && size_t(best->hit.face) < faces->size())
+                    hit.material = &materials_[(*faces)[size_t(best->hit.face)]];
+            }
             hit.face = best->hit.face;
             hit.param = best->hit.param;
             hit.param2 = best->hit.param2;

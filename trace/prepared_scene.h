@@ -7,6 +7,7 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <unordered_map>
 #include <vector>
 
 #include "core/scene.h"
@@ -255,6 +256,11 @@ class PreparedScene {
     // materials, which take its flags.
     void add_frame_object(const Object& obj, uint32_t frame);
     uint32_t add_material(const Object& obj);
+    // The materials of a mesh's faces that have a texture of their own (texture_list
+    // entries, and blends of three at corners), kept in face_materials_.
+    void add_face_materials(const Object& o, const Mesh& m, uint32_t base);
+    // Each face's material of a mesh that has face textures; null for other objects.
+    const std::vector<uint32_t>* mesh_face_materials(const Object& o) const;
     // `tie`, when given: set when the object's nearest crossing has a crossing of another
     // of its leaves within `tie_tolerance` (relative) of it (CSG objects only).
     // `material_only`: only whether the ray meets the primitive in [t_min, t_max) and
@@ -319,6 +325,7 @@ class PreparedScene {
     void fill_sphere_hit(uint32_t id, const Ray& ray, Real t, Hit& hit) const;
     const Material* material_for(const Object* leaf) const;
     std::vector<std::pair<const Object*, uint32_t>> leaf_materials_;  // sorted by pointer
+    std::unordered_map<const Object*, std::vector<uint32_t>> face_materials_;
     // The POV-Ray frame object the materials being added belong to (add_object).
     uint32_t adding_frame_ = ~0u;
     // Per material: where POV-Ray tests its leaf, for exact ties in depth
