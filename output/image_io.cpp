@@ -167,8 +167,20 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
     const size_t n = size_t(W) * H;
     const float maxv = float((1 << depth) - 1);
     for (size_t i = 0; i < n; ++i) {
+        // The renderer's colours are premultiplied (a transparent background adds black);
+        // POV-Ray's integer formats with alpha store straight alpha, and a pixel brighter
+        // than its opacity (a highlight on glass) gets its brightness as its alpha, so
+        // that dividing keeps its colour (GetEncodedRGBAValue). Without an alpha channel
+        // (PPM) the premultiplied colour is written: the image over black.
+        float a = image.rgba[i * 4 + 3];
+        if (channels == 4 && !linear_format) {
+            const float bright = 0.297f * image.rgba[i * 4] +
+                                 0.589f * image.rgba[i * 4 + 1] +
+                                 0.114f * image.rgba[i * 4 + 2];
+            if (bright > a) a = std::min(1.0f, bright);
+        }
         for (int c = 0; c < channels; ++c) {
-            float v = image.rgba[i * 4 + c];
+            float v = c == 3 ? a : image.rgba[i * 4 + c];
             if (linear_format) {
                 // EXR/HDR hold linear light, as POV-Ray writes them (working -> linear).
                 if (c < 3 && enc.gamma_handling && enc.working_gamma != 1.0f) {
@@ -177,10 +189,7 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
                 floats.push_back(v);
                 continue;
             }
-            // The renderer's colours are premultiplied (a transparent background adds
-            // black); POV-Ray's integer formats store straight alpha.
-            const float a = image.rgba[i * 4 + 3];
-            if (enc.alpha && c < 3) v = a > 0.0f ? v / a : 0.0f;
+            if (channels == 4 && c < 3) v = a > 0.0f ? v / a : 0.0f;
             float e = c == 3 ? std::clamp(v, 0.0f, 1.0f) : encode_channel(v, enc);
             // POV-Ray quantises with floor(x * max + 0.5).
             unsigned q = unsigned(std::floor(e * maxv + 0.5f));

@@ -1951,7 +1951,14 @@ TraceResult sky_colour(const PreparedScene& scene, const TraceRay& traced) {
     // POV-Ray's ComputeSky: the sky_sphere's pigments (last one on top) over the
     // background.
     const Scene& sc = scene.scene();
-    const bool alpha = scene.alpha_background();
+    const bool alpha_output = scene.alpha_background();
+    // POV-Ray's ticket: only camera rays and the rays they transmit see the background's
+    // alpha; a reflected ray and every ray under it, and radiosity's sample rays, see it
+    // as an opaque colour (Trace::ComputeReflection clears the ticket's alphaBackground).
+    const bool alpha =
+        alpha_output &&
+        (traced.use == RayUse::Camera || traced.use == RayUse::Refraction) &&
+        traced.radiosity_depth == 0;
     const bool sky = sc.sky_sphere && !sc.sky_sphere->pigments.empty();
     Point3 p;
     if (sky) p = sc.sky_sphere->transform.inverse_point(ray.direction);
@@ -1961,11 +1968,13 @@ TraceResult sky_colour(const PreparedScene& scene, const TraceRay& traced) {
     Colour bg = sc.background;
     if (sc.background_legacy) {
         bg.filter = 0;
-        bg.transmit = alpha ? 1.0f : 0.0f;
-    } else if (!alpha) {
+        bg.transmit = alpha_output ? 1.0f : 0.0f;
+    } else if (!alpha_output) {
         bg.rgb *= 1 - bg.transmit;
         bg.filter = bg.transmit = 0;
     }
+    // A ray that does not see the alpha takes the stored colour whole (ComputeSky).
+    if (!alpha) bg.filter = bg.transmit = 0;
     const Rgb emission = sky ? sc.sky_sphere->emission : Rgb(1.0f);
     if (sc.language_version < 370) {
         // Legacy: full transparency with alpha; else the 3.6 compositing.

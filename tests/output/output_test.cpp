@@ -234,6 +234,34 @@ TEST(WriteImage, AlphaIsWrittenStraightAsPovRayDoes) {
     EXPECT_FLOAT_EQ(read_image(opaque.string()).pixel(0, 0)[3], 1.0f);  // RGB file
 }
 
+// A pixel brighter than its opacity (glass over a transparent background: little alpha,
+// much light) takes its brightness (0.297 r + 0.589 g + 0.114 b) as its alpha before the
+// division, as POV-Ray's GetEncodedRGBAValue does; without an alpha channel (PPM with
+// +UA) the premultiplied colour is written.
+TEST(WriteImage, BrightTransparentPixelsGetTheirBrightnessAsAlpha) {
+    fs::path p = scratch() / "bright.png";
+    OutputEncoding e;
+    e.alpha = true;
+    e.file_srgb = false;
+    e.file_gamma = 1.0f;
+    // bright = 0.297 * 0.6 + 0.589 * 0.6 + 0.114 * 0.4 = 0.5772 > alpha 0.25.
+    write_image(flat(2, 2, 0.6f, 0.6f, 0.4f, 0.25f), p.string(), e);
+    Image back = read_image(p.string());
+    EXPECT_FLOAT_EQ(back.pixel(0, 0)[3] * 255.0f, 147.0f);  // floor(0.5772 * 255 + 0.5)
+    EXPECT_FLOAT_EQ(back.pixel(0, 0)[0] * 255.0f, 255.0f);  // 0.6 / 0.5772, clipped
+    EXPECT_FLOAT_EQ(back.pixel(0, 0)[2] * 255.0f, 177.0f);  // 0.4 / 0.5772 = 0.693
+    // No brighter than its alpha: unchanged.
+    write_image(flat(2, 2, 0.1f, 0.1f, 0.1f, 0.25f), p.string(), e);
+    back = read_image(p.string());
+    EXPECT_FLOAT_EQ(back.pixel(0, 0)[3] * 255.0f, 64.0f);
+    EXPECT_FLOAT_EQ(back.pixel(0, 0)[0] * 255.0f, 102.0f);  // 0.1 / 0.25 = 0.4
+    fs::path ppm = scratch() / "bright.ppm";
+    write_image(flat(2, 2, 0.6f, 0.6f, 0.4f, 0.25f), ppm.string(), e);
+    back = read_image(ppm.string());
+    EXPECT_FLOAT_EQ(back.pixel(0, 0)[0] * 255.0f, 153.0f);  // 0.6, not divided
+    EXPECT_FLOAT_EQ(back.pixel(0, 0)[2] * 255.0f, 102.0f);
+}
+
 TEST(WriteImage, FormatFromExtensionOrExplicit) {
     Image img = flat(4, 3, 0.5f, 0.25f, 0.125f);
     OutputEncoding e;
