@@ -407,6 +407,27 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
     }
 }
 
+// The fixes of the fourth public-scene survey, the exporter scenes and the random scenes
+// of seeds 61-62 (a mesh's face textures under a clip or CSG, boxes moved and scaled by
+// their corners, lights named by a declared object, flat leaves under an inverse CSG,
+// reflected rays seeing the background whole with +UA): each matches POV-Ray in
+// tests/golden and gives the one-process image in every mode.
+TEST(Tcp, SurveyFourFixesInEveryModeEqualOneProcess) {
+    for (const auto& [name, args] : std::vector<std::pair<std::string, std::string>>{
+             {"mesh_face_textures_in_csg", ""},
+             {"box_corner_transforms", ""},
+             {"light_source_object_id", ""},
+             {"inverse_csg_flat_leaves", ""},
+             {"alpha_reflection_background", " +UA"},
+             {"alpha_reflection_background_legacy", " +UA"}}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        expect_same_images(scene, "-W 40 -H 30" + args,
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents"});
+    }
+}
+
 // no_image, no_reflection and no_shadow on CSG children and looks_like objects
 // (scenes/golden/csg_flags_*.pov, each matching POV-Ray in tests/golden): a black box
 // keeps whole frame objects and the rays' kinds, so every mode gives the one-process
