@@ -307,12 +307,18 @@ static bool plane_half_space(const Object& o, bool inverted, HalfSpace& out) {
 // The bounds of where an object's surface can be met (`restricts` false), or of its
 // inside when it cuts another's surface (an intersection's or difference's part, or a
 // clip): a disc's inside is the half-space behind it, a height field's everything below
-// its box, so as cutting parts they restrict nothing. bounded_by is no limit (it bounds
-// the rays POV-Ray tests, not the hits).
+// its box, a solid mesh's (inside_vector) everything whose ray along that vector crosses
+// its faces an odd number of times, far past its vertices, so as cutting parts they
+// restrict nothing. bounded_by is no limit (it bounds the rays POV-Ray tests, not the
+// hits).
 Bounds3 object_bounds(const Object& o, bool restricts) {
     if (o.inverse) return Bounds3::everything();
     if (restricts && (std::holds_alternative<Disc>(o.shape) ||
                       std::holds_alternative<HeightField>(o.shape)))
+        return Bounds3::everything();
+    if (const Mesh* m = std::get_if<Mesh>(&o.shape);
+        restricts && m && m->inside_vector &&
+        dot(*m->inside_vector, *m->inside_vector) != 0)
         return Bounds3::everything();
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
         const bool cuts =
