@@ -10,6 +10,7 @@
 #include "distrib/box_host.h"
 #include "distrib/object_boxes.h"
 #include "distrib/shared_pixel_sums.h"
+#include "distrib/stats_json.h"
 #include "trace/camera.h"
 #include "trace/forward_sum.h"
 #include "trace/sample_waves.h"
@@ -553,16 +554,6 @@ void BoxHost::report_progress() {
     }
     if (done > before) settings_.progress->pixels_done += done - before;
 }
-
-namespace {
-// What a box's lane counted, added to `into` (box_stats(), and a new run's lanes).
-void add_lane_counts(BoxStats& into, const BoxStats& x) {
-    into.rays += x.rays;
-    into.rays_received += x.rays_received, into.results_received += x.results_received;
-    into.messages_sent += x.messages_sent, into.messages_received += x.messages_received;
-    into.bytes_sent += x.bytes_sent, into.bytes_received += x.bytes_received;
-}
-}  // namespace
 
 int BoxHost::begin_run(int threads) {
     // Runs after the first (anti-aliasing waves) add to the first's statistics.

@@ -71,6 +71,28 @@ struct BoxStats {
     // Busy: the box's queued items being processed (an item handed over directly counts
     // toward the box whose thread handed it over); idle: the rest of the wall time.
     double busy_seconds = 0, idle_seconds = 0;
+
+    // How two reports of a box combine: counts add up (a box's lanes, and its copies in
+    // each team), times add up over copies, peaks are the largest, sizes any copy's.
+    enum class Combine { Count, Time, Peak, Size };
+    // Every field but the region and the rays (TraceCounters, named on their own), by its
+    // name in --stats and in the workers' "done" message, the same field of `a` and `b`
+    // at a time: the JSON and the additions (distrib/stats_json.h) all read this list.
+    template <class A, class B, class Visit>
+    static void visit_pairs(A& a, B& b, Visit&& v) {
+        v("objects", a.objects, b.objects, Combine::Size);
+        v("resident_bytes", a.resident_bytes, b.resident_bytes, Combine::Size);
+        v("rays_received", a.rays_received, b.rays_received, Combine::Count);
+        v("results_received", a.results_received, b.results_received, Combine::Count);
+        v("messages_sent", a.messages_sent, b.messages_sent, Combine::Count);
+        v("messages_received", a.messages_received, b.messages_received, Combine::Count);
+        v("bytes_sent", a.bytes_sent, b.bytes_sent, Combine::Count);
+        v("bytes_received", a.bytes_received, b.bytes_received, Combine::Count);
+        v("peak_queue", a.peak_queue, b.peak_queue, Combine::Peak);
+        v("peak_waiting_parents", a.peak_parents, b.peak_parents, Combine::Peak);
+        v("busy_seconds", a.busy_seconds, b.busy_seconds, Combine::Time);
+        v("idle_seconds", a.idle_seconds, b.idle_seconds, Combine::Time);
+    }
 };
 
 struct SpaceStats {

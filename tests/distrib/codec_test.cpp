@@ -816,7 +816,7 @@ TEST(WireMessages, InconsistentMessagesAreRefusedNamingTheField) {
         refusal(R"({"message":"x","culprit":"two"})", ErrorMessage{}).find("culprit"),
         std::string::npos);
     EXPECT_NE(refusal(R"({"boxes":[{"box":3}],"peak_resident":0})", DoneMessage{})
-                  .find("objects"),
+                  .find("'rays'"),
               std::string::npos);
     DoneMessage unordered;
     unordered.boxes = {{6, BoxStats{}}, {2, BoxStats{}}};
