@@ -41,8 +41,8 @@ void BM_PrepareCoincidentBricks(benchmark::State& state) {
 BENCHMARK(BM_PrepareCoincidentBricks)->Unit(benchmark::kMillisecond);
 
 // 1,200 copies of one 480-triangle mesh, each at its own matrix (LeoCAD and LDraw
-// exports): 576,000 triangles, most straddling cells, so the build's triangle-cell
-// tests decide its time.
+// exports): 1,200 primitives, each copy whole (they share the mesh's face tree, built on
+// the first ray, not here). Before copies were shared, 576,000 triangles.
 void BM_PrepareMeshCopies(benchmark::State& state) {
     prepare(state, POVWALL_SOURCE_DIR "/scenes/bench/mesh_copies.pov");
 }

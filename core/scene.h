@@ -23,6 +23,7 @@
 #include "core/heap_optional.h"
 #include "core/height_field.h"
 #include "core/math.h"
+#include "core/mesh.h"
 #include "core/source_loc.h"
 
 namespace povwall {
@@ -424,30 +425,22 @@ struct Polygon {
     std::vector<Point3> points;
 };  // parser stores the plane-projected loop
 
+// A mesh object: the shared geometry (core/mesh.h) and what belongs to this copy.
 struct Mesh {
-    std::vector<Point3> vertices;
-    std::vector<Vector3> normals;  // empty when flat
-    struct Face {
-        uint32_t v[3];
-        int32_t n[3] = {-1, -1, -1};
-        // Index into `textures`; -1: the mesh's texture; -2 - k: the three textures of
-        // texture_triples[k] (rare, so kept out of every face).
-        int32_t texture = -1;
-    };
-    std::vector<Face> faces;
+    using Face = MeshFace;
+    std::shared_ptr<const MeshData> data;
     std::vector<LayeredTexture> textures;  // per-face textures (mesh2 texture_list)
-    // Texture coordinates (mesh2 uv_vectors, a mesh triangle's uv_vectors) and per face,
-    // parallel to `faces`, the indices of its corners' coordinates; both empty when the
-    // mesh has none (every corner then has (0, 0), as POV-Ray's).
-    std::vector<std::array<Real, 2>> uvs;
-    std::vector<std::array<uint32_t, 3>> uv_faces;
-    // Faces with a texture per corner (mesh2 `<a, b, c>, t0, t1, t2`, a mesh triangle's
-    // texture_list): POV-Ray blends them by the hit's barycentric weights.
-    std::vector<std::array<int32_t, 3>> texture_triples;
-    HeapOptional<Vector3> inside_vector;  // only a mesh with one is solid
+    // How many of the scene's objects hold this mesh's data (the parser counts them,
+    // left-out objects too, so every process of a render agrees): a mesh held by two or
+    // more is traced whole through its face tree, each copy with its own transform,
+    // instead of as triangles of its own.
+    uint32_t copies = 1;
     // `hierarchy` inside the mesh's own braces (POV-Ray builds the mesh's box tree after
     // them): without the tree, every crossing is reported, even without inside_vector.
     bool hierarchy = true;
+    const MeshData* operator->() const { return data.get(); }
+    const MeshData& operator*() const { return *data; }
+    bool instanced() const { return copies > 1; }
 };
 
 // prism: closed 2-D curves in (x, z) swept along y from height1 to height2, straight

@@ -343,6 +343,10 @@ class Interpreter {
     // At the end of the parse: the global settings every isosurface's and parametric's
     // function reads.
     void settle_isosurfaces();
+    // How many of the scene's objects (left-out ones too) hold each mesh's data, counted
+    // as they are added and written into every mesh at the end (Mesh::copies).
+    void count_mesh_copies(const Object& o);
+    void settle_mesh_copies();
     // POV-Ray's UV vector: a float stands for both; 3 or more components are an error.
     ProfilePoint parse_uv_vector();
     int parse_count();
@@ -534,6 +538,7 @@ class Interpreter {
     // The mesh whose own braces are being read: `hierarchy` there decides whether POV-Ray
     // builds its box tree (a later `object { M hierarchy off }` finds it built).
     const Object* mesh_in_own_braces_ = nullptr;
+    std::unordered_map<const MeshData*, uint32_t> mesh_copies_;
     SharedValue<Finish> last_finish_;  // shared_finish()
     std::string scene_dir_;
     // image_map/bump_map/height_field and density_file files, for Scene::files

@@ -23,23 +23,23 @@ int largest_axis(Real x, Real y, Real z) {
 // and vAxis; a smooth triangle whose normals are all alike is flat.
 void add_faces(const Mesh& m, std::vector<MeshCamera::Face>& out) {
     constexpr Real kEpsilon = 1e-10;
-    for (size_t i = 0; i < m.faces.size(); ++i) {
-        const Mesh::Face& f = m.faces[i];
+    for (size_t i = 0; i < m->faces.size(); ++i) {
+        const Mesh::Face& f = m->faces[i];
         MeshCamera::Face face;
         Point3 P[3];
         Vector3 N[3];
         Real U[3] = {0, 0, 0}, V[3] = {0, 0, 0};
         for (int k = 0; k < 3; ++k) {
-            P[k] = m.vertices[f.v[k]];
+            P[k] = m->vertices[f.v[k]];
             if (f.n[k] >= 0) {
-                N[k] = m.normals[size_t(f.n[k])];
+                N[k] = m->normals[size_t(f.n[k])];
                 if (std::fabs(N[k].x) < kEpsilon && std::fabs(N[k].y) < kEpsilon &&
                     std::fabs(N[k].z) < kEpsilon)
                     N[k] = Vector3{1, 0, 0};
                 N[k] = N[k] / length(N[k]);
             }
-            if (!m.uv_faces.empty()) {
-                const auto& uv = m.uvs[m.uv_faces[i][size_t(k)]];
+            if (!m->uv_faces.empty()) {
+                const auto& uv = m->uvs[m->uv_faces[i][size_t(k)]];
                 U[k] = uv[0];
                 V[k] = uv[1];
             }

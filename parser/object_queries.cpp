@@ -15,7 +15,7 @@ bool is_patch(const Object& o) {
     if (std::holds_alternative<BicubicPatch>(o.shape) ||
         std::holds_alternative<Parametric>(o.shape))
         return true;
-    if (const Mesh* m = std::get_if<Mesh>(&o.shape)) return !m->inside_vector;
+    if (const Mesh* m = std::get_if<Mesh>(&o.shape)) return !m->data->inside_vector;
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
         for (const Object& c : csg->children)
             if (is_patch(c)) return true;

@@ -61,8 +61,8 @@ bool textures_use_uv(const LayeredTexture& layers) {
 bool texture_given(const Object& obj) {
     if (!obj.texture.empty() || !obj.interior_texture->empty()) return true;
     if (const Mesh* m = std::get_if<Mesh>(&obj.shape))
-        return !m->faces.empty() &&
-               std::all_of(m->faces.begin(), m->faces.end(),
+        return !m->data->faces.empty() &&
+               std::all_of(m->data->faces.begin(), m->data->faces.end(),
                            [](const Mesh::Face& f) { return f.texture != -1; });
     if (const Csg* csg = std::get_if<Csg>(&obj.shape))
         return std::any_of(csg->children.begin(), csg->children.end(), texture_given);
@@ -1184,6 +1184,7 @@ void Interpreter::place_object(Object& obj, const Object* parent,
 }
 
 void Interpreter::add_scene_object(Object&& obj) {
+    count_mesh_copies(obj);
     // The first growth reserves room for 16,384 objects at once: capacity never written
     // costs address space, not memory, and a scene made in a loop no longer moves its
     // objects through four or five ever larger lists. Beyond that the list doubles. The

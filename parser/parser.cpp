@@ -144,11 +144,33 @@ Scene Interpreter::run(int root_file) {
     for (const auto& f : image_files_) scene_.files.push_back(f);
     finish_version_state();
     settle_isosurfaces();
+    settle_mesh_copies();
     check_radiosity();
     // A camera normal's patterns read the final settings too.
     scene_.camera.normal_noise_generator = scene_.settings.noise_generator;
     scene_.camera.normal_number_of_waves = scene_.settings.number_of_waves;
     return std::move(scene_);
+}
+
+void Interpreter::count_mesh_copies(const Object& o) {
+    if (auto m = std::get_if<Mesh>(&o.shape)) ++mesh_copies_[m->data.get()];
+    if (auto csg = std::get_if<Csg>(&o.shape))
+        for (const Object& c : csg->children) count_mesh_copies(c);
+}
+
+void Interpreter::settle_mesh_copies() {
+    if (mesh_copies_.empty()) return;
+    auto visit = [&](auto& self, Object& o) -> void {
+        if (auto m = std::get_if<Mesh>(&o.shape)) {
+            const auto it = mesh_copies_.find(m->data.get());
+            m->copies = it == mesh_copies_.end() ? 1 : it->second;
+        }
+        if (auto csg = std::get_if<Csg>(&o.shape))
+            for (Object& c : csg->children) self(self, c);
+    };
+    for (Object& o : scene_.objects) visit(visit, o);
+    for (Light& l : scene_.lights)
+        for (Object& o : l.looks_like) visit(visit, o);
 }
 
 void Interpreter::settle_isosurfaces() {

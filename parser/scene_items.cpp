@@ -701,8 +701,8 @@ namespace {
 // (|n1 - n2|^2 and |n1 - n3|^2 at most 1e-10: Parse_Mesh, Parse_Mesh2): the face's own
 // normal is used, not the one given (exporters write every corner of a flat face with
 // one shared normal that need not be the face's).
-void flatten_faces_with_equal_normals(Mesh& mesh) {
-    for (Mesh::Face& f : mesh.faces) {
+void flatten_faces_with_equal_normals(MeshData& mesh) {
+    for (MeshFace& f : mesh.faces) {
         if (f.n[0] < 0 || f.n[1] < 0 || f.n[2] < 0) continue;
         Vector3 n[3];
         bool usable = true;
@@ -721,7 +721,8 @@ void flatten_faces_with_equal_normals(Mesh& mesh) {
 }  // namespace
 
 void Interpreter::parse_mesh(Object& out) {
-    Mesh mesh;
+    auto data = std::make_shared<MeshData>();
+    MeshData& mesh = *data;
     std::vector<LayeredTexture> textures;
     bool any_uv = false;
     for (;;) {
@@ -731,7 +732,7 @@ void Interpreter::parse_mesh(Object& out) {
         next();
         expect_punct('{');
         uint32_t base = uint32_t(mesh.vertices.size());
-        Mesh::Face face;
+        MeshFace face;
         for (int i = 0; i < 3; ++i) {
             if (i) accept_punct(',');
             mesh.vertices.push_back(parse_vector());
@@ -756,8 +757,8 @@ void Interpreter::parse_mesh(Object& out) {
             Token m = next();
             if (is_punct(m, '}')) break;
             if (is_word(m, "texture")) {
-                mesh.textures.push_back(parse_texture_block());
-                face.texture = int32_t(mesh.textures.size()) - 1;
+                textures.push_back(parse_texture_block());
+                face.texture = int32_t(textures.size()) - 1;
             } else if (is_word(m, "texture_list")) {
                 // Three texture identifiers, one per corner, blended (POV-Ray's
                 // Parse_Mesh_Texture); this ends the triangle's items.
@@ -770,8 +771,8 @@ void Interpreter::parse_mesh(Object& out) {
                     auto tex =
                         v ? std::get_if<std::shared_ptr<LayeredTexture>>(v) : nullptr;
                     if (!tex) expected("a texture identifier", id);
-                    mesh.textures.push_back(**tex);
-                    triple[size_t(k)] = int32_t(mesh.textures.size()) - 1;
+                    textures.push_back(**tex);
+                    triple[size_t(k)] = int32_t(textures.size()) - 1;
                 }
                 expect_punct('}', "after the three textures");
                 mesh.texture_triples.push_back(triple);
@@ -800,7 +801,7 @@ void Interpreter::parse_mesh(Object& out) {
         mesh.inside_vector = parse_vector();
     }
     flatten_faces_with_equal_normals(mesh);
-    out.shape = std::move(mesh);
+    out.shape = Mesh{std::move(data), std::move(textures)};
 }
 
 Token Interpreter::raw_ahead(size_t k) const {
@@ -874,7 +875,9 @@ void Interpreter::reserve_list(std::vector<T>& list, int count) {
 }
 
 void Interpreter::parse_mesh2(Object& out) {
-    Mesh mesh;
+    auto data = std::make_shared<MeshData>();
+    MeshData& mesh = *data;
+    std::vector<LayeredTexture> textures;
     auto read_vectors = [&](std::vector<Vector3>& into) {
         expect_punct('{');
         int n = parse_count();
@@ -923,7 +926,7 @@ void Interpreter::parse_mesh2(Object& out) {
                 accept_punct(',');
                 Token k = next();
                 if (!is_word(k, "texture")) expected("texture in texture_list", k);
-                mesh.textures.push_back(parse_texture_block());
+                textures.push_back(parse_texture_block());
             }
             accept_punct(',');  // trailing comma
             expect_punct('}');
@@ -939,7 +942,7 @@ void Interpreter::parse_mesh2(Object& out) {
                     at = peek();
                     v = parse_vector();
                 }
-                Mesh::Face f;
+                MeshFace f;
                 for (int k = 0; k < 3; ++k) {
                     if (!(v[k] >= 0 && v[k] < double(mesh.vertices.size()))) {
                         error(at, "mesh2 face index out of range");
@@ -977,7 +980,7 @@ void Interpreter::parse_mesh2(Object& out) {
                         index_at = peek();
                         index = parse_float();
                     }
-                    if (!(index >= 0 && index < double(mesh.textures.size())))
+                    if (!(index >= 0 && index < double(textures.size())))
                         error(index_at, "mesh2 texture index out of range");
                     indices[size_t(given++)] = int32_t(index);
                     if (given == 2) second_at = index_at;
@@ -1062,7 +1065,7 @@ void Interpreter::parse_mesh2(Object& out) {
     if (!uv_indices_at && !mesh.uvs.empty()) {
         if (mesh.uvs.size() == mesh.vertices.size()) {
             mesh.uv_faces.reserve(mesh.faces.size());
-            for (const Mesh::Face& f : mesh.faces)
+            for (const MeshFace& f : mesh.faces)
                 mesh.uv_faces.push_back({f.v[0], f.v[1], f.v[2]});
         } else if (mesh.uvs.size() == 1) {
             mesh.uv_faces.assign(mesh.faces.size(), {0, 0, 0});
@@ -1074,7 +1077,7 @@ void Interpreter::parse_mesh2(Object& out) {
     // Degenerate faces are dropped (with their coordinates).
     size_t kept = 0;
     for (size_t i = 0; i < mesh.faces.size(); ++i) {
-        const Mesh::Face& f = mesh.faces[i];
+        const MeshFace& f = mesh.faces[i];
         const Point3 p[3] = {mesh.vertices[f.v[0]], mesh.vertices[f.v[1]],
                              mesh.vertices[f.v[2]]};
         if (degenerate_corners(p)) continue;
@@ -1085,7 +1088,7 @@ void Interpreter::parse_mesh2(Object& out) {
     mesh.faces.resize(kept);
     if (!mesh.uv_faces.empty()) mesh.uv_faces.resize(kept);
     flatten_faces_with_equal_normals(mesh);
-    out.shape = std::move(mesh);
+    out.shape = Mesh{std::move(data), std::move(textures)};
 }
 
 int Interpreter::new_random_stream(int seed) {

@@ -317,8 +317,8 @@ Bounds3 object_bounds(const Object& o, bool restricts) {
                       std::holds_alternative<HeightField>(o.shape)))
         return Bounds3::everything();
     if (const Mesh* m = std::get_if<Mesh>(&o.shape);
-        restricts && m && m->inside_vector &&
-        dot(*m->inside_vector, *m->inside_vector) != 0)
+        restricts && m && m->data->inside_vector &&
+        dot(*m->data->inside_vector, *m->data->inside_vector) != 0)
         return Bounds3::everything();
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
         const bool cuts =
@@ -397,8 +397,8 @@ bool may_hit_outside_pov_box(const Object& o, bool restricts = false) {
 }
 
 size_t blend_faces(const Mesh& m) {
-    if (m.texture_triples.empty()) return 0;
-    return size_t(std::count_if(m.faces.begin(), m.faces.end(),
+    if (m->texture_triples.empty()) return 0;
+    return size_t(std::count_if(m->faces.begin(), m->faces.end(),
                                 [](const Mesh::Face& f) { return f.texture <= -2; }));
 }
 
@@ -802,7 +802,7 @@ uint32_t PreparedScene::add_material(const Object& o) {
         m.opaque = opaque;
     }
     if (const Mesh* mesh = std::get_if<Mesh>(&o.shape);
-        mesh && (!mesh->textures.empty() || !mesh->texture_triples.empty()))
+        mesh && (!mesh->textures.empty() || !mesh->data->texture_triples.empty()))
         add_face_materials(o, *mesh, index);
     return index;
 }
@@ -818,13 +818,13 @@ void PreparedScene::add_face_materials(const Object& o, const Mesh& m, uint32_t 
     }
     // A face with a texture per corner: its own material, blending the corners'.
     auto blend_material = [&](const Mesh::Face& f) {
-        const auto& triple = m.texture_triples[size_t(-2 - f.texture)];
+        const auto& triple = m->texture_triples[size_t(-2 - f.texture)];
         TextureBlend b;
         b.mesh = &o;
         Material mm = material_of(o, o.texture);
         mm.plain = false;
         for (int k = 0; k < 3; ++k) {
-            b.points[k] = single_precision(m.vertices[f.v[k]]);
+            b.points[k] = single_precision(m->vertices[f.v[k]]);
             b.corners[k] = &materials_[face_materials[size_t(triple[size_t(k)])]];
             mm.opaque = mm.opaque && b.corners[k]->opaque;
         }
@@ -847,9 +847,9 @@ void PreparedScene::add_face_materials(const Object& o, const Mesh& m, uint32_t 
         material_frame_.push_back(material_frame_[base]);
         return uint32_t(materials_.size()) - 1;
     };
-    std::vector<uint32_t> of_face(m.faces.size(), base);
-    for (size_t fi = 0; fi < m.faces.size(); ++fi) {
-        const Mesh::Face& f = m.faces[fi];
+    std::vector<uint32_t> of_face(m->faces.size(), base);
+    for (size_t fi = 0; fi < m->faces.size(); ++fi) {
+        const Mesh::Face& f = m->faces[fi];
         if (f.texture >= 0 && size_t(f.texture) < face_materials.size())
             of_face[fi] = face_materials[size_t(f.texture)];
         else if (f.texture <= -2)
@@ -1024,7 +1024,7 @@ void PreparedScene::add_frame_object(const Object& o, uint32_t frame) {
              Bounds3::everything());
         return;
     }
-    if (auto m = std::get_if<Mesh>(&o.shape); m && !o.inverse && o.clipped_by->empty()) {
+    if (auto m = std::get_if<Mesh>(&o.shape); m && mesh_as_triangles(o)) {
         // (add_material gave the mesh's faces their materials: face_materials.)
         const uint32_t base = add_material(o);
         const std::vector<uint32_t>* face_materials = mesh_face_materials(o);
@@ -1033,21 +1033,21 @@ void PreparedScene::add_frame_object(const Object& o, uint32_t frame) {
         const bool mirrored =
             dot(cross(o.transform.vector({1, 0, 0}), o.transform.vector({0, 1, 0})),
                 o.transform.vector({0, 0, 1})) < 0;
-        for (size_t fi = 0; fi < m->faces.size(); ++fi) {
-            const Mesh::Face& f = m->faces[fi];
+        for (size_t fi = 0; fi < m->data->faces.size(); ++fi) {
+            const Mesh::Face& f = m->data->faces[fi];
             TrianglePrim tri;
             tri.mirrored = mirrored;
             tri.face = uint32_t(fi);
             Bounds3 b;
             for (int k = 0; k < 3; ++k) {
                 // POV-Ray keeps a mesh's vertices in single precision.
-                tri.p[k] = o.transform.point(single_precision(m->vertices[f.v[k]]));
+                tri.p[k] = o.transform.point(single_precision(m->data->vertices[f.v[k]]));
                 b.extend(tri.p[k]);
-                if (f.n[k] >= 0 && size_t(f.n[k]) < m->normals.size()) {
+                if (f.n[k] >= 0 && size_t(f.n[k]) < m->data->normals.size()) {
                     // POV-Ray interpolates the unit normals in the mesh's space and
                     // then turns the result out: the turned normals are not made unit
                     // again (a non-uniform scale weighs them as it does).
-                    tri.n[k] = o.transform.normal(normalize(m->normals[f.n[k]]));
+                    tri.n[k] = o.transform.normal(normalize(m->data->normals[f.n[k]]));
                     tri.smooth = true;
                 }
             }

@@ -51,7 +51,9 @@ void count_primitives(const Object& o, size_t& finite, size_t& infinite) {
     }
     bool bounded = !object_world_bounds(o).infinite();
     size_t n = 1;
-    if (auto m = std::get_if<Mesh>(&o.shape)) n = m->faces.size();
+    // A mesh traced as triangles gives one a face; copies are traced whole.
+    if (auto m = std::get_if<Mesh>(&o.shape); m && mesh_as_triangles(o))
+        n = m->data->faces.size();
     (bounded ? finite : infinite) += n;
 }
 
@@ -116,8 +118,9 @@ size_t estimate_prepared_bytes(const Object& o) {
         return n;
     }
     if (auto m = std::get_if<Mesh>(&o.shape)) {
-        return kMaterial * (1 + m->textures.size()) +
-               m->faces.size() * (kPerPrimitive + sizeof(TrianglePrim));
+        if (mesh_as_triangles(o))
+            return kMaterial * (1 + m->textures.size()) +
+                   m->data->faces.size() * (kPerPrimitive + sizeof(TrianglePrim));
     }
     // A sphere's record, and its copy per octree reference in the leaves' lanes (about
     // 3 references a sphere on 100,000 spheres).
@@ -200,10 +203,14 @@ size_t estimate_model_bytes(const Object& o) {
     if (o.clipped_by.allocated()) b += heap_bytes(sizeof(std::vector<Object>));
     if (o.bounded_by.allocated()) b += heap_bytes(sizeof(std::vector<Object>));
     if (auto m = std::get_if<Mesh>(&o.shape)) {
-        b += heap_bytes(m->vertices.size() * sizeof(Point3)) +
-             heap_bytes(m->normals.size() * sizeof(Vector3)) +
-             heap_bytes(m->faces.size() * sizeof(Mesh::Face)) +
-             heap_bytes(m->textures.size() * sizeof(LayeredTexture));
+        // The shared data and its face tree, a share of them for each copy.
+        const MeshData& d = *m->data;
+        const size_t shared =
+            heap_bytes(d.vertices.size() * sizeof(Point3)) +
+            heap_bytes(d.normals.size() * sizeof(Vector3)) +
+            heap_bytes(d.faces.size() * sizeof(Mesh::Face)) +
+            heap_bytes(d.faces.size() / 2 * sizeof(MeshTree::Node) + d.faces.size() * 4);
+        b += shared / m->copies + heap_bytes(m->textures.size() * sizeof(LayeredTexture));
         for (const LayeredTexture& t : m->textures) b += model_bytes(t);
     } else if (auto bl = std::get_if<Blob>(&o.shape)) {
         b += heap_bytes(bl->element_textures.size() * sizeof(LayeredTexture));

@@ -116,20 +116,20 @@ Real corner_weight(const Point3& a, const Point3& b, const Point3& c, const Poin
 }
 
 Point3 mesh_uv(const Mesh& m, const Object& o, const Hit& hit) {
-    if (m.uv_faces.empty() || size_t(hit.face) >= m.uv_faces.size()) return {0, 0, 0};
-    const Mesh::Face& f = m.faces[size_t(hit.face)];
+    if (m->uv_faces.empty() || size_t(hit.face) >= m->uv_faces.size()) return {0, 0, 0};
+    const Mesh::Face& f = m->faces[size_t(hit.face)];
     const Point3 p =
         o.transform.is_identity() ? hit.point : o.transform.inverse_point(hit.point);
-    const Point3 v1 = single_precision(m.vertices[f.v[0]]),
-                 v2 = single_precision(m.vertices[f.v[1]]),
-                 v3 = single_precision(m.vertices[f.v[2]]);
+    const Point3 v1 = single_precision(m->vertices[f.v[0]]),
+                 v2 = single_precision(m->vertices[f.v[1]]),
+                 v3 = single_precision(m->vertices[f.v[2]]);
     const Real w[3] = {corner_weight(v1, v2, v3, p), corner_weight(v2, v1, v3, p),
                        corner_weight(v3, v1, v2, p)};
-    const auto& idx = m.uv_faces[size_t(hit.face)];
+    const auto& idx = m->uv_faces[size_t(hit.face)];
     Point3 uv{0, 0, 0};
     for (int k = 0; k < 3; ++k) {
-        uv.x += w[k] * m.uvs[idx[size_t(k)]][0];
-        uv.y += w[k] * m.uvs[idx[size_t(k)]][1];
+        uv.x += w[k] * m->uvs[idx[size_t(k)]][0];
+        uv.y += w[k] * m->uvs[idx[size_t(k)]][1];
     }
     return uv;
 }

@@ -428,6 +428,21 @@ TEST(Tcp, SurveyFourFixesInEveryModeEqualOneProcess) {
     }
 }
 
+// Copies of one mesh traced whole through its shared face tree (scenes/golden/
+// mesh_copies*.pov, each matching POV-Ray in tests/golden): every process counts the
+// copies in its own parse (left-out objects too), so each traces the same copies whole
+// and every mode gives the one-process image.
+TEST(Tcp, MeshCopiesInEveryModeEqualOneProcess) {
+    for (const char* name : {"mesh_copies", "mesh_copies_in_csg"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        expect_same_images(scene, "-W 40 -H 30",
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents",
+                            "--boxes 4x1x1 --procs 4 --results parents"});
+    }
+}
+
 // no_image, no_reflection and no_shadow on CSG children and looks_like objects
 // (scenes/golden/csg_flags_*.pov, each matching POV-Ray in tests/golden): a black box
 // keeps whole frame objects and the rays' kinds, so every mode gives the one-process

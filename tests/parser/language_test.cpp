@@ -616,7 +616,7 @@ TEST(Mesh2, PlainAndComputedVectorsAgree) {
         "  texture_list { 2, texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } "
         "}\n"
         "  face_indices { 2, <0, 1, 2>, 1, <1, 2, 3> 0, } }\n");
-    const Mesh& m = std::get<Mesh>(s.objects.at(0).shape);
+    const MeshData& m = *std::get<Mesh>(s.objects.at(0).shape).data;
     ASSERT_EQ(m.vertices.size(), 4u);
     expect_vec_near(m.vertices[1], 1, -2.5, 0);
     expect_vec_near(m.vertices[2], 0, 2, 0);

@@ -248,8 +248,8 @@ TEST(Degenerate, ExporterShapesAsPovRay) {
         "mesh { triangle { 0, 0, x } triangle { 0, x, y } }\n"
         "mesh2 { vertex_vectors { 3, 0, x, 2*x } face_indices { 1, <0, 1, 2> } }",
         &quiet);
-    EXPECT_EQ(std::get<Mesh>(m.objects[0].shape).faces.size(), 1u);
-    EXPECT_EQ(std::get<Mesh>(m.objects[1].shape).faces.size(), 0u);
+    EXPECT_EQ(std::get<Mesh>(m.objects[0].shape).data->faces.size(), 1u);
+    EXPECT_EQ(std::get<Mesh>(m.objects[1].shape).data->faces.size(), 0u);
     EXPECT_EQ(quiet, "");
 }
 

@@ -242,7 +242,7 @@ TEST(Commas, Mesh2TextureIndices) {
     for (const char* faces : {"<0 1 2> 1 <0 1 2> 0 1 1", "<0,1,2>, 1, <0,1,2>, 0, 1, 1,",
                               "<0 1 2>, 1 <0, 1, 2> 0, 1 1"}) {
         Scene s = parse(head + faces + " } }");
-        const Mesh& mesh = std::get<Mesh>(s.objects[0].shape);
+        const MeshData& mesh = *std::get<Mesh>(s.objects[0].shape).data;
         ASSERT_EQ(mesh.faces.size(), 2u) << faces;
         EXPECT_EQ(mesh.faces[0].texture, 1) << faces;
         // Three indices: a texture per corner, blended by the hit's barycentrics.
@@ -252,8 +252,8 @@ TEST(Commas, Mesh2TextureIndices) {
     }
     // An index may be any float expression.
     Scene s = parse("#declare T = 1;\n" + head + "<0 1 2> T <0,1,2>, T-1 } }");
-    EXPECT_EQ(std::get<Mesh>(s.objects[0].shape).faces[0].texture, 1);
-    EXPECT_EQ(std::get<Mesh>(s.objects[0].shape).faces[1].texture, 0);
+    EXPECT_EQ(std::get<Mesh>(s.objects[0].shape).data->faces[0].texture, 1);
+    EXPECT_EQ(std::get<Mesh>(s.objects[0].shape).data->faces[1].texture, 0);
     EXPECT_EQ(error_of(head + "<0 1 2> 0 2 <0 1 2> } }"),
               "test.pov:1:142: error: mesh2 texture index out of range");
     // Two indices: POV-Ray reads the third from a texture written before the list.

@@ -121,7 +121,7 @@ TEST(MeshUv, Mesh2IndicesAndDefaults) {
     Scene s = parse_in_golden_folder(
         "mesh2 { vertex_vectors { 3, 0, x, y } uv_vectors { 2, <0, 0>, <1, 0.5> } "
         "face_indices { 1, <0, 1, 2> } uv_indices { 1, <1, 0, 1> } }");
-    const Mesh& m = std::get<Mesh>(s.objects.at(0).shape);
+    const MeshData& m = *std::get<Mesh>(s.objects.at(0).shape).data;
     ASSERT_EQ(m.uvs.size(), 2u);
     ASSERT_EQ(m.uv_faces.size(), 1u);
     EXPECT_EQ(m.uv_faces[0][0], 1u);
@@ -131,7 +131,7 @@ TEST(MeshUv, Mesh2IndicesAndDefaults) {
     s = parse_in_golden_folder(
         "mesh2 { vertex_vectors { 3, 0, x, y } uv_vectors { 3, 0, 1, 2 } "
         "face_indices { 1, <2, 1, 0> } }");
-    EXPECT_EQ(std::get<Mesh>(s.objects.at(0).shape).uv_faces.at(0)[0], 2u);
+    EXPECT_EQ(std::get<Mesh>(s.objects.at(0).shape).data->uv_faces.at(0)[0], 2u);
     // Otherwise POV-Ray wants the indices.
     const auto e = parse_error_in_golden_folder(
         "mesh2 { vertex_vectors { 3, 0, x, y } uv_vectors { 2, 0, 1 } "
@@ -144,7 +144,7 @@ TEST(MeshUv, TriangleUvVectors) {
     const Scene s = parse_in_golden_folder(
         "mesh { triangle { 0, x, y uv_vectors <0, 0>, <1, 0>, <0, 1> } "
         "triangle { 0, y, z } }");
-    const Mesh& m = std::get<Mesh>(s.objects.at(0).shape);
+    const MeshData& m = *std::get<Mesh>(s.objects.at(0).shape).data;
     ASSERT_EQ(m.uv_faces.size(), 2u);
     EXPECT_EQ(m.uvs[m.uv_faces[0][2]][1], 1.0);
     EXPECT_EQ(m.uvs[m.uv_faces[1][2]][1], 0.0);  // none given: (0, 0)

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "tests/trace/scene_builder.h"
@@ -500,15 +501,18 @@ TEST(IntersectAudit, DegenerateShapesAreNeverHitOrGiveFiniteNormals) {
     }
 }
 
-Mesh tetrahedron() {
-    Mesh m;
-    m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+Mesh tetrahedron(std::optional<Vector3> inside_vector = std::nullopt) {
+    auto m = std::make_shared<MeshData>();
+    m->vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     for (auto f : {std::array<uint32_t, 3>{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}) {
         Mesh::Face face;
         for (int k = 0; k < 3; ++k) face.v[k] = f[k];
-        m.faces.push_back(face);
+        m->faces.push_back(face);
     }
-    return m;
+    if (inside_vector) m->inside_vector = *inside_vector;
+    Mesh mesh;
+    mesh.data = m;
+    return mesh;
 }
 
 TEST(IntersectAudit, MeshHitsAndInsideVectorMakesItSolid) {
@@ -519,7 +523,7 @@ TEST(IntersectAudit, MeshHitsAndInsideVectorMakesItSolid) {
     EXPECT_NEAR(std::fabs(h.normal.z), 1.0, 1e-12);
     EXPECT_FALSE(
         inside_object(object(m), {0.1, 0.1, 0.1}));  // no inside_vector: a surface
-    m.inside_vector = Vector3{1, 0.01, 0.02};
+    m = tetrahedron(Vector3{1, 0.01, 0.02});
     EXPECT_TRUE(inside_object(object(m), {0.1, 0.1, 0.1}));
     EXPECT_FALSE(inside_object(object(m), {0.5, 0.5, 0.5}));   // beyond the slanted face
     EXPECT_FALSE(inside_object(object(m), {-0.5, 0.1, 0.1}));  // crosses in and out again
@@ -529,8 +533,7 @@ TEST(IntersectAudit, MeshHitsAndInsideVectorMakesItSolid) {
 }
 
 TEST(IntersectAudit, DifferenceWithASolidMeshCutsTheSphere) {
-    Mesh m = tetrahedron();
-    m.inside_vector = Vector3{1, 0.01, 0.02};
+    Mesh m = tetrahedron(Vector3{1, 0.01, 0.02});
     Csg diff;
     diff.kind = CsgKind::Difference;
     diff.children.push_back(object(Sphere{{0, 0, 0}, 0.5}));

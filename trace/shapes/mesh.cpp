@@ -9,63 +9,171 @@
 namespace povwall::trace {
 
 void mesh_face_corners(const Mesh& m, const Mesh::Face& f, Point3 (&p)[3]) {
-    for (int k = 0; k < 3; ++k) p[k] = single_precision(m.vertices[f.v[k]]);
+    for (int k = 0; k < 3; ++k) p[k] = single_precision(m->vertices[f.v[k]]);
 }
 
 namespace {
 bool has_inside(const Mesh& m) {
-    return m.inside_vector && dot(*m.inside_vector, *m.inside_vector) != 0;
+    const auto& v = m->inside_vector;
+    return v && dot(*v, *v) != 0;
 }
 
-// A face's crossing: its distance along the mesh's unit ray, and where its box starts.
-struct FaceCrossing {
-    Real box_entry;
-    Real t;
-    int face;
+// A ray in the mesh's space against the face tree's boxes. The boxes are a face's
+// corners; a crossing the triangle test finds lies on the face, so inside them up to the
+// rounding of the crossing (in double), which the pad and tolerance cover.
+struct TreeRay {
+    Point3 origin;
+    Vector3 dir;
+    Real inv[3];
+    Real pad;  // in space: the rounding of the box and of the crossing's place
+
+    TreeRay(const Point3& o, const Vector3& d, const MeshTree& tree) : origin(o), dir(d) {
+        for (int a = 0; a < 3; ++a) inv[a] = 1.0 / d[a];
+        const MeshTree::Node& root = tree.nodes().front();
+        Real scale = 0;
+        for (int a = 0; a < 3; ++a)
+            scale = std::max(
+                {scale, std::fabs(root.lo[a]), std::fabs(root.hi[a]), std::fabs(o[a])});
+        pad = 1e-9 * scale;
+    }
+    // Whether the ray (t >= 0) may meet the node's box, and from where.
+    bool meets(const MeshTree::Node& n, Real& entry) const {
+        Real lo = 0, hi = kInfinity;
+        for (int a = 0; a < 3; ++a) {
+            const Real l = n.lo[a] - pad, h = n.hi[a] + pad;
+            if (dir[a] == 0) {
+                if (origin[a] < l || origin[a] > h) return false;
+                continue;
+            }
+            Real t0 = (l - origin[a]) * inv[a], t1 = (h - origin[a]) * inv[a];
+            if (t0 > t1) std::swap(t0, t1);
+            lo = std::max(lo, t0);
+            hi = std::min(hi, t1);
+            if (!(lo <= hi)) return false;
+        }
+        entry = lo;
+        return true;
+    }
 };
+
+// Walks the faces whose boxes the ray may meet, depth first, calling face(index).
+template <class Face>
+void walk_faces(const MeshTree& tree, const TreeRay& ray, Face&& face) {
+    if (tree.empty()) return;
+    // Median splits: the depth is at most log2 of 2^32 faces.
+    uint32_t stack[72];
+    int size = 0;
+    stack[size++] = 0;
+    const auto& nodes = tree.nodes();
+    const auto& order = tree.order();
+    while (size > 0) {
+        const uint32_t index = stack[--size];
+        const MeshTree::Node& n = nodes[index];
+        Real entry;
+        if (!ray.meets(n, entry)) continue;
+        if (n.count > 0) {
+            for (uint32_t i = n.first; i < n.first + n.count; ++i) face(order[i]);
+            continue;
+        }
+        stack[size++] = n.first;
+        stack[size++] = index + 1;
+    }
+}
 
 // POV-Ray walks a mesh's box tree nearest box first and, for a mesh without
 // inside_vector, stops at the first box that starts beyond the last hit it kept
 // (Mesh::intersect_bbox_tree): the triangles behind are never tested, and a CSG that
 // drops the nearest hit sees nothing of them. A box never starts after the boxes inside
 // it, so the walk meets the triangles in the order their own boxes start (each the float
-// box of its corners, as the tree's Check_And_Enqueue tests it) and only the crossed
-// ones change where it stops: the kept hits follow from the crossings alone. A ray
-// POV-Ray restarted (a shadow ray past a see-through surface) walks from there.
+// box of its corners, as the tree's Check_And_Enqueue tests it; ties by face index) and
+// only the crossed ones change where it stops: the kept hits follow from the crossings
+// alone. Our tree's boxes are not POV-Ray's: it is walked nearest first too, each box
+// entered from a distance no later than any face box inside it starts for POV-Ray's
+// float test, so the crossed faces come out in that order and the walk ends where
+// POV-Ray's does. A ray POV-Ray restarted (a shadow ray past a see-through surface)
+// walks from there.
 void nearest_walk_hits(const Mesh& m, const LocalRay& r, const Vector3& unit,
                        const ShapeClip* clip, ShapeHits& out) {
-    thread_local std::vector<FaceCrossing> crossed;
-    crossed.clear();
+    const MeshTree& tree = m->tree();
+    if (tree.empty()) return;
+    struct Item {
+        Real key;  // a face: where its float box starts; a node: no later than that
+        Real t;    // a face's crossing
+        uint32_t index;
+        bool face;
+        // The heap's top is the least: nodes before faces at one distance (they may
+        // hold faces starting there), faces by index.
+        bool operator<(const Item& o) const {
+            if (key != o.key) return key > o.key;
+            if (face != o.face) return face;
+            return index > o.index;
+        }
+    };
+    thread_local std::vector<Item> heap;
+    heap.clear();
+    const TreeRay ray(r.origin, unit, tree);
     const PovRay box_ray(r.origin, unit);
-    for (size_t i = 0; i < m.faces.size(); ++i) {
-        Point3 p[3];
-        mesh_face_corners(m, m.faces[i], p);
-        Crossings cs;
-        intersect_triangle(p, r.origin, unit, cs);
-        // Behind where POV-Ray's ray starts: not met (the boxes' order is the same
-        // from there).
-        if (!cs.n || !(cs.c[0].t / r.length > r.restart)) continue;
-        Bounds3 box;
-        for (const Point3& q : p) box.extend(q);
-        Real entry = 0;
-        // A box the float test misses is never entered, as in POV-Ray.
-        if (!slab_tree_entry(pov_bbox(box), box_ray, entry)) continue;
-        crossed.push_back({entry, cs.c[0].t, int(i)});
-    }
-    std::stable_sort(crossed.begin(), crossed.end(),
-                     [](const FaceCrossing& a, const FaceCrossing& b) {
-                         return a.box_entry < b.box_entry;
-                     });
+    Real far = 0;
+    for (int a = 0; a < 3; ++a) far = std::max(far, std::fabs(r.origin[a]));
+    const auto& nodes = tree.nodes();
+    const auto& order = tree.order();
+    auto push_node = [&](uint32_t index) {
+        Real entry;
+        if (!ray.meets(nodes[index], entry)) return;
+        // POV-Ray's float slab test may start a face box up to a few float roundings of
+        // the distance (and of the origin) sooner.
+        const Real key = entry - 1e-5 * (std::fabs(entry) + far) - 1e-30;
+        heap.push_back({key, 0, index, false});
+        std::push_heap(heap.begin(), heap.end());
+    };
+    push_node(0);
     Real last_kept = kInfinity;
-    for (const FaceCrossing& c : crossed) {
-        if (c.box_entry > last_kept) break;
-        const Real world_t = c.t / r.length;
-        if (clip && !clip->keeps(clip->context, world_t)) continue;
-        out.push_back({world_t, r.origin + unit * c.t, c.face});
-        last_kept = c.t;
+    while (!heap.empty()) {
+        std::pop_heap(heap.begin(), heap.end());
+        const Item item = heap.back();
+        heap.pop_back();
+        if (item.key > last_kept) break;
+        if (item.face) {
+            const Real world_t = item.t / r.length;
+            if (clip && !clip->keeps(clip->context, world_t)) continue;
+            out.push_back({world_t, r.origin + unit * item.t, int(item.index)});
+            last_kept = item.t;
+            // A shadow ray's question is answered by the first kept crossing in its
+            // range.
+            if (r.ends_search(world_t)) return;
+            continue;
+        }
+        const MeshTree::Node& n = nodes[item.index];
+        if (n.count == 0) {
+            push_node(item.index + 1);
+            push_node(n.first);
+            continue;
+        }
+        for (uint32_t i = n.first; i < n.first + n.count; ++i) {
+            const uint32_t fi = order[i];
+            Point3 p[3];
+            mesh_face_corners(m, m->faces[fi], p);
+            Crossings cs;
+            intersect_triangle(p, r.origin, unit, cs);
+            // Behind where POV-Ray's ray starts: not met (the boxes' order is the same
+            // from there).
+            if (!cs.n || !(cs.c[0].t / r.length > r.restart)) continue;
+            Bounds3 box;
+            for (const Point3& q : p) box.extend(q);
+            Real entry = 0;
+            // A box the float test misses is never entered, as in POV-Ray.
+            if (!slab_tree_entry(pov_bbox(box), box_ray, entry)) continue;
+            heap.push_back({entry, cs.c[0].t, fi, true});
+            std::push_heap(heap.begin(), heap.end());
+        }
     }
 }
 }  // namespace
+
+bool mesh_as_triangles(const Object& o) {
+    const Mesh* m = std::get_if<Mesh>(&o.shape);
+    return m && !m->instanced() && !o.inverse && o.clipped_by->empty();
+}
 
 bool mesh_stops_at_nearest(const Mesh& m) { return m.hierarchy && !has_inside(m); }
 
@@ -73,14 +181,22 @@ void shape_hits(const Mesh& m, const LocalRay& r, const ShapeClip* clip, ShapeHi
     // Divided (not multiplied by the reciprocal) as meshes in CSG always were.
     const Vector3 dn = r.direction / r.length;
     if (mesh_stops_at_nearest(m)) return nearest_walk_hits(m, r, dn, clip, out);
-    for (size_t i = 0; i < m.faces.size(); ++i) {
+    const MeshTree& tree = m->tree();
+    if (tree.empty()) return;
+    // Every crossing, in face order.
+    thread_local std::vector<std::pair<uint32_t, Real>> crossed;
+    crossed.clear();
+    walk_faces(tree, TreeRay(r.origin, dn, tree), [&](uint32_t fi) {
         Point3 p[3];
-        mesh_face_corners(m, m.faces[i], p);
+        mesh_face_corners(m, m->faces[fi], p);
         Crossings cs;
         intersect_triangle(p, r.origin, dn, cs);
         if (cs.n && (!clip || clip->keeps(clip->context, cs.c[0].t / r.length)))
-            out.push_back({cs.c[0].t / r.length, r.origin + dn * cs.c[0].t, int(i)});
-    }
+            crossed.push_back({fi, cs.c[0].t});
+    });
+    std::sort(crossed.begin(), crossed.end());
+    for (const auto& [fi, t] : crossed)
+        out.push_back({t / r.length, r.origin + dn * t, int(fi)});
 }
 
 void shape_hits(const Mesh& m, const LocalRay& r, ShapeHits& out) {
@@ -88,14 +204,14 @@ void shape_hits(const Mesh& m, const LocalRay& r, ShapeHits& out) {
 }
 
 Vector3 shape_normal(const Mesh& m, const ShapeHit& h) {
-    const Mesh::Face& f = m.faces[size_t(h.face)];
+    const Mesh::Face& f = m->faces[size_t(h.face)];
     Point3 p[3];
     mesh_face_corners(m, f, p);
     if (f.n[0] < 0 || f.n[1] < 0 || f.n[2] < 0) return pov_triangle_normal(p);
     // A smooth face (in CSG or clipped, as outside them): its unit vertex normals
     // interpolated at the hit, in the mesh's own space as POV-Ray's.
     Vector3 n[3];
-    for (int k = 0; k < 3; ++k) n[k] = normalize(m.normals[size_t(f.n[k])]);
+    for (int k = 0; k < 3; ++k) n[k] = normalize(m->normals[size_t(f.n[k])]);
     return normalize(smooth_triangle_normal(p, n, h.p));
 }
 
@@ -107,21 +223,23 @@ bool shape_inside_inverted(const Mesh& m, const Point3& q) {
 
 bool shape_inside(const Mesh& m, const Point3& q) {
     if (!has_inside(m)) return false;
-    const Vector3 dir = normalize(*m.inside_vector);
+    const Vector3 dir = normalize(*m->inside_vector);
+    const MeshTree& tree = m->tree();
+    if (tree.empty()) return false;
     int crossed = 0;
-    for (const auto& f : m.faces) {
+    walk_faces(tree, TreeRay(q, dir, tree), [&](uint32_t fi) {
         Point3 p[3];
-        mesh_face_corners(m, f, p);
+        mesh_face_corners(m, m->faces[fi], p);
         Crossings cs;
         intersect_triangle(p, q, dir, cs);
         crossed += cs.n;
-    }
+    });
     return crossed % 2 == 1;
 }
 
 Bounds3 shape_bounds(const Mesh& m) {
     Bounds3 b;
-    for (const auto& p : m.vertices) b.extend(p);
+    for (const auto& p : m->vertices) b.extend(p);
     return b;
 }
 
@@ -129,13 +247,13 @@ PovBBox shape_pov_bbox(const Mesh& m, const CompactTransform& xf) {
     // Vertices are single precision; the box of the mesh's own space goes through the
     // transform.
     Bounds3 b;
-    for (const Point3& p : m.vertices) b.extend(single_precision(p));
+    for (const Point3& p : m->vertices) b.extend(single_precision(p));
     if (b.empty()) return pov_infinite_bbox();
     return pov_transformed_bbox(b, xf);
 }
 
 bool shape_oracle_first(const Mesh& m, const OracleRay& r, OracleBest& best) {
-    for (const auto& f : m.faces) {
+    for (const auto& f : m->faces) {
         Point3 p[3];
         mesh_face_corners(m, f, p);
         V3 q[3] = {V3(p[0]), V3(p[1]), V3(p[2])};

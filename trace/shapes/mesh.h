@@ -11,6 +11,11 @@ namespace povwall::trace {
 struct OracleRay;
 struct OracleBest;
 
+// Whether the prepared scene traces this object as triangles of its own in the octree: a
+// mesh used once, not inverse, not clipped. Copies (Mesh::copies), inverse and clipped
+// meshes and those in CSG meet rays whole, in their own space, through the face tree.
+bool mesh_as_triangles(const Object& o);
+
 // A face's corners as POV-Ray stores them (single precision).
 void mesh_face_corners(const Mesh& m, const Mesh::Face& f, Point3 (&p)[3]);
 
