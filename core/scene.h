@@ -132,6 +132,14 @@ struct ImagePixels {
     // A palette file's index of each pixel (bump_map use_index reads it); else empty.
     std::vector<uint8_t> indices;
     int palette_size = 0;
+    // Whether some pixel has filter or transmit (set once the pixels are final: every
+    // object's material asks, and a scan per object cost minutes on large scenes).
+    bool see_through = false;
+    void note_see_through() {
+        see_through = false;
+        for (size_t i = 0; i + 4 < rgbft.size() && !see_through; i += 5)
+            see_through = rgbft[i + 3] != 0 || rgbft[i + 4] != 0;
+    }
     const float* at(int x, int y) const {
         return &rgbft[(size_t(y) * size_t(width) + size_t(x)) * 5];
     }

@@ -299,6 +299,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
     if (is_bump && use_index_at && mapping->use_index && colour_mapped &&
         mapping->interpolate != 0)
         unsupported(*use_index_at, "bump_map use_index with interpolate");
+    if (pixels) pixels->note_see_through();
     return mapping;
 }
 

@@ -53,11 +53,7 @@ struct WantedRange {
 // the file's alpha is below 1.
 bool image_opaque(const ImageMapping& m) {
     if (m.once || m.all_filter != 0 || m.all_transmit != 0 || !m.pixels) return false;
-    const std::vector<float>& v = m.pixels->rgbft;
-    for (size_t i = 0; i + 4 < v.size(); i += 5) {
-        if (v[i + 3] != 0 || v[i + 4] != 0) return false;
-    }
-    return true;
+    return !m.pixels->see_through;
 }
 
 bool pigment_opaque(const Pigment& p) {
