@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
+#include <limits>
 
 #include "core/hash_fold.h"
 #include "core/noise.h"
@@ -142,6 +143,19 @@ bool lights_material(const Light& light, const Material& m) {
     return light.light_group == 0 ? m.global_lights : light.light_group == m.light_group;
 }
 
+// cos of an angle in degrees, remembering the last one asked for: scenes light a point
+// with hundreds of copies of one spotlight, each asking for the same two angles.
+struct CosDegrees {
+    Real degrees = std::numeric_limits<Real>::quiet_NaN(), cosine = 0;
+    Real operator()(Real d) {
+        if (d != degrees) {
+            degrees = d;
+            cosine = std::cos(d * kPi / 180);
+        }
+        return cosine;
+    }
+};
+
 bool light_at(const Light& l, const Point3& p, LightSample& s) {
     if (l.kind == Light::Kind::Parallel) {
         // The depth to the light is the distance to its plane, negative behind it
@@ -166,8 +180,9 @@ bool light_at(const Light& l, const Point3& p, LightSample& s) {
         if (s.distance <= 0) return false;
     } else if (l.kind == Light::Kind::Spot || l.kind == Light::Kind::Cylinder) {
         Vector3 axis = normalize(l.point_at - l.location);
-        Real radius_cos = std::cos(l.radius * kPi / 180);
-        Real falloff_cos = std::cos(l.falloff * kPi / 180);
+        thread_local CosDegrees radius_cosine, falloff_cosine;
+        const Real radius_cos = radius_cosine(l.radius);
+        const Real falloff_cos = falloff_cosine(l.falloff);
         if (l.kind == Light::Kind::Spot) {
             Real c = dot(-s.dir, axis);
             if (c <= 0) return false;
@@ -240,9 +255,9 @@ float light_attenuation(const Light& l, const Point3& p, const LightSample& s) {
         const Real c = s.distance > 0 ? -dot(s.dir, axis) : dot(s.dir, axis);
         if (c <= 0) return 0;
         att = float(l.tightness != 0 ? std::pow(c, l.tightness) : 1.0);
-        const Real radius_cos = std::cos(l.radius * kPi / 180);
-        if (c < radius_cos)
-            att *= cubic_spline(std::cos(l.falloff * kPi / 180), radius_cos, c);
+        thread_local CosDegrees radius_cosine, falloff_cosine;
+        const Real radius_cos = radius_cosine(l.radius);
+        if (c < radius_cos) att *= cubic_spline(falloff_cosine(l.falloff), radius_cos, c);
     } else if (l.kind == Light::Kind::Cylinder) {
         const Vector3 axis = normalize(l.point_at - l.location);
         const Vector3 rel = p - l.location;
