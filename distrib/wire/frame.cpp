@@ -1,5 +1,7 @@
 #include "distrib/wire/frame.h"
 
+#include <zlib.h>
+
 namespace povwall::distrib {
 namespace {
 
@@ -25,6 +27,14 @@ bool known_type(uint8_t type) {
     return false;
 }
 
+uint32_t frame_crc(const uint8_t* header, std::span<const uint8_t> body) {
+    uLong crc = crc32(0L, Z_NULL, 0);
+    crc = crc32(crc, header, 12);
+    // zlib takes lengths as uInt; bodies are at most kMaxBodySize.
+    if (!body.empty()) crc = crc32(crc, body.data(), uInt(body.size()));
+    return uint32_t(crc);
+}
+
 }  // namespace
 
 void encode_frame(FrameType type, uint32_t count, std::span<const uint8_t> body,
@@ -34,10 +44,12 @@ void encode_frame(FrameType type, uint32_t count, std::span<const uint8_t> body,
     put_le(out, kProtocolVersion, 1);
     put_le(out, uint32_t(body.size()), 4);
     put_le(out, count, 4);
+    const size_t at = out.size() - 12;
+    put_le(out, frame_crc(out.data() + at, body), 4);
     out.insert(out.end(), body.begin(), body.end());
 }
 
-DecodeStatus decode_frame(std::span<const uint8_t> bytes, Frame& frame) {
+DecodeStatus decode_frame(std::span<const uint8_t> bytes, Frame& frame, CrcCheck crc) {
     if (bytes.size() < kHeaderSize) return DecodeStatus::NeedMore;
     const uint8_t* p = bytes.data();
     if (get_le(p, 2) != kFrameMagic || !known_type(p[2]) || p[3] != kProtocolVersion)
@@ -45,6 +57,9 @@ DecodeStatus decode_frame(std::span<const uint8_t> bytes, Frame& frame) {
     const uint64_t body = get_le(p + 4, 4);
     if (body > kMaxBodySize) return DecodeStatus::Bad;
     if (bytes.size() < kHeaderSize + body) return DecodeStatus::NeedMore;
+    if (crc == CrcCheck::On &&
+        get_le(p + 12, 4) != frame_crc(p, bytes.subspan(kHeaderSize, size_t(body))))
+        return DecodeStatus::Bad;
     frame.type = FrameType(p[2]);
     frame.count = uint32_t(get_le(p + 8, 4));
     frame.body = bytes.subspan(kHeaderSize, size_t(body));

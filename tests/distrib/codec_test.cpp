@@ -63,6 +63,37 @@ TEST(WireFrame, TruncatedNeedsMoreAndAWrongHeaderIsRefusedAtOnce) {
     EXPECT_TRUE(refused(7, 0x7f));  // body length over the limit, before it arrives
 }
 
+// Every single flipped bit of a frame, header or body, is refused: the CRC (or the header
+// check) catches it, or a longer length waits for bytes that never come. Truncations
+// wait. So corrupt bytes are never read as other records.
+TEST(WireFrame, EveryBitFlipIsRefusedOrWaitsForMore) {
+    std::vector<uint8_t> body(300);
+    for (size_t i = 0; i < body.size(); ++i) body[i] = uint8_t(i * 37 + 11);
+    for (FrameType type : {FrameType::Items, FrameType::Control, FrameType::Photons}) {
+        std::vector<uint8_t> bytes;
+        encode_frame(type, 5, body, bytes);
+        Frame f;
+        ASSERT_EQ(decode_frame(bytes, f), DecodeStatus::Complete);
+        size_t refused = 0, waiting = 0;
+        for (size_t bit = 0; bit < 8 * bytes.size(); ++bit) {
+            std::vector<uint8_t> flipped = bytes;
+            flipped[bit / 8] ^= uint8_t(1u << (bit % 8));
+            const DecodeStatus st = decode_frame(flipped, f);
+            ASSERT_NE(st, DecodeStatus::Complete) << "bit " << bit;
+            (st == DecodeStatus::Bad ? refused : waiting) += 1;
+            // The fuzzer's reading without the CRC takes body flips as a body.
+            if (bit >= 8 * kHeaderSize) {
+                ASSERT_EQ(decode_frame(flipped, f, CrcCheck::Off),
+                          DecodeStatus::Complete);
+                EXPECT_EQ(f.body[bit / 8 - kHeaderSize], flipped[bit / 8]);
+            }
+        }
+        // Only raising the body length can leave the frame waiting (bits of bytes 4-7).
+        EXPECT_LE(waiting, 32u);
+        EXPECT_GT(refused, 8 * bytes.size() - 32);
+    }
+}
+
 // A scene whose objects the items' interior stacks name: glass, a CSG of glass (children
 // numbered too) and a light.
 const Scene& codec_scene() {
