@@ -17,7 +17,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "cli/parse_args.h"
 #include "core/self_exe.h"
 
 extern char** environ;
@@ -85,7 +87,7 @@ char g_interrupt_message[256] =
 extern "C" void on_batch_interrupt(int sig) {
     ssize_t w = write(2, g_interrupt_message, std::strlen(g_interrupt_message));
     (void)w;
-    _exit(128 + sig);
+    _exit(128 + sig);  // ExitCode::Interrupted for SIGINT
 }
 
 int run_job(const std::string& exe, const Job& job, bool resume) {
@@ -118,11 +120,7 @@ int run_batch(int argc, char** argv) {
     app.add_flag(
         "--resume", resume,
         "keep the images that already exist (+C for every job, frames included)");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
+    if (auto done = parse_args(app, argc, argv)) return *done;
     const std::vector<Job> jobs = read_jobs(specs);
     const std::string exe = self_exe();
     if (exe.empty()) throw UsageError("cannot find the povwall binary");
@@ -158,7 +156,7 @@ int run_batch(int argc, char** argv) {
     }
     std::printf("%zu jobs: %zu ok, %d failed\n", jobs.size(),
                 jobs.size() - size_t(failed), failed);
-    return failed ? 1 : 0;
+    return exit_code(failed ? ExitCode::Differs : ExitCode::Ok);
 }
 
 }  // namespace povwall::cli

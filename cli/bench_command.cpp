@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "cli/diff_report.h"
+#include "cli/exit_codes.h"
 #include "cli/options.h"
 #include "cli/povray_reference.h"
 #include "cli/process.h"
@@ -101,14 +102,14 @@ int run_bench(int argc, char** argv) {
                 std::cerr
                     << "povwall: povray is not installed or not on PATH: nothing to "
                        "measure against\n";
-                return 77;  // CTest's skip code
+                return exit_code(ExitCode::NoPovRay);
             case PovrayRun::Status::SceneError:
-                return 2;
+                return exit_code(ExitCode::Error);
             case PovrayRun::Status::Failed:
                 std::cerr << "povwall: error: povray failed (exit " << pov.exit_code
                           << ")\n"
                           << pov.log;
-                return 2;
+                return exit_code(ExitCode::Error);
         }
         pov_s.push_back(pov.seconds);
         const auto start = Clock::now();
@@ -155,7 +156,7 @@ int run_bench(int argc, char** argv) {
         std::printf("speed-up: %.2fx\n", speed_up);
         print_diff(r);
     }
-    return int(r.status);
+    return exit_code(r.status);
 }
 
 }  // namespace povwall::cli

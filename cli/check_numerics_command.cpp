@@ -13,7 +13,9 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "cli/parse_args.h"
 #include "cli/process.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
@@ -44,11 +46,7 @@ int run_check_numerics(int argc, char** argv) {
     app.add_flag("--povray", with_povray,
                  "render with POV-Ray too; classify the differing pixels by the oracle");
     app.add_flag("--json", json, "machine-readable report");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
+    if (auto done = parse_args(app, argc, argv)) return *done;
     if (width <= 0 || height <= 0) throw UsageError("image size must be positive");
     parser::ParseOptions popts;
     popts.library_paths = library_paths;
@@ -63,7 +61,7 @@ int run_check_numerics(int argc, char** argv) {
         scene = parser::parse_scene_file(scene_path, popts);
     } catch (const parser::ParseError& e) {
         std::cerr << e.what() << "\n";
-        return 2;
+        return exit_code(ExitCode::Error);
     }
     trace::NumericsReport rep = trace::check_numerics(scene, width, height);
 
@@ -97,7 +95,7 @@ int run_check_numerics(int argc, char** argv) {
         if (run_process(cmd) != 0) {
             fs::remove_all(dir);
             std::cerr << "povwall: error: povray failed on " << scene_path << "\n";
-            return 2;
+            return exit_code(ExitCode::Error);
         }
         Image pov = output::read_image(pov_png);
         fs::remove_all(dir);

@@ -18,7 +18,9 @@
 #include <thread>
 
 #include "cli/diff_report.h"
+#include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "cli/parse_args.h"
 #include "cli/povray_reference.h"
 #include "output/diff.h"
 #include "output/image_io.h"
@@ -84,11 +86,7 @@ int parse_with_pov_switches(CLI::App& app, int argc, char** argv, RenderOptions&
     }
     std::vector<char*> args{argv[0]};
     for (auto& r : rest) args.push_back(r.data());
-    try {
-        app.parse(int(args.size()), args.data());
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
+    if (auto done = parse_args(app, int(args.size()), args.data())) return *done;
     if (before_switches) before_switches(o);
     for (const auto& s : switches) {
         if (!apply_pov_switch(s, o)) throw UsageError("unknown switch '" + s + "'");
@@ -122,7 +120,9 @@ int run_compare(int argc, char** argv) {
         "--cache", cache,
         "reuse POV-Ray renders from this folder, keyed by a hash of the scene, its "
         "includes and the render settings");
-    app.add_flag("--warn-ok", warn_ok, "exit 0 on a warning (tests)");
+    app.add_flag("--warn-ok", warn_ok,
+                 "exit 0 on a warning (the default now: a warning is within the "
+                 "thresholds; kept for older scripts)");
     bool ours_only = false;
     app.add_flag(
         "--ours-only", ours_only,
@@ -206,16 +206,16 @@ int run_compare(int argc, char** argv) {
         case PovrayRun::Status::NotInstalled:
             std::cerr << "povwall: povray is not installed or not on PATH: nothing to "
                          "compare with\n";
-            return 77;  // CTest's skip code
+            return exit_code(ExitCode::NoPovRay);
         case PovrayRun::Status::SceneError:
-            return 2;
+            return exit_code(ExitCode::Error);
         case PovrayRun::Status::Failed: {
             // Its error line first; the whole log only when it names none.
             const std::string message = povray_error_lines(pov.log);
             std::cerr << "povwall: error: povray failed (exit " << pov.exit_code << ")"
                       << (message.empty() ? "\n" + pov.log : ": " + message + "\n");
             if (!keep.empty()) std::cerr << "povwall: povray's log: " << log << "\n";
-            return 2;
+            return exit_code(ExitCode::Error);
         }
     }
     const bool from_cache = pov.cached;
@@ -308,8 +308,7 @@ int run_compare(int argc, char** argv) {
         print_diff(r, note);
     }
     if (keep.empty()) fs::remove_all(dir);
-    if (warn_ok && r.status == output::DiffResult::Status::Warn) return 0;
-    return int(r.status);
+    return exit_code(r.status);
 }
 
 }  // namespace povwall::cli

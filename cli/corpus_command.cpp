@@ -14,7 +14,9 @@
 #include <iostream>
 #include <sstream>
 
+#include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "cli/parse_args.h"
 #include "cli/povray_reference.h"
 #include "cli/process.h"
 #include "core/self_exe.h"
@@ -517,11 +519,7 @@ int run_corpus(int argc, char** argv) {
     app.add_option("--max-bad-fraction", s.thresholds.max_bad_fraction,
                    "largest fraction of bad pixels that matches")
         ->capture_default_str();
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
+    if (auto done = parse_args(app, argc, argv)) return *done;
     s.use_ini = !no_ini;
     if (s.width <= 0 || s.height <= 0) throw UsageError("-W and -H must be positive");
     if (s.threads < 0) throw UsageError("--threads must be 0 or more");
@@ -531,7 +529,7 @@ int run_corpus(int argc, char** argv) {
         std::cerr
             << "povwall: povray is not installed or not on PATH: nothing to compare "
                "with\n";
-        return 77;  // CTest's skip code, as compare
+        return exit_code(ExitCode::NoPovRay);
     }
     s.exe = self_exe();
     if (s.exe.empty()) throw std::runtime_error("cannot find the povwall binary");
@@ -594,7 +592,7 @@ int run_corpus(int argc, char** argv) {
         output::write_html_report(report, index);
     } catch (const output::HtmlWriteError& e) {
         std::fprintf(stderr, "povwall: error: %s\n", e.what());
-        return 2;
+        return exit_code(ExitCode::Error);
     }
     std::printf("report: %s\n", index.c_str());
     return 0;

@@ -5,7 +5,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/diff_report.h"
+#include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "cli/parse_args.h"
 #include "output/diff.h"
 #include "output/image_io.h"
 
@@ -75,11 +77,7 @@ int run_diff(int argc, char** argv) {
     app.add_option("--max-bad-fraction", t.max_bad_fraction,
                    "largest fraction of bad pixels that passes")
         ->capture_default_str();
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
+    if (auto done = parse_args(app, argc, argv)) return *done;
     if (fail_percent >= 0) t.max_bad_fraction = fail_percent / 100.0;
     output::DiffResult r;
     Image ia, ib;
@@ -103,7 +101,7 @@ int run_diff(int argc, char** argv) {
     } else {
         print_diff(r, "");
     }
-    return int(r.status);
+    return exit_code(r.status);
 }
 
 }  // namespace povwall::cli

@@ -12,8 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "cli/exit_codes.h"
 #include "cli/interrupt.h"
 #include "cli/options.h"
+#include "cli/parse_args.h"
 #include "cli/tile_worker_job.h"
 #include "core/self_exe.h"
 #include "distrib/tcp.h"
@@ -186,11 +188,7 @@ int render_main(const std::vector<std::string>& args) {
     }
     std::vector<char*> argv;
     for (auto& r : rest) argv.push_back(r.data());
-    try {
-        app.parse(int(argv.size()), argv.data());
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
+    if (auto done = parse_args(app, int(argv.size()), argv.data())) return *done;
     // Switches and .ini files apply in command-line order, later ones winning (as
     // POV-Ray).
     for (const auto& s : pov) {
@@ -222,7 +220,7 @@ int render_main(const std::vector<std::string>& args) {
                 });
         } catch (const distrib::DistribError& e) {
             std::fprintf(stderr, "povwall: error: %s (no image written)\n", e.what());
-            return 3;
+            return exit_code(ExitCode::WorkerLost);
         }
         // A launched worker serves one job: a lost rank cannot be replaced, and srun or
         // mpirun end the step with it anyway.
@@ -244,7 +242,7 @@ extern "C" void on_interrupt(int sig) {
                                                      removed, msg, sizeof msg);
     ssize_t written = write(2, msg, n);
     (void)written;
-    _exit(128 + sig);
+    _exit(128 + sig);  // ExitCode::Interrupted for SIGINT
 }
 
 int main(int argc, char** argv) {
@@ -275,7 +273,7 @@ int main(int argc, char** argv) {
     try {
         if (args.empty()) {
             std::fputs(kUsage, stderr);
-            return 2;
+            return exit_code(ExitCode::Error);
         }
         const std::string& cmd = args[0];
         // Black-box workers forked by a render (--procs) inherit its heap settings.
@@ -307,9 +305,9 @@ int main(int argc, char** argv) {
         for (int i = 1; i < argc; ++i) line += std::string(" ") + argv[i];
         std::fprintf(stderr, "povwall: error: %s\n  in: %s\n%s", e.what(), line.c_str(),
                      kUsage);
-        return 2;
+        return exit_code(ExitCode::Error);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "povwall: error: %s\n", e.what());
-        return 2;
+        return exit_code(ExitCode::Error);
     }
 }

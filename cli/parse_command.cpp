@@ -7,7 +7,9 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "cli/parse_args.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
 #include "trace/object_queries.h"
@@ -52,11 +54,7 @@ int run_parse(int argc, char** argv) {
     app.add_flag("--json", json, "print one JSON object");
     parser::ParseOptions popts;
     add_parse_limit_options(app, popts.max_loop_iterations, popts.max_parse_seconds);
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
+    if (auto done = parse_args(app, argc, argv)) return *done;
     popts.library_paths = library_paths;
     popts.image_reader = output::read_stored_image;
     popts.function_hooks = trace::parse_time_function_hooks();
@@ -86,8 +84,9 @@ int run_parse(int argc, char** argv) {
         j["files"] = s.files;
     } catch (const parser::ParseError& e) {
         j["seconds"] = parse_seconds();
-        code = e.kind() == parser::ParseError::Kind::Unsupported ? 3 : 2;
-        j["status"] = code == 3 ? "unsupported" : "error";
+        const bool unsupported = e.kind() == parser::ParseError::Kind::Unsupported;
+        code = exit_code(unsupported ? ExitCode::Unsupported : ExitCode::Error);
+        j["status"] = unsupported ? "unsupported" : "error";
         j["message"] = e.message();
         if (e.loc().valid()) {
             j["line"] = e.loc().line;

@@ -11,6 +11,7 @@
 #include <optional>
 #include <thread>
 
+#include "cli/exit_codes.h"
 #include "cli/interrupt.h"
 #include "cli/options.h"
 #include "cli/progress_bar.h"
@@ -207,7 +208,7 @@ int run_render(RenderOptions o) {
         scene = load_scene();
     } catch (const parser::ParseError& e) {
         std::cerr << e.what() << "\n";
-        return 2;
+        return exit_code(ExitCode::Error);
     }
     auto t1 = Clock::now();
     record.progress.objects = scene.objects.size();
@@ -243,7 +244,7 @@ int run_render(RenderOptions o) {
         dplan = distrib::plan_distribution(scene, request);
     } catch (const distrib::UnsupportedInMode& e) {
         std::cerr << e.what() << "\n";
-        return 2;
+        return exit_code(ExitCode::Error);
     } catch (const distrib::DistributionError& e) {
         throw UsageError(e.what());
     }
@@ -338,7 +339,7 @@ int run_render(RenderOptions o) {
                 }
             } catch (const distrib::DistribError& e) {
                 std::cerr << "povwall: error: " << e.what() << " (no image written)\n";
-                return 3;
+                return exit_code(ExitCode::WorkerLost);
             }
         } else {
             image = distrib::render_space(scene, o.render, space, &space_stats, &plan);
@@ -359,7 +360,7 @@ int run_render(RenderOptions o) {
         } catch (const distrib::ScreenError& e) {
             // A lost worker, as over TCP (README: exit codes).
             std::cerr << "povwall: error: " << e.what() << " (no image written)\n";
-            return 3;
+            return exit_code(ExitCode::WorkerLost);
         }
         stats.trace_seconds = screen_stats.seconds;
         stats.rays = screen_stats.rays;
@@ -376,7 +377,7 @@ int run_render(RenderOptions o) {
         record.phase = RenderPhase::Written;
     } catch (const output::ImageIoError& e) {
         std::cerr << "povwall: error: " << e.what() << "\n";
-        return 2;
+        return exit_code(ExitCode::Error);
     }
     double parse_s = std::chrono::duration<double>(t1 - t0).count();
     double total_s = std::chrono::duration<double>(t2 - t0).count();

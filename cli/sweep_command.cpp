@@ -14,7 +14,9 @@
 #include <iostream>
 #include <sstream>
 
+#include "cli/exit_codes.h"
 #include "cli/options.h"
+#include "cli/parse_args.h"
 #include "cli/povray_reference.h"
 #include "cli/process.h"
 #include "output/diff.h"
@@ -96,11 +98,7 @@ int run_sweep(int argc, char** argv) {
     app.add_option("--cache", cache,
                    "folder for the POV-Ray reference (default: a scratch folder)");
     app.add_option("--keep", keep, "folder to keep every image in");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
+    if (auto done = parse_args(app, argc, argv)) return *done;
     if (!fs::exists(o.scene)) throw UsageError("cannot open scene '" + o.scene + "'");
     const fs::path dir = keep.empty() ? fs::temp_directory_path() /
                                             ("povwall-sweep-" + std::to_string(getpid()))
@@ -115,14 +113,14 @@ int run_sweep(int argc, char** argv) {
                    (dir / "reference-povray.log").string());
     if (ref_run.status == PovrayRun::Status::NotInstalled) {
         std::cerr << "povwall: povray is not installed or not on PATH: no reference\n";
-        return 77;
+        return exit_code(ExitCode::NoPovRay);
     }
     if (ref_run.status != PovrayRun::Status::Ok) {
         if (ref_run.status == PovrayRun::Status::Failed)
             std::cerr << "povwall: error: povray failed on the reference (exit "
                       << ref_run.exit_code << ")\n"
                       << ref_run.log;
-        return 2;
+        return exit_code(ExitCode::Error);
     }
     const Image reference = output::read_image(ref_png);
 
@@ -224,7 +222,7 @@ int run_sweep(int argc, char** argv) {
     if (keep.empty()) fs::remove_all(dir);
     const bool any_failed =
         std::any_of(rungs.begin(), rungs.end(), [](const Rung& r) { return r.failed; });
-    return any_failed ? 1 : 0;
+    return exit_code(any_failed ? ExitCode::Differs : ExitCode::Ok);
 }
 
 }  // namespace povwall::cli

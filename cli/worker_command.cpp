@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/options.h"
+#include "cli/parse_args.h"
 #include "distrib/tcp.h"
 #include "output/image_io.h"
 
@@ -33,11 +34,7 @@ int run_worker_command(int argc, char** argv) {
     // items.
     app.add_option("--die-after-items", w.die_after_items)->group("");
     app.add_option("--hang-after-items", w.hang_after_items)->group("");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
+    if (auto done = parse_args(app, argc, argv)) return *done;
     w.image_reader = output::read_stored_image;
     return distrib::run_worker(w);
 }
