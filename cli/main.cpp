@@ -14,6 +14,7 @@
 
 #include "cli/exit_codes.h"
 #include "cli/interrupt.h"
+#include "cli/option_names.h"
 #include "cli/options.h"
 #include "cli/parse_args.h"
 #include "cli/tile_worker_job.h"
@@ -106,29 +107,24 @@ int render_main(const std::vector<std::string>& args) {
     app.add_flag("-q,--quiet", o.quiet, "no timing summary, no #debug output");
     app.add_option("--boxes", o.boxes,
                    "black boxes: NxNxN equal slabs, N (balanced, N x N x N) or auto");
-    app.add_option("--mode", o.mode,
-                   "auto: screen subdivision when the scene fits --worker-memory, else "
-                   "space subdivision; single; screen; space")
-        ->check(CLI::IsMember({"auto", "single", "screen", "space"}))
-        ->capture_default_str();
+    add_choice_option(
+        app, "--mode", o.mode,
+        "auto: screen subdivision when the scene fits --worker-memory, else "
+        "space subdivision; single; screen; space");
     app.add_option(
         "--worker-memory", o.worker_memory,
         "memory a worker may hold (512M, 2G; default: half of this machine's)");
-    app.add_option("--plan", o.plan,
-                   "auto: leave out what the scene does not need; all: leave nothing out")
-        ->check(CLI::IsMember({"auto", "all"}))
-        ->capture_default_str();
+    add_choice_option(
+        app, "--plan", o.plan,
+        "auto: leave out what the scene does not need; all: leave nothing out");
     app.add_flag("--explain", o.explain, "print the render plan before rendering");
     app.add_option("--procs", o.procs,
                    "worker processes: screen tiles, or with --boxes black boxes over TCP "
                    "(loopback)");
-    app.add_option("--results", o.results,
-                   "how boxes return colours: forward contributions, parents, or auto")
-        ->check(CLI::IsMember({"auto", "forward", "parents"}))
-        ->capture_default_str();
-    app.add_option("--queue", o.queue, "box work order: priority or fifo")
-        ->check(CLI::IsMember({"priority", "fifo"}))
-        ->capture_default_str();
+    add_choice_option(
+        app, "--results", o.results,
+        "how boxes return colours: forward contributions, parents, or auto");
+    add_choice_option(app, "--queue", o.queue, "box work order: priority or fifo");
     std::optional<int> max_trace_level;
     std::optional<double> adc_bailout;
     app.add_option("--max-trace-level", max_trace_level,
@@ -142,17 +138,15 @@ int render_main(const std::vector<std::string>& args) {
                    "black boxes in running workers, host:port,...")
         ->delimiter(',');
     app.add_option("--token", o.token, "job token of the running --workers");
-    app.add_option("--worker-start", o.worker_start,
-                   "how --procs starts black-box workers: fork (they inherit the parsed "
-                   "scene) or exec (each parses it)")
-        ->check(CLI::IsMember({"fork", "exec"}))
-        ->capture_default_str();
-    app.add_option("--worker-cores", o.worker_cores,
-                   "--procs workers that outnumber the cores: keep each on one core with "
-                   "those it trades most rays with (auto) or let the system place them "
-                   "(off)")
-        ->check(CLI::IsMember({"auto", "off"}))
-        ->capture_default_str();
+    add_choice_option(
+        app, "--worker-start", o.worker_start,
+        "how --procs starts black-box workers: fork (they inherit the parsed "
+        "scene) or exec (each parses it)");
+    add_choice_option(
+        app, "--worker-cores", o.worker_cores,
+        "--procs workers that outnumber the cores: keep each on one core with "
+        "those it trades most rays with (auto) or let the system place them "
+        "(off)");
     app.add_option("--teams", o.teams,
                    "black-box workers in N teams that each host every box (fewer rays "
                    "between processes, more of the scene in each), or auto: the most "

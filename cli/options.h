@@ -1,6 +1,7 @@
 // Command-line settings shared by the subcommands, and POV-Ray's +X switches.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <iostream>
@@ -11,6 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "distrib/distribution_plan.h"
+#include "distrib/space_render.h"
+#include "distrib/wire/job.h"
+#include "distrib/work_queue.h"
 #include "parser/parser.h"
 #include "trace/render.h"
 
@@ -31,6 +36,25 @@ namespace povwall::cli {
 // --max-loop-iterations and --max-parse-seconds, for every command that parses a scene.
 void add_parse_limit_options(CLI::App& app, uint64_t& max_loop_iterations,
                              double& max_parse_seconds);
+
+// --plan: leave out what the scene does not need (auto), or nothing (all).
+enum class PlanChoice { Auto, All };
+// --worker-start: --procs workers forked after the parse (inheriting the scene) or
+// executed afresh (each parses the scene).
+enum class WorkerStart { Fork, Exec };
+// --worker-cores: --procs workers that outnumber the cores each kept on one core with the
+// workers it trades most rays with (auto), or placed by the system (off).
+enum class WorkerCores { Auto, Off };
+// Their names, on the command line and in a worker's job (distrib/wire/job_fields.h).
+inline std::array<std::pair<PlanChoice, const char*>, 2> enum_names(PlanChoice) {
+    return {{{PlanChoice::Auto, "auto"}, {PlanChoice::All, "all"}}};
+}
+inline std::array<std::pair<WorkerStart, const char*>, 2> enum_names(WorkerStart) {
+    return {{{WorkerStart::Fork, "fork"}, {WorkerStart::Exec, "exec"}}};
+}
+inline std::array<std::pair<WorkerCores, const char*>, 2> enum_names(WorkerCores) {
+    return {{{WorkerCores::Auto, "auto"}, {WorkerCores::Off, "off"}}};
+}
 
 struct RenderOptions {
     std::string scene;
@@ -83,25 +107,21 @@ struct RenderOptions {
     std::string stats_file;
     // Space subdivision (virtual walls): empty lets --mode decide; "1x1x1" is one box.
     std::string boxes;
-    std::string mode = "auto";  // auto | single | screen | space
+    distrib::RenderMode mode = distrib::RenderMode::Auto;  // names: cli/option_names.h
     int procs =
         0;  // worker processes: screen tiles, or boxes over TCP (0: as many as cores)
     bool tile_worker = false;  // internal: serve screen tiles on stdin/stdout
     std::string
         worker_memory;  // "2G": the budget auto mode fits each worker's scene into
-    std::string plan = "auto";       // auto | all (leave nothing out)
-    bool explain = false;            // print the render plan before rendering
-    std::string results = "auto";    // forward | parents | auto
-    std::string queue = "priority";  // priority | fifo
+    PlanChoice plan = PlanChoice::Auto;
+    bool explain = false;  // print the render plan before rendering
+    distrib::SpaceOptions::Results results = distrib::SpaceOptions::Results::Auto;
+    distrib::QueuePolicy queue = distrib::QueuePolicy::Priority;
     // Black boxes in running workers over TCP (--procs starts local ones).
     std::vector<std::string> workers;  // "host:port"
     std::string token;                 // job token the workers were started with
-    // How --procs starts its black-box workers: fork (after the parse, inheriting the
-    // scene) or exec (a fresh `povwall worker`, which parses the scene itself).
-    std::string worker_start = "fork";
-    // --procs workers that outnumber the cores: each kept on one core with the workers
-    // it trades most rays with (auto), or placed by the system (off).
-    std::string worker_cores = "auto";
+    WorkerStart worker_start = WorkerStart::Fork;
+    WorkerCores worker_cores = WorkerCores::Auto;
     // Teams of workers, each hosting every box: a count that divides the workers, or
     // "auto" (distrib::SpaceOptions::teams).
     std::string teams = "auto";

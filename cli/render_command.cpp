@@ -13,6 +13,7 @@
 
 #include "cli/exit_codes.h"
 #include "cli/interrupt.h"
+#include "cli/option_names.h"
 #include "cli/options.h"
 #include "cli/progress_bar.h"
 #include "cli/tile_worker_job.h"
@@ -191,7 +192,7 @@ int run_render(RenderOptions o) {
     resolve_partial_render(o);
     o.render.width = o.width;
     o.render.height = o.height;
-    o.render.plan_everything_on = o.plan == "all";
+    o.render.plan_everything_on = o.plan == PlanChoice::All;
     auto t0 = Clock::now();
     Scene scene;
     // A single frame's worker processes, released after the frame: they exit while the
@@ -217,14 +218,11 @@ int run_render(RenderOptions o) {
     const trace::RenderPlan plan =
         trace::make_render_plan(scene, o.render.plan_everything_on, o.render.quality);
     distrib::DistributionRequest request;
-    request.mode = o.mode == "single"   ? distrib::RenderMode::Single
-                   : o.mode == "space"  ? distrib::RenderMode::Space
-                   : o.mode == "screen" ? distrib::RenderMode::Screen
-                                        : distrib::RenderMode::Auto;
+    request.mode = o.mode;
     request.boxes = o.boxes;
     request.threads = o.render.threads;
     request.procs = o.procs;
-    request.keep_on_cores = o.worker_cores == "auto";
+    request.keep_on_cores = o.worker_cores == WorkerCores::Auto;
     request.teams = o.teams == "auto" ? 0 : std::atoi(o.teams.c_str());
     request.workers = int(o.workers.size());
     request.pixels = size_t(o.render.width) * size_t(o.render.height);
@@ -266,11 +264,8 @@ int run_render(RenderOptions o) {
     bool workers_forked = false;
     Image image;
     if (use_boxes) {
-        space.results = o.results == "forward"   ? distrib::SpaceOptions::Results::Forward
-                        : o.results == "parents" ? distrib::SpaceOptions::Results::Parents
-                                                 : distrib::SpaceOptions::Results::Auto;
-        space.queue = o.queue == "fifo" ? distrib::QueuePolicy::Fifo
-                                        : distrib::QueuePolicy::Priority;
+        space.results = o.results;
+        space.queue = o.queue;
         // Worker processes: --procs, --workers, or as many as auto mode needs for the
         // memory budget.
         if (dplan.procs > 0 || !o.workers.empty()) {
@@ -300,8 +295,8 @@ int run_render(RenderOptions o) {
             // Forked workers share the coordinator's whole scene, which a memory budget
             // (--worker-memory, or auto mode spreading a scene too big for one worker)
             // is there to avoid: each of those parses only its part.
-            tcp.fork_workers =
-                o.worker_start == "fork" && o.procs > 0 && o.worker_memory.empty();
+            tcp.fork_workers = o.worker_start == WorkerStart::Fork && o.procs > 0 &&
+                               o.worker_memory.empty();
             tcp.image_reader = output::read_stored_image;
             // One frame, or a frame of an animation on the previous frame's workers.
             std::unique_ptr<distrib::TcpSession> one_frame;
@@ -404,9 +399,11 @@ int run_render(RenderOptions o) {
         nlohmann::json lights = nlohmann::json::array();
         for (const auto& l : plan.lights)
             lights.push_back({{"shadow_rays", l.shadow_rays}, {"why", l.reason}});
-        j["plan"] = {{"mode", use_boxes                                   ? "space"
-                              : dplan.mode == distrib::RenderMode::Screen ? "screen"
-                                                                          : "single"},
+        using distrib::RenderMode;
+        const RenderMode ran = use_boxes                          ? RenderMode::Space
+                               : dplan.mode == RenderMode::Screen ? RenderMode::Screen
+                                                                  : RenderMode::Single;
+        j["plan"] = {{"mode", choice_name(ran)},
                      {"forced_on", plan.everything_on},
                      {"reflection_rays", plan.reflection_rays},
                      {"transmission_rays", plan.transmission_rays},

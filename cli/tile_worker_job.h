@@ -17,7 +17,7 @@
 namespace povwall::cli {
 
 struct TileWorkerJob : distrib::SceneJob {
-    std::string plan;
+    PlanChoice plan = PlanChoice::Auto;
     int quality = 9;
     double aa_threshold = 0.3;
     int aa_method = 1, aa_depth = 3;

@@ -18,6 +18,13 @@
 
 namespace povwall::distrib {
 
+std::array<std::pair<RenderMode, const char*>, 4> enum_names(RenderMode) {
+    return {{{RenderMode::Auto, "auto"},
+             {RenderMode::Single, "single"},
+             {RenderMode::Screen, "screen"},
+             {RenderMode::Space, "space"}}};
+}
+
 SpaceOptions parse_boxes(const std::string& spec) {
     SpaceOptions space;
     if (spec == "auto") {

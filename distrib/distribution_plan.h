@@ -13,6 +13,7 @@
 // balanced boxes whose largest local scene fits it.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -24,6 +25,8 @@
 namespace povwall::distrib {
 
 enum class RenderMode { Auto, Single, Screen, Space };
+// Its names (--mode), found by distrib/wire/job_fields.h's NamedEnum.
+std::array<std::pair<RenderMode, const char*>, 4> enum_names(RenderMode);
 
 struct DistributionRequest {
     RenderMode mode = RenderMode::Auto;

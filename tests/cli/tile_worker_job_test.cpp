@@ -18,7 +18,7 @@ TileWorkerJob populated() {
     j.name = "dir with space/a=b.pov";
     j.width = 641;
     j.height = 479;
-    j.plan = "all";
+    j.plan = povwall::cli::PlanChoice::All;
     j.library_paths = {"/inc", "rel/dir", "x=y"};
     j.declares = {{"Angle", 0.1}, {"N", -3}, {"Tiny", 1e-300}};
     j.language_version = 362;
