@@ -22,6 +22,26 @@ namespace {
 namespace fs = std::filesystem;
 using namespace povwall_test;
 
+// A choice option takes only its names (cli/option_names.h: an enum's one table), never
+// the enum's numbers.
+TEST(Cli, ChoiceOptionsTakeOnlyTheirNames) {
+    fs::path scene = write_scene("choice.pov", "sphere { 0, 1 pigment { rgb 1 } }\n");
+    fs::path out = scratch() / "choice.png";
+    fs::remove(out);
+    RunResult r =
+        run("render " + scene.string() + " -W 8 -H 6 -q --mode 1 -o " + out.string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--mode: 1 not in {auto,single,screen,space}"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(out));
+    r = run("render " + scene.string() + " -W 8 -H 6 -q --plan all --queue fifo " +
+            "--results parents --worker-cores off --worker-start exec -o " +
+            out.string());
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(out));
+}
+
 TEST(Cli, SyntaxErrorIsLocatedExitsTwoAndWritesNothing) {
     fs::path scene = write_scene("bad.pov",
                                  "camera { location <0, 0, -3> }\nsphere { 0, 1\n"
