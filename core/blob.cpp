@@ -78,7 +78,7 @@ BlobData make_blob(Real threshold, const std::vector<BlobElement>& components) {
     std::vector<Bounds3> boxes;
     boxes.reserve(d.elements.size());
     for (const BlobElement& e : d.elements) boxes.push_back(blob_element_box(e));
-    d.tree = BlobTree(boxes);
+    d.tree = BoxTree(boxes);
     return d;
 }
 

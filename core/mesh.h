@@ -11,6 +11,7 @@
 #include <mutex>
 #include <vector>
 
+#include "core/box_tree.h"
 #include "core/heap_optional.h"
 #include "core/math.h"
 
@@ -22,34 +23,6 @@ struct MeshFace {
     // Index into the object's face textures (Mesh::textures); -1: the mesh's texture;
     // -2 - k: the three textures of texture_triples[k] (rare, so kept out of every face).
     int32_t texture = -1;
-};
-
-// A bounding-box hierarchy over a mesh's faces, each face's box that of its corners in
-// single precision (as POV-Ray stores them): split at the median face along the axis
-// the faces' centres spread most on, four faces a leaf.
-class MeshTree {
-  public:
-    struct Node {
-        Real lo[3], hi[3];
-        // A leaf: faces order[first, first + count); an inner node (count 0): its
-        // children are the next node and node `first`.
-        uint32_t first = 0, count = 0;
-    };
-    MeshTree() = default;
-    explicit MeshTree(const std::vector<Bounds3>& face_boxes);
-
-    bool empty() const { return nodes_.empty(); }
-    const std::vector<Node>& nodes() const { return nodes_; }
-    const std::vector<uint32_t>& order() const { return order_; }
-    size_t bytes() const {
-        return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(uint32_t);
-    }
-
-  private:
-    uint32_t build(const std::vector<Bounds3>& boxes, const std::vector<Point3>& centres,
-                   uint32_t begin, uint32_t end);
-    std::vector<Node> nodes_;
-    std::vector<uint32_t> order_;  // face indices, leaf by leaf
 };
 
 // What the mesh's braces define. Made once by the parser and shared (const) by every
@@ -68,12 +41,13 @@ struct MeshData {
     std::vector<std::array<int32_t, 3>> texture_triples;
     HeapOptional<Vector3> inside_vector;  // only a mesh with one is solid
 
-    // The faces' box tree, built on first use (by any thread; once).
-    const MeshTree& tree() const;
+    // The box tree over the faces (each face's box that of its corners in single
+    // precision, as POV-Ray stores them), built on first use (by any thread; once).
+    const BoxTree& tree() const;
 
   private:
     mutable std::once_flag tree_built_;
-    mutable MeshTree tree_;
+    mutable BoxTree tree_;
 };
 
 }  // namespace povwall

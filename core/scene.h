@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/bicubic_patch.h"
-#include "core/blob_tree.h"
+#include "core/box_tree.h"
 #include "core/colour.h"
 #include "core/compact_transform.h"
 #include "core/function.h"
@@ -731,7 +731,7 @@ struct BlobData {
     std::vector<BlobElement> elements;
     // Over blob_element_box of each element (make_blob builds it; empty: every element
     // is visited).
-    BlobTree tree;
+    BoxTree tree;
 };
 struct Blob {
     std::shared_ptr<const BlobData> data;  // shared by copies

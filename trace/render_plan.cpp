@@ -209,7 +209,7 @@ size_t estimate_model_bytes(const Object& o) {
             heap_bytes(d.vertices.size() * sizeof(Point3)) +
             heap_bytes(d.normals.size() * sizeof(Vector3)) +
             heap_bytes(d.faces.size() * sizeof(Mesh::Face)) +
-            heap_bytes(d.faces.size() / 2 * sizeof(MeshTree::Node) + d.faces.size() * 4);
+            heap_bytes(d.faces.size() / 2 * sizeof(BoxTree::Node) + d.faces.size() * 4);
         b += shared / m->copies + heap_bytes(m->textures.size() * sizeof(LayeredTexture));
         for (const LayeredTexture& t : m->textures) b += model_bytes(t);
     } else if (auto bl = std::get_if<Blob>(&o.shape)) {

@@ -174,7 +174,7 @@ TEST(ShapeBlob, TheTreeFindsWhatVisitingEveryElementFinds) {
     ASSERT_FALSE(with_tree.data->tree.empty());
     Blob without = with_tree;
     auto plain = std::make_shared<BlobData>(*with_tree.data);
-    plain->tree = BlobTree{};
+    plain->tree = BoxTree{};
     without.data = plain;
     std::mt19937 rng(11);
     std::uniform_real_distribution<Real> u(-1, 1);

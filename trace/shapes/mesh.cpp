@@ -27,9 +27,9 @@ struct TreeRay {
     Real inv[3];
     Real pad;  // in space: the rounding of the box and of the crossing's place
 
-    TreeRay(const Point3& o, const Vector3& d, const MeshTree& tree) : origin(o), dir(d) {
+    TreeRay(const Point3& o, const Vector3& d, const BoxTree& tree) : origin(o), dir(d) {
         for (int a = 0; a < 3; ++a) inv[a] = 1.0 / d[a];
-        const MeshTree::Node& root = tree.nodes().front();
+        const BoxTree::Node& root = tree.nodes().front();
         Real scale = 0;
         for (int a = 0; a < 3; ++a)
             scale = std::max(
@@ -37,7 +37,7 @@ struct TreeRay {
         pad = 1e-9 * scale;
     }
     // Whether the ray (t >= 0) may meet the node's box, and from where.
-    bool meets(const MeshTree::Node& n, Real& entry) const {
+    bool meets(const BoxTree::Node& n, Real& entry) const {
         Real lo = 0, hi = kInfinity;
         for (int a = 0; a < 3; ++a) {
             const Real l = n.lo[a] - pad, h = n.hi[a] + pad;
@@ -58,7 +58,7 @@ struct TreeRay {
 
 // Walks the faces whose boxes the ray may meet, depth first, calling face(index).
 template <class Face>
-void walk_faces(const MeshTree& tree, const TreeRay& ray, Face&& face) {
+void walk_faces(const BoxTree& tree, const TreeRay& ray, Face&& face) {
     if (tree.empty()) return;
     // Median splits: the depth is at most log2 of 2^32 faces.
     uint32_t stack[72];
@@ -68,7 +68,7 @@ void walk_faces(const MeshTree& tree, const TreeRay& ray, Face&& face) {
     const auto& order = tree.order();
     while (size > 0) {
         const uint32_t index = stack[--size];
-        const MeshTree::Node& n = nodes[index];
+        const BoxTree::Node& n = nodes[index];
         Real entry;
         if (!ray.meets(n, entry)) continue;
         if (n.count > 0) {
@@ -94,7 +94,7 @@ void walk_faces(const MeshTree& tree, const TreeRay& ray, Face&& face) {
 // walks from there.
 void nearest_walk_hits(const Mesh& m, const LocalRay& r, const Vector3& unit,
                        const ShapeClip* clip, ShapeHits& out) {
-    const MeshTree& tree = m->tree();
+    const BoxTree& tree = m->tree();
     if (tree.empty()) return;
     struct Item {
         Real key;  // a face: where its float box starts; a node: no later than that
@@ -143,7 +143,7 @@ void nearest_walk_hits(const Mesh& m, const LocalRay& r, const Vector3& unit,
             if (r.ends_search(world_t)) return;
             continue;
         }
-        const MeshTree::Node& n = nodes[item.index];
+        const BoxTree::Node& n = nodes[item.index];
         if (n.count == 0) {
             push_node(item.index + 1);
             push_node(n.first);
@@ -181,7 +181,7 @@ void shape_hits(const Mesh& m, const LocalRay& r, const ShapeClip* clip, ShapeHi
     // Divided (not multiplied by the reciprocal) as meshes in CSG always were.
     const Vector3 dn = r.direction / r.length;
     if (mesh_stops_at_nearest(m)) return nearest_walk_hits(m, r, dn, clip, out);
-    const MeshTree& tree = m->tree();
+    const BoxTree& tree = m->tree();
     if (tree.empty()) return;
     // Every crossing, in face order.
     thread_local std::vector<std::pair<uint32_t, Real>> crossed;
@@ -224,7 +224,7 @@ bool shape_inside_inverted(const Mesh& m, const Point3& q) {
 bool shape_inside(const Mesh& m, const Point3& q) {
     if (!has_inside(m)) return false;
     const Vector3 dir = normalize(*m->inside_vector);
-    const MeshTree& tree = m->tree();
+    const BoxTree& tree = m->tree();
     if (tree.empty()) return false;
     int crossed = 0;
     walk_faces(tree, TreeRay(q, dir, tree), [&](uint32_t fi) {

@@ -1,6 +1,5 @@
-// The bounding-box hierarchy over a blob's elements (blob_tree.h): split at the median
-// element along the axis its boxes' centres spread most on, four elements a leaf.
-#include "core/blob_tree.h"
+// The bounding-box hierarchy over boxes (box_tree.h).
+#include "core/box_tree.h"
 
 #include <algorithm>
 #include <numeric>
@@ -12,7 +11,7 @@ constexpr uint32_t kLeafSize = 4;
 
 }  // namespace
 
-BlobTree::BlobTree(const std::vector<Bounds3>& boxes) {
+BoxTree::BoxTree(const std::vector<Bounds3>& boxes) {
     if (boxes.empty()) return;
     order_.resize(boxes.size());
     std::iota(order_.begin(), order_.end(), 0u);
@@ -29,9 +28,9 @@ BlobTree::BlobTree(const std::vector<Bounds3>& boxes) {
     build(boxes, centres, 0, uint32_t(boxes.size()));
 }
 
-uint32_t BlobTree::build(const std::vector<Bounds3>& boxes,
-                         const std::vector<Point3>& centres, uint32_t begin,
-                         uint32_t end) {
+uint32_t BoxTree::build(const std::vector<Bounds3>& boxes,
+                        const std::vector<Point3>& centres, uint32_t begin,
+                        uint32_t end) {
     const uint32_t index = uint32_t(nodes_.size());
     nodes_.emplace_back();
     Bounds3 box, spread;
@@ -65,8 +64,8 @@ uint32_t BlobTree::build(const std::vector<Bounds3>& boxes,
     return index;
 }
 
-void BlobTree::line_candidates(const Point3& p, const Vector3& d,
-                               std::vector<uint32_t>& out) const {
+void BoxTree::line_candidates(const Point3& p, const Vector3& d,
+                              std::vector<uint32_t>& out) const {
     if (nodes_.empty()) return;
     const Real inv[3] = {1.0 / d.x, 1.0 / d.y, 1.0 / d.z};
     auto meets = [&](const Node& n) {
@@ -101,7 +100,7 @@ void BlobTree::line_candidates(const Point3& p, const Vector3& d,
     }
 }
 
-void BlobTree::point_candidates(const Point3& p, std::vector<uint32_t>& out) const {
+void BoxTree::point_candidates(const Point3& p, std::vector<uint32_t>& out) const {
     if (nodes_.empty()) return;
     uint32_t stack[64];
     int size = 0;
