@@ -25,7 +25,7 @@ struct Soup {
 };
 
 // Faces of random size and place, a quarter in an axis plane, every tenth a copy of
-// an earlier one (same corners: same box, same crossing).
+// an earlier one (same corners: same box, same crossing), and one with a far corner.
 Soup make_soup(std::mt19937_64& rng, int faces) {
     std::uniform_real_distribution<Real> place(-3, 3), size(0.05, 1.5);
     Soup s;
@@ -47,6 +47,14 @@ Soup make_soup(std::mt19937_64& rng, int faces) {
         }
         d.faces.push_back(f);
     }
+    // One face reaching far out (an exporter's stray vertex): its box is huge, the
+    // others' stay tight.
+    MeshFace far;
+    for (int k = 0; k < 3; ++k) far.v[k] = uint32_t(d.vertices.size() + size_t(k));
+    d.vertices.push_back({0.5, 0.25, 0.5});
+    d.vertices.push_back({0.75, 0.5, -0.25});
+    d.vertices.push_back({0.5, 1e12, 0.5});
+    d.faces.push_back(far);
     return s;
 }
 
@@ -190,9 +198,9 @@ TEST(ShapeMesh, CopiesShareOneFaceTree) {
     const Soup soup = make_soup(rng, 50);
     const Mesh a = soup.mesh(), b = soup.mesh();
     EXPECT_EQ(&a->tree(), &b->tree());
-    // Four faces a leaf, median splits: 50 faces in 16 leaves, 31 nodes.
+    // Four faces a leaf, median splits: 51 faces in 16 leaves, 31 nodes.
     EXPECT_EQ(a->tree().nodes().size(), 31u);
-    EXPECT_EQ(a->tree().order().size(), 50u);
+    EXPECT_EQ(a->tree().order().size(), 51u);
 }
 
 }  // namespace

@@ -20,26 +20,22 @@ bool has_inside(const Mesh& m) {
 
 // A ray in the mesh's space against the face tree's boxes. The boxes are a face's
 // corners; a crossing the triangle test finds lies on the face, so inside them up to the
-// rounding of the crossing (in double), which the pad and tolerance cover.
+// rounding of the crossing (in double), which the pad covers: a billionth of the
+// magnitudes on that axis, the box's own (one far vertex must not widen every box).
 struct TreeRay {
     Point3 origin;
     Vector3 dir;
     Real inv[3];
-    Real pad;  // in space: the rounding of the box and of the crossing's place
 
-    TreeRay(const Point3& o, const Vector3& d, const BoxTree& tree) : origin(o), dir(d) {
+    TreeRay(const Point3& o, const Vector3& d) : origin(o), dir(d) {
         for (int a = 0; a < 3; ++a) inv[a] = 1.0 / d[a];
-        const BoxTree::Node& root = tree.nodes().front();
-        Real scale = 0;
-        for (int a = 0; a < 3; ++a)
-            scale = std::max(
-                {scale, std::fabs(root.lo[a]), std::fabs(root.hi[a]), std::fabs(o[a])});
-        pad = 1e-9 * scale;
     }
     // Whether the ray (t >= 0) may meet the node's box, and from where.
     bool meets(const BoxTree::Node& n, Real& entry) const {
         Real lo = 0, hi = kInfinity;
         for (int a = 0; a < 3; ++a) {
+            const Real pad = 1e-9 * (std::fabs(origin[a]) +
+                                     std::max(std::fabs(n.lo[a]), std::fabs(n.hi[a])));
             const Real l = n.lo[a] - pad, h = n.hi[a] + pad;
             if (dir[a] == 0) {
                 if (origin[a] < l || origin[a] > h) return false;
@@ -111,7 +107,7 @@ void nearest_walk_hits(const Mesh& m, const LocalRay& r, const Vector3& unit,
     };
     thread_local std::vector<Item> heap;
     heap.clear();
-    const TreeRay ray(r.origin, unit, tree);
+    const TreeRay ray(r.origin, unit);
     const PovRay box_ray(r.origin, unit);
     Real far = 0;
     for (int a = 0; a < 3; ++a) far = std::max(far, std::fabs(r.origin[a]));
@@ -186,7 +182,7 @@ void shape_hits(const Mesh& m, const LocalRay& r, const ShapeClip* clip, ShapeHi
     // Every crossing, in face order.
     thread_local std::vector<std::pair<uint32_t, Real>> crossed;
     crossed.clear();
-    walk_faces(tree, TreeRay(r.origin, dn, tree), [&](uint32_t fi) {
+    walk_faces(tree, TreeRay(r.origin, dn), [&](uint32_t fi) {
         Point3 p[3];
         mesh_face_corners(m, m->faces[fi], p);
         Crossings cs;
@@ -227,7 +223,7 @@ bool shape_inside(const Mesh& m, const Point3& q) {
     const BoxTree& tree = m->tree();
     if (tree.empty()) return false;
     int crossed = 0;
-    walk_faces(tree, TreeRay(q, dir, tree), [&](uint32_t fi) {
+    walk_faces(tree, TreeRay(q, dir), [&](uint32_t fi) {
         Point3 p[3];
         mesh_face_corners(m, m->faces[fi], p);
         Crossings cs;
