@@ -436,11 +436,13 @@ void Interpreter::directive_declare(const Token& t, bool local) {
                        name, scope_count);
     }
     // POV-Ray's Parse_Semi_Colon(true) after a float, vector or colour; other values only
-    // allow one.
+    // allow one. Then the directive allows one more (Parse_Declare's after_hash):
+    // `#local A = 1;;` is a declaration.
     if (numeric)
         check_semicolon(t, true);
     else
         accept_semicolon();
+    accept_semicolon();
 }
 
 void Interpreter::check_semicolon(const Token& at, bool forced) {

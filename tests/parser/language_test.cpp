@@ -342,6 +342,23 @@ TEST(SourceText, LargeFilesAreMappedAndProtected) {
     fs::remove_all(dir);
 }
 
+// A declaration directive allows one more ';' after its value's own (POV-Ray's
+// Parse_Declare after `#`): `#local A = 1;;` inside an object is not a stray ';'; a third
+// is an error there as in POV-Ray.
+TEST(Directives, DeclarationTakesASecondSemicolon) {
+    Scene s = parse(R"(
+object {
+  #local A = 2;;
+  #declare B = sphere { 0, 1 };;
+  object { B scale A }
+}
+)");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.objects[0].transform.point({1, 0, 0}), (Vector3{2, 0, 0}));
+    EXPECT_THROW(parse("object {\n  #local A = 2;;;\n  sphere { 0, A }\n}\n"),
+                 parser::ParseError);
+}
+
 // `#local S = Macro()` whose body ends with '}': the macro's frame is still open when the
 // value is bound, yet S belongs to the scope of the macro that holds the #local
 // (transforms.inc's Spline_Trans does `#local Matrix = Matrix_Trans(...)`).
