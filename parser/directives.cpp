@@ -617,7 +617,11 @@ std::string Interpreter::resolve_include(const std::string& name, int from_file,
     };
     fs::path p(name);
     if (p.is_absolute()) return exists(p) ? name : std::string();
+    // POV-Ray's FindFilePath tries the name as given first (relative to the working
+    // folder), then the library paths; the including file's folder and the scene's come
+    // after the first, so a scene rendered from elsewhere still finds its neighbours.
     std::vector<fs::path> dirs;
+    dirs.emplace_back();
     dirs.push_back(fs::path(sources_.file(from_file).path).parent_path());
     dirs.push_back(scene_dir_);
     for (const auto& l : options_.library_paths) dirs.emplace_back(l);

@@ -134,7 +134,8 @@ void move_pov_box(Csg::PovBox& box, const Transform& t) {
 
 std::string Interpreter::resolve_font(const std::string& name, int from_file,
                                       std::string& searched) const {
-    std::vector<fs::path> dirs;
+    std::vector<fs::path> dirs;  // as resolve_include: the working folder first
+    dirs.emplace_back();
     dirs.push_back(fs::path(sources_.file(from_file).path).parent_path());
     dirs.push_back(scene_dir_);
     for (const auto& l : options_.library_paths) dirs.emplace_back(l);

@@ -226,6 +226,31 @@ TEST(Includes, SearchOrderAndLocationsInsideIncludes) {
     fs::remove_all(dir);
 }
 
+// POV-Ray looks for an include by its name as given, from the working folder, first: a
+// scene rendered from its project's root finds `includes/col.inc` there; the working
+// folder's file wins over one of that name beside the scene.
+TEST(Includes, TheWorkingFolderComesFirst) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "povwall_parser_include_cwd_test";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "includes");
+    fs::create_directories(dir / "sub" / "includes");
+    std::ofstream(dir / "includes" / "col.inc") << "#declare R = 2;\n";
+    std::ofstream(dir / "sub" / "includes" / "col.inc") << "#declare R = 3;\n";
+    std::ofstream(dir / "sub" / "scene.pov")
+        << "#include \"includes/col.inc\"\nsphere { 0, R }\n";
+    const fs::path before = fs::current_path();
+    fs::current_path(dir);
+    const Scene from_root = parse_scene_file("sub/scene.pov", ParseOptions{});
+    fs::current_path(dir / "sub");
+    const Scene from_sub = parse_scene_file("scene.pov", ParseOptions{});
+    fs::current_path(before);
+    ASSERT_EQ(from_root.objects.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(from_root.objects[0].shape).radius, 2);
+    EXPECT_EQ(std::get<Sphere>(from_sub.objects[0].shape).radius, 3);
+    fs::remove_all(dir);
+}
+
 // #fopen stays inside the output folder and the scene's folder; data-file errors point
 // into the data file; a worker's parse (write_user_files off) writes nothing.
 TEST(FileIo, FoldersErrorsAndWorkerParses) {
