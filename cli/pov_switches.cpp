@@ -162,10 +162,10 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
             case 'F':
                 if (!v2.empty()) {
                     o.format = char(std::toupper((unsigned char)v2[0]));
-                    if (std::string("NTCPEH").find(o.format) == std::string::npos) {
+                    if (std::string("NTCPEHJ").find(o.format) == std::string::npos) {
                         throw UsageError(
                             "unsupported output format in '" + arg +
-                            "' (povwall writes +FN, +FT, +FC, +FP, +FE, +FH)");
+                            "' (povwall writes +FN, +FT, +FC, +FP, +FE, +FH, +FJ)");
                     }
                     o.format_given = true;
                     if (v2.size() > 1) o.bits = int(number(arg, v2.substr(1)));
@@ -201,6 +201,7 @@ std::string format_extension(char format) {
            : format == 'P'                ? ".ppm"
            : format == 'E'                ? ".exr"
            : format == 'H'                ? ".hdr"
+           : format == 'J'                ? ".jpg"
                                           : ".png";
 }
 

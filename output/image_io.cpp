@@ -148,10 +148,12 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
     if (ext == ".tga") ext = ".targa";  // OIIO's plugin names
     if (ext == ".ppm") ext = ".pnm";
+    if (ext == ".jpeg") ext = ".jpg";
     const bool linear_format = ext == ".exr" || ext == ".hdr";
     const bool png = ext == ".png", ppm = ext == ".pnm";
-    // PPM and Radiance RGBE have no alpha channel (POV-Ray's +FP and +FH ignore +UA).
-    const int channels = enc.alpha && ext != ".hdr" && !ppm ? 4 : 3;
+    // PPM, JPEG and Radiance RGBE have no alpha channel (POV-Ray's +FP, +FJ and +FH
+    // ignore +UA).
+    const int channels = enc.alpha && ext != ".hdr" && ext != ".jpg" && !ppm ? 4 : 3;
     const int W = image.width, H = image.height;
     // POV-Ray's colour depth (+FN12: 12 bits; it takes 5..16): PNG and PPM quantise to
     // it, PNG then fills its 8- or 16-bit samples by left bit replication (12-bit v is

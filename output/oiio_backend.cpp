@@ -19,6 +19,9 @@ std::string write_oiio(const std::string& path, const std::string& format, int w
     if (srgb) spec.attribute("oiio:ColorSpace", "sRGB");
     auto out = OIIO::ImageOutput::create(format.empty() ? path : format);
     if (!out) return "unsupported image format";
+    // POV-Ray's JPEG quality when the scene gives no Compression (its jpeg.cpp).
+    if (std::string(out->format_name()) == "jpeg")
+        spec.attribute("Compression", "jpeg:85");
     if (!out->open(path, spec)) return out->geterror();
     bool ok = out->write_image(td, pixels);
     ok = out->close() && ok;

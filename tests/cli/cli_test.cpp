@@ -275,6 +275,23 @@ TEST(Cli, RadianceHdrHoldsLinearColourWithoutAlpha) {
     EXPECT_EQ(img.pixel(2, 1)[3], 1.0f);  // no alpha channel in the file: opaque
 }
 
+// +FJ writes a JPEG (POV-Ray's quality 85, no alpha even with +UA) named .jpg.
+TEST(Cli, JpegOutput) {
+    fs::path scene = write_scene("jpeg.pov", kGreyScene);
+    fs::path out = scratch() / "photo";
+    fs::remove(scratch() / "photo.jpg");
+    ASSERT_EQ(
+        run("+I" + scene.string() + " +O" + out.string() + " +W16 +H8 +FJ +UA -GA").code,
+        0);
+    fs::path jpg = scratch() / "photo.jpg";
+    EXPECT_EQ(head_bytes(jpg, 3), "\xFF\xD8\xFF");
+    povwall::Image img = povwall::output::read_image(jpg.string());
+    EXPECT_EQ(img.width, 16);
+    EXPECT_NEAR(img.pixel(8, 4)[0], 188.0f / 255, 0.03f);  // sRGB-encoded 0.5, lossy
+    EXPECT_NEAR(img.pixel(8, 4)[2], 1.0f, 0.03f);
+    EXPECT_EQ(img.pixel(8, 4)[3], 1.0f);
+}
+
 TEST(Cli, PartialRenderByRowNumbersAndFractions) {
     fs::path scene = write_scene("part.pov", kGreyScene);
     fs::path out = scratch() / "part.png";
