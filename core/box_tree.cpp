@@ -64,61 +64,55 @@ uint32_t BoxTree::build(const std::vector<Bounds3>& boxes,
     return index;
 }
 
-void BoxTree::line_candidates(const Point3& p, const Vector3& d,
-                              std::vector<uint32_t>& out) const {
+template <class Meets>
+void BoxTree::collect(Meets&& meets, std::vector<uint32_t>& out) const {
     if (nodes_.empty()) return;
-    const Real inv[3] = {1.0 / d.x, 1.0 / d.y, 1.0 / d.z};
-    auto meets = [&](const Node& n) {
-        Real lo = -kInfinity, hi = kInfinity;
-        for (int a = 0; a < 3; ++a) {
-            if (d[a] == 0.0) {
-                if (p[a] < n.lo[a] || p[a] > n.hi[a]) return false;
-                continue;
-            }
-            Real t0 = (n.lo[a] - p[a]) * inv[a];
-            Real t1 = (n.hi[a] - p[a]) * inv[a];
-            if (t0 > t1) std::swap(t0, t1);
-            lo = std::max(lo, t0);
-            hi = std::min(hi, t1);
-        }
-        return lo <= hi;
-    };
     uint32_t stack[64];
     int size = 0;
     stack[size++] = 0;
     while (size > 0) {
-        const Node& n = nodes_[stack[--size]];
+        const uint32_t index = stack[--size];
+        const Node& n = nodes_[index];
         if (!meets(n)) continue;
         if (n.count > 0) {
             out.insert(out.end(), order_.begin() + n.first,
                        order_.begin() + n.first + n.count);
             continue;
         }
-        const uint32_t self = uint32_t(&n - nodes_.data());
         stack[size++] = n.first;
-        stack[size++] = self + 1;
+        stack[size++] = index + 1;
     }
 }
 
+void BoxTree::line_candidates(const Point3& p, const Vector3& d,
+                              std::vector<uint32_t>& out) const {
+    const Real inv[3] = {1.0 / d.x, 1.0 / d.y, 1.0 / d.z};
+    collect(
+        [&](const Node& n) {
+            Real lo = -kInfinity, hi = kInfinity;
+            for (int a = 0; a < 3; ++a) {
+                if (d[a] == 0.0) {
+                    if (p[a] < n.lo[a] || p[a] > n.hi[a]) return false;
+                    continue;
+                }
+                Real t0 = (n.lo[a] - p[a]) * inv[a];
+                Real t1 = (n.hi[a] - p[a]) * inv[a];
+                if (t0 > t1) std::swap(t0, t1);
+                lo = std::max(lo, t0);
+                hi = std::min(hi, t1);
+            }
+            return lo <= hi;
+        },
+        out);
+}
+
 void BoxTree::point_candidates(const Point3& p, std::vector<uint32_t>& out) const {
-    if (nodes_.empty()) return;
-    uint32_t stack[64];
-    int size = 0;
-    stack[size++] = 0;
-    while (size > 0) {
-        const Node& n = nodes_[stack[--size]];
-        if (p.x < n.lo[0] || p.x > n.hi[0] || p.y < n.lo[1] || p.y > n.hi[1] ||
-            p.z < n.lo[2] || p.z > n.hi[2])
-            continue;
-        if (n.count > 0) {
-            out.insert(out.end(), order_.begin() + n.first,
-                       order_.begin() + n.first + n.count);
-            continue;
-        }
-        const uint32_t self = uint32_t(&n - nodes_.data());
-        stack[size++] = n.first;
-        stack[size++] = self + 1;
-    }
+    collect(
+        [&](const Node& n) {
+            return !(p.x < n.lo[0] || p.x > n.hi[0] || p.y < n.lo[1] || p.y > n.hi[1] ||
+                     p.z < n.lo[2] || p.z > n.hi[2]);
+        },
+        out);
 }
 
 }  // namespace povwall

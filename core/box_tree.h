@@ -40,6 +40,9 @@ class BoxTree {
     void point_candidates(const Point3& p, std::vector<uint32_t>& out) const;
 
   private:
+    // Appends the elements of the leaves reached through nodes `meets` accepts.
+    template <class Meets>
+    void collect(Meets&& meets, std::vector<uint32_t>& out) const;
     uint32_t build(const std::vector<Bounds3>& boxes, const std::vector<Point3>& centres,
                    uint32_t begin, uint32_t end);
 

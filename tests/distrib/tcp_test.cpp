@@ -433,13 +433,13 @@ TEST(Tcp, SurveyFourFixesInEveryModeEqualOneProcess) {
 // copies in its own parse (left-out objects too), so each traces the same copies whole
 // and every mode gives the one-process image.
 TEST(Tcp, MeshCopiesInEveryModeEqualOneProcess) {
-    for (const char* name : {"mesh_copies", "mesh_copies_in_csg"}) {
+    const std::vector<std::string> modes = {"--mode screen --procs 2", "--boxes 2x2x2",
+                                            "--boxes 3x1x2 --procs 2 --results parents",
+                                            "--boxes 4x1x1 --procs 4 --results parents"};
+    for (const std::string name : {"mesh_copies", "mesh_copies_in_csg"}) {
         SCOPED_TRACE(name);
-        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
-        expect_same_images(scene, "-W 40 -H 30",
-                           {"--mode screen --procs 2", "--boxes 2x2x2",
-                            "--boxes 3x1x2 --procs 2 --results parents",
-                            "--boxes 4x1x1 --procs 4 --results parents"});
+        expect_same_images(std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov",
+                           "-W 40 -H 30", modes);
     }
 }
 
