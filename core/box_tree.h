@@ -1,9 +1,9 @@
 // A bounding-box hierarchy over boxes: a blob's elements (as POV-Ray's `hierarchy on`
 // builds one of spheres: which elements a line or a point can be in the region of, so
 // that a ray's intervals and a point's field need only those instead of every element),
-// a mesh's faces (walked by trace/shapes/mesh.cpp in POV-Ray's order). Split at the
-// median element along the axis its boxes' centres spread most on, four elements a leaf:
-// the depth is at most log2 of the element count, which the walks' fixed stacks rely on.
+// a mesh's faces (walked by trace/shapes/mesh.cpp in POV-Ray's order). Split where the
+// surface-area cost is least, at the median below a fixed depth (box_tree.cpp), four
+// elements a leaf: the depth stays within the walks' fixed stacks.
 #pragma once
 
 #include <cstdint>
@@ -44,7 +44,7 @@ class BoxTree {
     template <class Meets>
     void collect(Meets&& meets, std::vector<uint32_t>& out) const;
     uint32_t build(const std::vector<Bounds3>& boxes, const std::vector<Point3>& centres,
-                   uint32_t begin, uint32_t end);
+                   uint32_t begin, uint32_t end, int depth);
 
     std::vector<Node> nodes_;
     std::vector<uint32_t> order_;  // element indices, leaf by leaf

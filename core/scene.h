@@ -439,16 +439,20 @@ struct Mesh {
     std::shared_ptr<const MeshData> data;
     std::vector<LayeredTexture> textures;  // per-face textures (mesh2 texture_list)
     // How many of the scene's objects hold this mesh's data (the parser counts them,
-    // left-out objects too, so every process of a render agrees): a mesh held by two or
-    // more is traced whole through its face tree, each copy with its own transform,
-    // instead of as triangles of its own.
+    // left-out objects too, so every process of a render agrees). A mesh whose copies
+    // would make more than kInstancedTriangles triangles is traced whole through its face
+    // tree, each copy with its own transform; fewer are split into triangles of their own
+    // (their rays are cheaper that way, and their set-up small).
     uint32_t copies = 1;
+    static constexpr uint64_t kInstancedTriangles = 65536;
     // `hierarchy` inside the mesh's own braces (POV-Ray builds the mesh's box tree after
     // them): without the tree, every crossing is reported, even without inside_vector.
     bool hierarchy = true;
     const MeshData* operator->() const { return data.get(); }
     const MeshData& operator*() const { return *data; }
-    bool instanced() const { return copies > 1; }
+    bool instanced() const {
+        return copies > 1 && uint64_t(copies) * data->faces.size() > kInstancedTriangles;
+    }
 };
 
 // prism: closed 2-D curves in (x, z) swept along y from height1 to height2, straight

@@ -1,4 +1,5 @@
-// One mesh2, copied: a copy is traced whole through its face tree in its own space
+// Two mesh2s, each copied 400 times and more (67,200 triangles and more: enough to
+// share the mesh, Mesh::instanced): a copy is traced whole through its face tree in its own space
 // (smooth normals, uv coordinates, per-face textures moved by the copy's transform),
 // turned, scaled unevenly, mirrored, uv-mapped, glass and mirror-like, with shadows.
 #version 3.7;
@@ -203,3 +204,12 @@ object { Plain pigment { color rgbf <0.9, 1, 0.9, 0.85> } interior { ior 1.3 }
          scale <0.9, 0.6, 0.9> translate <-1.5, -0.5, -1.8> }
 object { Plain pigment { color rgb 0.5 } finish { reflection 0.4 }
          scale 0.7 rotate x * 70 translate <1.2, -0.4, -1.5> }
+// Fields of small copies at the back: 400 of each mesh.
+#declare I = 0;
+#while (I < 400)
+  object { Plain pigment { color rgb <0.3 + mod(I, 7) / 10, 0.5, 0.9 - mod(I, 5) / 10> }
+           scale 0.12 translate <-6 + mod(I, 40) * 0.3, -1.08, 4 + div(I, 40) * 0.3> }
+  object { Tiled scale <0.1, 0.2, 0.1> rotate y * I
+           translate <-6 + mod(I, 40) * 0.3, -1.0, 7.5 + div(I, 40) * 0.3> }
+  #declare I = I + 1;
+#end

@@ -149,6 +149,25 @@ TEST(ShapeMesh, TreeWalksEqualTheWalkOverEveryFace) {
                                  << "mesh " << mesh << " ray " << ray);
                     expect_same(got, want);
                     hits += want.size();
+                    if (c || !tree) continue;
+                    // A closest-hit query gets the walk's nearest kept crossing (the
+                    // first of equal ones), a shadow query whether there is one.
+                    LocalRay nearest = r;
+                    nearest.nearest_only = true;
+                    const ShapeHit* first = nullptr;
+                    for (const ShapeHit& h : want)
+                        if (!first || h.t < first->t) first = &h;
+                    ShapeHits one;
+                    shape_hits(m, nearest, nullptr, one);
+                    ASSERT_EQ(one.size(), first ? 1u : 0u);
+                    if (first) {
+                        EXPECT_EQ(one[0].t, first->t);
+                        EXPECT_EQ(one[0].face, first->face);
+                    }
+                    nearest.any_crossing = true;
+                    one.clear();
+                    shape_hits(m, nearest, nullptr, one);
+                    EXPECT_EQ(one.size(), first ? 1u : 0u);
                 }
             }
         }
@@ -198,9 +217,18 @@ TEST(ShapeMesh, CopiesShareOneFaceTree) {
     const Soup soup = make_soup(rng, 50);
     const Mesh a = soup.mesh(), b = soup.mesh();
     EXPECT_EQ(&a->tree(), &b->tree());
-    // Four faces a leaf, median splits: 51 faces in 16 leaves, 31 nodes.
-    EXPECT_EQ(a->tree().nodes().size(), 31u);
-    EXPECT_EQ(a->tree().order().size(), 51u);
+    // Every face in one leaf of at most four; a binary tree (2 leaves - 1 nodes).
+    std::vector<int> seen(51, 0);
+    size_t leaves = 0;
+    for (const BoxTree::Node& n : a->tree().nodes()) {
+        if (n.count == 0) continue;
+        ++leaves;
+        EXPECT_LE(n.count, 4u);
+        for (uint32_t i = n.first; i < n.first + n.count; ++i)
+            ++seen[a->tree().order()[i]];
+    }
+    EXPECT_EQ(a->tree().nodes().size(), 2 * leaves - 1);
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), 51);
 }
 
 }  // namespace

@@ -164,6 +164,80 @@ void nearest_walk_hits(const Mesh& m, const LocalRay& r, const Vector3& unit,
         }
     }
 }
+// The nearest crossing the walk above keeps, in the world range the query asks for
+// (LocalRay::nearest_only: a mesh outside CSG and clips, met by a closest-hit or shadow
+// query). Every face the walk keeps ahead of the nearest starts its box no later than
+// that crossing, so the walk's stop rule never drops it: the nearest kept crossing is
+// the nearest crossing whose float box the ray enters. Found depth first, nearest box
+// first, boxes beyond the best crossing so far left out; a shadow query stops at its
+// first crossing in range. Ties go to the crossing the walk meets first (the earlier
+// box start, then the lower face index).
+void nearest_crossing(const Mesh& m, const LocalRay& r, const Vector3& unit,
+                      ShapeHits& out) {
+    const BoxTree& tree = m->tree();
+    if (tree.empty()) return;
+    const TreeRay ray(r.origin, unit);
+    const PovRay box_ray(r.origin, unit);
+    const auto& nodes = tree.nodes();
+    const auto& order = tree.order();
+    struct Best {
+        Real t = kInfinity, entry = kInfinity;
+        uint32_t face = ~0u;
+    } best;
+    const Real lo = std::max(r.want_lo, r.restart), hi = r.want_hi;
+    struct Pending {
+        uint32_t node;
+        Real entry;
+    };
+    Pending stack[72];
+    int size = 0;
+    Real entry;
+    if (ray.meets(nodes[0], entry)) stack[size++] = {0, entry};
+    while (size > 0) {
+        const Pending p = stack[--size];
+        if (p.entry > best.t) continue;
+        const BoxTree::Node& n = nodes[p.node];
+        if (n.count == 0) {
+            Real e1, e2;
+            const bool m1 = ray.meets(nodes[p.node + 1], e1),
+                       m2 = ray.meets(nodes[n.first], e2);
+            // The nearer child on top.
+            if (m1 && m2 && e1 < e2) {
+                stack[size++] = {n.first, e2};
+                stack[size++] = {p.node + 1, e1};
+            } else {
+                if (m1) stack[size++] = {p.node + 1, e1};
+                if (m2) stack[size++] = {n.first, e2};
+            }
+            continue;
+        }
+        for (uint32_t i = n.first; i < n.first + n.count; ++i) {
+            const uint32_t fi = order[i];
+            Point3 pts[3];
+            mesh_face_corners(m, m->faces[fi], pts);
+            Crossings cs;
+            intersect_triangle(pts, r.origin, unit, cs);
+            if (!cs.n) continue;
+            const Real t = cs.c[0].t, world_t = t / r.length;
+            if (!(world_t > r.restart) || world_t < lo || world_t >= hi || t > best.t)
+                continue;
+            Bounds3 box;
+            for (const Point3& q : pts) box.extend(q);
+            Real box_entry = 0;
+            if (!slab_tree_entry(pov_bbox(box), box_ray, box_entry)) continue;
+            if (t == best.t &&
+                (box_entry > best.entry || (box_entry == best.entry && fi > best.face)))
+                continue;
+            best = {t, box_entry, fi};
+            if (r.any_crossing) {
+                size = 0;
+                break;
+            }
+        }
+    }
+    if (best.face != ~0u)
+        out.push_back({best.t / r.length, r.origin + unit * best.t, int(best.face)});
+}
 }  // namespace
 
 bool mesh_as_triangles(const Object& o) {
@@ -176,7 +250,10 @@ bool mesh_stops_at_nearest(const Mesh& m) { return m.hierarchy && !has_inside(m)
 void shape_hits(const Mesh& m, const LocalRay& r, const ShapeClip* clip, ShapeHits& out) {
     // Divided (not multiplied by the reciprocal) as meshes in CSG always were.
     const Vector3 dn = r.direction / r.length;
-    if (mesh_stops_at_nearest(m)) return nearest_walk_hits(m, r, dn, clip, out);
+    if (mesh_stops_at_nearest(m)) {
+        if (r.nearest_only && !clip) return nearest_crossing(m, r, dn, out);
+        return nearest_walk_hits(m, r, dn, clip, out);
+    }
     const BoxTree& tree = m->tree();
     if (tree.empty()) return;
     // Every crossing, in face order.
