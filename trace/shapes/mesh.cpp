@@ -52,6 +52,17 @@ struct TreeRay {
     }
 };
 
+// Where the unit ray from `o` crosses face `fi` (its corners, single precision, in `p`).
+bool face_crossing(const Mesh& m, uint32_t fi, const Point3& o, const Vector3& unit,
+                   Point3 (&p)[3], Real& t) {
+    mesh_face_corners(m, m->faces[fi], p);
+    Crossings cs;
+    intersect_triangle(p, o, unit, cs);
+    if (!cs.n) return false;
+    t = cs.c[0].t;
+    return true;
+}
+
 // Walks the faces whose boxes the ray may meet, depth first, calling face(index).
 template <class Face>
 void walk_faces(const BoxTree& tree, const TreeRay& ray, Face&& face) {
@@ -148,18 +159,18 @@ void nearest_walk_hits(const Mesh& m, const LocalRay& r, const Vector3& unit,
         for (uint32_t i = n.first; i < n.first + n.count; ++i) {
             const uint32_t fi = order[i];
             Point3 p[3];
-            mesh_face_corners(m, m->faces[fi], p);
-            Crossings cs;
-            intersect_triangle(p, r.origin, unit, cs);
+            Real t;
             // Behind where POV-Ray's ray starts: not met (the boxes' order is the same
             // from there).
-            if (!cs.n || !(cs.c[0].t / r.length > r.restart)) continue;
+            if (!face_crossing(m, fi, r.origin, unit, p, t) ||
+                !(t / r.length > r.restart))
+                continue;
             Bounds3 box;
             for (const Point3& q : p) box.extend(q);
             Real entry = 0;
             // A box the float test misses is never entered, as in POV-Ray.
             if (!slab_tree_entry(pov_bbox(box), box_ray, entry)) continue;
-            heap.push_back({entry, cs.c[0].t, fi, true});
+            heap.push_back({entry, t, fi, true});
             std::push_heap(heap.begin(), heap.end());
         }
     }
@@ -214,11 +225,9 @@ void nearest_crossing(const Mesh& m, const LocalRay& r, const Vector3& unit,
         for (uint32_t i = n.first; i < n.first + n.count; ++i) {
             const uint32_t fi = order[i];
             Point3 pts[3];
-            mesh_face_corners(m, m->faces[fi], pts);
-            Crossings cs;
-            intersect_triangle(pts, r.origin, unit, cs);
-            if (!cs.n) continue;
-            const Real t = cs.c[0].t, world_t = t / r.length;
+            Real t;
+            if (!face_crossing(m, fi, r.origin, unit, pts, t)) continue;
+            const Real world_t = t / r.length;
             if (!(world_t > r.restart) || world_t < lo || world_t >= hi || t > best.t)
                 continue;
             Bounds3 box;
