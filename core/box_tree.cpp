@@ -128,30 +128,10 @@ uint32_t BoxTree::build(const std::vector<Bounds3>& boxes,
     return index;
 }
 
-template <class Meets>
-void BoxTree::collect(Meets&& meets, std::vector<uint32_t>& out) const {
-    if (nodes_.empty()) return;
-    uint32_t stack[64];
-    int size = 0;
-    stack[size++] = 0;
-    while (size > 0) {
-        const uint32_t index = stack[--size];
-        const Node& n = nodes_[index];
-        if (!meets(n)) continue;
-        if (n.count > 0) {
-            out.insert(out.end(), order_.begin() + n.first,
-                       order_.begin() + n.first + n.count);
-            continue;
-        }
-        stack[size++] = n.first;
-        stack[size++] = index + 1;
-    }
-}
-
 void BoxTree::line_candidates(const Point3& p, const Vector3& d,
                               std::vector<uint32_t>& out) const {
     const Real inv[3] = {1.0 / d.x, 1.0 / d.y, 1.0 / d.z};
-    collect(
+    walk(
         [&](const Node& n) {
             Real lo = -kInfinity, hi = kInfinity;
             for (int a = 0; a < 3; ++a) {
@@ -167,16 +147,16 @@ void BoxTree::line_candidates(const Point3& p, const Vector3& d,
             }
             return lo <= hi;
         },
-        out);
+        [&](uint32_t e) { out.push_back(e); });
 }
 
 void BoxTree::point_candidates(const Point3& p, std::vector<uint32_t>& out) const {
-    collect(
+    walk(
         [&](const Node& n) {
             return !(p.x < n.lo[0] || p.x > n.hi[0] || p.y < n.lo[1] || p.y > n.hi[1] ||
                      p.z < n.lo[2] || p.z > n.hi[2]);
         },
-        out);
+        [&](uint32_t e) { out.push_back(e); });
 }
 
 }  // namespace povwall

@@ -39,10 +39,28 @@ class BoxTree {
     // Appends the indices of the elements whose box holds p, in no particular order.
     void point_candidates(const Point3& p, std::vector<uint32_t>& out) const;
 
+    // Calls element(index) for each element of the leaves reached, depth first, through
+    // the nodes meets(node) accepts. The depth stays under 64 (box_tree.cpp).
+    template <class Meets, class Element>
+    void walk(Meets&& meets, Element&& element) const {
+        if (nodes_.empty()) return;
+        uint32_t stack[64];
+        int size = 0;
+        stack[size++] = 0;
+        while (size > 0) {
+            const uint32_t index = stack[--size];
+            const Node& n = nodes_[index];
+            if (!meets(n)) continue;
+            if (n.count > 0) {
+                for (uint32_t i = n.first; i < n.first + n.count; ++i) element(order_[i]);
+                continue;
+            }
+            stack[size++] = n.first;
+            stack[size++] = index + 1;
+        }
+    }
+
   private:
-    // Appends the elements of the leaves reached through nodes `meets` accepts.
-    template <class Meets>
-    void collect(Meets&& meets, std::vector<uint32_t>& out) const;
     uint32_t build(const std::vector<Bounds3>& boxes, const std::vector<Point3>& centres,
                    uint32_t begin, uint32_t end, int depth);
 

@@ -449,7 +449,6 @@ struct Mesh {
     // them): without the tree, every crossing is reported, even without inside_vector.
     bool hierarchy = true;
     const MeshData* operator->() const { return data.get(); }
-    const MeshData& operator*() const { return *data; }
     bool instanced() const {
         return copies > 1 && uint64_t(copies) * data->faces.size() > kInstancedTriangles;
     }

@@ -66,25 +66,12 @@ bool face_crossing(const Mesh& m, uint32_t fi, const Point3& o, const Vector3& u
 // Walks the faces whose boxes the ray may meet, depth first, calling face(index).
 template <class Face>
 void walk_faces(const BoxTree& tree, const TreeRay& ray, Face&& face) {
-    if (tree.empty()) return;
-    // Median splits: the depth is at most log2 of 2^32 faces.
-    uint32_t stack[72];
-    int size = 0;
-    stack[size++] = 0;
-    const auto& nodes = tree.nodes();
-    const auto& order = tree.order();
-    while (size > 0) {
-        const uint32_t index = stack[--size];
-        const BoxTree::Node& n = nodes[index];
-        Real entry;
-        if (!ray.meets(n, entry)) continue;
-        if (n.count > 0) {
-            for (uint32_t i = n.first; i < n.first + n.count; ++i) face(order[i]);
-            continue;
-        }
-        stack[size++] = n.first;
-        stack[size++] = index + 1;
-    }
+    tree.walk(
+        [&](const BoxTree::Node& n) {
+            Real entry;
+            return ray.meets(n, entry);
+        },
+        face);
 }
 
 // POV-Ray walks a mesh's box tree nearest box first and, for a mesh without
@@ -200,7 +187,7 @@ void nearest_crossing(const Mesh& m, const LocalRay& r, const Vector3& unit,
         uint32_t node;
         Real entry;
     };
-    Pending stack[72];
+    Pending stack[64];  // the tree's depth stays under 64 (core/box_tree.cpp)
     int size = 0;
     Real entry;
     if (ray.meets(nodes[0], entry)) stack[size++] = {0, entry};
@@ -270,11 +257,10 @@ void shape_hits(const Mesh& m, const LocalRay& r, const ShapeClip* clip, ShapeHi
     crossed.clear();
     walk_faces(tree, TreeRay(r.origin, dn), [&](uint32_t fi) {
         Point3 p[3];
-        mesh_face_corners(m, m->faces[fi], p);
-        Crossings cs;
-        intersect_triangle(p, r.origin, dn, cs);
-        if (cs.n && (!clip || clip->keeps(clip->context, cs.c[0].t / r.length)))
-            crossed.push_back({fi, cs.c[0].t});
+        Real t;
+        if (face_crossing(m, fi, r.origin, dn, p, t) &&
+            (!clip || clip->keeps(clip->context, t / r.length)))
+            crossed.push_back({fi, t});
     });
     std::sort(crossed.begin(), crossed.end());
     for (const auto& [fi, t] : crossed)
@@ -311,10 +297,8 @@ bool shape_inside(const Mesh& m, const Point3& q) {
     int crossed = 0;
     walk_faces(tree, TreeRay(q, dir), [&](uint32_t fi) {
         Point3 p[3];
-        mesh_face_corners(m, m->faces[fi], p);
-        Crossings cs;
-        intersect_triangle(p, q, dir, cs);
-        crossed += cs.n;
+        Real t;
+        crossed += face_crossing(m, fi, q, dir, p, t);
     });
     return crossed % 2 == 1;
 }
