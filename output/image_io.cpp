@@ -13,8 +13,11 @@
 #include <mutex>
 #include <random>
 
+#include "output/decoded_image.h"
 #include "output/image_backend.h"
+#include "output/jpeg_reader.h"
 #include "output/palette.h"
+#include "output/png_reader.h"
 #include "output/png_writer.h"
 #include "output/ppm_writer.h"
 #include "output/radiance_rgbe.h"
@@ -258,13 +261,37 @@ float round_to_half(float f) {
     return std::copysign(float(std::nearbyint(double(a) / step) * step), f);
 }
 
-// The file as OpenImageIO reads it.
-StoredImage read_with_backend(const std::string& path) {
-    int width = 0, height = 0, nc = 0;
-    std::vector<float> pixels;
-    ImageFileInfo info;
-    std::string err = backend().read(path, width, height, nc, pixels, info);
+}  // namespace
+
+DecodedImage decode_with_open_image_io(const std::string& path) {
+    DecodedImage decoded;
+    const std::string err =
+        backend().read(path, decoded.width, decoded.height, decoded.channels,
+                       decoded.samples, decoded.info);
     if (!err.empty()) throw ImageIoError("cannot read '" + path + "': " + err);
+    return decoded;
+}
+
+DecodedImage decode_image_file(const std::string& path) {
+    DecodedImage decoded;
+    std::string err;
+    DirectRead direct = DirectRead::NotMine;
+    if (is_png_file(path))
+        direct = read_png(path, decoded, err);
+    else if (is_jpeg_file(path))
+        direct = read_jpeg(path, decoded, err);
+    if (direct == DirectRead::Failed)
+        throw ImageIoError("cannot read '" + path + "': " + err);
+    return direct == DirectRead::Done ? decoded : decode_with_open_image_io(path);
+}
+
+namespace {
+
+StoredImage read_with_backend(const std::string& path) {
+    const DecodedImage decoded = decode_image_file(path);
+    const int width = decoded.width, height = decoded.height, nc = decoded.channels;
+    const std::vector<float>& pixels = decoded.samples;
+    const ImageFileInfo& info = decoded.info;
     Image img(width, height);
     for (size_t i = 0; i < size_t(width) * height; ++i) {
         // Grey (1 channel) and grey+alpha (2) files spread their grey over RGB.

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/image.h"
+#include "output/decoded_image.h"
 
 namespace povwall::output {
 
@@ -30,6 +31,12 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
 // write_image() in progress, so an interrupted write leaves nothing behind. Returns true
 // when there was one.
 bool remove_partial_output() noexcept;
+
+// An image file's samples as stored: PNG and JPEG read directly (output/png_reader.h,
+// output/jpeg_reader.h), every other format by OpenImageIO's module; throws ImageIoError.
+DecodedImage decode_image_file(const std::string& path);
+// The same through OpenImageIO whatever the format (what the direct readers must equal).
+DecodedImage decode_with_open_image_io(const std::string& path);
 
 // Reads an image as stored (encoded values scaled to 0..1), RGBA; throws ImageIoError.
 Image read_image(const std::string& path);

@@ -159,6 +159,29 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         }
         // Decoded values are re-encoded in the working gamma (image_map only).
         const bool encode_working = correct && !raw && working != 1.0f;
+        auto decode = [&](float v) {
+            v = correct ? file.decode(v) : v;
+            if (encode_working && v > 0) v = float(std::pow(double(v), 1.0 / working));
+            return v;
+        };
+        // The samples of an 8- or 16-bit file are k * (1 / (2^bits - 1)): each value is
+        // decoded once (a 4096x2048 texture made 25 M calls of pow), and a sample not of
+        // that form is decoded itself.
+        std::vector<float> decoded;
+        float step = 0;
+        if (!stored.float_data && (stored.bits == 8 || stored.bits == 16)) {
+            const int top = (1 << stored.bits) - 1;
+            step = 1.0f / float(top);
+            decoded.resize(size_t(top) + 1);
+            for (int k = 0; k <= top; ++k) decoded[size_t(k)] = decode(float(k) * step);
+        }
+        auto decode_sample = [&](float v) {
+            if (!decoded.empty() && v >= 0 && v <= 1) {
+                const size_t k = size_t(v * float(decoded.size() - 1) + 0.5f);
+                if (float(k) * step == v) return decoded[k];
+            }
+            return decode(v);
+        };
         auto px = std::make_shared<ImagePixels>();
         px->width = stored.pixels.width;
         px->height = stored.pixels.height;
@@ -166,12 +189,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         for (size_t i = 0; i < size_t(px->width) * size_t(px->height); ++i) {
             const float* s = &stored.pixels.rgba[i * 4];
             float* d = &px->rgbft[i * 5];
-            for (int c = 0; c < 3; ++c) {
-                float v = correct ? file.decode(s[c]) : s[c];
-                if (encode_working && v > 0)
-                    v = float(std::pow(double(v), 1.0 / working));
-                d[c] = v;
-            }
+            for (int c = 0; c < 3; ++c) d[c] = decode_sample(s[c]);
             d[3] = 0;
             d[4] = stored.has_alpha ? 1.0f - s[3] : 0.0f;
         }

@@ -14,6 +14,7 @@
 #include "output/diff.h"
 #include "output/html_report.h"
 #include "output/image_io.h"
+#include "tests/output/open_image_io_loaded.h"
 
 namespace povwall::output {
 namespace {
@@ -179,15 +180,6 @@ TEST(WriteImage, PngDeclaresItsEncodingAsPovRayDoes) {
     write_image(img, legacy.string(), e);
     EXPECT_EQ(png_chunks(legacy), (std::vector<std::string>{"IHDR", "IDAT", "IEND"}));
     EXPECT_FLOAT_EQ(read_image(legacy.string()).pixel(1, 1)[2] * 255.0f, 128.0f);
-}
-
-// Whether this process has mapped OpenImageIO's library.
-bool open_image_io_loaded() {
-    std::ifstream maps("/proc/self/maps");
-    std::string line;
-    while (std::getline(maps, line))
-        if (line.find("libOpenImageIO") != std::string::npos) return true;
-    return false;
 }
 
 // PNG, the format nearly every render writes, must not load the OpenImageIO module (some
