@@ -1,8 +1,8 @@
 // PNG files written with libpng directly. PNG is what nearly every render writes
 // (POV-Ray's default +FN), and libpng is one small library where OpenImageIO's module
 // pulls in some 260 (0.2 s of relocation per process, a fifth of a 600x600 render on two
-// cores). Every other format, and every read, goes through OpenImageIO
-// (output/image_backend.h).
+// cores). Every other format goes through OpenImageIO (output/image_backend.h); reads of
+// PNG and JPEG through output/png_reader.h and output/jpeg_reader.h.
 #pragma once
 
 #include <cstdint>
