@@ -63,7 +63,9 @@ double evaluate_function(const FunctionProgram& f, const double* args,
     using Op = FunctionProgram::Op;
     double stack[kMaxFunctionStack];
     int top = 0;  // stack[top - 1] is the top
-    for (const FunctionProgram::Instruction& in : f.code) {
+    const size_t end = f.code.size();
+    for (size_t next = 0; next < end;) {
+        const FunctionProgram::Instruction& in = f.code[next++];
         switch (in.op) {
             case Op::Constant:
                 stack[top++] = f.constants[in.index];
@@ -84,21 +86,15 @@ double evaluate_function(const FunctionProgram& f, const double* args,
                 ++top;
                 break;
             }
-            case Op::Select3: {
-                top -= 3;
-                stack[top] = stack[top] < 0 ? stack[top + 1] : stack[top + 2];
-                ++top;
+            case Op::Branch: {
+                const double a = stack[--top];
+                const std::array<uint32_t, 3>& to = f.branches[in.index];
+                next = a < 0 ? to[0] : a == 0 ? to[1] : to[2];
                 break;
             }
-            case Op::Select4: {
-                top -= 4;
-                const double a = stack[top];
-                stack[top] = a < 0    ? stack[top + 1]
-                             : a == 0 ? stack[top + 2]
-                                      : stack[top + 3];
-                ++top;
+            case Op::Jump:
+                next = in.index;
                 break;
-            }
             case Op::Call: {
                 const FunctionProgram& callee = *f.callees[in.index];
                 top -= callee.parameter_count();

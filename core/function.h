@@ -3,6 +3,7 @@
 // pattern while rendering. Plain data; no allocation and no virtual call per evaluation.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -68,9 +69,13 @@ struct FunctionProgram {
         Int,
         Div,  // C's cast to a 32-bit int (of the operand, of a / b)
         Min,
-        Max,                 // two operands; min takes a NaN, max keeps the running value
-        Select3,             // select(a, b, c): a < 0 ? b : c
-        Select4,             // select(a, b, c, d): a < 0 ? b : a == 0 ? c : d
+        Max,  // two operands; min takes a NaN, max keeps the running value
+        // select(a, b, c[, d]) as POV-Ray compiles it: only the chosen branch runs.
+        // Branch pops a and goes to branches[index][a < 0 ? 0 : a == 0 ? 1 : 2] (an
+        // unordered a, NaN, to 2; a three-argument select's 1 and 2 are the same);
+        // each branch but the last ends in a Jump to the code after the select.
+        Branch,
+        Jump,                // to code[index]
         Call,                // callees[index] with its parameter count of operands
         SplineComponent,     // splines[index] at the operand, component `component`
         Pattern,             // patterns[index] at the three operands
@@ -89,6 +94,7 @@ struct FunctionProgram {
     };
     std::vector<Instruction> code;
     std::vector<double> constants;
+    std::vector<std::array<uint32_t, 3>> branches;  // Branch's targets
     std::vector<const FloatBuiltin*> builtins;
     std::vector<std::string> parameter_names;  // x, y, z unless the scene names them
     std::vector<std::shared_ptr<const FunctionProgram>> callees;

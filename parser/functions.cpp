@@ -142,6 +142,34 @@ class FunctionCompiler {
     }
 
     // Comma-separated arguments inside parentheses; their count.
+    // select(a, b, c[, d]): a, then a Branch to the code of b, c or d
+    // (FunctionProgram::Op).
+    void select(const Token& name) {
+        in_.expect_punct('(', "after ", name.text);
+        expression_level();
+        int n = 1;
+        const size_t table = f_.branches.size();
+        f_.branches.push_back({});
+        emit(Op::Branch, uint32_t(table), 0, 1, 0);
+        const int base = depth_;
+        std::vector<size_t> jumps;  // the ends of the branches but the last
+        for (;;) {
+            if (in_.accept_punct(')')) break;
+            in_.expect_punct(',', "between the arguments of ", name.text);
+            if (n > 1) {
+                jumps.push_back(f_.code.size());
+                emit(Op::Jump, 0, 0, 0, 0);
+            }
+            if (n <= 3) f_.branches[table][size_t(n - 1)] = uint32_t(f_.code.size());
+            depth_ = base;
+            expression_level();
+            ++n;
+        }
+        if (n != 3 && n != 4)
+            in_.error(name, "'select' takes 3 or 4 arguments, not " + std::to_string(n));
+        if (n == 3) f_.branches[table][2] = f_.branches[table][1];
+        for (size_t at : jumps) f_.code[at].index = uint32_t(f_.code.size());
+    }
     int arguments(const Token& name) {
         in_.expect_punct('(', "after ", name.text);
         int n = 0;
@@ -302,12 +330,7 @@ class FunctionCompiler {
                 in_.error(t, "'" + std::string(w) + "' takes two or more arguments");
             return;
         }
-        if (w == "select") {
-            const int n = arguments(t);
-            if (n != 3 && n != 4)
-                in_.error(t, "'select' takes 3 or 4 arguments, not " + std::to_string(n));
-            return emit(n == 3 ? Op::Select3 : Op::Select4, 0, 0, n);
-        }
+        if (w == "select") return select(t);
         if (w == "int" || w == "div") {
             argument_count(t, arguments(t), w == "int" ? 1 : 2);
             return emit(w == "int" ? Op::Int : Op::Div, 0, 0, w == "int" ? 1 : 2);

@@ -509,6 +509,24 @@ TEST(Functions, LocatedErrorsAndTolerance) {
                        "#declare A = F(0, 0, 0);"),
               "test.pov:2:14: error: sum/prod in 'F' ran more than 10000000 iterations "
               "(--max-loop-iterations)");
+    // select runs only the branch it picks, as POV-Ray's compiled jumps: the runaway
+    // loop in the other branch is never entered.
+    std::string picked;
+    parse("#declare F = function(a) { select(a, sum(i, 0, 1e18, i), 5) }\n"
+          "#declare G = function(a) { select(a, 1, select(a - 1, 2, 3, sum(i, 0, 1e18, i)),"
+          " prod(i, 1, 4, i)) + select(a, 10, 20) }\n"
+          "#debug concat(str(F(1), 0, 0), \" \", str(G(-1), 0, 0), \" \", str(G(0), 0, 0), "
+          "\" \", str(G(1), 0, 0))",
+          &picked);
+    EXPECT_EQ(picked, "5 11 22 44");
+    EXPECT_EQ(error_of("#declare F = function(a) { select(a, sum(i, 0, 1e18, i), 5) }\n"
+                       "#declare A = F(-1);"),
+              "test.pov:2:14: error: sum/prod in 'F' ran more than 10000000 iterations "
+              "(--max-loop-iterations)");
+    EXPECT_EQ(error_of("#declare F = function { select(x, 1) }"),
+              "test.pov:1:25: error: 'select' takes 3 or 4 arguments, not 2");
+    EXPECT_EQ(error_of("#declare F = function { select(x, 1, 2, 3, 4) }"),
+              "test.pov:1:25: error: 'select' takes 3 or 4 arguments, not 5");
     std::string chain = "#declare F0 = function { x }\n";
     for (int i = 1; i < 1100; ++i)
         chain += "#declare F" + std::to_string(i) + " = function { F" +
