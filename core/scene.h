@@ -946,6 +946,10 @@ struct Light {
     uint32_t light_group = 0;
     std::optional<AreaLight> area;
     std::vector<Object> looks_like;  // rendered as an object with no shadow
+    // `projected_through { }`: the light reaches a point only through this object, which
+    // is not part of the scene (trace/light_masks.h); moved by the light's transforms
+    // written after it. Shared between copies of the light (copied when moved).
+    std::shared_ptr<const Object> projected_through;
     // The light's `photons { refraction reflection }` (its PH_RFR/RFL flags).
     PhotonSwitch photon_refraction = PhotonSwitch::Unset;
     PhotonSwitch photon_reflection = PhotonSwitch::Unset;

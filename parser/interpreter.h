@@ -513,6 +513,8 @@ class Interpreter {
     bool default_pigment_given_ = false;
     // An area light with media_attenuation on (the atmosphere's media are refused then).
     bool area_light_attenuated_by_media_ = false;
+    // The first light with projected_through (photons are refused with it).
+    std::optional<Token> projected_through_at_;
     bool version_set_ = false;
     GammaMode gamma_mode_ = GammaMode::None;  // as the parse has it so far
     bool noise_generator_given_ = false;

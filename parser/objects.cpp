@@ -135,6 +135,11 @@ void Interpreter::transform_light(Light& l, const Transform& t,
         l.area->axis2 = t.vector(l.area->axis2);
     }
     for (Object& o : l.looks_like) apply_transform(o, t, step);
+    if (l.projected_through) {
+        auto moved = std::make_shared<Object>(*l.projected_through);
+        apply_transform(*moved, t, step);
+        l.projected_through = std::move(moved);
+    }
 }
 
 namespace {

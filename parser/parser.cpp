@@ -146,6 +146,9 @@ Scene Interpreter::run(int root_file) {
     settle_isosurfaces();
     settle_mesh_copies();
     check_radiosity();
+    // POV-Ray shoots a projected_through light's photons only through its object.
+    if (projected_through_at_ && scene_.settings.photons)
+        unsupported(*projected_through_at_, "projected_through with photons");
     // A camera normal's patterns read the final settings too.
     scene_.camera.normal_noise_generator = scene_.settings.noise_generator;
     scene_.camera.normal_number_of_waves = scene_.settings.number_of_waves;
@@ -197,8 +200,14 @@ void Interpreter::settle_isosurfaces() {
             for (Object& c : o.bounded_by.edit()) self(self, c);
     };
     for (Object& o : scene_.objects) visit(visit, o);
-    for (Light& l : scene_.lights)
+    for (Light& l : scene_.lights) {
         for (Object& o : l.looks_like) visit(visit, o);
+        if (l.projected_through) {
+            auto mask = std::make_shared<Object>(*l.projected_through);
+            visit(visit, *mask);
+            l.projected_through = std::move(mask);
+        }
+    }
 }
 
 Scene parse_scene_file(const std::string& path, const ParseOptions& options) {

@@ -417,6 +417,7 @@ Light Interpreter::parse_light_block() {
     std::optional<bool> illumination;      // area_illumination, when named
     std::optional<Token> illumination_at;  // where it was last turned on
     std::optional<Token> attenuation_at;   // where media_attenuation was turned on
+    std::optional<Token> projected_through_at;
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) break;
@@ -499,7 +500,6 @@ Light Interpreter::parse_light_block() {
             illumination = parse_bool_opt();
             if (*illumination) illumination_at = t;
         } else if (w == "looks_like" || w == "projected_through") {
-            if (w == "projected_through") unsupported(t, w);
             expect_punct('{');
             Token o = next();
             Object obj;
@@ -507,6 +507,20 @@ Light Interpreter::parse_light_block() {
             if (!try_parse_object_or_identifier(o, obj)) expected("an object", o);
             expect_punct('}');
             finish_object(obj);
+            if (w == "projected_through") {
+                // POV-Ray 3.7's Parse_Light_Source and Post_Process: one object, left
+                // where it is written, only ever intersected (no texture, no interior).
+                if (l.projected_through)
+                    error(t, "Only one projected through allowed per light_source.");
+                if (!obj.texture.empty() || obj.interior) {
+                    warn(t, "Projected through objects can not have texture/interior");
+                    obj.texture = {};
+                    obj.interior = HeapOptional<Interior>();
+                }
+                l.projected_through = std::make_shared<const Object>(std::move(obj));
+                projected_through_at = t;
+                continue;
+            }
             obj.no_shadow = true;
             obj.photons.pass_through =
                 true;  // POV-Ray: photons leave the light through it
@@ -532,6 +546,16 @@ Light Interpreter::parse_light_block() {
                         "media_attenuation of an area light with "
                         "atmospheric media");
         area_light_attenuated_by_media_ = true;
+    }
+    // projected_through is tested once per light ray; POV-Ray also tests it per
+    // area-light sample, runs the atmosphere's media past it to the light and shoots
+    // photons only through it: not yet.
+    if (l.projected_through) {
+        const Token& at = projected_through_at ? *projected_through_at : open;
+        if (l.area) unsupported(at, "projected_through on an area_light");
+        if (l.media_attenuation)
+            unsupported(at, "projected_through with media_attenuation");
+        if (!projected_through_at_) projected_through_at_ = at;
     }
     // POV-Ray 3.7 turns area_illumination on for any light, but only an area light uses
     // it as such; on another light it drops the test that leaves a surface facing away

@@ -9,6 +9,7 @@
 #include "octree/spatial_order.h"
 #include "trace/convex_region.h"
 #include "trace/cutaway_textures.h"
+#include "trace/light_masks.h"
 #include "trace/object_inside.h"
 #include "trace/object_placement.h"
 #include "trace/pov_slab_test.h"
@@ -486,6 +487,12 @@ PreparedScene::PreparedScene(const Scene& scene,
 
 void PreparedScene::build(const std::vector<const Object*>& objects) {
     const Scene& scene = scene_;
+    for (const Light& l : scene.lights) {
+        if (l.projected_through) {
+            light_masks_ = std::make_shared<const LightMasks>(scene);
+            break;
+        }
+    }
     env_.noise_generator = scene.settings.noise_generator;
     env_.number_of_waves = scene.settings.number_of_waves;
     env_.quick_colours = plan_.quality.quick_colours();

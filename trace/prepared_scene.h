@@ -190,6 +190,8 @@ struct PrepareOptions {
     RenderProgress* progress = nullptr;
 };
 
+class LightMasks;
+
 class PreparedScene {
   public:
     // `plan`: what the scene leaves out (null: make_render_plan(scene)).
@@ -222,6 +224,9 @@ class PreparedScene {
     void set_radiosity(std::shared_ptr<const radiosity::RadiosityRender> r) {
         radiosity_ = std::move(r);
     }
+    // The lights' projected_through objects (trace/light_masks.h); null when no light
+    // has one.
+    const LightMasks* light_masks() const { return light_masks_.get(); }
     void init_context(RayContext& ctx) const {
         ctx.mailbox.resize(kind_.size());
         ctx.last_blocker.assign(scene_.lights.size(), ~0u);
@@ -353,6 +358,7 @@ class PreparedScene {
     PatternEnv env_;
     bool alpha_background_ = false;
     std::shared_ptr<const PhotonMap> photons_;
+    std::shared_ptr<const LightMasks> light_masks_;
     std::shared_ptr<const radiosity::RadiosityRender> radiosity_;
     std::vector<Material> materials_;  // reserved up front: pointers stay valid
     // Per RayUse: whether any frame object hides from that kind of ray.

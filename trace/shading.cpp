@@ -9,6 +9,7 @@
 
 #include "core/hash_fold.h"
 #include "core/noise.h"
+#include "trace/light_masks.h"
 #include "trace/media.h"
 #include "trace/photon_map.h"
 #include "trace/radiosity/gatherer.h"
@@ -676,6 +677,8 @@ struct ShadingScratch {
     // area_samples[area_range[l].first, area_range[l].second).
     std::vector<LightSample> area_samples;
     std::vector<std::pair<uint32_t, uint32_t>> area_range;
+    // projected_through lights: where their shadow rays stop looking for blockers.
+    std::vector<Real> blockers_end;
     std::vector<std::pair<size_t, Vector3>> reflection_normals;
     std::vector<const Photon*> found_photons;
 };
@@ -770,6 +773,9 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     std::vector<std::pair<uint32_t, uint32_t>>& area_range = scratch.area_range;
     area_samples.clear();
     area_range.assign(nlights, {0, 0});
+    const LightMasks* masks = scene.light_masks();
+    std::vector<Real>& blockers_end = scratch.blockers_end;
+    if (masks) blockers_end.assign(nlights, kInfinity);
 
     Rgb fil(1.0f);
     float trans = 1;
@@ -908,6 +914,11 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     } else {
                         sample_ok[l] = light_at(light, P, ls) ? 1 : 0;
                     }
+                    // projected_through: no light unless through its object, and then
+                    // only what lies before the object shadows (trace/light_masks.h).
+                    if (sample_ok[l] && masks && quality.shadows() &&
+                        !masks->reaches(l, P, ls.dir, ls.distance, blockers_end[l]))
+                        sample_ok[l] = 0;
                     // media_attenuation: fog dims the light along its way (no fog colour
                     // is added to light, as for POV-Ray's shadow test rays).
                     if (sample_ok[l] && light.media_attenuation && !sc.fogs.empty() &&
@@ -1045,6 +1056,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         }
         const LightSample& s = samples[l];
         ChildRay child = shadow_child(ray, P, s, l);
+        if (masks) child.t_max = std::min(child.t_max, blockers_end[l]);
         child.coeff = lit[l];
         child.photon_caustics = photons != nullptr;
         child.area = light.area.has_value();
@@ -1323,12 +1335,18 @@ class SampleLight final : public MediaLightProbe {
             return {};
         }
         to_light = s.dir;
+        Real blockers_end = s.distance;
+        const LightMasks* masks = scene_.light_masks();
+        if (masks && quality.shadows() &&
+            !masks->reaches(l, at, s.dir, s.distance, blockers_end))
+            return {};
         // As for a lit surface: fog dims a light with media_attenuation.
         if (light.media_attenuation && !sc.fogs.empty() && s.distance > 0 &&
             s.distance < kInfinity)
             s.colour *= fog_effect(sc, {at, s.dir}, s.distance).mul;
         if (!quality.shadows()) return s.colour;
         ChildRay child = shadow_child(ray_, at, s, l);
+        child.t_max = std::min(child.t_max, blockers_end);
         child.photon_caustics = photon_caustics_;
         child.area = light.area.has_value() && quality.area_lights();
         child.light_colour = s.colour;

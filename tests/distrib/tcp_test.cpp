@@ -443,6 +443,17 @@ TEST(Tcp, MeshCopiesInEveryModeEqualOneProcess) {
     }
 }
 
+// projected_through (scenes/golden/projected_through.pov, matching POV-Ray in
+// tests/golden): each process tests the light's own object where a point is lit, so every
+// mode gives the one-process image.
+TEST(Tcp, ProjectedThroughInEveryModeEqualsOneProcess) {
+    expect_same_images(std::string(POVWALL_GOLDEN_DIR) + "/projected_through.pov",
+                       "-W 40 -H 30",
+                       {"--mode screen --procs 2", "--boxes 2x2x2",
+                        "--boxes 3x1x2 --procs 2 --results parents",
+                        "--boxes 4x1x1 --procs 4 --results parents"});
+}
+
 // no_image, no_reflection and no_shadow on CSG children and looks_like objects
 // (scenes/golden/csg_flags_*.pov, each matching POV-Ray in tests/golden): a black box
 // keeps whole frame objects and the rays' kinds, so every mode gives the one-process

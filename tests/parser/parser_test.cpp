@@ -700,6 +700,48 @@ light_source {
     EXPECT_NEAR(o.texture[0].pigment.colour.rgb.g, 0.8, 1e-6);
 }
 
+// projected_through (POV-Ray 3.7's Parse_Light_Source and Post_Process): the object
+// stays where it is written, is moved by the light's later transforms (a copy of a
+// declared light moves its own), is not in the scene and loses a texture with a warning.
+TEST(Lights, ProjectedThroughIsTheLightsOwnObject) {
+    std::string messages;
+    Scene s = parse(R"(
+#declare Lamp = light_source { <0, 5, 0> rgb 1
+  projected_through { sphere { <0, 1, 0>, 0.5 pigment { rgb 1 } } } }
+light_source { Lamp translate <2, 0, 0> }
+light_source { Lamp }
+)",
+                    &messages);
+    ASSERT_EQ(s.lights.size(), 2u);
+    EXPECT_TRUE(s.objects.empty());
+    for (size_t l = 0; l < 2; ++l) {
+        ASSERT_TRUE(s.lights[l].projected_through);
+        const Object& o = *s.lights[l].projected_through;
+        const Point3 c = o.transform.point(std::get<Sphere>(o.shape).centre);
+        EXPECT_EQ(c.x, l == 0 ? 2.0 : 0.0);
+        EXPECT_EQ(c.y, 1.0);
+        EXPECT_TRUE(o.texture.empty());
+    }
+    EXPECT_EQ(messages.substr(0, messages.find('\n')),
+              "test.pov:3:3: warning: Projected through objects can not have "
+              "texture/interior");
+    EXPECT_EQ(
+        error_of("light_source { 0 rgb 1 projected_through { sphere { 0, 1 } }\n"
+                 "  projected_through { sphere { 0, 1 } } }"),
+        "test.pov:2:3: error: Only one projected through allowed per light_source.");
+    // What POV-Ray does beyond one test per light ray is refused where it is asked for.
+    EXPECT_EQ(error_of("light_source { 0 rgb 1 projected_through { sphere { 0, 1 } }\n"
+                       "  area_light x, z, 2, 2 }"),
+              "test.pov:1:24: error: unsupported: projected_through on an area_light");
+    EXPECT_EQ(
+        error_of("light_source { 0 rgb 1 media_attenuation on\n"
+                 "  projected_through { sphere { 0, 1 } } }"),
+        "test.pov:2:3: error: unsupported: projected_through with media_attenuation");
+    EXPECT_EQ(error_of("light_source { 0 rgb 1 projected_through { sphere { 0, 1 } } }\n"
+                       "global_settings { photons { spacing 0.1 } }"),
+              "test.pov:1:24: error: unsupported: projected_through with photons");
+}
+
 }  // namespace
 }  // namespace povwall::parser
 
