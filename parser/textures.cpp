@@ -720,8 +720,9 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                 }
                 const bool pigments = is_word(peek(), "pigment");
                 int given = 0;
-                for (; given < count; ++given) {
-                    if (given) accept_punct(',');
+                // Each entry takes an optional comma after it, the last one too
+                // (POV-Ray's Parse_Blend_List).
+                for (; given < count; ++given, accept_punct(',')) {
                     const Token& n = peek();
                     if (pigments) {
                         if (!accept_word("pigment")) break;
@@ -901,10 +902,10 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
                 n.list.clear();
                 n.map_values.clear();
                 for (int i = 0; i < count; ++i) {
-                    if (i) accept_punct(',');
                     if (i == 0 && !is_word(peek(), "normal")) break;
                     if (accept_word("normal")) {
                         n.list.push_back(parse_normal_block());
+                        accept_punct(',');  // after each entry, the last one too
                     } else {
                         if (!default_texture_.normal)
                             error(t, "give all " + std::to_string(count) +
@@ -1427,11 +1428,12 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
                     top.map.edit().entries.clear();
                     top.map.edit().values.clear();
                     for (int i = 0; i < count; ++i) {
-                        if (i) accept_punct(',');
-                        if (accept_word("texture"))
+                        if (accept_word("texture")) {
                             top.map.edit().entries.push_back(parse_texture_block());
-                        else
+                            accept_punct(',');  // after each entry, the last one too
+                        } else {
                             top.map.edit().entries.push_back({default_texture_});
+                        }
                         top.map.edit().values.push_back(float(i));
                     }
                     if (object_pattern) expect_punct('}', "to close the object pattern");

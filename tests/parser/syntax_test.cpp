@@ -291,6 +291,32 @@ TEST(Commas, MapsListsSplinesAndDirectives) {
               "test.pov:1:25: error: expected ')' but found ','");
 }
 
+// A list pattern's entries each take an optional comma after them, the last one too
+// (POV-Ray's Parse_Blend_List): exporters and hand-written scenes end lists with one.
+size_t top_layer_map_entries(const Scene& s, size_t object) {
+    const Texture& t = s.objects.at(object).texture.back();
+    return t.map.allocated() ? t.map->entries.size() : 0;
+}
+
+TEST(Commas, AfterTheLastEntryOfAListPattern) {
+    Scene s = parse(
+        "plane { y, 0 pigment { checker rgb 1, rgb <0.8, 0.6, 0.4>, } }\n"
+        "plane { y, 0 pigment { hexagon pigment { rgb 1 }, pigment { rgb 0.5 }, "
+        "pigment { rgb 0.2 }, } }\n"
+        "plane { y, 0 normal { brick normal { bumps }, normal { dents }, 0.4 } }\n"
+        "plane { y, 0 texture { checker texture { pigment { rgb 1 } }, texture { "
+        "pigment { rgb 0 } }, } }\n");
+    ASSERT_EQ(s.objects.size(), 4u);
+    const auto& colours = s.objects[0].texture[0].pigment.maps->list;
+    ASSERT_EQ(colours.size(), 2u);
+    EXPECT_EQ(colours[1].colour.rgb.g, 0.6f);
+    EXPECT_EQ(s.objects[1].texture[0].pigment.maps->list.size(), 3u);
+    ASSERT_TRUE(s.objects[2].texture[0].normal);
+    EXPECT_EQ(s.objects[2].texture[0].normal->list.size(), 2u);
+    EXPECT_EQ(s.objects[2].texture[0].normal->amount, double(0.4f));  // a single
+    EXPECT_EQ(top_layer_map_entries(s, 3), 2u);
+}
+
 // #read and #write: commas between the items optional (the #debug output is POV-Ray
 // 3.7.0.10's for the same scene).
 TEST(Commas, ReadAndWriteArguments) {
