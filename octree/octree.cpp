@@ -41,6 +41,7 @@ struct Task {
     uint32_t node = 0;
     Bounds3 box;
     int depth = 0;
+    uint64_t allowance = 0;  // the references the subtree may add (Builder::build)
     std::vector<uint32_t> ids;
     // Filled by the worker: local node 0 is the task root.
     Octree::NodeArray nodes;
@@ -50,43 +51,48 @@ struct Task {
 
 class Builder {
   public:
-    Builder(const BuildInput& in, const BuildOptions& opt, Real min_cell,
-            uint64_t references, uint64_t budget)
-        : in_(in),
-          opt_(opt),
-          min_cell_(min_cell),
-          references_(references),
-          budget_(budget) {}
+    Builder(const BuildInput& in, const BuildOptions& opt, Real min_cell)
+        : in_(in), opt_(opt), min_cell_(min_cell) {}
 
-    // Builds the subtree of nodes[index] (already allocated) over `ids`. At spawn_depth
-    // the node is handed to `tasks` instead (null: never).
+    // Builds the subtree of nodes[index] (already allocated) over `ids`, adding at most
+    // `allowance` references beyond ids.size() (the reference budget, shared out by each
+    // split to its children in proportion to their references: a subtree never starves
+    // another, and the tree does not depend on the order threads build it in). At
+    // spawn_depth the node is handed to `tasks` instead (null: never).
     void build(Octree::NodeArray& nodes, std::vector<uint32_t>& out, uint32_t index,
-               std::vector<uint32_t>& ids, const Bounds3& box, int depth, int& max_depth,
-               std::vector<Task>* tasks, int spawn_depth) {
+               std::vector<uint32_t>& ids, const Bounds3& box, int depth,
+               uint64_t allowance, int& max_depth, std::vector<Task>* tasks,
+               int spawn_depth) {
         max_depth = std::max(max_depth, depth);
         if (tasks && depth == spawn_depth) {
             Task t;
             t.node = index;
             t.box = box;
             t.depth = depth;
+            t.allowance = allowance;
             t.ids = std::move(ids);
             tasks->push_back(std::move(t));
             return;
         }
         std::array<std::vector<uint32_t>, 8> kids;
-        if (!split(ids, box, depth, kids)) {
+        if (!split(ids, box, depth, allowance, kids)) {
             nodes[index] = Node{uint32_t(out.size()), uint32_t(ids.size())};
             out.insert(out.end(), ids.begin(), ids.end());
             return;
         }
+        size_t total = 0;
+        for (const auto& k : kids) total += k.size();
+        const uint64_t left = allowance - (total - ids.size());
         std::vector<uint32_t>().swap(ids);
         const uint32_t first = uint32_t(nodes.size());
         nodes[index] = Node{first, Octree::kInner};
         nodes.resize(first + 8);
         const Point3 mid = box.centre();
         for (unsigned c = 0; c < 8; ++c) {
+            const uint64_t share =
+                uint64_t(double(left) * double(kids[c].size()) / double(total));
             build(nodes, out, first + c, kids[c], child_box(box, mid, c), depth + 1,
-                  max_depth, tasks, spawn_depth);
+                  share, max_depth, tasks, spawn_depth);
         }
     }
 
@@ -119,7 +125,7 @@ class Builder {
 
     // Distributes `ids` over the 8 children; false: this cell stays a leaf.
     bool split(const std::vector<uint32_t>& ids, const Bounds3& box, int depth,
-               std::array<std::vector<uint32_t>, 8>& kids) {
+               uint64_t allowance, std::array<std::vector<uint32_t>, 8>& kids) {
         const size_t n = ids.size();
         auto cost_of = [&](uint32_t id) {
             return in_.cost.empty() ? Real(1) : Real(in_.cost[id]);
@@ -201,24 +207,17 @@ class Builder {
         const bool pays = split_cost < leaf_cost;
         const bool breaks_even = split_cost < leaf_cost * 1.25 && max_child * 4 <= n * 3;
         if (!pays && !breaks_even) return stay_leaf();
-        // The references the tree would hold after this split, against the budget.
-        const uint64_t added = uint64_t(total - std::min(total, n));
-        uint64_t now = references_.load(std::memory_order_relaxed);
-        do {
-            if (now + added > budget_) {
-                ++budget_leaves_;
-                return stay_leaf();
-            }
-        } while (!references_.compare_exchange_weak(now, now + added,
-                                                    std::memory_order_relaxed));
+        // The references this split adds, against the subtree's share of the budget.
+        if (total > n && uint64_t(total - n) > allowance) {
+            ++budget_leaves_;
+            return stay_leaf();
+        }
         return true;
     }
 
     const BuildInput& in_;
     const BuildOptions& opt_;
     const Real min_cell_;
-    std::atomic<uint64_t> references_;  // references in the tree as built so far
-    const uint64_t budget_;
     std::atomic<uint64_t> exact_tests_{0}, exact_rejected_{0};
     std::atomic<uint64_t> inseparable_{0}, budget_leaves_{0};
 };
@@ -296,7 +295,7 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
     const uint64_t budget =
         uint64_t(std::max(0.0, opt.max_references_per_primitive) * Real(all.size())) +
         opt.reference_slack;
-    Builder builder(input, opt, min_cell, all.size(), budget);
+    Builder builder(input, opt, min_cell);
     nodes_.push_back(Node{});
     int threads =
         opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency());
@@ -305,7 +304,8 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
     int max_depth = 0;
     // 64 subtrees (depth 2) keep a few threads busy despite uneven scenes.
     const int spawn_depth = threads > 1 ? 2 : -1;
-    builder.build(nodes_, ids_, 0, all, bounds_, 0, max_depth,
+    builder.build(nodes_, ids_, 0, all, bounds_, 0,
+                  budget - std::min<uint64_t>(budget, all.size()), max_depth,
                   threads > 1 ? &tasks : nullptr, spawn_depth);
     if (!tasks.empty()) {
         std::atomic<size_t> next{0};
@@ -314,8 +314,8 @@ void Octree::build(const BuildInput& input, const BuildOptions& options) {
                 Task& t = tasks[i];
                 t.nodes.resize(1);
                 t.max_depth = t.depth;
-                builder.build(t.nodes, t.leaf_ids, 0, t.ids, t.box, t.depth, t.max_depth,
-                              nullptr, -1);
+                builder.build(t.nodes, t.leaf_ids, 0, t.ids, t.box, t.depth, t.allowance,
+                              t.max_depth, nullptr, -1);
             }
         };
         std::vector<std::thread> pool;

@@ -47,9 +47,12 @@ struct BuildOptions {
     /// Build threads; 0 = hardware concurrency.
     int threads = 0;
     /// Most references (ids in leaves) the tree may hold: this multiple of the bounded
-    /// primitives plus reference_slack. Where a split would go beyond it the cell stays a
-    /// leaf. A safety net for primitives that cannot be separated (heavy overlap); the
-    /// usual trees hold 1-9 references per primitive.
+    /// primitives plus reference_slack. Each split shares what is left of it out to its
+    /// children in proportion to their references, and a split that would go beyond its
+    /// cell's share leaves the cell a leaf: a crowded region cannot spend the budget of
+    /// the others, and the tree does not depend on the build's threads. A safety net for
+    /// primitives that cannot be separated (heavy overlap); the usual trees hold 1-9
+    /// references per primitive.
     Real max_references_per_primitive = 32;
     /// Added to the budget above, so that small scenes are never cut short.
     uint64_t reference_slack = uint64_t(1) << 16;
