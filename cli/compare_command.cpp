@@ -154,15 +154,19 @@ int run_compare(int argc, char** argv) {
         "options apply, as `povray SCENE.ini` would, before the command line's)");
     // The scene's own .ini first, as a user renders it; the command line's size,
     // folders and switches then win.
+    // POV-Ray's default INI ($POVINI, ./povray.ini, ...) comes before both: POV-Ray reads
+    // it too, from the same working folder.
     auto with_scene_ini = [&](RenderOptions& r) {
-        const std::string ini = no_ini ? "" : scene_ini_file(r.scene);
-        if (ini.empty()) return;
         const RenderOptions given = r;
-        apply_ini_file(ini, r);
-        r.scene = given.scene;  // whatever its Input_File_Name says
+        apply_default_ini(r);
+        const std::string ini = no_ini ? "" : scene_ini_file(r.scene);
+        if (!ini.empty()) {
+            apply_ini_file(ini, r);
+            std::fprintf(stderr, "povwall: options from %s\n", ini.c_str());
+        }
+        r.scene = given.scene;  // whatever an Input_File_Name says
         if (app.count("-W")) r.width = given.width;
         if (app.count("-H")) r.height = given.height;
-        std::fprintf(stderr, "povwall: options from %s\n", ini.c_str());
     };
     std::vector<std::string> pov_switches;
     if (int code =

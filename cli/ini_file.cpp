@@ -610,6 +610,25 @@ void apply_ini_file(const std::string& spec, RenderOptions& o, std::ostream* war
     IniReader(o, warnings, depth).read(in, found, section);
 }
 
+std::string default_ini_file() {
+    namespace fs = std::filesystem;
+    std::vector<fs::path> tries;
+    if (const char* env = std::getenv("POVINI"); env && *env) tries.emplace_back(env);
+    tries.emplace_back("povray.ini");
+    if (const char* home = std::getenv("HOME"); home && *home)
+        tries.push_back(fs::path(home) / ".povray" / "3.7" / "povray.ini");
+    for (const fs::path& p : tries) {
+        std::error_code ec;
+        if (fs::is_regular_file(p, ec)) return p.string();
+    }
+    return {};
+}
+
+void apply_default_ini(RenderOptions& o, std::ostream* warnings) {
+    const std::string path = default_ini_file();
+    if (!path.empty()) apply_ini_file(path, o, warnings);
+}
+
 bool looks_like_ini_option(const std::string& arg) {
     const size_t eq = arg.find('=');
     if (arg.empty() || arg[0] == '+' || arg[0] == '-' || eq == std::string::npos)

@@ -182,6 +182,9 @@ int render_main(const std::vector<std::string>& args) {
     }
     std::vector<char*> argv;
     for (auto& r : rest) argv.push_back(r.data());
+    // POV-Ray's default INI ($POVINI, ./povray.ini, ~/.povray/3.7/povray.ini) first: the
+    // named options parsed next, then the switches and .ini files, win over it.
+    apply_default_ini(o);
     if (auto done = parse_args(app, int(argv.size()), argv.data())) return *done;
     // Switches and .ini files apply in command-line order, later ones winning (as
     // POV-Ray).

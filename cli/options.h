@@ -158,6 +158,14 @@ bool looks_like_ini_option(const std::string& arg);
 void apply_ini_option(const std::string& arg, RenderOptions& o);
 void apply_ini_file(const std::string& spec, RenderOptions& o,
                     std::ostream* warnings = &std::cerr, int depth = 0);
+// The INI file POV-Ray 3.7's Unix front end reads before the command line
+// (UnixOptionsProcessor::Process_povray_ini): the first that exists of $POVINI,
+// ./povray.ini and ~/.povray/3.7/povray.ini; empty when none does (POV-Ray then reads
+// the installed one, whose library paths povwall has built in).
+std::string default_ini_file();
+// Applies it, when there is one, as apply_ini_file() (an error in it stops POV-Ray too:
+// "Failed to parse INI file").
+void apply_default_ini(RenderOptions& o, std::ostream* warnings = &std::cerr);
 // Same, from a stream; `path` names it in messages ("file:line: ...").
 void apply_ini_stream(std::istream& in, const std::string& path, RenderOptions& o,
                       std::ostream* warnings = &std::cerr);

@@ -77,7 +77,9 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
         size_t eq = rest.find('=');
         if (eq == std::string::npos)
             throw UsageError("expected Declare=NAME=VALUE: '" + arg + "'");
-        o.declares[rest.substr(0, eq)] = number(arg, rest.substr(eq + 1));
+        // POV-Ray keeps the first value a name is given (its default INI's before the
+        // command line's).
+        o.declares.emplace(rest.substr(0, eq), number(arg, rest.substr(eq + 1)));
         return true;
     }
     if (looks_like_ini_option(arg)) {

@@ -197,6 +197,51 @@ const char* kGreyScene =
     "#version 3.7;\nglobal_settings { assumed_gamma 1 }\nbackground { color rgb <0.5, 0, "
     "1> }\n";
 
+// POV-Ray's Unix front end reads one INI before the command line, the first that exists
+// of $POVINI, ./povray.ini and ~/.povray/3.7/povray.ini (UnixOptionsProcessor::
+// Process_povray_ini); the command line's switches win over it, but a name's first
+// Declare is the one POV-Ray keeps; an error in it stops the render (each output below is
+// POV-Ray 3.7's for the same files).
+TEST(Cli, DefaultIniIsReadFirstAsPovRaysUnixFrontEndDoes) {
+    const fs::path dir = scratch() / "default_ini";
+    fs::create_directories(dir);
+    std::ofstream(dir / "scene.pov")
+        << "#debug concat(\"shade \", str(Shade, 0, 2), \" clock \", str(clock, 0, 2), "
+           "\"\\n\")\nsphere { 0, 1 pigment { rgb Shade } }\n";
+    std::ofstream(dir / "povray.ini") << "Declare=Shade=0.3\nClock=0.5\n";
+    std::ofstream(dir / "other.ini") << "Declare=Shade=0.7\n";
+    auto render = [&](const std::string& env, const std::string& args) {
+        const std::string cmd = "cd " + dir.string() + " && HOME=" + dir.string() + " " +
+                                env + " " + POVWALL_BINARY +
+                                " render scene.pov -W 4 -H 3 " + args +
+                                " -o out.png >out.txt 2>err.txt";
+        const int status = std::system(cmd.c_str());
+        return std::pair{WEXITSTATUS(status), slurp(dir / "err.txt")};
+    };
+    auto [code, err] = render("POVINI=", "");
+    EXPECT_EQ(code, 0) << err;
+    EXPECT_NE(err.find("shade 0.30 clock 0.50\n"), std::string::npos) << err;
+    std::tie(code, err) = render("POVINI=other.ini", "");
+    EXPECT_NE(err.find("shade 0.70 clock 0.00\n"), std::string::npos) << err;
+    std::tie(code, err) = render("POVINI=", "Declare=Shade=0.9 +K0.25");
+    EXPECT_NE(err.find("shade 0.30 clock 0.25\n"), std::string::npos) << err;
+    std::tie(code, err) =
+        render("POVINI=other.ini", "Declare=Shade=0.9 Declare=Shade=0.2");
+    EXPECT_NE(err.find("shade 0.70 clock 0.00\n"), std::string::npos) << err;
+    // ~/.povray/3.7/povray.ini when the folder has none.
+    fs::create_directories(dir / ".povray" / "3.7");
+    fs::rename(dir / "povray.ini", dir / ".povray" / "3.7" / "povray.ini");
+    std::tie(code, err) = render("POVINI=", "");
+    EXPECT_NE(err.find("shade 0.30 clock 0.50\n"), std::string::npos) << err;
+    // An unknown key stops the render, as a command line's INI.
+    std::ofstream(dir / "povray.ini") << "Declare=Shade=0.4\nFrobnicate=1\n";
+    std::tie(code, err) = render("POVINI=", "");
+    EXPECT_EQ(code, 2) << err;
+    EXPECT_EQ(err.substr(0, err.find('\n')),
+              "povwall: error: povray.ini:2: unknown key 'Frobnicate' in INI file");
+    EXPECT_FALSE(fs::exists(dir / "out.png.tmp"));
+}
+
 TEST(Cli, IniFileSetsSceneSizeAndFormat) {
     fs::path scene = write_scene("ini_scene.pov", kGreyScene);
     fs::path out = scratch() / "from_ini";
