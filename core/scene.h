@@ -128,7 +128,15 @@ struct Warp {
 // first.
 struct ImagePixels {
     int width = 0, height = 0;
-    std::vector<float> rgbft;  // 5 floats per pixel
+    // The pixels, in one of two forms. An 8-bit file's (not a palette's): 4 codes a pixel
+    // (red, green, blue, alpha as stored), each colour code's value in `decoded` (its
+    // gamma decoding done once), transmit 1 - alpha / 255 when the file has alpha; 4
+    // bytes a pixel where floats took 20 (a 4096x2048 texture: 168 MB). Otherwise
+    // `rgbft`, 5 floats a pixel (palette images have filter and transmit per entry).
+    std::vector<uint8_t> codes;
+    std::array<float, 256> decoded{};
+    bool codes_alpha = false;  // the codes' alpha is the file's (else transmit 0)
+    std::vector<float> rgbft;
     // A palette file's index of each pixel (bump_map use_index reads it); else empty.
     std::vector<uint8_t> indices;
     int palette_size = 0;
@@ -137,11 +145,29 @@ struct ImagePixels {
     bool see_through = false;
     void note_see_through() {
         see_through = false;
+        if (!codes.empty()) {
+            for (size_t i = 3; codes_alpha && i < codes.size() && !see_through; i += 4)
+                see_through = codes[i] != 255;
+            return;
+        }
         for (size_t i = 0; i + 4 < rgbft.size() && !see_through; i += 5)
             see_through = rgbft[i + 3] != 0 || rgbft[i + 4] != 0;
     }
-    const float* at(int x, int y) const {
-        return &rgbft[(size_t(y) * size_t(width) + size_t(x)) * 5];
+    // The pixel's red, green, blue, filter and transmit.
+    void fetch(int x, int y, float out[5]) const {
+        const size_t at = size_t(y) * size_t(width) + size_t(x);
+        if (!codes.empty()) {
+            const uint8_t* c = &codes[at * 4];
+            out[0] = decoded[c[0]];
+            out[1] = decoded[c[1]];
+            out[2] = decoded[c[2]];
+            out[3] = 0;
+            // As the float form: 1 - the sample (code * (1 / 255)).
+            out[4] = codes_alpha ? 1.0f - float(c[3]) * (1.0f / 255.0f) : 0.0f;
+            return;
+        }
+        const float* f = &rgbft[at * 5];
+        for (int i = 0; i < 5; ++i) out[i] = f[i];
     }
 };
 

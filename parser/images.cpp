@@ -185,14 +185,34 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         auto px = std::make_shared<ImagePixels>();
         px->width = stored.pixels.width;
         px->height = stored.pixels.height;
-        px->rgbft.resize(size_t(px->width) * size_t(px->height) * 5);
-        for (size_t i = 0; i < size_t(px->width) * size_t(px->height); ++i) {
-            const float* s = &stored.pixels.rgba[i * 4];
-            float* d = &px->rgbft[i * 5];
-            for (int c = 0; c < 3; ++c) d[c] = decode_sample(s[c]);
-            d[3] = 0;
-            d[4] = stored.has_alpha ? 1.0f - s[3] : 0.0f;
+        const size_t count = size_t(px->width) * size_t(px->height);
+        // An 8-bit file's pixels as codes (ImagePixels): every sample must be a code's
+        // value exactly; a palette file keeps floats (filter and transmit per entry).
+        if (stored.bits == 8 && !stored.float_data && !stored.colour_mapped &&
+            decoded.size() == 256) {
+            px->codes.resize(count * 4);
+            for (size_t i = 0; i < count * 4 && !px->codes.empty(); ++i) {
+                const float v = stored.pixels.rgba[i];
+                const int k = v >= 0 && v <= 1 ? int(v * 255.0f + 0.5f) : -1;
+                if (k < 0 || float(k) * step != v)
+                    px->codes.clear();
+                else
+                    px->codes[i] = uint8_t(k);
+            }
+            for (size_t k = 0; k < 256; ++k) px->decoded[k] = decoded[k];
+            px->codes_alpha = stored.has_alpha;
         }
+        if (px->codes.empty()) {
+            px->rgbft.resize(count * 5);
+            for (size_t i = 0; i < count; ++i) {
+                const float* s = &stored.pixels.rgba[i * 4];
+                float* d = &px->rgbft[i * 5];
+                for (int c = 0; c < 3; ++c) d[c] = decode_sample(s[c]);
+                d[3] = 0;
+                d[4] = stored.has_alpha ? 1.0f - s[3] : 0.0f;
+            }
+        }
+        stored.pixels = Image();  // the parse's copy of the file is done with
         colour_mapped = stored.colour_mapped;
         has_alpha = stored.has_alpha;
         px->indices = std::move(stored.indices);

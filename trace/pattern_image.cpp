@@ -103,7 +103,8 @@ void pixel(const ImageMapping& m, Real x, Real y, double out[5]) {
     const ImagePixels& img = *m.pixels;
     int ix, iy;
     pixel_at(m, x, y, ix, iy);
-    const float* c = img.at(ix, iy);
+    float c[5];
+    img.fetch(ix, iy, c);
     for (int i = 0; i < 5; ++i) out[i] = c[i];
     out[3] += m.all_filter;
     out[4] += m.all_transmit;

@@ -512,12 +512,13 @@ TEST(Functions, LocatedErrorsAndTolerance) {
     // select runs only the branch it picks, as POV-Ray's compiled jumps: the runaway
     // loop in the other branch is never entered.
     std::string picked;
-    parse("#declare F = function(a) { select(a, sum(i, 0, 1e18, i), 5) }\n"
-          "#declare G = function(a) { select(a, 1, select(a - 1, 2, 3, sum(i, 0, 1e18, i)),"
-          " prod(i, 1, 4, i)) + select(a, 10, 20) }\n"
-          "#debug concat(str(F(1), 0, 0), \" \", str(G(-1), 0, 0), \" \", str(G(0), 0, 0), "
-          "\" \", str(G(1), 0, 0))",
-          &picked);
+    parse(
+        "#declare F = function(a) { select(a, sum(i, 0, 1e18, i), 5) }\n"
+        "#declare G = function(a) { select(a, 1, select(a - 1, 2, 3, sum(i, 0, 1e18, i)),"
+        " prod(i, 1, 4, i)) + select(a, 10, 20) }\n"
+        "#debug concat(str(F(1), 0, 0), \" \", str(G(-1), 0, 0), \" \", str(G(0), 0, 0), "
+        "\" \", str(G(1), 0, 0))",
+        &picked);
     EXPECT_EQ(picked, "5 11 22 44");
     EXPECT_EQ(error_of("#declare F = function(a) { select(a, sum(i, 0, 1e18, i), 5) }\n"
                        "#declare A = F(-1);"),
@@ -791,6 +792,66 @@ TEST(ImageMap, InputGammaRules) {
     EXPECT_FLOAT_EQ(red(v37 + " global_settings { assumed_gamma 2.2 }",
                         "pigment { image_map { png \"a.png\" } }"),
                     std::pow(0.21404114f, 1 / 2.2f));
+    fs::remove_all(dir);
+}
+
+// An 8-bit file's pixels are kept as codes with a decoding table (4 bytes a pixel, not 5
+// floats): every pixel fetches exactly what the float form gives for the same samples,
+// for each gamma rule; a sample that is no 8-bit code keeps the float form.
+TEST(ImageMap, EightBitFilesKeepCodesThatFetchAsTheFloats) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::temp_directory_path() / "povwall_parser_image_codes_test";
+    fs::create_directories(dir);
+    std::ofstream(dir / "a.png") << "x";
+    int bits = 8;
+    float odd = 0;  // when set, the first sample (not a code's value)
+    ParseOptions o;
+    o.image_reader = [&](const std::string&) {
+        StoredImage s;
+        s.pixels = Image(3, 2);
+        for (size_t i = 0; i < s.pixels.rgba.size(); ++i)
+            s.pixels.rgba[i] = float((i * 37 + 11) % 256) * (1.0f / 255.0f);
+        if (odd != 0) s.pixels.rgba[0] = odd;
+        s.format = "png";
+        s.bits = bits;
+        s.has_alpha = true;
+        return s;
+    };
+    auto pixels = [&](const std::string& head, const std::string& item) {
+        std::ofstream(dir / "s.pov") << head << "\nplane { z, 0 " << item << " }\n";
+        Scene s = parse_scene_file((dir / "s.pov").string(), o);
+        return s.objects.at(0).texture.at(0).pigment.pattern->image->pixels;
+    };
+    for (const std::string& head :
+         {std::string("#version 3.7;"), std::string("#version 3.6;"),
+          std::string("#version 3.7; global_settings { assumed_gamma 2.2 }")}) {
+        for (const std::string& item :
+             {std::string("pigment { image_map { png \"a.png\" } }"),
+              std::string("pigment { image_map { png \"a.png\" "
+                          "gamma 1.8 } }")}) {
+            SCOPED_TRACE(head + " " + item);
+            bits = 8;
+            const auto codes = pixels(head, item);
+            bits = 16;  // the same samples, not taken as codes
+            const auto floats = pixels(head, item);
+            ASSERT_EQ(codes->codes.size(), 24u);
+            EXPECT_TRUE(codes->rgbft.empty());
+            EXPECT_TRUE(floats->codes.empty());
+            EXPECT_TRUE(codes->see_through);
+            for (int y = 0; y < 2; ++y) {
+                for (int x = 0; x < 3; ++x) {
+                    float a[5], b[5];
+                    codes->fetch(x, y, a);
+                    floats->fetch(x, y, b);
+                    for (int c = 0; c < 5; ++c) EXPECT_EQ(a[c], b[c]) << x << "," << y;
+                }
+            }
+        }
+    }
+    bits = 8;
+    odd = 0.5f;
+    EXPECT_TRUE(pixels("#version 3.7;", "pigment { image_map { png \"a.png\" } }")
+                    ->codes.empty());
     fs::remove_all(dir);
 }
 
