@@ -62,10 +62,12 @@ int dispersion_samples_of(const Material* m) {
 // object with itself (ratio 1, no fresnel reflection), unlike the refraction there.
 Real fresnel_relative_ior(const InteriorStack& inside, const Material& m) {
     if (inside.size == 0) return ior_of(&m);
+    // Two objects' indices divide in float, as POV-Ray's (both are floats there); the
+    // atmosphere's (a double 1) in double.
     if (!inside.contains(m.interior_id))
-        return Real(ior_of(&m)) / ior_of(inside.innermost());
+        return Real(ior_of(&m) / ior_of(inside.innermost()));
     if (inside.size == 1) return 1 / Real(ior_of(&m));
-    return Real(ior_of(inside.innermost())) / ior_of(&m);
+    return Real(ior_of(inside.innermost()) / ior_of(&m));
 }
 
 // POV-Ray's thin-film iridescence (ComputeIridColour): each channel of a light's
@@ -1092,8 +1094,10 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         Real dispersion = 1;  // the same ratio of the two sides' dispersions
         int bands = dispersion_samples_of(&m);
         if (inside.size == 0) {
-            eta = 1 / ior_of(&m);
-            dispersion = 1 / dispersion_of(&m);
+            // POV-Ray divides its double atmosphereIOR by the float index (the other
+            // ratios are float by float).
+            eta = 1 / Real(ior_of(&m));
+            dispersion = 1 / Real(dispersion_of(&m));
             child.trace.interiors.push(&m);
         } else if (inside.innermost() && inside.innermost()->interior_id == id) {
             child.trace.interiors.remove(id);
