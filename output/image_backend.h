@@ -1,9 +1,9 @@
 // The OpenImageIO calls of output/, in a module loaded on first use (dlopen). OpenImageIO
 // pulls in some 260 shared libraries (codecs, OpenCV, GStreamer...) whose relocation
-// costs about 0.2 s when a process starts: loaded when the first image is read in a format
-// other than PNG or JPEG (output/png_reader.h, output/jpeg_reader.h) or written in a format
-// other than PNG (output/png_writer.h), so a PNG render, a scene textured with PNG and JPEG
-// files, a screen worker, `povwall parse` or a failing scene never pays it.
+// costs about 0.2 s when a process starts: loaded when the first image is read in a
+// format other than PNG or JPEG (output/png_reader.h, output/jpeg_reader.h) or written in
+// a format other than PNG (output/png_writer.h), so a PNG render, a scene textured with
+// PNG and JPEG files, a screen worker, `povwall parse` or a failing scene never pays it.
 // (Preloading it on a thread while a render traces was measured: no gain on 2 busy
 // cores.)
 #pragma once
