@@ -98,6 +98,18 @@ Real octree_closest(const Octree& tree, const Ray& ray, Mailbox& mb, Hit hit, in
     return best;
 }
 
+// The octree's closest sphere hit along `ray` equals the brute-force one.
+void expect_closest_as_brute(const Octree& tree, const std::vector<Sphere>& spheres,
+                             const Ray& ray, Mailbox& mb, int* tests, bool* ordered) {
+    Real brute = kInfinity;
+    for (const auto& sp : spheres) brute = std::min(brute, hit_sphere(sp, ray));
+    ASSERT_EQ(
+        octree_closest(
+            tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); },
+            tests, ordered),
+        brute);
+}
+
 Ray random_ray(std::mt19937& rng, Real spread, int n) {
     std::uniform_real_distribution<Real> u(-1, 1), p(-1.5 * spread, 1.5 * spread);
     Ray ray{{p(rng), p(rng), p(rng)}, {u(rng), u(rng), u(rng)}};
@@ -727,16 +739,9 @@ TEST(OctreeBounded, ReferenceBudgetCapsTheTree) {
     mb.resize(spheres.size());
     int tests = 0;
     bool ordered = true;
-    for (int n = 0; n < 2000; ++n) {
-        Ray ray = random_ray(rng, 10, n);
-        Real brute = kInfinity;
-        for (const auto& sp : spheres) brute = std::min(brute, hit_sphere(sp, ray));
-        ASSERT_EQ(
-            octree_closest(
-                tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); },
-                &tests, &ordered),
-            brute);
-    }
+    for (int n = 0; n < 2000; ++n)
+        expect_closest_as_brute(tree, spheres, random_ray(rng, 10, n), mb, &tests,
+                                &ordered);
 }
 
 // The budget is shared out by each split in proportion to the children's references: a
@@ -777,13 +782,7 @@ TEST(OctreeBounded, ACrowdedRegionDoesNotSpendTheOthersBudget) {
     bool ordered = true;
     for (int n = 0; n < 500; ++n) {
         const Ray ray{{8 + across(rng), across(rng), -5}, {0, 0, 1}};
-        Real brute = kInfinity;
-        for (const auto& sp : spheres) brute = std::min(brute, hit_sphere(sp, ray));
-        ASSERT_EQ(
-            octree_closest(
-                tree, ray, mb, [&](uint32_t id) { return hit_sphere(spheres[id], ray); },
-                &tests, &ordered),
-            brute);
+        expect_closest_as_brute(tree, spheres, ray, mb, &tests, &ordered);
     }
     EXPECT_TRUE(ordered);
     EXPECT_LT(tests, 500 * 60);  // 26,450 (before: 373,386)
