@@ -275,11 +275,8 @@ DecodedImage decode_with_open_image_io(const std::string& path) {
 DecodedImage decode_image_file(const std::string& path) {
     DecodedImage decoded;
     std::string err;
-    DirectRead direct = DirectRead::NotMine;
-    if (is_png_file(path))
-        direct = read_png(path, decoded, err);
-    else if (is_jpeg_file(path))
-        direct = read_jpeg(path, decoded, err);
+    DirectRead direct = read_png(path, decoded, err);
+    if (direct == DirectRead::NotMine) direct = read_jpeg(path, decoded, err);
     if (direct == DirectRead::Failed)
         throw ImageIoError("cannot read '" + path + "': " + err);
     return direct == DirectRead::Done ? decoded : decode_with_open_image_io(path);
@@ -287,7 +284,8 @@ DecodedImage decode_image_file(const std::string& path) {
 
 namespace {
 
-StoredImage read_with_backend(const std::string& path) {
+// The file's pixels as RGBA and what it says about itself, as its reader gives them.
+StoredImage stored_as_read(const std::string& path) {
     const DecodedImage decoded = decode_image_file(path);
     const int width = decoded.width, height = decoded.height, nc = decoded.channels;
     const std::vector<float>& pixels = decoded.samples;
@@ -316,10 +314,10 @@ StoredImage read_with_backend(const std::string& path) {
 
 }  // namespace
 
-Image read_image(const std::string& path) { return read_with_backend(path).pixels; }
+Image read_image(const std::string& path) { return stored_as_read(path).pixels; }
 
 StoredImage read_stored_image(const std::string& path) {
-    StoredImage stored = read_with_backend(path);
+    StoredImage stored = stored_as_read(path);
     if (stored.format == "hdr") {
         // A scene's RGBE file as POV-Ray decodes it (OpenImageIO's values are lower by
         // half a mantissa step).

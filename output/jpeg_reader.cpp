@@ -27,14 +27,6 @@ void on_jpeg_message(j_common_ptr) {}
 
 }  // namespace
 
-bool is_jpeg_file(const std::string& path) {
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"),
-                                                      &std::fclose);
-    unsigned char head[3];
-    return f && std::fread(head, 1, 3, f.get()) == 3 && head[0] == 0xFF &&
-           head[1] == 0xD8 && head[2] == 0xFF;
-}
-
 DirectRead read_jpeg(const std::string& path, DecodedImage& image, std::string& error) {
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                          &std::fclose);
@@ -42,6 +34,12 @@ DirectRead read_jpeg(const std::string& path, DecodedImage& image, std::string& 
         error = "cannot open the file";
         return DirectRead::Failed;
     }
+    // A JPEG starts with its start-of-image marker and another marker.
+    unsigned char head[3];
+    if (std::fread(head, 1, 3, file.get()) != 3 || head[0] != 0xFF || head[1] != 0xD8 ||
+        head[2] != 0xFF)
+        return DirectRead::NotMine;
+    std::rewind(file.get());
     // As in png_reader.cpp: what changes between setjmp and a longjmp is on the heap.
     auto errors = std::make_unique<JumpingErrors>();
     auto cinfo = std::make_unique<jpeg_decompress_struct>();

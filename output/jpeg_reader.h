@@ -8,10 +8,8 @@
 
 namespace povwall::output {
 
-// True when the file starts with JPEG's start-of-image marker.
-bool is_jpeg_file(const std::string& path);
-
-// Reads a grey or colour (YCbCr/RGB) JPEG as OpenImageIO 2.4 reads it: libjpeg's default
+// Reads a grey or colour (YCbCr/RGB) JPEG as OpenImageIO 2.4 reads it (NotMine: not a
+// JPEG): libjpeg's default
 // decoding (islow DCT, fancy upsampling), each sample float(v) * (1 / 255). CMYK and YCCK
 // files are left to OpenImageIO (NotMine), which converts them to RGB its own way.
 DirectRead read_jpeg(const std::string& path, DecodedImage& image, std::string& error);

@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <memory>
 
 namespace povwall::output {
@@ -19,13 +18,6 @@ void ignore_png_warning(png_structp, png_const_charp) {}
 
 }  // namespace
 
-bool is_png_file(const std::string& path) {
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"),
-                                                      &std::fclose);
-    unsigned char head[8];
-    return f && std::fread(head, 1, 8, f.get()) == 8 && png_sig_cmp(head, 0, 8) == 0;
-}
-
 DirectRead read_png(const std::string& path, DecodedImage& image, std::string& error) {
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                          &std::fclose);
@@ -33,6 +25,9 @@ DirectRead read_png(const std::string& path, DecodedImage& image, std::string& e
         error = "cannot open the file";
         return DirectRead::Failed;
     }
+    unsigned char signature[8];
+    if (std::fread(signature, 1, 8, file.get()) != 8 || png_sig_cmp(signature, 0, 8) != 0)
+        return DirectRead::NotMine;
     // Everything written between setjmp and a longjmp lives behind pointers made before
     // it (locals changed there would be indeterminate after the jump).
     auto rows = std::make_unique<std::vector<png_bytep>>();
@@ -49,6 +44,7 @@ DirectRead read_png(const std::string& path, DecodedImage& image, std::string& e
     volatile bool ok = false;  // set after setjmp
     if (!setjmp(png_jmpbuf(png))) {
         png_init_io(png, file.get());
+        png_set_sig_bytes(png, 8);
         png_read_info(png, info);
         png_set_expand(png);  // 1, 2, 4 bits to 8; palette to RGB; tRNS to alpha
         png_set_interlace_handling(png);

@@ -9,10 +9,8 @@
 
 namespace povwall::output {
 
-// True when the file starts with PNG's signature.
-bool is_png_file(const std::string& path);
-
-// Reads a PNG as OpenImageIO 2.4 reads it, sample for sample (tests/output compare the
+// Reads a PNG (NotMine: the file does not start with PNG's signature) as OpenImageIO 2.4
+// reads it, sample for sample (tests/output compare the
 // two): bit depths below 8 and palettes expanded to 8 bits, tRNS to an alpha channel,
 // 16-bit samples kept, each sample float(v) * (1 / max); an sRGB chunk or none declares
 // no gamma, a gAMA chunk alone its decoding exponent rounded to hundredths.

@@ -141,7 +141,6 @@ class FunctionCompiler {
         }
     }
 
-    // Comma-separated arguments inside parentheses; their count.
     // select(a, b, c[, d]): a, then a Branch to the code of b, c or d
     // (FunctionProgram::Op).
     void select(const Token& name) {
@@ -170,6 +169,7 @@ class FunctionCompiler {
         if (n == 3) f_.branches[table][2] = f_.branches[table][1];
         for (size_t at : jumps) f_.code[at].index = uint32_t(f_.code.size());
     }
+    // Comma-separated arguments inside parentheses; their count.
     int arguments(const Token& name) {
         in_.expect_punct('(', "after ", name.text);
         int n = 0;

@@ -164,42 +164,43 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             if (encode_working && v > 0) v = float(std::pow(double(v), 1.0 / working));
             return v;
         };
+        const size_t count = size_t(stored.pixels.width) * size_t(stored.pixels.height);
         // The samples of an 8- or 16-bit file are k * (1 / (2^bits - 1)): each value is
-        // decoded once (a 4096x2048 texture made 25 M calls of pow), and a sample not of
-        // that form is decoded itself.
+        // decoded once (a 4096x2048 texture made 25 M calls of pow), for a 16-bit file
+        // when it has more samples than values; a sample not of that form is decoded
+        // itself.
         std::vector<float> decoded;
-        float step = 0;
-        if (!stored.float_data && (stored.bits == 8 || stored.bits == 16)) {
-            const int top = (1 << stored.bits) - 1;
-            step = 1.0f / float(top);
+        const int top =
+            stored.bits == 8 || stored.bits == 16 ? (1 << stored.bits) - 1 : 0;
+        const float step = top ? 1.0f / float(top) : 0.0f;
+        if (top && !stored.float_data && (top == 255 || count * 3 > size_t(top))) {
             decoded.resize(size_t(top) + 1);
             for (int k = 0; k <= top; ++k) decoded[size_t(k)] = decode(float(k) * step);
         }
+        // The k of a sample k * step; -1 when it is none.
+        auto code_of = [&](float v) {
+            const int k = v >= 0 && v <= 1 ? int(v * float(top) + 0.5f) : -1;
+            return k >= 0 && float(k) * step == v ? k : -1;
+        };
         auto decode_sample = [&](float v) {
-            if (!decoded.empty() && v >= 0 && v <= 1) {
-                const size_t k = size_t(v * float(decoded.size() - 1) + 0.5f);
-                if (float(k) * step == v) return decoded[k];
-            }
-            return decode(v);
+            const int k = decoded.empty() ? -1 : code_of(v);
+            return k >= 0 ? decoded[size_t(k)] : decode(v);
         };
         auto px = std::make_shared<ImagePixels>();
         px->width = stored.pixels.width;
         px->height = stored.pixels.height;
-        const size_t count = size_t(px->width) * size_t(px->height);
         // An 8-bit file's pixels as codes (ImagePixels): every sample must be a code's
         // value exactly; a palette file keeps floats (filter and transmit per entry).
-        if (stored.bits == 8 && !stored.float_data && !stored.colour_mapped &&
-            decoded.size() == 256) {
+        if (decoded.size() == 256 && !stored.colour_mapped) {
             px->codes.resize(count * 4);
             for (size_t i = 0; i < count * 4 && !px->codes.empty(); ++i) {
-                const float v = stored.pixels.rgba[i];
-                const int k = v >= 0 && v <= 1 ? int(v * 255.0f + 0.5f) : -1;
-                if (k < 0 || float(k) * step != v)
+                const int k = code_of(stored.pixels.rgba[i]);
+                if (k < 0)
                     px->codes.clear();
                 else
                     px->codes[i] = uint8_t(k);
             }
-            for (size_t k = 0; k < 256; ++k) px->decoded[k] = decoded[k];
+            std::copy(decoded.begin(), decoded.end(), px->decoded.begin());
             px->codes_alpha = stored.has_alpha;
         }
         if (px->codes.empty()) {
