@@ -82,7 +82,9 @@ class Builder {
         }
         size_t total = 0;
         for (const auto& k : kids) total += k.size();
-        const uint64_t left = allowance - (total - ids.size());
+        // What the split adds comes out of the allowance (split() kept it within); one
+        // whose exact tests dropped references gives them back.
+        const uint64_t left = allowance + ids.size() - total;
         std::vector<uint32_t>().swap(ids);
         const uint32_t first = uint32_t(nodes.size());
         nodes[index] = Node{first, Octree::kInner};
@@ -90,7 +92,8 @@ class Builder {
         const Point3 mid = box.centre();
         for (unsigned c = 0; c < 8; ++c) {
             const uint64_t share =
-                uint64_t(double(left) * double(kids[c].size()) / double(total));
+                total ? uint64_t(double(left) * double(kids[c].size()) / double(total))
+                      : 0;
             build(nodes, out, first + c, kids[c], child_box(box, mid, c), depth + 1,
                   share, max_depth, tasks, spawn_depth);
         }
