@@ -19,6 +19,7 @@
 #include "cli/options.h"
 #include "cli/povray_reference.h"
 #include "cli/process.h"
+#include "cli/scratch_folder.h"
 #include "output/diff.h"
 #include "output/image_io.h"
 
@@ -70,16 +71,8 @@ int run_bench(int argc, char** argv) {
     if (int code = parse_with_pov_switches(app, argc, argv, o, pov_switches); code >= 0)
         return code;
     o.render.threads = threads;
-    const fs::path dir =
-        fs::temp_directory_path() / ("povwall-bench-" + std::to_string(getpid()));
-    fs::create_directories(dir);
-    struct Cleanup {
-        fs::path dir;
-        ~Cleanup() {
-            std::error_code ec;
-            fs::remove_all(dir, ec);
-        }
-    } cleanup{dir};
+    const ScratchFolder scratch("povwall-bench");
+    const fs::path& dir = scratch.path();
     const std::string stem = fs::path(o.scene).stem().string();
     const std::string pov_png = (dir / (stem + "-povray.png")).string();
     const std::string our_png = (dir / (stem + "-povwall.png")).string();

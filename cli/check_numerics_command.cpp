@@ -17,6 +17,7 @@
 #include "cli/options.h"
 #include "cli/parse_args.h"
 #include "cli/process.h"
+#include "cli/scratch_folder.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
 #include "trace/numerics_check.h"
@@ -78,9 +79,8 @@ int run_check_numerics(int argc, char** argv) {
                             {"median_rel_error", k.median_rel_error}};
     }
     if (with_povray) {
-        fs::path dir =
-            fs::temp_directory_path() / ("povwall-numerics-" + std::to_string(getpid()));
-        fs::create_directories(dir);
+        const ScratchFolder scratch("povwall-numerics");
+        const fs::path& dir = scratch.path();
         std::string pov_png = (dir / "povray.png").string();
         std::vector<std::string> cmd{"povray",
                                      "+I" + scene_path,
@@ -93,12 +93,10 @@ int run_check_numerics(int argc, char** argv) {
                                      "-GA"};
         for (const auto& l : library_paths) cmd.push_back("+L" + l);
         if (run_process(cmd) != 0) {
-            fs::remove_all(dir);
             std::cerr << "povwall: error: povray failed on " << scene_path << "\n";
             return exit_code(ExitCode::Error);
         }
         Image pov = output::read_image(pov_png);
-        fs::remove_all(dir);
         trace::RenderSettings rs;
         rs.width = width;
         rs.height = height;

@@ -22,6 +22,7 @@
 #include "cli/options.h"
 #include "cli/parse_args.h"
 #include "cli/povray_reference.h"
+#include "cli/scratch_folder.h"
 #include "output/diff.h"
 #include "output/image_io.h"
 #include "parser/parser.h"
@@ -174,10 +175,8 @@ int run_compare(int argc, char** argv) {
         code >= 0)
         return code;
     o.render.threads = threads;
-    fs::path dir = keep.empty() ? fs::temp_directory_path() /
-                                      ("povwall-compare-" + std::to_string(getpid()))
-                                : fs::path(keep);
-    fs::create_directories(dir);
+    const ScratchFolder scratch("povwall-compare", keep);
+    const fs::path& dir = scratch.path();
     std::string stem = fs::path(o.scene).stem().string();
     std::string pov_png = (dir / (stem + "-povray.png")).string();
     std::string our_png = (dir / (stem + "-povwall.png")).string();
@@ -311,7 +310,6 @@ int run_compare(int argc, char** argv) {
         }
         print_diff(r, note);
     }
-    if (keep.empty()) fs::remove_all(dir);
     return exit_code(r.status);
 }
 

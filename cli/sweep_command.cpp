@@ -19,6 +19,7 @@
 #include "cli/parse_args.h"
 #include "cli/povray_reference.h"
 #include "cli/process.h"
+#include "cli/scratch_folder.h"
 #include "output/diff.h"
 #include "output/error_time_plot.h"
 #include "output/image_io.h"
@@ -100,10 +101,8 @@ int run_sweep(int argc, char** argv) {
     app.add_option("--keep", keep, "folder to keep every image in");
     if (auto done = parse_args(app, argc, argv)) return *done;
     if (!fs::exists(o.scene)) throw UsageError("cannot open scene '" + o.scene + "'");
-    const fs::path dir = keep.empty() ? fs::temp_directory_path() /
-                                            ("povwall-sweep-" + std::to_string(getpid()))
-                                      : fs::path(keep);
-    fs::create_directories(dir);
+    const ScratchFolder scratch("povwall-sweep", keep);
+    const fs::path& dir = scratch.path();
 
     // The reference: POV-Ray, every pixel supersampled 3x3 (threshold 0).
     RenderOptions ref_opts = with_switches(o, aa_switches("0.0", 3));
@@ -219,7 +218,6 @@ int run_sweep(int argc, char** argv) {
                                                      std::to_string(o.height) +
                                                      ": error against time"));
     }
-    if (keep.empty()) fs::remove_all(dir);
     const bool any_failed =
         std::any_of(rungs.begin(), rungs.end(), [](const Rung& r) { return r.failed; });
     return exit_code(any_failed ? ExitCode::Differs : ExitCode::Ok);

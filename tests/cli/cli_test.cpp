@@ -528,12 +528,18 @@ TEST(Cli, CompareReportsPovRayFailure) {
     if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
     fs::path scene =
         write_scene("cmpbad.pov", "sphere { 0, 1 pigment { colr rgb 1 } }\n");
+    // Its own temp directory: the scratch folder goes on this path too.
+    const fs::path tmp = scratch() / "tmp";
+    fs::create_directories(tmp);
+    setenv("TMPDIR", tmp.c_str(), 1);
     RunResult r = run("compare " + scene.string() + " -W 8 -H 8 --threads 1");
+    unsetenv("TMPDIR");
     EXPECT_EQ(r.code, 2);
     // POV-Ray's error line first, unwrapped, not its whole log.
     EXPECT_EQ(r.err, "povwall: error: povray failed (exit 1): File '" + scene.string() +
                          "' line 1: Parse Error: No matching } in 'pigment', undeclared "
                          "identifier 'colr' found instead\n");
+    EXPECT_TRUE(fs::is_empty(tmp)) << fs::directory_iterator(tmp)->path();
 }
 
 // POV-Ray's statistics of the ray tree: the deepest trace level reached ("Max Level") and

@@ -20,10 +20,7 @@ namespace fs = std::filesystem;
 using povwall_test::RunResult;
 using povwall_test::slurp;
 
-fs::path work_dir() {
-    return fs::temp_directory_path() /
-           ("povwall-corpus-test-" + std::to_string(getpid()));
-}
+fs::path work_dir() { return povwall_test::process_scratch("povwall-corpus-test"); }
 
 RunResult run_shell(const std::string& command, const std::string& tag) {
     const fs::path out = work_dir() / (tag + ".out"), err = work_dir() / (tag + ".err");

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cli/options.h"
+#include "tests/scratch_folder.h"
 
 namespace {
 
@@ -39,12 +40,7 @@ std::string error_of(const std::string& text) {
     return "(no error)";
 }
 
-fs::path scratch_dir() {
-    fs::path d =
-        fs::temp_directory_path() / ("povwall-ini-test-" + std::to_string(getpid()));
-    fs::create_directories(d);
-    return d;
-}
+fs::path scratch_dir() { return povwall_test::process_scratch("povwall-ini-test"); }
 
 fs::path write(const std::string& name, const std::string& text) {
     fs::path p = scratch_dir() / name;

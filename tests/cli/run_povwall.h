@@ -10,6 +10,8 @@
 #include <fstream>
 #include <string>
 
+#include "tests/scratch_folder.h"
+
 namespace povwall_test {
 
 struct RunResult {
@@ -17,12 +19,7 @@ struct RunResult {
     std::string out, err;
 };
 
-inline std::filesystem::path scratch() {
-    std::filesystem::path d = std::filesystem::temp_directory_path() /
-                              ("povwall-cli-test-" + std::to_string(getpid()));
-    std::filesystem::create_directories(d);
-    return d;
-}
+inline std::filesystem::path scratch() { return process_scratch("povwall-cli-test"); }
 
 inline std::string slurp(const std::filesystem::path& p) {
     std::ifstream in(p);

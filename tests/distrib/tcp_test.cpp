@@ -29,18 +29,14 @@
 #include "distrib/wire/control.h"
 #include "distrib/wire/frame.h"
 #include "output/image_io.h"
+#include "tests/scratch_folder.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-fs::path scratch() {
-    fs::path d =
-        fs::temp_directory_path() / ("povwall-tcp-test-" + std::to_string(getpid()));
-    fs::create_directories(d);
-    return d;
-}
+fs::path scratch() { return povwall_test::process_scratch("povwall-tcp-test"); }
 
 struct RunResult {
     int code;

@@ -17,6 +17,7 @@
 
 #include "output/image_io.h"
 #include "tests/output/open_image_io_loaded.h"
+#include "tests/scratch_folder.h"
 
 namespace povwall::output {
 namespace {
@@ -24,10 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path readers_scratch() {
-    fs::path d =
-        fs::temp_directory_path() / ("povwall-readers-test-" + std::to_string(getpid()));
-    fs::create_directories(d);
-    return d;
+    return povwall_test::process_scratch("povwall-readers-test");
 }
 
 // One PNG to write: IHDR fields, optional palette/tRNS/gAMA/sRGB chunks, and rows of

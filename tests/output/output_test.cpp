@@ -15,18 +15,14 @@
 #include "output/html_report.h"
 #include "output/image_io.h"
 #include "tests/output/open_image_io_loaded.h"
+#include "tests/scratch_folder.h"
 
 namespace povwall::output {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch() {
-    fs::path d =
-        fs::temp_directory_path() / ("povwall-output-test-" + std::to_string(getpid()));
-    fs::create_directories(d);
-    return d;
-}
+fs::path scratch() { return povwall_test::process_scratch("povwall-output-test"); }
 
 Image flat(int w, int h, float r, float g, float b, float a = 1.0f) {
     Image img(w, h);

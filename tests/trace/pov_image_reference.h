@@ -1,21 +1,26 @@
 // Renders hand-written .pov text with the real POV-Ray (16-bit PPM) so tests can compare
-// povwall's renderer against it on a core::Scene built directly in C++ (no parser involved).
+// povwall's renderer against it on a core::Scene built directly in C++ (no parser
+// involved).
 #pragma once
+
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "core/image.h"
+#include "tests/scratch_folder.h"
 
 namespace povwall::test {
 
-inline bool povray_available() { return std::system("command -v povray > /dev/null 2>&1") == 0; }
+inline bool povray_available() {
+    return std::system("command -v povray > /dev/null 2>&1") == 0;
+}
 
 // Linear values decoded from POV-Ray's sRGB-encoded output (scene uses assumed_gamma 1).
 struct PovImage {
@@ -27,13 +32,12 @@ inline PovImage render_with_povray(const std::string& name, const std::string& p
                                    int h, const std::string& extra = "-A") {
     namespace fs = std::filesystem;
     // Per process: concurrent test runs must not overwrite each other's references.
-    fs::path dir = fs::temp_directory_path() / ("povwall_trace_tests." + std::to_string(getpid()));
-    fs::create_directories(dir);
+    const fs::path dir = povwall_test::process_scratch("povwall_trace_tests");
     fs::path in = dir / (name + ".pov"), out = dir / (name + ".ppm");
     std::ofstream(in) << pov;
     std::string cmd = "povray +I" + in.string() + " +O" + out.string() + " +FP16 +W" +
-                      std::to_string(w) + " +H" + std::to_string(h) + " -D +WT1 " + extra +
-                      " -GA > /dev/null 2>&1";
+                      std::to_string(w) + " +H" + std::to_string(h) + " -D +WT1 " +
+                      extra + " -GA > /dev/null 2>&1";
     PovImage img;
     if (std::system(cmd.c_str()) != 0) return img;
     std::ifstream f(out, std::ios::binary);
@@ -76,7 +80,8 @@ inline void dump_ppm(const Image& img, const std::string& name) {
                     std::ios::binary);
     f << "P6\n" << img.width << " " << img.height << "\n255\n";
     for (size_t i = 0; i < img.rgba.size(); i += 4) {
-        for (int c = 0; c < 3; ++c) f.put(char(int(srgb_encode(img.rgba[i + c]) * 255 + 0.5f)));
+        for (int c = 0; c < 3; ++c)
+            f.put(char(int(srgb_encode(img.rgba[i + c]) * 255 + 0.5f)));
     }
 }
 
