@@ -23,6 +23,7 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "core/image.h"
@@ -1206,6 +1207,100 @@ TEST(Tcp, AMalformedFrameAfterTheTokenIsNamedAndDropped) {
         POVWALL_DEMO_SCENE, "-W 32 -H 24",
         {"--boxes 2x2x2 --token s --workers " + a.address + "," + b.address});
     stop_worker(a), stop_worker(b);
+}
+
+// A peer that passes for a worker: accepts one connection on loopback, reads what the
+// coordinator sends first (its hello and job), answers with `bytes`, then either hangs up
+// (`hang_up`) or waits until the coordinator closes the connection.
+class FakeWorker {
+  public:
+    FakeWorker(std::vector<uint8_t> bytes, bool hang_up) {
+        listener_ = socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in addr{};
+        addr.sin_family = AF_INET;
+        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        EXPECT_EQ(bind(listener_, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+        EXPECT_EQ(listen(listener_, 1), 0);
+        socklen_t len = sizeof addr;
+        getsockname(listener_, reinterpret_cast<sockaddr*>(&addr), &len);
+        address = "127.0.0.1:" + std::to_string(ntohs(addr.sin_port));
+        thread_ = std::thread([this, bytes = std::move(bytes), hang_up] {
+            const int fd = accept(listener_, nullptr, nullptr);
+            if (fd < 0) return;
+            timeval tv{10, 0};
+            setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+            std::vector<char> got(1 << 16);
+            if (recv(fd, got.data(), got.size(), 0) > 0 && !bytes.empty())
+                send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL);
+            if (!hang_up)
+                while (recv(fd, got.data(), got.size(), 0) > 0) {
+                }
+            close(fd);
+        });
+    }
+    ~FakeWorker() {
+        shutdown(listener_, SHUT_RDWR);  // ends an accept() no coordinator reached
+        thread_.join();
+        close(listener_);
+    }
+    std::string address;
+
+  private:
+    int listener_ = -1;
+    std::thread thread_;
+};
+
+// The coordinator's side of a misbehaving peer: a "worker" that answers the job with a
+// frame over the size limit, of another protocol version, with bytes that are no frame,
+// or with half a frame before it hangs up. The coordinator names it, gives its box to
+// the real worker and renders the one-process image; with --no-recover it stops with
+// exit 3 and writes no image.
+TEST(Tcp, AMisbehavingWorkerIsNamedAndItsBoxesGoToTheOthers) {
+    namespace d = povwall::distrib;
+    std::vector<uint8_t> oversized, old_version, truncated, garbage(64, 0x41);
+    d::encode_frame(d::FrameType::Control, 0, std::vector<uint8_t>(4, '{'), oversized);
+    oversized[7] = 0x7f;  // a body length over the limit
+    d::encode_frame(d::FrameType::Control, 0, std::vector<uint8_t>(2, '{'), old_version);
+    old_version[3] = d::kProtocolVersion - 1;
+    d::encode_frame(d::FrameType::Control, 0, std::vector<uint8_t>(40, '{'), truncated);
+    truncated.resize(truncated.size() - 10);
+    const std::string malformed = "malformed frame or wrong protocol version";
+    const std::vector<std::tuple<std::vector<uint8_t>, bool, std::string>> cases = {
+        {oversized, false, malformed},
+        {old_version, false, malformed},
+        {garbage, false, malformed},
+        {truncated, true, "disconnected"},
+    };
+    const std::string ref = (scratch() / "ref.exr").string();
+    ASSERT_EQ(
+        run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 32 -H 24 -q -o " + ref)
+            .code,
+        0);
+    for (const auto& [bytes, hang_up, named] : cases) {
+        for (const bool recover : {true, false}) {
+            Worker real = start_worker("t");
+            FakeWorker fake(bytes, hang_up);
+            const fs::path out = scratch() / "misbehaving.exr";
+            fs::remove(out);
+            const RunResult r =
+                run(std::string("render ") + POVWALL_DEMO_SCENE + " -W 32 -H 24 -q -o " +
+                    out.string() + " --boxes 2x1x1 --token t --workers " + real.address +
+                    "," + fake.address + (recover ? "" : " --no-recover"));
+            const std::string worker = "worker 1 (" + fake.address + ", box 1): " + named;
+            EXPECT_NE(r.err.find(worker), std::string::npos) << named << "\n" << r.err;
+            if (recover) {
+                EXPECT_EQ(r.code, 0) << named << "\n" << r.err;
+                EXPECT_NE(r.err.find("its boxes went to the other workers"),
+                          std::string::npos)
+                    << r.err;
+                EXPECT_EQ(max_abs(ref, out.string()), 0.0) << named;
+            } else {
+                EXPECT_EQ(r.code, 3) << named << "\n" << r.err;
+                EXPECT_FALSE(fs::exists(out)) << named;
+            }
+            stop_worker(real);
+        }
+    }
 }
 
 TEST(Tcp, KilledWorkerIsNamedAndNoImageIsWritten) {
