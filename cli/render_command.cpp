@@ -271,21 +271,16 @@ int run_render(RenderOptions o) {
         if (dplan.procs > 0 || !o.workers.empty()) {
             distrib::SceneSource source;
             std::ifstream in(o.scene, std::ios::binary);
-            source.text.assign(std::istreambuf_iterator<char>(in), {});
-            source.display_name = o.scene;
-            source.library_paths = o.library_paths;
-            source.declares = o.declares;
-            source.language_version = o.language_version;
-            source.output_file_type = o.format;
-            source.clock = popts.clock, source.clock_delta = popts.clock_delta;
-            source.initial_clock = popts.initial_clock,
-            source.final_clock = popts.final_clock;
-            source.frame_number = popts.frame_number;
-            source.max_loop_iterations = popts.max_loop_iterations;
-            source.max_trace_level = o.max_trace_level;
-            source.adc_bailout = o.adc_bailout;
-            source.initial_frame = popts.initial_frame,
-            source.final_frame = popts.final_frame;
+            source.parse.scene.assign(std::istreambuf_iterator<char>(in), {});
+            source.parse.name = o.scene;
+            source.parse.library_paths = popts.library_paths;
+            source.parse.declares = popts.declares;
+            source.parse.language_version = popts.language_version;
+            source.parse.output_file_type = popts.output_file_type;
+            source.parse.max_loop_iterations = popts.max_loop_iterations;
+            source.parse.max_trace_level = o.max_trace_level;
+            source.parse.adc_bailout = o.adc_bailout;
+            source.animation = distrib::AnimationValues::of(popts);
             distrib::TcpOptions tcp;
             tcp.procs = o.workers.empty() ? dplan.procs : 0;
             tcp.workers = o.workers;

@@ -54,27 +54,4 @@ inline std::vector<int> boxes_holding(const VirtualWalls& walls, const Object& o
     return boxes_holding(boxes_of_object(walls, object), object, reaches);
 }
 
-// Walk reaches on the wire: box, then the hull's lo and hi, seven numbers each (JSON has
-// no infinity: an unbounded side travels as the largest finite number).
-inline std::vector<Real> flat_walk_reaches(const std::vector<WalkReach>& reaches) {
-    auto finite = [](Real v) {
-        return std::clamp(v, -std::numeric_limits<Real>::max(),
-                          std::numeric_limits<Real>::max());
-    };
-    std::vector<Real> flat;
-    for (const WalkReach& r : reaches)
-        flat.insert(flat.end(), {Real(r.box), finite(r.hull.lo.x), finite(r.hull.lo.y),
-                                 finite(r.hull.lo.z), finite(r.hull.hi.x),
-                                 finite(r.hull.hi.y), finite(r.hull.hi.z)});
-    return flat;
-}
-inline std::vector<WalkReach> walk_reaches_of_flat(const std::vector<Real>& flat) {
-    std::vector<WalkReach> reaches;
-    for (size_t i = 0; i + 7 <= flat.size(); i += 7)
-        reaches.push_back(
-            {int(flat[i]), Bounds3{{flat[i + 1], flat[i + 2], flat[i + 3]},
-                                   {flat[i + 4], flat[i + 5], flat[i + 6]}}});
-    return reaches;
-}
-
 }  // namespace povwall::distrib

@@ -20,26 +20,10 @@
 #include "core/image.h"
 #include "core/scene.h"
 #include "distrib/space_render.h"
+#include "distrib/wire/job.h"
 #include "trace/render.h"
 
 namespace povwall::distrib {
-
-// What a worker needs to parse the scene as the coordinator did.
-struct SceneSource {
-    std::string text;          // the main scene file
-    std::string display_name;  // its path: diagnostics and relative includes
-    std::vector<std::string> library_paths;
-    std::map<std::string, double> declares;
-    std::optional<int> language_version;  // +MV (ParseOptions::language_version)
-    char output_file_type = 'N';          // +F (ParseOptions::output_file_type)
-    // Animation values the language exposes (clock, frame_number, ...).
-    double clock = 0, clock_delta = 0, initial_clock = 0, final_clock = 0;
-    int frame_number = 0, initial_frame = 1, final_frame = 1;
-    uint64_t max_loop_iterations = 10'000'000;  // the coordinator's parse limit
-    // The coordinator's overrides of the scene's global_settings.
-    std::optional<int> max_trace_level;
-    std::optional<double> adc_bailout;
-};
 
 struct TcpOptions {
     int procs = 0;                     // local worker processes to start on loopback

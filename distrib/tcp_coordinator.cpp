@@ -110,9 +110,9 @@ class TcpCoordinator {
         } else {
             emitter_->set_walls(emitter_walls_);
             for (WorkerState& w : workers_) {
-                json frame = to_json(FrameJob{
-                    AnimationValues::of(source), emitter_->plan(), objects_per_worker(),
-                    flat_walk_reaches(walk_reaches(emitter_walls_, *scene_))});
+                json frame = to_json(FrameJob{source.animation, emitter_->plan(),
+                                              objects_per_worker(),
+                                              walk_reaches(emitter_walls_, *scene_)});
                 frame["type"] = "frame";
                 w.conn->send(control_frame(frame));
             }
@@ -384,8 +384,8 @@ class TcpCoordinator {
         }
         WorkerJob job;
         job.fixed = fixed_;
-        job.frame = {AnimationValues::of(source), emitter_->plan(), expected,
-                     flat_walk_reaches(walk_reaches(emitter_walls_, *scene_))};
+        job.frame = {source.animation, emitter_->plan(), expected,
+                     walk_reaches(emitter_walls_, *scene_)};
         job.walls = {emitter_walls_.walls(0), emitter_walls_.walls(1),
                      emitter_walls_.walls(2)};
         job.workers = addresses;
@@ -774,7 +774,7 @@ Image TcpSession::render(const Scene& scene, const SceneSource& source,
                          const trace::RenderSettings& settings,
                          const SpaceOptions& options, SpaceStats* stats,
                          const trace::RenderPlan* plan) {
-    FixedJob fixed = FixedJob::of(source, settings, options);
+    FixedJob fixed = FixedJob::of(source.parse, settings, options);
     auto retire = [&] {
         if (!coordinator_) return;
         processes_started_before_ += coordinator_->processes_started();

@@ -407,12 +407,8 @@ class Worker {
         popts.function_hooks = trace::parse_time_function_hooks();
         popts.object_queries = trace::parse_time_object_queries();
         popts.write_user_files = false;  // the coordinator's parse writes them
-        popts.library_paths = fixed.library_paths;
-        popts.declares = fixed.declares;
-        popts.language_version = fixed.language_version;
-        popts.output_file_type = fixed.output_file_type;
+        fixed.apply_to(popts);
         job_->frame.animation.apply_to(popts);
-        popts.max_loop_iterations = fixed.max_loop_iterations;
         settings_.width = popts.image_width = fixed.width;
         settings_.height = popts.image_height = fixed.height;
         settings_.alpha = fixed.alpha;
@@ -430,8 +426,7 @@ class Worker {
         std::vector<uint8_t> hosted(size_t(walls.box_count()), 0);
         for (int b : mine_) hosted[size_t(b)] = 1;
         popts.expected_objects = job_->frame.expected_objects.at(size_t(self_));
-        const std::vector<WalkReach> walk =
-            walk_reaches_of_flat(job_->frame.walk_reaches);
+        const std::vector<WalkReach>& walk = job_->frame.walk_reaches;
         popts.keep_object = [&walls, &hosted, &walk](const Object& o) {
             for (int b : boxes_holding(walls, o, walk))
                 if (hosted[size_t(b)]) return true;
@@ -455,9 +450,7 @@ class Worker {
             error = e.what();
             return false;
         }
-        if (fixed.max_trace_level)
-            scene_.settings.max_trace_level = *fixed.max_trace_level;
-        if (fixed.adc_bailout) scene_.settings.adc_bailout = float(*fixed.adc_bailout);
+        fixed.override_settings(scene_);
         space_.results = fixed.results;
         space_.queue = fixed.queue;
         threads_ = options_.threads > 0 ? options_.threads : fixed.threads;

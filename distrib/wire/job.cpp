@@ -30,18 +30,23 @@ void check(const FixedJob& f) {
 
 }  // namespace
 
-FixedJob FixedJob::of(const SceneSource& source, const trace::RenderSettings& settings,
+void ParseJob::apply_to(parser::ParseOptions& o) const {
+    o.library_paths = library_paths;
+    o.declares = declares;
+    o.language_version = language_version;
+    o.output_file_type = output_file_type;
+    o.max_loop_iterations = max_loop_iterations;
+}
+
+void ParseJob::override_settings(Scene& parsed) const {
+    if (max_trace_level) parsed.settings.max_trace_level = *max_trace_level;
+    if (adc_bailout) parsed.settings.adc_bailout = float(*adc_bailout);
+}
+
+FixedJob FixedJob::of(const ParseJob& parse, const trace::RenderSettings& settings,
                       const SpaceOptions& options) {
     FixedJob f;
-    f.scene = source.text;
-    f.name = source.display_name;
-    f.library_paths = source.library_paths;
-    f.declares = source.declares;
-    f.language_version = source.language_version;
-    f.output_file_type = source.output_file_type;
-    f.max_loop_iterations = source.max_loop_iterations;
-    f.max_trace_level = source.max_trace_level;
-    f.adc_bailout = source.adc_bailout;
+    static_cast<ParseJob&>(f) = parse;
     f.width = settings.width;
     f.height = settings.height;
     f.alpha = settings.alpha;
@@ -55,9 +60,9 @@ FixedJob FixedJob::of(const SceneSource& source, const trace::RenderSettings& se
     return f;
 }
 
-AnimationValues AnimationValues::of(const SceneSource& s) {
-    return {s.clock,        s.clock_delta,   s.initial_clock, s.final_clock,
-            s.frame_number, s.initial_frame, s.final_frame};
+AnimationValues AnimationValues::of(const parser::ParseOptions& o) {
+    return {o.clock,        o.clock_delta,   o.initial_clock, o.final_clock,
+            o.frame_number, o.initial_frame, o.final_frame};
 }
 
 void AnimationValues::apply_to(parser::ParseOptions& o) const {
@@ -65,6 +70,24 @@ void AnimationValues::apply_to(parser::ParseOptions& o) const {
     o.initial_clock = initial_clock, o.final_clock = final_clock;
     o.frame_number = frame_number, o.initial_frame = initial_frame;
     o.final_frame = final_frame;
+}
+
+void to_json(json& j, const WalkReach& r) {
+    auto finite = [](const Point3& v) {
+        constexpr Real kMax = std::numeric_limits<Real>::max();
+        return std::array<Real, 3>{std::clamp(v.x, -kMax, kMax),
+                                   std::clamp(v.y, -kMax, kMax),
+                                   std::clamp(v.z, -kMax, kMax)};
+    };
+    j = {{"box", r.box}, {"lo", finite(r.hull.lo)}, {"hi", finite(r.hull.hi)}};
+}
+
+void from_json(const json& j, WalkReach& r) {
+    job_fields_detail::read_json("walk_reaches", j.at("box"), r.box);
+    std::array<Real, 3> lo, hi;
+    job_fields_detail::read_json("walk_reaches", j.at("lo"), lo);
+    job_fields_detail::read_json("walk_reaches", j.at("hi"), hi);
+    r.hull = Bounds3{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
 }
 
 json to_json(const FixedJob& f) { return job_to_json(f); }

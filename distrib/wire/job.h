@@ -14,8 +14,9 @@
 #include <utility>
 #include <vector>
 
+#include "core/scene.h"
+#include "distrib/object_boxes.h"
 #include "distrib/space_render.h"
-#include "distrib/tcp.h"
 #include "distrib/wire/job_fields.h"
 #include "parser/parser.h"
 #include "trace/render.h"
@@ -27,22 +28,19 @@ std::array<std::pair<SpaceOptions::Results, const char*>, 3> enum_names(
     SpaceOptions::Results);
 std::array<std::pair<QueuePolicy, const char*>, 2> enum_names(QueuePolicy);
 
-// What every worker needs, whatever the mode: the scene and the settings its parse and
-// its pixels depend on.
-struct SceneJob {
+// What a worker parses, and what the parse depends on: every worker parses the scene
+// as the coordinator did.
+struct ParseJob {
     std::string scene;  // the main file's text (empty: workers read the file `name`)
     std::string name;   // its path: diagnostics and relative includes
     std::vector<std::string> library_paths;
     std::map<std::string, double> declares;
-    std::optional<int> language_version;
-    char output_file_type = 'N';  // the scene reads it (+F's letter)
-    uint64_t max_loop_iterations = 0;
+    std::optional<int> language_version;        // +MV
+    char output_file_type = 'N';                // the scene reads it (+F's letter)
+    uint64_t max_loop_iterations = 10'000'000;  // the coordinator's parse limit
     // The coordinator's overrides of the scene's global_settings.
     std::optional<int> max_trace_level;
     std::optional<double> adc_bailout;
-    int width = 0, height = 0;
-    bool alpha = false;
-    bool antialias = false;
 
     template <class Self, class Visit>
     static void fields(Self& s, Visit&& v) {
@@ -55,6 +53,24 @@ struct SceneJob {
         v("max_loop_iterations", s.max_loop_iterations);
         v("max_trace_level", s.max_trace_level);
         v("adc_bailout", s.adc_bailout);
+    }
+    // The parse's settings (library paths, declares, version, +F, loop limit).
+    void apply_to(parser::ParseOptions& options) const;
+    // The overrides of the parsed scene's global_settings.
+    void override_settings(Scene& parsed) const;
+    bool operator==(const ParseJob&) const = default;
+};
+
+// What every worker needs, whatever the mode: the scene and the settings its parse and
+// its pixels depend on.
+struct SceneJob : ParseJob {
+    int width = 0, height = 0;
+    bool alpha = false;
+    bool antialias = false;
+
+    template <class Self, class Visit>
+    static void fields(Self& s, Visit&& v) {
+        v("parse_job", static_cast<copy_const_t<Self, ParseJob>&>(s));
         v("width", s.width);
         v("height", s.height);
         v("alpha", s.alpha);
@@ -84,7 +100,7 @@ struct FixedJob : SceneJob {
         v("boxes", s.boxes);
         v("balanced", s.balanced);
     }
-    static FixedJob of(const SceneSource& source, const trace::RenderSettings& settings,
+    static FixedJob of(const ParseJob& parse, const trace::RenderSettings& settings,
                        const SpaceOptions& options);
     bool operator==(const FixedJob&) const = default;
 };
@@ -104,9 +120,16 @@ struct AnimationValues {
         v("initial_frame", s.initial_frame);
         v("final_frame", s.final_frame);
     }
-    static AnimationValues of(const SceneSource& source);
+    static AnimationValues of(const parser::ParseOptions& options);
     void apply_to(parser::ParseOptions& options) const;
     bool operator==(const AnimationValues&) const = default;
+};
+
+// What a TCP session's workers parse: the scene as the coordinator parsed it, at one
+// frame's animation values.
+struct SceneSource {
+    ParseJob parse;
+    AnimationValues animation;
 };
 
 // What changes from frame to frame: the "frame" message, and part of the first job.
@@ -115,8 +138,8 @@ struct FrameJob {
     trace::RenderPlan plan;
     std::vector<size_t> expected_objects;  // objects each worker keeps (a parse check)
     // Boxes that also hold the objects around one whose surface can lie outside its
-    // POV-Ray box (flat_walk_reaches, distrib/object_boxes.h).
-    std::vector<Real> walk_reaches;
+    // POV-Ray box (distrib/object_boxes.h).
+    std::vector<WalkReach> walk_reaches;
 
     template <class Self, class Visit>
     static void fields(Self& s, Visit&& v) {
@@ -148,6 +171,11 @@ struct WorkerJob {
         v("owner", s.owner);
     }
 };
+
+// A walk reach in a job: {"box", "lo", "hi"}; JSON has no infinity, so an unbounded
+// side travels as the largest finite number.
+void to_json(nlohmann::json& j, const WalkReach& reach);
+void from_json(const nlohmann::json& j, WalkReach& reach);
 
 nlohmann::json to_json(const FixedJob& job);
 FixedJob fixed_job_from_json(const nlohmann::json& j);

@@ -220,8 +220,8 @@ int live_children() {
 // ones and gives the same image.
 TEST_F(SpaceRender, ReleasedWorkersExitAndTheNextFrameStartsNewOnes) {
     SceneSource source;
-    source.text = kScene;
-    source.display_name = "space.pov";
+    source.parse.scene = kScene;
+    source.parse.name = "space.pov";
     TcpOptions tcp;
     tcp.procs = 2;
     tcp.fork_workers = true;
