@@ -31,8 +31,9 @@ constexpr uint16_t kFrameMagic = 0x5057;  // "PW"
 // 5: sample records carry a focal-blur ray index (20 bytes); 8: the photon map (Photons
 // frames, "photons" message), shadow states carry photon_caustics; 9: ray records carry a
 // dispersion band (flag 128); 10: shadow states carry "no media or fog" (bit 2); 12:
-// typed control messages (11), and every frame carries a CRC-32.
-constexpr uint8_t kProtocolVersion = 12;
+// typed control messages (11), and every frame carries a CRC-32; 13: a job's walk
+// reaches as {box, lo, hi} records.
+constexpr uint8_t kProtocolVersion = 13;
 constexpr size_t kHeaderSize = 16;
 // Bounds memory per frame; senders split larger batches.
 constexpr size_t kMaxBodySize = size_t(4) << 20;
