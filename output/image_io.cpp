@@ -13,6 +13,7 @@
 #include <mutex>
 #include <random>
 
+#include "core/self_exe.h"
 #include "output/decoded_image.h"
 #include "output/image_backend.h"
 #include "output/jpeg_reader.h"
@@ -58,13 +59,9 @@ void set_partial(const fs::path& tmp) {
 // built it.
 const ImageBackend* load_backend(std::string& error) {
     std::vector<std::string> candidates;
-    char exe[4096];
-    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (n > 0) {
-        exe[n] = 0;
+    if (const std::string exe = self_exe(); !exe.empty())
         candidates.push_back(
             (fs::path(exe).parent_path() / POVWALL_IMAGE_BACKEND_NAME).string());
-    }
     candidates.push_back(POVWALL_IMAGE_BACKEND_PATH);
     for (const std::string& path : candidates) {
         // Lazy: most of OpenImageIO's ~260 libraries' functions are never called, and
