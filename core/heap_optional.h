@@ -82,6 +82,11 @@ class HeapValue {
         return *p_;
     }
     bool allocated() const { return p_ != nullptr; }
+    // For a container: whether it holds nothing. Without a call: an unset value's read
+    // goes through default_value()'s guarded static, and clip lists are asked this on
+    // every inside test of a CSG.
+    bool empty() const requires requires(const T& t) { t.empty(); }
+    { return !p_ || p_->empty(); }
     void clear() { p_.reset(); }  // back to T{}
 
   private:

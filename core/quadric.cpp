@@ -270,8 +270,8 @@ bool quadric_clip_bounds(Quadric& q, const std::vector<Object>& clips,
         } else if (const Quadric* other = std::get_if<Quadric>(&c.shape)) {
             cut_by_box(other->box_lo, other->box_len, lo, hi);
         } else if (const Box* box = std::get_if<Box>(&c.shape);
-                   box && c.transform.is_identity() && c.clipped_by->empty() &&
-                   c.bounded_by->empty()) {
+                   box && c.transform.is_identity() && c.clipped_by.empty() &&
+                   c.bounded_by.empty()) {
             // An untransformed box's BBox: its corners.
             Vector3 bmin, bmax;
             for (int a = 0; a < 3; ++a) {
@@ -308,7 +308,7 @@ bool quadric_csg_bounds_impl(std::vector<Object>& children,
         const Object& c = children[i];
         if (std::holds_alternative<Quadric>(c.shape)) {
             // Its own clips would cut its box again there.
-            if (!inverted[i] && !c.clipped_by->empty()) return false;
+            if (!inverted[i] && !c.clipped_by.empty()) return false;
             continue;
         }
         if (inverted[i] || std::holds_alternative<HeightField>(c.shape)) continue;

@@ -923,8 +923,8 @@ struct Object {
 // off.
 inline bool pov_splits_union(const Object& o) {
     const Csg* csg = std::get_if<Csg>(&o.shape);
-    return csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by->empty() &&
-           o.bounded_by->empty() && o.split_union;
+    return csg && csg->kind == CsgKind::Union && !o.inverse && o.clipped_by.empty() &&
+           o.bounded_by.empty() && o.split_union;
 }
 
 // Whether an object linked to the scene keeps its bounded_by (Link_To_Frame with
@@ -932,7 +932,7 @@ inline bool pov_splits_union(const Object& o) {
 // box did not come from its coefficients; another shape's bound is removed as
 // unnecessary. CSG children always keep theirs.
 inline bool pov_keeps_bound(const Object& frame_object) {
-    if (frame_object.bounded_by->empty()) return false;
+    if (frame_object.bounded_by.empty()) return false;
     if (const Quadric* q = std::get_if<Quadric>(&frame_object.shape))
         return !q->automatic_bounds;
     return std::holds_alternative<Csg>(frame_object.shape) ||

@@ -43,8 +43,8 @@ Vector3 Interpreter::object_extent(const Token& at, const Object& o, bool max) {
     if (options_.object_queries) {
         box = options_.object_queries->box(o);
     } else if (const Csg* csg = std::get_if<Csg>(&o.shape);
-               csg && csg->pov_box && !o.inverse && o.clipped_by->empty() &&
-               o.bounded_by->empty()) {
+               csg && csg->pov_box && !o.inverse && o.clipped_by.empty() &&
+               o.bounded_by.empty()) {
         box = csg->pov_box;  // without the renderer only a text's own box is known
     } else {
         unsupported(at, max ? "max_extent" : "min_extent");

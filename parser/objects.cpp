@@ -1296,7 +1296,7 @@ void Interpreter::parse_top_level_item(const Token& t) {
         auto warn_removed_bounds = [&](auto& self, const Object& o) -> void {
             if (pov_splits_union(o)) {
                 for (const Object& c : std::get<Csg>(o.shape).children) self(self, c);
-            } else if (!o.bounded_by->empty() && !pov_keeps_bound(o)) {
+            } else if (!o.bounded_by.empty() && !pov_keeps_bound(o)) {
                 warn(t, "unnecessary bounding object removed");
             }
         };

@@ -94,7 +94,7 @@ void Interpreter::parse_quadric(Object& out) {
 }
 
 void Interpreter::check_algebraic_bounds(const Object& obj, const Token& keyword) {
-    if (std::holds_alternative<Poly>(obj.shape) && !obj.clipped_by->empty() &&
+    if (std::holds_alternative<Poly>(obj.shape) && !obj.clipped_by.empty() &&
         obj.clipped_by->front().inverse) {
         // POV-Ray gives a transformed poly the first clip object's box, inverse or not.
         unsupported(keyword, "a poly whose first clipped_by object is inverse");

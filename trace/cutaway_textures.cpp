@@ -66,7 +66,7 @@ void visit(const Object& o, bool inverted, const Object* named,
     const Csg* csg = std::get_if<Csg>(&o.shape);
     if (!csg) return f(o, named);
     if (!named &&
-        (pov_csg(csg->kind, inverted) != PovCsg::Union || !o.clipped_by->empty()))
+        (pov_csg(csg->kind, inverted) != PovCsg::Union || !o.clipped_by.empty()))
         named = &o;
     for (size_t i = 0; i < csg->children.size(); ++i)
         visit(csg->children[i], part_inverted(o, inverted, i), named, f);

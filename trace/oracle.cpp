@@ -77,7 +77,7 @@ void object_first(const Object& o, const Ray& ray, Real t_min, OracleHit& out,
         unsupported_from = std::min(unsupported_from, bounds_entry(o, ray, t_min));
     };
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
-        if (csg->kind != CsgKind::Union || o.inverse || !o.clipped_by->empty()) {
+        if (csg->kind != CsgKind::Union || o.inverse || !o.clipped_by.empty()) {
             give_up();
             return;
         }
@@ -86,7 +86,7 @@ void object_first(const Object& o, const Ray& ray, Real t_min, OracleHit& out,
                          frame && pov_splits_union(o));
         return;
     }
-    if (o.inverse || !o.clipped_by->empty()) {
+    if (o.inverse || !o.clipped_by.empty()) {
         give_up();
         return;
     }

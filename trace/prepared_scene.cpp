@@ -21,19 +21,27 @@ namespace povwall::trace {
 namespace {
 
 struct WorldCrossing {
+    // Every field from its arguments or a few stores: a CSG builds one for each crossing
+    // of each child on every ray, and zeroing the whole first (rep stos) cost more than
+    // the rest of building it.
+    WorldCrossing(Real t_, const Object* leaf_, const ShapeHit& hit_, bool flip_)
+        : t(t_), leaf(leaf_), hit(hit_), own_point(hit_.own_point), flip(flip_) {}
+    WorldCrossing(Real t_, const Object* leaf_, bool flip_, const Vector3& given_)
+        : t(t_), leaf(leaf_), given(given_), flip(flip_), has_normal(true) {}
+
     Real t;
     const Object* leaf;
     // Where the shape says the crossing is, when that is not at distance t along the ray
     // (a julia_fractal's later crossings: POV-Ray's depth there lags its point).
-    bool own_point = false;
     Point3 point{0, 0, 0};
     // The outward normal is found only for the crossing a ray keeps (most crossings are
     // behind it, and a shadow ray keeps none): from the shape's hit, or given (a sphere
     // met in world space); `flip` negates it (an inverse object, a difference's cutter).
-    bool flip = false;
-    bool has_normal = false;
     Vector3 given{0, 0, 0};
     ShapeHit hit{};
+    bool own_point = false;
+    bool flip = false;
+    bool has_normal = false;
     Point3 at(const Ray& ray) const { return own_point ? point : ray.at(t); }
     // `world`: the crossing's point.
     Vector3 normal(const Point3& world) const {
@@ -87,10 +95,11 @@ namespace {
 
 bool inside_clips(const Object& o, const Point3& p);
 
-// Leaf shape crossings along a world ray, in world distances, with outward world normals.
+// Leaf shape crossings along a world ray, in world distances, with outward world normals
+// (`backwards`: appended last first).
 void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
                     std::vector<WorldCrossing>& out, const WantedRange* wanted,
-                    const RayFlags* flags) {
+                    const RayFlags* flags, bool backwards) {
     // A sphere moved, turned or scaled evenly is a sphere in world space, met by the
     // world ray as it is (POV-Ray moves its centre and radius; only an ellipsoid works in
     // its own space): the same last bits as a sphere outside CSG, which decide hits on a
@@ -101,12 +110,11 @@ void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
         const Sphere world{o.transform.point(s->centre), s->radius * scale};
         Crossings cs;
         intersect_sphere(world, ray.origin, ray.direction, cs);
-        for (int i = 0; i < cs.n; ++i) {
-            WorldCrossing c{cs.c[i].t, &o};
-            c.flip = o.inverse;
-            c.has_normal = true;
-            c.given = sphere_normal(world, ray.at(cs.c[i].t));
-            out.push_back(c);
+        // Built where they stay: a copy of a local just written stalls on store
+        // forwarding (this runs for every CSG child on every shadow ray).
+        for (int k = 0; k < cs.n; ++k) {
+            const Real t = cs.c[backwards ? cs.n - 1 - k : k].t;
+            out.emplace_back(t, &o, o.inverse, sphere_normal(world, ray.at(t)));
         }
         return;
     }
@@ -116,7 +124,7 @@ void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
     // go on past clipped ones, as POV-Ray's (which tests clips before it stops). An
     // isosurface, and a mesh whose walk stops at its nearest hit, test their clip inside
     // their search, as POV-Ray's do.
-    const bool clipped = !o.clipped_by->empty();
+    const bool clipped = !o.clipped_by.empty();
     const Isosurface* clipped_iso = clipped ? std::get_if<Isosurface>(&o.shape) : nullptr;
     const Mesh* clipped_mesh = clipped ? std::get_if<Mesh>(&o.shape) : nullptr;
     if (clipped_mesh && !mesh_stops_at_nearest(*clipped_mesh)) clipped_mesh = nullptr;
@@ -147,12 +155,10 @@ void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
     } else {
         leaf_hits(o, local, hits);
     }
-    for (const ShapeHit& h : hits) {
-        WorldCrossing c{h.t, &o, h.own_point,
-                        h.own_point ? o.transform.point(h.p) : Point3{}};
-        c.flip = o.inverse;
-        c.hit = h;
-        out.push_back(c);
+    for (size_t k = 0; k < hits.size(); ++k) {
+        const ShapeHit& h = hits[backwards ? hits.size() - 1 - k : k];
+        WorldCrossing& c = out.emplace_back(h.t, &o, h, o.inverse);  // in place, as above
+        if (h.own_point) c.point = o.transform.point(h.p);
     }
 }
 
@@ -169,7 +175,8 @@ bool inside_clips(const Object& o, const Point3& p) {
 // `inverted`: whether o's CSG ancestors were inverted an odd number of times.
 void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out,
                       bool csg_child = false, const WantedRange* wanted = nullptr,
-                      const RayFlags* flags = nullptr, bool inverted = false);
+                      const RayFlags* flags = nullptr, bool inverted = false,
+                      bool backwards = false);
 
 // POV-Ray's Ray_In_Bound: the ray passes when, for every bounding object, it meets it
 // somewhere ahead (MIN_ISECT_DEPTH on, as Find_Intersection; the bound's own bounds and
@@ -178,7 +185,7 @@ bool ray_in_bound(const std::vector<Object>& bound, const Ray& ray) {
     std::vector<WorldCrossing> cs;
     for (const Object& b : bound) {
         cs.clear();
-        if (b.bounded_by->empty() || ray_in_bound(*b.bounded_by, ray))
+        if (b.bounded_by.empty() || ray_in_bound(*b.bounded_by, ray))
             object_crossings(b, ray, cs);
         const bool meets = std::any_of(cs.begin(), cs.end(), [](const WorldCrossing& c) {
             return c.t >= kMinIsectDepth;
@@ -190,7 +197,7 @@ bool ray_in_bound(const std::vector<Object>& bound, const Ray& ray) {
 
 void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing>& out,
                       bool csg_child, const WantedRange* wanted, const RayFlags* flags,
-                      bool inverted) {
+                      bool inverted, bool backwards) {
     size_t start = out.size();
     if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
         // The children this ray does not see: neither their crossings nor (in a merge)
@@ -203,13 +210,13 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
         // In POV-Ray's push order: a plain union pushes its children's intersections as
         // they come; every other CSG collects each child's on a stack of its own and
         // moves them over from the top, reversing them (csg.cpp All_Intersections).
-        const bool reversed = pov != PovCsg::Union || o.inverse || !o.clipped_by->empty();
+        const bool reversed = pov != PovCsg::Union || o.inverse || !o.clipped_by.empty();
         for (size_t i = 0; i < csg->children.size(); ++i) {
             // A child's bound is never removed: a ray outside it skips the child (its
             // inside still counts for the others' crossings).
             const Object& child = csg->children[i];
             if (skipped(i)) continue;
-            if (!child.bounded_by->empty() && !ray_in_bound(*child.bounded_by, ray))
+            if (!child.bounded_by.empty() && !ray_in_bound(*child.bounded_by, ray))
                 continue;
             // POV-Ray inverts a difference's later children (a CSG among them turns into
             // its morphed kind: a union into an intersection of inverted children).
@@ -219,8 +226,8 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             // The child's crossings go straight into `out` and are filtered there (no
             // buffer per CSG per ray).
             const size_t mark = out.size();
-            object_crossings(child, ray, out, true, nullptr, flags, child_inverted);
-            if (reversed) std::reverse(out.begin() + ptrdiff_t(mark), out.end());
+            object_crossings(child, ray, out, true, nullptr, flags, child_inverted,
+                             reversed);
             // A union seen as a union keeps every crossing of its children: no inside
             // tests (text is a union of glyphs, each inside test a glyph outline walk).
             if (csg->kind == CsgKind::Union && pov != PovCsg::Intersection) continue;
@@ -249,7 +256,7 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
                 if (kept != k) out[kept] = out[k];
                 ++kept;
             }
-            out.resize(kept);
+            out.erase(out.begin() + ptrdiff_t(kept), out.end());
         }
         // An inverse CSG inverts each leaf under it (CSG::Invert), but a triangle,
         // polygon, patch or parametric keeps its normal.
@@ -258,10 +265,13 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
                 if (leaf_invertible(*out[k].leaf)) out[k].flip = !out[k].flip;
         }
     } else {
-        leaf_crossings(o, ray, csg_child, out, wanted, flags);
+        // A leaf appends its crossings in the order asked for; a CSG's are reversed where
+        // they lie (below), 160 bytes a swap.
+        leaf_crossings(o, ray, csg_child, out, wanted, flags, backwards);
+        backwards = false;
     }
     // POV-Ray's bicubic_patch never tests its clips (only its box shrinks by them).
-    if (!o.clipped_by->empty() && !std::holds_alternative<BicubicPatch>(o.shape)) {
+    if (!o.clipped_by.empty() && !std::holds_alternative<BicubicPatch>(o.shape)) {
         size_t w = start;
         for (size_t k = start; k < out.size(); ++k) {
             if (inside_clips(o, out[k].at(ray))) out[w++] = out[k];
@@ -270,8 +280,9 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
         // breaks after pushing it): a ray leaving its surface must not see the next.
         if (!csg_child && std::holds_alternative<JuliaFractal>(o.shape))
             w = std::min(w, start + 1);
-        out.resize(w);
+        out.erase(out.begin() + ptrdiff_t(w), out.end());
     }
+    if (backwards) std::reverse(out.begin() + ptrdiff_t(start), out.end());
 }
 
 // A leaf's bounds in the world, before its clips.
@@ -378,9 +389,9 @@ bool may_hit_outside_pov_box(const Object& o, bool restricts = false) {
         (std::holds_alternative<Disc>(o.shape) ||
          std::holds_alternative<HeightField>(o.shape)))
         return true;
-    if (!o.bounded_by->empty() && !o.bounds_are_clips) return true;
+    if (!o.bounded_by.empty() && !o.bounds_are_clips) return true;
     // A bicubic_patch's clips shrink its box and leave its surface whole.
-    if (!o.clipped_by->empty() && std::holds_alternative<BicubicPatch>(o.shape))
+    if (!o.clipped_by.empty() && std::holds_alternative<BicubicPatch>(o.shape))
         return true;
     for (const Object& c : *o.clipped_by)
         if (may_hit_outside_pov_box(c, true)) return true;
@@ -418,7 +429,7 @@ bool inside_object(const Object& o, const Point3& p) {
 bool inside_object(const Object& o, const Point3& p, bool inverted) {
     // POV-Ray's Inside_Object: outside a clip is outside, inverse or not (Invert leaves
     // the clips as they are).
-    if (!o.clipped_by->empty() && !inside_clips(o, p)) return false;
+    if (!o.clipped_by.empty() && !inside_clips(o, p)) return false;
     return inside_unclipped(o, p, inverted);
 }
 
@@ -1005,8 +1016,8 @@ void PreparedScene::add_frame_object(const Object& o, uint32_t frame) {
     // (A bounded_by shrinks a shape's POV-Ray box: such spheres and planes take the
     // general path, which tests that box.)
     if (auto s = std::get_if<Sphere>(&o.shape);
-        s && !s->pov_matrix && !o.inverse && o.clipped_by->empty() &&
-        o.bounded_by->empty() && is_similarity(o.transform, scale)) {
+        s && !s->pov_matrix && !o.inverse && o.clipped_by.empty() &&
+        o.bounded_by.empty() && is_similarity(o.transform, scale)) {
         Point3 c = o.transform.point(s->centre);
         Real r = s->radius * scale;
         uint32_t index = uint32_t(spheres_.size());
@@ -1015,7 +1026,7 @@ void PreparedScene::add_frame_object(const Object& o, uint32_t frame) {
         return;
     }
     if (auto pl = std::get_if<Plane>(&o.shape);
-        pl && !o.inverse && o.clipped_by->empty() && o.bounded_by->empty() &&
+        pl && !o.inverse && o.clipped_by.empty() && o.bounded_by.empty() &&
         is_similarity(o.transform, scale)) {
         // Ground planes are tested by every ray: keep them out of the general object
         // path.

@@ -82,7 +82,7 @@ bool any_refracting(const Object& o, bool transparent_above) {
 // normal turns toward a light behind its face, or a camera inside it, sees the light
 // through the solid, which POV-Ray's shadow ray meets.) Affine transforms keep this.
 bool flat_surface(const Object& o) {
-    if (o.inverse || !o.clipped_by->empty() || o.double_illuminate) return false;
+    if (o.inverse || !o.clipped_by.empty() || o.double_illuminate) return false;
     return std::holds_alternative<Plane>(o.shape) ||
            std::holds_alternative<Disc>(o.shape) ||
            std::holds_alternative<Triangle>(o.shape) ||

@@ -238,7 +238,7 @@ void nearest_crossing(const Mesh& m, const LocalRay& r, const Vector3& unit,
 
 bool mesh_as_triangles(const Object& o) {
     const Mesh* m = std::get_if<Mesh>(&o.shape);
-    return m && !m->instanced() && !o.inverse && o.clipped_by->empty();
+    return m && !m->instanced() && !o.inverse && o.clipped_by.empty();
 }
 
 bool mesh_stops_at_nearest(const Mesh& m) { return m.hierarchy && !has_inside(m); }
