@@ -546,7 +546,7 @@ class IniReader {
     }
 
     [[noreturn]] void error(const std::string& message) {
-        throw UsageError(where_ + ": " + message);
+        throw IniFileError(where_ + ": " + message);
     }
     void warn(const std::string& message) {
         if (warnings_ && !o_.quiet)

@@ -297,6 +297,9 @@ int main(int argc, char** argv) {
         if (looks_like_pov_switch(cmd) || looks_like_ini_file(cmd))
             return render_main(args);
         throw UsageError("unknown command '" + cmd + "'");
+    } catch (const IniFileError& e) {
+        std::fprintf(stderr, "povwall: error: %s\n", e.what());
+        return exit_code(ExitCode::Error);
     } catch (const UsageError& e) {
         std::string line = "povwall";
         for (int i = 1; i < argc; ++i) line += std::string(" ") + argv[i];

@@ -213,5 +213,10 @@ int run_corpus(int argc, char** argv);
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
+// A mistake inside an INI file, located by its file and line: the command line was
+// fine, so no usage text follows the message.
+struct IniFileError : UsageError {
+    using UsageError::UsageError;
+};
 
 }  // namespace povwall::cli
