@@ -177,7 +177,7 @@ struct ImageMapping {
     // Null when the scene was parsed without an image reader
     // (ParseOptions::image_reader).
     std::shared_ptr<const ImagePixels> pixels;
-    int map_type = 0;     // 0 planar, 1 spherical, 2 cylindrical, 5 torus
+    int map_type = 0;     // 0 planar, 1 spherical, 2 cylindrical, 5 torus; else planar
     int interpolate = 0;  // 0 none, 2 bilinear, 3 bicubic, 4 normalised distance
     bool once = false;
     // image_pattern's value: 0 the grey, 1 the transmit (use_alpha, an image with an

@@ -250,9 +250,11 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             Token at = peek();
             mapping->map_type = parse_int();
             // POV-Ray 3.7.0's map types: 0 planar, 1 spherical, 2 cylindrical, 5 torus
-            // (7, angular, came later).
+            // (7, angular, came later). Only image_map checks it (Parse_Image_Map): a
+            // bump_map, image_pattern or material_map keeps any value, and maps one it
+            // does not know as planar (image_coordinates' default, as map_pos's).
             int mt = mapping->map_type;
-            if (mt != 0 && mt != 1 && mt != 2 && mt != 5)
+            if (block == ImageBlock::ImageMap && mt != 0 && mt != 1 && mt != 2 && mt != 5)
                 error(at, "invalid map_type value");
         } else if (!is_material && (w == "use_color" || w == "use_colour")) {
             mapping->use_index = false;

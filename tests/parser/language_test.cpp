@@ -13,6 +13,7 @@
 #include "parser/parser.h"
 #include "parser/source.h"
 #include "tests/parser/parse_helpers.h"
+#include "tests/scratch_folder.h"
 
 namespace povwall::parser {
 namespace {
@@ -793,6 +794,36 @@ TEST(ImageMap, InputGammaRules) {
                         "pigment { image_map { png \"a.png\" } }"),
                     std::pow(0.21404114f, 1 / 2.2f));
     fs::remove_all(dir);
+}
+
+// Only image_map refuses a map_type POV-Ray 3.7 does not know (Parse_Image_Map); a
+// bump_map, image_pattern or material_map keeps the number (mapped as planar).
+TEST(ImageMap, OnlyImageMapRefusesAnUnknownMapType) {
+    namespace fs = std::filesystem;
+    const fs::path dir = povwall_test::process_scratch("povwall_parser_map_type");
+    std::ofstream(dir / "a.png") << "x";
+    ParseOptions o;
+    o.image_reader = [](const std::string&) {
+        StoredImage s;
+        s.pixels = Image(1, 1);
+        s.format = "png";
+        return s;
+    };
+    auto parse = [&](const std::string& item) {
+        std::ofstream(dir / "s.pov") << "plane { z, 0 " << item << " }\n";
+        return parse_scene_file((dir / "s.pov").string(), o);
+    };
+    try {
+        parse("pigment { image_map { png \"a.png\" map_type 3 } }");
+        ADD_FAILURE() << "image_map took map_type 3";
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.message(), "invalid map_type value");
+        EXPECT_EQ(e.loc().column, 57);  // the value
+    }
+    const Scene bump = parse("normal { bump_map { png \"a.png\" map_type 3 } }");
+    EXPECT_EQ(bump.objects.at(0).texture.at(0).normal->pattern->image->map_type, 3);
+    const Scene pattern = parse("pigment { image_pattern { png \"a.png\" map_type 4 } }");
+    EXPECT_EQ(pattern.objects.at(0).texture.at(0).pigment.pattern->image->map_type, 4);
 }
 
 // An 8-bit file's pixels are kept as codes with a decoding table (4 bytes a pixel, not 5
