@@ -498,11 +498,7 @@ class IniReader {
                 {"version", "MV"}};
             for (const auto& [name, letters] : kFloatSwitch) {
                 if (k == name) {
-                    const double v =
-                        (k == "subset_start_frame" || k == "subset_end_frame")
-                            ? double(int(*f))
-                            : *f;
-                    apply_switch(std::string("+") + letters + number_text(v));
+                    apply_switch(std::string("+") + letters + number_text(*f));
                     return;
                 }
             }

@@ -84,8 +84,10 @@ struct RenderOptions {
         int initial_frame = 1, final_frame = 1;
         double initial_clock = 0.0, final_clock = 1.0;
         bool cyclic = false;
-        int subset_start = 0, subset_end = 0;  // 0: from the first / to the last frame
-        double clock = 0.0;                    // still image
+        // +SF/+EF as given (POV-Ray reads them as numbers): 0 or at least 1 a frame
+        // number, between 0 and 1 a fraction of the frames; unset: the first / the last.
+        std::optional<double> subset_start, subset_end;
+        double clock = 0.0;  // still image
     } animation;
     bool continue_trace = false;  // +C: frames whose image exists are kept, not rendered
     struct FrameValues {

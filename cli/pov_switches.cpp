@@ -114,9 +114,9 @@ bool apply_pov_switch(const std::string& arg, RenderOptions& o) {
     } else if (starts_with_ci(arg, 1, "KC")) {
         o.animation.cyclic = on;
     } else if (starts_with_ci(arg, 1, "SF")) {
-        o.animation.subset_start = int(number(arg, arg.substr(3)));
+        o.animation.subset_start = number(arg, arg.substr(3));
     } else if (starts_with_ci(arg, 1, "EF")) {
-        o.animation.subset_end = int(number(arg, arg.substr(3)));
+        o.animation.subset_end = number(arg, arg.substr(3));
     } else if (starts_with_ci(arg, 1, "SR")) {
         o.start_row = partial(arg, false);
     } else if (starts_with_ci(arg, 1, "ER")) {
@@ -224,10 +224,21 @@ std::vector<Frame> animation_frames(const RenderOptions& o) {
     const std::string ext =
         out.extension().empty() ? format_extension(o.format) : out.extension().string();
     const std::filesystem::path stem = out.parent_path() / out.stem();
-    const int first =
-        a.subset_start > 0 ? std::max(a.subset_start, a.initial_frame) : a.initial_frame;
-    const int last =
-        a.subset_end > 0 ? std::min(a.subset_end, a.final_frame) : a.final_frame;
+    // POV-Ray's subset (animationprocessing.cpp): a value that is 0 or at least 1 is a
+    // frame number, one between them that fraction of the frames (a cyclic animation's
+    // wrap frame counted); the start no earlier than the first frame, the end no earlier
+    // than the start.
+    auto subset_frame = [&](double v) {
+        v = std::max(v, 0.0);
+        if (v == 0 || v >= 1) return int(v);
+        return int((a.final_frame + (a.cyclic ? 1 : 0) - a.initial_frame + 1) * v);
+    };
+    const int first = a.subset_start
+                          ? std::max(subset_frame(*a.subset_start), a.initial_frame)
+                          : a.initial_frame;
+    const int last = a.subset_end ? std::min(std::max(subset_frame(*a.subset_end), first),
+                                             a.final_frame)
+                                  : a.final_frame;
     std::vector<Frame> frames;
     for (int n = first; n <= last; ++n) {
         Frame f;

@@ -182,8 +182,8 @@ std::vector<std::string> povray_command(const RenderOptions& o,
         cmd.push_back("+KI" + shortest(a.initial_clock));
         cmd.push_back("+KF" + shortest(a.final_clock));
         if (a.cyclic) cmd.push_back("+KC");
-        if (a.subset_start > 0) cmd.push_back("+SF" + std::to_string(a.subset_start));
-        if (a.subset_end > 0) cmd.push_back("+EF" + std::to_string(a.subset_end));
+        if (a.subset_start) cmd.push_back("+SF" + shortest(*a.subset_start));
+        if (a.subset_end) cmd.push_back("+EF" + shortest(*a.subset_end));
     } else if (a.clock != 0) {
         cmd.push_back("+K" + shortest(a.clock));
     }

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 #include <string>
 
 #include "core/image.h"
@@ -884,6 +885,37 @@ TEST(Cli, AnimationFramesAreNumberedAndClockedAsPovRay) {
     EXPECT_TRUE(fs::exists(dir / "c10.png") && fs::exists(dir / "c11.png") &&
                 fs::exists(dir / "c12.png"));
     EXPECT_FALSE(fs::exists(dir / "c09.png"));
+}
+
+// POV-Ray's subset of frames: a value between 0 and 1 is a fraction of the frames
+// (10 frames: 0.5 is frame 5, 0.7 frame 7), 0 is frame 0. compare renders only the first
+// frame of the subset in both renderers, frame 0 included (it rendered every frame when
+// an INI started the animation at 0).
+TEST(Cli, SubsetFramesAreFractionsOrNumbersAsInPovRay) {
+    const fs::path dir = scratch() / "subset";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path scene =
+        write_scene("subset.pov", "sphere { 0, 1 pigment { rgb clock } }\n");
+    RunResult r =
+        run("render " + scene.string() + " -W 4 -H 3 -q +KFI1 +KFF10 +SF0.5 +EF0.7 -o " +
+            (dir / "f.png").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::set<std::string> files;
+    for (const auto& e : fs::directory_iterator(dir)) files.insert(e.path().filename());
+    EXPECT_EQ(files, (std::set<std::string>{"f05.png", "f06.png", "f07.png"}));
+    if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
+    // The scene's own INI, which compare reads first.
+    write_scene("subset.ini", "Initial_Frame=0\nFinal_Frame=3\n");
+    const fs::path keep = dir / "keep";
+    r = run("compare " + scene.string() + " -W 4 -H 3 --threads 1 --keep " +
+            keep.string());
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    files.clear();
+    for (const auto& e : fs::directory_iterator(keep))
+        if (e.path().extension() == ".png") files.insert(e.path().filename());
+    EXPECT_EQ(files, (std::set<std::string>{"subset-diff.png", "subset-povray0.png",
+                                            "subset-povwall0.png"}));
 }
 
 TEST(Cli, InterruptedBatchResumesToAllFramesEachAsRenderedAlone) {
