@@ -576,6 +576,26 @@ void Interpreter::invoke_macro(const Token& name, const Macro& m) {
                 // list running past its macro body's #end), which frees that frame's
                 // scope: find the binding again rather than keep a pointer into it.
                 existing = continues ? nullptr : find_binding(key, &scope);
+                // A number's identifier followed by another identifier, no comma
+                // between: POV-Ray passes the one it looked ahead to (Parse_RValue
+                // takes the reference from the current token, which the look-ahead
+                // past a numeric identifier has moved on when it is an identifier
+                // too; punctuation and literals leave it). `M(P Q R)` binds Q, R, R.
+                if (existing && number && after.kind == TokenKind::Word) {
+                    int next_scope = -1;
+                    const uint32_t next_key = after.sym;
+                    if (const Binding* next = find_binding(next_key, &next_scope);
+                        next &&
+                        !std::holds_alternative<std::shared_ptr<Macro>>(next->value)) {
+                        warn(after, "macro argument '" + std::string(id.text) +
+                                        "' is followed by '" + std::string(after.text) +
+                                        "' with no comma: POV-Ray 3.7 passes '" +
+                                        std::string(after.text) + "' in its place");
+                        key = next_key;
+                        scope = next_scope;
+                        existing = find_binding(key, &scope);
+                    }
+                }
                 if (existing || !continues) {
                     b.value = existing ? existing->value : captured;
                     if (existing) {  // else its scope has ended: passed by value

@@ -449,6 +449,32 @@ Say(A[1][2])
 // A #for variable belongs to the current scope (POV-Ray's Parse_For_Param adds it to the
 // innermost table): a macro looping over `i` leaves its caller's `i` alone (a scene's
 // nested macros looped forever). The loop runs while within 1e-10 past its end.
+// POV-Ray 3.7 (its output: "0 1 1 | -1 2 | 1"): a number's identifier followed by
+// another identifier with no comma between is passed as that next identifier, by
+// reference (writes go to it); one followed by a literal or a comma is itself. Each
+// such argument is named in a warning.
+TEST(Directives, IdentifierArgumentsWithoutCommasPassTheNextIdentifier) {
+    std::string out;
+    parse(
+        "#declare P = -1; #declare Q = 0; #declare R = 1;\n"
+        "#macro Three(A B C) #debug concat(str(A, 0, 0), \" \", str(B, 0, 0), \" \", "
+        "str(C, 0, 0), \" | \") #end\n"
+        "#macro Two(A B) #debug concat(str(A, 0, 0), \" \", str(B, 0, 0), \" | \") "
+        "#declare A = 5; #end\n"
+        "Three(P Q R)\nTwo(P 2)\nTwo(R Q)\n#debug str(Q, 0, 0)\n",
+        &out);
+    EXPECT_EQ(
+        out,
+        "test.pov:4:9: warning: macro argument 'P' is followed by 'Q' with no comma: "
+        "POV-Ray 3.7 passes 'Q' in its place\nThree(P Q R)\n        ^\n"
+        "test.pov:4:11: warning: macro argument 'Q' is followed by 'R' with no comma: "
+        "POV-Ray 3.7 passes 'R' in its place\nThree(P Q R)\n          ^\n"
+        "0 1 1 | -1 2 | "
+        "test.pov:6:7: warning: macro argument 'R' is followed by 'Q' with no comma: "
+        "POV-Ray 3.7 passes 'Q' in its place\nTwo(R Q)\n      ^\n"
+        "0 0 | 5");
+}
+
 TEST(Directives, ForVariableIsLocalToItsMacro) {
     std::string out;
     parse(R"(
