@@ -25,4 +25,14 @@ inline int pattern_list_size(PatternKind k) {
     }
 }
 
+// The frequency a new pattern starts with (POV-Ray's parser): 0 for the list patterns,
+// quilted and image_pattern (their value is not wrapped unless a frequency is given), 1
+// for the others.
+inline Real initial_frequency(PatternKind k) {
+    return pattern_list_size(k) != 0 || k == PatternKind::Quilted ||
+                   k == PatternKind::ImagePattern
+               ? 0
+               : 1;
+}
+
 }  // namespace povwall

@@ -269,20 +269,11 @@ PatternSpec::Slope Interpreter::parse_slope() {
     return s;
 }
 
-namespace {
-
-// POV-Ray's parser sets Frequency 0 for these: their value is taken as it is, and
-// `phase` alone does nothing.
-bool starts_at_frequency_zero(PatternKind k) {
-    return entry_list_size(k) != 0 || k == PatternKind::Quilted ||
-           k == PatternKind::ImagePattern;
-}
-
-}  // namespace
-
 bool Interpreter::try_pattern_keyword(const Token& t, PatternSpec& spec) {
     if (!try_pattern_keyword_kind(t, spec)) return false;
-    if (starts_at_frequency_zero(spec.kind)) spec.frequency = 0;
+    // POV-Ray's parser sets Frequency 0 for these (their value is taken as it is, and
+    // `phase` alone does nothing); the others keep the frequency they had.
+    if (initial_frequency(spec.kind) == 0) spec.frequency = 0;
     return true;
 }
 
@@ -478,10 +469,6 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
         turbulence_warp().lambda = parse_single();
     } else if (w == "frequency") {
         spec.frequency = parse_single();
-        // POV-Ray wraps a block or object pattern's entry number then, and blends the
-        // neighbouring entries of its list at the fraction: not done here.
-        if (spec.frequency != 0 && entry_list_size(spec.kind) != 0)
-            unsupported(t, "frequency on a block or object pattern");
     } else if (w == "phase") {
         spec.phase = parse_single();
     } else if (w == "ramp_wave") {

@@ -614,9 +614,9 @@ Vector3 unwarp_normal(const PatternSpec& spec, const Vector3& n) {
 Real value_at(const PatternSpec& spec, const Point3& p, const PatternEnv& env) {
     Real value = raw_value(spec, p, env);
     // Quilted and image_pattern start at frequency 0, as POV-Ray's parser sets them; so
-    // do the block and object patterns, whose entry number is never wrapped here (the
-    // parser refuses a frequency on them).
-    if (spec.frequency != 0.0 && !is_discrete(spec.kind))
+    // do the block and object patterns, whose entry number a frequency wraps as any
+    // pattern's value (then blending the neighbouring entries, search_list).
+    if (spec.frequency != 0.0)
         value = std::fmod(value * spec.frequency + spec.phase, 1.00001);
     if (value < 0.0) value -= std::floor(value);
     switch (spec.wave) {
@@ -688,6 +688,21 @@ Real evaluate_pattern(const PatternSpec& spec, const Point3& world,
     return detail::value_at(spec, detail::warp_point(spec, world), env);
 }
 
+MapLookup search_list(int count, Real value) {
+    MapLookup r;
+    if (count <= 0) return r;
+    if (value >= count - 1) {
+        r.prev = r.cur = count - 1;
+        return r;
+    }
+    int c = 0;
+    while (value > c) ++c;
+    r.cur = c;
+    r.prev = c > 0 ? c - 1 : 0;
+    if (r.prev != r.cur) r.fraction = value - r.prev;
+    return r;
+}
+
 MapLookup search_map(const float* values, int count, Real value) {
     MapLookup r;
     if (count <= 0) return r;
@@ -733,8 +748,7 @@ MapPick pick_map_entries(const PatternSpec& spec, const float* values, int count
     }
     Real value = detail::value_at(spec, pick.point, env);
     if (values == nullptr || count <= 0) {
-        int index = std::clamp(int(value), 0, detail::list_size(spec.kind) - 1);
-        pick.lookup.prev = pick.lookup.cur = index;
+        pick.lookup = search_list(detail::list_size(spec.kind), value);
         return pick;
     }
     pick.lookup = search_map(values, count, value);

@@ -83,10 +83,14 @@ struct MapLookup {
     Real fraction = 0;
 };
 MapLookup search_map(const float* values, int count, Real value);
+// The same over a block or object pattern's list, whose entries POV-Ray's blend map
+// holds at 0, 1, ..., count - 1: the pattern's entry number picks one; a number a
+// frequency, phase or wave moved between two blends them.
+MapLookup search_list(int count, Real value);
 
 // texture_map / checker-of-textures selection at `world`: the entries to blend and the
 // pattern-space point POV-Ray evaluates the nested entries at. With no `values` (checker,
-// hexagon, brick lists) the pattern value is the entry index.
+// hexagon, brick lists) the entries are the list's (search_list).
 struct MapPick {
     MapLookup lookup;
     Point3 point;

@@ -124,16 +124,25 @@ Colour evaluate_pigment(const Pigment& pigment, const Point3& world,
     }
     Real value = detail::value_at(spec, p, env);
 
-    // checker/hexagon/brick/square/triangular/cubic: the value is the index into their
-    // entries, the default colours standing for the entries not given.
+    // checker/hexagon/brick/square/triangular/cubic/object: the value is the entry
+    // number in their list (blended between two where a frequency, phase or wave moved
+    // it), the default colours standing for the entries not given.
     if (detail::is_discrete(spec.kind) && pigment.maps->map_values.empty() &&
         pigment.maps->colour_map.empty()) {
-        int index = std::clamp(int(value), 0, detail::list_size(spec.kind) - 1);
-        if (index < int(pigment.maps->list.size())) {
-            return evaluate_pigment(pigment.maps->list[size_t(index)], p, env, found);
-        }
-        const DefaultMap& d = default_map(spec);
-        return Colour{d.colours[size_t(std::min(index, d.count - 1))]};
+        auto entry = [&](int index, bool* entry_found) {
+            if (index < int(pigment.maps->list.size()))
+                return evaluate_pigment(pigment.maps->list[size_t(index)], p, env,
+                                        entry_found);
+            const DefaultMap& d = default_map(spec);
+            return Colour{d.colours[size_t(std::min(index, d.count - 1))]};
+        };
+        const MapLookup m = search_list(detail::list_size(spec.kind), value);
+        const Colour cur = entry(m.cur, found);
+        if (m.prev == m.cur) return cur;
+        bool prev_found = true;
+        const Colour prev = entry(m.prev, found ? &prev_found : nullptr);
+        if (found) *found = *found || prev_found;
+        return blend(prev, cur, m.fraction);
     }
 
     // pigment_map: blend the two neighbouring pigments, each evaluated at this pattern's

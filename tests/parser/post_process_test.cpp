@@ -315,14 +315,9 @@ TEST(Keywords, RefusedOrCheckedWhereTheyStand) {
               "and difference\n"
               "union { sphere { 0, 1 } sphere { x, 1 } cutaway_textures }\n"
               "                                        ^~~~~~~~~~~~~~~~");
-    // A frequency wraps a block pattern's entry number in POV-Ray (and blends entries);
-    // 0 changes nothing.
-    EXPECT_EQ(
-        full_error_of("plane { y, 0 pigment { hexagon frequency 2 } }"),
-        "test.pov:1:32: error: unsupported: frequency on a block or object pattern\n"
-        "plane { y, 0 pigment { hexagon frequency 2 } }\n"
-        "                               ^~~~~~~~~");
-    EXPECT_EQ(full_error_of("plane { y, 0 pigment { checker frequency 0 } }"),
+    // A frequency wraps a block pattern's entry number, as POV-Ray's (golden
+    // block_pattern_frequency).
+    EXPECT_EQ(full_error_of("plane { y, 0 pigment { hexagon frequency 2 } }"),
               "(no error)");
     // area_illumination renders on an area light; on another light POV-Ray lights the
     // side facing away from it.

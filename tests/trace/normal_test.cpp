@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/pattern_lists.h"
 #include "tests/trace/pov_reference.h"
 #include "trace/pattern.h"
 
@@ -47,6 +48,7 @@ constexpr double kNormalTolerance = 1e-3;
 Normal with(PatternKind kind, double amount) {
     Normal n;
     n.pattern.edit().kind = kind;
+    n.pattern.edit().frequency = initial_frequency(kind);  // as parsed
     n.amount = amount;
     return n;
 }

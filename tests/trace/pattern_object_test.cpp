@@ -47,6 +47,7 @@ Object sphere(Point3 centre, Real radius) {
 Pigment object_pigment(Object o, bool colours) {
     Pigment p;
     p.pattern.edit().kind = PatternKind::ObjectInside;
+    p.pattern.edit().frequency = 0;  // as parsed
     p.pattern.edit().object = std::make_shared<const Object>(std::move(o));
     if (colours) {
         Pigment out, in;

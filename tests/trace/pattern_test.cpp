@@ -205,7 +205,9 @@ TEST(PatternVsPovray, DiscretePatternsAndDefaultMaps) {
     test::TopView view;
     view.extent = 7.3;
     Pigment checker;
+    // Specs as parsed: the list patterns start at frequency 0 (initial_frequency).
     checker.pattern.edit().kind = PatternKind::Checker;
+    checker.pattern.edit().frequency = 0;
     EXPECT_LE(max_pigment_error("checker", checker, view), kTol);  // default blue/green
     Pigment a, b;
     a.colour = Colour{Rgb{0.2f, 0.4f, 0.6f}};
@@ -216,9 +218,11 @@ TEST(PatternVsPovray, DiscretePatternsAndDefaultMaps) {
         kTol);
     Pigment hex;
     hex.pattern.edit().kind = PatternKind::Hexagon;
+    hex.pattern.edit().frequency = 0;
     EXPECT_LE(max_pigment_error("hexagon", hex, view), kTol);
     Pigment brick;
     brick.pattern.edit().kind = PatternKind::Brick;
+    brick.pattern.edit().frequency = 0;
     brick.pattern.edit().vector2 = {1, 0.5, 0.7};
     brick.pattern.edit().scalar = 0.1;
     test::TopView side = view;
@@ -425,6 +429,7 @@ TEST(PatternVsPovray, AveragePigments) {
     Pigment a = patterned(PatternKind::Bozo);
     Pigment b;
     b.pattern.edit().kind = PatternKind::Checker;
+    b.pattern.edit().frequency = 0;
     Pigment avg;
     avg.pattern.edit().kind = PatternKind::Average;
     avg.pattern.edit().transform = Transform::scale({0.7, 0.7, 0.7});
@@ -462,6 +467,7 @@ TEST(PatternMaps, SearchMapFollowsPovRayBlendRules) {
 TEST(PatternMaps, PickEntriesOfCheckerTextures) {
     PatternSpec spec;
     spec.kind = PatternKind::Checker;
+    spec.frequency = 0;
     MapPick a = pick_map_entries(spec, nullptr, 0, {0.5, 0.5, 0.5}, {});
     MapPick b = pick_map_entries(spec, nullptr, 0, {1.5, 0.5, 0.5}, {});
     EXPECT_EQ(a.lookup.cur, 0);
@@ -477,6 +483,7 @@ TEST(PatternVsPovray, PigmentMap) {
     inner1.pattern.edit().transform = Transform::scale({0.3, 0.3, 0.3});
     Pigment inner2;
     inner2.pattern.edit().kind = PatternKind::Checker;
+    inner2.pattern.edit().frequency = 0;
     Pigment p;
     p.pattern.edit().kind = PatternKind::Gradient;
     p.pattern.edit().vector = {1, 0, 0};
