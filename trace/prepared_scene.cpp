@@ -1571,15 +1571,59 @@ bool PreparedScene::closest_hit_without(const Ray& ray, Real t_min, Real t_max,
                                 nearest_sphere = id;
                                 return false;
                             });
+            if (n - spheres < 2 || !pov_slab_tree_) {
+                for (size_t i = spheres; i < n; ++i) {
+                    // Objects hidden from this ray kind can have a hit beyond a visible
+                    // one: a primitive seen in an earlier leaf was fully tested there.
+                    if (!ctx.mailbox.first_visit(ids[i])) continue;
+                    if (box_rejects(ids[i])) {
+                        ++ctx.tests;
+                        continue;
+                    }
+                    consider(ids[i]);
+                }
+                tmax = reach;
+                return false;
+            }
+            // Several objects: nearest box entry first, as POV-Ray's slab tree visits
+            // them, and none whose box starts past the nearest hit so far (a ray through
+            // a stack of see-through plates sharing a leaf tests the next plate, not
+            // the whole stack). `reach` only shrinks, so a primitive left out here is
+            // never wanted by a later leaf either.
+            thread_local std::vector<std::pair<Real, uint32_t>> by_entry;
+            by_entry.clear();
+            const Real unit = length(ray.direction);
             for (size_t i = spheres; i < n; ++i) {
-                // Objects hidden from this ray kind can have a hit beyond a visible one:
-                // a primitive seen in an earlier leaf was fully tested there.
-                if (!ctx.mailbox.first_visit(ids[i])) continue;
-                if (box_rejects(ids[i])) {
+                const uint32_t id = ids[i];
+                if (!ctx.mailbox.first_visit(id)) continue;
+                const PovPrim& p = pov_[id - sphere_count_];
+                if (kind_[id] != PrimKind::Object || !(p.tests & kPovSlabTree)) {
+                    by_entry.emplace_back(-kInfinity, id);
+                    continue;
+                }
+                Real entry;
+                if ((pov_root_tested_ && !pov_ray.root_accepts([&](const PovRay& r) {
+                        return slab_test(pov_root_, r);
+                    })) ||
+                    !slab_test(p.box, pov_ray.get(), entry)) {
                     ++ctx.tests;
                     continue;
                 }
-                consider(ids[i]);
+                // The float box may end an ulp inside its object (POV-Ray rounds its
+                // corners to nearest): a margin of ~100 float ulps of the coordinates.
+                const Real margin =
+                    1e-5 * (std::fabs(p.box.lo[0]) + std::fabs(p.box.lo[1]) +
+                            std::fabs(p.box.lo[2]) + p.box.len[0] + p.box.len[1] +
+                            p.box.len[2] + std::fabs(ray.origin.x) +
+                            std::fabs(ray.origin.y) + std::fabs(ray.origin.z));
+                by_entry.emplace_back((entry - margin) / unit, id);
+            }
+            std::stable_sort(
+                by_entry.begin(), by_entry.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+            for (const auto& [entry, id] : by_entry) {
+                if (entry > reach) break;
+                consider(id);
             }
             tmax = reach;
             return false;
