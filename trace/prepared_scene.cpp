@@ -1446,6 +1446,19 @@ bool PreparedScene::closest_hit(const Ray& ray, Real t_min, Real t_max, RayUse u
                                ray_end < 0 ? t_max : ray_end, {});
 }
 
+// Where `ray` enters `b` (its parameter; -infinity from inside or along an unbounded
+// side), a hair early: a lower bound of every hit inside b.
+static Real bounds_entry(const Bounds3& b, const Ray& ray) {
+    Real entry = -kInfinity;
+    for (int a = 0; a < 3; ++a) {
+        const Real d = ray.direction[a];
+        if (d == 0 || !std::isfinite(b.lo[a]) || !std::isfinite(b.hi[a])) continue;
+        const Real near = ((d > 0 ? b.lo[a] : b.hi[a]) - ray.origin[a]) / d;
+        entry = std::max(entry, near);
+    }
+    return entry - 1e-9 * std::fabs(entry);
+}
+
 bool PreparedScene::closest_hit_without(const Ray& ray, Real t_min, Real t_max,
                                         RayUse use, Hit& hit, RayContext& ctx,
                                         bool radiosity_ray, Real ray_end,
@@ -1585,38 +1598,22 @@ bool PreparedScene::closest_hit_without(const Ray& ray, Real t_min, Real t_max,
                 tmax = reach;
                 return false;
             }
-            // Several objects: nearest box entry first, as POV-Ray's slab tree visits
-            // them, and none whose box starts past the nearest hit so far (a ray through
-            // a stack of see-through plates sharing a leaf tests the next plate, not
-            // the whole stack). `reach` only shrinks, so a primitive left out here is
-            // never wanted by a later leaf either.
+            // Several objects: nearest first by where the ray enters their bounds (the
+            // octree's: every hit lies inside them), as POV-Ray's slab tree visits its
+            // boxes, and none that starts past the nearest hit so far (a ray through a
+            // stack of see-through plates sharing a leaf tests the next plate, not the
+            // whole stack). `reach` only shrinks, so a primitive left out here is never
+            // wanted by a later leaf either.
             thread_local std::vector<std::pair<Real, uint32_t>> by_entry;
             by_entry.clear();
-            const Real unit = length(ray.direction);
             for (size_t i = spheres; i < n; ++i) {
                 const uint32_t id = ids[i];
                 if (!ctx.mailbox.first_visit(id)) continue;
-                const PovPrim& p = pov_[id - sphere_count_];
-                if (kind_[id] != PrimKind::Object || !(p.tests & kPovSlabTree)) {
-                    by_entry.emplace_back(-kInfinity, id);
-                    continue;
-                }
-                Real entry;
-                if ((pov_root_tested_ && !pov_ray.root_accepts([&](const PovRay& r) {
-                        return slab_test(pov_root_, r);
-                    })) ||
-                    !slab_test(p.box, pov_ray.get(), entry)) {
+                if (box_rejects(id)) {
                     ++ctx.tests;
                     continue;
                 }
-                // The float box may end an ulp inside its object (POV-Ray rounds its
-                // corners to nearest): a margin of ~100 float ulps of the coordinates.
-                const Real margin =
-                    1e-5 * (std::fabs(p.box.lo[0]) + std::fabs(p.box.lo[1]) +
-                            std::fabs(p.box.lo[2]) + p.box.len[0] + p.box.len[1] +
-                            p.box.len[2] + std::fabs(ray.origin.x) +
-                            std::fabs(ray.origin.y) + std::fabs(ray.origin.z));
-                by_entry.emplace_back((entry - margin) / unit, id);
+                by_entry.emplace_back(bounds_entry(bounds_[id], ray), id);
             }
             std::stable_sort(
                 by_entry.begin(), by_entry.end(),
