@@ -404,6 +404,14 @@ bool may_hit_outside_pov_box(const Object& o, bool restricts = false) {
     return false;
 }
 
+// Whether a hit's distance may lag its point, so that it can lie before the object's
+// bounds (a julia_fractal's later crossings, as POV-Ray reports them).
+bool lags_its_depth(const Object& o) {
+    if (const Csg* csg = std::get_if<Csg>(&o.shape))
+        return std::any_of(csg->children.begin(), csg->children.end(), lags_its_depth);
+    return std::holds_alternative<JuliaFractal>(o.shape);
+}
+
 size_t blend_faces(const Mesh& m) {
     if (m->texture_triples.empty()) return 0;
     return size_t(std::count_if(m->faces.begin(), m->faces.end(),
@@ -563,9 +571,12 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     std::sort(leaf_materials_.begin(), leaf_materials_.end());
     // General objects go into the octree by their placement bounds (narrower for a
     // turned lathe or sor).
+    hits_within_bounds_.assign(kind_.size(), 0);
     for (uint32_t id = 0; id < kind_.size(); ++id) {
-        if (kind_[id] == PrimKind::Object)
-            bounds_[id] = object_placement_bounds(*objects_[index_[id]], bounds_[id]);
+        if (kind_[id] != PrimKind::Object) continue;
+        const Object& o = *objects_[index_[id]];
+        bounds_[id] = object_placement_bounds(o, bounds_[id]);
+        hits_within_bounds_[id] = !lags_its_depth(o);
     }
     octree::BuildInput input;
     std::vector<uint32_t> bounded_ids;
@@ -1584,42 +1595,25 @@ bool PreparedScene::closest_hit_without(const Ray& ray, Real t_min, Real t_max,
                                 nearest_sphere = id;
                                 return false;
                             });
-            if (n - spheres < 2 || !pov_slab_tree_) {
-                for (size_t i = spheres; i < n; ++i) {
-                    // Objects hidden from this ray kind can have a hit beyond a visible
-                    // one: a primitive seen in an earlier leaf was fully tested there.
-                    if (!ctx.mailbox.first_visit(ids[i])) continue;
-                    if (box_rejects(ids[i])) {
-                        ++ctx.tests;
-                        continue;
-                    }
-                    consider(ids[i]);
-                }
-                tmax = reach;
-                return false;
-            }
-            // Several objects: nearest first by where the ray enters their bounds (the
-            // octree's: every hit lies inside them), as POV-Ray's slab tree visits its
-            // boxes, and none that starts past the nearest hit so far (a ray through a
-            // stack of see-through plates sharing a leaf tests the next plate, not the
-            // whole stack). `reach` only shrinks, so a primitive left out here is never
-            // wanted by a later leaf either.
-            thread_local std::vector<std::pair<Real, uint32_t>> by_entry;
-            by_entry.clear();
             for (size_t i = spheres; i < n; ++i) {
                 const uint32_t id = ids[i];
+                // Objects hidden from this ray kind can have a hit beyond a visible one:
+                // a primitive seen in an earlier leaf was fully tested there.
                 if (!ctx.mailbox.first_visit(id)) continue;
                 if (box_rejects(id)) {
                     ++ctx.tests;
                     continue;
                 }
-                by_entry.emplace_back(bounds_entry(bounds_[id], ray), id);
-            }
-            std::stable_sort(
-                by_entry.begin(), by_entry.end(),
-                [](const auto& a, const auto& b) { return a.first < b.first; });
-            for (const auto& [entry, id] : by_entry) {
-                if (entry > reach) break;
+                // Nothing of it before the nearest hit so far: left out, as POV-Ray's
+                // slab tree leaves a box that starts past it (a ray through a stack of
+                // see-through plates sharing a leaf tests the next plate, not the whole
+                // stack). `reach` only shrinks, so neither this leaf's later tests nor a
+                // later leaf would want it.
+                if (kind_[id] == PrimKind::Object && hits_within_bounds_[id] &&
+                    bounds_entry(bounds_[id], ray) > reach) {
+                    ++ctx.tests;
+                    continue;
+                }
                 consider(id);
             }
             tmax = reach;

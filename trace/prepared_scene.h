@@ -369,6 +369,9 @@ class PreparedScene {
     std::vector<PrimKind> kind_;
     std::vector<uint32_t> index_, material_;
     std::vector<Bounds3> bounds_;
+    // Per primitive: whether every hit's distance is where the ray enters its bounds or
+    // later (closest_hit_without leaves out objects that start past its nearest hit).
+    std::vector<uint8_t> hits_within_bounds_;
     // Spheres in world space, one 32-byte record each (one cache line per candidate).
     // After build() the bounded spheres are primitives 0 .. sphere_count_-1 and
     // spheres_[id] is primitive id's sphere, so the hot loop needs neither kind_ nor
