@@ -451,6 +451,24 @@ TEST(Tcp, ProjectedThroughInEveryModeEqualsOneProcess) {
                         "--boxes 4x1x1 --procs 4 --results parents"});
 }
 
+// The fixes of the seventh public-scene survey (macro arguments without commas, map_type
+// outside image_map, frequency and waves on block patterns; each matches POV-Ray in
+// tests/golden) and rays through stacks of see-through plates sharing octree leaves
+// (scenes/bench/filtered_plates.pov: a leaf's objects that start past the nearest hit are
+// left out, in every process's boxes alike): every mode gives the one-process image.
+TEST(Tcp, SurveySevenFixesInEveryModeEqualOneProcess) {
+    for (const std::string& scene :
+         {std::string(POVWALL_GOLDEN_DIR) + "/macro_args_without_commas.pov",
+          std::string(POVWALL_GOLDEN_DIR) + "/bump_map_unknown_map_type.pov",
+          std::string(POVWALL_GOLDEN_DIR) + "/block_pattern_frequency.pov",
+          std::string(POVWALL_GOLDEN_DIR) + "/../bench/filtered_plates.pov"}) {
+        SCOPED_TRACE(scene);
+        expect_same_images(scene, "-W 40 -H 30",
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents"});
+    }
+}
+
 // no_image, no_reflection and no_shadow on CSG children and looks_like objects
 // (scenes/golden/csg_flags_*.pov, each matching POV-Ray in tests/golden): a black box
 // keeps whole frame objects and the rays' kinds, so every mode gives the one-process
