@@ -689,18 +689,9 @@ Real evaluate_pattern(const PatternSpec& spec, const Point3& world,
 }
 
 MapLookup search_list(int count, Real value) {
-    MapLookup r;
-    if (count <= 0) return r;
-    if (value >= count - 1) {
-        r.prev = r.cur = count - 1;
-        return r;
-    }
-    int c = 0;
-    while (value > c) ++c;
-    r.cur = c;
-    r.prev = c > 0 ? c - 1 : 0;
-    if (r.prev != r.cur) r.fraction = value - r.prev;
-    return r;
+    // The longest list (cubic, triangular) has six entries.
+    static constexpr float kEntryNumbers[] = {0, 1, 2, 3, 4, 5};
+    return search_map(kEntryNumbers, std::min(count, 6), value);
 }
 
 MapLookup search_map(const float* values, int count, Real value) {

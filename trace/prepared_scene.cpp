@@ -1609,8 +1609,8 @@ bool PreparedScene::closest_hit_without(const Ray& ray, Real t_min, Real t_max,
                 // see-through plates sharing a leaf tests the next plate, not the whole
                 // stack). `reach` only shrinks, so neither this leaf's later tests nor a
                 // later leaf would want it.
-                if (kind_[id] == PrimKind::Object && hits_within_bounds_[id] &&
-                    bounds_entry(bounds_[id], ray) > reach) {
+                if (reach < kInfinity && kind_[id] == PrimKind::Object &&
+                    hits_within_bounds_[id] && bounds_entry(bounds_[id], ray) > reach) {
                     ++ctx.tests;
                     continue;
                 }
