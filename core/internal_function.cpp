@@ -24,6 +24,39 @@ constexpr double kRadiansPerDegree = 0.01745329251994329576;
 double noise_of(const Vector3& v, int generator) {
     return noise(v, generator == 0 ? 1 : generator);
 }
+// The octave weights of a fractal function: entry i is pow(lacunarity^(i+1), exponent)
+// as std::pow gives it, the frequency multiplied up one octave at a time. They repeat at
+// every call with the same parameters, so each thread keeps the last table (octaves past
+// kKept are computed at each call).
+class OctaveWeights {
+  public:
+    static constexpr long kKept = 64;
+    double at(long i, double frequency) const {
+        return i < long(count_) ? weights_[i] : std::pow(frequency, exponent_);
+    }
+    static const OctaveWeights& of(double lacunarity, double exponent, double octaves) {
+        thread_local OctaveWeights last;
+        const size_t want = octaves > 0 ? size_t(std::min(octaves, double(kKept))) : 0;
+        if (!(last.lacunarity_ == lacunarity && last.exponent_ == exponent &&
+              last.count_ >= want)) {
+            last.lacunarity_ = lacunarity;
+            last.exponent_ = exponent;
+            double frequency = 1.0;
+            for (size_t i = 0; i < want; ++i) {
+                frequency *= lacunarity;
+                last.weights_[i] = std::pow(frequency, exponent);
+            }
+            last.count_ = want;
+        }
+        return last;
+    }
+
+  private:
+    double lacunarity_ = 0, exponent_ = 0;
+    size_t count_ = 0;
+    double weights_[kKept] = {};
+};
+
 // C's (int) conversion as x86-64 does it (out of range and NaN give INT_MIN), without
 // the undefined behaviour of a plain cast.
 int c_int(double v) {
@@ -107,6 +140,7 @@ double ridged_mf(const double* a, const FunctionHooks&) {
     double signal = ridged(v);
     double result = signal;
     double frequency = 1.0;  // lacunarity^i, multiplied up as POV-Ray builds its table
+    const OctaveWeights& weights = OctaveWeights::of(p[1], -p[0], std::ceil(p[2]) - 1);
     for (int i = 1; i < p[2]; i++) {
         frequency *= p[1];
         v *= p[1];
@@ -115,7 +149,7 @@ double ridged_mf(const double* a, const FunctionHooks&) {
         if (weight < 0.0) weight = 0.0;
         signal = ridged(v);
         signal *= weight;
-        result += signal * std::pow(frequency, -p[0]);
+        result += signal * weights.at(i - 1, frequency);
     }
     return result;
 }

@@ -163,7 +163,8 @@ Real lattice_noise_raw(const Tables& t, const Vector3& p) {
 }
 
 // Vector version: three consecutive table windows, 8 entries apart, per corner.
-inline void add_corner(Vector3& acc, const Real* m, Real w, Real x, Real y, Real z) {
+[[gnu::always_inline]] inline void add_corner(Vector3& acc, const Real* m, Real w, Real x,
+                                              Real y, Real z) {
     acc.x += corner_term(m, w, x, y, z);
     acc.y += corner_term(m + 8, w, x, y, z);
     acc.z += corner_term(m + 16, w, x, y, z);

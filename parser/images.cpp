@@ -81,14 +81,20 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
                                                                    ImageBlock block) {
     if (bump) block = ImageBlock::BumpMap;
     expect_punct('{', "after '" + std::string(keyword.text) + "'");
-    const bool is_bump = bump != nullptr;
     // Only image_map decodes the file's gamma by default: the others read heights,
     // grey values or indices (POV-Ray's Parse_Image without GammaCorrect).
     const bool raw = block != ImageBlock::ImageMap;
-    const bool is_pattern = block == ImageBlock::ImagePattern;
-    const bool is_material = block == ImageBlock::MaterialMap;
-    if (const Token& first = peek(); is_word(first, "function"))
-        unsupported(first, std::string(keyword.text) + " function");
+    if (accept_word("function")) {
+        auto mapping = std::make_shared<ImageMapping>();
+        const FunctionImage image = parse_function_image(keyword.text);
+        mapping->width = image.width;
+        mapping->height = image.height;
+        auto pixels = function_image_pixels(image);
+        mapping->pixels = pixels;
+        parse_image_options(keyword, block, bump, *mapping, pixels, image.channels == 4,
+                            false);
+        return mapping;
+    }
     const ImageFileRef ref = parse_image_file_ref(false);
     const std::string& path = ref.path;
     const Token& name_token = ref.name_token;
@@ -118,7 +124,6 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
     bool colour_mapped = false;
     bool has_alpha = false;  // the file has an alpha channel (or palette transparency)
     std::shared_ptr<ImagePixels> pixels;  // editable while the block is read
-    std::optional<Token> use_index_at;
     if (options_.image_reader) {
         StoredImage stored;
         try {
@@ -224,6 +229,18 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         mapping->height = mapping->pixels->height;
     }
 
+    parse_image_options(keyword, block, bump, *mapping, pixels, has_alpha, colour_mapped);
+    return mapping;
+}
+
+void Interpreter::parse_image_options(const Token& keyword, ImageBlock block,
+                                      Normal* bump, ImageMapping& mapping,
+                                      const std::shared_ptr<ImagePixels>& pixels,
+                                      bool has_alpha, bool colour_mapped) {
+    const bool is_bump = bump != nullptr;
+    const bool is_pattern = block == ImageBlock::ImagePattern;
+    const bool is_material = block == ImageBlock::MaterialMap;
+    std::optional<Token> use_index_at;
     auto uv = [&]() {
         Numeric n = parse_express();
         return n.size == 1 ? std::pair{n.c[0], n.c[0]} : std::pair{n.c[0], n.c[1]};
@@ -238,34 +255,34 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             break;
         }
         if (w == "once") {
-            mapping->once = true;
+            mapping.once = true;
         } else if (w == "interpolate") {
             Token at = peek();
             interpolate_at = at;
-            mapping->interpolate = parse_int();
-            if (block == ImageBlock::ImageMap && mapping->interpolate != 2 &&
-                mapping->interpolate != 3 && mapping->interpolate != 4)
+            mapping.interpolate = parse_int();
+            if (block == ImageBlock::ImageMap && mapping.interpolate != 2 &&
+                mapping.interpolate != 3 && mapping.interpolate != 4)
                 error(at, "invalid interpolate value (2, 3 or 4)");
         } else if (w == "map_type") {
             Token at = peek();
-            mapping->map_type = parse_int();
+            mapping.map_type = parse_int();
             // POV-Ray 3.7.0's map types: 0 planar, 1 spherical, 2 cylindrical, 5 torus
             // (7, angular, came later). Only image_map checks it (Parse_Image_Map): a
             // bump_map, image_pattern or material_map keeps any value, and maps one it
             // does not know as planar (image_coordinates' default, as map_pos's).
-            int mt = mapping->map_type;
+            int mt = mapping.map_type;
             if (block == ImageBlock::ImageMap && mt != 0 && mt != 1 && mt != 2 && mt != 5)
                 error(at, "invalid map_type value");
         } else if (!is_material && (w == "use_color" || w == "use_colour")) {
-            mapping->use_index = false;
-            mapping->image_value = 0;
+            mapping.use_index = false;
+            mapping.image_value = 0;
         } else if (is_pattern && w == "use_alpha") {
             // The transmit of an image with an alpha channel, else its red.
-            mapping->image_value = has_alpha ? 1 : 2;
+            mapping.image_value = has_alpha ? 1 : 2;
         } else if (is_pattern && w == "use_index") {
             // image_pattern reads the grey whatever it is told (POV-Ray's image_pattern
             // takes an index only with no `use` at all, which it never has).
-            mapping->image_value = 0;
+            mapping.image_value = 0;
         } else if (!is_material && w == "use_index") {
             // A bump map of palette indices takes each index itself as the height; of
             // other images, the colours' grey (POV-Ray 3.7's bump_map).
@@ -273,17 +290,17 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
                 unsupported(
                     t, "bump_map use_index on a palette image that repeats a colour");
             use_index_at = t;
-            mapping->use_index = true;
+            mapping.use_index = true;
         } else if (w == "repeat") {
             Token at = peek();
             auto [ru, rv] = uv();
             if (ru <= 0 || rv <= 0) error(at, "zero or negative image repeat vector");
-            mapping->width = mapping->width * ru;
-            mapping->height = mapping->height * rv;
+            mapping.width = mapping.width * ru;
+            mapping.height = mapping.height * rv;
         } else if (w == "offset") {
             auto [ou, ov] = uv();
-            mapping->offset_u = -ou * (mapping->pixels ? mapping->pixels->width : 0);
-            mapping->offset_v = -ov * (mapping->pixels ? mapping->pixels->height : 0);
+            mapping.offset_u = -ou * (mapping.pixels ? mapping.pixels->width : 0);
+            mapping.offset_v = -ov * (mapping.pixels ? mapping.pixels->height : 0);
         } else if (is_bump && w == "bump_size") {
             bump->amount = parse_single();
         } else if (block == ImageBlock::ImageMap &&
@@ -300,7 +317,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
                     for (size_t i = 0; i < pixels->indices.size(); ++i)
                         pixels->rgbft[i * 5 + size_t(channel)] = v;
                 } else {
-                    (channel == 4 ? mapping->all_transmit : mapping->all_filter) = v;
+                    (channel == 4 ? mapping.all_transmit : mapping.all_filter) = v;
                 }
             } else if (indexed || !pixels) {
                 const Token at = peek();
@@ -331,17 +348,16 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
     if (is_material) {
         // POV-Ray picks by the palette index (of other images, by red * 255); the
         // interpolated index it computes then is not reproduced.
-        if (interpolate_at && mapping->interpolate != 0)
+        if (interpolate_at && mapping.interpolate != 0)
             unsupported(*interpolate_at, "material_map with interpolate");
         if (colour_mapped && pixels && pixels->indices.empty())
             unsupported(keyword, "material_map of a palette image that repeats a colour");
     }
     // POV-Ray averages the corners' indices when it interpolates them.
-    if (is_bump && use_index_at && mapping->use_index && colour_mapped &&
-        mapping->interpolate != 0)
+    if (is_bump && use_index_at && mapping.use_index && colour_mapped &&
+        mapping.interpolate != 0)
         unsupported(*use_index_at, "bump_map use_index with interpolate");
     if (pixels) pixels->note_see_through();
-    return mapping;
 }
 
 }  // namespace povwall::parser

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "parser/expression_program.h"
+#include "parser/function_image.h"
 #include "parser/parser.h"
 #include "parser/source.h"
 #include "parser/value.h"
@@ -231,6 +232,13 @@ class Interpreter {
     enum class ImageBlock : uint8_t { ImageMap, BumpMap, ImagePattern, MaterialMap };
     std::shared_ptr<const ImageMapping> parse_image_block(
         const Token& keyword, Normal* bump, ImageBlock block = ImageBlock::ImageMap);
+    // The items after an image block's file (or function): once, interpolate, map_type,
+    // repeat, filter/transmit, ...; `pixels` null when the scene is parsed without
+    // images.
+    void parse_image_options(const Token& keyword, ImageBlock block, Normal* bump,
+                             ImageMapping& mapping,
+                             const std::shared_ptr<ImagePixels>& pixels, bool has_alpha,
+                             bool colour_mapped);
     // After `density_file`: `df3 "name"`, the file found as POV-Ray finds it and read
     // (density_files.cpp; one read per file and parse, shared by every pattern naming
     // it).
@@ -320,6 +328,9 @@ class Interpreter {
         Real water = 0;                 // 65536 * water_level
     };
     PendingHeightField parse_height_field(Object& out);
+    // `W, H { body }` after the word `function` in place of an image file of `keyword`'s
+    // block (parser/function_image.cpp).
+    FunctionImage parse_function_image(std::string_view keyword);
     // The heights of an image file of type `kind` (rows top first, as stored), as POV-Ray
     // 3.7 takes them from each kind of image; refuses what it cannot reproduce.
     std::vector<uint16_t> height_field_image_heights(const StoredImage& stored,

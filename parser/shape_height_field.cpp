@@ -27,15 +27,6 @@ uint8_t png_palette_grey(uint32_t v, uint32_t max) {
     return uint8_t((e * 0.297f + e * 0.589f + e * 0.114f) * 255.0f);
 }
 
-// A float as POV-Ray stores it in a 16-bit channel: times 65535 in single precision,
-// through a 32-bit int (wrapping, not clamped). False when that int overflows.
-bool stored_16(double value, uint16_t& out) {
-    const float scaled = float(value) * 65535.0f;
-    if (!(std::fabs(scaled) < 2147483648.0f)) return false;
-    out = uint16_t(int32_t(scaled));
-    return true;
-}
-
 // POV-Ray's cast of a double to its 16-bit height as x86 code makes it: through a 32-bit
 // int (wrapping; out of that range, or NaN, the int is its minimum, whose low half is 0).
 uint16_t height_cast(double v) {
@@ -144,54 +135,22 @@ Interpreter::PendingHeightField Interpreter::parse_height_field(Object& out) {
     const Token first = peek();
     if (is_word(first, "function")) {
         next();
-        const Token size_at = peek();
-        width = int(parse_float() + 0.5);
-        accept_punct(',');
-        depth = int(parse_float() + 0.5);
-        if (!is_punct(peek(), '{'))
-            expected("'{' after the function image's size", peek());
-        if (width < 2 || depth < 2)
-            unsupported(size_at, "height_field function smaller than 2 x 2");
-        const Token body_at = peek();
-        const auto f = parse_function_block(false);
-        if (f->spline || f->transform)
-            error(body_at, "Unsupported function type in function image.");
-        const FunctionHooks& hooks = parse_time_hooks();
-        if (f->pigment && !hooks.pigment)
-            unsupported(body_at, "height_field function pigment without the renderer");
+        const FunctionImage image = parse_function_image("height_field");
+        width = image.width;
+        depth = image.height;
         heights.resize(size_t(width) * size_t(depth));
-        uint64_t left = options_.max_loop_iterations;
-        FunctionHooks run = hooks;
-        run.iterations_left = &left;
-        for (int i = 0; i < depth; ++i) {
-            for (int j = 0; j < width; ++j) {
-                const double p[3] = {double(j) / double(float(width) - 1),
-                                     double(i) / double(float(depth) - 1), 0};
-                uint16_t& h = heights[size_t(i) * size_t(width) + size_t(j)];
-                if (f->pigment) {
-                    // An RGBA 16-bit image: the height is the grey of its channels, read
-                    // back as floats (the weights' sum below 1 loses one for half the
-                    // values).
-                    float c[5] = {0, 0, 0, 0, 0};
-                    hooks.pigment(*f->pigment, Point3(p[0], p[1], p[2]), hooks.context,
-                                  c);
-                    double rgb[3];
-                    for (int k = 0; k < 3; ++k) {
-                        uint16_t s;
-                        if (!stored_16(c[k], s))
-                            unsupported(body_at,
-                                        "height_field function value out of range");
-                        rgb[k] = double(float(s) / 65535.0f);
-                    }
-                    h = uint16_t((0.297 * rgb[0] + 0.589 * rgb[1] + 0.114 * rgb[2]) *
-                                 double(65535.0f));
-                } else {
-                    uint16_t s;
-                    if (!stored_16(evaluate_function(*f, p, run), s))
-                        unsupported(body_at, "height_field function value out of range");
-                    h = grey_height(s, 65535);
-                }
+        for (size_t i = 0; i < heights.size(); ++i) {
+            if (image.channels == 1) {
+                heights[i] = grey_height(image.samples[i], 65535);
+                continue;
             }
+            // An RGBA 16-bit image: the height is the grey of its channels, read back as
+            // floats (the weights' sum below 1 loses one for half the values).
+            double rgb[3];
+            for (int k = 0; k < 3; ++k)
+                rgb[k] = double(float(image.samples[i * 4 + size_t(k)]) / 65535.0f);
+            heights[i] = uint16_t((0.297 * rgb[0] + 0.589 * rgb[1] + 0.114 * rgb[2]) *
+                                  double(65535.0f));
         }
     } else {
         const ImageFileRef file = parse_image_file_ref(true);

@@ -852,6 +852,49 @@ TEST(ImageMap, OnlyImageMapRefusesAnUnknownMapType) {
     EXPECT_EQ(pattern.objects.at(0).texture.at(0).pigment.pattern->image->map_type, 4);
 }
 
+// `function W, H { }` for an image file (Make_Pattern_Image): sample (i, j) is the
+// function at (j / (W - 1), i / (H - 1), 0), stored as float(v) * 65535 through a 32-bit
+// int into 16 bits (wrapping) and read back as k / 65535; a pigment function's transmit
+// becomes alpha and back; no image file, no gamma (a 3.6 scene's assumed_gamma 2.2 too).
+TEST(ImageMap, FunctionImagesAreSixteenBitSamplesOfTheFunction) {
+    auto pixels_of = [](const std::string& pigment) {
+        const Scene s = parse(
+            "#version 3.6; global_settings { assumed_gamma 2.2 }\n"
+            "plane { z, 0 pigment { " +
+            pigment + " } }");
+        return s.objects.at(0).texture.at(0).pigment.pattern->image;
+    };
+    const auto grey = pixels_of("image_map { function 3, 2 { x * 0.5 + y * 1.25 } }");
+    ASSERT_TRUE(grey && grey->pixels);
+    EXPECT_TRUE(grey->path.empty());
+    EXPECT_EQ(grey->width, 3);
+    EXPECT_EQ(grey->height, 2);
+    auto stored = [](double v) {
+        return float(uint16_t(int32_t(float(v) * 65535.0f))) / 65535.0f;
+    };
+    for (int i = 0; i < 2; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            float c[5];
+            grey->pixels->fetch(j, i, c);
+            const float want = stored(j / 2.0 * 0.5 + i * 1.25);
+            EXPECT_EQ(c[0], want) << i << "," << j;
+            EXPECT_EQ(c[1], want);
+            EXPECT_EQ(c[2], want);
+            EXPECT_EQ(c[4], 0.0f);
+        }
+    }
+    // 1.25 wraps: 81918 in the int, 16382 in the channel.
+    float top[5];
+    grey->pixels->fetch(0, 1, top);
+    EXPECT_EQ(top[0], 16382.0f / 65535.0f);
+    // The pigment function's RGBA form is in the golden scene function_images.
+    EXPECT_EQ(error_of("plane { z, 0 pigment { image_map { function 1, 5 { x } } } }"),
+              "test.pov:1:45: error: unsupported: image_map function smaller than 2 x 2");
+    EXPECT_EQ(
+        error_of("plane { z, 0 normal { bump_map { function 4, 4 { x * 1e6 } } } }"),
+        "test.pov:1:48: error: unsupported: bump_map function value out of range");
+}
+
 // An 8-bit file's pixels are kept as codes with a decoding table (4 bytes a pixel, not 5
 // floats): every pixel fetches exactly what the float form gives for the same samples,
 // for each gamma rule; a sample that is no 8-bit code keeps the float form.
