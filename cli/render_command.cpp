@@ -28,6 +28,7 @@
 #include "trace/object_queries.h"
 #include "trace/pattern.h"
 #include "trace/render_plan.h"
+#include "trace/shapes/isosurface.h"
 
 namespace povwall::cli {
 
@@ -262,6 +263,7 @@ int run_render(RenderOptions o) {
     distrib::SpaceStats space_stats;
     int worker_frames = 0, worker_processes = 0;  // TCP workers (--stats)
     bool workers_forked = false;
+    bool traced_here = false;  // the rays were traced in this process
     Image image;
     if (use_boxes) {
         space.results = o.results;
@@ -333,6 +335,7 @@ int run_render(RenderOptions o) {
             }
         } else {
             image = distrib::render_space(scene, o.render, space, &space_stats, &plan);
+            traced_here = true;
         }
         stats.trace_seconds = space_stats.seconds;
         for (const auto& b : space_stats.boxes) stats.rays += b.rays;
@@ -356,8 +359,14 @@ int run_render(RenderOptions o) {
         stats.rays = screen_stats.rays;
     } else {
         image = trace::render_scene(scene, o.render, &stats, &plan);
+        traced_here = true;
     }
     bar.reset();
+    // POV-Ray's isosurface messages, from the rays this process traced (worker
+    // processes keep theirs).
+    if (traced_here)
+        for (const std::string& m : trace::isosurface_messages(scene))
+            std::cerr << m << "\n";
     auto t2 = Clock::now();
     try {
         std::string format;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -782,6 +783,30 @@ Bounds3 blob_element_box(const BlobElement& e);
 // isosurface { function { F } contained_by { box | sphere } threshold accuracy
 // max_gradient max_trace open }: F(x, y, z) - threshold = 0 inside its container, found
 // along the ray by POV-Ray 3.7's recursive subdivision (trace/shapes/isosurface.h).
+// What the root searches of one parsed isosurface and of its copies met (POV-Ray's
+// shared mginfo), for its end-of-render max_gradient and evaluate messages
+// (IsoSurface::DispatchShutdownMessages). Every tracing thread writes it.
+struct IsosurfaceGradients {
+    SourceLoc function_at;  // where POV-Ray's message points: the function
+    // The steepest |f(b) - f(a)| / |b - a| between two samples of a search.
+    std::atomic<double> found{0};
+    // With `evaluate`, over the searches that found a root: the largest estimate, the
+    // largest change of it in one search, their sum and count.
+    std::atomic<double> eval_max{0}, eval_var{0}, eval_sum{0};
+    std::atomic<uint64_t> eval_count{0};
+
+    static void raise(std::atomic<double>& to, double v) {
+        double now = to.load(std::memory_order_relaxed);
+        while (v > now && !to.compare_exchange_weak(now, v, std::memory_order_relaxed)) {
+        }
+    }
+    static void add(std::atomic<double>& to, double v) {
+        double now = to.load(std::memory_order_relaxed);
+        while (!to.compare_exchange_weak(now, now + v, std::memory_order_relaxed)) {
+        }
+    }
+};
+
 struct Isosurface {
     std::shared_ptr<const FunctionProgram> function;  // a float function of x, y, z
     bool sphere_container = false;
@@ -800,6 +825,10 @@ struct Isosurface {
     // parse ends).
     int noise_generator = 2;
     int number_of_waves = 10;
+    // Shared with the copies; `copy`: made from a declared one (POV-Ray's isCopy, whose
+    // messages its original gives).
+    std::shared_ptr<IsosurfaceGradients> gradients;
+    bool copy = false;
 };
 
 // parametric { function { X } function { Y } function { Z } <u1, v1>, <u2, v2>

@@ -10,6 +10,14 @@
 #include "parser/interpreter.h"
 
 namespace povwall::parser {
+
+namespace {
+// An object made from a declared one: an isosurface among its copies leaves the
+// end-of-render messages to its original (POV-Ray's isCopy).
+void mark_copy(Object& o) {
+    if (auto* iso = std::get_if<Isosurface>(&o.shape)) iso->copy = true;
+}
+}  // namespace
 namespace {
 
 bool holds_parametric(const Object& o) {
@@ -740,6 +748,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
         SourceLoc loc = out.loc;
         out = **o;
         out.loc = loc;
+        mark_copy(out);
         return true;
     };
     if (w == "sphere") {
@@ -1073,6 +1082,7 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             SourceLoc loc = out.loc;
             out = **o;
             out.loc = loc;
+            mark_copy(out);
         }
     } else if (w == "light_group") {
         parse_light_group(t, out);  // takes its own few modifiers

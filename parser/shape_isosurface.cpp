@@ -38,6 +38,8 @@ void Interpreter::parse_isosurface(Object& out, const Token& keyword) {
     const Token f = next();
     if (!is_word(f, "function")) expected("'function'", f);
     iso.function = parse_function_block(true);
+    iso.gradients = std::make_shared<IsosurfaceGradients>();
+    iso.gradients->function_at = sources_.location(f);
     constexpr int kMaxTrace = 10;  // ISOSURFACE_MAXTRACE
     for (;;) {
         const Token t = peek();

@@ -1028,3 +1028,41 @@ TEST(Cli, BatchKeepsGoingPastAFailingJobAndExitsOne) {
 }
 
 }  // namespace povwall_cli_batch
+
+// POV-Ray's end-of-render isosurface messages (IsoSurface::DispatchShutdownMessages),
+// located at the function: a max_gradient below the steepest slope the searches met,
+// one far above it; none for a copy of a declared isosurface (POV-Ray's isCopy). The
+// values are POV-Ray's for this scene ("4.858", "1.000"), in one process and in black
+// boxes.
+TEST(Cli, IsosurfaceMaxGradientMessagesAsPovRays) {
+    const fs::path scene = write_scene(
+        "iso_gradient.pov",
+        "#version 3.7;\n"
+        "global_settings { assumed_gamma 1 }\n"
+        "camera { location <0, 2, -5> look_at 0 }\n"
+        "light_source { <3, 5, -4> rgb 1 }\n"
+        "isosurface { function { x*x + y*y + z*z - 1 + 0.4 * sin(8 * x) * sin(8 * y) }\n"
+        "  max_gradient 1.1 contained_by { box { -2, 2 } } pigment { rgb <1, 0.8, 0.5> } "
+        "translate -1.2 * x }\n"
+        "#declare I = isosurface { function { sqrt(x*x + y*y + z*z) - 0.8 } max_gradient "
+        "50 contained_by { sphere { 0, 1 } } pigment { rgb 1 } }\n"
+        "object { I translate 1.2 * x }\n"
+        "isosurface { function { sqrt(x*x + y*y + z*z) - 0.5 } max_gradient 50 "
+        "contained_by { sphere { 0, 1 } } pigment { rgb 1 } translate y }\n");
+    const std::string expected =
+        scene.string() +
+        ":5:14: warning: The maximum gradient found was 4.858, but max_gradient of the\n"
+        "isosurface was set to 1.100. The isosurface may contain holes!\n"
+        "Adjust max_gradient to get a proper rendering of the isosurface.\n" +
+        scene.string() +
+        ":9:14: warning: The maximum gradient found was 1.000, but max_gradient of\n"
+        "the isosurface was set to 50.000. Adjust max_gradient to\n"
+        "get a faster rendering of the isosurface.\n";
+    for (const std::string mode : {"", " --boxes 2x1x1"}) {
+        const RunResult r =
+            run("render " + scene.string() + " -o " + (scratch() / "iso.png").string() +
+                " -W 160 -H 120 --quiet" + mode);
+        EXPECT_EQ(r.code, 0) << r.err;
+        EXPECT_EQ(r.err, expected) << mode;
+    }
+}

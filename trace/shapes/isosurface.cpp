@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/function.h"
 #include "trace/pattern.h"
@@ -53,12 +54,17 @@ struct RootSearch {
 
     // `evaluate` (POV-Ray's dynamic max_gradient): the parameters, null when not given.
     const Real* eval = nullptr;
+    IsosurfaceGradients* gradients = nullptr;  // where the statistics go (null: nowhere)
     Real vlength = 0;
 
     // `len` is 1 / the world length of [a, b]: |b.f - a.f| * len the gradient seen there.
+    // The steepest slope between two samples so far (POV-Ray's `gradient`).
+    Real steepest = 0;
+
     bool recurse(const Pair& a, const Pair& b, Real dt, Real w, Real len, Real& maxg) {
+        const Real seen = std::fabs((b.f - a.f) * len);
+        if (steepest < seen) steepest = seen;
         if (eval) {
-            const Real seen = std::fabs((b.f - a.f) * len);
             if (maxg < seen * eval[1]) {
                 maxg = seen * eval[1] * eval[1];
                 dt = maxg * vlength * w;
@@ -95,9 +101,17 @@ struct RootSearch {
         const Pair b{t2, g(t2)};
         const Real w = t2 - t1;
         // Above P0 the estimate first decays by P2.
+        const Real old_maxg = maxg;
         if (eval && maxg > eval[0]) maxg = maxg * eval[2];
         const Real dt = maxg * vlength * w;
         if (recurse(a, b, dt, w, 1.0 / (vlength * w), maxg)) {
+            if (eval && gradients) {
+                using G = IsosurfaceGradients;
+                G::raise(gradients->eval_var, std::fabs(maxg - old_maxg));
+                gradients->eval_count.fetch_add(1, std::memory_order_relaxed);
+                G::add(gradients->eval_sum, maxg);
+                G::raise(gradients->eval_max, maxg);
+            }
             t1 = found;
             return true;
         }
@@ -131,6 +145,7 @@ void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, Real& max
     int itrace = 0;
     RootSearch search{f, P, D, acc};
     if (s.evaluate) search.eval = s.eval_param;
+    search.gradients = s.gradients.get();
     if (s.closed) {
         const Real f1 = f(P + D * depth1);
         if (depth1 > acc) {
@@ -168,6 +183,8 @@ void hits_once(const Isosurface& s, const Point3& P, const Vector3& D, Real& max
         if (tmax - tmin < acc) break;
         search.sign = -search.sign;
     }
+    if (search.gradients && search.steepest > 0)
+        IsosurfaceGradients::raise(search.gradients->found, search.steepest);
     stable_sort_by_depth(out, first);
 }
 
@@ -378,6 +395,59 @@ bool shape_oracle_first(const Isosurface& s, const OracleRay& r, OracleBest& bes
         prev = t;
     }
     return true;
+}
+
+std::vector<std::string> isosurface_messages(const Scene& scene) {
+    std::vector<std::string> out;
+    auto text = [](const char* format, double a, double b, double c) {
+        char buf[512];
+        std::snprintf(buf, sizeof buf, format, double(float(a)), double(float(b)),
+                      double(float(c)));
+        return std::string(buf);
+    };
+    for (const Object& o : scene.objects) {
+        const Isosurface* s = std::get_if<Isosurface>(&o.shape);
+        if (!s || s->copy || !s->gradients) continue;
+        const IsosurfaceGradients& g = *s->gradients;
+        std::string message;
+        if (!s->evaluate) {
+            const Real found = g.found.load(), set = s->max_gradient;
+            if (!(found > kIsoEpsilon && set > kIsoEpsilon)) continue;
+            const Real diff = set - found, prop = std::fabs(set / found);
+            if ((prop <= 0.9 && diff <= -0.5) ||
+                ((prop <= 0.95 || diff <= -0.1) && set < 10.0)) {
+                message = text(
+                    "The maximum gradient found was %0.3f, but max_gradient of the\n"
+                    "isosurface was set to %0.3f. The isosurface may contain holes!\n"
+                    "Adjust max_gradient to get a proper rendering of the isosurface.",
+                    found, set, 0);
+            } else if (diff >= 10.0 || (prop >= 1.1 && diff >= 0.5)) {
+                message = text(
+                    "The maximum gradient found was %0.3f, but max_gradient of\n"
+                    "the isosurface was set to %0.3f. Adjust max_gradient to\n"
+                    "get a faster rendering of the isosurface.",
+                    found, set, 0);
+            }
+        } else {
+            const Real max = g.eval_max.load(), var = g.eval_var.load();
+            const Real diff = max / std::max(max - var, kIsoEpsilon);
+            if (s->eval_param[0] > max || s->eval_param[1] > diff) {
+                const Real count = std::max(Real(g.eval_count.load()), 1.0);
+                message = text(
+                    "Evaluate found a maximum gradient of %0.3f and an average\n"
+                    "gradient of %0.3f. The maximum gradient variation was %0.3f.",
+                    max, g.eval_sum.load() / count, var);
+            }
+        }
+        if (message.empty()) continue;
+        const SourceLoc& at = g.function_at;
+        const std::string file = at.file >= 0 && size_t(at.file) < scene.files.size()
+                                     ? scene.files[size_t(at.file)]
+                                     : std::string("?");
+        out.push_back(file + ":" + std::to_string(at.line) + ":" +
+                      std::to_string(at.column) + ": warning: " + message);
+    }
+    return out;
 }
 
 }  // namespace povwall::trace

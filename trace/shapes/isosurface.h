@@ -6,6 +6,9 @@
 // sphere's on the container); inside the container where F <= 0.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "trace/pov_bounds.h"
 #include "trace/shapes/common.h"
 
@@ -34,5 +37,13 @@ constexpr bool shape_invertible(const Isosurface&) { return true; }
 // The first sign change of F inside the container, found by dense sampling (POV-Ray's
 // roots are only `accuracy` close to it).
 bool shape_oracle_first(const Isosurface& s, const OracleRay& r, OracleBest& best);
+
+// POV-Ray's messages after a render about the scene's isosurfaces (each located at its
+// function, "FILE:LINE:COL: warning: ..."): a max_gradient below the steepest slope the
+// searches met (holes) or far above it (slow), or with `evaluate` what the estimates
+// did. As POV-Ray's IsoSurface::DispatchShutdownMessages: isosurfaces placed in the
+// scene themselves, not copies of a declared one nor parts of CSG; the slopes of the
+// copies count.
+std::vector<std::string> isosurface_messages(const Scene& scene);
 
 }  // namespace povwall::trace
