@@ -11,6 +11,17 @@ namespace fs = std::filesystem;
 
 // ------------------------------------------------------------------ directives
 
+bool is_directive_name(std::string_view d) {
+    static constexpr std::string_view kNames[] = {
+        "break",      "case",    "debug",  "declare", "default", "else",  "elseif",
+        "end",        "error",   "fclose", "fopen",   "for",     "if",    "ifdef",
+        "ifndef",     "include", "local",  "macro",   "range",   "read",  "render",
+        "statistics", "switch",  "undef",  "version", "warning", "while", "write"};
+    for (std::string_view n : kNames)
+        if (d == n) return true;
+    return false;
+}
+
 void Interpreter::run_directive(const Token& t) {
     check_stack(t);
     const std::string_view d = t.text;

@@ -16,6 +16,10 @@
 
 namespace povwall::parser {
 
+// The words POV-Ray 3.7 runs as directives after '#' (a '#' before any other word is
+// dropped, as POV-Ray's Parse_Directive does).
+bool is_directive_name(std::string_view word);
+
 class TrueTypeFont;
 struct ImageFileType;
 

@@ -117,6 +117,10 @@ Scene Interpreter::run(int root_file) {
         version_set_ = true;
     }
     scopes_.emplace_back();  // global #declare table
+    // POV-Ray's front end declares the scene file's name (without its folder) before the
+    // command line's Declare= values.
+    bind(scopes_[0], sources_.intern("input_file_name")).value =
+        std::filesystem::path(sources_.file(root_file).path).filename().string();
     for (const auto& [name, value] : options_.declares) {
         bind(scopes_[0], sources_.intern(name)).value = Numeric::scalar(value);
     }

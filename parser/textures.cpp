@@ -189,16 +189,24 @@ ColourMap Interpreter::parse_colour_map_block() {
         if (!is_punct(t, '[')) expected("'[' or '}' in a color_map", t);
         float v1 = float(parse_float());
         accept_punct(',');
-        // Old two-value form: [v1, v2 color A color B]
-        if (!is_word(peek(), "color") && !is_word(peek(), "colour") &&
-            !is_word(peek(), "rgb") && !is_word(peek(), "rgbf") &&
-            !is_word(peek(), "rgbt") && !is_word(peek(), "rgbft") &&
-            peek().kind == TokenKind::Number) {
-            float v2 = float(parse_float());
-            Colour a = parse_colour_value();
-            Colour b = parse_colour_value();
-            map.push_back({v1, a});
-            map.push_back({v2, b});
+        // After the value, POV-Ray's Parse_Colour_Map reads a whole expression when a
+        // float could start one: a float is the old two-value form [v1, v2 color A color
+        // B], a colour (`0.6 * White`) the entry's colour.
+        if (const Token at = peek(); starts_float(at)) {
+            const Numeric n = parse_express();
+            if (n.size == 1) {
+                const float v2 = float(n.c[0]);
+                Colour a = parse_colour_value();
+                Colour b = parse_colour_value();
+                map.push_back({v1, a});
+                map.push_back({v2, b});
+            } else if (n.size == 5) {
+                map.push_back(
+                    {v1, Colour(Rgb(float(n.c[0]), float(n.c[1]), float(n.c[2])),
+                                float(n.c[3]), float(n.c[4]))});
+            } else {
+                error(at, "Illegal expression syntax in color_map.");
+            }
         } else {
             map.push_back({v1, parse_colour_value()});
         }

@@ -51,6 +51,20 @@ Token Interpreter::next() {
     }
     for (;;) {
         Token t = next_raw();
+        if (t.kind == TokenKind::Directive && !is_directive_name(t.text)) {
+            // POV-Ray's Parse_Directive hands back a word that names no directive and
+            // drops the '#' (`#MyMacro()` calls the macro; `#cutaway_textures` is the
+            // object modifier).
+            const size_t word_length = t.text.size();
+            t.kind = TokenKind::Word;
+            t.offset = t.offset + t.length - uint32_t(word_length);
+            t.length = uint32_t(word_length);
+            t.sym = sources_.intern(t.text);
+            const Value* v = lookup(t);
+            if (!v || !std::holds_alternative<std::shared_ptr<Macro>>(*v))
+                warn(t, "'#' before '" + std::string(t.text) +
+                            "', which names no directive, is dropped (as POV-Ray does)");
+        }
         if (t.kind == TokenKind::Directive) {
             run_directive(t);
         } else if (t.kind == TokenKind::Word) {

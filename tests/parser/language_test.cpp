@@ -1073,5 +1073,67 @@ TEST(CompiledExpressions, ErrorsInsideAProgramNameTheSameToken) {
     EXPECT_EQ(parse_compiled(text, false).error, expected);
 }
 
+// POV-Ray's front end declares input_file_name, a string: the scene file's name without
+// its folder (vfe.cpp); the scene may test it, redeclare it or #undef it.
+TEST(Declares, InputFileNameIsTheSceneFilesName) {
+    std::string messages;
+    parse(
+        "#debug concat(\"[\", input_file_name, \"]\\n\")\n"
+        "#declare input_file_name = \"other\";\n#debug input_file_name\n",
+        &messages);
+    EXPECT_EQ(messages, "[test.pov]\nother");
+    namespace fs = std::filesystem;
+    const fs::path dir = povwall_test::process_scratch("povwall_parser_input_file_name");
+    fs::create_directories(dir / "sub");
+    std::ofstream(dir / "sub" / "My Scene.pov")
+        << "#if (strcmp(input_file_name, \"My Scene.pov\") = 0) sphere { 0, 1 } #end\n";
+    ParseOptions o;
+    EXPECT_EQ(parse_scene_file((dir / "sub" / "My Scene.pov").string(), o).objects.size(),
+              1u);
+}
+
+}  // namespace
+}  // namespace povwall::parser
+
+namespace povwall::parser {
+namespace {
+
+// Parse_Colour_Map reads a whole expression after an entry's value when a float could
+// start one: one term is the old [v1, v2 color A color B] form, a colour the entry's
+// colour (`0.6 * White`), anything else an error.
+TEST(ColourMaps, AnEntrysExpressionDecidesItsForm) {
+    const Scene s = parse(
+        "#declare W = color rgb <1, 0.5, 0.25>;\n"
+        "plane { y, 0 pigment { gradient x color_map { [0 0.6 * W] [0.5, 0.8 color rgb 1 "
+        "color rgb 0] } } }\n");
+    const ColourMap& m = s.objects.at(0).texture.at(0).pigment.maps->colour_map;
+    ASSERT_EQ(m.size(), 3u);
+    EXPECT_FLOAT_EQ(m[0].colour.rgb.g, 0.3f);
+    EXPECT_FLOAT_EQ(m[2].value, 0.8f);
+    EXPECT_EQ(
+        error_of("plane { y, 0 pigment { gradient x color_map { [0 0.5 * <1, 1, 1>] } "
+                 "} }"),
+        "test.pov:1:50: error: Illegal expression syntax in color_map.");
+}
+
+// POV-Ray's Parse_Directive hands back a word after '#' that names no directive: a
+// macro is called (`#M()`), anything else is read as the word, with povwall's warning.
+TEST(Directives, HashBeforeAWordThatIsNoDirectiveIsDropped) {
+    std::string messages;
+    const Scene s = parse(
+        "#macro M() sphere { 0, 1 } #end\n#M()\n"
+        "difference { sphere { 0, 1 } box { 0, 1 } #cutaway_textures }\n",
+        &messages);
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_TRUE(std::get<Csg>(s.objects[1].shape).cutaway_textures);
+    EXPECT_EQ(messages,
+              "test.pov:3:44: warning: '#' before 'cutaway_textures', which names no "
+              "directive, is dropped (as POV-Ray does)\n"
+              "difference { sphere { 0, 1 } box { 0, 1 } #cutaway_textures }\n"
+              "                                           ^~~~~~~~~~~~~~~~\n");
+    EXPECT_EQ(error_of("#delcare X = 1;"),
+              "test.pov:1:2: error: undeclared identifier 'delcare'");
+}
+
 }  // namespace
 }  // namespace povwall::parser
