@@ -1356,7 +1356,9 @@ bool PreparedScene::for_sphere_hits(const uint32_t* ids, size_t spheres, const R
     for (size_t done = 0; done < spheres; done += kMaxSphereRun) {
         const size_t m = std::min(kMaxSphereRun, spheres - done);
         const size_t p = at + done;
-        uint64_t hits = sphere_distances(lanes_.run(p), m, ray, lo, below, t);
+        // POV-Ray keeps no sphere hit at or past MAX_DISTANCE.
+        uint64_t hits =
+            sphere_distances(lanes_.run(p), m, ray, lo, std::min(below, kMaxDistance), t);
         ctx.tests += m;
         for (; hits; hits &= hits - 1) {
             const size_t i = size_t(__builtin_ctzll(hits));

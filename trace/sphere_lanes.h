@@ -15,8 +15,8 @@
 namespace povwall::trace {
 
 // POV-Ray's sphere test for a unit-length direction: the nearer root beyond the
-// tolerances, else the farther one; tangent rays miss. kInfinity when there is no hit at
-// or beyond `lo`.
+// tolerances and before MAX_DISTANCE (1e7), else the farther one; tangent rays miss.
+// kInfinity when there is no hit at or beyond `lo`.
 inline Real sphere_distance(Real cx, Real cy, Real cz, Real r, const Ray& ray, Real lo) {
     const Real ocx = cx - ray.origin.x, ocy = cy - ray.origin.y, ocz = cz - ray.origin.z;
     const Real tca =
@@ -29,7 +29,7 @@ inline Real sphere_distance(Real cx, Real cy, Real cz, Real r, const Ray& ray, R
         t = tca + th;
         if (!(t > kSphereTolerance && t >= lo)) return kInfinity;
     }
-    return t;
+    return t < kMaxDistance ? t : kInfinity;
 }
 
 // A sphere in world space: 32 bytes, aligned so that a record never straddles two cache

@@ -15,8 +15,10 @@ void intersect_sphere(const Sphere& s, const Point3& o, const Vector3& dir,
     if (!(t2hc > kPovEpsilon)) return;
     Real th = std::sqrt(t2hc);
     Real t1 = tca - th, t2 = tca + th;
-    if (t1 > kSphereTolerance) out.add(t1, 0);
-    if (t2 > kSphereTolerance) out.add(t2, 0);
+    // Depths along a unit direction in the sphere's own space (an ellipsoid's), kept
+    // below MAX_DISTANCE as POV-Ray's Sphere::All_Intersections keeps them.
+    if (t1 > kSphereTolerance && t1 < kMaxDistance) out.add(t1, 0);
+    if (t2 > kSphereTolerance && t2 < kMaxDistance) out.add(t2, 0);
 }
 
 Vector3 sphere_normal(const Sphere& s, const Point3& p) {
@@ -68,8 +70,8 @@ bool shape_oracle_first(const Sphere& s, const OracleRay& r, OracleBest& best) {
     HP t2hc = HP(s.radius) * s.radius - dot(oc, oc) + tca * tca;
     if (!(t2hc > HP(kPovEpsilon))) return true;
     HP th = sqrt(t2hc);
-    best.offer(tca - th, kSphereTolerance);
-    best.offer(tca + th, kSphereTolerance);
+    for (const HP& t : {tca - th, tca + th})
+        if (t < HP(kMaxDistance)) best.offer(t, kSphereTolerance);
     return true;
 }
 
