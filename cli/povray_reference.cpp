@@ -11,10 +11,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
 #include "cli/process.h"
+#include "cli/scratch_folder.h"
 #include "core/self_exe.h"
 #include "parser/parser.h"
 #include "trace/object_queries.h"
@@ -107,6 +109,26 @@ std::string shortest(double v) {
     return std::string(buf, r.ptr);
 }
 
+// A path as a POV-Ray switch's value: POV-Ray splits an option at a space unless the
+// value is in double quotes (`+I"my scene.pov"`).
+std::string path_switch(const std::string& prefix, const std::string& path) {
+    if (path.find_first_of(" \t") == std::string::npos) return prefix + path;
+    return prefix + "\"" + path + "\"";
+}
+std::string path_of_switch(const std::string& value) {
+    if (value.size() >= 2 && value.front() == '"' && value.back() == '"')
+        return value.substr(1, value.size() - 2);
+    return value;
+}
+
+// POV-Ray 3.7 turns paths into ASCII (UCS2toASCIIString): an image name with other
+// bytes is written under another name.
+bool plain_ascii(const std::string& path) {
+    for (unsigned char c : path)
+        if (c >= 0x80) return false;
+    return true;
+}
+
 }  // namespace
 
 std::vector<std::string> povwall_command(const RenderOptions& o,
@@ -135,8 +157,8 @@ std::vector<std::string> povray_command(const RenderOptions& o,
                                         const std::vector<std::string>& extra) {
     // Input and output stay at [1] and [2]: the cache key leaves them out.
     std::vector<std::string> cmd{"povray",
-                                 "+I" + o.scene,
-                                 "+O" + out_png,
+                                 path_switch("+I", o.scene),
+                                 path_switch("+O", out_png),
                                  "+W" + std::to_string(o.width),
                                  "+H" + std::to_string(o.height),
                                  "-D",
@@ -189,8 +211,8 @@ std::vector<std::string> povray_command(const RenderOptions& o,
     }
     for (const auto& sw : extra) cmd.push_back(sw);
     std::string scene_dir = fs::path(o.scene).parent_path().string();
-    cmd.push_back("+L" + (scene_dir.empty() ? std::string(".") : scene_dir));
-    for (const auto& l : o.library_paths) cmd.push_back("+L" + l);
+    cmd.push_back(path_switch("+L", scene_dir.empty() ? std::string(".") : scene_dir));
+    for (const auto& l : o.library_paths) cmd.push_back(path_switch("+L", l));
     cmd.push_back("+L/usr/share/povray-3.7/include");
     for (const auto& [k, v] : o.declares)
         cmd.push_back("Declare=" + k + "=" + shortest(v));
@@ -208,12 +230,27 @@ PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd
                      const std::string& cache_dir, const std::string& log_path,
                      double timeout_seconds, const std::string& working_dir) {
     PovrayRun run;
-    std::string out_png = cmd.at(2).substr(2);
-    {  // an animation's one frame is written under its frame-numbered name
+    const std::string requested = path_of_switch(cmd.at(2).substr(2));
+    // An animation's one frame is written under its frame-numbered name.
+    auto written_name = [&](const std::string& output) {
         RenderOptions named = o;
-        named.output = out_png;
-        if (const std::vector<Frame> frames = animation_frames(named); !frames.empty())
-            out_png = frames.front().output;
+        named.output = output;
+        const std::vector<Frame> frames = animation_frames(named);
+        return frames.empty() ? output : frames.front().output;
+    };
+    std::string out_png = written_name(requested);
+    // A name POV-Ray cannot write as given (not ASCII): it renders into a scratch folder
+    // and the image is moved to its name.
+    std::optional<ScratchFolder> ascii_folder;
+    std::vector<std::string> command = cmd;
+    std::string pov_png = out_png;
+    if (!plain_ascii(requested)) {
+        ascii_folder.emplace("povwall-povray-out");
+        const std::string ascii =
+            (ascii_folder->path() / ("image" + fs::path(requested).extension().string()))
+                .string();
+        command[2] = path_switch("+O", ascii);
+        pov_png = written_name(ascii);
     }
     std::string cached;
     if (!cache_dir.empty()) {
@@ -237,7 +274,13 @@ PovrayRun run_povray(const RenderOptions& o, const std::vector<std::string>& cmd
         return run;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const int rc = run_process(cmd, log_path, timeout_seconds, working_dir);
+    const int rc = run_process(command, log_path, timeout_seconds, working_dir);
+    if (pov_png != out_png && fs::exists(pov_png)) {
+        std::error_code ignored;
+        fs::rename(pov_png, out_png, ignored);
+        if (ignored)
+            fs::copy_file(pov_png, out_png, fs::copy_options::overwrite_existing);
+    }
     run.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (rc == -1) {

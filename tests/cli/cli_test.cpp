@@ -444,6 +444,29 @@ TEST(Cli, CompareReportsBothRendersAsJson) {
     }
 }
 
+// POV-Ray splits a switch's value at a space unless it is quoted, and writes an image
+// whose name is not ASCII under another name: compare quotes the scene, library and
+// output paths and lets POV-Ray render a non-ASCII name into a scratch folder. (A scene
+// path that is not ASCII POV-Ray cannot read at all.)
+TEST(Cli, CompareTakesPathsWithSpacesAndNonAsciiNames) {
+    if (!povray_available()) GTEST_SKIP() << "povray is not on PATH";
+    const fs::path dir = scratch() / "scenes 2";
+    fs::create_directories(dir);
+    std::ofstream(dir / "my scene.pov")
+        << "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+           "camera { location <0, 0, -3> look_at 0 }\n"
+           "light_source { <2, 3, -4> color rgb 1 }\n"
+           "sphere { 0, 1 pigment { color rgb <1, 0.5, 0.2> } }\n";
+    const fs::path keep = scratch() / "keep 最終";
+    fs::remove_all(keep);
+    const RunResult r = run("compare '" + (dir / "my scene.pov").string() +
+                            "' -W 32 -H 24 --threads 1 --keep '" + keep.string() + "'");
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    EXPECT_NE(r.out.find("PASS"), std::string::npos) << r.out;
+    for (const char* f : {"my scene-povray.png", "my scene-povwall.png"})
+        EXPECT_EQ(povwall::output::read_image((keep / f).string()).width, 32) << f;
+}
+
 // A disc lying in a plane: POV-Ray's rounding picks disc or plane pixel by pixel. Every
 // differing pixel is an exact tie, named as such, and --exclude-ties leaves them out.
 TEST(Cli, CompareNamesExactTies) {
