@@ -469,6 +469,19 @@ TEST(Tcp, SurveySevenFixesInEveryModeEqualOneProcess) {
     }
 }
 
+// The eighth survey's fixes and this stop's shapes: function images (parsed by every
+// process from the same function), spheres past MAX_DISTANCE in their own space (in the
+// lanes, in CSG, as shadow casters), each matching POV-Ray in tests/golden.
+TEST(Tcp, SurveyEightFixesInEveryModeEqualOneProcess) {
+    for (const char* name : {"function_images", "sphere_max_distance"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        expect_same_images(scene, "-W 40 -H 30",
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents"});
+    }
+}
+
 // no_image, no_reflection and no_shadow on CSG children and looks_like objects
 // (scenes/golden/csg_flags_*.pov, each matching POV-Ray in tests/golden): a black box
 // keeps whole frame objects and the rays' kinds, so every mode gives the one-process
