@@ -46,24 +46,6 @@ void transform_normal(Normal& n, const Transform& t) {
     transform_pattern(n.pattern.edit(), t);
 }
 
-bool pigment_uses_uv(const Pigment& p) {
-    if (p.pattern->kind == PatternKind::UvMapping) return true;
-    for (const Pigment& sub : p.maps->list)
-        if (pigment_uses_uv(sub)) return true;
-    return false;
-}
-
-bool textures_use_uv(const LayeredTexture& layers) {
-    for (const Texture& t : layers) {
-        if (pigment_uses_uv(t.pigment)) return true;
-        if (t.normal && t.normal->pattern->kind == PatternKind::UvMapping) return true;
-        if (t.map_pattern && t.map_pattern->kind == PatternKind::UvMapping) return true;
-        for (const LayeredTexture& e : t.map->entries)
-            if (textures_use_uv(e)) return true;
-    }
-    return false;
-}
-
 // Whether a texture was given anywhere in the object (POV-Ray's TEXTURED_OBJECT, which a
 // CSG takes from its parts): a texture or interior texture, or one on every mesh face.
 bool texture_given(const Object& obj) {

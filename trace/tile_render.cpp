@@ -8,8 +8,7 @@
 namespace povwall::trace {
 
 TileRenderer::TileRenderer(const Scene& scene, const RenderSettings& settings)
-    : scene_(scene),
-      settings_(settings),
+    : settings_(settings),
       plan_(make_render_plan(scene, settings.plan_everything_on, settings.quality)),
       prepared_(scene, &plan_, PrepareOptions{settings.threads, true}),
       camera_interiors_(scene),

@@ -24,7 +24,6 @@ class TileRenderer {
     const TraceCounters& counters() const { return tracer_.counters(); }
 
   private:
-    const Scene& scene_;
     RenderSettings settings_;
     RenderPlan plan_;
     PreparedScene prepared_;
