@@ -1,11 +1,13 @@
 #include "trace/photon_map.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
 #include <queue>
+#include <thread>
 #include <unordered_set>
 
 #include "core/math_constants.h"
@@ -194,9 +196,11 @@ class Shooter final : public MediaPhotonSink {
                size_t target_index, const std::vector<const Object*>& frames);
     uint64_t shot() const { return shot_; }
 
-    // MediaPhotonSink: the jitter of the media steps, from one running count (the pass
-    // runs on one thread, in the same order in every process).
-    Real draw() override { return hashed_unit(media_draws_++, 0, 0, 5); }
+    // MediaPhotonSink: the jitter of the media steps, from a running count of this
+    // light and target's (each pair is shot in one thread, in the same order in every
+    // process).
+    Real draw() override { return hashed_unit(media_draws_++, pair_, 0, 5); }
+    void set_pair(uint64_t pair) { pair_ = pair; }
     void store(const Point3& at, Real along, const Rgb& colour) override {
         deposit(media_out_, at, media_from_, colour, travelled + along);
     }
@@ -215,6 +219,7 @@ class Shooter final : public MediaPhotonSink {
     std::vector<Photon>& media_out_;
     Point3 media_from_;  // the origin of the ray storing media photons
     uint64_t media_draws_ = 0;
+    uint64_t pair_ = 0;  // the light and target's index among the pairs shot
     RayContext ctx_;
     const Light* light_ = nullptr;
     const Target* target_ = nullptr;
@@ -660,13 +665,44 @@ std::shared_ptr<const PhotonMap> build_photon_map(const PreparedScene& scene) {
     std::vector<Material> stand_ins;
     stand_ins.reserve(frames.size());
     for (const Object* f : frames) stand_ins.push_back(material_of(*f, f->texture));
-    std::vector<Photon> media_photons;
-    Shooter shooter(scene, s, max_level, adc, stand_ins, map->photons_, media_photons);
+    // Each light and target is shot on its own (POV-Ray's LightTargetCombo), in
+    // parallel; their photons are joined in the pairs' order, so the map does not depend
+    // on the threads.
+    struct Pair {
+        size_t light, target;
+        std::vector<Photon> surface, media;
+        uint64_t shot = 0;
+    };
+    std::vector<Pair> pairs;
     for (size_t l = 0; l < sc.lights.size(); ++l) {
-        const Light& light = sc.lights[l];
-        if (light.light_group != 0 || targets.empty()) continue;
-        for (size_t t = 0; t < targets.size(); ++t)
-            shooter.shoot(light, l, targets[t], t, frames);
+        if (sc.lights[l].light_group != 0) continue;
+        for (size_t t = 0; t < targets.size(); ++t) pairs.push_back({l, t, {}, {}, 0});
+    }
+    std::atomic<size_t> next_pair{0};
+    auto shoot_pairs = [&] {
+        for (size_t i; (i = next_pair.fetch_add(1)) < pairs.size();) {
+            Pair& p = pairs[i];
+            Shooter shooter(scene, s, max_level, adc, stand_ins, p.surface, p.media);
+            shooter.set_pair(i);
+            shooter.shoot(sc.lights[p.light], p.light, targets[p.target], p.target,
+                          frames);
+            p.shot = shooter.shot();
+        }
+    };
+    const size_t threads =
+        std::min(pairs.size(),
+                 size_t(scene.threads() > 0 ? scene.threads()
+                                            : int(std::thread::hardware_concurrency())));
+    std::vector<std::thread> pool;
+    for (size_t k = 1; k < threads; ++k) pool.emplace_back(shoot_pairs);
+    shoot_pairs();
+    for (std::thread& t : pool) t.join();
+    std::vector<Photon> media_photons;
+    uint64_t shot = 0;
+    for (Pair& p : pairs) {
+        map->photons_.insert(map->photons_.end(), p.surface.begin(), p.surface.end());
+        media_photons.insert(media_photons.end(), p.media.begin(), p.media.end());
+        shot += p.shot;
     }
     if (!media_photons.empty()) {
         map->media_ = std::make_shared<PhotonMap>();
@@ -686,7 +722,7 @@ std::shared_ptr<const PhotonMap> build_photon_map(const PreparedScene& scene) {
                      "photons: %zu stored, %zu in media, %llu shot, gather radius %g, "
                      "media %g\n",
                      map->photons_.size(), map->media_ ? map->media_->size() : size_t(0),
-                     (unsigned long long)shooter.shot(), map->min_radius_,
+                     (unsigned long long)shot, map->min_radius_,
                      map->media_ ? map->media_->min_radius_ : 0.0);
     return map;
 }

@@ -204,6 +204,8 @@ class PreparedScene {
                   const RenderPlan* plan = nullptr, const PrepareOptions& options = {});
 
     const Scene& scene() const { return scene_; }
+    // The threads the scene was prepared for (0: every core).
+    int threads() const { return options_.threads; }
     const octree::Octree& tree() const { return tree_; }
     size_t primitive_count() const { return kind_.size(); }
     const PatternEnv& pattern_env() const { return env_; }
