@@ -5,6 +5,8 @@
 // data: 3.7 ships it as numbers that do not come from any of its generators.
 #include "core/noise.h"
 
+#include <immintrin.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -37,6 +39,11 @@ struct Tables {
     uint16_t hash[8192];
     // rtab[2k] = value k, rtab[2k+1] = value k / 2, as POV-Ray lays them out.
     Real rtab[267 * 2];
+    // Each value entry's four numbers a corner term reads, m[1], m[2], m[4], m[6] with m
+    // = rtab + 2k, side by side for one vector load; and the three windows (8 entries
+    // apart) of the vector noise.
+    alignas(32) Real corner4[256][4];
+    alignas(32) Real corner12[256][12];
     int perm[2 * (kPerlinEntries + 1)];
     Vector3 grad[2 * (kPerlinEntries + 1)];
     WaveTable waves;
@@ -58,6 +65,16 @@ Tables build_tables() {
     for (int i = 0; i < 267; ++i) {
         t.rtab[2 * i] = kRValues[i];
         t.rtab[2 * i + 1] = kRValues[i] * 0.5;
+    }
+    for (int k = 0; k < 256; ++k) {
+        for (int w = 0; w < 3; ++w) {
+            const Real* m = t.rtab + 2 * k + 8 * w;
+            const Real four[4] = {m[1], m[2], m[4], m[6]};
+            for (int j = 0; j < 4; ++j) {
+                if (w == 0) t.corner4[k][j] = four[j];
+                t.corner12[k][4 * w + j] = four[j];
+            }
+        }
     }
     // Generator 3: unit gradients by rejection sampling, then a pairwise shuffle, both
     // from the same LCG seeded with 1. The permutation's last slot starts at 0 and the
@@ -102,7 +119,9 @@ Tables build_tables() {
 
 // Lattice cell and fractional offset of one coordinate (POV-Ray's "range fix").
 inline void lattice_axis(Real v, int& cell, Real& frac) {
-    int tmp = v >= 0 ? int(v) : int(v - (1 - kPovEpsilon));
+    // One conversion of the chosen value (no branch: the sign of a coordinate is as
+    // good as random along a ray).
+    const int tmp = int(v >= 0 ? v : v - (1 - kPovEpsilon));
     cell = (tmp - kLatticeOffset) & 0xFFF;
     frac = v - tmp;
 }
@@ -188,6 +207,98 @@ Vector3 lattice_dnoise(const Tables& t, const Vector3& p) {
     return v;
 }
 
+// The same sums with four corners at a time in AVX2 lanes: each lane does a corner term's
+// operations in the scalar order (no fused multiply-add), and the terms are added up one
+// by one in the scalar order, so the values are the scalar ones bit for bit.
+#define POVWALL_AVX2 __attribute__((target("avx2")))
+
+// The rows a, b, c, d (one corner's four numbers each) as four columns.
+POVWALL_AVX2 inline void transpose4(__m256d a, __m256d b, __m256d c, __m256d d,
+                                    __m256d out[4]) {
+    const __m256d t0 = _mm256_unpacklo_pd(a, b), t1 = _mm256_unpackhi_pd(a, b);
+    const __m256d t2 = _mm256_unpacklo_pd(c, d), t3 = _mm256_unpackhi_pd(c, d);
+    out[0] = _mm256_permute2f128_pd(t0, t2, 0x20);
+    out[1] = _mm256_permute2f128_pd(t1, t3, 0x20);
+    out[2] = _mm256_permute2f128_pd(t0, t2, 0x31);
+    out[3] = _mm256_permute2f128_pd(t1, t3, 0x31);
+}
+
+// w * (m1 + m2 x + m4 y + m6 z) for four corners whose numbers are m[0..3].
+POVWALL_AVX2 inline __m256d terms4(const __m256d m[4], __m256d w, __m256d x, __m256d y,
+                                   __m256d z) {
+    __m256d s = _mm256_add_pd(m[0], _mm256_mul_pd(m[1], x));
+    s = _mm256_add_pd(s, _mm256_mul_pd(m[2], y));
+    s = _mm256_add_pd(s, _mm256_mul_pd(m[3], z));
+    return _mm256_mul_pd(w, s);
+}
+
+inline int entry(const Tables& t, int column_hash, int z) {
+    return t.hash[column_hash ^ z] & 0xFF;
+}
+
+POVWALL_AVX2 Real lattice_noise_raw_avx2(const Tables& t, const Vector3& p) {
+    const Corners c = corners(t, p);
+    const Real x1 = c.fx - 1, y1 = c.fy - 1, z1 = c.fz - 1;
+    // Lanes: the corners (x0 y0), (x1 y0), (x0 y1), (x1 y1), as lattice_noise_raw.
+    const __m256d X = _mm256_set_pd(x1, c.fx, x1, c.fx);
+    const __m256d Y = _mm256_set_pd(y1, y1, c.fy, c.fy);
+    const __m256d Wxy = _mm256_set_pd(c.sx * c.sy, c.tx * c.sy, c.sx * c.ty, c.tx * c.ty);
+    alignas(32) Real term[8];
+    for (int g = 0; g < 2; ++g) {
+        const int z = c.iz + g;
+        __m256d m[4];
+        transpose4(_mm256_load_pd(t.corner4[entry(t, c.h00, z)]),
+                   _mm256_load_pd(t.corner4[entry(t, c.h10, z)]),
+                   _mm256_load_pd(t.corner4[entry(t, c.h01, z)]),
+                   _mm256_load_pd(t.corner4[entry(t, c.h11, z)]), m);
+        const __m256d W = _mm256_mul_pd(Wxy, _mm256_set1_pd(g ? c.sz : c.tz));
+        _mm256_store_pd(term + 4 * g, terms4(m, W, X, Y, _mm256_set1_pd(g ? z1 : c.fz)));
+    }
+    Real sum = term[0];
+    for (int k = 1; k < 8; ++k) sum += term[k];
+    return sum;
+}
+
+POVWALL_AVX2 Vector3 lattice_dnoise_avx2(const Tables& t, const Vector3& p) {
+    const Corners c = corners(t, p);
+    const Real x1 = c.fx - 1, y1 = c.fy - 1, z1 = c.fz - 1;
+    const Real txty = c.tx * c.ty, sxty = c.sx * c.ty, txsy = c.tx * c.sy,
+               sxsy = c.sx * c.sy;
+    // lattice_dnoise's corner order: (h00 h10 h11 h01) at z0, then (h01 h11 h10 h00)
+    // at z1.
+    const __m256d X = _mm256_set_pd(c.fx, x1, x1, c.fx);
+    const int columns[2][4] = {{c.h00, c.h10, c.h11, c.h01},
+                               {c.h01, c.h11, c.h10, c.h00}};
+    const __m256d Y[2] = {_mm256_set_pd(y1, y1, c.fy, c.fy),
+                          _mm256_set_pd(c.fy, c.fy, y1, y1)};
+    const __m256d W[2] = {
+        _mm256_mul_pd(_mm256_set_pd(txsy, sxsy, sxty, txty), _mm256_set1_pd(c.tz)),
+        _mm256_mul_pd(_mm256_set_pd(txty, sxty, sxsy, txsy), _mm256_set1_pd(c.sz))};
+    alignas(32) Real term[3][8];
+    for (int g = 0; g < 2; ++g) {
+        const int z = c.iz + g;
+        const Real* rows[4];
+        for (int k = 0; k < 4; ++k) rows[k] = t.corner12[entry(t, columns[g][k], z)];
+        const __m256d Z = _mm256_set1_pd(g ? z1 : c.fz);
+        for (int w = 0; w < 3; ++w) {
+            __m256d m[4];
+            transpose4(_mm256_load_pd(rows[0] + 4 * w), _mm256_load_pd(rows[1] + 4 * w),
+                       _mm256_load_pd(rows[2] + 4 * w), _mm256_load_pd(rows[3] + 4 * w),
+                       m);
+            _mm256_store_pd(term[w] + 4 * g, terms4(m, W[g], X, Y[g], Z));
+        }
+    }
+    Vector3 v{0, 0, 0};
+    for (int k = 0; k < 8; ++k) {
+        v.x += term[0][k];
+        v.y += term[1][k];
+        v.z += term[2][k];
+    }
+    return v;
+}
+
+#undef POVWALL_AVX2
+
 inline void perlin_axis(Real v, int& b0, int& b1, Real& r0, Real& r1) {
     Real t = v + kRollover;
     int it = int(std::floor(t));
@@ -224,22 +335,39 @@ Real perlin_noise(const Tables& t, const Vector3& p) {
 
 const Tables kTables = build_tables();
 
+// AVX2 lanes where the CPU has them (the same values either way).
+const bool kLanes = [] {
+    __builtin_cpu_init();  // static initialisers may run before libgcc's
+    return bool(__builtin_cpu_supports("avx2"));
+}();
+
 inline Real clamp01(Real v) { return v < 0 ? 0 : (v > 1 ? 1 : v); }
 
 }  // namespace
+
+namespace noise_detail {
+bool has_lanes() { return kLanes; }
+Real lattice_sum(const Vector3& p, bool lanes) {
+    return lanes && kLanes ? lattice_noise_raw_avx2(kTables, p)
+                           : lattice_noise_raw(kTables, p);
+}
+Vector3 lattice_vector(const Vector3& p, bool lanes) {
+    return lanes && kLanes ? lattice_dnoise_avx2(kTables, p) : lattice_dnoise(kTables, p);
+}
+}  // namespace noise_detail
 
 Real noise(const Vector3& p, int generator) {
     if (generator == 3) {
         // POV-Ray's empirical bias correction for this generator.
         return clamp01(0.5 * (1.59 * perlin_noise(kTables, p) + 0.985));
     }
-    Real sum = lattice_noise_raw(kTables, p);
+    const Real sum = noise_detail::lattice_sum(p, true);
     if (generator == 1) return clamp01(sum + 0.5);
     // Range-corrected: maps the measured range [-1.05242, 0.988997] onto [0,1].
     return clamp01((sum + 1.05242) * 0.48985582);
 }
 
-Vector3 dnoise(const Vector3& p) { return lattice_dnoise(kTables, p); }
+Vector3 dnoise(const Vector3& p) { return noise_detail::lattice_vector(p, true); }
 
 Real turbulence(const Vector3& p, const TurbulenceParams& t, int generator) {
     // Generators 2 and 3 stretch each octave's noise (2n - 0.5); only the first is

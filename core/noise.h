@@ -38,6 +38,15 @@ struct WaveTable {
 };
 const WaveTable& wave_table();
 
+// The lattice noise's sum of corner terms (before its generator's offset and clamp) and
+// the vector noise, computed with AVX2 lanes when `lanes` and the CPU has them, else
+// one corner at a time: the same values bit for bit (tests compare the two).
+namespace noise_detail {
+bool has_lanes();
+Real lattice_sum(const Vector3& p, bool lanes);
+Vector3 lattice_vector(const Vector3& p, bool lanes);
+}  // namespace noise_detail
+
 // POV-Ray's Hash3d over its noise permutation table (used by cells and crackle).
 int hash3d(int x, int y, int z);
 // POV-Ray's pattern random table: entry i % 32768 of the uniform [0,1) sequence of a

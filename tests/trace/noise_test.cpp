@@ -5,6 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
 
 namespace povwall::trace {
 namespace {
@@ -60,6 +64,32 @@ TEST(Noise, CycloidalAndTriangleWave) {
     EXPECT_DOUBLE_EQ(triangle_wave(0.25), 0.5);
     EXPECT_DOUBLE_EQ(triangle_wave(-0.25), 0.5);
     EXPECT_DOUBLE_EQ(triangle_wave(1.75), 0.5);
+}
+
+// The lattice noise with four corners in AVX2 lanes gives the one-corner-at-a-time sums
+// bit for bit: negative cells, exact integers, the 4096-cell wrap, coordinates beyond an
+// int (C's conversion gives INT_MIN), infinities and NaN.
+TEST(Noise, LanesGiveTheScalarSumsBitForBit) {
+    if (!noise_detail::has_lanes()) GTEST_SKIP() << "no AVX2 on this CPU";
+    std::vector<Vector3> points;
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (double scale : {1e-3, 1.0, 37.0, 4096.0, 1e5, 3e9, 1e300})
+        for (int i = 0; i < 2000; ++i)
+            points.push_back(Vector3(u(rng), u(rng), u(rng)) * scale);
+    for (double c : {-4097.0, -1.0, -0.0, 0.0, 1.0, 4095.0, 4096.0, 2147483647.5,
+                     -2147483648.5, std::numeric_limits<double>::infinity()})
+        points.push_back({c, c + 0.5, -c});
+    points.push_back({std::nan(""), 0.25, 0.5});
+    auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    for (const Vector3& p : points) {
+        ASSERT_TRUE(
+            same(noise_detail::lattice_sum(p, true), noise_detail::lattice_sum(p, false)))
+            << p.x << " " << p.y << " " << p.z;
+        const Vector3 a = noise_detail::lattice_vector(p, true),
+                      b = noise_detail::lattice_vector(p, false);
+        for (int k = 0; k < 3; ++k) ASSERT_TRUE(same(a[k], b[k])) << p.x << " axis " << k;
+    }
 }
 
 }  // namespace
