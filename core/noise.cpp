@@ -8,6 +8,7 @@
 #include <immintrin.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -117,11 +118,17 @@ Tables build_tables() {
     return t;
 }
 
+// C's (int) as x86-64 computes it (POV-Ray's noise is that code): out of range and NaN
+// give INT_MIN, without the undefined behaviour of a plain cast.
+inline int x86_int(Real v) {
+    return v > -2147483649.0 && v < 2147483648.0 ? int(v) : INT_MIN;
+}
+
 // Lattice cell and fractional offset of one coordinate (POV-Ray's "range fix").
 inline void lattice_axis(Real v, int& cell, Real& frac) {
     // One conversion of the chosen value (no branch: the sign of a coordinate is as
     // good as random along a ray).
-    const int tmp = int(v >= 0 ? v : v - (1 - kPovEpsilon));
+    const int tmp = x86_int(v >= 0 ? v : v - (1 - kPovEpsilon));
     cell = (tmp - kLatticeOffset) & 0xFFF;
     frac = v - tmp;
 }
@@ -301,7 +308,7 @@ POVWALL_AVX2 Vector3 lattice_dnoise_avx2(const Tables& t, const Vector3& p) {
 
 inline void perlin_axis(Real v, int& b0, int& b1, Real& r0, Real& r1) {
     Real t = v + kRollover;
-    int it = int(std::floor(t));
+    int it = x86_int(std::floor(t));
     b0 = it & (kPerlinEntries - 1);
     b1 = (b0 + 1) & (kPerlinEntries - 1);
     r0 = t - it;
