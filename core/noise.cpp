@@ -129,7 +129,8 @@ inline void lattice_axis(Real v, int& cell, Real& frac) {
     // One conversion of the chosen value (no branch: the sign of a coordinate is as
     // good as random along a ray).
     const int tmp = x86_int(v >= 0 ? v : v - (1 - kPovEpsilon));
-    cell = (tmp - kLatticeOffset) & 0xFFF;
+    // Wrapping as x86's int arithmetic does (a cell past INT_MAX - 10000).
+    cell = int((unsigned(tmp) - unsigned(kLatticeOffset)) & 0xFFFu);
     frac = v - tmp;
 }
 
