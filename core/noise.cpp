@@ -163,9 +163,12 @@ inline Corners corners(const Tables& t, const Vector3& p) {
     return c;
 }
 
-// Index into rtab of the corner (column hash, z cell).
+// The value-table entry of the corner (column hash, z cell), and its index into rtab.
+inline int entry(const Tables& t, int column_hash, int z) {
+    return t.hash[column_hash ^ z] & 0xFF;
+}
 inline int rindex(const Tables& t, int column_hash, int z) {
-    return (t.hash[column_hash ^ z] & 0xFF) * 2;
+    return entry(t, column_hash, z) * 2;
 }
 
 // One corner's contribution: weight * (half value + linear gradient term).
@@ -238,10 +241,6 @@ POVWALL_AVX2 inline __m256d terms4(const __m256d m[4], __m256d w, __m256d x, __m
     s = _mm256_add_pd(s, _mm256_mul_pd(m[2], y));
     s = _mm256_add_pd(s, _mm256_mul_pd(m[3], z));
     return _mm256_mul_pd(w, s);
-}
-
-inline int entry(const Tables& t, int column_hash, int z) {
-    return t.hash[column_hash ^ z] & 0xFF;
 }
 
 POVWALL_AVX2 Real lattice_noise_raw_avx2(const Tables& t, const Vector3& p) {
