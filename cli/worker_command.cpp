@@ -31,9 +31,10 @@ int run_worker_command(int argc, char** argv) {
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     // Fault injection for the tests: the process dies or hangs after handling N work
-    // items.
+    // items, or prepares S seconds longer.
     app.add_option("--die-after-items", w.die_after_items)->group("");
     app.add_option("--hang-after-items", w.hang_after_items)->group("");
+    app.add_option("--slow-prepare", w.slow_prepare)->group("");
     if (auto done = parse_args(app, argc, argv)) return *done;
     w.image_reader = output::read_stored_image;
     return distrib::run_worker(w);

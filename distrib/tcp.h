@@ -108,6 +108,9 @@ struct WorkerOptions {
     // Fault injection for the tests, after this many items: the process exits (dies), or
     // stops itself with SIGSTOP (hangs: alive, connected, silent).
     long die_after_items = -1, hang_after_items = -1;
+    // ... or its preparation takes this many seconds longer (busy meanwhile, as a worker
+    // with a large share of the scene on a loaded machine).
+    double slow_prepare = 0;
     // Serve one job and exit (the processes a coordinator starts itself); otherwise the
     // worker serves one job after another until it is killed.
     bool once = false;

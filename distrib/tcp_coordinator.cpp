@@ -465,7 +465,13 @@ class TcpCoordinator {
                     std::chrono::duration<double>(Clock::now() - workers_[i].last_seen)
                         .count();
                 // Status every 10 ms while tracing, "busy" every second while preparing.
-                if (!workers_[i].done && silent > tcp_.heartbeat_timeout) {
+                // A worker that has answered (ready, or holding the wave's samples)
+                // has nothing to say until the slowest one has too (under load that
+                // can take longer than the timeout); if it dies meanwhile, its
+                // connection closes.
+                const bool waiting = (workers_[i].ready && !workers_ready_) ||
+                                     (workers_[i].samples_taken && !started_);
+                if (!workers_[i].done && !waiting && silent > tcp_.heartbeat_timeout) {
                     return fail(int(i),
                                 "no message for " + std::to_string(int(silent)) + " s");
                 }
@@ -519,6 +525,7 @@ class TcpCoordinator {
             }
             emitter_->set_box_reach(reach_);
             workers_ready_ = true;
+            for (WorkerState& o : workers_) o.last_seen = Clock::now();  // see watch()
             const std::vector<Buffer> photons = photon_map_frames(emitter_->photon_map());
             for (WorkerState& o : workers_)
                 for (const Buffer& b : photons) o.conn->send(b);
@@ -528,6 +535,7 @@ class TcpCoordinator {
             for (const WorkerState& o : workers_) {
                 if (!o.samples_taken) return;
             }
+            for (WorkerState& o : workers_) o.last_seen = Clock::now();  // see watch()
             start_pass();
         } else if (type == StatusMessage::kType) {
             const auto status = read_message<StatusMessage>(j);

@@ -401,6 +401,9 @@ class Worker {
     // Parses the scene at the job's animation values and builds this worker's boxes (off
     // the io thread: sends nothing; false with `error` set on a parse error).
     bool prepare(std::string& error) {
+        if (options_.slow_prepare > 0)
+            std::this_thread::sleep_for(
+                std::chrono::duration<double>(options_.slow_prepare));
         const FixedJob& fixed = job_->fixed;
         parser::ParseOptions popts;
         popts.image_reader = options_.image_reader;
