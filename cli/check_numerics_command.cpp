@@ -103,7 +103,7 @@ int run_check_numerics(int argc, char** argv) {
         Image ours = trace::render_scene(scene, rs);
         OutputEncoding enc;
         enc.gamma_handling = scene.gamma_handling();
-        enc.working_gamma = scene.settings.assumed_gamma.value_or(1.0f);
+        enc.working_gamma = scene.settings.assumed_gamma.value_or(GammaCurve{});
         uint64_t differ = 0, ours_supported = 0, ours_contradicted = 0, unknown = 0;
         uint64_t ties = 0, pattern_ties = 0;
         trace::TieProbe tie_probe(scene, rs);

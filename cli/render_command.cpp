@@ -37,7 +37,7 @@ using Clock = std::chrono::steady_clock;
 OutputEncoding encoding_for(const Scene& scene, const RenderOptions& o) {
     OutputEncoding enc;
     enc.gamma_handling = scene.gamma_handling();
-    enc.working_gamma = scene.settings.assumed_gamma.value_or(1.0f);
+    enc.working_gamma = scene.settings.assumed_gamma.value_or(GammaCurve{});
     enc.file_srgb = !o.file_gamma;
     enc.file_gamma = o.file_gamma.value_or(2.2f);
     enc.bits = o.bits;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/colour.h"
+#include "core/gamma.h"
 
 namespace povwall {
 
@@ -25,7 +26,7 @@ struct Image {
 struct OutputEncoding {
     // false: legacy scene (#version < 3.7 and no assumed_gamma): values written raw.
     bool gamma_handling = true;
-    float working_gamma = 1.0f;  // assumed_gamma
+    GammaCurve working_gamma;  // assumed_gamma (a power of 1: linear)
     bool file_srgb = true;  // File_Gamma sRGB (POV-Ray's Unix default); else file_gamma
     float file_gamma = 2.2f;
     // Colour depth as +F gives it (POV-Ray takes 5..16): PNG stores it in 8 or 16 bits

@@ -21,6 +21,7 @@
 #include "core/colour.h"
 #include "core/compact_transform.h"
 #include "core/function.h"
+#include "core/gamma.h"
 #include "core/heap_optional.h"
 #include "core/height_field.h"
 #include "core/math.h"
@@ -1150,7 +1151,7 @@ struct GlobalSettings {
     int max_trace_level = 5;
     float adc_bailout = 1.0f / 255.0f;
     Rgb ambient_light{1.0f};
-    std::optional<float> assumed_gamma;  // absent: Scene::gamma_mode decides
+    std::optional<GammaCurve> assumed_gamma;  // absent: Scene::gamma_mode decides
     // Absent from the scene, it follows the final #version: 1 below 3.5, else 2.
     int noise_generator = 2;
     int max_intersections = 64;

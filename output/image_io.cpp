@@ -28,11 +28,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-float srgb_encode(float x) {
-    if (x <= 0.0031308f) return x * 12.92f;
-    return 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
-}
-
 // A temporary name in the destination folder (same file system, so rename is atomic).
 fs::path temporary_name(const fs::path& target) {
     std::random_device rd;
@@ -129,11 +124,18 @@ bool remove_partial_output() noexcept {
 
 float encode_channel(float v, const OutputEncoding& enc) {
     if (!enc.gamma_handling) return std::clamp(v, 0.0f, 1.0f);
+    const GammaCurve& working = enc.working_gamma;
+    // sRGB working space written to an sRGB file: POV-Ray's transcoding is the identity.
+    if (working.kind == GammaCurve::Kind::Srgb && enc.file_srgb)
+        return std::clamp(v, 0.0f, 1.0f);
     // Working space (assumed_gamma) to linear, then to the file's encoding.
     float lin =
-        enc.working_gamma == 1.0f ? v : std::pow(std::max(v, 0.0f), enc.working_gamma);
+        working.kind == GammaCurve::Kind::Power && working.decoding_exponent == 1.0f
+            ? v
+            : working.decode(v);
     lin = std::clamp(lin, 0.0f, 1.0f);
-    return enc.file_srgb ? srgb_encode(lin) : std::pow(lin, 1.0f / enc.file_gamma);
+    return enc.file_srgb ? GammaCurve::srgb().encode(lin)
+                         : std::pow(lin, 1.0f / enc.file_gamma);
 }
 
 void write_image(const Image& image, const std::string& path, const OutputEncoding& enc) {
@@ -185,8 +187,11 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
             float v = c == 3 ? a : image.rgba[i * 4 + c];
             if (linear_format) {
                 // EXR/HDR hold linear light, as POV-Ray writes them (working -> linear).
-                if (c < 3 && enc.gamma_handling && enc.working_gamma != 1.0f) {
-                    v = std::pow(std::max(v, 0.0f), enc.working_gamma);
+                const GammaCurve& working = enc.working_gamma;
+                if (c < 3 && enc.gamma_handling &&
+                    !(working.kind == GammaCurve::Kind::Power &&
+                      working.decoding_exponent == 1.0f)) {
+                    v = working.decode(v);
                 }
                 floats.push_back(v);
                 continue;

@@ -797,10 +797,7 @@ Value ExpressionParser::word(const Token& t) {
         in_.unget(t);
         return in_.parse_string();
     }
-    if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" ||
-        w == "rgbft" || w == "srgb" || w == "srgbf" || w == "srgbt" || w == "srgbft" ||
-        w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit" ||
-        w == "alpha") {
+    if (is_colour_keyword(w)) {
         in_.unget(t);
         return in_.parse_colour(hold_);
     }

@@ -31,8 +31,29 @@ struct Curve {
 };
 
 Curve power(float exponent) { return {Curve::Kind::Power, exponent}; }
+Curve curve_of(const GammaCurve& g) {
+    return g.kind == GammaCurve::Kind::Srgb ? Curve{Curve::Kind::Srgb, 1}
+                                            : power(g.decoding_exponent);
+}
 
 }  // namespace
+
+GammaCurve Interpreter::parse_gamma() {
+    if (accept_word("srgb")) return GammaCurve::srgb();
+    const Token at = peek();
+    const float g = float(parse_float());
+    if (!(g > 0)) error(at, "gamma value must be positive.");
+    // Below 1 it is likely an encoding gamma where the decoding one is asked for (not
+    // said in a scene without gamma handling, where such values make sense).
+    if (g < 1 && gamma_mode_ != GammaMode::None) {
+        char text[96];
+        std::snprintf(text, sizeof text,
+                      "Suspicious value %g specified for gamma. Did you mean %g?",
+                      double(g), 1.0 / double(g));
+        warn(at, text);
+    }
+    return GammaCurve::power(g);
+}
 
 Interpreter::ImageFileRef Interpreter::parse_image_file_ref(bool height_field) {
     ImageFileRef ref;
@@ -103,14 +124,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
     std::optional<Curve> explicit_gamma;
     for (;;) {
         if (accept_word("gamma")) {
-            if (accept_word("srgb")) {
-                explicit_gamma = Curve{Curve::Kind::Srgb, 1};
-            } else {
-                Token at = peek();
-                float g = float(parse_float());
-                if (g <= 0) error(at, "gamma value must be positive");
-                explicit_gamma = power(g);
-            }
+            explicit_gamma = curve_of(parse_gamma());
         } else if (const Token& t = peek(); is_word(t, "premultiplied")) {
             unsupported(t, "premultiplied");
         } else {
@@ -140,10 +154,10 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         // scenes with assumed_gamma take files to be in the working gamma; 3.7 scenes
         // decode with the file type's gamma. bump_map reads raw unless a gamma is given
         // (POV-Ray treats its data as heights, not colours).
-        const float working = scene_.settings.assumed_gamma.value_or(1.0f);
+        const GammaCurve working = scene_.settings.assumed_gamma.value_or(GammaCurve{});
         bool correct = gamma_mode_ != GammaMode::None && !raw;
         std::optional<Curve> fallback;  // POV-Ray's options.defaultGamma
-        if (correct && gamma_mode_ == GammaMode::Assumed36) fallback = power(working);
+        if (correct && gamma_mode_ == GammaMode::Assumed36) fallback = curve_of(working);
         if (explicit_gamma) {
             correct = true;
             fallback = explicit_gamma;
@@ -151,22 +165,41 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         Curve file;
         if (correct) {
             const std::string& f = stored.format;
-            if (f == "pnm" || f == "tiff" || f == "openexr" || f == "hdr") {
-                // Netpbm and TIFF files are linear unless a gamma is assumed (3.6 mode)
-                // or given; HDR formats are linear unless one is given.
-                if (fallback && (f == "pnm" || f == "tiff" || explicit_gamma))
+            if (f == "pnm" || f == "tiff") {
+                // Netpbm and TIFF files are decoded only with a gamma assumed (3.6 mode)
+                // or given; otherwise their values are working-space values as they are.
+                if (fallback)
                     file = *fallback;
+                else
+                    correct = false;
+            } else if (f == "openexr" || f == "hdr") {
+                // HDR formats are linear unless a gamma is given.
+                if (explicit_gamma) file = *fallback;
             } else if (f == "png" && !explicit_gamma && stored.declared_gamma > 0) {
                 file = power(stored.declared_gamma);
             } else {
                 file = fallback ? *fallback : Curve{Curve::Kind::Srgb, 1};
             }
         }
-        // Decoded values are re-encoded in the working gamma (image_map only).
-        const bool encode_working = correct && !raw && working != 1.0f;
+        // Decoded values are re-encoded in the working gamma (image_map only); a file
+        // encoded with the working curve itself is read as it is (POV-Ray's transcoding
+        // between matching curves is the identity).
+        const bool srgb_working = working.kind == GammaCurve::Kind::Srgb;
+        bool encode_working =
+            correct && !raw && (srgb_working || working.decoding_exponent != 1.0f);
+        if (encode_working && file.kind != Curve::Kind::Neutral &&
+            working.matches(file.kind == Curve::Kind::Srgb
+                                ? GammaCurve::srgb()
+                                : GammaCurve::power(file.decoding_exponent))) {
+            correct = false;
+            encode_working = false;
+        }
         auto decode = [&](float v) {
             v = correct ? file.decode(v) : v;
-            if (encode_working && v > 0) v = float(std::pow(double(v), 1.0 / working));
+            if (encode_working)
+                v = srgb_working ? working.encode(v)
+                    : v > 0 ? float(std::pow(double(v), 1.0 / working.decoding_exponent))
+                            : v;
             return v;
         };
         const size_t count = size_t(stored.pixels.width) * size_t(stored.pixels.height);

@@ -19,6 +19,9 @@ namespace povwall::parser {
 // The words POV-Ray 3.7 runs as directives after '#' (a '#' before any other word is
 // dropped, as POV-Ray's Parse_Directive does).
 bool is_directive_name(std::string_view word);
+// `color`/`colour` and POV-Ray's colour keys (rgb ... srgbft, red, green, blue, filter,
+// transmit, alpha): the words a colour can start with.
+bool is_colour_keyword(std::string_view word);
 
 class TrueTypeFont;
 struct ImageFileType;
@@ -231,6 +234,9 @@ class Interpreter {
         std::string path;
     };
     ImageFileRef parse_image_file_ref(bool height_field);
+    // A gamma as assumed_gamma and an image's `gamma` take it: `srgb` or a positive
+    // power law's decoding exponent (POV-Ray's Parse_Gamma).
+    GammaCurve parse_gamma();
     // After image_map / bump_map (`bump` receives bump_size), image_pattern or
     // material_map (which stops before its first `texture`): the mapping, pixels loaded.
     enum class ImageBlock : uint8_t { ImageMap, BumpMap, ImagePattern, MaterialMap };

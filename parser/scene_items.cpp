@@ -580,16 +580,15 @@ void Interpreter::parse_global_settings() {
         if (is_punct(t, '}')) return;
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
         if (w == "assumed_gamma") {
-            Token at = peek();
-            if (is_word(at, "srgb")) unsupported(at, "assumed_gamma srgb");
-            const float gamma = float(parse_float());
             if (gamma_mode_ == GammaMode::Assumed36 ||
                 gamma_mode_ == GammaMode::Assumed37) {
                 warn(t, "new instance of assumed_gamma ignored");  // as POV-Ray
+                parse_gamma();
             } else {
+                // The mode first: the gamma's own checks see a scene with gamma handling.
                 gamma_mode_ = effective_version() < 370 ? GammaMode::Assumed36
                                                         : GammaMode::Assumed37;
-                g.assumed_gamma = gamma;
+                g.assumed_gamma = parse_gamma();
             }
         } else if (w == "max_trace_level") {
             int n = parse_int();

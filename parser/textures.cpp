@@ -6,14 +6,24 @@
 #include "parser/no_bump_scale.h"
 
 namespace povwall::parser {
+bool is_colour_keyword(std::string_view w) {
+    return w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" ||
+           w == "rgbft" || w == "srgb" || w == "srgbf" || w == "srgbt" || w == "srgbft" ||
+           w == "red" || w == "green" || w == "blue" || w == "filter" ||
+           w == "transmit" || w == "alpha";
+}
+
 namespace {
 
 // An sRGB-encoded value in the working gamma (POV-Ray's workingGammaToSRGB->Decode):
-// to linear, then to `working`'s power curve. Negative values mirror.
-float srgb_to_working(double v, float working) {
+// to linear, then to `working`'s power curve. Negative values mirror. An sRGB working
+// space takes it as it is (the transcoding between equal curves is the identity).
+float srgb_to_working(double v, const GammaCurve& working) {
+    if (working.kind == GammaCurve::Kind::Srgb) return float(v);
     double a = std::fabs(v);
     double r = a <= 0.04045 ? a / 12.92 : std::pow((a + 0.055) / 1.055, 2.4);
-    if (working != 1.0f) r = std::pow(r, 1.0 / working);
+    if (working.decoding_exponent != 1.0f)
+        r = std::pow(r, 1.0 / working.decoding_exponent);
     return float(v < 0 ? -r : r);
 }
 
@@ -678,12 +688,6 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
             p = *std::get<std::shared_ptr<Pigment>>(*v);
         }
     }
-    auto is_colour_word = [](std::string_view w) {
-        return w == "color" || w == "colour" || w == "rgb" || w == "rgbf" ||
-               w == "rgbt" || w == "rgbft" || w == "srgb" || w == "srgbf" ||
-               w == "srgbt" || w == "srgbft" || w == "red" || w == "green" ||
-               w == "blue" || w == "filter" || w == "transmit" || w == "alpha";
-    };
     // POV-Ray reads the pattern only as the first item (after the identifier): one after
     // a modifier or another pattern ends the block there (Parse_Pattern, then the
     // caller's closing brace).
@@ -695,7 +699,7 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
         first_item = false;
         // Colours first: no pattern keyword or modifier is one, and solid pigments are
         // the common case (the pattern tables are long).
-        const bool colour = t.kind == TokenKind::Word && is_colour_word(t.text);
+        const bool colour = t.kind == TokenKind::Word && is_colour_keyword(t.text);
         if (!colour && try_pattern_keyword(t, p.pattern)) {
             if (!pattern_allowed)
                 error(t, terminator == '}'
@@ -724,9 +728,7 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
                         p.maps.edit().list.push_back(parse_pigment_block());
                     } else if (is_punct(n, '}') ||
                                (n.kind == TokenKind::Word && !lookup(n) &&
-                                !is_word(n, "color") && !is_word(n, "colour") &&
-                                !is_word(n, "rgb") && !is_word(n, "rgbf") &&
-                                !is_word(n, "rgbt") && !is_word(n, "rgbft"))) {
+                                !is_colour_keyword(n.text))) {
                         break;
                     } else {
                         Pigment sub;

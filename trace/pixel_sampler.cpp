@@ -101,10 +101,19 @@ AaEncoding aa_encoding(float antialias_gamma, const Scene& scene) {
     };
     const bool has_aa_curve = antialias_gamma > 0;
     const float aa_encode = has_aa_curve ? 1.0f / antialias_gamma : 1.0f;
-    const bool working_power = scene.gamma_mode == GammaMode::Assumed36 ||
+    const bool working_given = scene.gamma_mode == GammaMode::Assumed36 ||
                                scene.gamma_mode == GammaMode::Assumed37;
-    const float working =
-        working_power ? scene.settings.assumed_gamma.value_or(1.0f) : 1.0f;
+    const GammaCurve working_curve =
+        working_given ? scene.settings.assumed_gamma.value_or(GammaCurve{})
+                      : GammaCurve{};
+    if (working_curve.kind == GammaCurve::Kind::Srgb) {
+        // sRGB to linear, then the AA curve: POV-Ray's transcoding of two unlike curves.
+        AaEncoding e = has_aa_curve ? curve(aa_encode) : AaEncoding{true, 1.0f};
+        e.srgb_decode = true;
+        return e;
+    }
+    const bool working_power = working_given;
+    const float working = working_curve.decoding_exponent;
     if (!working_power || std::fabs(1.0f - 1.0f / working) <= 0.01f)
         return has_aa_curve ? curve(aa_encode) : AaEncoding{true, 1.0f};
     // Linearise with the working gamma, then encode with the AA curve.
@@ -130,6 +139,7 @@ SamplerSettings sampler_settings(const RenderSettings& settings, const Scene& sc
 
 float PixelSampler::distance(const float* a, const float* b) const {
     auto enc = [&](float v) {
+        if (s_.encoding.srgb_decode) v = GammaCurve::srgb().decode(v);
         return s_.encoding.identity ? v
                                     : std::pow(std::max(v, 0.0f), s_.encoding.exponent);
     };

@@ -43,6 +43,7 @@ PixelBlock render_area(const RenderSettings& settings);
 struct AaEncoding {
     bool identity = false;
     float exponent = 0.4f;
+    bool srgb_decode = false;  // an sRGB working space: linearised first
 };
 AaEncoding aa_encoding(float antialias_gamma, const Scene& scene);
 

@@ -76,8 +76,8 @@ TEST(EncodeChannel, LinearWorkingSpaceIsSrgbEncoded) {
 
 TEST(EncodeChannel, WorkingGammaIsUndoneBeforeFileEncoding) {
     OutputEncoding e;
-    e.working_gamma =
-        2.2f;  // #version 3.6; assumed_gamma 2.2: POV-Ray writes 128 for 0.5
+    // #version 3.6; assumed_gamma 2.2: POV-Ray writes 128 for 0.5
+    e.working_gamma = GammaCurve::power(2.2f);
     EXPECT_EQ(quantise8(encode_channel(0.5f, e)), 128);
     EXPECT_NEAR(encode_channel(0.5f, e),
                 1.055 * std::pow(std::pow(0.5, 2.2), 1 / 2.4) - 0.055, 1e-6);
@@ -85,6 +85,22 @@ TEST(EncodeChannel, WorkingGammaIsUndoneBeforeFileEncoding) {
     g.file_srgb = false;
     g.file_gamma = 2.2f;
     EXPECT_NEAR(encode_channel(0.5f, g), std::pow(0.5, 1 / 2.2), 1e-6);
+}
+
+// assumed_gamma srgb: an sRGB file gets the working value itself (POV-Ray's transcoding
+// between equal curves is the identity); another file gamma, the value linearised with
+// sRGB's curve first.
+TEST(EncodeChannel, SrgbWorkingSpaceIsWrittenAsItIsToAnSrgbFile) {
+    OutputEncoding e;
+    e.working_gamma = GammaCurve::srgb();
+    EXPECT_EQ(encode_channel(0.5f, e), 0.5f);
+    EXPECT_EQ(encode_channel(0.01f, e), 0.01f);
+    EXPECT_EQ(encode_channel(1.5f, e), 1.0f);
+    e.file_srgb = false;
+    e.file_gamma = 1.8f;
+    EXPECT_NEAR(encode_channel(0.5f, e), std::pow(std::pow(0.555 / 1.055, 2.4), 1 / 1.8),
+                1e-5);
+    EXPECT_NEAR(encode_channel(0.02f, e), std::pow(0.02 / 12.92, 1 / 1.8), 1e-6);
 }
 
 TEST(WriteImage, Png8And16BitQuantiseAsPovRay) {

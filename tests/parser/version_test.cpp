@@ -123,7 +123,7 @@ TEST(Version, AssumedGammaModeFollowsTheEffectiveVersionAndTheFirstOneWins) {
         "global_settings { assumed_gamma 1.0 }",
         &debug);
     EXPECT_EQ(s.gamma_mode, GammaMode::Assumed36);
-    EXPECT_FLOAT_EQ(*s.settings.assumed_gamma, 2.2f);
+    EXPECT_FLOAT_EQ(s.settings.assumed_gamma->decoding_exponent, 2.2f);
     EXPECT_NE(debug.find("test.pov:2:19: warning: new instance of assumed_gamma ignored"),
               std::string::npos)
         << debug;
@@ -161,6 +161,49 @@ TEST(Version, SrgbNeedsAssumedGammaAndDecodesIntoTheWorkingGamma) {
         "sphere { 0, 1 pigment { srgb 0.5 } }");
     // sRGB 0.5 is linear 0.21404114, which gamma 2.2 encodes as 0.4962.
     EXPECT_NEAR(s.objects[0].texture[0].pigment.colour.rgb.r, 0.49623, 1e-5);
+}
+
+// POV-Ray's Parse_Gamma: `srgb` (then srgb colours are working values as they are) or a
+// positive power; below 1 it warns (an encoding gamma written for a decoding one).
+TEST(Version, AssumedGammaIsSrgbOrAPositivePower) {
+    std::string debug;
+    Scene s = parse_at_version(
+        "#version 3.7;\nglobal_settings { assumed_gamma srgb }\n"
+        "sphere { 0, 1 pigment { srgb <0.5, 0.2, 0.9> } }",
+        &debug);
+    ASSERT_TRUE(s.settings.assumed_gamma);
+    EXPECT_EQ(s.settings.assumed_gamma->kind, GammaCurve::Kind::Srgb);
+    EXPECT_EQ(s.gamma_mode, GammaMode::Assumed37);
+    EXPECT_EQ(s.objects[0].texture[0].pigment.colour.rgb.r, 0.5f);
+    EXPECT_EQ(s.objects[0].texture[0].pigment.colour.rgb.g, 0.2f);
+    EXPECT_EQ(full_error_of("global_settings { assumed_gamma 0 }"),
+              "test.pov:1:33: error: gamma value must be positive.\n"
+              "global_settings { assumed_gamma 0 }\n"
+              "                                ^");
+    parse_at_version("global_settings { assumed_gamma 0.45 }", &debug);
+    EXPECT_NE(debug.find("test.pov:1:33: warning: Suspicious value 0.45 specified for "
+                         "gamma. Did you mean 2.22222?"),
+              std::string::npos)
+        << debug;
+}
+
+// A block pattern's colour list takes every colour keyword (POV-Ray's Parse_Blend_List
+// reads a colour at any colour key): srgb and red started a pigment colour instead.
+TEST(Version, BlockPatternListsTakeEveryColourKeyword) {
+    Scene s = parse_at_version(
+        "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+        "sphere { 0, 1 pigment { hexagon srgb 0.5 red 1, red 1, srgbt <1, 1, 1, 0.5> } "
+        "}");
+    const Pigment& p = s.objects[0].texture[0].pigment;
+    ASSERT_TRUE(p.maps.allocated());
+    ASSERT_EQ(p.maps->list.size(), 3u);
+    // A colour key after a colour's form goes on with it (POV-Ray: 1, 0.2140, 0.2140).
+    EXPECT_EQ(p.maps->list[0].colour.rgb.r, 1.0f);
+    EXPECT_NEAR(p.maps->list[0].colour.rgb.g, 0.21404, 1e-5);
+    EXPECT_EQ(p.maps->list[1].colour.rgb.r, 1.0f);
+    EXPECT_EQ(p.maps->list[1].colour.rgb.g, 0.0f);
+    EXPECT_EQ(p.maps->list[2].colour.transmit, 0.5f);
+    EXPECT_EQ(p.pattern->kind, PatternKind::Hexagon);
 }
 
 // Below 3.0 a pattern, colour or finish item written straight in a texture is POV-Ray's

@@ -25,7 +25,7 @@ Scene base_scene() {
     Scene s;
     s.language_version = 370;
     s.version_set = true;
-    s.settings.assumed_gamma = 1.0f;
+    s.settings.assumed_gamma = GammaCurve::power(1.0f);
     s.camera.location = {0, 1, -6};
     s.camera.direction = {0, -0.1, 1.6};
     s.camera.right = {4.0 / 3.0, 0, 0};
