@@ -87,9 +87,6 @@ enum class PatternKind : uint8_t {
     Tiling,      // `tiling N` in x-z (N in PatternSpec::scalar)
 };
 
-// The `tiling` numbers trace/pattern_tiling.cpp evaluates: 1 to this (POV-Ray has 27).
-constexpr int kTilingsImplemented = 22;
-
 enum class WaveType : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
 
 struct Warp {

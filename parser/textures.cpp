@@ -381,8 +381,6 @@ bool Interpreter::try_pattern_keyword_kind(const Token& t, PatternSpec& spec) {
                 const Token at = peek();
                 const int n = saturating_int(parse_float());
                 if (n < 1 || n > 27) error(at, "Tiling number must be between 1 and 27.");
-                if (n > kTilingsImplemented)
-                    unsupported(at, "tiling " + std::to_string(n));
                 spec.scalar = n;
                 break;
             }

@@ -9,6 +9,7 @@
 
 #include "core/math_constants.h"
 #include "trace/photon_map.h"
+#include "trace/shapes/common.h"  // kMaxDistance: POV-Ray's MAX_DISTANCE (a spot cone's open end)
 
 namespace povwall::trace {
 
@@ -53,7 +54,6 @@ class Draws {
     uint64_t state_;
 };
 
-constexpr Real kMaxDistance = 1e7;      // its MAX_DISTANCE: a spot cone's open end
 constexpr Real kSmallTolerance = 1e-3;  // its SMALL_TOLERANCE
 
 // The part [s0, s1] of the stretch that light `light` lights (distances from its start).

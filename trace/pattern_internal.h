@@ -45,8 +45,11 @@ Real triangular_value(const Point3& p);
 Real cubic_value(const Point3& p);
 Point3 cubic_warp(const Point3& p);
 
-// `tiling n` (pattern_tiling.cpp) for n up to kTilingsImplemented (others: square).
+// `tiling n` (pattern_tiling.cpp), 1 to 27 (others: square).
 Real tiling_value(int n, const Point3& p);
+// Tilings 25 to 27 (pattern_penrose.cpp): Penrose's P1, P2 and P3 around the origin.
+enum class PenroseKind : uint8_t { Pentagons, KitesAndDarts, Rhombs };
+Real penrose_tiles(Real x, Real z, PenroseKind kind);
 
 // facets: replaces (or with `coords`, perturbs) pattern-space normal n at point p
 // (pattern_facets.cpp).

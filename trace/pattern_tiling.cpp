@@ -1,5 +1,6 @@
 // POV-Ray 3.7's `tiling N` pattern in the x-z plane (pattern.cpp of 3.7-stable read for
-// semantics; an independent implementation), for the tilings 1 to 22: each tile runs
+// semantics; an independent implementation), for the tilings 1 to 24 (25 to 27, the
+// Penrose tilings, are in pattern_penrose.cpp): each tile runs
 // from 0 at its centre line to 1 at its edges, and a tiling of k kinds of tiles gives
 // kind i the values [i/k, (i+1)/k]. The fixed offsets above 0.5, 2 or 5 (1e-7, 1e-12) are
 // POV-Ray's, keeping a value inside its kind's range.
@@ -607,6 +608,63 @@ Real dodecagon_triangle_tiles(Real x, Real z) {
     return (3.0000001 - d) / 3.0;
 }
 
+// 23 and 24: dodecagons, hexagons and squares (truncated trihexagonal), in a block of
+// 3 + sqrt3 by 3 + 3 sqrt3 folded into its quarter and across the slant of its corner
+// square. 23: hexagons the kind 0, squares 1, dodecagons 2. 24 (five kinds): hexagons 0,
+// the squares between a hexagon and a dodecagon above them 1, the slanted squares 2 or 3
+// by the parity of the quarter's mirrorings, dodecagons 4 (POV-Ray's squares above the
+// hexagons keep no upper bound of 1 on their distance).
+Real dodecagon_hexagon_tiles(Real x, Real z, bool five_kinds) {
+    x = wrap_to_period(x, 3.0 + kSqrt3);
+    z = wrap_to_period(z, 3.0 + 3.0 * kSqrt3);
+    int mirrorings = 0;
+    if (z > 1.5 * kSqrt3 + 1.5) {
+        z -= 1.5 * kSqrt3 + 1.5;
+        x += (x < 1.5 + kSqrt3Half ? 1.0 : -1.0) * (1.5 + kSqrt3Half);
+    }
+    if (x > 1.5 + kSqrt3Half) {
+        x = 3.0 + kSqrt3 - x;
+        ++mirrorings;
+    }
+    if (z > 1.0 + kSqrt3) {
+        z = 2.0 + 2.0 * kSqrt3 - z;
+        ++mirrorings;
+    }
+    if (x - kSqrt3Half - 1.5 + z * kSqrt3 < 0.0) {  // mirrored across that slant
+        const Real old_x = x, old_z = z;
+        x = (3.0 + kSqrt3) / 4.0 + 0.5 * old_x - kSqrt3Half * old_z;
+        z = (3.0 + 3.0 * kSqrt3) / 4.0 - kSqrt3Half * old_x - 0.5 * old_z;
+    }
+    const Real kinds = five_kinds ? 5.0 : 3.0;
+    const Real to_slant = x - kSqrt3Half - 2.5 + z * kSqrt3;
+    const Real to_bottom = (z * 2.0) - kSqrt3;
+    const Real to_right_slant = z - 1.5 * kSqrt3 - 0.5 + x * kSqrt3;
+    const Real to_left = ((x - 0.5) * 2.0);
+    if (to_slant >= 0.0 && to_bottom >= 0.0 && to_right_slant >= 0.0 && to_left >= 0.0) {
+        const Real d = std::min(
+            std::min(std::min(std::min(to_bottom, to_slant), to_right_slant), to_left),
+            1.0);
+        return ((five_kinds ? 5.000001 : 3.000001) - d) / kinds;
+    }
+    const Real to_top = 2 * z - 2 * kSqrt3 - 1.0;
+    if (to_top >= 0) return (2.0 - std::min(to_top, -to_left)) / kinds;
+    const Real to_hexagon_edge = kSqrt3 * x - z - kSqrt3Half + 0.5;
+    const Real to_far_edge = to_hexagon_edge - 2.0;
+    if (to_hexagon_edge < 0.0 && to_far_edge < 0.0) {  // the hexagon on the left
+        const Real d =
+            std::min(std::min(std::min(-to_hexagon_edge, -to_right_slant), -to_top), 1.0);
+        return (1.0 - d) / kinds;
+    }
+    if (to_far_edge >= 0.0 && to_hexagon_edge >= 0.0) {  // the hexagon below
+        const Real d = std::min(std::min(to_far_edge, -to_bottom), 1.0);
+        return (1.0 - d) / kinds;
+    }
+    // The slanted square (also where the two hexagon tests disagree, as POV-Ray).
+    const Real d = std::min(std::min(to_hexagon_edge, -to_slant), -to_far_edge);
+    const Real base = five_kinds ? Real(mirrorings % 2) + 3.0 : 2.0;
+    return (base - d) / kinds;
+}
+
 }  // namespace
 
 Real tiling_value(int n, const Point3& p) {
@@ -654,6 +712,16 @@ Real tiling_value(int n, const Point3& p) {
             return square_triangle_snub_tiles(x, z);
         case 22:
             return dodecagon_triangle_tiles(x, z);
+        case 23:
+            return dodecagon_hexagon_tiles(x, z, false);
+        case 24:
+            return dodecagon_hexagon_tiles(x, z, true);
+        case 25:
+            return penrose_tiles(x, z, PenroseKind::Pentagons);
+        case 26:
+            return penrose_tiles(x, z, PenroseKind::KitesAndDarts);
+        case 27:
+            return penrose_tiles(x, z, PenroseKind::Rhombs);
         default:
             return square_tiles(x, z);
     }

@@ -346,7 +346,7 @@ bool PixelSampler::method2(const PixelBlock& b, SampleSource& src, float* out) {
         have &= ensure(bx + half, by + half, cx, cy);
         if (!have) return false;
         const double d2 = d / 2;
-        float q[4][4];
+        float q[4][4] = {};  // (filled by the calls; GCC cannot tell)
         bool done = self(self, cx - d2, cy - d2, d2, bx, by, half, level - 1, q[0]);
         done &= self(self, cx - d2, cy + d2, d2, bx, by + half, half, level - 1, q[1]);
         done &= self(self, cx + d2, cy - d2, d2, bx + half, by, half, level - 1, q[2]);

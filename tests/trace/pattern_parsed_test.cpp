@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <tuple>
 
 #include "parser/parser.h"
 #include "tests/trace/pov_reference.h"
@@ -189,16 +190,31 @@ TEST(FractalsVsPovray, JuliaMandelExponentsMagnet) {
               kTol);
 }
 
-TEST(TilingVsPovray, TheImplementedTilings) {
+TEST(TilingVsPovray, EveryTiling) {
     test::TopView view;
     view.extent = 6.1;
     view.centre = {-0.7, 0, 0.45};
     const std::string grey = " colour_map { [0 rgb 0] [1 rgb 1] }";
-    for (int n = 1; n <= kTilingsImplemented; ++n) {
+    for (int n = 1; n <= 27; ++n) {
         const std::string text = "tiling " + std::to_string(n) + grey;
         EXPECT_LE(max_pigment_error(text, view), kTol) << text;
         EXPECT_LE(max_pigment_error(text + " scale 0.37 rotate y*25", view), kTol)
             << text;
+    }
+    // The Penrose tilings (25-27) are not periodic: far from the origin too, many levels
+    // down their subdivision, and around one vertex closely.
+    for (int n = 25; n <= 27; ++n) {
+        const std::string text = "tiling " + std::to_string(n) + grey;
+        for (auto [x, z, extent] : {std::tuple{37.3, -12.1, 8.0},
+                                    {-523.7, 311.9, 6.0},
+                                    {12345.6, -6789.1, 4.0},
+                                    {1.0, 0.0, 0.02}}) {
+            test::TopView far;
+            far.centre = {x, 0, z};
+            far.extent = extent;
+            EXPECT_LE(max_pigment_error(text, far), kTol)
+                << text << " at " << x << ", " << z;
+        }
     }
     EXPECT_LE(max_pigment_error("tiling 5", view), kTol);  // the default grey map
     EXPECT_LE(max_normal_error("tiling 9 0.5 scale 0.8", view), kTol);
