@@ -186,6 +186,10 @@ struct ImageMapping {
     // the colours' grey, as use_color.
     bool use_index = false;
     float all_filter = 0, all_transmit = 0;
+    // The pixels' colours are premultiplied by their opacity (POV-Ray's default for TIFF
+    // and OpenEXR, `premultiplied` for any file): an image_map pigment divides its sample
+    // by 1 - transmit (`transmit all` included), as POV-Ray's image_map does.
+    bool premultiplied = false;
     Real width = 0, height = 0;  // image size in pixels times the `repeat` vector
     Real offset_u = 0,
          offset_v = 0;  // `offset` in pixels (negated, as POV-Ray stores it)

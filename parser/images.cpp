@@ -122,11 +122,12 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
 
     // Optional decoding gamma and premultiplication right after the name.
     std::optional<Curve> explicit_gamma;
+    std::optional<bool> premultiplied;
     for (;;) {
         if (accept_word("gamma")) {
             explicit_gamma = curve_of(parse_gamma());
-        } else if (const Token& t = peek(); is_word(t, "premultiplied")) {
-            unsupported(t, "premultiplied");
+        } else if (accept_word("premultiplied")) {
+            premultiplied = int(parse_float()) != 0;  // POV-Ray's (int)Parse_Float()
         } else {
             break;
         }
@@ -254,6 +255,10 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         stored.pixels = Image();  // the parse's copy of the file is done with
         colour_mapped = stored.colour_mapped;
         has_alpha = stored.has_alpha;
+        // POV-Ray's TIFF and OpenEXR readers keep the colours premultiplied (so does any
+        // reader told `premultiplied on`), and its image_map divides them back.
+        mapping->premultiplied =
+            premultiplied.value_or(stored.format == "tiff" || stored.format == "openexr");
         px->indices = std::move(stored.indices);
         px->palette_size = stored.palette_size;
         pixels = px;

@@ -183,7 +183,13 @@ Colour image_map_colour(const ImageMapping& m, const Point3& p, bool* on_image) 
         if (on_image) *on_image = false;
         return Colour{Rgb{1.0f}, 0.0f, 1.0f};
     }
-    return sample(m, x, y);
+    Colour c = sample(m, x, y);
+    if (m.premultiplied) {
+        const float alpha = 1.0f - c.transmit;
+        if (alpha > 1e-10f)
+            c.rgb = Rgb{c.rgb.r / alpha, c.rgb.g / alpha, c.rgb.b / alpha};
+    }
+    return c;
 }
 
 void bump_map_normal(const ImageMapping& m, Real amount, const Point3& p, Vector3& n) {
