@@ -283,7 +283,6 @@ void Interpreter::parse_image_options(const Token& keyword, ImageBlock block,
         Numeric n = parse_express();
         return n.size == 1 ? std::pair{n.c[0], n.c[0]} : std::pair{n.c[0], n.c[1]};
     };
-    std::optional<Token> interpolate_at;
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) break;
@@ -296,7 +295,6 @@ void Interpreter::parse_image_options(const Token& keyword, ImageBlock block,
             mapping.once = true;
         } else if (w == "interpolate") {
             Token at = peek();
-            interpolate_at = at;
             mapping.interpolate = parse_int();
             if (block == ImageBlock::ImageMap && mapping.interpolate != 2 &&
                 mapping.interpolate != 3 && mapping.interpolate != 4)
@@ -384,10 +382,7 @@ void Interpreter::parse_image_options(const Token& keyword, ImageBlock block,
         }
     }
     if (is_material) {
-        // POV-Ray picks by the palette index (of other images, by red * 255); the
-        // interpolated index it computes then is not reproduced.
-        if (interpolate_at && mapping.interpolate != 0)
-            unsupported(*interpolate_at, "material_map with interpolate");
+        // POV-Ray picks by the palette index (of other images, by red * 255).
         if (colour_mapped && pixels && pixels->indices.empty())
             unsupported(keyword, "material_map of a palette image that repeats a colour");
     }

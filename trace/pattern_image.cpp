@@ -98,8 +98,9 @@ void pixel_at(const ImageMapping& m, Real x, Real y, int& ix, int& iy) {
     }
 }
 
-// One pixel (rgbft, with filter/transmit all added).
-void pixel(const ImageMapping& m, Real x, Real y, double out[5]) {
+// One pixel (rgbft, with filter/transmit all added); `index`, when asked for: its
+// palette index, -1 for an image without (POV-Ray's).
+void pixel(const ImageMapping& m, Real x, Real y, double out[5], int* index = nullptr) {
     const ImagePixels& img = *m.pixels;
     int ix, iy;
     pixel_at(m, x, y, ix, iy);
@@ -108,6 +109,10 @@ void pixel(const ImageMapping& m, Real x, Real y, double out[5]) {
     for (int i = 0; i < 5; ++i) out[i] = c[i];
     out[3] += m.all_filter;
     out[4] += m.all_transmit;
+    if (index)
+        *index = img.indices.empty()
+                     ? -1
+                     : int(img.indices[size_t(iy) * size_t(img.width) + size_t(ix)]);
 }
 
 // Catmull-Rom weights of the four pixels around fraction p.
@@ -119,10 +124,17 @@ void cubic_weights(Real x, Real w[4]) {
     w[3] = -0.5 * q * p * p;
 }
 
-Colour sample(const ImageMapping& m, Real x, Real y) {
+// The image's colour at (x, y) in pixels, interpolated as `interpolate` asks. With
+// `index_sum`: the pixels' palette indices (-1 without a palette) weighted as their
+// colours, which POV-Ray's material_map truncates to the texture's number.
+Colour sample(const ImageMapping& m, Real x, Real y, double* index_sum = nullptr) {
     double acc[5] = {0, 0, 0, 0, 0};
+    int index = -1;
+    int* want_index = index_sum ? &index : nullptr;
+    if (index_sum) *index_sum = 0;
     if (m.interpolate != 2 && m.interpolate != 3 && m.interpolate != 4) {
-        pixel(m, x, y, acc);
+        pixel(m, x, y, acc, want_index);
+        if (index_sum) *index_sum = index;
     } else if (m.interpolate == 3) {
         x += 0.5;
         y += 0.5;
@@ -133,8 +145,9 @@ Colour sample(const ImageMapping& m, Real x, Real y) {
         for (int i = 0; i < 4; ++i) {
             for (int j = 0; j < 4; ++j) {
                 double c[5];
-                pixel(m, Real(ix + i - 2), Real(iy + j - 2), c);
+                pixel(m, Real(ix + i - 2), Real(iy + j - 2), c, want_index);
                 for (int k = 0; k < 5; ++k) acc[k] += c[k] * wx[i] * wy[j];
+                if (index_sum) *index_sum += index * (wx[i] * wy[j]);
             }
         }
     } else {
@@ -166,8 +179,9 @@ Colour sample(const ImageMapping& m, Real x, Real y) {
                                     {Real(ix) - 1, Real(iy) - 1}};
         for (int i = 0; i < 4; ++i) {
             double c[5];
-            pixel(m, corners[i][0], corners[i][1], c);
+            pixel(m, corners[i][0], corners[i][1], c, want_index);
             for (int k = 0; k < 5; ++k) acc[k] += c[k] * w[i];
+            if (index_sum) *index_sum += index * w[i];
         }
     }
     return Colour{Rgb{float(acc[0]), float(acc[1]), float(acc[2])}, float(acc[3]),
@@ -250,14 +264,13 @@ Real image_pattern_value(const ImageMapping& m, const Point3& p) {
 int material_map_index(const ImageMapping& m, const Point3& p, int count) {
     Real x, y;
     if (count <= 0 || !m.pixels || !image_coordinates(m, p, x, y)) return 0;
-    int n;
-    if (!m.pixels->indices.empty()) {
-        int ix, iy;
-        pixel_at(m, x, y, ix, iy);
-        n = m.pixels->indices[size_t(iy) * size_t(m.pixels->width) + size_t(ix)];
-    } else {
-        n = int(double(sample(m, x, y).rgb.r) * 255.0);
-    }
+    // The (interpolated) palette index, truncated; none (-1: an image without a palette,
+    // or corners' weights that sum to exactly 1) takes red * 255. Interpolated weights
+    // that sum to a hair under 1 give 0, as POV-Ray's.
+    double index_sum;
+    const Colour c = sample(m, x, y, &index_sum);
+    const int index = int(index_sum);
+    int n = index == -1 ? int(double(c.rgb.r) * 255.0) : index;
     // POV-Ray wraps only numbers above the count; the count itself (and anything the
     // list runs out before) takes the last texture.
     if (n > count) n %= count;

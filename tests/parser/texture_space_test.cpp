@@ -163,13 +163,13 @@ TEST(MaterialMap, ImageAndTextures) {
     EXPECT_FALSE(t.map_pattern->transform.is_identity());
 }
 
-TEST(MaterialMap, InterpolatedIndicesAreRefused) {
-    const auto e = parse_error_in_golden_folder(
-        "sphere { 0, 1 texture { material_map { png \"images/palette.png\" interpolate 2 "
+// Interpolated indices are POV-Ray's (golden material_map_interpolate); any number is
+// kept, as POV-Ray's material_map takes any.
+TEST(MaterialMap, InterpolationIsKept) {
+    Scene s = parse_in_golden_folder(
+        "sphere { 0, 1 texture { material_map { png \"images/palette.png\" interpolate 3 "
         "texture { pigment { rgb 1 } } } } }");
-    ASSERT_TRUE(e);
-    EXPECT_EQ(e->kind(), ParseError::Kind::Unsupported);
-    EXPECT_EQ(e->message(), "unsupported: material_map with interpolate");
+    EXPECT_EQ(s.objects.at(0).texture.at(0).map_pattern->image->interpolate, 3);
 }
 
 TEST(ImagePattern, UseAlphaReadsTransmitOrRed) {
