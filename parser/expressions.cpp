@@ -801,7 +801,6 @@ Value ExpressionParser::word(const Token& t) {
         in_.unget(t);
         return in_.parse_colour(hold_);
     }
-    if (w == "eval_pigment") in_.unsupported(t, w);
     if (w.find('[') != std::string_view::npos) {
         in_.error(t, "array element '" + std::string(w) + "' used before it was set");
     }
