@@ -72,7 +72,11 @@ std::vector<uint16_t> Interpreter::height_field_image_heights(const StoredImage&
         }
         return heights;
     }
-    if (stored.has_alpha && !stored.colour_mapped)
+    // POV-Ray's heights ignore alpha where its readers keep colours as stored (PNG,
+    // Targa, BMP); its TIFF path premultiplies them in 8 bits, its EXR keeps them
+    // premultiplied: those are not reproduced.
+    if (stored.has_alpha && !stored.colour_mapped && stored.format != "png" &&
+        stored.format != "targa" && stored.format != "bmp")
         unsupported(at, "height_field image with an alpha channel");
     if (stored.colour_mapped && stored.indices.empty())
         unsupported(at, stored.format == "tiff"
@@ -85,7 +89,9 @@ std::vector<uint16_t> Interpreter::height_field_image_heights(const StoredImage&
         unsupported(at, "height_field Netpbm file of maxval " +
                             std::to_string(stored.pnm_maxval));
     const bool grey = stored.channels <= 2;
-    const bool png_palette_path = grey && stored.format == "png" && bits <= 8;
+    // (Grey with alpha has a grey container of its own, no palette.)
+    const bool png_palette_path =
+        stored.channels == 1 && stored.format == "png" && bits <= 8;
     if (!stored.float_data && !stored.colour_mapped && !png_palette_path && bits != 8 &&
         bits != 16)
         unsupported(at,
