@@ -485,10 +485,9 @@ void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         for (ChildRay c : rec.children) {
             c.coeff *= w;
             c.transmit_factor *= w;
-            for (int k = 0; k < c.trace.interiors.size && k < InteriorStack::kCapacity;
-                 ++k) {
-                if (c.trace.interiors.items[k] == subs[e])
-                    c.trace.interiors.items[k] = hit.material;
+            for (int k = 0; k < c.trace.interiors.size; ++k) {
+                if (c.trace.interiors.at(k) == subs[e])
+                    c.trace.interiors.set(k, hit.material);
             }
             children.insert(children.begin() + std::ptrdiff_t(at++), c);
         }
@@ -712,10 +711,9 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         h.material = &inside;
         spawn_hit(scene, ray, h, out, shadows, with_fog, pattern_normal);
         for (ChildRay& c : out.children) {
-            for (int k = 0; k < c.trace.interiors.size && k < InteriorStack::kCapacity;
-                 ++k) {
-                if (c.trace.interiors.items[k] == &inside)
-                    c.trace.interiors.items[k] = hit.material;
+            for (int k = 0; k < c.trace.interiors.size; ++k) {
+                if (c.trace.interiors.at(k) == &inside)
+                    c.trace.interiors.set(k, hit.material);
             }
         }
         return;
@@ -1256,8 +1254,8 @@ namespace {
 
 // Media and fog fill only "hollow" space: not the inside of a solid (non-hollow) object.
 bool hollow_ray(const InteriorStack& interiors) {
-    for (int i = 0; i < interiors.size && i < InteriorStack::kCapacity; ++i) {
-        const Material* m = interiors.items[i];
+    for (int i = 0; i < interiors.size; ++i) {
+        const Material* m = interiors.at(i);
         if (m && !(m->interior ? m->interior->hollow : m->object->hollow)) return false;
     }
     return true;
@@ -1266,8 +1264,8 @@ bool hollow_ray(const InteriorStack& interiors) {
 // Whether an interior the ray is inside of has media. (Not whether the box tracing it
 // holds objects with media: the ray may have entered one in another box.)
 bool in_media(const InteriorStack& interiors) {
-    for (int i = 0; i < interiors.size && i < InteriorStack::kCapacity; ++i) {
-        const Material* m = interiors.items[i];
+    for (int i = 0; i < interiors.size; ++i) {
+        const Material* m = interiors.at(i);
         if (m && m->interior && !m->interior->media.empty()) return true;
     }
     return false;
@@ -1276,8 +1274,8 @@ bool in_media(const InteriorStack& interiors) {
 // The media of the interiors a ray is inside of, in the order it entered them.
 void interior_media(const InteriorStack& interiors, std::vector<const Media*>& list) {
     list.clear();
-    for (int i = 0; i < interiors.size && i < InteriorStack::kCapacity; ++i) {
-        const Material* m = interiors.items[i];
+    for (int i = 0; i < interiors.size; ++i) {
+        const Material* m = interiors.at(i);
         if (m && m->interior)
             for (const Media& media : m->interior->media) list.push_back(&media);
     }

@@ -37,29 +37,49 @@ namespace povwall::trace {
 // keeps them: each entry is the material of a surface where the ray entered, and entries
 // are told apart by Material::interior_id, so leaving one object of a shared interior
 // leaves them all.
+// The first kInline entries live in the ray itself; deeper nesting (a glow of many
+// overlapping media spheres) goes on in `deeper`, which stays empty (no allocation) for
+// almost every ray. POV-Ray keeps up to 512 (its RAYINTERIOR_VECTOR_SIZE).
 struct InteriorStack {
-    static constexpr int kCapacity = 8;
-    const Material* items[kCapacity] = {};
+    static constexpr int kInline = 8;
+    static constexpr int kCapacity = 512;
+    const Material* items[kInline] = {};
+    std::vector<const Material*> deeper;
     int size = 0;
+    const Material* at(int i) const {
+        return i < kInline ? items[i] : deeper[size_t(i - kInline)];
+    }
+    void set(int i, const Material* m) {
+        if (i < kInline)
+            items[i] = m;
+        else
+            deeper[size_t(i - kInline)] = m;
+    }
     bool contains(uintptr_t interior) const { return find(interior) >= 0; }
     // Index of the first entry of `interior`, or -1.
     int find(uintptr_t interior) const {
-        for (int i = 0; i < size && i < kCapacity; ++i)
-            if (items[i] && items[i]->interior_id == interior) return i;
+        for (int i = 0; i < size; ++i)
+            if (const Material* m = at(i); m && m->interior_id == interior) return i;
         return -1;
     }
     void push(const Material* m) {
-        if (size < kCapacity) items[size++] = m;
+        if (size >= kCapacity) return;
+        if (size < kInline)
+            items[size] = m;
+        else
+            deeper.push_back(m);
+        ++size;
     }
     // Removes the first entry of `interior` (POV-Ray's RemoveInterior); false if none.
     bool remove(uintptr_t interior) {
         const int i = find(interior);
         if (i < 0) return false;
-        for (int j = i; j + 1 < size && j + 1 < kCapacity; ++j) items[j] = items[j + 1];
+        for (int j = i; j + 1 < size; ++j) set(j, at(j + 1));
         --size;
+        if (size >= kInline) deeper.pop_back();
         return true;
     }
-    const Material* innermost() const { return size ? items[size - 1] : nullptr; }
+    const Material* innermost() const { return size ? at(size - 1) : nullptr; }
 };
 
 // A ray to trace, with what exact POV-Ray semantics need to know about it.

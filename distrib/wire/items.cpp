@@ -55,20 +55,18 @@ struct Reader {
 
 void write_stack(RecordWriter& w, const trace::InteriorStack& s,
                  const ObjectNumbers& numbers) {
-    w.raw(uint8_t(s.size));
-    for (int i = 0; i < s.size && i < trace::InteriorStack::kCapacity; ++i) {
-        w.raw(numbers.number(s.items[i]));
-    }
+    w.raw(uint16_t(s.size));
+    for (int i = 0; i < s.size; ++i) w.raw(numbers.number(s.at(i)));
 }
 
 void read_stack(Reader& r, trace::InteriorStack& s, const ObjectNumbers& numbers) {
-    int n = r.raw<uint8_t>();
+    const int n = r.raw<uint16_t>();
     if (n > trace::InteriorStack::kCapacity) {
         r.ok = false;
         return;
     }
-    s.size = n;
-    for (int i = 0; i < n; ++i) s.items[i] = numbers.material(r.raw<int32_t>());
+    s = trace::InteriorStack{};
+    for (int i = 0; i < n && r.ok; ++i) s.push(numbers.material(r.raw<int32_t>()));
 }
 
 // A ray record leaves out what holds its default value, and says so in its flags: the

@@ -204,9 +204,24 @@ void first_batch(const Isosurface& s, const LocalRay& r, const ShapeClip* clip,
                  RayHits& h) {
     h.hits.clear();
     h.reached = s.max_gradient;
-    hits_once(s, r.origin, r.direction, h.reached, clip, 0, h.hits);
-    // In CSG POV-Ray takes the one batch; outside it, it looks past a hit (a shadow
-    // through a transparent isosurface) with a ray restarted there.
+    // In CSG POV-Ray takes the one batch, from where its ray starts: a shadow ray it
+    // restarted at a see-through surface (the CSG's, or another object's) searches
+    // afresh from there, so each sheet of the surface dims the light. Outside CSG it
+    // looks past a hit with a ray restarted there (add_restarts).
+    if (r.csg_child && r.restart > 0) {
+        const Real t0 = r.restart;
+        thread_local ShapeHits batch;
+        batch.clear();
+        hits_once(s, r.origin + r.direction * t0, r.direction, h.reached, clip, t0,
+                  batch);
+        for (const ShapeHit& m : batch) {
+            if (!(m.t > 0)) continue;
+            const Real t = t0 + m.t;
+            h.hits.push_back({t, r.origin + r.direction * t, m.face});
+        }
+    } else {
+        hits_once(s, r.origin, r.direction, h.reached, clip, 0, h.hits);
+    }
     h.complete = r.csg_child || h.hits.empty();
 }
 
@@ -264,6 +279,7 @@ struct LastRay {
     Point3 origin;
     Vector3 direction;
     bool csg_child = false;
+    Real restart = 0;  // a CSG child's batch starts there
     RayHits found;
 };
 
@@ -279,6 +295,7 @@ void clipped_hits(const Isosurface& s, const LocalRay& r, const ShapeClip* clip,
     thread_local LastRay last;
     const bool same = last.valid && last.origin == r.origin &&
                       last.direction == r.direction && last.csg_child == r.csg_child &&
+                      (!r.csg_child || last.restart == r.restart) &&
                       same_isosurface(last.shape, s);
     if (!same) {
         last.valid = true;
@@ -286,6 +303,7 @@ void clipped_hits(const Isosurface& s, const LocalRay& r, const ShapeClip* clip,
         last.origin = r.origin;
         last.direction = r.direction;
         last.csg_child = r.csg_child;
+        last.restart = r.restart;
         first_batch(s, r, nullptr, last.found);
     }
     if (!answers(last.found, r)) add_restarts(s, r, nullptr, last.found);
