@@ -8,7 +8,7 @@ namespace {
 // One record built in place, appended to its frame once: a vector insert per field was
 // a tenth of a worker's time.
 struct RecordWriter {
-    static constexpr size_t kCapacity = kMaxItemRecord;  // a record is at most 213 bytes
+    static constexpr size_t kCapacity = kMaxItemRecord;
     uint8_t bytes[kCapacity];
     uint8_t* p = bytes;
     template <class T>

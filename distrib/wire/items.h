@@ -112,7 +112,9 @@ class ObjectNumbers {
 // Appends the record of `item`, bound for `box`, to `out` (at most kMaxItemRecord bytes).
 void write_item(std::vector<uint8_t>& out, int box, const Item& item,
                 const ObjectNumbers& numbers);
-constexpr size_t kMaxItemRecord = 256;
+// 147 bytes besides the two interior stacks (the ray's and its shadow state's), each a
+// 2-byte count and 4 bytes an entry, up to InteriorStack::kCapacity entries.
+constexpr size_t kMaxItemRecord = 147 + 2 * (2 + 4 * trace::InteriorStack::kCapacity);
 
 // What a received record may name: a record outside these is refused, so that nothing
 // a peer sends indexes past a receiver's arrays.

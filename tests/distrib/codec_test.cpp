@@ -189,10 +189,12 @@ class RandomItems {
     }
     float f() { return float(d()); }
     void stack(trace::InteriorStack& s) {
-        s.size = stacks_ ? int(rng_() % (trace::InteriorStack::kCapacity + 1)) : 0;
-        for (int i = 0; i < s.size; ++i) {
+        // Up to 20 entries: past the 8 a ray holds itself.
+        s = trace::InteriorStack{};
+        const int size = stacks_ ? int(rng_() % 21) : 0;
+        for (int i = 0; i < size; ++i) {
             const int32_t n = int32_t(rng_() % (numbers_.size() + 1)) - 1;
-            s.items[i] = numbers_.material(n);
+            s.push(numbers_.material(n));
         }
     }
     std::mt19937_64 rng_{20261204};
@@ -265,7 +267,7 @@ TEST(WireItems, RecordsRoundTripBitForBit) {
         EXPECT_EQ(a.ray.trace.depth, b.ray.trace.depth);
         EXPECT_EQ(a.ray.trace.interiors.size, b.ray.trace.interiors.size);
         for (int k = 0; k < a.ray.trace.interiors.size; ++k)
-            EXPECT_EQ(a.ray.trace.interiors.items[k], b.ray.trace.interiors.items[k]);
+            EXPECT_EQ(a.ray.trace.interiors.at(k), b.ray.trace.interiors.at(k));
         EXPECT_EQ(a.ray.shadow_state.light, b.ray.shadow_state.light);
         EXPECT_EQ(a.ray.shadow_state.blocked, b.ray.shadow_state.blocked);
         EXPECT_EQ(a.ray.shadow_state.photon_caustics, b.ray.shadow_state.photon_caustics);
@@ -335,7 +337,7 @@ TEST(WireItems, AnInteriorNumberNotHeldReadsAsNoObject) {
     EXPECT_EQ(read[0].ray.trace.interiors.items[0], numbers.material(3));
     EXPECT_NE(read[0].ray.trace.interiors.items[0], nullptr);
     // The first entry's number (after box, flags, ray, depth, weight, use, stack size).
-    const size_t entry = 4 + 1 + 48 + 4 + 4 + 1 + 1;
+    const size_t entry = 4 + 1 + 48 + 4 + 4 + 1 + 2;
     int32_t n;
     std::memcpy(&n, bytes.data() + entry, 4);
     ASSERT_EQ(n, 3);
