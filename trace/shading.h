@@ -25,6 +25,7 @@
 // fades), which multiplies the light's contribution: linear in that transmittance.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -46,6 +47,29 @@ struct InteriorStack {
     const Material* items[kInline] = {};
     std::vector<const Material*> deeper;
     int size = 0;
+    // Copies are made for every child ray: the inline part as one block, `deeper` only
+    // when either side uses it.
+    InteriorStack() = default;
+    InteriorStack(const InteriorStack& o) : size(o.size) {
+        std::copy(o.items, o.items + kInline, items);
+        if (o.size > kInline) deeper = o.deeper;
+    }
+    InteriorStack(InteriorStack&& o) noexcept
+        : deeper(std::move(o.deeper)), size(o.size) {
+        std::copy(o.items, o.items + kInline, items);
+    }
+    InteriorStack& operator=(const InteriorStack& o) {
+        std::copy(o.items, o.items + kInline, items);
+        if (o.size > kInline || size > kInline) deeper = o.deeper;
+        size = o.size;
+        return *this;
+    }
+    InteriorStack& operator=(InteriorStack&& o) noexcept {
+        std::copy(o.items, o.items + kInline, items);
+        if (o.size > kInline || size > kInline) deeper = std::move(o.deeper);
+        size = o.size;
+        return *this;
+    }
     const Material* at(int i) const {
         return i < kInline ? items[i] : deeper[size_t(i - kInline)];
     }
