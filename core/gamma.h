@@ -16,10 +16,8 @@ struct GammaCurve {
     }
     static GammaCurve srgb() { return {Kind::Srgb, 1.0f}; }
 
-    // POV-Ray treats a power law within 1 % of 1 as no curve at all.
-    bool neutral() const {
-        return kind == Kind::Power && std::fabs(1.0 - 1.0 / decoding_exponent) <= 0.01;
-    }
+    // Exactly linear: values pass as they are (assumed_gamma 1, and no assumed_gamma).
+    bool is_linear() const { return kind == Kind::Power && decoding_exponent == 1.0f; }
     // The same curve: transcoding between them is the identity.
     bool matches(const GammaCurve& o) const {
         if (kind != o.kind) return false;

@@ -129,10 +129,7 @@ float encode_channel(float v, const OutputEncoding& enc) {
     if (working.kind == GammaCurve::Kind::Srgb && enc.file_srgb)
         return std::clamp(v, 0.0f, 1.0f);
     // Working space (assumed_gamma) to linear, then to the file's encoding.
-    float lin =
-        working.kind == GammaCurve::Kind::Power && working.decoding_exponent == 1.0f
-            ? v
-            : working.decode(v);
+    float lin = working.is_linear() ? v : working.decode(v);
     lin = std::clamp(lin, 0.0f, 1.0f);
     return enc.file_srgb ? GammaCurve::srgb().encode(lin)
                          : std::pow(lin, 1.0f / enc.file_gamma);
@@ -188,11 +185,8 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
             if (linear_format) {
                 // EXR/HDR hold linear light, as POV-Ray writes them (working -> linear).
                 const GammaCurve& working = enc.working_gamma;
-                if (c < 3 && enc.gamma_handling &&
-                    !(working.kind == GammaCurve::Kind::Power &&
-                      working.decoding_exponent == 1.0f)) {
+                if (c < 3 && enc.gamma_handling && !working.is_linear())
                     v = working.decode(v);
-                }
                 floats.push_back(v);
                 continue;
             }

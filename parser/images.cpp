@@ -186,8 +186,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         // encoded with the working curve itself is read as it is (POV-Ray's transcoding
         // between matching curves is the identity).
         const bool srgb_working = working.kind == GammaCurve::Kind::Srgb;
-        bool encode_working =
-            correct && !raw && (srgb_working || working.decoding_exponent != 1.0f);
+        bool encode_working = correct && !raw && !working.is_linear();
         if (encode_working && file.kind != Curve::Kind::Neutral &&
             working.matches(file.kind == Curve::Kind::Srgb
                                 ? GammaCurve::srgb()

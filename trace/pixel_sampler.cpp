@@ -101,10 +101,10 @@ AaEncoding aa_encoding(float antialias_gamma, const Scene& scene) {
     };
     const bool has_aa_curve = antialias_gamma > 0;
     const float aa_encode = has_aa_curve ? 1.0f / antialias_gamma : 1.0f;
-    const bool working_given = scene.gamma_mode == GammaMode::Assumed36 ||
+    const bool working_power = scene.gamma_mode == GammaMode::Assumed36 ||
                                scene.gamma_mode == GammaMode::Assumed37;
     const GammaCurve working_curve =
-        working_given ? scene.settings.assumed_gamma.value_or(GammaCurve{})
+        working_power ? scene.settings.assumed_gamma.value_or(GammaCurve{})
                       : GammaCurve{};
     if (working_curve.kind == GammaCurve::Kind::Srgb) {
         // sRGB to linear, then the AA curve: POV-Ray's transcoding of two unlike curves.
@@ -112,7 +112,6 @@ AaEncoding aa_encoding(float antialias_gamma, const Scene& scene) {
         e.srgb_decode = true;
         return e;
     }
-    const bool working_power = working_given;
     const float working = working_curve.decoding_exponent;
     if (!working_power || std::fabs(1.0f - 1.0f / working) <= 0.01f)
         return has_aa_curve ? curve(aa_encode) : AaEncoding{true, 1.0f};
