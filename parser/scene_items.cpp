@@ -916,6 +916,8 @@ void Interpreter::parse_mesh2(Object& out) {
     };
     std::vector<std::array<int, 3>> normal_idx;
     std::optional<Token> uv_indices_at;
+    std::optional<Token> normal_indices_at;
+    std::optional<Token> face_indices_at;
     for (;;) {
         Token t = next();
         if (is_punct(t, '}')) {
@@ -923,10 +925,19 @@ void Interpreter::parse_mesh2(Object& out) {
             break;
         }
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
-        if (w == "vertex_vectors") {
-            read_vectors(mesh.vertices);
-        } else if (w == "normal_vectors") {
-            read_vectors(mesh.normals);
+        const bool list_section = w == "vertex_vectors" || w == "normal_vectors" ||
+                                  w == "uv_vectors" || w == "texture_list";
+        if (list_section && face_indices_at)
+            expected("uv_indices, normal_indices or the end of mesh2", t);
+        if (w == "vertex_vectors" || w == "normal_vectors") {
+            // A second block replaces the first (POV-Ray warns).
+            std::vector<Vector3>& list =
+                w == "vertex_vectors" ? mesh.vertices : mesh.normals;
+            if (!list.empty())
+                warn(t,
+                     "duplicate " + std::string(w) + " block; ignoring previous block");
+            list.clear();
+            read_vectors(list);
         } else if (w == "uv_vectors") {
             // A second block replaces the first (POV-Ray warns).
             if (!mesh.uvs.empty())
@@ -954,6 +965,12 @@ void Interpreter::parse_mesh2(Object& out) {
             accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "face_indices") {
+            // One section, before its uv_indices and normal_indices (POV-Ray's fixed
+            // order; indices checked against a face count that then changes would not
+            // hold).
+            if (face_indices_at)
+                error(t, "only one face_indices section is allowed in mesh2");
+            face_indices_at = t;
             expect_punct('{');
             int n = parse_count();
             reserve_list(mesh.faces, n);
@@ -1022,8 +1039,16 @@ void Interpreter::parse_mesh2(Object& out) {
             accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "normal_indices") {
+            if (!face_indices_at) expected("face_indices", t);
+            if (normal_indices_at)
+                error(t, "only one normal_indices section is allowed in mesh2");
+            normal_indices_at = t;
             expect_punct('{');
+            const Token count_at = peek();
             int n = parse_count();
+            if (size_t(n) > mesh.faces.size())
+                error(count_at,
+                      "number of normal indices cannot be more than the number of faces");
             for (int i = 0; i < n; ++i) {
                 accept_punct(',');
                 Token at = peek();
@@ -1037,6 +1062,7 @@ void Interpreter::parse_mesh2(Object& out) {
             accept_punct(',');  // trailing comma
             expect_punct('}');
         } else if (w == "uv_indices") {
+            if (!face_indices_at) expected("face_indices", t);
             if (uv_indices_at)
                 error(t, "only one uv_indices section is allowed in mesh2");
             uv_indices_at = t;
@@ -1073,16 +1099,18 @@ void Interpreter::parse_mesh2(Object& out) {
             break;
         }
     }
-    // Without normal_indices, normals are indexed like the vertices.
-    for (size_t i = 0; i < mesh.faces.size(); ++i) {
-        auto& f = mesh.faces[i];
-        for (int k = 0; k < 3; ++k) {
-            if (i < normal_idx.size())
-                f.n[k] = normal_idx[i][k];
-            else if (!mesh.normals.empty())
-                f.n[k] = int32_t(f.v[k]);
-        }
+    if (!face_indices_at) expected("face_indices", peek());
+    // Faces past the normal_indices are flat; without that section, as many normals as
+    // vertices are indexed like the vertices, and any other count is an error
+    // (Parse_Mesh2).
+    if (!normal_indices_at && !mesh.normals.empty()) {
+        if (mesh.normals.size() != mesh.vertices.size())
+            error(peek(), "missing normal_indices section in mesh2");
+        for (MeshFace& f : mesh.faces)
+            for (int k = 0; k < 3; ++k) f.n[k] = int32_t(f.v[k]);
     }
+    for (size_t i = 0; i < normal_idx.size(); ++i)
+        for (int k = 0; k < 3; ++k) mesh.faces[i].n[k] = normal_idx[i][k];
     // Texture coordinates without uv_indices: indexed like the vertices, or the one
     // coordinate for every corner (POV-Ray's rules).
     if (!uv_indices_at && !mesh.uvs.empty()) {

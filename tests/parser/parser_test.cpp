@@ -490,6 +490,52 @@ TEST(Errors, Mesh2IndicesOutOfRangeAreLocated) {
               "test.pov:1:155: error: mesh2 face index out of range");
 }
 
+// mesh2's normals as Parse_Mesh2 takes them. Without normal_indices, as many normals as
+// vertices are indexed like the vertices, and any other count is an error (the fuzzer's
+// heap overflow: povwall indexed 2 normals by 4 vertices); faces past the normal_indices
+// are flat; a second vertex or normal block replaces the first; the index sections
+// follow face_indices, which every mesh2 has.
+TEST(Errors, Mesh2NormalsWithoutTheirIndicesFollowPovRay) {
+    const std::string verts = "mesh2 { vertex_vectors { 4, 0, x, y, x+y } ";
+    EXPECT_EQ(error_of(verts + "normal_vectors { 2, z, y } face_indices { 2, <0,1,2>, "
+                               "<1,3,2> } }"),
+              "test.pov:1:108: error: missing normal_indices section in mesh2");
+    const Scene s = parse(verts +
+                          "normal_vectors { 4, z, y, x, -z } face_indices { 2, <0,1,2>, "
+                          "<1,3,2> } }\n" +
+                          verts +
+                          "normal_vectors { 2, z, y } face_indices { 2, <0,1,2>, <1,3,2> "
+                          "} normal_indices { 1, <0,1,1> } }");
+    const MeshData& by_vertex = *std::get<Mesh>(s.objects.at(0).shape).data;
+    EXPECT_EQ(by_vertex.faces[1].n[0], 1);
+    EXPECT_EQ(by_vertex.faces[1].n[1], 3);
+    EXPECT_EQ(by_vertex.faces[1].n[2], 2);
+    const MeshData& fewer = *std::get<Mesh>(s.objects.at(1).shape).data;
+    EXPECT_EQ(fewer.faces[0].n[1], 1);
+    EXPECT_EQ(fewer.faces[1].n[0], -1);  // flat
+    EXPECT_EQ(error_of(verts + "face_indices { 1, <0,1,2> } normal_vectors { 1, z } }"),
+              "test.pov:1:72: error: expected uv_indices, normal_indices or the end of "
+              "mesh2 but found 'normal_vectors'");
+    EXPECT_EQ(error_of(verts + "normal_vectors { 1, z } normal_indices { 1, <0,0,0> } }"),
+              "test.pov:1:68: error: expected face_indices but found 'normal_indices'");
+    EXPECT_EQ(error_of(verts + "}"),
+              "test.pov:1:44: error: expected face_indices but found '}'");
+    EXPECT_EQ(
+        error_of(verts + "face_indices { 1, <0,1,2> } normal_vectors { 4, z, z, z, z } "
+                         "face_indices { 1, <0,1,2> } }"),
+        "test.pov:1:72: error: expected uv_indices, normal_indices or the end of "
+        "mesh2 but found 'normal_vectors'");
+    std::string messages;
+    const Scene twice = parse(
+        "mesh2 { vertex_vectors { 1, 5*x } vertex_vectors { 3, 0, x, y } face_indices { "
+        "1, <0,1,2> } }",
+        &messages);
+    EXPECT_EQ(std::get<Mesh>(twice.objects.at(0).shape).data->vertices.size(), 3u);
+    EXPECT_EQ(messages.substr(0, messages.find('\n')),
+              "test.pov:1:35: warning: duplicate vertex_vectors block; ignoring previous "
+              "block");
+}
+
 // A macro call whose arguments run past the end of the macro body that contains it: the
 // look-ahead after `N` ends that body and frees its scope, where `N` was bound. Found by
 // the scene fuzzer (a heap-use-after-free); now `N` is looked up again, outside the body
