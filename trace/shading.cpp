@@ -485,10 +485,7 @@ void spawn_weighted(const PreparedScene& scene, const TraceRay& ray, const Hit& 
         for (ChildRay c : rec.children) {
             c.coeff *= w;
             c.transmit_factor *= w;
-            for (int k = 0; k < c.trace.interiors.size; ++k) {
-                if (c.trace.interiors.at(k) == subs[e])
-                    c.trace.interiors.set(k, hit.material);
-            }
+            c.trace.interiors.replace(subs[e], hit.material);
             children.insert(children.begin() + std::ptrdiff_t(at++), c);
         }
     }
@@ -711,10 +708,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         h.material = &inside;
         spawn_hit(scene, ray, h, out, shadows, with_fog, pattern_normal);
         for (ChildRay& c : out.children) {
-            for (int k = 0; k < c.trace.interiors.size; ++k) {
-                if (c.trace.interiors.at(k) == &inside)
-                    c.trace.interiors.set(k, hit.material);
-            }
+            c.trace.interiors.replace(&inside, hit.material);
         }
         return;
     }
@@ -1254,31 +1248,30 @@ namespace {
 
 // Media and fog fill only "hollow" space: not the inside of a solid (non-hollow) object.
 bool hollow_ray(const InteriorStack& interiors) {
-    for (int i = 0; i < interiors.size; ++i) {
-        const Material* m = interiors.at(i);
-        if (m && !(m->interior ? m->interior->hollow : m->object->hollow)) return false;
-    }
-    return true;
+    bool hollow = true;
+    interiors.for_each([&](const Material* m) {
+        if (m && !(m->interior ? m->interior->hollow : m->object->hollow)) hollow = false;
+    });
+    return hollow;
 }
 
 // Whether an interior the ray is inside of has media. (Not whether the box tracing it
 // holds objects with media: the ray may have entered one in another box.)
 bool in_media(const InteriorStack& interiors) {
-    for (int i = 0; i < interiors.size; ++i) {
-        const Material* m = interiors.at(i);
-        if (m && m->interior && !m->interior->media.empty()) return true;
-    }
-    return false;
+    bool media = false;
+    interiors.for_each([&](const Material* m) {
+        if (m && m->interior && !m->interior->media.empty()) media = true;
+    });
+    return media;
 }
 
 // The media of the interiors a ray is inside of, in the order it entered them.
 void interior_media(const InteriorStack& interiors, std::vector<const Media*>& list) {
     list.clear();
-    for (int i = 0; i < interiors.size; ++i) {
-        const Material* m = interiors.at(i);
+    interiors.for_each([&](const Material* m) {
         if (m && m->interior)
             for (const Media& media : m->interior->media) list.push_back(&media);
-    }
+    });
 }
 
 // Whether the atmosphere's media dim shadow rays toward light `l` (media_interaction

@@ -29,82 +29,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "trace/interior_stack.h"
 #include "trace/prepared_scene.h"
 #include "trace/spectral.h"
 
 namespace povwall::trace {
-
-// The interiors a ray is inside of, innermost (last entered) last, as POV-Ray's ray
-// keeps them: each entry is the material of a surface where the ray entered, and entries
-// are told apart by Material::interior_id, so leaving one object of a shared interior
-// leaves them all.
-// The first kInline entries live in the ray itself; deeper nesting (a glow of many
-// overlapping media spheres) goes on in `deeper`, which stays empty (no allocation) for
-// almost every ray. POV-Ray keeps up to 512 (its RAYINTERIOR_VECTOR_SIZE).
-struct InteriorStack {
-    static constexpr int kInline = 8;
-    static constexpr int kCapacity = 512;
-    const Material* items[kInline] = {};
-    std::vector<const Material*> deeper;
-    int size = 0;
-    // Copies are made for every child ray: the inline part as one block, `deeper` only
-    // when either side uses it.
-    InteriorStack() = default;
-    InteriorStack(const InteriorStack& o) : size(o.size) {
-        std::copy(o.items, o.items + kInline, items);
-        if (o.size > kInline) deeper = o.deeper;
-    }
-    InteriorStack(InteriorStack&& o) noexcept
-        : deeper(std::move(o.deeper)), size(o.size) {
-        std::copy(o.items, o.items + kInline, items);
-    }
-    InteriorStack& operator=(const InteriorStack& o) {
-        std::copy(o.items, o.items + kInline, items);
-        if (o.size > kInline || size > kInline) deeper = o.deeper;
-        size = o.size;
-        return *this;
-    }
-    InteriorStack& operator=(InteriorStack&& o) noexcept {
-        std::copy(o.items, o.items + kInline, items);
-        if (o.size > kInline || size > kInline) deeper = std::move(o.deeper);
-        size = o.size;
-        return *this;
-    }
-    const Material* at(int i) const {
-        return i < kInline ? items[i] : deeper[size_t(i - kInline)];
-    }
-    void set(int i, const Material* m) {
-        if (i < kInline)
-            items[i] = m;
-        else
-            deeper[size_t(i - kInline)] = m;
-    }
-    bool contains(uintptr_t interior) const { return find(interior) >= 0; }
-    // Index of the first entry of `interior`, or -1.
-    int find(uintptr_t interior) const {
-        for (int i = 0; i < size; ++i)
-            if (const Material* m = at(i); m && m->interior_id == interior) return i;
-        return -1;
-    }
-    void push(const Material* m) {
-        if (size >= kCapacity) return;
-        if (size < kInline)
-            items[size] = m;
-        else
-            deeper.push_back(m);
-        ++size;
-    }
-    // Removes the first entry of `interior` (POV-Ray's RemoveInterior); false if none.
-    bool remove(uintptr_t interior) {
-        const int i = find(interior);
-        if (i < 0) return false;
-        for (int j = i; j + 1 < size; ++j) set(j, at(j + 1));
-        --size;
-        if (size >= kInline) deeper.pop_back();
-        return true;
-    }
-    const Material* innermost() const { return size ? at(size - 1) : nullptr; }
-};
 
 // A ray to trace, with what exact POV-Ray semantics need to know about it.
 struct TraceRay {

@@ -56,7 +56,7 @@ struct Reader {
 void write_stack(RecordWriter& w, const trace::InteriorStack& s,
                  const ObjectNumbers& numbers) {
     w.raw(uint16_t(s.size));
-    for (int i = 0; i < s.size; ++i) w.raw(numbers.number(s.at(i)));
+    s.for_each([&](const trace::Material* m) { w.raw(numbers.number(m)); });
 }
 
 void read_stack(Reader& r, trace::InteriorStack& s, const ObjectNumbers& numbers) {
@@ -65,8 +65,9 @@ void read_stack(Reader& r, trace::InteriorStack& s, const ObjectNumbers& numbers
         r.ok = false;
         return;
     }
-    s = trace::InteriorStack{};
-    for (int i = 0; i < n && r.ok; ++i) s.push(numbers.material(r.raw<int32_t>()));
+    const trace::Material* entries[trace::InteriorStack::kCapacity];
+    for (int i = 0; i < n && r.ok; ++i) entries[i] = numbers.material(r.raw<int32_t>());
+    s = trace::InteriorStack::of(entries, r.ok ? n : 0);
 }
 
 // A ray record leaves out what holds its default value, and says so in its flags: the
