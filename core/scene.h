@@ -985,8 +985,9 @@ struct AreaLight {
 
 struct Light {
     enum class Kind : uint8_t { Point, Spot, Cylinder, Parallel } kind = Kind::Point;
-    // Scene::objects placed before this light: where POV-Ray's object list holds it
-    // (its looks_like object takes part in POV-Ray's test order there).
+    // Objects placed before this light in the whole scene (those a filtered parse left
+    // out too): where POV-Ray's object list holds it (its looks_like object takes part
+    // in POV-Ray's test order there).
     uint32_t objects_before = 0;
     Point3 location;
     Rgb colour{1.0f};

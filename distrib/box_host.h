@@ -89,6 +89,11 @@ class BoxHost {
     // Walls from the options (in-process render, coordinator).
     void place_walls();
     void set_walls(VirtualWalls walls) { walls_ = std::move(walls); }
+    // A worker's scene holds only its boxes' objects: the whole scene's object list,
+    // recorded as it parsed, gives its boxes POV-Ray's ties and slab-tree tests.
+    void set_whole_scene(std::shared_ptr<const trace::PovWholeScene> whole) {
+        whole_scene_ = std::move(whole);
+    }
     const VirtualWalls& walls() const { return walls_; }
     // Prepares the local scenes of the `hosted` boxes; the others stay unprepared here
     // and are reached through `remote`.
@@ -276,6 +281,7 @@ class BoxHost {
     std::vector<trace::SamplePosition> samples_;
     std::unique_ptr<trace::FocalBlur> blur_;
     std::shared_ptr<const trace::PhotonMap> photons_;
+    std::shared_ptr<const trace::PovWholeScene> whole_scene_;
     // Progress (settings.progress): pixels sent, scaled by the share of items finished.
     std::atomic<uint64_t> progress_reported_{0};
     void report_progress();

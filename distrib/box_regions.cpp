@@ -163,6 +163,7 @@ void BoxHost::build_boxes(const std::vector<int>& hosted) {
         if (host[b]) {
             trace::PrepareOptions prepare;
             prepare.threads = settings_.threads;
+            prepare.whole_scene = whole_scene_;
             box->scene =
                 std::make_unique<trace::PreparedScene>(scene_, local[b], &plan_, prepare);
             box->scene->set_alpha_background(settings_.alpha);

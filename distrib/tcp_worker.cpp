@@ -430,10 +430,16 @@ class Worker {
         for (int b : mine_) hosted[size_t(b)] = 1;
         popts.expected_objects = job_->frame.expected_objects.at(size_t(self_));
         const std::vector<WalkReach>& walk = job_->frame.walk_reaches;
-        popts.keep_object = [&walls, &hosted, &walk](const Object& o) {
+        auto whole = std::make_shared<trace::PovWholeScene>();
+        auto keep = [&walls, &hosted, &walk](const Object& o) {
             for (int b : boxes_holding(walls, o, walk))
                 if (hosted[size_t(b)]) return true;
             return false;
+        };
+        popts.keep_object = [&keep, &whole](const Object& o) {
+            const bool kept = keep(o);
+            whole->add(o, kept);
+            return kept;
         };
         try {
             if (job_->inherited && options_.inherited_scene &&
@@ -442,9 +448,15 @@ class Worker {
                 // Its object list stays in the inherited scene, never freed: the
                 // process ends with _exit, and freeing would write to (copy) the pages
                 // it still shares with the coordinator.
-                scene_ =
-                    take_scene_keeping(std::move(*options_.inherited_scene),
-                                       options_.inherited_objects->at(size_t(self_)));
+                const std::vector<uint32_t>& kept =
+                    options_.inherited_objects->at(size_t(self_));
+                size_t next = 0;
+                for (size_t i = 0; i < options_.inherited_scene->objects.size(); ++i) {
+                    const bool mine = next < kept.size() && kept[next] == i;
+                    next += mine;
+                    whole->add(options_.inherited_scene->objects[i], mine);
+                }
+                scene_ = take_scene_keeping(std::move(*options_.inherited_scene), kept);
                 options_.inherited_scene = nullptr;  // later frames parse
             } else {
                 scene_ = parser::parse_scene_text(fixed.scene, fixed.name, popts);
@@ -462,6 +474,7 @@ class Worker {
         numbers_ = std::make_unique<ObjectNumbers>(scene_);
         host_ = std::make_unique<BoxHost>(scene_, settings_, space_, &job_->frame.plan);
         host_->set_walls(std::move(walls));
+        host_->set_whole_scene(std::move(whole));
         host_->build_boxes(mine_);
         if (options_.shared_sums &&
             options_.shared_sums_count == size_t(settings_.width) *

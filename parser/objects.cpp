@@ -1097,7 +1097,8 @@ void Interpreter::collect_lights(Object& obj) {
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
         for (Light& l : csg->lights) {
             scene_.lights.push_back(std::move(l));
-            scene_.lights.back().objects_before = uint32_t(scene_.objects.size());
+            scene_.lights.back().objects_before =
+                uint32_t(scene_.objects.size() + scene_.objects_left_out);
         }
         csg->lights.clear();
         for (Object& child : csg->children) collect_lights(child);
@@ -1232,7 +1233,8 @@ void Interpreter::parse_top_level_item(const Token& t) {
         }
         if (w == "light_source" && !light_block_names_object()) {
             scene_.lights.push_back(parse_light_block());
-            scene_.lights.back().objects_before = uint32_t(scene_.objects.size());
+            scene_.lights.back().objects_before =
+                uint32_t(scene_.objects.size() + scene_.objects_left_out);
             return;
         }
         if (w == "background") {
@@ -1317,7 +1319,8 @@ void Interpreter::parse_top_level_item(const Token& t) {
         }
         if (auto l = std::get_if<std::shared_ptr<Light>>(v)) {
             scene_.lights.push_back(**l);
-            scene_.lights.back().objects_before = uint32_t(scene_.objects.size());
+            scene_.lights.back().objects_before =
+                uint32_t(scene_.objects.size() + scene_.objects_left_out);
             return;
         }
         error(t, "a " + std::string(type_name(*v)) + " identifier '" + std::string(w) +

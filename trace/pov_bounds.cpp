@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "trace/pov_order.h"
 #include "trace/pov_slab_test.h"
 #include "trace/shapes/shape.h"
 
@@ -293,7 +294,23 @@ size_t pov_frame_object_count(const Object& o) {
     return 1;
 }
 
-bool pov_slab_root(const Scene& scene, PovBBox& root) {
+bool pov_slab_root(const Scene& scene, PovBBox& root, const PovWholeScene* whole) {
+    if (whole) {
+        Bounds3 b;
+        for (const PovBBox& box : whole->boxes()) {
+            if (!pov_bbox_finite(box)) return false;
+            b.extend(pov_bbox_bounds(box));
+        }
+        for (const Light& l : scene.lights) {
+            if (l.looks_like.empty()) continue;
+            const PovBBox box = pov_object_bbox(l.looks_like.front());
+            if (!pov_bbox_finite(box)) return false;
+            b.extend(pov_bbox_bounds(box));
+        }
+        if (b.empty()) return false;
+        root = pov_bbox(b);
+        return true;
+    }
     if (scene.objects_filtered()) return false;
     // Most scenes have a plane: their root is infinite, known without the other boxes.
     bool plane = false;
@@ -320,7 +337,8 @@ bool pov_slab_root(const Scene& scene, PovBBox& root) {
     return true;
 }
 
-size_t pov_frame_objects(const Scene& scene) {
+size_t pov_frame_objects(const Scene& scene, const PovWholeScene* whole) {
+    if (whole) return scene.lights.size() + whole->boxes().size();
     size_t n = scene.lights.size() + scene.objects_left_out;
     for (const Object& o : scene.objects) n += pov_frame_object_count(o);
     return n;

@@ -29,6 +29,8 @@
 
 namespace povwall::trace {
 
+class PovWholeScene;
+
 constexpr Real kBoundHuge = 2e10;       // BOUND_HUGE: the size of an infinite box
 constexpr Real kCriticalLength = 1e6;   // a CSG box longer than this becomes infinite
 constexpr Real kSmallTolerance = 1e-3;  // padding of flat polygon and disc boxes
@@ -144,13 +146,16 @@ bool pov_tests_own_bbox(const Object& o);
 // lengths cuts off. False when the root is infinite (it then holds the infinite objects
 // and is never tested) or the scene's objects are not all here. The nodes between the
 // root and the objects are not modelled: their grouping is POV-Ray's sort_and_split.
-bool pov_slab_root(const Scene& scene, PovBBox& root);
+// `whole`: the whole scene's record when `scene` holds only some of its objects
+// (trace/pov_order.h).
+bool pov_slab_root(const Scene& scene, PovBBox& root,
+                   const PovWholeScene* whole = nullptr);
 
 // Frame-level objects as POV-Ray links them: plain unions (pov_splits_union(), core/
 // scene.h) are opened into their children, everything else counts once; light sources
 // count too. POV-Ray builds its bounding-slab tree when this reaches
 // kPovBoundingThreshold.
-size_t pov_frame_objects(const Scene& scene);
+size_t pov_frame_objects(const Scene& scene, const PovWholeScene* whole = nullptr);
 // The frame-level objects one object becomes (1, or a plain union's children's).
 size_t pov_frame_object_count(const Object& o);
 

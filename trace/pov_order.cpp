@@ -19,7 +19,15 @@ PovBBox enclosing(const Boxes& boxes) {
 
 }  // namespace
 
-PovFrameList pov_frame_list(const Scene& scene, size_t bounding_threshold) {
+void PovWholeScene::add(const Object& o, bool kept) {
+    if (kept) kept_.push_back(uint32_t(first_frame_.size()));
+    first_frame_.push_back(uint32_t(boxes_.size()));
+    pov_for_frame_objects(o,
+                          [&](const Object& f) { boxes_.push_back(pov_object_bbox(f)); });
+}
+
+PovFrameList pov_frame_list(const Scene& scene, size_t bounding_threshold,
+                            const PovWholeScene* whole) {
     PovFrameList list;
     list.of_light.assign(scene.lights.size(), ~0u);
     list.first_of_object.assign(scene.objects.size(), 0);
@@ -36,28 +44,44 @@ PovFrameList pov_frame_list(const Scene& scene, size_t bounding_threshold) {
              ++next_light) {
             const Light& l = scene.lights[lights[next_light]];
             if (l.looks_like.empty()) continue;  // no object: never intersected
-            list.of_light[lights[next_light]] = uint32_t(list.objects.size());
-            list.objects.push_back(&l.looks_like.front());
+            list.of_light[lights[next_light]] = uint32_t(list.boxes.size());
+            list.boxes.push_back(pov_object_bbox(l.looks_like.front()));
+            if (!whole) list.objects.push_back(&l.looks_like.front());
         }
     };
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
-        place_lights(i);
-        list.first_of_object[i] = uint32_t(list.objects.size());
-        pov_for_frame_objects(scene.objects[i],
-                              [&](const Object& f) { list.objects.push_back(&f); });
+    if (whole) {
+        std::vector<uint32_t> start(whole->object_count());
+        for (size_t i = 0; i < whole->object_count(); ++i) {
+            place_lights(i);
+            start[i] = uint32_t(list.boxes.size());
+            list.boxes.insert(list.boxes.end(),
+                              whole->boxes().begin() + whole->first_frame(i),
+                              whole->boxes().begin() + whole->first_frame(i + 1));
+        }
+        for (size_t k = 0; k < scene.objects.size() && k < whole->kept_count(); ++k)
+            list.first_of_object[k] = start[whole->whole_index(k)];
+    } else {
+        for (size_t i = 0; i < scene.objects.size(); ++i) {
+            place_lights(i);
+            list.first_of_object[i] = uint32_t(list.boxes.size());
+            pov_for_frame_objects(scene.objects[i], [&](const Object& f) {
+                list.objects.push_back(&f);
+                list.boxes.push_back(pov_object_bbox(f));
+            });
+        }
     }
     place_lights(~size_t(0));
     list.slab_tree = bounding_threshold != kPovBoundingOff &&
-                     pov_frame_objects(scene) >= bounding_threshold;
+                     pov_frame_objects(scene, whole) >= bounding_threshold;
     return list;
 }
 
 PovTestOrder::PovTestOrder(const PovFrameList& list) : slab_tree_(list.slab_tree) {
     if (!slab_tree_) return;
     std::vector<uint32_t> finite, infinite;
-    for (uint32_t f = 0; f < list.objects.size(); ++f) {
+    for (uint32_t f = 0; f < list.boxes.size(); ++f) {
         Node leaf;
-        leaf.box = pov_object_bbox(*list.objects[f]);
+        leaf.box = list.boxes[f];
         leaf.infinite = !pov_bbox_finite(leaf.box);
         leaf.object = f;
         (leaf.infinite ? infinite : finite).push_back(uint32_t(nodes_.size()));

@@ -33,8 +33,36 @@
 
 namespace povwall::trace {
 
+// What POV-Ray's object list needs of a whole scene whose parse kept only some of its
+// objects (a black-box worker keeps those in its boxes): every top-level object's
+// frame-level boxes, recorded in parse order, kept or left out. With it a worker's ties
+// in depth and its slab-tree tests are those of the whole scene, as in one process.
+class PovWholeScene {
+  public:
+    // Every top-level object, in parse order.
+    void add(const Object& o, bool kept);
+
+    // The frame-level boxes of all top-level objects, in order.
+    const std::vector<PovBBox>& boxes() const { return boxes_; }
+    // Whole-scene object i's frame objects: boxes()[first_frame(i), first_frame(i + 1)).
+    uint32_t first_frame(size_t i) const {
+        return i < first_frame_.size() ? first_frame_[i] : uint32_t(boxes_.size());
+    }
+    size_t object_count() const { return first_frame_.size(); }
+    // The whole-scene index of the k-th kept object (Scene::objects[k]).
+    uint32_t whole_index(size_t k) const { return kept_[k]; }
+    size_t kept_count() const { return kept_.size(); }
+
+  private:
+    std::vector<PovBBox> boxes_;
+    std::vector<uint32_t> first_frame_;
+    std::vector<uint32_t> kept_;
+};
+
 // POV-Ray's object list: the frame-level objects in its order.
 struct PovFrameList {
+    // Their boxes; the objects themselves when the scene holds them all (else empty).
+    std::vector<PovBBox> boxes;
     std::vector<const Object*> objects;
     // Frame index of scene.objects[i] (its first frame-level object when it is a plain
     // union), and of light l's looks_like object (~0u without one).
@@ -44,8 +72,10 @@ struct PovFrameList {
 };
 
 // `bounding_threshold`: POV-Ray's Bounding_Threshold (kPovBoundingOff: bounding off).
+// `whole`: the whole scene's record when `scene` holds only some of its objects.
 PovFrameList pov_frame_list(const Scene& scene,
-                            size_t bounding_threshold = kPovBoundingThreshold);
+                            size_t bounding_threshold = kPovBoundingThreshold,
+                            const PovWholeScene* whole = nullptr);
 
 class PovTestOrder {
   public:

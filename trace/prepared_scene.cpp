@@ -515,10 +515,11 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     env_.noise_generator = scene.settings.noise_generator;
     env_.number_of_waves = scene.settings.number_of_waves;
     env_.quick_colours = plan_.quality.quick_colours();
+    const PovWholeScene* whole = options_.whole_scene.get();
     pov_slab_tree_ = options_.pov_float_bounds &&
                      options_.pov_bounding_threshold != kPovBoundingOff &&
-                     pov_frame_objects(scene) >= options_.pov_bounding_threshold;
-    pov_root_tested_ = pov_slab_tree_ && pov_slab_root(scene, pov_root_);
+                     pov_frame_objects(scene, whole) >= options_.pov_bounding_threshold;
+    pov_root_tested_ = pov_slab_tree_ && pov_slab_root(scene, pov_root_, whole);
     size_t leaves = 0;
     for (const Object* o : objects)
         leaves += count_leaves(*o) + cutaway_material_count(*o);
@@ -539,10 +540,11 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     blends_.reserve(blends);  // materials point into it
     material_frame_.reserve(leaves + 1);
     // Each object's place in POV-Ray's object list, for exact ties (unknown when the
-    // parse left objects out).
-    const bool frames_known = !scene.objects_filtered();
+    // parse left objects out and the whole scene's list was not recorded).
+    const bool frames_known = !scene.objects_filtered() || whole;
     PovFrameList frames;
-    if (frames_known) frames = pov_frame_list(scene, options_.pov_bounding_threshold);
+    if (frames_known)
+        frames = pov_frame_list(scene, options_.pov_bounding_threshold, whole);
     for (const Object* o : objects) {
         const size_t i = size_t(o - scene.objects.data());
         add_object(*o, frames_known && i < frames.first_of_object.size()
@@ -553,8 +555,9 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     // light). POV-Ray links the light to the scene, whole (a union it looks like is not
     // split), with no_shadow alone; its bounding-slab tree holds the object in the
     // light's place, so there the object's own flags are tested.
-    const bool slab_tree = options_.pov_bounding_threshold != kPovBoundingOff &&
-                           pov_frame_objects(scene) >= options_.pov_bounding_threshold;
+    const bool slab_tree =
+        options_.pov_bounding_threshold != kPovBoundingOff &&
+        pov_frame_objects(scene, whole) >= options_.pov_bounding_threshold;
     for (size_t l = 0; l < scene.lights.size(); ++l) {
         bool first = true;
         for (const Object& o : scene.lights[l].looks_like) {
@@ -1374,9 +1377,11 @@ namespace {
 // POV-Ray's test order, built on the first exact tie that needs it.
 const PovTestOrder& built_pov_order(std::once_flag& once,
                                     std::unique_ptr<PovTestOrder>& order,
-                                    const Scene& scene, size_t bounding_threshold) {
+                                    const Scene& scene, size_t bounding_threshold,
+                                    const PovWholeScene* whole) {
     std::call_once(once, [&] {
-        order = std::make_unique<PovTestOrder>(pov_frame_list(scene, bounding_threshold));
+        order = std::make_unique<PovTestOrder>(
+            pov_frame_list(scene, bounding_threshold, whole));
     });
     return *order;
 }
@@ -1447,7 +1452,8 @@ bool PreparedScene::pov_takes(const Material& candidate, const Material& nearest
         c, material_frame_[c], n, material_frame_[n], ray,
         [this]() -> const PovTestOrder& {
             return built_pov_order(pov_order_once_, pov_order_, scene_,
-                                   options_.pov_bounding_threshold);
+                                   options_.pov_bounding_threshold,
+                                   options_.whole_scene.get());
         },
         nullptr);
 }
@@ -1531,7 +1537,8 @@ bool PreparedScene::closest_hit_without(const Ray& ray, Real t_min, Real t_max,
     TieRanks tie_ranks;
     auto pov_order = [this]() -> const PovTestOrder& {
         return built_pov_order(pov_order_once_, pov_order_, scene_,
-                               options_.pov_bounding_threshold);
+                               options_.pov_bounding_threshold,
+                               options_.whole_scene.get());
     };
     auto same_object = [&](uint32_t a, uint32_t b) {
         return materials_[a].object == materials_[b].object;

@@ -186,6 +186,9 @@ struct PrepareOptions {
     // bounding-slab tree, which decides its float box tests and its order of testing
     // objects (exact ties in depth, trace/pov_order.h).
     size_t pov_bounding_threshold = kPovBoundingThreshold;
+    // The whole scene's object list when the parse kept only some objects (a black-box
+    // worker): POV-Ray's ties and slab-tree tests are the whole scene's.
+    std::shared_ptr<const PovWholeScene> whole_scene;
     // Told when the octree build starts (not owned; may be null).
     RenderProgress* progress = nullptr;
 };

@@ -60,6 +60,53 @@ TEST(PovOrder, InfiniteObjectsFirstThenBoxesInTheOrderTheRayEntersThem) {
     EXPECT_TRUE(listed.tests_first(ray, 0, 2));
 }
 
+// A worker's parse keeps some objects: the list it records of the whole scene as it
+// parses gives the same boxes, places and lights as the whole scene's own list.
+TEST(PovOrder, WholeSceneRecordedByAFilteredParseGivesTheWholeList) {
+    const std::string text =
+        "sphere { 0, 1 }\n"
+        "union { sphere { x, 1 } union { box { 0, 1 } sphere { y, 1 } } }\n"
+        "light_source { 0, 1 looks_like { sphere { 0, 0.1 } } }\n"
+        "merge { sphere { 0, 1 } sphere { x, 1 } }\n"
+        "box { -2, 3 }\n"
+        "light_source { 0, 1 looks_like { box { -0.1, 0.1 } } }\n"
+        "sphere { 7*x, 2 }\n";
+    const Scene scene = parse(text);
+    const PovFrameList all = pov_frame_list(scene);
+    PovWholeScene whole;
+    size_t index = 0;
+    parser::ParseOptions po;
+    po.keep_object = [&](const Object& o) {
+        const bool kept = index++ % 2 == 1;  // objects 1 and 3 of 0..4
+        whole.add(o, kept);
+        return kept;
+    };
+    const Scene part = parser::parse_scene_text(text, "order.pov", po);
+    ASSERT_EQ(part.objects.size(), 2u);
+    ASSERT_TRUE(part.objects_filtered());
+    const PovFrameList list = pov_frame_list(part, kPovBoundingThreshold, &whole);
+    ASSERT_EQ(list.boxes.size(), all.boxes.size());
+    for (size_t f = 0; f < all.boxes.size(); ++f) {
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_EQ(list.boxes[f].lo[a], all.boxes[f].lo[a]);
+            EXPECT_EQ(list.boxes[f].len[a], all.boxes[f].len[a]);
+        }
+    }
+    EXPECT_EQ(list.first_of_object,
+              (std::vector<uint32_t>{all.first_of_object[1], all.first_of_object[3]}));
+    EXPECT_EQ(list.of_light, all.of_light);
+    EXPECT_EQ(list.slab_tree, all.slab_tree);
+    EXPECT_EQ(pov_frame_objects(part, &whole), pov_frame_objects(scene));
+    PovBBox a, b;
+    ASSERT_TRUE(pov_slab_root(scene, a));
+    ASSERT_TRUE(pov_slab_root(part, b, &whole));
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(a.lo[k], b.lo[k]);
+        EXPECT_EQ(a.len[k], b.len[k]);
+    }
+    EXPECT_FALSE(pov_slab_root(part, b));  // without the record: unknown
+}
+
 // A disc lying in a plane: every pixel on it is a tie the two renderers' rounding
 // decides; a pixel on the sky and one on the plane alone are not.
 TEST(TieProbe, FindsCoincidentSurfacesOnly) {
