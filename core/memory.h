@@ -30,4 +30,16 @@ void move_to_huge_pages(Vector& v) {
     v = std::move(copy);
 }
 
+// v.resize(n), its new storage asked for huge pages when large (an image's pixels: the
+// first touch of fresh 4 KB pages was most of the time a large texture took to load).
+template <class Vector>
+void resize_on_huge_pages(Vector& v, size_t n) {
+    const size_t bytes = n * sizeof(typename Vector::value_type);
+    if (bytes >= (size_t(8) << 20) && v.capacity() < n) {
+        v.reserve(n);
+        advise_huge_pages(v.data(), bytes);
+    }
+    v.resize(n);
+}
+
 }  // namespace povwall

@@ -13,6 +13,7 @@
 #include <mutex>
 #include <random>
 
+#include "core/memory.h"
 #include "core/self_exe.h"
 #include "output/decoded_image.h"
 #include "output/image_backend.h"
@@ -275,25 +276,36 @@ DecodedImage decode_image_file(const std::string& path) {
     if (direct == DirectRead::NotMine) direct = read_jpeg(path, decoded, err);
     if (direct == DirectRead::Failed)
         throw ImageIoError("cannot read '" + path + "': " + err);
-    return direct == DirectRead::Done ? decoded : decode_with_open_image_io(path);
+    if (direct == DirectRead::Done) return decoded;  // (a conditional would copy it)
+    return decode_with_open_image_io(path);
 }
 
 namespace {
 
 // The file's pixels as RGBA and what it says about itself, as its reader gives them.
 StoredImage stored_as_read(const std::string& path) {
-    const DecodedImage decoded = decode_image_file(path);
+    DecodedImage decoded = decode_image_file(path);
     const int width = decoded.width, height = decoded.height, nc = decoded.channels;
     const std::vector<float>& pixels = decoded.samples;
     const ImageFileInfo& info = decoded.info;
-    Image img(width, height);
-    for (size_t i = 0; i < size_t(width) * height; ++i) {
-        // Grey (1 channel) and grey+alpha (2) files spread their grey over RGB.
-        const bool grey = nc <= 2;
-        for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] = pixels[i * nc + (grey ? 0 : c)];
-        img.rgba[i * 4 + 3] = nc == 2   ? pixels[i * nc + 1]
-                              : nc >= 4 ? pixels[i * nc + 3]
-                                        : 1.0f;
+    Image img;
+    if (nc == 4) {  // RGBA already: taken as it is (large textures: no second copy)
+        img.width = width;
+        img.height = height;
+        img.rgba = std::move(decoded.samples);
+    } else {
+        img.width = width;
+        img.height = height;
+        resize_on_huge_pages(img.rgba, size_t(width) * size_t(height) * 4);
+        for (size_t i = 0; i < size_t(width) * height; ++i) {
+            // Grey (1 channel) and grey+alpha (2) files spread their grey over RGB.
+            const bool grey = nc <= 2;
+            for (int c = 0; c < 3; ++c)
+                img.rgba[i * 4 + c] = pixels[i * nc + (grey ? 0 : c)];
+            img.rgba[i * 4 + 3] = nc == 2   ? pixels[i * nc + 1]
+                                  : nc >= 4 ? pixels[i * nc + 3]
+                                            : 1.0f;
+        }
     }
     StoredImage stored;
     stored.pixels = std::move(img);

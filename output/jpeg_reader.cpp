@@ -6,6 +6,8 @@
 // jpeglib.h needs size_t and FILE declared first.
 #include <jpeglib.h>
 
+#include "core/memory.h"
+
 namespace povwall::output {
 namespace {
 
@@ -82,7 +84,7 @@ DirectRead read_jpeg(const std::string& path, DecodedImage& image, std::string& 
     image.info.format = "jpeg";
     image.info.channels = image.channels;
     image.info.bits = 8;
-    image.samples.resize(bytes->size());
+    resize_on_huge_pages(image.samples, bytes->size());
     const float scale = 1.0f / 255.0f;
     for (size_t i = 0; i < bytes->size(); ++i)
         image.samples[i] = float((*bytes)[i]) * scale;

@@ -1,5 +1,8 @@
 // The module behind output/image_backend.h: every OpenImageIO call of povwall.
 #include <OpenImageIO/imageio.h>
+#include <sys/mman.h>
+
+#include <cstdint>
 
 #include "output/image_backend.h"
 
@@ -50,7 +53,20 @@ std::string read_oiio(const std::string& path, int& width, int& height, int& cha
     // or none, as the sRGB colour space, which is what POV-Ray assumes then too.
     if (info.format == "png" && spec.get_string_attribute("oiio:ColorSpace") != "sRGB")
         info.declared_gamma = spec.get_float_attribute("oiio:Gamma", 0.0f);
-    pixels.resize(size_t(width) * height * channels);
+    // Large images on huge pages where the kernel has them (madvise mode): first touches
+    // of fresh 4 KB pages cost more than decoding a big texture. (This module links no
+    // povwall library: core/memory.h's resize_on_huge_pages, written out.)
+    const size_t count = size_t(width) * size_t(height) * size_t(channels);
+    constexpr uintptr_t kHuge = uintptr_t(2) << 20;
+    if (count * sizeof(float) >= 4 * kHuge && pixels.capacity() < count) {
+        pixels.reserve(count);
+        const auto start = reinterpret_cast<uintptr_t>(pixels.data());
+        const uintptr_t begin = (start + kHuge - 1) & ~(kHuge - 1);
+        const uintptr_t end = (start + count * sizeof(float)) & ~(kHuge - 1);
+        if (end > begin)
+            madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+    }
+    pixels.resize(count);
     if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
         return in->geterror();
     in->close();

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <memory>
 
+#include "core/memory.h"
+
 namespace povwall::output {
 namespace {
 
@@ -84,7 +86,7 @@ DirectRead read_png(const std::string& path, DecodedImage& image, std::string& e
     }
     const size_t count =
         size_t(image.width) * size_t(image.height) * size_t(image.channels);
-    image.samples.resize(count);
+    resize_on_huge_pages(image.samples, count);
     if (image.info.bits == 16) {
         const float scale = 1.0f / 65535.0f;
         for (size_t i = 0; i < count; ++i)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/memory.h"
 #include "parser/image_file_types.h"
 #include "parser/interpreter.h"
 
@@ -230,7 +231,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
         // An 8-bit file's pixels as codes (ImagePixels): every sample must be a code's
         // value exactly; a palette file keeps floats (filter and transmit per entry).
         if (decoded.size() == 256 && !stored.colour_mapped) {
-            px->codes.resize(count * 4);
+            resize_on_huge_pages(px->codes, count * 4);
             for (size_t i = 0; i < count * 4 && !px->codes.empty(); ++i) {
                 const int k = code_of(stored.pixels.rgba[i]);
                 if (k < 0)
@@ -242,7 +243,7 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
             px->codes_alpha = stored.has_alpha;
         }
         if (px->codes.empty()) {
-            px->rgbft.resize(count * 5);
+            resize_on_huge_pages(px->rgbft, count * 5);
             for (size_t i = 0; i < count; ++i) {
                 const float* s = &stored.pixels.rgba[i * 4];
                 float* d = &px->rgbft[i * 5];
