@@ -35,4 +35,17 @@ inline Real initial_frequency(PatternKind k) {
                : 1;
 }
 
+// How many tilings pavement has of tiles of `tiles` cells (1-6) with `sides` sides (3, 4
+// or 6); 0 where it has none (hexagons of 6 cells, other side counts).
+constexpr int pavement_patterns(int sides, int tiles) {
+    constexpr int kTriangles[6] = {1, 1, 1, 3, 4, 12};
+    constexpr int kSquares[6] = {1, 1, 2, 5, 12, 35};
+    constexpr int kHexagons[5] = {1, 1, 3, 7, 22};
+    if (tiles < 1) return 0;
+    if (sides == 3 && tiles <= 6) return kTriangles[tiles - 1];
+    if (sides == 4 && tiles <= 6) return kSquares[tiles - 1];
+    if (sides == 6 && tiles <= 5) return kHexagons[tiles - 1];
+    return 0;
+}
+
 }  // namespace povwall

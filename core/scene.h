@@ -85,6 +85,7 @@ enum class PatternKind : uint8_t {
     Magnet,      // magnet 1 or 2, mandel or julia form (PatternSpec::fractal)
     Facets,      // normals only: flat facets (PatternSpec::facets)
     Tiling,      // `tiling N` in x-z (N in PatternSpec::scalar)
+    Pavement,    // `pavement` in x-z (PatternSpec::pavement)
 };
 
 enum class WaveType : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
@@ -245,6 +246,15 @@ struct PatternSpec {
     struct Facets {
         Real coords = 0, size = 0.1, metric = 2;
     } facets;
+    // Pavement only: the tiles' sides (3, 4 or 6), how many cells a tile has, which of
+    // the tilings of such tiles (1 up to pavement_patterns), and the look of the
+    // outline's corners (0 sharp, 1 chamfered, 2 round; form 3, squares only: none).
+    // POV-Ray keeps each as an unsigned char and the parser reduces exterior and
+    // interior modulo 3 and form modulo 4 (squares) or 3.
+    struct Pavement {
+        uint8_t sides = 3, tiles = 1, pattern = 1;
+        uint8_t exterior = 0, interior = 0, form = 0;
+    } pavement;
     // Slope only (PatternSpec::slope), as POV-Ray keeps it: the unit directions (or
     // point_at's point), each modulation as (low, high - low), 0 range for none, and the
     // shares of slope and altitude in the value. `axis` is +-(1 + index) when a

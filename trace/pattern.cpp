@@ -455,6 +455,8 @@ Real raw_value(const PatternSpec& s, const Point3& p, const PatternEnv& env) {
             return cubic_value(p);
         case PatternKind::Tiling:
             return tiling_value(int(s.scalar), p);
+        case PatternKind::Pavement:
+            return pavement_value(s.pavement, p);
         case PatternKind::Facets:  // a normal only (its value where a pattern is read)
             return 0;
         case PatternKind::Marble: {

@@ -51,6 +51,10 @@ Real tiling_value(int n, const Point3& p);
 enum class PenroseKind : uint8_t { Pentagons, KitesAndDarts, Rhombs };
 Real penrose_tiles(Real x, Real z, PenroseKind kind);
 
+// `pavement` (pattern_pavement.cpp): the value at p of a parsed pavement (its values
+// reduced as the parser does).
+Real pavement_value(const PatternSpec::Pavement& pavement, const Point3& p);
+
 // facets: replaces (or with `coords`, perturbs) pattern-space normal n at point p
 // (pattern_facets.cpp).
 void facets_normal(const PatternSpec::Facets& facets, const Point3& p, Vector3& n);
