@@ -390,7 +390,10 @@ std::shared_ptr<const FunctionProgram> Interpreter::parse_function_block(
             expected("a pattern", k);
         for (;;) {
             Token m = next();
-            if (is_punct(m, '}')) break;
+            if (is_punct(m, '}')) {
+                finish_pavement(*spec, m);
+                break;
+            }
             if (!try_pattern_modifier(m, *spec)) expected("a pattern modifier or '}'", m);
         }
         f->patterns.push_back(std::move(spec));

@@ -255,6 +255,12 @@ class Interpreter {
     std::shared_ptr<const DensityFile> parse_density_file();
     bool try_pattern_modifier(const Token& t, PatternSpec& spec);
     bool try_pattern_modifier(const Token& t, HeapValue<PatternSpec>& spec);
+    // At the end of a block whose pattern is pavement (`at`, the token that ends it):
+    // its values checked and reduced as POV-Ray's Parse_Pattern does; others untouched.
+    void finish_pavement(PatternSpec& spec, const Token& at);
+    void finish_pavement(HeapValue<PatternSpec>& spec, const Token& at) {
+        if (spec->kind == PatternKind::Pavement) finish_pavement(spec.edit(), at);
+    }
     Light parse_light_block();
     // After `light_group`: its objects and lights as a union marked Csg::light_group,
     // then its transforms and `global_lights` (light_groups.cpp).

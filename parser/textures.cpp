@@ -67,15 +67,10 @@ constexpr PatternName kPatterns[] = {
     {"julia", PatternKind::Julia},
     {"magnet", PatternKind::Magnet},
     {"tiling", PatternKind::Tiling},
+    {"pavement", PatternKind::Pavement},
 };
 
-bool is_unsupported_pattern(std::string_view w) {
-    static constexpr std::string_view kNames[] = {"material_map", "pavement"};
-    for (std::string_view n : kNames) {
-        if (w == n) return true;
-    }
-    return false;
-}
+bool is_unsupported_pattern(std::string_view w) { return w == "material_map"; }
 
 // How many entries the block patterns take right after their keyword (checker
 // rgb A, rgb B; ...); 0 for the other patterns.
@@ -84,6 +79,14 @@ int entry_list_size(PatternKind k) { return pattern_list_size(k); }
 bool is_fractal(PatternKind k) {
     return k == PatternKind::Mandel || k == PatternKind::Julia ||
            k == PatternKind::Magnet;
+}
+
+// POV-Ray's `(unsigned char)Parse_Float()` (pavement's values): truncated toward zero,
+// then the low 8 bits as x86-64 gcc's conversion through a 32-bit int leaves them (-1 is
+// 255, 257 is 1); 0 where no such int holds the value.
+uint8_t pavement_byte(double v) {
+    if (!(std::fabs(v) < 2147483648.0)) return 0;
+    return uint8_t(uint32_t(int32_t(v)) & 0xFFu);
 }
 
 }  // namespace
@@ -427,6 +430,9 @@ bool Interpreter::try_pattern_keyword_kind(const Token& t, PatternSpec& spec) {
                 spec.vector = {-1, 1, 0};  // form
                 spec.scalar = 2;           // metric
                 break;
+            case PatternKind::Pavement:
+                spec.pavement = {};  // triangles, every one a tile
+                break;
             default:
                 break;
         }
@@ -542,19 +548,39 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
             spec.fractal.exponent = 2;
         }
     } else if (w == "form") {
-        spec.vector = parse_vector();
+        if (spec.kind == PatternKind::Pavement)
+            spec.pavement.form = pavement_byte(parse_float());
+        else if (spec.kind == PatternKind::Crackle)
+            spec.vector = parse_vector();
+        else
+            error(t,
+                  "Keyword 'form' can only be used in a crackle or pavement statement.");
+    } else if (w == "number_of_sides" || w == "number_of_tiles" || w == "pattern") {
+        if (spec.kind != PatternKind::Pavement)
+            error(t, "Keyword '" + std::string(w) +
+                         "' can only be used in a pavement statement.");
+        const uint8_t v = pavement_byte(parse_float());
+        (w == "number_of_sides"   ? spec.pavement.sides
+         : w == "number_of_tiles" ? spec.pavement.tiles
+                                  : spec.pavement.pattern) = v;
     } else if (w == "offset") {
         spec.vector2.x = parse_float();  // crackle: vector2 = <offset, solid, 0>
     } else if (w == "solid") {
         spec.vector2.y = 1;
     } else if (w == "interior" || w == "exterior") {
-        // Fractal colouring: `exterior TYPE, FACTOR`, `interior TYPE, FACTOR`. POV-Ray
-        // takes them on mandel, julia, magnet and pavement (refused as a pattern).
-        if (!is_fractal(spec.kind))
-            error(t, "keyword '" + std::string(w) +
-                         "' can only be used in a mandel, julia, magnet or pavement "
-                         "statement");
+        // Fractal colouring: `exterior TYPE, FACTOR`, `interior TYPE, FACTOR`; on
+        // pavement one value, the look of its convex and concave corners. POV-Ray's
+        // message names exterior for both.
         const bool exterior = w == "exterior";
+        if (spec.kind == PatternKind::Pavement) {
+            (exterior ? spec.pavement.exterior : spec.pavement.interior) =
+                pavement_byte(parse_float());
+            return true;
+        }
+        if (!is_fractal(spec.kind))
+            error(t,
+                  "Keyword 'exterior' can only be used in a mandel, julia, magnet or "
+                  "pavement statement.");
         Token at = peek();
         const int type = saturating_int(parse_float());
         if (type < 0 || type > (exterior ? 8 : 6))
@@ -662,6 +688,36 @@ bool Interpreter::try_pattern_modifier(const Token& t, PatternSpec& spec) {
     return true;
 }
 
+void Interpreter::finish_pavement(PatternSpec& spec, const Token& at) {
+    if (spec.kind != PatternKind::Pavement) return;
+    PatternSpec::Pavement& pv = spec.pavement;
+    pv.interior %= 3;
+    pv.exterior %= 3;
+    const char* max_per_tile;
+    switch (pv.sides) {
+        case 3:
+            max_per_tile = "(1,1,1,3,4,12)";
+            break;
+        case 4:
+            max_per_tile = "(1,1,2,5,12,35)";
+            break;
+        case 6:
+            max_per_tile = "(1,1,3,7,22)";
+            break;
+        default:
+            error(at, "number_of_sides of pavement must be 3, 4 or 6.");
+    }
+    const int most_tiles = pv.sides == 6 ? 5 : 6;
+    if (pv.tiles == 0 || pv.tiles > most_tiles)
+        error(at, "number_of_tiles of pavement must be between 1 and " +
+                      std::to_string(most_tiles) + ".");
+    if (pv.pattern == 0 || pv.pattern > pavement_patterns(pv.sides, pv.tiles))
+        error(at,
+              std::string("pattern value for pavement is out of range. max per tile:") +
+                  max_per_tile);
+    pv.form %= pv.sides == 4 ? 4 : 3;
+}
+
 Pigment Interpreter::parse_pigment_block() {
     Pigment p = default_texture_.pigment;
     parse_pigment_into(p);
@@ -692,7 +748,10 @@ void Interpreter::parse_pigment_body(Pigment& p, char terminator) {
     bool first_item = true;
     for (;;) {
         Token t = next();
-        if (is_punct(t, terminator)) return;
+        if (is_punct(t, terminator)) {
+            finish_pavement(p.pattern, t);
+            return;
+        }
         const bool pattern_allowed = first_item;
         first_item = false;
         // Colours first: no pattern keyword or modifier is one, and solid pigments are
@@ -878,6 +937,7 @@ void Interpreter::parse_normal_body(Normal& n, char terminator) {
             // ("Problem in Evaluate_TPat").
             if (n.pattern->kind == PatternKind::Facets && !n.map_values.empty())
                 error(t, "facets cannot select from a normal_map");
+            finish_pavement(n.pattern, t);
             if (n.pattern->no_bump_scale) set_no_bump_scale(n);
             return;
         }
@@ -1337,6 +1397,7 @@ void Interpreter::parse_texture_body(LayeredTexture& layers, char terminator) {
     for (;;) {
         Token t = next();
         if (is_punct(t, terminator)) {
+            if (layers.back().map_pattern) finish_pavement(*layers.back().map_pattern, t);
             if (no_bump_scale) set_no_bump_scale(layers.back());
             return;
         }

@@ -99,13 +99,14 @@ TEST(Cli, ParseReportsContentsUnsupportedAndErrors) {
     EXPECT_EQ(j["shapes"]["cone"], 1);
     EXPECT_EQ(j["lights"], 1);
     EXPECT_DOUBLE_EQ(j["language_version"].get<double>(), 3.7);
-    fs::path unsupported = write_scene(
-        "parse_pavement.pov", "sphere { 0, 1 }\n  plane { y, 0 pigment { pavement } }\n");
+    fs::path unsupported =
+        write_scene("parse_material_map.pov",
+                    "sphere { 0, 1 }\n  plane { y, 0 pigment { material_map } }\n");
     r = run("parse " + unsupported.string() + " --json");
     EXPECT_EQ(r.code, 3);
     j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["status"], "unsupported");
-    EXPECT_EQ(j["message"], "unsupported: pavement");
+    EXPECT_EQ(j["message"], "unsupported: material_map");
     EXPECT_EQ(j["line"], 2);
     EXPECT_EQ(j["column"], 26);
     fs::path bad = write_scene("parse_bad.pov", "sphere { 0, 1 ");

@@ -573,8 +573,8 @@ TEST(Errors, UnsupportedFeatureIsNamed) {
     }
 }
 
-// The patterns of textures II: the tilings povwall lacks and pavement are refused by
-// name; the misuses POV-Ray rejects are errors with its messages; proportion and
+// The patterns of textures II: material_map outside a texture is refused by name; the
+// misuses POV-Ray rejects are errors with its messages; proportion and
 // gradient_map (no pattern in any POV-Ray) are plain words.
 TEST(Errors, PatternRefusalsAndMisuses) {
     auto refusal = [](const std::string& text) {
@@ -600,7 +600,8 @@ TEST(Errors, PatternRefusalsAndMisuses) {
     EXPECT_EQ(
         message("plane { y, 0 normal { checker normal { bumps } } }"),
         "give all 2 normals of 'checker' (POV-Ray 3.7 crashes on the missing ones)");
-    EXPECT_EQ(refusal("plane { y, 0 pigment { pavement } }"), "unsupported: pavement");
+    EXPECT_EQ(refusal("plane { y, 0 pigment { material_map } }"),
+              "unsupported: material_map");
     EXPECT_EQ(refusal("plane { y, 0 pigment { proportion } }"), "(an error)");
     EXPECT_EQ(refusal("plane { y, 0 pigment { gradient_map } }"), "(an error)");
     EXPECT_EQ(

@@ -150,7 +150,7 @@ TEST(PostProcess, FractalColouringOnMandelOnly) {
         "plane { z, 0 pigment { P mandel 20 } }");
     EXPECT_EQ(s.objects[0].texture.front().pigment.pattern->fractal.exterior_type, 1);
     EXPECT_NE(full_error_of("plane { z, 0 pigment { bozo exterior 1, 1 } }")
-                  .find("error: keyword 'exterior' can only be used in a mandel"),
+                  .find("error: Keyword 'exterior' can only be used in a mandel"),
               std::string::npos);
     EXPECT_NE(full_error_of("plane { z, 0 pigment { mandel 9 interior 7, 1 } }")
                   .find("error: invalid fractal pattern interior type (0 to 6)"),

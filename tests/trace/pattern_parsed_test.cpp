@@ -5,9 +5,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <string>
 #include <tuple>
+#include <vector>
 
+#include "core/pattern_lists.h"
 #include "parser/parser.h"
 #include "tests/trace/pov_reference.h"
 #include "trace/pattern.h"
@@ -218,6 +221,171 @@ TEST(TilingVsPovray, EveryTiling) {
     }
     EXPECT_LE(max_pigment_error("tiling 5", view), kTol);  // the default grey map
     EXPECT_LE(max_normal_error("tiling 9 0.5 scale 0.8", view), kTol);
+}
+
+// Pavement: many settings side by side in one render (POV-Ray starts once for a whole
+// set). Panel i of `pigments` (a row of `columns` panels of `panel` units from `corner`,
+// then the next row, towards +z) is a box whose top face y = 0 shows that pigment; every
+// pixel's value is compared with povwall's at the pixel's point. Returns how many pixels
+// differ by more than 1e-4 (the 16-bit output is good to 8e-6), printing the worst.
+int pavement_panels_bad(const std::vector<std::string>& pigments, int columns,
+                        double panel, int pixels_per_panel, Vector3 corner) {
+    const int rows = int((pigments.size() + size_t(columns) - 1) / size_t(columns));
+    const int side = std::max(columns, rows);
+    test::TopView view;
+    view.extent = side * panel;
+    view.height = 0;
+    view.centre = corner + Vector3{view.extent / 2, 0, view.extent / 2};
+    std::ostringstream text;
+    text.precision(17);
+    text << "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n" << view.camera();
+    for (size_t i = 0; i < pigments.size(); ++i) {
+        const double x0 = corner.x + panel * double(int(i) % columns);
+        const double z0 = corner.z + panel * double(int(i) / columns);
+        text << "box { <" << x0 << ",-1," << z0 << ">, <" << x0 + panel << ",0,"
+             << z0 + panel << "> pigment { " << pigments[i]
+             << " } finish { ambient 1 diffuse 0 } }\n";
+    }
+    const int n = side * pixels_per_panel;
+    const test::RgbImage img = test::render_with_povray(text.str(), n);
+    const Scene scene = parser::parse_scene_text(text.str(), "test.pov", {});
+    EXPECT_EQ(scene.objects.size(), pigments.size());
+    int bad = 0;
+    double worst = 0;
+    std::string worst_at;
+    for (int y = 0; y < n; ++y) {
+        for (int x = 0; x < n; ++x) {
+            const size_t i =
+                size_t((n - 1 - y) / pixels_per_panel * columns + x / pixels_per_panel);
+            if (x / pixels_per_panel >= columns || i >= pigments.size()) continue;
+            const Point3 p = view.point(x, y, n);
+            const Pigment& pigment = scene.objects[i].texture.front().pigment;
+            const double mine =
+                std::clamp(double(evaluate_pigment(pigment, p, {}).rgb.r), 0.0, 1.0);
+            const double d = std::fabs(img.at(x, y, 0) - mine);
+            if (d > 1e-4) ++bad;
+            if (d > worst) {
+                worst = d;
+                std::ostringstream at;
+                at.precision(17);
+                at << pigments[i] << " at " << p.x << ", " << p.z << ": " << mine
+                   << ", POV-Ray " << img.at(x, y, 0);
+                worst_at = at.str();
+            }
+        }
+    }
+    std::printf("%zu pavements: %d pixels differ by more than 1e-4; worst %.2e (%s)\n",
+                pigments.size(), bad, worst, worst_at.c_str());
+    return bad;
+}
+
+// Every tiling pavement has: sides 3, 4, 6 and tiles 1-6 (hexagons 1-5), with
+// pavement_patterns of each.
+std::vector<std::tuple<int, int, int>> pavement_shapes() {
+    std::vector<std::tuple<int, int, int>> out;
+    for (int sides : {3, 4, 6})
+        for (int tiles = 1; tiles <= 6; ++tiles)
+            for (int p = 1; p <= pavement_patterns(sides, tiles); ++p)
+                out.emplace_back(sides, tiles, p);
+    return out;
+}
+
+// Combination c of exterior, interior and form (form 0-3 on squares, 0-2 else).
+std::string pavement_settings(int sides, int c) {
+    const int forms = sides == 4 ? 4 : 3;
+    c %= 9 * forms;
+    return " exterior " + std::to_string(c / (3 * forms)) + " interior " +
+           std::to_string(c / forms % 3) + " form " + std::to_string(c % forms);
+}
+
+const std::string kPavementGrey = " colour_map { [0 rgb 0] [1 rgb 1] }";
+
+std::string pavement_text(int sides, int tiles, int pattern,
+                          const std::string& settings) {
+    return "pavement number_of_sides " + std::to_string(sides) + " number_of_tiles " +
+           std::to_string(tiles) + " pattern " + std::to_string(pattern) + settings +
+           kPavementGrey;
+}
+
+// Each of the 112 tilings once, 16 units of it (every table's period), each with other
+// exterior, interior and form settings (every combination on squares and hexagons);
+// then again far from the origin with other settings.
+TEST(PavementVsPovray, EveryShape) {
+    const auto shapes = pavement_shapes();
+    ASSERT_EQ(shapes.size(), 112u);
+    std::vector<std::string> near, far;
+    for (size_t i = 0; i < shapes.size(); ++i) {
+        const auto [s, t, p] = shapes[i];
+        near.push_back(pavement_text(s, t, p, pavement_settings(s, int(i))));
+        far.push_back(pavement_text(s, t, p, pavement_settings(s, int(i) * 5 + 3)));
+    }
+    EXPECT_EQ(pavement_panels_bad(near, 11, 16, 64, {-50.3, 0, -47.9}), 0);
+    EXPECT_EQ(pavement_panels_bad(far, 11, 16, 40, {-1037.3, 0, 2412.9}), 0);
+}
+
+// Every exterior, interior and form setting on tilings with each kind of code word:
+// square bends and corners, triangles' bends and pointy corners, and hexagons' forced
+// concave corners.
+TEST(PavementVsPovray, EverySetting) {
+    for (const auto& [s, t, p] : {std::tuple{4, 6, 5},
+                                  {4, 5, 3},
+                                  {4, 3, 2},
+                                  {3, 6, 12},
+                                  {3, 6, 5},
+                                  {3, 2, 1},
+                                  {3, 4, 2},
+                                  {6, 5, 2},
+                                  {6, 3, 2}}) {
+        std::vector<std::string> all;
+        for (int c = 0; c < (s == 4 ? 36 : 27); ++c)
+            all.push_back(pavement_text(s, t, p, pavement_settings(s, c)));
+        EXPECT_EQ(pavement_panels_bad(all, 6, 7.3, 40, {-20.1, 0, -17.7}), 0)
+            << s << "/" << t << "/" << p;
+    }
+    // The defaults (bare pavement: triangles), and the values as the parser reduces
+    // them.
+    std::vector<std::string> parsed;
+    for (const char* text :
+         {"pavement", "pavement number_of_sides 4 interior 4 exterior 5 form 5",
+          "pavement number_of_sides 6 number_of_tiles 4.9 pattern 7.5 form 3",
+          "pavement number_of_sides 3 number_of_tiles 6 pattern 9 exterior 4 form 5",
+          "pavement number_of_sides 6 number_of_tiles 2 exterior 1 interior 1"})
+        parsed.push_back(text + kPavementGrey);
+    EXPECT_EQ(pavement_panels_bad(parsed, 3, 6.1, 48, {-9.4, 0, -8.2}), 0);
+}
+
+// As any pattern: transformed, with a wave, in maps, as a normal.
+TEST(PavementVsPovray, AsPigmentNormalAndInMaps) {
+    test::TopView view;
+    view.extent = 6.1;
+    view.centre = {-0.7, 0, 0.45};
+    for (const std::string& text : std::vector<std::string>{
+             "pavement number_of_sides 4 number_of_tiles 5 pattern 8 exterior 2 scale "
+             "0.37 "
+             "rotate y*25" +
+                 kPavementGrey,
+             "pavement number_of_sides 6 number_of_tiles 3 pattern 3 form 2 frequency 2 "
+             "phase 0.3 sine_wave" +
+                 kPavementGrey,
+             "pavement number_of_tiles 6 pattern 5 interior 2 turbulence 0.2" +
+                 kPavementGrey,
+             "pavement",  // the default grey map
+             "gradient x pigment_map { [0 pavement number_of_sides 4 number_of_tiles 4 "
+             "pattern 3 form 2 colour_map { [0 rgb <1,0,0>] [1 rgb <0,0,1>] }] [1 rgb 1] "
+             "}",
+             "pavement number_of_sides 6 number_of_tiles 4 pattern 5 pigment_map { [0 "
+             "rgb <0.2,0.5,0.1>] [0.5 bozo scale 0.2] [1 rgb 1] }"}) {
+        EXPECT_LE(max_pigment_error(text, view), kTol) << text;
+    }
+    EXPECT_LE(max_normal_error("pavement 0.6 number_of_sides 6 number_of_tiles 4 pattern "
+                               "3 interior 1 scale 0.8",
+                               view),
+              kTol);
+    EXPECT_LE(max_normal_error("pavement number_of_sides 4 number_of_tiles 6 pattern 17 "
+                               "form 1 normal_map { [0 bumps 0.4 scale 0.2] [1 granite "
+                               "0.3] }",
+                               view),
+              kTol);
 }
 
 TEST(FacetsVsPovray, FollowingNormalAndCoords) {
