@@ -145,12 +145,15 @@ TEST(Pavement, RangeErrorsAsPovRay) {
                  "3 pattern 4 } }"),
         "test.pov:1:79: error: pattern value for pavement is out of range. max "
         "per tile:(1,1,3,7,22)");
-    // 2 tiles have one pattern each (257 is 1, a valid byte after truncation).
+    // 2 tiles have one pattern (257 is 1, its low byte).
     EXPECT_EQ(error_of("plane { y, 0 pigment { pavement number_of_tiles 2 pattern 2 } }"),
               "test.pov:1:61: error: pattern value for pavement is out of range. max "
               "per tile:(1,1,1,3,4,12)");
     EXPECT_EQ(values(pavement_of("pavement number_of_tiles 2 pattern 257")),
               (std::array<int, 6>{3, 2, 1, 0, 0, 0}));
+    // Past a 32-bit int the byte is 0 (as POV-Ray 3.7 on x86-64 reads 2^32 + 4).
+    EXPECT_EQ(error_of("plane { y, 0 pigment { pavement number_of_sides 4294967300 } }"),
+              "test.pov:1:60: error: number_of_sides of pavement must be 3, 4 or 6.");
     // The same in a normal, a texture, a map entry and a pattern function.
     EXPECT_EQ(error_of("plane { y, 0 normal { pavement number_of_sides 2 } }"),
               "test.pov:1:50: error: number_of_sides of pavement must be 3, 4 or 6.");
