@@ -263,6 +263,16 @@ constexpr bool tables_consistent() {
 }
 static_assert(tables_consistent(), "pavement tables: one line per tiling, in order");
 
+// first_of for the sides and tiles a byte can say up to 6, -1 where pavement has none.
+constexpr auto kFirst = [] {
+    std::array<std::array<int16_t, 7>, 7> out{};
+    for (int s = 0; s < 7; ++s)
+        for (int t = 0; t < 7; ++t)
+            out[size_t(s)][size_t(t)] =
+                int16_t(pavement_patterns(s, t) ? first_of(s, t) : -1);
+    return out;
+}();
+
 // Non-negative remainder and floor quotient (b > 0).
 constexpr int64_t mod(int64_t a, int64_t b) {
     const int64_t r = a % b;
@@ -527,7 +537,7 @@ Real triangles(const Tiling& tiling, bool hexagons, Real px, Real pz, int exteri
 
 Real pavement_value(const PatternSpec::Pavement& pv, const Point3& p) {
     using namespace pavement;
-    const int first = first_of(pv.sides, pv.tiles);
+    const int first = pv.sides <= 6 && pv.tiles <= 6 ? kFirst[pv.sides][pv.tiles] : -1;
     if (first < 0 || pv.pattern < 1 || pv.pattern > pavement_patterns(pv.sides, pv.tiles))
         return 0;  // the parser lets no other through
     const Tiling& t = kCompiled[size_t(first + pv.pattern - 1)];
