@@ -385,15 +385,14 @@ std::shared_ptr<const FunctionProgram> Interpreter::parse_function_block(
         auto spec = std::make_shared<PatternSpec>();
         expect_punct('{', "after pattern");
         Token k = next();
-        // The patterns that read a surface have none here: POV-Ray refuses them.
-        if (is_word(k, "slope") || is_word(k, "aoi") || !try_pattern_keyword(k, *spec))
+        // The patterns that read a surface have none here: POV-Ray refuses them, and
+        // pavement, which its pattern functions do not list.
+        if (is_word(k, "slope") || is_word(k, "aoi") || is_word(k, "pavement") ||
+            !try_pattern_keyword(k, *spec))
             expected("a pattern", k);
         for (;;) {
             Token m = next();
-            if (is_punct(m, '}')) {
-                finish_pavement(*spec, m);
-                break;
-            }
+            if (is_punct(m, '}')) break;
             if (!try_pattern_modifier(m, *spec)) expected("a pattern modifier or '}'", m);
         }
         f->patterns.push_back(std::move(spec));

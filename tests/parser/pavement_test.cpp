@@ -89,16 +89,14 @@ TEST(Pavement, AKeywordStartsFromTheDefaults) {
         "max per tile:(1,1,2,5,12,35)");
 }
 
-TEST(Pavement, InNormalsTexturesMapsAndFunctions) {
+TEST(Pavement, InNormalsTexturesAndMaps) {
     const Scene s = parse(
         "plane { y, 0 normal { pavement 0.4 number_of_sides 4 number_of_tiles 3 "
         "pattern 2 } }\n"
         "plane { y, 0 texture { pavement number_of_sides 6 interior 2 texture_map { [0 "
         "pigment { rgb 0 }] [1 pigment { rgb 1 }] } } }\n"
         "plane { y, 0 pigment { gradient x pigment_map { [0 pavement number_of_tiles 6 "
-        "pattern 12] [1 rgb 1] } } }\n"
-        "#declare F = function { pattern { pavement form 4 } }\n"
-        "#declare V = F(0.5, 0, 0.3);\n");
+        "pattern 12] [1 rgb 1] } } }\n");
     const Normal& n = *s.objects.at(0).texture.at(0).normal;
     EXPECT_EQ(n.pattern->kind, PatternKind::Pavement);
     EXPECT_FLOAT_EQ(float(n.amount), 0.4f);
@@ -154,7 +152,7 @@ TEST(Pavement, RangeErrorsAsPovRay) {
     // Past a 32-bit int the byte is 0 (as POV-Ray 3.7 on x86-64 reads 2^32 + 4).
     EXPECT_EQ(error_of("plane { y, 0 pigment { pavement number_of_sides 4294967300 } }"),
               "test.pov:1:60: error: number_of_sides of pavement must be 3, 4 or 6.");
-    // The same in a normal, a texture, a map entry and a pattern function.
+    // The same in a normal, a texture and a map entry.
     EXPECT_EQ(error_of("plane { y, 0 normal { pavement number_of_sides 2 } }"),
               "test.pov:1:50: error: number_of_sides of pavement must be 3, 4 or 6.");
     EXPECT_EQ(error_of("plane { y, 0 texture { pavement number_of_sides 2\n"
@@ -166,10 +164,13 @@ TEST(Pavement, RangeErrorsAsPovRay) {
                  "[1 rgb 1] } } }"),
         "test.pov:1:64: error: pattern value for pavement is out of range. max "
         "per tile:(1,1,1,3,4,12)");
-    EXPECT_EQ(
-        error_of("#declare F = function { pattern { pavement number_of_tiles 9 } }"),
-        "test.pov:1:62: error: number_of_tiles of pavement must be between 1 and "
-        "6.");
+}
+
+// POV-Ray's pattern functions have no pavement ("No matching } in 'pattern', pavement
+// found instead").
+TEST(Pavement, NotInPatternFunctions) {
+    EXPECT_EQ(error_of("#declare F = function { pattern { pavement } }"),
+              "test.pov:1:35: error: expected a pattern but found 'pavement'");
 }
 
 TEST(Pavement, ItsKeywordsOnOtherPatterns) {
