@@ -323,6 +323,22 @@ TEST(PavementVsPovray, EveryShape) {
     EXPECT_EQ(pavement_panels_bad(far, 11, 16, 40, {-1037.3, 0, 2412.9}), 0);
 }
 
+// The whole cross product, coarser: every tiling with every exterior, interior and
+// form, one render per number of sides (2016 + 594 + 918 panels of 4.1 units).
+TEST(PavementVsPovray, EveryShapeWithEverySetting) {
+    for (int sides : {3, 4, 6}) {
+        std::vector<std::string> all;
+        for (const auto& [s, t, p] : pavement_shapes()) {
+            if (s != sides) continue;
+            for (int c = 0; c < (s == 4 ? 36 : 27); ++c)
+                all.push_back(pavement_text(s, t, p, pavement_settings(s, c)));
+        }
+        const int columns = int(std::ceil(std::sqrt(double(all.size()))));
+        EXPECT_EQ(pavement_panels_bad(all, columns, 4.1, 20, {-93.7, 0, -88.1}), 0)
+            << sides << " sides";
+    }
+}
+
 // Every exterior, interior and form setting on tilings with each kind of code word:
 // square bends and corners, triangles' bends and pointy corners, and hexagons' forced
 // concave corners.
