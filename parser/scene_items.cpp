@@ -111,8 +111,10 @@ CameraSpec Interpreter::parse_camera_block() {
             if (c.v_angle < 0) error(vat, "negative vertical angle");
         } else if (w == "angle") {
             // One float: POV-Ray 3.7 reads `angle h[,] v` only for the spherical camera.
+            const Token at = peek();
             c.angle = parse_float();
             c.has_angle = true;
+            if (c.angle < 0) error(at, "negative viewing angle");
         } else if (w == "normal") {
             parse_normal_into(c.normal);
         } else if (parse_focal_blur_item(t, c)) {

@@ -583,7 +583,15 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
     }
     octree::BuildInput input;
     std::vector<uint32_t> bounded_ids;
+    auto finite = [](const Bounds3& b) {
+        return std::isfinite(b.lo.x) && std::isfinite(b.lo.y) && std::isfinite(b.lo.z) &&
+               std::isfinite(b.hi.x) && std::isfinite(b.hi.y) && std::isfinite(b.hi.z);
+    };
     for (uint32_t id = 0; id < kind_.size(); ++id) {
+        // A sphere's bounds are not finite only when its centre or radius is not (a
+        // division by zero in the scene, which POV-Ray warns about and goes on): it is
+        // never hit, as in POV-Ray, and the packed sphere arrays have no place for it.
+        if (kind_[id] == PrimKind::Sphere && !finite(bounds_[id])) continue;
         if (bounds_[id].infinite()) {
             unbounded_.push_back(id);
         } else {

@@ -188,7 +188,7 @@ struct PrepareOptions {
     size_t pov_bounding_threshold = kPovBoundingThreshold;
     // The whole scene's object list when the parse kept only some objects (a black-box
     // worker): POV-Ray's ties and slab-tree tests are the whole scene's.
-    std::shared_ptr<const PovWholeScene> whole_scene;
+    std::shared_ptr<const PovWholeScene> whole_scene = nullptr;
     // Told when the octree build starts (not owned; may be null).
     RenderProgress* progress = nullptr;
 };

@@ -55,6 +55,15 @@ TEST(Version, CameraItemsApplyInWrittenOrderBelowThreeFive) {
     EXPECT_NE(full_error_of("#version 3.1;\ncamera { angle -1 }")
                   .find("error: negative viewing angle"),
               std::string::npos);
+    // 3.5 and later scenes too (POV-Ray's Parse_Camera, every camera type).
+    const std::pair<const char*, int> types[] = {
+        {"", 40}, {"orthographic ", 53}, {"fisheye ", 48}};
+    for (const auto& [type, column] : types) {
+        EXPECT_EQ(
+            error_of(std::string("#version 3.7;\ncamera { ") + type +
+                     "location -5*z look_at 0 angle -90 }"),
+            "test.pov:2:" + std::to_string(column) + ": error: negative viewing angle");
+    }
 }
 
 TEST(Version, ReadsThreeSevenBeforeAnyDirectiveButTheSceneStaysLegacy) {
