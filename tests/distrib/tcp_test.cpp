@@ -509,6 +509,19 @@ TEST(Tcp, ExactTiesInWorkerProcessesAreTheWholeScenes) {
                         "--boxes 3x1x2 --procs 2 --results parents"});
 }
 
+// Spheres with a negative radius (scenes/golden/sphere_negative_radius.pov): seen only
+// where POV-Ray's box of them is valid (a transform they keep), in every mode; and
+// spheres at a non-finite place (sphere_nonfinite.pov) never.
+TEST(Tcp, NegativeAndNonFiniteSpheresInEveryModeEqualOneProcess) {
+    for (const char* name : {"sphere_negative_radius", "sphere_nonfinite"}) {
+        SCOPED_TRACE(name);
+        expect_same_images(std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov",
+                           "-W 40 -H 30",
+                           {"--mode screen --procs 2", "--boxes 2x2x2",
+                            "--boxes 3x1x2 --procs 2 --results parents"});
+    }
+}
+
 // no_image, no_reflection and no_shadow on CSG children and looks_like objects
 // (scenes/golden/csg_flags_*.pov, each matching POV-Ray in tests/golden): a black box
 // keeps whole frame objects and the rays' kinds, so every mode gives the one-process

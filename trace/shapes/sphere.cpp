@@ -47,7 +47,12 @@ bool shape_inside_inverted(const Sphere& s, const Point3& p) {
 }
 
 Bounds3 shape_bounds(const Sphere& s) {
-    return {s.centre - Vector3(s.radius), s.centre + Vector3(s.radius)};
+    // A negative radius is the same surface (POV-Ray squares it). POV-Ray's own box of
+    // it is inverted, so its slab tree never enters it, until a transform it keeps
+    // (a non-uniform scale, a matrix) turns the corners into a valid box
+    // (shape_pov_bbox): the extent here is the surface's either way.
+    const Vector3 r(std::fabs(s.radius));
+    return {s.centre - r, s.centre + r};
 }
 
 PovBBox shape_pov_bbox(const Sphere& s, const CompactTransform& xf) {
