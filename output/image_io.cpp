@@ -289,13 +289,11 @@ StoredImage stored_as_read(const std::string& path) {
     const std::vector<float>& pixels = decoded.samples;
     const ImageFileInfo& info = decoded.info;
     Image img;
+    img.width = width;
+    img.height = height;
     if (nc == 4) {  // RGBA already: taken as it is (large textures: no second copy)
-        img.width = width;
-        img.height = height;
         img.rgba = std::move(decoded.samples);
     } else {
-        img.width = width;
-        img.height = height;
         resize_on_huge_pages(img.rgba, size_t(width) * size_t(height) * 4);
         for (size_t i = 0; i < size_t(width) * height; ++i) {
             // Grey (1 channel) and grey+alpha (2) files spread their grey over RGB.

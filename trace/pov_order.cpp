@@ -26,6 +26,10 @@ void PovWholeScene::add(const Object& o, bool kept) {
                           [&](const Object& f) { boxes_.push_back(pov_object_bbox(f)); });
 }
 
+PovBBox PovFrameList::box(size_t f) const {
+    return objects.empty() ? boxes[f] : pov_object_bbox(*objects[f]);
+}
+
 PovFrameList pov_frame_list(const Scene& scene, size_t bounding_threshold,
                             const PovWholeScene* whole) {
     PovFrameList list;
@@ -44,9 +48,11 @@ PovFrameList pov_frame_list(const Scene& scene, size_t bounding_threshold,
              ++next_light) {
             const Light& l = scene.lights[lights[next_light]];
             if (l.looks_like.empty()) continue;  // no object: never intersected
-            list.of_light[lights[next_light]] = uint32_t(list.boxes.size());
-            list.boxes.push_back(pov_object_bbox(l.looks_like.front()));
-            if (!whole) list.objects.push_back(&l.looks_like.front());
+            list.of_light[lights[next_light]] = uint32_t(list.size());
+            if (whole)
+                list.boxes.push_back(pov_object_bbox(l.looks_like.front()));
+            else
+                list.objects.push_back(&l.looks_like.front());
         }
     };
     if (whole) {
@@ -63,11 +69,9 @@ PovFrameList pov_frame_list(const Scene& scene, size_t bounding_threshold,
     } else {
         for (size_t i = 0; i < scene.objects.size(); ++i) {
             place_lights(i);
-            list.first_of_object[i] = uint32_t(list.boxes.size());
-            pov_for_frame_objects(scene.objects[i], [&](const Object& f) {
-                list.objects.push_back(&f);
-                list.boxes.push_back(pov_object_bbox(f));
-            });
+            list.first_of_object[i] = uint32_t(list.objects.size());
+            pov_for_frame_objects(scene.objects[i],
+                                  [&](const Object& f) { list.objects.push_back(&f); });
         }
     }
     place_lights(~size_t(0));
@@ -79,9 +83,9 @@ PovFrameList pov_frame_list(const Scene& scene, size_t bounding_threshold,
 PovTestOrder::PovTestOrder(const PovFrameList& list) : slab_tree_(list.slab_tree) {
     if (!slab_tree_) return;
     std::vector<uint32_t> finite, infinite;
-    for (uint32_t f = 0; f < list.boxes.size(); ++f) {
+    for (uint32_t f = 0; f < list.size(); ++f) {
         Node leaf;
-        leaf.box = list.boxes[f];
+        leaf.box = list.box(f);
         leaf.infinite = !pov_bbox_finite(leaf.box);
         leaf.object = f;
         (leaf.infinite ? infinite : finite).push_back(uint32_t(nodes_.size()));

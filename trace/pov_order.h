@@ -61,9 +61,13 @@ class PovWholeScene {
 
 // POV-Ray's object list: the frame-level objects in its order.
 struct PovFrameList {
-    // Their boxes; the objects themselves when the scene holds them all (else empty).
-    std::vector<PovBBox> boxes;
+    // The objects when the scene holds them all; else (a worker's part, listed from the
+    // whole scene's record) their boxes. Only a tie needs the boxes: they are not
+    // computed for a whole scene's list, which every prepare makes.
     std::vector<const Object*> objects;
+    std::vector<PovBBox> boxes;
+    size_t size() const { return objects.empty() ? boxes.size() : objects.size(); }
+    PovBBox box(size_t f) const;
     // Frame index of scene.objects[i] (its first frame-level object when it is a plain
     // union), and of light l's looks_like object (~0u without one).
     std::vector<uint32_t> first_of_object, of_light;

@@ -25,7 +25,6 @@
 // fades), which multiplies the light's contribution: linear in that transmittance.
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
 #include <vector>
 

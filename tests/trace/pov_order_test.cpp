@@ -85,11 +85,11 @@ TEST(PovOrder, WholeSceneRecordedByAFilteredParseGivesTheWholeList) {
     ASSERT_EQ(part.objects.size(), 2u);
     ASSERT_TRUE(part.objects_filtered());
     const PovFrameList list = pov_frame_list(part, kPovBoundingThreshold, &whole);
-    ASSERT_EQ(list.boxes.size(), all.boxes.size());
-    for (size_t f = 0; f < all.boxes.size(); ++f) {
+    ASSERT_EQ(list.size(), all.size());
+    for (size_t f = 0; f < all.size(); ++f) {
         for (int a = 0; a < 3; ++a) {
-            EXPECT_EQ(list.boxes[f].lo[a], all.boxes[f].lo[a]);
-            EXPECT_EQ(list.boxes[f].len[a], all.boxes[f].len[a]);
+            EXPECT_EQ(list.box(f).lo[a], all.box(f).lo[a]);
+            EXPECT_EQ(list.box(f).len[a], all.box(f).len[a]);
         }
     }
     EXPECT_EQ(list.first_of_object,
