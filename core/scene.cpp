@@ -7,6 +7,11 @@
 
 namespace povwall {
 
+std::mutex& derived_slot_mutex() {
+    static std::mutex m;
+    return m;
+}
+
 Scene take_scene_keeping(Scene&& whole, const std::vector<uint32_t>& keep) {
     std::vector<Object> objects = std::move(whole.objects);
     whole.objects.clear();

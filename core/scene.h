@@ -20,6 +20,7 @@
 #include "core/box_tree.h"
 #include "core/colour.h"
 #include "core/compact_transform.h"
+#include "core/derived_slot.h"
 #include "core/function.h"
 #include "core/gamma.h"
 #include "core/heap_optional.h"
@@ -868,6 +869,9 @@ struct Parametric {
 };
 
 struct Object;
+namespace trace {
+struct CsgChildIndex;  // trace/csg_children.h
+}
 enum class CsgKind : uint8_t { Union, Merge, Intersection, Difference };
 struct Light;
 
@@ -909,6 +913,9 @@ struct Csg {
         float lo[3], len[3];
     };
     std::optional<PovBox> pov_box;
+    // The tracer's index of the children when they are many (set when the scene is
+    // prepared).
+    DerivedSlot<trace::CsgChildIndex> child_index;
 };
 
 using ShapeData =

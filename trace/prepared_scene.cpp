@@ -8,6 +8,7 @@
 #include "octree/overlap.h"
 #include "octree/spatial_order.h"
 #include "trace/convex_region.h"
+#include "trace/csg_children.h"
 #include "trace/cutaway_textures.h"
 #include "trace/light_masks.h"
 #include "trace/object_inside.h"
@@ -211,7 +212,24 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
         // they come; every other CSG collects each child's on a stack of its own and
         // moves them over from the top, reversing them (csg.cpp All_Intersections).
         const bool reversed = pov != PovCsg::Union || o.inverse || !o.clipped_by.empty();
-        for (size_t i = 0; i < csg->children.size(); ++i) {
+        // Many children: only those whose box the ray's line meets, in their order
+        // (trace/csg_children.h).
+        const CsgChildIndex* index = csg_child_index(*csg);
+        const CsgScratchLevel level(index != nullptr);
+        const std::vector<uint32_t>* met = nullptr;
+        if (index) {
+            std::vector<uint32_t>& ids = csg_scratch(level.depth).children;
+            ids.clear();
+            index->surfaces.line_candidates(ray.origin, ray.direction, ids);
+            for (uint32_t& e : ids) e = index->surface_children[e];
+            ids.insert(ids.end(), index->surface_always.begin(),
+                       index->surface_always.end());
+            std::sort(ids.begin(), ids.end());
+            met = &ids;
+        }
+        const size_t walked = met ? met->size() : csg->children.size();
+        for (size_t n = 0; n < walked; ++n) {
+            const size_t i = met ? (*met)[n] : n;
             // A child's bound is never removed: a ray outside it skips the child (its
             // inside still counts for the others' crossings).
             const Object& child = csg->children[i];
@@ -231,20 +249,33 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             // A union seen as a union keeps every crossing of its children: no inside
             // tests (text is a union of glyphs, each inside test a glyph outline walk).
             if (csg->kind == CsgKind::Union && pov != PovCsg::Intersection) continue;
+            // The sibling as POV-Ray holds it: inverted with an inverted CSG, and once
+            // more as a difference's later part.
+            auto inside_sibling = [&](size_t j, const Point3& p) {
+                const Object& sibling = csg->children[j];
+                return inside_object(sibling, p,
+                                     inverted != (csg->kind == CsgKind::Difference &&
+                                                  j > 0 && difference_inverts(sibling)));
+            };
             size_t kept = mark;
             for (size_t k = mark; k < out.size(); ++k) {
                 const Point3 p = out[k].at(ray);
                 bool keep = true;
-                for (size_t j = 0; j < csg->children.size() && keep; ++j) {
-                    if (j == i || skipped(j)) continue;
-                    // The sibling as POV-Ray holds it: inverted with an inverted CSG,
-                    // and once more as a difference's later part.
-                    const Object& sibling = csg->children[j];
-                    const bool in =
-                        inside_object(sibling, p,
-                                      inverted != (csg->kind == CsgKind::Difference &&
-                                                   j > 0 && difference_inverts(sibling)));
-                    keep = pov == PovCsg::Intersection ? in : !in;
+                if (index && pov == PovCsg::Merge) {
+                    // Only the siblings that can decide are asked.
+                    keep =
+                        !inside_any_child(*index, inverted, p, i, skipped,
+                                          [&](size_t j) { return inside_sibling(j, p); });
+                } else if (index) {
+                    keep = inside_every_child(*index, inverted, p, i, [&](size_t j) {
+                        return inside_sibling(j, p);
+                    });
+                } else {
+                    for (size_t j = 0; j < csg->children.size() && keep; ++j) {
+                        if (j == i || skipped(j)) continue;
+                        const bool in = inside_sibling(j, p);
+                        keep = pov == PovCsg::Intersection ? in : !in;
+                    }
                 }
                 if (!keep) continue;
                 // A difference inverts its later children: each leaf under them that
@@ -323,6 +354,11 @@ Bounds3 object_bounds(const Object& o, bool restricts) {
     if (o.inverse) return Bounds3::everything();
     if (restricts && (std::holds_alternative<Disc>(o.shape) ||
                       std::holds_alternative<HeightField>(o.shape)))
+        return Bounds3::everything();
+    // A blob whose threshold its tolerance reaches holds every point no element's field
+    // reaches (field 0 there).
+    if (const Blob* blob = std::get_if<Blob>(&o.shape);
+        restricts && blob && !(blob->data->threshold - kBlobInsideTolerance >= 0))
         return Bounds3::everything();
     if (const Mesh* m = std::get_if<Mesh>(&o.shape);
         restricts && m && m->data->inside_vector &&
@@ -454,6 +490,19 @@ bool inside_unclipped(const Object& o, const Point3& p, bool inverted) {
     // intersection whose later children are inverted once more.
     const bool any = pov_csg(csg->kind, inverted) != PovCsg::Intersection;
     if (csg->children.empty()) return false;
+    if (const CsgChildIndex* index = csg_child_index(*csg)) {
+        // Many children: only those that can decide are asked (trace/csg_children.h).
+        auto inside_child = [&](size_t i) {
+            const Object& c = csg->children[i];
+            return inside_object(c, p,
+                                 inverted != (csg->kind == CsgKind::Difference && i > 0 &&
+                                              difference_inverts(c)));
+        };
+        return any ? inside_any_child(
+                         *index, inverted, p, kNoChild, [](size_t) { return false; },
+                         inside_child)
+                   : inside_every_child(*index, inverted, p, kNoChild, inside_child);
+    }
     for (size_t i = 0; i < csg->children.size(); ++i) {
         const Object& c = csg->children[i];
         const bool in = inside_object(c, p,
@@ -465,6 +514,8 @@ bool inside_unclipped(const Object& o, const Point3& p, bool inverted) {
 }
 
 Bounds3 object_world_bounds(const Object& obj) { return object_bounds(obj); }
+
+Bounds3 object_inside_bounds(const Object& obj) { return object_bounds(obj, true); }
 
 Bounds3 object_hit_bounds(const Object& obj) {
     Bounds3 b = object_bounds(obj);
@@ -520,6 +571,10 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
                      options_.pov_bounding_threshold != kPovBoundingOff &&
                      pov_frame_objects(scene, whole) >= options_.pov_bounding_threshold;
     pov_root_tested_ = pov_slab_tree_ && pov_slab_root(scene, pov_root_, whole);
+    // The children of large CSGs get their boxes now that they are final.
+    for (const Object* o : objects) index_csg_children(*o);
+    for (const Light& l : scene.lights)
+        for (const Object& o : l.looks_like) index_csg_children(o);
     size_t leaves = 0;
     for (const Object* o : objects)
         leaves += count_leaves(*o) + cutaway_material_count(*o);

@@ -401,6 +401,9 @@ class PreparedScene {
 
 // World-space bounds of an object (everything() when unbounded).
 Bounds3 object_world_bounds(const Object& obj);
+// World-space bounds of the points inside the object (as it is written, not inverted by
+// a CSG around it): where it can cut another's surface.
+Bounds3 object_inside_bounds(const Object& obj);
 // Bounds of the points where a ray can hit the object: its world bounds, narrowed for a
 // plane whose normal is parallel to an axis to its surface (a slab of zero width; its
 // inside is a half-space, but rays meet it only on the surface).

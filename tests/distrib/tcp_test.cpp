@@ -157,9 +157,10 @@ TEST(Tcp, GlassAndCsgSceneOverProcessesEqualsOneProcess) {
 TEST(Tcp, GlassCsgAndCameraInsideGlassInEveryModeEqualOneProcess) {
     for (const char* name :
          {"csg_glass_union", "csg_glass_merge", "csg_glass_intersection",
-          "csg_glass_difference", "camera_inside_glass", "orthographic_inside_glass",
-          "sky_plane_fresnel", "legacy_finish_refraction", "faked_caustics",
-          "fog_turbulence", "fog_hollow_union", "fog_camera_in_solid"}) {
+          "csg_glass_difference", "csg_many_children", "camera_inside_glass",
+          "orthographic_inside_glass", "sky_plane_fresnel", "legacy_finish_refraction",
+          "faked_caustics", "fog_turbulence", "fog_hollow_union",
+          "fog_camera_in_solid"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         expect_same_images(

@@ -20,6 +20,7 @@ PovBBox shape_pov_bbox(const BicubicPatch& p, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const BicubicPatch&) { return true; }
 constexpr bool shape_convex(const BicubicPatch&) { return false; }
 constexpr bool shape_invertible(const BicubicPatch&) { return false; }
+constexpr bool shape_has_no_inside(const BicubicPatch&) { return true; }
 bool shape_oracle_first(const BicubicPatch& p, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

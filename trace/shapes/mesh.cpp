@@ -289,6 +289,8 @@ bool shape_inside_inverted(const Mesh& m, const Point3& q) {
     return has_inside(m) && !shape_inside(m, q);
 }
 
+bool shape_has_no_inside(const Mesh& m) { return !has_inside(m); }
+
 bool shape_inside(const Mesh& m, const Point3& q) {
     if (!has_inside(m)) return false;
     const Vector3 dir = normalize(*m->inside_vector);

@@ -36,6 +36,8 @@ PovBBox shape_pov_bbox(const Mesh& m, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Mesh&) { return true; }
 constexpr bool shape_convex(const Mesh&) { return false; }
 constexpr bool shape_invertible(const Mesh&) { return true; }
+// Without an inside_vector a mesh holds nothing, inverted or not.
+bool shape_has_no_inside(const Mesh& m);
 bool shape_oracle_first(const Mesh& m, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

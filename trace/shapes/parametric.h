@@ -26,6 +26,7 @@ PovBBox shape_pov_bbox(const Parametric& s, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Parametric&) { return true; }
 constexpr bool shape_convex(const Parametric&) { return false; }
 constexpr bool shape_invertible(const Parametric&) { return false; }
+constexpr bool shape_has_no_inside(const Parametric&) { return true; }
 // The nearest point of the surface on the ray: the uv rectangle cut until the pieces'
 // sampled boxes (with a safety margin from the functions' sampled slopes) are tiny,
 // then Newton on S(u, v) = o + t d from the nearest candidates.

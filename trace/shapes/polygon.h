@@ -33,6 +33,7 @@ PovBBox shape_pov_bbox(const Polygon& p, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Polygon&) { return true; }
 constexpr bool shape_convex(const Polygon&) { return true; }
 constexpr bool shape_invertible(const Polygon&) { return false; }
+constexpr bool shape_has_no_inside(const Polygon&) { return true; }
 bool shape_oracle_first(const Polygon& p, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace

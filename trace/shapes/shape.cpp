@@ -104,6 +104,15 @@ bool leaf_invertible(const Object& leaf) {
     return visit_leaf<bool>(leaf, [&](const auto& s) { return shape_invertible(s); });
 }
 
+bool leaf_never_inside(const Object& leaf) {
+    return visit_leaf<bool>(leaf, [&](const auto& s) {
+        if constexpr (requires { shape_has_no_inside(s); })
+            return shape_has_no_inside(s);
+        else
+            return false;
+    });
+}
+
 bool leaf_oracle_first(const Object& leaf, const OracleRay& r, OracleBest& best) {
     return visit_leaf<bool>(
         leaf, [&](const auto& s) { return shape_oracle_first(s, r, best); });

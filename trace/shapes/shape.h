@@ -67,6 +67,9 @@ bool leaf_convex(const Object& leaf);
 // patches and parametrics keep no inverted flag (their Invert does nothing): `inverse`
 // and a difference leave their inside (none) and their normal as they are.
 bool leaf_invertible(const Object& leaf);
+// Whether the leaf has no inside however it is held (a surface: its shape's
+// shape_has_no_inside; every other shape answers false).
+bool leaf_never_inside(const Object& leaf);
 // Whether a difference's Invert_Object turns a child after the first inside out (a CSG
 // always; a leaf when it is invertible).
 inline bool difference_inverts(const Object& child) {

@@ -34,6 +34,7 @@ PovBBox shape_pov_bbox(const Triangle& t, const CompactTransform& xf);
 constexpr bool shape_pov_tests_own_bbox(const Triangle&) { return false; }
 constexpr bool shape_convex(const Triangle&) { return true; }
 constexpr bool shape_invertible(const Triangle&) { return false; }
+constexpr bool shape_has_no_inside(const Triangle&) { return true; }
 bool shape_oracle_first(const Triangle& t, const OracleRay& r, OracleBest& best);
 
 void shape_hits(const SmoothTriangle& t, const LocalRay& r, ShapeHits& out);
@@ -45,6 +46,7 @@ constexpr bool shape_pov_tests_own_bbox(const SmoothTriangle&) { return false; }
 // Its shading normals bend: a lit point can face away from the light.
 constexpr bool shape_convex(const SmoothTriangle&) { return false; }
 constexpr bool shape_invertible(const SmoothTriangle&) { return false; }
+constexpr bool shape_has_no_inside(const SmoothTriangle&) { return true; }
 bool shape_oracle_first(const SmoothTriangle& t, const OracleRay& r, OracleBest& best);
 
 }  // namespace povwall::trace
