@@ -563,10 +563,6 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
         warn(t, "Cannot invert a patch object.");
     } else if (w == "inverse" && std::holds_alternative<Polygon>(obj.shape)) {
         // Nor of a polygon, which is no patch object: no warning.
-    } else if (w == "inverse" && holds_parametric(obj)) {
-        // POV-Ray inverts a CSG child by child, which leaves a parametric as it is: the
-        // CSG's inside is not the complement of its children's.
-        unsupported(t, "inverse on a CSG holding a parametric");
     } else if (w == "inverse") {
         obj.inverse = !obj.inverse;
         // POV-Ray inverts a CSG by inverting its children and morphing every CSG of the
@@ -992,14 +988,6 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
                             if (csg.kind == CsgKind::Intersection ||
                                 csg.kind == CsgKind::Difference)
                                 warn(c, "Patch objects not allowed in intersection.");
-                            // A difference inverts a CSG after the first child by
-                            // inverting its children, which leaves a parametric as it is.
-                            if (csg.kind == CsgKind::Difference &&
-                                !csg.children.empty() &&
-                                std::holds_alternative<Csg>(child.shape))
-                                unsupported(
-                                    c,
-                                    "a CSG holding a parametric cut from a difference");
                         }
                         csg.children.push_back(std::move(child));
                         continue;

@@ -105,13 +105,6 @@ TEST(ShapeParametric, ErrorsAndWarnings) {
               "test.pov:1:117: error: Precompute: invalid depth");
     EXPECT_EQ(error_of(torus + "sturm }"),
               "test.pov:1:117: error: 'sturm' cannot be used with this object");
-    EXPECT_EQ(error_of("difference { sphere { 0, 1 } union { " + torus +
-                       "} sphere { 0, 1 } } }"),
-              "test.pov:1:30: error: unsupported: a CSG holding a parametric cut from a "
-              "difference");
-    EXPECT_EQ(
-        error_of("union { " + torus + "} sphere { 0, 1 } inverse }"),
-        "test.pov:1:143: error: unsupported: inverse on a CSG holding a parametric");
     std::string messages;
     auto p = only_shape<Parametric>(parse(torus + "inverse }", &messages));
     EXPECT_NE(messages.find("Cannot invert a patch object."), std::string::npos);
