@@ -1201,10 +1201,12 @@ TraceResult combine_children(const ShadingRecord& record, const TraceResult* res
         const ChildRay& c = record.children[i];
         const TraceResult& x = results[i];
         if (c.kind == ChildRay::Kind::Reflection && c.exponent != 1) {
+            // As POV-Ray's pow of each channel: a negative one (a parallel light's fade
+            // far behind its plane turns negative) gives NaN unless the power is an
+            // integer, and POV-Ray writes such a channel as 0.
             float e = 1 / c.exponent;
-            Rgb p(std::pow(std::max(0.0f, x.colour.r), e),
-                  std::pow(std::max(0.0f, x.colour.g), e),
-                  std::pow(std::max(0.0f, x.colour.b), e));
+            Rgb p(std::pow(x.colour.r, e), std::pow(x.colour.g, e),
+                  std::pow(x.colour.b, e));
             r.colour += c.coeff * p;
         } else {
             r.colour += c.coeff * x.colour;
