@@ -259,12 +259,33 @@ void order_triangle_as_pov(Triangle& tri, const Transform& before,
         std::swap(tri.p[0], tri.p[1]);
 }
 
+// POV-Ray moves a smooth_triangle's corners and normals at each transform and checks it
+// again (SmoothTriangle::Transform, Compute_Smooth_Triangle): normals not all on one side
+// of the moved face make it degenerate, for good (a shear can turn one across). A zero
+// first normal marks that, as at the parse.
+void recheck_smooth_triangle(SmoothTriangle& tri, const Transform& after) {
+    const auto& n = *tri.n;
+    if (n[0] == Vector3{0, 0, 0}) return;
+    Point3 p[3];
+    for (int i = 0; i < 3; ++i) p[i] = after.point(tri.p[i]);
+    const Vector3 face = cross(p[0] - p[1], p[2] - p[1]);
+    int above = 0, below = 0;
+    for (const Vector3& v : n) {
+        const Real side = dot(face, after.normal(v));
+        above += side > 0;
+        below += side < 0;
+    }
+    if (above != 3 && below != 3) tri.n.edit()[0] = Vector3{0, 0, 0};
+}
+
 }  // namespace
 
 void Interpreter::apply_transform(Object& obj, const Transform& t,
                                   const TransformStep& step) {
     if (auto tri = std::get_if<Triangle>(&obj.shape))
         order_triangle_as_pov(*tri, obj.transform, obj.transform.then(t));
+    if (auto tri = std::get_if<SmoothTriangle>(&obj.shape))
+        recheck_smooth_triangle(*tri, obj.transform.then(t));
     Plane* plane = std::get_if<Plane>(&obj.shape);
     if (auto sphere = std::get_if<Sphere>(&obj.shape))
         note_sphere_pov_matrix(*sphere, obj.transform, t, step);

@@ -369,6 +369,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "camera_interiors_pov_rules",
                              "mesh_nearest_walk",
                              "triangle_corner_order",
+                             "smooth_triangle_transformed",
                              "dispersion_total_internal_reflection",
                              "image_map_once_no_colour",
                              "julia_pov_rules",
