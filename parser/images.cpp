@@ -117,6 +117,14 @@ std::shared_ptr<const ImageMapping> Interpreter::parse_image_block(const Token& 
                             false);
         return mapping;
     }
+    // POV-Ray 1.0's orientation vector before the file type: warned and dropped
+    // (Parse_Image of image maps, bump maps, image patterns and material maps).
+    if (const Token v = peek();
+        is_punct(v, '<') || (v.kind != TokenKind::String && starts_float(v))) {
+        warn(v,
+             "Old style orientation vector or map type not supported. Ignoring value.");
+        parse_vector();
+    }
     const ImageFileRef ref = parse_image_file_ref(false);
     const std::string& path = ref.path;
     const Token& name_token = ref.name_token;

@@ -462,11 +462,37 @@ Transform Interpreter::parse_transform_block() {
     }
 }
 
+namespace {
+// POV-Ray's Convert_Filter_To_Transmit: a plain colour's filter, a colour map's entries'
+// and a pigment map's entries' become transmit.
+void filter_to_transmit(Pigment& p) {
+    if (p.pattern->kind == PatternKind::Solid) {
+        p.colour.transmit += p.colour.filter;
+        p.colour.filter = 0;
+        return;
+    }
+    if (!p.maps.allocated()) return;
+    PigmentMaps& maps = p.maps.edit();
+    for (ColourMapEntry& e : maps.colour_map) {
+        e.colour.transmit += e.colour.filter;
+        e.colour.filter = 0;
+    }
+    for (Pigment& entry : maps.list) filter_to_transmit(entry);
+}
+}  // namespace
+
 void Interpreter::link_textures(LayeredTexture& onto, LayeredTexture&& layers,
                                 const Token& at) {
     if (layers.empty()) return;
     if (!onto.empty() && onto.back().map_pattern)
         error(at, "cannot layer over a patterned texture");
+    // Up to #version 3.1 a layer laid over another lets it through by transmit, not
+    // filter (Link_Textures): every new layer but the lowest, and that one too over
+    // earlier layers.
+    if (language_version() <= 310) {
+        for (size_t k = 0; k < layers.size(); ++k)
+            if (k > 0 || !onto.empty()) filter_to_transmit(layers[k].pigment);
+    }
     for (Texture& l : layers) onto.push_back(std::move(l));
     if (onto.size() > 1 && onto.back().map_pattern)
         error(at, "cannot layer a patterned texture over another");
@@ -649,8 +675,21 @@ bool Interpreter::try_object_modifier(Object& obj, const Token& t) {
             obj.bounds_are_clips = true;
             expect_punct('}', "after ", other);
         } else {
+            // POV-Ray's Parse_Bound_Clip: objects, then transforms, each moving every
+            // object of this block.
+            const size_t first = list.size();
+            bool moved = false;
             for (; !is_punct(o, '}'); o = next()) {
+                Transform move;
+                TransformStep move_step;
+                if (try_transform(o, move, &move_step)) {
+                    for (size_t i = first; i < list.size(); ++i)
+                        apply_transform(list[i], move, move_step);
+                    moved = true;
+                    continue;
+                }
                 Object child;
+                if (moved) expected("a transformation or '}'", o);
                 if (!try_parse_object_or_identifier(o, child))
                     expected("an object or '}'", o);
                 list.push_back(std::move(child));

@@ -370,6 +370,7 @@ TEST(Tcp, RealSceneFixesInEveryModeEqualOneProcess) {
                              "mesh_nearest_walk",
                              "triangle_corner_order",
                              "smooth_triangle_transformed",
+                             "survey11_rules",
                              "dispersion_total_internal_reflection",
                              "image_map_once_no_colour",
                              "julia_pov_rules",
