@@ -193,8 +193,9 @@ void write_image(const Image& image, const std::string& path, const OutputEncodi
             }
             if (channels == 4 && c < 3) v = a > 0.0f ? v / a : 0.0f;
             float e = c == 3 ? std::clamp(v, 0.0f, 1.0f) : encode_channel(v, enc);
-            // POV-Ray quantises with floor(x * max + 0.5).
-            unsigned q = unsigned(std::floor(e * maxv + 0.5f));
+            // POV-Ray quantises with floor(x * max + 0.5), and writes a NaN channel (a
+            // reflection exponent over negative light) as 0.
+            unsigned q = std::isnan(e) ? 0u : unsigned(std::floor(e * maxv + 0.5f));
             if (replicate_up > 0) q = q << replicate_up | q >> replicate_down;
             if (sixteen)
                 words.push_back(uint16_t(q));
