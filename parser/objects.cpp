@@ -259,23 +259,31 @@ void order_triangle_as_pov(Triangle& tri, const Transform& before,
         std::swap(tri.p[0], tri.p[1]);
 }
 
-// POV-Ray moves a smooth_triangle's corners and normals at each transform and checks it
-// again (SmoothTriangle::Transform, Compute_Smooth_Triangle): normals not all on one side
-// of the moved face make it degenerate, for good (a shear can turn one across). A zero
-// first normal marks that, as at the parse.
-void recheck_smooth_triangle(SmoothTriangle& tri, const Transform& after) {
-    const auto& n = *tri.n;
-    if (n[0] == Vector3{0, 0, 0}) return;
-    Point3 p[3];
-    for (int i = 0; i < 3; ++i) p[i] = after.point(tri.p[i]);
+// Compute_Smooth_Triangle's test: the vertex normals all on one side of the face.
+bool normals_on_one_side(const Point3 (&p)[3], const std::array<Vector3, 3>& n) {
     const Vector3 face = cross(p[0] - p[1], p[2] - p[1]);
     int above = 0, below = 0;
     for (const Vector3& v : n) {
-        const Real side = dot(face, after.normal(v));
+        const Real side = dot(face, v);
         above += side > 0;
         below += side < 0;
     }
-    if (above != 3 && below != 3) tri.n.edit()[0] = Vector3{0, 0, 0};
+    return above == 3 || below == 3;
+}
+
+// POV-Ray moves a smooth_triangle's corners and normals at each transform and checks it
+// again (SmoothTriangle::Transform): normals not all on one side of the moved face make
+// it degenerate, for good (a shear can turn one across). A zero first normal marks that,
+// as at the parse.
+void recheck_smooth_triangle(SmoothTriangle& tri, const Transform& after) {
+    if ((*tri.n)[0] == Vector3{0, 0, 0}) return;
+    Point3 p[3];
+    std::array<Vector3, 3> n;
+    for (int i = 0; i < 3; ++i) {
+        p[i] = after.point(tri.p[i]);
+        n[size_t(i)] = after.normal((*tri.n)[size_t(i)]);
+    }
+    if (!normals_on_one_side(p, n)) tri.n.edit()[0] = Vector3{0, 0, 0};
 }
 
 }  // namespace
@@ -956,21 +964,15 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
             // vertex normals; a zero one, or normals not all on one side of the face,
             // make the triangle degenerate: never hit. A zero first normal marks that.
             auto& n = tri.n.edit();
-            const Vector3 face = cross(tri.p[0] - tri.p[1], tri.p[2] - tri.p[1]);
             bool degenerate = degenerate_corners(tri.p);
-            int above = 0, below = 0;
             for (Vector3& v : n) {
                 const Real len = length(v);
-                if (len == 0) {
+                if (len == 0)
                     degenerate = true;
-                    continue;
-                }
-                v = v / len;
-                const Real side = dot(face, v);
-                above += side > 0;
-                below += side < 0;
+                else
+                    v = v / len;
             }
-            if (above != 3 && below != 3) degenerate = true;
+            if (!normals_on_one_side(tri.p, n)) degenerate = true;
             if (degenerate) {
                 warn(t, "degenerate triangle, never hit; please remove");
                 n[0] = Vector3{0, 0, 0};

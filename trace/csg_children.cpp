@@ -35,13 +35,6 @@ bool usable(const Bounds3& b) {
     return true;
 }
 
-// How child i of `csg` is held for its inside test when the CSG is held `inverted`
-// (as object_crossings and inside_unclipped pass it).
-bool child_inverted(const Csg& csg, size_t i, bool inverted) {
-    return inverted != (csg.kind == CsgKind::Difference && i > 0 &&
-                        difference_inverts(csg.children[i]));
-}
-
 // Whether the object held inverted holds every point outside the box of its inside as
 // written (object_inside_bounds): true when nothing under it is clipped (a clip is never
 // inverted), inverse, or a surface without an inside (inverted, still nothing), so that
@@ -82,7 +75,7 @@ std::unique_ptr<CsgChildIndex> build_index(const Csg& csg) {
         CsgChildIndex::Insides& in = index->insides[held];
         for (uint32_t i = 0; i < csg.children.size(); ++i) {
             const Object& child = csg.children[i];
-            const bool inverted = child_inverted(csg, i, held == 1);
+            const bool inverted = child_held_inverted(csg, i, held == 1);
             if (never_inside(child, inverted)) {
                 in.never.push_back(i);
                 continue;
@@ -113,7 +106,7 @@ bool never_inside(const Object& obj, bool inverted) {
     const bool any = pov_csg(csg->kind, inverted) != PovCsg::Intersection;
     for (size_t i = 0; i < csg->children.size(); ++i) {
         const bool never =
-            never_inside(csg->children[i], child_inverted(*csg, i, inverted));
+            never_inside(csg->children[i], child_held_inverted(*csg, i, inverted));
         if (never != any) return !any;
     }
     return any;

@@ -60,7 +60,7 @@ const CsgChildIndex* csg_child_index(const Csg& csg);
 // inside, or a CSG whose rule leaves none.
 bool never_inside(const Object& obj, bool inverted);
 
-// Scratch lists for a walk over an indexed CSG, one pair per nesting level of the walks
+// Scratch lists for a walk over an indexed CSG, one set per nesting level of the walks
 // under way on this thread (no allocation per ray once warm).
 struct CsgScratch {
     std::vector<uint32_t> children, candidates, holding;

@@ -216,9 +216,7 @@ PovBBox csg_bbox(const Csg& csg) {
             const Object& c = csg.children[i];
             // A difference inverts its children after the first (an inverse one comes
             // back).
-            if (c.inverse !=
-                (csg.kind == CsgKind::Difference && i > 0 && difference_inverts(c)))
-                continue;
+            if (child_held_inverted(csg, i, c.inverse)) continue;
             // POV-Ray leaves height fields out too: their inside reaches below the box.
             if (std::holds_alternative<HeightField>(c.shape)) continue;
             if (const Plane* plane = std::get_if<Plane>(&c.shape)) {

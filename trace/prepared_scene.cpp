@@ -249,13 +249,9 @@ void object_crossings(const Object& o, const Ray& ray, std::vector<WorldCrossing
             // A union seen as a union keeps every crossing of its children: no inside
             // tests (text is a union of glyphs, each inside test a glyph outline walk).
             if (csg->kind == CsgKind::Union && pov != PovCsg::Intersection) continue;
-            // The sibling as POV-Ray holds it: inverted with an inverted CSG, and once
-            // more as a difference's later part.
             auto inside_sibling = [&](size_t j, const Point3& p) {
-                const Object& sibling = csg->children[j];
-                return inside_object(sibling, p,
-                                     inverted != (csg->kind == CsgKind::Difference &&
-                                                  j > 0 && difference_inverts(sibling)));
+                return inside_object(csg->children[j], p,
+                                     child_held_inverted(*csg, j, inverted));
             };
             size_t kept = mark;
             for (size_t k = mark; k < out.size(); ++k) {
@@ -490,26 +486,18 @@ bool inside_unclipped(const Object& o, const Point3& p, bool inverted) {
     // intersection whose later children are inverted once more.
     const bool any = pov_csg(csg->kind, inverted) != PovCsg::Intersection;
     if (csg->children.empty()) return false;
+    auto inside_child = [&](size_t i) {
+        return inside_object(csg->children[i], p, child_held_inverted(*csg, i, inverted));
+    };
     if (const CsgChildIndex* index = csg_child_index(*csg)) {
         // Many children: only those that can decide are asked (trace/csg_children.h).
-        auto inside_child = [&](size_t i) {
-            const Object& c = csg->children[i];
-            return inside_object(c, p,
-                                 inverted != (csg->kind == CsgKind::Difference && i > 0 &&
-                                              difference_inverts(c)));
-        };
         return any ? inside_any_child(
                          *index, inverted, p, kNoChild, [](size_t) { return false; },
                          inside_child)
                    : inside_every_child(*index, inverted, p, kNoChild, inside_child);
     }
-    for (size_t i = 0; i < csg->children.size(); ++i) {
-        const Object& c = csg->children[i];
-        const bool in = inside_object(c, p,
-                                      inverted != (csg->kind == CsgKind::Difference &&
-                                                   i > 0 && difference_inverts(c)));
-        if (in == any) return any;
-    }
+    for (size_t i = 0; i < csg->children.size(); ++i)
+        if (inside_child(i) == any) return any;
     return !any;
 }
 

@@ -1010,5 +1010,38 @@ TEST(Media, BadValuesAreLocatedAndMissingFeaturesUnsupported) {
         "atmospheric media");
 }
 
+// POV-Ray's Parse_Bound_Clip: the objects of clipped_by/bounded_by, then transforms that
+// move each of them; an object after a transform is an error. A smooth_triangle a shear
+// turns degenerate stays so (SmoothTriangle::Transform).
+TEST(Errors, ClipListTakesTransformsAfterItsObjects) {
+    const Scene s = parse(
+        "sphere { 0, 1 clipped_by { box { -1, 1 } sphere { x, 1 } "
+        "translate <0, 2, 0> scale 2 } }");
+    const std::vector<Object>& clips = *s.objects.at(0).clipped_by;
+    ASSERT_EQ(clips.size(), 2u);
+    // Each moved: the box's corner and the sphere's centre, where they end up.
+    const Box& box = std::get<Box>(clips[0].shape);
+    EXPECT_EQ(clips[0].transform.point(min(box.corner1, box.corner2)),
+              (Point3{-2, 2, -2}));
+    const Sphere& ball = std::get<Sphere>(clips[1].shape);
+    EXPECT_EQ(clips[1].transform.point(ball.centre), (Point3{2, 4, 0}));
+    EXPECT_EQ(
+        error_of("sphere { 0, 1 clipped_by { box { -1, 1 } scale 2 sphere { 0, 1 } } }"),
+        "test.pov:1:50: error: expected a transformation or '}' but found 'sphere'");
+    const char* face =
+        "smooth_triangle { <0.816, -0.899, -0.668>, <0.033, 0.619, -0.042>, "
+        "<0.685, 0.037, 0.93>, <0.304, 0.349, 0.126>, <-0.8, 0.604, 0.042>, "
+        "<-0.983, 0.169, -0.988> ";
+    const std::string shear = "matrix <1, 0, 0, 0.196, 1, 0, -0.444, 0, 1, 0, 0, 0> ";
+    auto degenerate = [](const Scene& scene) {
+        return (*std::get<SmoothTriangle>(scene.objects.at(0).shape).n)[0] ==
+               Vector3{0, 0, 0};
+    };
+    EXPECT_FALSE(degenerate(parse(std::string(face) + "}")));
+    EXPECT_TRUE(degenerate(parse(std::string(face) + shear + "}")));
+    EXPECT_TRUE(degenerate(
+        parse(std::string(face) + shear + "transform { " + shear + "inverse } }")));
+}
+
 }  // namespace
 }  // namespace povwall::parser

@@ -75,6 +75,12 @@ bool leaf_never_inside(const Object& leaf);
 inline bool difference_inverts(const Object& child) {
     return std::holds_alternative<Csg>(child.shape) || leaf_invertible(child);
 }
+// How child i of a CSG held `inverted` is held for its inside test: inverted with the
+// CSG, and once more as a difference's later part.
+inline bool child_held_inverted(const Csg& csg, size_t i, bool inverted) {
+    return inverted != (csg.kind == CsgKind::Difference && i > 0 &&
+                        difference_inverts(csg.children[i]));
+}
 // The oracle's first accepted object-space t (false: the shape has no oracle).
 bool leaf_oracle_first(const Object& leaf, const OracleRay& r, OracleBest& best);
 
