@@ -220,6 +220,8 @@ bool Interpreter::in_repeated_code() const {
 }
 
 bool Interpreter::try_compiled_expression(bool full, bool no_gt, Numeric& out) {
+    // Before #version 1.5 vectors and floats are single factors (ExpressionParser).
+    if (effective_version() < 150) return false;
     // Only an expression whose first token was peeked straight from the current frame:
     // not a token put back by a directive, not an array element.
     if (pushback_.size() != 1 || frames_.empty()) return false;

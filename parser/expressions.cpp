@@ -249,9 +249,13 @@ class ExpressionParser {
     // POV-Ray's Parse_Float/Parse_Vector read only sums of terms (no comparisons, logic
     // or
     // ?: outside parentheses), which is what lets `box { <a> <b> }` read two vectors.
+    // Before #version 1.5 they read a single factor (Parse_Num_Factor: a number, an
+    // identifier, a call, a vector, a parenthesised expression, with unary signs and
+    // `.x`), so `<-6.6 -0.0 -2.1>` is three components.
     Value parse() {
         NestingGuard guard(in_, in_.peek());
-        return full_ ? ternary() : binary(kSumLevel);
+        if (full_) return ternary();
+        return in_.effective_version() < 150 ? unary() : binary(kSumLevel);
     }
 
   private:
@@ -394,7 +398,7 @@ class ExpressionParser {
     // token can start an expression; a comma after each of the first four is optional
     // (so `<1,2,>` is fine), none is read after the fifth, and further components
     // overwrite the fifth (`<1,2,3,4,5 6>` is <1,2,3,4,6>). Components are sums, so
-    // `<1 -2 3>` is <-1, 3>.
+    // `<1 -2 3>` is <-1, 3> (single factors before #version 1.5: <1, -2, 3>).
     Numeric vector_literal(const Token& open) {
         Numeric r;
         r.size = 0;
@@ -404,7 +408,8 @@ class ExpressionParser {
             if (r.size < 2 && in_.is_punct(next, '>'))
                 in_.error(open, "a vector needs at least 2 components");
             Token at = next;
-            Numeric c = num(ExpressionParser(in_, true).parse(), at);
+            const bool factor = in_.effective_version() < 150;
+            Numeric c = num(ExpressionParser(in_, true, !factor).parse(), at);
             if (r.size == 5) {
                 r.c[4] = c.c[0];
                 continue;
