@@ -337,6 +337,11 @@ struct Finish {
     // POV-Ray's old `finish { ior, caustics, refraction }`: moved into the object's
     // interior when the object is placed (ior and caustics negative: not given).
     float legacy_ior = -1.0f, legacy_caustics = -1.0f, legacy_refraction = 1.0f;
+    // finish { subsurface { translucency, anisotropy } }: POV-Ray 3.7's experimental
+    // subsurface light transport (trace/subsurface.h). translucency: the reduced
+    // scattering mean free path, mm per channel; anisotropy is kept unused, as in 3.7.
+    bool subsurface = false;
+    Rgb translucency{0.0f}, anisotropy{0.0f};
     bool operator==(const Finish&) const = default;
 };
 
@@ -1166,6 +1171,14 @@ struct RadiositySettings {
     SourceLoc loc;                 // the `radiosity` keyword
 };
 
+// global_settings { subsurface { samples, radiosity } }: the block turns subsurface
+// light transport on for the finishes that have it (from +Q9).
+struct SubsurfaceSettings {
+    int samples_diffuse = 50, samples_single = 50;
+    bool radiosity = false;
+    SourceLoc loc;  // the `subsurface` keyword
+};
+
 struct GlobalSettings {
     int max_trace_level = 5;
     float adc_bailout = 1.0f / 255.0f;
@@ -1182,6 +1195,8 @@ struct GlobalSettings {
     std::optional<PhotonSettings> photons;
     // A radiosity block (POV-Ray's radiosityEnabled before +Q).
     std::optional<RadiositySettings> radiosity;
+    std::optional<SubsurfaceSettings> subsurface;
+    double mm_per_unit = 10;  // millimetres in a scene unit (subsurface's lengths)
 };
 
 // What an interior stack needs of a node of an object the parse left out (see

@@ -120,6 +120,13 @@ constexpr size_t kBoxBytes = sizeof(trace::PreparedScene) + 256;
 // of worker memory get 30 % on top.
 size_t with_margin(size_t bytes) { return bytes * 130 / 100; }
 
+// "file:line:col: " of a scene location, for a message (empty when it has none).
+std::string located(const Scene& scene, const SourceLoc& loc) {
+    if (!loc.valid() || size_t(loc.file) >= scene.files.size()) return {};
+    return scene.files[size_t(loc.file)] + ":" + std::to_string(loc.line) + ":" +
+           std::to_string(loc.column) + ": ";
+}
+
 struct ObjectSizes {
     std::vector<Bounds3> bounds;
     std::vector<size_t> model, prepared;
@@ -489,15 +496,17 @@ DistributionPlan plan_distribution(const Scene& scene,
     if (const auto& rad = scene.settings.radiosity) {
         // The irradiance cache is filled by rays through the whole scene and read
         // everywhere; black boxes hold parts of the scene.
-        std::string at;
-        if (rad->loc.valid() && size_t(rad->loc.file) < scene.files.size())
-            at = scene.files[size_t(rad->loc.file)] + ":" +
-                 std::to_string(rad->loc.line) + ":" + std::to_string(rad->loc.column) +
-                 ": ";
-        throw UnsupportedInMode(at +
+        throw UnsupportedInMode(located(scene, rad->loc) +
                                 "error: unsupported: radiosity with space subdivision "
                                 "(black boxes hold parts of the scene; the irradiance "
                                 "cache needs the whole): use --mode single or screen");
+    }
+    if (const auto& sss = scene.settings.subsurface) {
+        // Its rays sample the object's whole surface from inside the shading.
+        throw UnsupportedInMode(located(scene, sss->loc) +
+                                "error: unsupported: subsurface with space subdivision "
+                                "(black boxes hold parts of the scene; its samples need "
+                                "the whole object): use --mode single or screen");
     }
     plan.mode = RenderMode::Space;
     // Worker processes: those asked for; in auto mode, as many as the budget needs (a

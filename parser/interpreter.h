@@ -276,7 +276,10 @@ class Interpreter {
     std::optional<Token> photons_at_;
     // The global radiosity keyword (radiosity.cpp).
     std::optional<Token> radiosity_at_;
+    // The first finish with subsurface (POV-Ray warns that it is experimental).
+    std::optional<Token> subsurface_finish_at_;
     void parse_radiosity_settings(const Token& at);
+    void parse_subsurface_settings(const Token& keyword);
     void parse_object_radiosity(Object& obj);
     void check_radiosity();
     CameraSpec parse_camera_block();

@@ -150,6 +150,11 @@ Scene Interpreter::run(int root_file) {
     settle_isosurfaces();
     settle_mesh_copies();
     check_radiosity();
+    if (subsurface_finish_at_)
+        warn(*subsurface_finish_at_,
+             "this rendering uses the following experimental feature(s): subsurface "
+             "light transport (POV-Ray 3.7: its design and implementation are likely to "
+             "change in future versions)");
     // POV-Ray shoots a projected_through light's photons only through its object.
     if (projected_through_at_ && scene_.settings.photons)
         unsupported(*projected_through_at_, "projected_through with photons");

@@ -101,7 +101,6 @@ void Interpreter::parse_radiosity_settings(const Token& at) {
             r.media = on_off();
         } else if (w == "subsurface") {
             r.subsurface = on_off();
-            if (r.subsurface) unsupported(t, "radiosity subsurface on");
         } else {
             expected("a radiosity item or '}'", t);
         }

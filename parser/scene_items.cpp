@@ -624,10 +624,44 @@ void Interpreter::parse_global_settings() {
             parse_photon_settings(t);
         } else if (w == "radiosity") {
             parse_radiosity_settings(t);
-        } else if (w == "subsurface" || w == "mm_per_unit") {
-            unsupported(t, w);
+        } else if (w == "mm_per_unit") {
+            const Token at = peek();
+            g.mm_per_unit = parse_float();
+            // (POV-Ray takes any number: 0 or less divides by zero when it renders.)
+            if (!(g.mm_per_unit > 0)) error(at, "mm_per_unit must be positive");
+        } else if (w == "subsurface") {
+            parse_subsurface_settings(t);
         } else {
             expected("a global setting or '}'", t);
+        }
+    }
+}
+
+// POV-Ray 3.7's global subsurface block: samples (diffuse, single; the comma optional)
+// and radiosity, in any order, each repeatable.
+void Interpreter::parse_subsurface_settings(const Token& keyword) {
+    SubsurfaceSettings& s = scene_.settings.subsurface
+                                ? *scene_.settings.subsurface
+                                : scene_.settings.subsurface.emplace();
+    s.loc = sources_.location(keyword);
+    expect_punct('{', "after 'subsurface'");
+    for (;;) {
+        Token t = next();
+        if (is_punct(t, '}')) return;
+        if (is_word(t, "samples")) {
+            const Token first = peek();
+            const int diffuse = int(parse_float());
+            if (is_punct(peek(), ',')) next();
+            const Token second = peek();
+            const int single = int(parse_float());
+            if (diffuse < 0) error(first, "subsurface samples must not be negative");
+            if (single < 0) error(second, "subsurface samples must not be negative");
+            s.samples_diffuse = diffuse;
+            s.samples_single = single;
+        } else if (is_word(t, "radiosity")) {
+            s.radiosity = int(parse_float()) != 0;
+        } else {
+            expected("samples, radiosity or '}'", t);
         }
     }
 }

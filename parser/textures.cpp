@@ -1170,7 +1170,24 @@ void Interpreter::parse_finish_into(Finish& f) {
                  "refraction is not needed to turn refraction on; it scales what "
                  "passes the surface");
         } else if (w == "subsurface") {
-            unsupported(t, "subsurface");
+            f.subsurface = true;
+            if (!subsurface_finish_at_) subsurface_finish_at_ = t;
+            expect_punct('{', "after 'subsurface'");
+            for (;;) {
+                Token m = next();
+                if (is_punct(m, '}')) break;
+                if (is_word(m, "translucency")) {
+                    f.translucency = parse_colour_value().rgb;
+                } else if (is_word(m, "anisotropy")) {
+                    f.anisotropy = parse_colour_value().rgb;
+                } else {
+                    expected("translucency, anisotropy or '}'", m);
+                }
+            }
+            // The free path divides: 0 (the default) or less in a channel is a NaN
+            // there, which POV-Ray aborts on.
+            if (!(f.translucency.r > 0 && f.translucency.g > 0 && f.translucency.b > 0))
+                error(t, "subsurface needs a translucency above 0 in every channel");
         } else {
             expected("a finish item or '}'", t);
         }

@@ -36,6 +36,7 @@ inline uintptr_t interior_key(const Object& o) {
 }
 
 struct TextureBlend;
+class SubsurfaceTracer;
 class PhotonMap;
 
 struct Material {
@@ -169,6 +170,9 @@ struct RayContext {
     // The radiosity of the thread tracing with this context (trace/radiosity/gatherer.h);
     // null: none (no radiosity, or black boxes).
     RadiosityGatherer* radiosity = nullptr;
+    // Subsurface light transport of that thread (trace/subsurface.h); null: none (the
+    // scene has none, or black boxes).
+    SubsurfaceTracer* subsurface = nullptr;
     // The restart point of the ray being traced (RayFlags::restart).
     Real restart = 0;
 };

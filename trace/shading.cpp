@@ -10,11 +10,13 @@
 #include "core/hash_fold.h"
 #include "core/noise.h"
 #include "trace/light_masks.h"
+#include "trace/light_rays.h"
 #include "trace/media.h"
 #include "trace/photon_map.h"
 #include "trace/radiosity/gatherer.h"
 #include "trace/rainbow.h"
 #include "trace/shapes/shape.h"
+#include "trace/subsurface.h"
 #include "trace/uv_mapping.h"
 
 namespace povwall::trace {
@@ -35,13 +37,6 @@ Rgb metallic_tint(float metallic, Real cos_angle, const Rgb& pigment) {
     if (metallic == 0) return Rgb(1.0f);
     float f = metallic_fresnel(cos_angle);
     return Rgb(1.0f) + (pigment - Rgb(1.0f)) * (metallic * (1 - f));
-}
-
-float cubic_spline(Real low, Real high, Real pos) {
-    if (pos < low) return 0;
-    if (pos >= high) return 1;
-    Real x = (pos - low) / (high - low);
-    return float(x * x * (3 - 2 * x));
 }
 
 float ior_of(const Material* m) {
@@ -134,149 +129,6 @@ void drop_reflections_with_normal(std::vector<ChildRay>& children,
         if (same(it->second)) children.erase(children.begin() + ptrdiff_t(it->first));
 }
 
-struct LightSample {
-    Vector3 dir;  // unit, from the point toward the light
-    Real distance;
-    Rgb colour;  // after spot, cylinder and fade attenuation
-};
-
-// POV-Ray 3.7's light groups (Trace::ComputeDiffuseLight): the global lights unless the
-// object's light group turned them off, and the lights of the object's own group.
-bool lights_material(const Light& light, const Material& m) {
-    return light.light_group == 0 ? m.global_lights : light.light_group == m.light_group;
-}
-
-// cos of an angle in degrees, remembering the last one asked for: scenes light a point
-// with hundreds of copies of one spotlight, each asking for the same two angles.
-struct CosDegrees {
-    Real degrees = std::numeric_limits<Real>::quiet_NaN(), cosine = 0;
-    Real operator()(Real d) {
-        if (d != degrees) {
-            degrees = d;
-            cosine = std::cos(d * kPi / 180);
-        }
-        return cosine;
-    }
-};
-
-bool light_at(const Light& l, const Point3& p, LightSample& s) {
-    if (l.kind == Light::Kind::Parallel) {
-        // The depth to the light is the distance to its plane, negative behind it
-        // (POV-Ray's ComputeOneWhiteLightRay): nothing blocks a point there, and it is
-        // lit from the light's side like any other.
-        s.dir = normalize(l.location - l.point_at);
-        s.distance = dot(l.location - p, s.dir);
-    } else {
-        Vector3 v = l.location - p;
-        s.distance = length(v);
-        if (s.distance == 0) return false;
-        // Times the reciprocal, as POV-Ray's VInverseScaleEq: dividing is an ulp off at
-        // times, which decides shadows of chaotic shapes (julia_fractal dust).
-        s.dir = v * (1 / s.distance);
-    }
-    float att = 1;
-    if (l.parallel) {
-        // POV-Ray measures the spot's cone along the parallel direction itself: full
-        // strength in front of the light, none behind it.
-        s.dir = normalize(l.location - l.point_at);
-        s.distance = dot(l.location - p, s.dir);
-        if (s.distance <= 0) return false;
-    } else if (l.kind == Light::Kind::Spot || l.kind == Light::Kind::Cylinder) {
-        Vector3 axis = normalize(l.point_at - l.location);
-        thread_local CosDegrees radius_cosine, falloff_cosine;
-        const Real radius_cos = radius_cosine(l.radius);
-        const Real falloff_cos = falloff_cosine(l.falloff);
-        if (l.kind == Light::Kind::Spot) {
-            Real c = dot(-s.dir, axis);
-            if (c <= 0) return false;
-            att = float(l.tightness != 0 ? std::pow(c, l.tightness) : 1.0);
-            if (c < radius_cos) att *= cubic_spline(falloff_cos, radius_cos, c);
-        } else {
-            // Cylinder light: distance from the axis instead of an angle.
-            Vector3 rel = p - l.location;
-            Real along = dot(rel, axis);
-            if (along <= 0) return false;
-            Real dist = length(rel - axis * along);
-            if (dist > l.falloff) return false;
-            att = float(l.tightness != 0 ? std::pow(1 - dist / l.falloff, l.tightness)
-                                         : 1.0);
-            if (dist > l.radius) att *= 1 - cubic_spline(l.radius, l.falloff, dist);
-            s.dir = -axis;
-            s.distance = along;
-        }
-        if (att <= 0) return false;
-    }
-    if (l.fade_power > 0 && std::fabs(l.fade_distance) > kPovEpsilon && att > 0 &&
-        s.distance < kInfinity) {
-        // POV-Ray 3.7's Attenuate_Light: no fade without a fade_distance.
-        att *= float(2 / (1 + std::pow(s.distance / l.fade_distance, l.fade_power)));
-    }
-    s.colour = l.colour * att;
-    return !s.colour.is_black();
-}
-
-// Whether light `l` lights a point sample by sample: POV-Ray 3.7's area_illumination
-// (its "full area lighting"), only where the area grid is used at all (from +Q5, not
-// under a radiosity sample ray).
-bool full_area_lighting(const Light& l, Quality quality, const TraceRay& ray) {
-    return l.area && l.area->illumination && quality.area_lights() &&
-           ray.radiosity_depth == 0;
-}
-
-// The light ray from `p` toward `towards` (the light's location or a sample of its area
-// grid), as POV-Ray's ComputeOneWhiteLightRay: straight toward it, except that a cylinder
-// light's rays, and a parallel light's, run along the line from point_at to it, the
-// depth measured along them. Colour left unset; false at the point itself.
-bool light_ray_toward(const Light& l, const Point3& p, const Point3& towards,
-                      LightSample& s) {
-    if (l.kind == Light::Kind::Cylinder) {
-        s.dir = normalize(towards - l.point_at);
-        s.distance = dot(towards - p, s.dir);
-        return true;
-    }
-    const Vector3 v = towards - p;
-    s.distance = length(v);
-    if (s.distance == 0) return false;
-    s.dir = v * (1 / s.distance);
-    if (l.kind == Light::Kind::Parallel || l.parallel) {
-        const Vector3 along = normalize(towards - l.point_at);
-        s.distance *= dot(along, s.dir);
-        s.dir = along;
-    }
-    return true;
-}
-
-// POV-Ray's Attenuate_Light for the light ray `s` from `p`: a spotlight's cone read from
-// that ray's direction (so per area sample), a cylinder light's from `p`'s distance to
-// its axis, and the fade over the ray's depth.
-float light_attenuation(const Light& l, const Point3& p, const LightSample& s) {
-    float att = 1;
-    if (l.kind == Light::Kind::Spot) {
-        const Vector3 axis = normalize(l.point_at - l.location);
-        // The light comes from the side the depth says (behind a parallel light's
-        // plane, from the other).
-        const Real c = s.distance > 0 ? -dot(s.dir, axis) : dot(s.dir, axis);
-        if (c <= 0) return 0;
-        att = float(l.tightness != 0 ? std::pow(c, l.tightness) : 1.0);
-        thread_local CosDegrees radius_cosine, falloff_cosine;
-        const Real radius_cos = radius_cosine(l.radius);
-        if (c < radius_cos) att *= cubic_spline(falloff_cosine(l.falloff), radius_cos, c);
-    } else if (l.kind == Light::Kind::Cylinder) {
-        const Vector3 axis = normalize(l.point_at - l.location);
-        const Vector3 rel = p - l.location;
-        const Real along = dot(rel, axis);
-        if (along <= 0) return 0;
-        const Real dist = length(rel - axis * along);
-        if (dist > l.falloff) return 0;
-        att = float(l.tightness != 0 ? std::pow(1 - dist / l.falloff, l.tightness) : 1.0);
-        if (dist > l.radius) att *= 1 - cubic_spline(l.radius, l.falloff, dist);
-    }
-    if (l.fade_power > 0 && std::fabs(l.fade_distance) > kPovEpsilon && att > 0 &&
-        s.distance < kInfinity)
-        att *= float(2 / (1 + std::pow(s.distance / l.fade_distance, l.fade_power)));
-    return att;
-}
-
 Point3 area_sample_point(const AreaGrid& grid, int u, int v);
 
 // The samples of area light `l` lighting `p` one by one (full_area_lighting(), POV-Ray's
@@ -315,23 +167,6 @@ Colour eval_pigment(const Pigment& p, const Point3& at, const PatternEnv& env,
         return p.colour;
     }
     return evaluate_pigment(p, at, env, found);
-}
-
-// The shadow ray from `at` toward light `l` (sample `s`) for a ray `from` spawned it.
-ChildRay shadow_child(const TraceRay& from, const Point3& at, const LightSample& s,
-                      size_t l) {
-    ChildRay child;
-    child.kind = ChildRay::Kind::Shadow;
-    child.trace.ray = {at, s.dir};
-    child.trace.interiors = from.interiors;
-    child.trace.depth = from.depth;
-    child.trace.use = RayUse::Shadow;
-    child.t_max = s.distance;
-    child.light = int(l);
-    // A parallel light's depth is negative behind its plane: a test over it finds
-    // nothing.
-    child.unoccluded = !(s.distance > 0);
-    return child;
 }
 
 // Where the patterns of a material's top level are evaluated: the hit point, or its
@@ -741,11 +576,19 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
     // Radiosity (from +Q9): the ambient light is gathered (trace/radiosity/), and
     // `ambient` counts only in scenes before #version 3.7.
     const bool radiosity_on = sc.settings.radiosity && quality.level >= 9;
-    RadiosityGatherer* const gatherer = radiosity_on && shadows.trace &&
-                                                shadows.trace->radiosity &&
-                                                shadows.trace->radiosity->active_for(ray)
-                                            ? shadows.trace->radiosity
-                                            : nullptr;
+    RadiosityGatherer* gatherer = radiosity_on && shadows.trace &&
+                                          shadows.trace->radiosity &&
+                                          shadows.trace->radiosity->active_for(ray)
+                                      ? shadows.trace->radiosity
+                                      : nullptr;
+    // Subsurface light transport (from +Q9) replaces the diffuse term of the finishes
+    // that have it. Radiosity sample rays evaluate it with `radiosity { subsurface on }`,
+    // else see such a finish without its diffuse (POV-Ray's quality flags there lack
+    // subsurface).
+    const bool subsurface_on = sc.settings.subsurface && quality.level >= 9;
+    const bool subsurface_here =
+        subsurface_on && shadows.trace && shadows.trace->subsurface &&
+        (ray.radiosity_depth == 0 || sc.settings.radiosity->subsurface);
     bool radiosity_done = false, radiosity_back_done = false;
     Rgb radiosity_front, radiosity_back;
     // A plain material (see Material::plain) is one layer read from the material itself.
@@ -807,6 +650,17 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
         const Finish& f = tex ? *tex->finish : m.plain_finish;
         if (li == nlayers - 1) top_finish = &f;
         Rgb tmp;
+        const bool subsurface = subsurface_on && f.subsurface;
+        if (subsurface && subsurface_here) {
+            // Not scaled by the layer's opacity (POV-Ray 3.7), and the pigment acts
+            // only through the albedo; the layers above filter it as any light here.
+            tmp += shadows.trace->subsurface->light(
+                {ray, hit, m, N, fresnel_relative_ior(ray.interiors, m),
+                 lay.rgb * f.raw_diffuse, f.translucency});
+        }
+        // With `subsurface { radiosity on }` the subsurface light holds the radiosity
+        // (gathered at its samples): none is added for this layer and those below.
+        if (subsurface && sc.settings.subsurface->radiosity) gatherer = nullptr;
         if (gatherer) {
             // POV-Ray gathers once per hit, with the first layer whose diffuse can
             // add enough to the ray.
@@ -858,7 +712,9 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
                     return false;
             }
             c = Rgb{};
-            const float diffuse = backside ? f.diffuse_back : f.diffuse;
+            const float diffuse = subsurface ? 0.0f
+                                  : backside ? f.diffuse_back
+                                             : f.diffuse;
             if (diffuse > 0) {
                 Real base = std::fabs(cos_nl);
                 Real k = (f.brilliance != 1 ? std::pow(base, Real(f.brilliance)) : base) *

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "trace/radiosity/pretrace.h"
+#include "trace/subsurface.h"
 
 namespace povwall::trace {
 Tracer::Tracer(const PreparedScene& scene)
@@ -11,6 +12,10 @@ Tracer::Tracer(const PreparedScene& scene)
     if (const auto& r = scene.scene().settings.radiosity)
         default_importance_ = r->default_importance;
     attach_radiosity();
+    if (scene.scene().settings.subsurface) {
+        subsurface_ = std::make_unique<SubsurfaceTracer>(*this, ctx_);
+        ctx_.subsurface = subsurface_.get();
+    }
 }
 
 void Tracer::attach_radiosity() {
@@ -82,6 +87,13 @@ Rgb Tracer::trace_radiosity_sample(const TraceRay& ray, float queried, Real& dep
     const TraceResult r = shade_at(ray, found, hit, probe, level_in_use_ + 1);
     level_in_use_ = saved;
     return r.colour;
+}
+
+TraceResult Tracer::trace_nested(const TraceRay& ray) {
+    const size_t saved = level_in_use_;
+    const TraceResult r = trace_at(ray, level_in_use_ + 1);
+    level_in_use_ = saved;
+    return r;
 }
 
 TraceResult Tracer::shade_at(const TraceRay& ray, bool found, const Hit& hit, Real probe,

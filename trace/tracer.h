@@ -109,6 +109,9 @@ class Tracer {
     // shaded (black).
     Rgb trace_radiosity_sample(const TraceRay& ray, float queried, Real& depth,
                                float& importance);
+    // A ray traced from inside the shading of the ray being traced (subsurface's light
+    // seen through an object): the same entry test and shading as any ray.
+    TraceResult trace_nested(const TraceRay& ray);
 
   private:
     // The nearest hit, with the tie probe of the ray's level (`probe`, 0: none).
@@ -141,6 +144,8 @@ class Tracer {
     float default_importance_ = 1;
     // The final render's gatherer, when the scene's radiosity pretrace is done.
     std::unique_ptr<RadiosityGatherer> radiosity_;
+    // Subsurface light transport, when the scene has it (trace/subsurface.h).
+    std::unique_ptr<SubsurfaceTracer> subsurface_;
 };
 
 }  // namespace povwall::trace

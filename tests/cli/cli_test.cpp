@@ -720,7 +720,7 @@ disc { 0, <0, 0.2, -1>, 1 pigment { color rgb <1, 0.6, 0.3> } }
             "  1 bounded primitives (< 24): no octree, a flat list\n"
             "  shading is linear: contributions go straight to the pixel, no parent "
             "table\n"
-            "  scene 0.8 KB fits the 1.0 GB worker budget: one process, no walls; 2 "
+            "  scene 0.9 KB fits the 1.0 GB worker budget: one process, no walls; 2 "
             "threads take render blocks as they finish (screen subdivision, one shared "
             "scene)\n");
     // "--stats -": the same JSON on standard output.

@@ -818,6 +818,28 @@ TEST(Tcp, RadiosityInEveryModeEqualOneProcess) {
     }
 }
 
+// Subsurface samples start where a hash of the shaded point says (not where a thread's
+// stream happens to be): every thread count and process gives the one-process image.
+TEST(Tcp, SubsurfaceInEveryModeEqualOneProcess) {
+    for (const char* name :
+         {"subsurface_sphere", "subsurface_csg", "subsurface_radiosity"}) {
+        SCOPED_TRACE(name);
+        const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
+        const char* aa =
+            std::string(name) == "subsurface_sphere" ? "+A0.1 +AM2 -J +WT1" : "-A +WT1";
+        expect_same_images(scene, std::string("-W 40 -H 30 ") + aa,
+                           {"+WT2", "--mode screen --procs 2"}, true);
+        const RunResult r = run("render " + scene + " -W 40 -H 30 -q -o " +
+                                (scratch() / "boxes.png").string() + " --boxes 2x2x2");
+        EXPECT_NE(r.code, 0);
+        EXPECT_TRUE(std::regex_search(
+            r.err, std::regex(std::string(name) +
+                              R"(\.pov:[0-9]+:[0-9]+: error: unsupported: )"
+                              "(subsurface|radiosity) with space subdivision")))
+            << r.err;
+    }
+}
+
 TEST(Tcp, AlphaOutputOverProcessesEqualsOneProcess) {
     fs::path scene = scratch() / "glass_alpha.pov";
     std::ofstream(scene) << kGlassCsgScene;

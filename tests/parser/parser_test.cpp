@@ -1044,4 +1044,52 @@ TEST(Errors, ClipListTakesTransformsAfterItsObjects) {
 }
 
 }  // namespace
+TEST(Parser, SubsurfaceSettingsAndFinish) {
+    const Scene s = parse(
+        "global_settings { mm_per_unit 2.5 subsurface { samples 12 7 } }\n"
+        "#declare F = finish { subsurface { anisotropy 0.5 translucency <3, 1.5, 0.8> } "
+        "}\n"
+        "sphere { 0, 1 finish { F diffuse 0.7 } }\n"
+        "sphere { 0, 1 finish { subsurface { translucency 2 translucency 0.5 } } }");
+    EXPECT_EQ(s.settings.mm_per_unit, 2.5);
+    ASSERT_TRUE(s.settings.subsurface.has_value());
+    EXPECT_EQ(s.settings.subsurface->samples_diffuse, 12);
+    EXPECT_EQ(s.settings.subsurface->samples_single, 7);
+    const Finish& a = *s.objects.at(0).texture.at(0).finish;
+    EXPECT_TRUE(a.subsurface);
+    EXPECT_EQ(a.translucency, (Rgb{3, 1.5f, 0.8f}));
+    EXPECT_EQ(a.anisotropy, Rgb(0.5f));
+    EXPECT_EQ(a.raw_diffuse, 0.7f);
+    // The last translucency wins; a float is grey.
+    EXPECT_EQ(s.objects.at(1).texture.at(0).finish->translucency, Rgb(0.5f));
+    // Defaults: 10 mm a unit, 50 and 50 samples (the block alone turns it on).
+    const Scene d = parse("global_settings { subsurface { } }");
+    EXPECT_EQ(d.settings.mm_per_unit, 10.0);
+    EXPECT_EQ(d.settings.subsurface->samples_diffuse, 50);
+    EXPECT_EQ(d.settings.subsurface->samples_single, 50);
+    EXPECT_FALSE(d.settings.subsurface->radiosity);
+    EXPECT_FALSE(parse("sphere { 0, 1 }").settings.subsurface.has_value());
+    const Scene r = parse(
+        "global_settings { subsurface { radiosity on samples 3, 4 } radiosity { "
+        "subsurface "
+        "on } }");
+    EXPECT_TRUE(r.settings.subsurface->radiosity);
+    EXPECT_EQ(r.settings.subsurface->samples_single, 4);
+    EXPECT_TRUE(r.settings.radiosity->subsurface);
+}
+
+TEST(Errors, SubsurfaceValuesThatDivideByZero) {
+    EXPECT_EQ(error_of("sphere { 0, 1 finish { subsurface { } } }"),
+              "test.pov:1:24: error: subsurface needs a translucency above 0 in every "
+              "channel");
+    EXPECT_EQ(
+        error_of("sphere { 0, 1 finish { subsurface { translucency <1, 0, 1> } } }"),
+        "test.pov:1:24: error: subsurface needs a translucency above 0 in every "
+        "channel");
+    EXPECT_EQ(error_of("global_settings { mm_per_unit 0 }"),
+              "test.pov:1:31: error: mm_per_unit must be positive");
+    EXPECT_EQ(error_of("global_settings { subsurface { samples -1, 3 } }"),
+              "test.pov:1:40: error: subsurface samples must not be negative");
+}
+
 }  // namespace povwall::parser

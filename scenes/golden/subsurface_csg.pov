@@ -1,5 +1,7 @@
-// SSS test 2: CSG (difference + union) sharing one interior, with a child that has its own interior,
-// float translucency, and a layered texture on a second object
+// golden-args: --block-mean 8
+// Subsurface in CSG: a difference of a union whose children share the CSG's interior (one
+// subsurface object) and a child with its own interior (another one); float translucency; a
+// layered texture with a subsurface base under a see-through stripe layer.
 #version 3.7;
 global_settings {
   assumed_gamma 1.0

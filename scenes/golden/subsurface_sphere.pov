@@ -1,4 +1,7 @@
-// SSS test 1: single sphere with colour translucency on a plain (non-SSS) floor
+// golden-args: --block-mean 8
+// Subsurface light transport on a sphere: colour translucency, ior 1.3, mm_per_unit 5 (the
+// diffuse, single-scattering and see-through terms all show), a back light that shows through.
+// POV-Ray draws its samples from per-thread streams: compared as 8x8 block means.
 #version 3.7;
 global_settings {
   assumed_gamma 1.0

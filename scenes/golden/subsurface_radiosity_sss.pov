@@ -1,10 +1,11 @@
-// SSS test 4: radiosity interaction. RADSSS selects global subsurface { radiosity on/off }: povray ... Declare=RADSSS=0 (or 1)
+// golden-args: --block-mean 8
+// Subsurface with `subsurface { radiosity on }`: the radiosity at each diffuse sample point enters
+// through the dipole, and no ordinary radiosity ambient is added to the subsurface finish.
 #version 3.7;
-#ifndef (RADSSS) #declare RADSSS = 1; #end
 global_settings {
   assumed_gamma 1.0
   mm_per_unit 10
-  subsurface { samples 20, 4 radiosity RADSSS }
+  subsurface { samples 20, 4 radiosity on }
   radiosity { pretrace_start 0.08 pretrace_end 0.04 count 35 recursion_limit 1 nearest_count 5 error_bound 1.5 }
 }
 camera { location <0, 1.2, -1.9> look_at <0, 0.6, 0> angle 60 }

@@ -1,5 +1,6 @@
-// SSS test 3: plane with a checker texture of two SSS textures (as in the corpus subsurface.pov),
-// infinite SSS plane, fresnel reflection + conserve_energy, ambient_light, sky_sphere, and an SSS blob
+// golden-args: --block-mean 8
+// Subsurface as in the corpus scene: a checker of two subsurface textures on an infinite plane
+// with fresnel reflection and conserve_energy, ambient_light, a sky_sphere, and a subsurface blob.
 #version 3.7;
 global_settings {
   assumed_gamma 1.0
