@@ -85,7 +85,6 @@ Interpreter::ImageFileRef Interpreter::parse_image_file_ref(bool height_field) {
     const std::string_view kind = ref.type->keyword;
     if (kind == (height_field ? "iff" : "pot"))
         error(ref.type_token, "File type not supported here.");
-    if (kind == "iff") unsupported(ref.type_token, "image file type iff");
     for (const std::string& candidate : image_file_candidates(name, *ref.type)) {
         ref.path = resolve_include(candidate, frames_.back().file, false);
         if (!ref.path.empty()) break;
@@ -95,6 +94,11 @@ Interpreter::ImageFileRef Interpreter::parse_image_file_ref(bool height_field) {
     // Unix builds of POV-Ray 3.7 define no system image format.
     if (kind == "sys")
         error(ref.type_token, "This platform has not defined a SYS file type");
+    // POV-Ray 3.7's IFF reader reads chunks until the file ends, and fails there: no IFF
+    // file loads (iff.cpp's Read; an ILBM of 8 colours fails as any other file).
+    if (kind == "iff")
+        error(ref.name_token,
+              "Unexpected EOF while reading IFF file (POV-Ray 3.7 reads no IFF image)");
     return ref;
 }
 

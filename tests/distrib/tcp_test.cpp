@@ -821,8 +821,8 @@ TEST(Tcp, RadiosityInEveryModeEqualOneProcess) {
 // Subsurface samples start where a hash of the shaded point says (not where a thread's
 // stream happens to be): every thread count and process gives the one-process image.
 TEST(Tcp, SubsurfaceInEveryModeEqualOneProcess) {
-    for (const char* name :
-         {"subsurface_sphere", "subsurface_csg", "subsurface_radiosity"}) {
+    for (const char* name : {"subsurface_sphere", "subsurface_csg", "subsurface_shapes",
+                             "subsurface_radiosity_sss", "subsurface_radiosity_gather"}) {
         SCOPED_TRACE(name);
         const std::string scene = std::string(POVWALL_GOLDEN_DIR) + "/" + name + ".pov";
         const char* aa =
