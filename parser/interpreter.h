@@ -180,6 +180,9 @@ class Interpreter {
     bool try_transform(const Token& t, Transform& out, TransformStep* step = nullptr);
     Transform parse_transform_block();
     void apply_transform(Object& obj, const Transform& t, const TransformStep& step = {});
+    // apply_transform's work on one node and its children (the julia_fractal rule is
+    // settled once for the whole object).
+    void transform_node(Object& obj, const Transform& t, const TransformStep& step);
     void transform_light(Light& l, const Transform& t, const TransformStep& step = {});
     // Moves light sources written inside CSG objects into the scene.
     void collect_lights(Object& obj);

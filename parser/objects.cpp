@@ -286,10 +286,40 @@ void recheck_smooth_triangle(SmoothTriangle& tri, const Transform& after) {
     if (!normals_on_one_side(p, n)) tri.n.edit()[0] = Vector3{0, 0, 0};
 }
 
+// POV-Ray recomputes a julia_fractal's box at each transform (Fractal::Compute_BBox),
+// which clears the inverted flag its Invert set, however it was inverted: its own
+// `inverse` (object { Julia inverse }), an inverse CSG around it (CSG::Invert inverts
+// every child) or a difference it is a later part of. From then on it is held as it is:
+// its flag undoes what the CSGs between the transformed object and it apply (`held`).
+void settle_julia_inversion(Object& o, bool held) {
+    if (std::holds_alternative<JuliaFractal>(o.shape)) {
+        o.inverse = held;
+        return;
+    }
+    Csg* csg = std::get_if<Csg>(&o.shape);
+    if (!csg) return;
+    const bool inverted = held != o.inverse;
+    for (size_t i = 0; i < csg->children.size(); ++i) {
+        Object& c = csg->children[i];
+        // A difference inverts its later CSGs and julia_fractals (and other leaves,
+        // which hold no julia).
+        const bool later = csg->kind == CsgKind::Difference && i > 0 &&
+                           (std::holds_alternative<Csg>(c.shape) ||
+                            std::holds_alternative<JuliaFractal>(c.shape));
+        settle_julia_inversion(c, inverted != later);
+    }
+}
+
 }  // namespace
 
 void Interpreter::apply_transform(Object& obj, const Transform& t,
                                   const TransformStep& step) {
+    transform_node(obj, t, step);
+    settle_julia_inversion(obj, false);
+}
+
+void Interpreter::transform_node(Object& obj, const Transform& t,
+                                 const TransformStep& step) {
     if (auto tri = std::get_if<Triangle>(&obj.shape))
         order_triangle_as_pov(*tri, obj.transform, obj.transform.then(t));
     if (auto tri = std::get_if<SmoothTriangle>(&obj.shape))
@@ -354,9 +384,6 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
     } else {
         obj.transform = obj.transform.then(t);
     }
-    // POV-Ray recomputes a julia_fractal's box at each transform, which clears its
-    // inverse flag.
-    if (std::holds_alternative<JuliaFractal>(obj.shape)) obj.inverse = false;
     // Under uv_mapping the textures are fixed to the surface coordinates.
     if (!obj.uv_mapping) {
         transform_textures(obj.texture, t);
@@ -365,16 +392,7 @@ void Interpreter::apply_transform(Object& obj, const Transform& t,
     }
     transform_interior(obj.interior, t);
     if (auto csg = std::get_if<Csg>(&obj.shape)) {
-        for (Object& child : csg->children) apply_transform(child, t, step);
-        // A julia_fractal's set-up at each transform clears the inverted flag a
-        // difference gave it (Fractal::Compute_BBox): from then on it is intersected, as
-        // if its own `inverse` undid the difference's.
-        if (csg->kind == CsgKind::Difference) {
-            for (size_t i = 1; i < csg->children.size(); ++i) {
-                if (std::holds_alternative<JuliaFractal>(csg->children[i].shape))
-                    csg->children[i].inverse = true;
-            }
-        }
+        for (Object& child : csg->children) transform_node(child, t, step);
         for (Light& l : csg->lights) transform_light(l, t, step);
         if (csg->pov_box) move_pov_box(*csg->pov_box, t);
     }
@@ -1138,8 +1156,10 @@ bool Interpreter::try_parse_object(const Token& t, Object& out) {
     }
     check_algebraic_bounds(out, t);
     if (pending_height_field) finish_height_field(out, std::move(*pending_height_field));
-    // Its set-up after the modifiers clears the inverse flag (as a transform does).
-    if (std::holds_alternative<JuliaFractal>(out.shape)) out.inverse = false;
+    // A julia_fractal's set-up after its modifiers clears the inverse flag (as a
+    // transform does); `object { Julia inverse }` has no set-up and keeps it.
+    if (w == "julia_fractal" && std::holds_alternative<JuliaFractal>(out.shape))
+        out.inverse = false;
     return true;
 }
 
