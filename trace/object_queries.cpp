@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <deque>
+#include <limits>
 #include <mutex>
 
 #include "trace/pov_bounds.h"
 #include "trace/prepared_scene.h"
+#include "trace/render_plan.h"
 
 namespace povwall::trace {
 
@@ -44,21 +46,36 @@ class ShapeQueries final : public ObjectQueries {
         Scene scene;
         std::unique_ptr<PreparedScene> prepared;
         RayContext context;
+        bool flat = true;  // a flat list of its primitives, no octree yet
     };
     static constexpr size_t kKept = 4;
+
+    // An object is first prepared as a flat list: scenes that grow an object in a loop
+    // trace each version once (a union nested N deep, traced at every step), where an
+    // octree built per call cost O(N log N) a step against POV-Ray's walk of its boxes.
+    // Traced again, it gets its octree.
+    void prepare(Prepared& p, bool flat) {
+        RenderPlan plan = make_render_plan(p.scene);
+        if (flat) plan.flat_threshold = std::numeric_limits<int>::max();
+        p.prepared = std::make_unique<PreparedScene>(p.scene, &plan);
+        p.context = RayContext{};
+        p.prepared->init_context(p.context);
+        p.flat = flat;
+    }
 
     Prepared& prepared(const std::shared_ptr<Object>& object) {
         auto found = std::find_if(cache_.begin(), cache_.end(),
                                   [&](const auto& p) { return p->object == object; });
         if (found != cache_.end()) {
             std::rotate(cache_.begin(), found, found + 1);  // most recent first
-            return *cache_.front();
+            Prepared& p = *cache_.front();
+            if (p.flat) prepare(p, false);
+            return p;
         }
         auto p = std::make_unique<Prepared>();
         p->object = object;
         p->scene.objects.push_back(*object);
-        p->prepared = std::make_unique<PreparedScene>(p->scene);
-        p->prepared->init_context(p->context);
+        prepare(*p, true);
         cache_.push_front(std::move(p));
         if (cache_.size() > kKept) cache_.pop_back();
         return *cache_.front();

@@ -990,22 +990,26 @@ const Material* PreparedScene::material_for(const Object* leaf) const {
     return nullptr;
 }
 
-void PreparedScene::add_object(const Object& o, uint32_t frame) {
+uint32_t PreparedScene::add_object(const Object& o, uint32_t frame) {
     const Csg* csg = std::get_if<Csg>(&o.shape);
     if (pov_splits_union(o)) {
         // A plain union is its children: each goes into the octree on its own and, as
-        // POV-Ray links them, takes its own place in the object list.
+        // POV-Ray links them, takes its own place in the object list. (Counted as they
+        // are added: a union nested N deep, as scenes grow one in a loop, costs O(N).)
+        uint32_t added = 0;
         for (const Object& c : csg->children) {
-            add_object(c, frame);
-            if (frame < kSameFrame) frame += uint32_t(pov_frame_object_count(c));
+            const uint32_t n = add_object(c, frame);
+            added += n;
+            if (frame < kSameFrame) frame += n;
         }
-        return;
+        return added;
     }
     const size_t first = materials_.size();
     add_frame_object(o, frame);
     const FrameFlags flags = frame_flags(o);
     for (size_t i = first; i < materials_.size(); ++i) materials_[i].frame = flags;
     note_hits_beyond_box(o, first);
+    return 1;
 }
 
 namespace {

@@ -265,7 +265,8 @@ class PreparedScene {
     // `frame`: the object's index in POV-Ray's object list (plain unions are opened
     // first), ~0u when unknown, kSameFrame for a part of a frame object being added.
     static constexpr uint32_t kSameFrame = ~0u - 1;
-    void add_object(const Object& obj, uint32_t frame);
+    // Returns how many frame objects it added (pov_frame_object_count(obj)).
+    uint32_t add_object(const Object& obj, uint32_t frame);
     // A frame object (one POV-Ray links to the scene whole): its primitives and
     // materials, which take its flags.
     void add_frame_object(const Object& obj, uint32_t frame);
