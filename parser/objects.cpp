@@ -310,6 +310,24 @@ void settle_julia_inversion(Object& o, bool held) {
     }
 }
 
+// POV-Ray inverts a CSG by inverting its children and morphing it: a union or a merge
+// into an intersection, an intersection into a merge. A union inverted twice (an inverse
+// union subtracted, a union in a difference that is itself subtracted) is therefore a
+// merge, which povwall's parity of inversions alone would take back to a union. Called
+// once the object is placed, with the inversions the CSGs above it apply (`count`).
+void settle_inverted_unions(Object& o, int count) {
+    Csg* csg = std::get_if<Csg>(&o.shape);
+    if (!csg) return;
+    count += o.inverse ? 1 : 0;
+    if (csg->kind == CsgKind::Union && count >= 2 && count % 2 == 0)
+        csg->kind = CsgKind::Merge;
+    for (size_t i = 0; i < csg->children.size(); ++i) {
+        // A difference inverts its later parts (a CSG always).
+        const bool later = csg->kind == CsgKind::Difference && i > 0;
+        settle_inverted_unions(csg->children[i], count + (later ? 1 : 0));
+    }
+}
+
 }  // namespace
 
 void Interpreter::apply_transform(Object& obj, const Transform& t,
@@ -1176,6 +1194,7 @@ void Interpreter::collect_lights(Object& obj) {
 }
 
 void Interpreter::finish_object(Object& obj) {
+    settle_inverted_unions(obj, 0);
     std::unordered_map<uint32_t, Interior> shared;
     place_object(obj, nullptr, shared);
     // Every sharer of an interior gets its final state (a later sharer may have changed
