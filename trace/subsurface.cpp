@@ -211,34 +211,31 @@ Rgb SubsurfaceTracer::light(const SubsurfacePoint& at) {
     const double mean_extinction = grey(med.absorption) + grey(med.scattering);
     const double free_path = 1 / (mean_extinction * mm);  // scene units
 
-    // The light of every light reaching `x` on this object (normal `n`, either side),
-    // after its shadow test: `visit(colour, direction, cos_in)`.
+    // Light `l` reaching `x` on this object (normal `n`, either side) after its shadow
+    // test: its colour and the cosine at `x`; false when it adds nothing there.
     TraceRay from;
     from.depth = at.ray.depth;
-    auto for_each_light = [&](const Point3& x, const Vector3& n, auto&& visit) {
-        for (size_t l = 0; l < sc.lights.size(); ++l) {
-            const Light& light = sc.lights[l];
-            if (!lights_material(light, own)) continue;
-            LightSample s;
-            if (!light_at(light, x, s)) continue;
-            Channels colour = channels(s.colour);
-            if (all_below(colour, kEpsilon)) continue;
-            Real cos_in = dot(n, s.dir);
-            if (cos_in < 0) cos_in = -cos_in;
-            if (cos_in < kEpsilon) continue;
-            ChildRay shadow = shadow_child(from, x, s, l);
-            shadow.unoccluded = shadow.unoccluded || light.shadowless ||
-                                !quality.shadows() ||
-                                (l < plan.lights.size() && plan.lights[l].unoccluded);
-            shadow.area = light.area.has_value() && quality.area_lights();
-            shadow.light_colour = s.colour;
-            if (!shadow.unoccluded) {
-                const Channels f = channels(shadow_transmittance(scene, shadow, ctx_));
-                if (all_below(f, kEpsilon)) continue;
-                for (size_t c = 0; c < 3; ++c) colour[c] *= f[c];
-            }
-            visit(colour, s.dir, double(cos_in));
+    auto light_reaching = [&](size_t l, const Point3& x, const Vector3& n,
+                              Channels& colour, double& cos_in) {
+        const Light& light = sc.lights[l];
+        if (!lights_material(light, own)) return false;
+        LightSample s;
+        if (!light_at(light, x, s)) return false;
+        colour = channels(s.colour);
+        if (all_below(colour, kEpsilon)) return false;
+        cos_in = std::fabs(dot(n, s.dir));
+        if (cos_in < kEpsilon) return false;
+        ChildRay shadow = shadow_child(from, x, s, l);
+        shadow.unoccluded = shadow.unoccluded || light.shadowless || !quality.shadows() ||
+                            (l < plan.lights.size() && plan.lights[l].unoccluded);
+        shadow.area = light.area.has_value() && quality.area_lights();
+        shadow.light_colour = s.colour;
+        if (!shadow.unoccluded) {
+            const Channels f = channels(shadow_transmittance(scene, shadow, ctx_));
+            if (all_below(f, kEpsilon)) return false;
+            for (size_t c = 0; c < 3; ++c) colour[c] *= f[c];
         }
+        return true;
     };
     auto nearest = [&](const Point3& o, const Vector3& dir, Real t_max, Hit& h) {
         return scene.closest_hit(Ray{o, dir}, 0, t_max, RayUse::Query, h, ctx_);
@@ -292,14 +289,15 @@ Rgb SubsurfaceTracer::light(const SubsurfacePoint& at) {
             for (int c = 0; c < 3; ++c)
                 sum[size_t(c)] += e[size_t(c)] * f * dipole(med, c, r2) * area;
         }
-        for_each_light(
-            h.point, ni, [&](const Channels& colour, const Vector3&, double cos_in) {
-                const double f =
-                    fresnel_transmittance(std::min(cos_in, 1.0), eta) * ft_out;
-                for (int c = 0; c < 3; ++c)
-                    sum[size_t(c)] +=
-                        colour[size_t(c)] * cos_in * f * dipole(med, c, r2) * area;
-            });
+        for (size_t l = 0; l < sc.lights.size(); ++l) {
+            Channels colour;
+            double cos_in;
+            if (!light_reaching(l, h.point, ni, colour, cos_in)) continue;
+            const double f = fresnel_transmittance(std::min(cos_in, 1.0), eta) * ft_out;
+            for (int c = 0; c < 3; ++c)
+                sum[size_t(c)] +=
+                    colour[size_t(c)] * cos_in * f * dipole(med, c, r2) * area;
+        }
     }
     if (counted > 0)
         for (double& s : sum) s /= counted;
@@ -338,26 +336,9 @@ Rgb SubsurfaceTracer::light(const SubsurfacePoint& at) {
                     if (!nearest(q, toward.dir, kInfinity, h) || !same_object(h))
                         continue;
                     // The light entering at that point (this light only).
-                    LightSample s;
-                    if (!light_at(light, h.point, s)) continue;
-                    Channels colour = channels(s.colour);
-                    if (all_below(colour, kEpsilon)) continue;
-                    Real cos_in = dot(h.normal, s.dir);
-                    if (cos_in < 0) cos_in = -cos_in;
-                    if (cos_in < kEpsilon) continue;
-                    ChildRay shadow = shadow_child(from, h.point, s, l);
-                    shadow.unoccluded =
-                        shadow.unoccluded || light.shadowless || !quality.shadows() ||
-                        (l < plan.lights.size() && plan.lights[l].unoccluded);
-                    shadow.area = light.area.has_value() && quality.area_lights();
-                    shadow.light_colour = s.colour;
-                    double pass = 1;
-                    if (!shadow.unoccluded) {
-                        const Channels f =
-                            channels(shadow_transmittance(scene, shadow, ctx_));
-                        if (all_below(f, kEpsilon)) continue;
-                        pass = f[size_t(c)];
-                    }
+                    Channels colour;
+                    double cos_in;
+                    if (!light_reaching(l, h.point, h.normal, colour, cos_in)) continue;
                     const double sin2 = (1 - cos_in * cos_in) / (eta * eta);
                     const double cos2 = 1 - sin2;
                     if (cos2 < 0) continue;
@@ -372,7 +353,7 @@ Rgb SubsurfaceTracer::light(const SubsurfacePoint& at) {
                         std::min(ss * f * 0.25 / combined * std::exp(-si_refr * st) *
                                      std::exp(-so * st),
                                  DBL_MAX);
-                    lo += colour[size_t(c)] * pass * cos_in * factor;
+                    lo += colour[size_t(c)] * cos_in * factor;
                 }
                 sum[size_t(c)] += lo / single_samples;
             }
