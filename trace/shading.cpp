@@ -655,7 +655,7 @@ void spawn_hit(const PreparedScene& scene, const TraceRay& ray, const Hit& hit,
             // Not scaled by the layer's opacity (POV-Ray 3.7), and the pigment acts
             // only through the albedo; the layers above filter it as any light here.
             tmp += shadows.trace->subsurface->light(
-                {ray, hit, m, N, fresnel_relative_ior(ray.interiors, m),
+                {ray, hit, m, N, fresnel_relative_ior(ray.interiors, m), ior_of(&m),
                  lay.rgb * f.raw_diffuse, f.translucency});
         }
         // With `subsurface { radiosity on }` the subsurface light holds the radiosity

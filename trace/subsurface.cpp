@@ -190,8 +190,7 @@ Rgb SubsurfaceTracer::light(const SubsurfacePoint& at) {
 
     // Step 0: the medium, from the reflectance (through the albedo table of the
     // interior's own index) and the free path.
-    const float ior = own.interior ? own.interior->ior : 1.0f;
-    const AlbedoTable& table = table_for(double(ior));
+    const AlbedoTable& table = table_for(double(at.ior));
     Medium med;
     const Channels reflectance = channels(at.reflectance);
     const Channels translucency = channels(at.translucency);

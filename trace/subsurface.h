@@ -64,6 +64,7 @@ struct SubsurfacePoint {
     const Material& material;
     Vector3 normal;    // the raw normal turned to face the ray
     Real eta;          // relative index of refraction at the hit (as for refraction)
+    float ior;         // the object's own index (its albedo table)
     Rgb reflectance;   // the layer's pigment times its raw diffuse
     Rgb translucency;  // the finish's, mm
 };
