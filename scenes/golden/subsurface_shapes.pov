@@ -1,7 +1,8 @@
 // golden-args: --block-mean 8
 // Subsurface on shapes and CSG kinds together: a merge, an intersection, a difference, a torus,
-// a mesh (a surface without inside: its samples see only its own triangles), a superellipsoid
-// and a see-through (filter) subsurface sphere, under a 3x3 area light and a parallel light.
+// a mesh (a surface without inside: its samples see only its own triangles), a superellipsoid,
+// a see-through (filter) subsurface sphere and a clipped one (its open cut shows the inside),
+// under a 3x3 area light and a parallel light.
 #version 3.7;
 global_settings { assumed_gamma 1.0 mm_per_unit 8 subsurface { samples 24, 6 } }
 camera { location <0, 2.6, -5.2> look_at <0, 0.5, 0> angle 50 }
@@ -30,3 +31,4 @@ mesh {
 }
 superellipsoid { <0.4, 0.4> scale 0.35 translate <-1.2, 0.35, -1.2> pigment { rgb <0.95, 0.9, 0.8> } finish { Wax } }
 sphere { <0.9, 0.35, -1.3>, 0.35 pigment { rgbf <0.6, 0.9, 0.7, 0.5> } finish { Wax } interior { ior 1.2 } }
+sphere { <2.0, 0.4, -1.3>, 0.4 clipped_by { plane { <-1, 1, -1>, 0.1 translate <2.0, 0.4, -1.3> } } pigment { rgb <0.9, 0.85, 0.5> } finish { Wax } interior { ior 1.3 } }
