@@ -254,15 +254,10 @@ void cut_by_box(const float box_lo[3], const float box_len[3], Vector3& lo, Vect
     }
 }
 
-}  // namespace
-
-bool quadric_clip_bounds(Quadric& q, const std::vector<Object>& clips) {
-    return quadric_clip_bounds(q, clips, PovBoxOf{});
-}
-
-bool quadric_clip_bounds(Quadric& q, const std::vector<Object>& clips,
-                         const PovBoxOf& box_of) {
-    Vector3 lo(-2e10), hi(2e10);
+// Compute_BBox's step 1: the quadric's own non-inverted clips cut [lo, hi] (a plane by
+// its half-space, any other object by its box). False when a clip's box is unknown.
+bool cut_by_clips(const std::vector<Object>& clips, const PovBoxOf& box_of, Vector3& lo,
+                  Vector3& hi) {
     for (const Object& c : clips) {
         if (c.inverse) continue;
         if (const Plane* plane = std::get_if<Plane>(&c.shape)) {
@@ -291,6 +286,19 @@ bool quadric_clip_bounds(Quadric& q, const std::vector<Object>& clips,
             return false;
         }
     }
+    return true;
+}
+
+}  // namespace
+
+bool quadric_clip_bounds(Quadric& q, const std::vector<Object>& clips) {
+    return quadric_clip_bounds(q, clips, PovBoxOf{});
+}
+
+bool quadric_clip_bounds(Quadric& q, const std::vector<Object>& clips,
+                         const PovBoxOf& box_of) {
+    Vector3 lo(-2e10), hi(2e10);
+    if (!cut_by_clips(clips, box_of, lo, hi)) return false;
     // Compute_BBox's step 1 (the clips cut the BOUND_HUGE range), then the rest.
     quadric_compute_bbox(q, lo, hi);
     return true;
@@ -306,11 +314,7 @@ bool quadric_csg_bounds_impl(std::vector<Object>& children,
     Vector3 lo(-2e10), hi(2e10);
     for (size_t i = 0; i < children.size(); ++i) {
         const Object& c = children[i];
-        if (std::holds_alternative<Quadric>(c.shape)) {
-            // Its own clips would cut its box again there.
-            if (!inverted[i] && !c.clipped_by.empty()) return false;
-            continue;
-        }
+        if (std::holds_alternative<Quadric>(c.shape)) continue;
         if (inverted[i] || std::holds_alternative<HeightField>(c.shape)) continue;
         if (const Plane* plane = std::get_if<Plane>(&c.shape)) {
             cut_by_plane(c, *plane, lo, hi);
@@ -324,7 +328,10 @@ bool quadric_csg_bounds_impl(std::vector<Object>& children,
     for (size_t i = 0; i < children.size(); ++i) {
         Quadric* q = std::get_if<Quadric>(&children[i].shape);
         if (!q || inverted[i]) continue;
-        quadric_compute_bbox(*q, lo, hi);
+        // Compute_BBox(range) cuts the range by the quadric's own clips first.
+        Vector3 qlo = lo, qhi = hi;
+        if (!cut_by_clips(*children[i].clipped_by, box_of, qlo, qhi)) return false;
+        quadric_compute_bbox(*q, qlo, qhi);
         cut_by_box(q->box_lo, q->box_len, lo, hi);
     }
     return true;

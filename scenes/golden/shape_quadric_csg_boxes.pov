@@ -33,3 +33,11 @@ object { Cylinder_X clipped_by { sphere { 0, 1.2 } } translate <-2, 2.5, 3>
 object { Ellipsoid scale <2, 1, 1>
          clipped_by { union { box { <-2, -1, -1>, <0.5, 1, 1> } sphere { <1, 0, 0>, 0.6 } } }
          translate <2, 2.5, 3> pigment { rgb <0.8, 0.4, 0.8> } }
+// A quadric with its own clips in an intersection: Compute_BBox(range) cuts the CSG's
+// range by the clip's box first; for this paraboloid moved along its axis the box it
+// gets misses the visible part, and POV-Ray shows nothing (without the clip it shows).
+intersection {
+  quadric { <1, 0, 1>, 0, <0, -1, 0>, 0 translate -y clipped_by { box { -1.2, 1.2 rotate 30*y } } }
+  sphere { 0, 1.5 }
+  scale 0.6 translate <0, 1.2, 5.5> pigment { rgb <0.3, 0.8, 0.8> }
+}
