@@ -1,6 +1,7 @@
 #include "trace/prepared_scene.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -162,6 +163,71 @@ void leaf_crossings(const Object& o, const Ray& ray, bool csg_child,
         if (h.own_point) c.point = o.transform.point(h.p);
     }
 }
+
+// Whether a shape under `o` (its clips and bounds included) searches from where a shadow
+// ray restarts (RayFlags::restart): its crossings change with the restart.
+bool searches_from_restart(const Object& o) {
+    if (std::holds_alternative<Isosurface>(o.shape) ||
+        std::holds_alternative<JuliaFractal>(o.shape) ||
+        std::holds_alternative<Mesh>(o.shape))
+        return true;
+    if (const Csg* csg = std::get_if<Csg>(&o.shape)) {
+        for (const Object& c : csg->children)
+            if (searches_from_restart(c)) return true;
+    }
+    for (const Object& c : *o.clipped_by)
+        if (searches_from_restart(c)) return true;
+    for (const Object& c : *o.bounded_by)
+        if (searches_from_restart(c)) return true;
+    return false;
+}
+
+// The crossings of the CSG objects one shadow ray met. POV-Ray's shadow ray restarts at
+// each see-through surface and searches again (shading.cpp shadow_segment): the same CSG
+// is asked again from each restart, and its crossings depend only on the ray and its
+// flags, so they are computed once per ray (a glass chess piece of 20 parts was asked
+// once per crossing, 3/4 of a FreeCAD export's radiosity pretrace).
+struct ShadowCrossings {
+    uint64_t scene = 0;
+    Ray ray;
+    RayFlags flags;
+    struct Entry {
+        uint32_t id;
+        std::vector<WorldCrossing> crossings;
+    };
+    std::vector<Entry> entries;
+    size_t used = 0;
+    static constexpr size_t kMostObjects = 64;
+
+    // The entries of this ray (those of an earlier one are dropped).
+    void start(uint64_t scene_serial, const Ray& r, const RayFlags& f) {
+        const bool same = scene == scene_serial && r.origin == ray.origin &&
+                          r.direction == ray.direction && f.primary == flags.primary &&
+                          f.image == flags.image && f.reflection == flags.reflection &&
+                          f.shadow == flags.shadow && f.photon == flags.photon &&
+                          f.radiosity == flags.radiosity &&
+                          f.frame_test == flags.frame_test;
+        if (same) return;
+        scene = scene_serial;
+        ray = r;
+        flags = f;
+        used = 0;
+    }
+    const std::vector<WorldCrossing>* find(uint32_t id) const {
+        for (size_t i = 0; i < used; ++i)
+            if (entries[i].id == id) return &entries[i].crossings;
+        return nullptr;
+    }
+    // A cleared list to fill for `id`, or null when the ray met too many.
+    std::vector<WorldCrossing>* add(uint32_t id) {
+        if (used == kMostObjects) return nullptr;
+        if (used == entries.size()) entries.emplace_back();
+        Entry& e = entries[used++];
+        e.id = id;
+        e.crossings.clear();
+        return &e.crossings;
+    }
+};
 
 bool inside_clips(const Object& o, const Point3& p) {
     for (const Object& c : *o.clipped_by) {
@@ -544,6 +610,8 @@ PreparedScene::PreparedScene(const Scene& scene,
 }
 
 void PreparedScene::build(const std::vector<const Object*>& objects) {
+    static std::atomic<uint64_t> next_serial{1};
+    serial_ = next_serial.fetch_add(1, std::memory_order_relaxed);
     const Scene& scene = scene_;
     for (const Light& l : scene.lights) {
         if (l.projected_through) {
@@ -623,6 +691,18 @@ void PreparedScene::build(const std::vector<const Object*>& objects) {
         const Object& o = *objects_[index_[id]];
         bounds_[id] = object_placement_bounds(o, bounds_[id]);
         hits_within_bounds_[id] = !lags_its_depth(o);
+    }
+    reuses_crossings_.assign(kind_.size(), 0);
+    for (uint32_t id = 0; id < kind_.size(); ++id) {
+        if (kind_[id] != PrimKind::Object) continue;
+        const Object& o = *objects_[index_[id]];
+        // A leaf outside CSG may give only its crossings in the range asked for
+        // (ShapeHits' nearest_only): those that do are asked each time.
+        const bool nearest_only_leaf = std::holds_alternative<Blob>(o.shape) ||
+                                       std::holds_alternative<Lathe>(o.shape) ||
+                                       std::holds_alternative<Prism>(o.shape) ||
+                                       std::holds_alternative<Glyph>(o.shape);
+        reuses_crossings_[id] = !nearest_only_leaf && !searches_from_restart(o);
     }
     octree::BuildInput input;
     std::vector<uint32_t> bounded_ids;
@@ -1351,10 +1431,28 @@ bool PreparedScene::test_primitive(uint32_t id, const Ray& ray, const PovRayOnce
             // ray they turn away needs no crossings.
             if (!pov_accepts(id, pov_ray)) return false;
             if (pov_keeps_bound(obj) && !ray_in_bound(*obj.bounded_by, ray)) return false;
-            thread_local std::vector<WorldCrossing> crossings;
-            crossings.clear();
-            const WantedRange wanted{lo, t_max, material_only};
-            object_crossings(obj, ray, crossings, false, &wanted, flags);
+            thread_local std::vector<WorldCrossing> own;
+            const std::vector<WorldCrossing>* found = nullptr;
+            if (flags && flags->shadow && reuses_crossings_[id]) {
+                thread_local ShadowCrossings reused;
+                reused.start(serial_, ray, *flags);
+                found = reused.find(id);
+                if (!found) {
+                    if (std::vector<WorldCrossing>* fill = reused.add(id)) {
+                        // All its crossings (a CSG passes no wanted range to its
+                        // children, and these leaves give all theirs anyway).
+                        object_crossings(obj, ray, *fill, false, nullptr, flags);
+                        found = fill;
+                    }
+                }
+            }
+            if (!found) {
+                own.clear();
+                const WantedRange wanted{lo, t_max, material_only};
+                object_crossings(obj, ray, own, false, &wanted, flags);
+                found = &own;
+            }
+            const std::vector<WorldCrossing>& crossings = *found;
             // The crossings are in the order POV-Ray pops them last (object_crossings):
             // of equal depths it keeps the last.
             const WorldCrossing* best = nullptr;

@@ -382,6 +382,13 @@ class PreparedScene {
     // Per primitive: whether every hit's distance is where the ray enters its bounds or
     // later (closest_hit_without leaves out objects that start past its nearest hit).
     std::vector<uint8_t> hits_within_bounds_;
+    // Per primitive: a CSG whose crossings a shadow ray may reuse from one restart of
+    // POV-Ray's see-through search to the next (no shape under it searches from where the
+    // ray restarts: isosurface, julia_fractal, mesh).
+    std::vector<uint8_t> reuses_crossings_;
+    // Tells this scene's reused crossings from those of another scene at the same
+    // address.
+    uint64_t serial_ = 0;
     // Spheres in world space, one 32-byte record each (one cache line per candidate).
     // After build() the bounded spheres are primitives 0 .. sphere_count_-1 and
     // spheres_[id] is primitive id's sphere, so the hot loop needs neither kind_ nor

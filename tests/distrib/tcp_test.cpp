@@ -479,6 +479,16 @@ TEST(Tcp, SurveySevenFixesInEveryModeEqualOneProcess) {
     }
 }
 
+// Shadow rays through see-through pieces of many parts reuse each object's crossings from
+// one restart of the search to the next (trace/prepared_scene.cpp ShadowCrossings): the
+// same in each process's boxes, which trace parts of a shadow ray.
+TEST(Tcp, ShadowRestartsInEveryModeEqualOneProcess) {
+    expect_same_images(std::string(POVWALL_GOLDEN_DIR) + "/shadow_glass_pieces.pov",
+                       "-W 40 -H 30",
+                       {"--mode screen --procs 2", "--boxes 2x2x2",
+                        "--boxes 3x1x2 --procs 2 --results parents"});
+}
+
 // The eighth survey's fixes and this stop's shapes: function images (parsed by every
 // process from the same function), spheres past MAX_DISTANCE in their own space (in the
 // lanes, in CSG, as shadow casters), each matching POV-Ray in tests/golden.
