@@ -160,8 +160,11 @@ class Interpreter {
     Vector3 parse_vector();  // float promoted to <f,f,f>
     std::string parse_string();
     // Colour keyword forms, rgb, identifiers; `hold_directives` as parse_express.
-    Numeric parse_colour(bool hold_directives = false);
-    Colour parse_colour_value();
+    // `any_vector`: any vector expression may be the colour, as where POV-Ray's
+    // Parse_Colour is called directly; a colour map entry's (after CASE_COLOUR) may not
+    // start with x, y, z, u, v, a vector function or a unary '+' or '!'.
+    Numeric parse_colour(bool hold_directives = false, bool any_vector = true);
+    Colour parse_colour_value(bool any_vector = true);
     bool parse_bool_opt();
     bool starts_float(const Token& t);  // can `t` begin a float expression?
     // Can `t` begin a float, vector or colour expression (POV-Ray's CASE_EXPRESS)?

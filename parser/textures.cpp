@@ -91,7 +91,7 @@ uint8_t pavement_byte(double v) {
 
 }  // namespace
 
-Numeric Interpreter::parse_colour(bool hold_directives) {
+Numeric Interpreter::parse_colour(bool hold_directives, bool any_vector) {
     Numeric c;
     c.size = 5;
     c.colour = true;
@@ -120,6 +120,23 @@ Numeric Interpreter::parse_colour(bool hold_directives) {
         }
     };
     auto express = [&] { return parse_express(hold_directives); };
+    // POV-Ray's Parse_Colour takes any vector expression (CASE_VECTOR), promoted to five
+    // terms: an identifier, a number, '<', '(', a unary '-', '+' or '!', a float or
+    // vector function, x, y, z, u or v (`emission y*2`); its colour keywords are read
+    // below, and `t` is no colour.
+    auto starts_colour_expression = [&](const Token& tok) {
+        if (tok.kind == TokenKind::Word && lookup(tok)) return true;
+        if (!any_vector)
+            return tok.kind == TokenKind::Number || is_punct(tok, '<') ||
+                   is_punct(tok, '(') || is_punct(tok, '-');
+        if (tok.kind == TokenKind::Word &&
+            (tok.text == "t" || tok.text == "color" || tok.text == "colour" ||
+             tok.text == "red" || tok.text == "green" || tok.text == "blue" ||
+             tok.text == "filter" || tok.text == "transmit" || tok.text == "gray" ||
+             tok.text == "grey" || tok.text.find("rgb") != std::string_view::npos))
+            return false;
+        return starts_expression(tok);
+    };
     for (;;) {
         const Token& t = any ? peek_after_operand(hold_directives) : peek();
         std::string_view w = t.kind == TokenKind::Word ? t.text : std::string_view();
@@ -160,9 +177,7 @@ Numeric Interpreter::parse_colour(bool hold_directives) {
                     : w == "filter" || w == "alpha" ? 3
                                                     : 4;
             c.c[i] = parse_numeric(false, hold_directives).c[0];
-        } else if (!any &&
-                   (t.kind == TokenKind::Number || is_punct(t, '<') || is_punct(t, '(') ||
-                    is_punct(t, '-') || (t.kind == TokenKind::Word && lookup(t)))) {
+        } else if (!any && starts_colour_expression(t)) {
             Numeric v = express();
             if (v.size == 1) {
                 for (int i = 0; i < 5; ++i) c.c[i] = v.c[0];
@@ -179,8 +194,8 @@ Numeric Interpreter::parse_colour(bool hold_directives) {
     return c;
 }
 
-Colour Interpreter::parse_colour_value() {
-    Numeric c = parse_colour();
+Colour Interpreter::parse_colour_value(bool any_vector) {
+    Numeric c = parse_colour(false, any_vector);
     return Colour(Rgb(float(c.c[0]), float(c.c[1]), float(c.c[2])), float(c.c[3]),
                   float(c.c[4]));
 }
@@ -221,7 +236,7 @@ ColourMap Interpreter::parse_colour_map_block() {
                 error(at, "Illegal expression syntax in color_map.");
             }
         } else {
-            map.push_back({v1, parse_colour_value()});
+            map.push_back({v1, parse_colour_value(false)});
         }
         expect_punct(']', "to close the color_map entry");
     }

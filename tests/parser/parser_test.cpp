@@ -954,6 +954,41 @@ TEST(Prism, PointCountsAndClosureAsPovRay) {
 namespace povwall::parser {
 namespace {
 
+// A colour read on its own takes any vector expression, as POV-Ray's Parse_Colour
+// (CASE_VECTOR): x, y, z, u, v, vector and float functions, unary '+' and '!'. A colour
+// map entry takes a colour keyword or identifier, or a float expression: not `x`.
+TEST(Parser, ColourTakesAnyVectorExpression) {
+    Scene s = parse(R"(
+global_settings { ambient_light y + 0.5 * x }
+background { z * 0.3 }
+light_source { <0, 5, 0> x + y }
+light_source { <0, 5, 0> color vnormalize(<3, 0, 4>) }
+light_source { <0, 5, 0> color sqrt(0.25) }
+light_source { <0, 5, 0> color +y }
+sphere { 0, 1 hollow interior { media { emission y * 2 } } finish { ambient !0 * 0.1 } }
+)");
+    EXPECT_EQ(s.settings.ambient_light.r, 0.5f);
+    EXPECT_EQ(s.settings.ambient_light.g, 1.0f);
+    EXPECT_EQ(s.background.rgb.b, 0.3f);
+    EXPECT_EQ(s.background.rgb.r, 0.0f);
+    ASSERT_EQ(s.lights.size(), 4u);
+    EXPECT_EQ(s.lights[0].colour.r, 1.0f);
+    EXPECT_EQ(s.lights[0].colour.b, 0.0f);
+    EXPECT_EQ(s.lights[1].colour.r, 0.6f);
+    EXPECT_EQ(s.lights[1].colour.b, 0.8f);
+    EXPECT_EQ(s.lights[2].colour.g, 0.5f);
+    EXPECT_EQ(s.lights[3].colour.r, 0.0f);
+    EXPECT_EQ(s.lights[3].colour.g, 1.0f);
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.objects[0].interior->media.at(0).emission.g, 2.0f);
+    EXPECT_EQ(s.objects[0].interior->media.at(0).emission.r, 0.0f);
+    EXPECT_EQ(full_error_of("sphere { 0, 1 pigment { gradient y color_map { [0 x] } } }"),
+              "test.pov:1:51: error: expected ']' to close the color_map entry but found "
+              "'x'\n"
+              "sphere { 0, 1 pigment { gradient y color_map { [0 x] } } }\n"
+              "                                                  ^");
+}
+
 // Media take POV-Ray's defaults by the language version at each block (3.5 and later:
 // method 3, one interval, 10 samples; before: method 1, 10 intervals, 1 sample), a
 // declared media is copied whole, and transforms move the densities given so far.
