@@ -182,11 +182,12 @@ bool searches_from_restart(const Object& o) {
     return false;
 }
 
-// The crossings of the CSG objects one shadow ray met. POV-Ray's shadow ray restarts at
-// each see-through surface and searches again (shading.cpp shadow_segment): the same CSG
-// is asked again from each restart, and its crossings depend only on the ray and its
-// flags, so they are computed once per ray (a glass chess piece of 20 parts was asked
-// once per crossing, 3/4 of a FreeCAD export's radiosity pretrace).
+// The crossings of the objects one shadow ray met (PreparedScene::reuses_crossings_).
+// POV-Ray's shadow ray restarts at each see-through surface and searches again
+// (shading.cpp shadow_segment): each object on the way is asked again from each restart,
+// and its crossings depend only on the ray and its flags, so they are computed once per
+// ray (the CSG parts of glass chess pieces were asked once per surface crossed: 3/4 of a
+// FreeCAD export's radiosity pretrace).
 struct ShadowCrossings {
     uint64_t scene = 0;
     Ray ray;
