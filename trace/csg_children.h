@@ -142,31 +142,26 @@ bool inside_every_child(const CsgChildIndex& index, bool inverted, const Point3&
     const CsgChildIndex::Insides& in = index.insides[inverted ? 1 : 0];
     for (uint32_t j : in.never)
         if (j != except) return false;
-    auto has_except = [&](const std::vector<uint32_t>& sorted) {
-        return except != kNoChild &&
-               std::binary_search(sorted.begin(), sorted.end(), uint32_t(except));
+    // Every child is asked unless its box answers: a walk of the box tree would find the
+    // same boxes at a higher cost (the children of an intersection mostly overlap: a
+    // column of 20 prisms spent 40 % of its time in tree walks that left none out).
+    auto holds = [&](const Bounds3& b) {
+        return p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y &&
+               p.z >= b.lo.z && p.z <= b.hi.z;
     };
-    const CsgScratchLevel level(true);
-    CsgScratch& s = csg_scratch(level.depth);
     // Every solid held as written must have p in its box.
-    if (!in.within.children.empty()) {
-        in.within.holding(p, s.candidates, s.holding);
-        size_t holding = 0;
-        for (uint32_t e : s.holding) holding += in.within.children[e] != except;
-        if (holding != in.within.children.size() - has_except(in.within.children))
-            return false;
-        for (uint32_t e : s.holding) {
-            const size_t j = in.within.children[e];
-            if (j != except && !inside(j)) return false;
-        }
+    const CsgChildIndex::Boxed& within = in.within;
+    for (size_t e = 0; e < within.children.size(); ++e)
+        if (within.children[e] != except && !holds(within.boxes[e])) return false;
+    for (size_t e = 0; e < within.children.size(); ++e) {
+        const size_t j = within.children[e];
+        if (j != except && !inside(j)) return false;
     }
     // One held inverted holds p outside its box for sure.
-    if (!in.outside.children.empty()) {
-        in.outside.holding(p, s.candidates, s.holding);
-        for (uint32_t e : s.holding) {
-            const size_t j = in.outside.children[e];
-            if (j != except && !inside(j)) return false;
-        }
+    const CsgChildIndex::Boxed& outside = in.outside;
+    for (size_t e = 0; e < outside.children.size(); ++e) {
+        const size_t j = outside.children[e];
+        if (j != except && holds(outside.boxes[e]) && !inside(j)) return false;
     }
     for (uint32_t j : in.anywhere)
         if (j != except && !inside(size_t(j))) return false;
